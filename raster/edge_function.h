@@ -1,0 +1,38 @@
+#pragma once
+// Integer edge functions with the top-left fill rule, in framebuffer coordinates (y down).
+//
+// For an edge a -> b of a triangle whose interior is on the positive side,
+//     E(p) = (b.x - a.x) (p.y - a.y) - (b.y - a.y) (p.x - a.x),
+// and a pixel centre p is covered when E(p) > 0 for all three edges, or E(p) == 0 on an edge the
+// rule includes: a left edge (interior to its right: dE/dx > 0) or a top edge (horizontal,
+// interior below: dE/dx == 0, dE/dy > 0). In GL's y-up window coordinates that is "left and
+// bottom", as llvmpipe rasterizes OSMesa's top-down buffer. Shared edges are covered exactly once.
+
+#include <cstdint>
+
+namespace qs {
+
+struct EdgeFunction {
+    std::int64_t c = 0;     // E at pixel (0, 0), plus the fill-rule bias (E + bias > 0 inside)
+    std::int64_t dcdx = 0;  // change per pixel step in x
+    std::int64_t dcdy = 0;  // change per pixel step in y (down)
+
+    // a, b: fixed-point vertex positions (pixel centres on multiples of fixed::kOne).
+    static EdgeFunction from_edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
+                                  int subpixel_bits) {
+        EdgeFunction e;
+        const std::int64_t dx = bx - ax, dy = by - ay;
+        const std::int64_t dEdx = -dy, dEdy = dx;
+        const bool included = dEdx > 0 || (dEdx == 0 && dEdy > 0);
+        // E(0, 0) = dx * (0 - ay) - dy * (0 - ax)
+        e.c = dx * (-ay) - dy * (-ax) + (included ? 1 : 0);
+        e.dcdx = dEdx << subpixel_bits;
+        e.dcdy = dEdy << subpixel_bits;
+        return e;
+    }
+
+    std::int64_t at(int x, int y) const { return c + dcdx * x + dcdy * y; }
+    bool inside(int x, int y) const { return at(x, y) > 0; }
+};
+
+}  // namespace qs

@@ -1,0 +1,32 @@
+#pragma once
+// Colour (RGBA float) and optional depth, stored top-down: row 0 is the top of the image, the
+// order of OSMesa's buffer and of image files. GL window coordinates have y up: the pixel at
+// window (x, y) is row height-1-y.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace qs {
+
+struct Framebuffer {
+    int width = 0, height = 0;
+    std::vector<float> rgba;   // 4 per pixel, top-down
+    std::vector<float> depth;  // empty when no draw needed depth; else 1 per pixel, cleared to 1
+
+    Framebuffer() = default;
+    Framebuffer(int w, int h, glm::vec4 clear, bool with_depth);
+
+    float* pixel(int x, int row) { return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4]; }
+    const float* pixel(int x, int row) const {
+        return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4];
+    }
+
+    // GL's conversion to an 8-bit unorm target: clamp to [0, 1], scale by 255, round to nearest.
+    std::vector<std::uint8_t> to_rgba8() const;
+};
+
+std::uint8_t unorm8(float v);
+
+}  // namespace qs

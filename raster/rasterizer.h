@@ -1,0 +1,52 @@
+#pragma once
+// The 2x2-quad rasterizer: draw calls in, a framebuffer out, as a GL driver would produce it.
+//
+// Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping -> triangle setup ->
+// binning into 64x64 tiles -> tiles in parallel (oneTBB), each tile's triangles in submission
+// order -> quads (or single pixels for derivative-free shaders) batched kBatchLanes lanes at a
+// time -> early depth test -> shading -> colour and depth writes for covered lanes only.
+// The output is bit-identical for any thread count.
+
+#include <cstdint>
+#include <span>
+
+#include <glm/vec4.hpp>
+
+#include "draw_call.h"
+#include "framebuffer.h"
+#include "program.h"
+
+namespace qs {
+
+// Which rows form a quad. OSMesa's default buffer is stored top-down and pairs rows counting
+// from the top, so at an odd height GL window row 0 pairs with a helper row below the image;
+// an FBO pairs GL rows (2k, 2k+1) from the bottom.
+enum class QuadPairing { TopDown, BottomUp };
+
+struct RasterOptions {
+    Derivatives derivatives = Derivatives::Fine;  // for shaders that take derivatives
+    Precision precision = Precision::Float;
+    QuadPairing pairing = QuadPairing::TopDown;
+    // Shade derivative-free shaders in quads with helper lanes too (the general path), and keep
+    // a depth buffer even when no draw needs one. For measuring what specialisation saves.
+    bool force_general_path = false;
+    int threads = 0;  // 0: all cores
+};
+
+struct RasterStats {
+    std::uint64_t triangles_in = 0, triangles_setup = 0;
+    std::uint64_t quads = 0;          // quads shaded (quad path)
+    std::uint64_t lanes_shaded = 0;   // lanes run through a shader, helpers included
+    std::uint64_t pixels_written = 0;
+};
+
+// Renders draws into a width x height framebuffer cleared to `clear`.
+// Throws std::invalid_argument for absurd sizes or a draw without a program.
+Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
+                      const RasterOptions& options, RasterStats* stats = nullptr);
+
+// The number of tiles' rows and columns, and the quad grid's row offset, for a framebuffer.
+inline constexpr int kTileSize = 64;
+int quad_row_offset(int height, QuadPairing pairing);
+
+}  // namespace qs

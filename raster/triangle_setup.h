@@ -1,0 +1,31 @@
+#pragma once
+// A clipped triangle prepared for rasterization: viewport transform, fixed-point edge functions,
+// its pixel bounding box, and the plane equations of depth, 1/w and every varying (premultiplied
+// by 1/w for perspective correction, divided by the interpolated 1/w per fragment).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "clipper.h"
+#include "edge_function.h"
+#include "plane_equation.h"
+
+namespace qs {
+
+struct TriangleSetup {
+    std::array<EdgeFunction, 3> edges;
+    int min_x, min_y, max_x, max_y;  // inclusive pixel bounds, clamped to the framebuffer
+    PlaneEquation z;                 // window depth, linear in screen space
+    PlaneEquation inv_w;             // 1/w_clip, linear in screen space
+    std::array<PlaneEquation, kMaxVaryings> varyings;  // varying / w_clip
+    int draw = 0;                    // index of the draw call it came from
+};
+
+// Window mapping in framebuffer coordinates (y down, as OSMesa's buffer): x = ndc.x W/2 + W/2,
+// y = ndc.y (-H/2) + H/2, z = ndc.z / 2 + 1/2. Returns nothing for a triangle that covers no
+// pixel centre of the framebuffer or has zero area.
+std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
+                                            int height);
+
+}  // namespace qs

@@ -1,0 +1,360 @@
+// The one file that includes tinygltf.
+#include "gltf.h"
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <map>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+namespace qs {
+
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& field, const std::string& what) {
+    throw SceneError(file.string() + ": " + field + ": " + what);
+}
+
+// Bytes of accessor `index`, element by element, with its type checked.
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    std::size_t count = 0, stride = 0;
+    int component_type = 0;
+};
+
+AccessorView view_accessor(const tinygltf::Model& m, int index, const std::filesystem::path& file,
+                           const std::string& field, int want_type, std::initializer_list<int> want_components) {
+    if (index < 0 || std::size_t(index) >= m.accessors.size()) fail(file, field, "accessor index out of range");
+    const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
+    if (a.type != want_type) fail(file, field, "accessor has the wrong element type");
+    bool component_ok = false;
+    for (int c : want_components) component_ok |= a.componentType == c;
+    if (!component_ok) fail(file, field, "accessor has an unsupported component type " + std::to_string(a.componentType));
+    if (a.bufferView < 0 || std::size_t(a.bufferView) >= m.bufferViews.size()) fail(file, field, "accessor has no buffer view");
+    const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
+    if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size()) fail(file, field, "buffer view has no buffer");
+    const tinygltf::Buffer& b = m.buffers[std::size_t(v.buffer)];
+    const std::size_t element = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType))) *
+                                std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
+    const std::size_t stride = v.byteStride ? v.byteStride : element;
+    const std::size_t begin = v.byteOffset + a.byteOffset;
+    if (a.count > 0 && (begin + stride * (a.count - 1) + element > v.byteOffset + v.byteLength ||
+                        v.byteOffset + v.byteLength > b.data.size())) {
+        fail(file, field, "accessor reaches past the end of its buffer");
+    }
+    return {b.data.data() + begin, a.count, stride, a.componentType};
+}
+
+glm::mat4 node_matrix(const tinygltf::Node& n) {
+    if (n.matrix.size() == 16) {
+        glm::mat4 m;
+        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(n.matrix[std::size_t(i)]);
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (n.translation.size() == 3) {
+        m = glm::translate(m, glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2])));
+    }
+    if (n.rotation.size() == 4) {
+        glm::quat q(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
+        m = m * glm::mat4_cast(q);
+    }
+    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
+    return m;
+}
+
+Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, const std::filesystem::path& file) {
+    const tinygltf::Primitive& p = m.meshes[mi].primitives[pi];
+    const std::string field = "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
+    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
+        fail(file, field + ".mode", "only TRIANGLES (4) is supported, found " + std::to_string(p.mode));
+    }
+    auto pos = p.attributes.find("POSITION");
+    if (pos == p.attributes.end()) fail(file, field + ".attributes", "no POSITION");
+    AccessorView pv = view_accessor(m, pos->second, file, field + ".attributes.POSITION", TINYGLTF_TYPE_VEC3,
+                                    {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    Mesh mesh;
+    mesh.name = m.meshes[mi].name.empty() ? field : m.meshes[mi].name;
+    mesh.vertices.resize(pv.count);
+    for (std::size_t i = 0; i < pv.count; ++i) {
+        float xyz[3];
+        std::memcpy(xyz, pv.data + i * pv.stride, sizeof xyz);
+        if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
+            fail(file, field + ".attributes.POSITION", "vertex " + std::to_string(i) + " is not finite");
+        }
+        mesh.vertices[i] = {{xyz[0], xyz[1], xyz[2]}, {0.0f, 0.0f}};
+    }
+    if (auto tc = p.attributes.find("TEXCOORD_0"); tc != p.attributes.end()) {
+        AccessorView tv = view_accessor(m, tc->second, file, field + ".attributes.TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                                        {TINYGLTF_COMPONENT_TYPE_FLOAT});
+        if (tv.count != pv.count) fail(file, field + ".attributes.TEXCOORD_0", "count differs from POSITION's");
+        for (std::size_t i = 0; i < tv.count; ++i) {
+            float st[2];
+            std::memcpy(st, tv.data + i * tv.stride, sizeof st);
+            if (!std::isfinite(st[0]) || !std::isfinite(st[1])) {
+                fail(file, field + ".attributes.TEXCOORD_0", "texcoord " + std::to_string(i) + " is not finite");
+            }
+            mesh.vertices[i].texcoord = {st[0], st[1]};
+        }
+    }
+    if (p.indices >= 0) {
+        AccessorView iv = view_accessor(m, p.indices, file, field + ".indices", TINYGLTF_TYPE_SCALAR,
+                                        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+        mesh.indices.resize(iv.count);
+        for (std::size_t i = 0; i < iv.count; ++i) {
+            const unsigned char* e = iv.data + i * iv.stride;
+            std::uint32_t v = 0;
+            if (iv.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) v = *e;
+            else if (iv.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) { std::uint16_t s; std::memcpy(&s, e, 2); v = s; }
+            else std::memcpy(&v, e, 4);
+            if (v >= pv.count) {
+                fail(file, field + ".indices", "index " + std::to_string(v) + " at position " + std::to_string(i) +
+                                                   " exceeds the " + std::to_string(pv.count) + " vertices");
+            }
+            mesh.indices[i] = v;
+        }
+    } else {
+        mesh.indices.resize(pv.count);
+        for (std::size_t i = 0; i < pv.count; ++i) mesh.indices[i] = std::uint32_t(i);
+    }
+    if (mesh.indices.size() % 3 != 0) fail(file, field + ".indices", "count is not a multiple of 3");
+    return mesh;
+}
+
+double number_of(const tinygltf::Value& v) { return v.IsInt() ? double(v.Get<int>()) : v.Get<double>(); }
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path) {
+    if (!std::filesystem::is_regular_file(path)) throw SceneError(path.string() + ": no such file");
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    const bool binary = path.extension() == ".glb";
+    const bool ok = binary ? loader.LoadBinaryFromFile(&m, &err, &warn, path.string())
+                           : loader.LoadASCIIFromFile(&m, &err, &warn, path.string());
+    if (!ok) throw SceneError(path.string() + ": not a valid glTF file: " + (err.empty() ? warn : err));
+
+    Scene scene;
+    scene.file = path;
+    const std::filesystem::path dir = path.parent_path();
+    const int scene_index = m.defaultScene >= 0 ? m.defaultScene : 0;
+    if (m.scenes.empty() || std::size_t(scene_index) >= m.scenes.size()) fail(path, "scenes", "no scene to render");
+    const tinygltf::Scene& gs = m.scenes[std::size_t(scene_index)];
+    const std::string scene_field = "scenes[" + std::to_string(scene_index) + "].extras";
+    if (gs.extras.IsObject()) {
+        if (gs.extras.Has("clear_color")) {
+            const tinygltf::Value& c = gs.extras.Get("clear_color");
+            if (!c.IsArray() || c.ArrayLen() != 4) fail(path, scene_field + ".clear_color", "expected 4 numbers");
+            for (int i = 0; i < 4; ++i) scene.clear_color[i] = float(number_of(c.Get(i)));
+        }
+        if (gs.extras.Has("time")) {
+            const tinygltf::Value& t = gs.extras.Get("time");
+            if (!t.IsNumber()) fail(path, scene_field + ".time", "expected a number");
+            scene.time = float(number_of(t));
+        }
+        if (gs.extras.Has("size")) {
+            const tinygltf::Value& s = gs.extras.Get("size");
+            if (!s.IsArray() || s.ArrayLen() != 2 || !s.Get(0).IsInt() || !s.Get(1).IsInt()) {
+                fail(path, scene_field + ".size", "expected [width, height] integers");
+            }
+            scene.width = s.Get(0).Get<int>(), scene.height = s.Get(1).Get<int>();
+            if (scene.width <= 0 || scene.height <= 0) fail(path, scene_field + ".size", "must be positive");
+        }
+    }
+
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mesh_of;  // (mesh, primitive) -> Scene::meshes
+    std::map<std::string, int> texture_of;
+    bool have_camera = false;
+    std::function<void(int, const glm::mat4&)> visit = [&](int ni, const glm::mat4& parent) {
+        if (ni < 0 || std::size_t(ni) >= m.nodes.size()) fail(path, "nodes", "node index " + std::to_string(ni) + " out of range");
+        const tinygltf::Node& n = m.nodes[std::size_t(ni)];
+        const glm::mat4 world = parent * node_matrix(n);
+        const std::string node_field = "nodes[" + std::to_string(ni) + "]";
+        if (n.camera >= 0 && !have_camera) {
+            if (std::size_t(n.camera) >= m.cameras.size()) fail(path, node_field + ".camera", "index out of range");
+            const tinygltf::Camera& c = m.cameras[std::size_t(n.camera)];
+            const std::string cf = "cameras[" + std::to_string(n.camera) + "]";
+            Camera cam;
+            cam.view = glm::inverse(world);
+            if (c.type == "perspective") {
+                cam.yfov = float(c.perspective.yfov);
+                cam.znear = float(c.perspective.znear);
+                cam.zfar = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 1e6f;
+                if (!(cam.yfov > 0.0f && cam.yfov < 3.14159f)) fail(path, cf + ".perspective.yfov", "must be in (0, pi)");
+                if (!(cam.znear > 0.0f && cam.zfar > cam.znear)) fail(path, cf + ".perspective", "needs 0 < znear < zfar");
+            } else if (c.type == "orthographic") {
+                cam.kind = Camera::Kind::Orthographic;
+                cam.xmag = float(c.orthographic.xmag), cam.ymag = float(c.orthographic.ymag);
+                cam.znear = float(c.orthographic.znear), cam.zfar = float(c.orthographic.zfar);
+                if (cam.xmag == 0.0f || cam.ymag == 0.0f) fail(path, cf + ".orthographic", "xmag and ymag must be non-zero");
+                if (!(cam.zfar > cam.znear)) fail(path, cf + ".orthographic", "needs znear < zfar");
+            } else {
+                fail(path, cf + ".type", "unknown camera type '" + c.type + "'");
+            }
+            scene.camera = cam;
+            have_camera = true;
+        }
+        if (n.mesh >= 0) {
+            if (std::size_t(n.mesh) >= m.meshes.size()) fail(path, node_field + ".mesh", "index out of range");
+            const tinygltf::Mesh& gm = m.meshes[std::size_t(n.mesh)];
+            for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
+                const auto key = std::make_pair(std::size_t(n.mesh), pi);
+                if (!mesh_of.count(key)) {
+                    mesh_of[key] = scene.meshes.size();
+                    scene.meshes.push_back(read_primitive(m, std::size_t(n.mesh), pi, path));
+                }
+                Object o;
+                o.name = n.name.empty() ? node_field : n.name;
+                o.mesh = mesh_of[key];
+                o.world_from_object = world;
+                const int mat = gm.primitives[pi].material;
+                if (mat >= 0) {
+                    if (std::size_t(mat) >= m.materials.size()) fail(path, "meshes[" + std::to_string(n.mesh) + "].material", "index out of range");
+                    const tinygltf::Material& gmat = m.materials[std::size_t(mat)];
+                    const std::string mf = "materials[" + std::to_string(mat) + "].extras";
+                    o.material = gmat.name.empty() ? "materials[" + std::to_string(mat) + "]" : gmat.name;
+                    if (gmat.extras.IsObject() && gmat.extras.Has("shader")) {
+                        if (!gmat.extras.Get("shader").IsString()) fail(path, mf + ".shader", "expected a shader name");
+                        o.shader = gmat.extras.Get("shader").Get<std::string>();
+                    }
+                    if (gmat.extras.IsObject() && gmat.extras.Has("teximage")) {
+                        if (!gmat.extras.Get("teximage").IsString()) fail(path, mf + ".teximage", "expected a file name");
+                        const std::string rel = gmat.extras.Get("teximage").Get<std::string>();
+                        if (!texture_of.count(rel)) {
+                            texture_of[rel] = int(scene.textures.size());
+                            scene.textures.push_back({dir / rel, {}, false});
+                        }
+                        o.texture = texture_of[rel];
+                    }
+                }
+                scene.objects.push_back(o);
+            }
+        }
+        for (int child : n.children) visit(child, world);
+    };
+    for (int ni : gs.nodes) visit(ni, glm::mat4(1.0f));
+    if (!have_camera) fail(path, "nodes", "no node carries a camera");
+    if (scene.objects.empty()) fail(path, "nodes", "no node carries a mesh");
+    return scene;
+}
+
+void save_scene(const Scene& scene, const std::filesystem::path& path) {
+    tinygltf::Model m;
+    m.asset.version = "2.0";
+    m.asset.generator = "quadshade scene generator";
+    tinygltf::Buffer buffer;
+    auto append = [&](const void* data, std::size_t bytes) {
+        while (buffer.data.size() % 4) buffer.data.push_back(0);
+        const std::size_t offset = buffer.data.size();
+        const auto* p = static_cast<const unsigned char*>(data);
+        buffer.data.insert(buffer.data.end(), p, p + bytes);
+        tinygltf::BufferView v;
+        v.buffer = 0, v.byteOffset = offset, v.byteLength = bytes;
+        m.bufferViews.push_back(v);
+        return int(m.bufferViews.size() - 1);
+    };
+    auto accessor = [&](int view, int component, int type, std::size_t count, std::vector<double> mn = {},
+                        std::vector<double> mx = {}) {
+        tinygltf::Accessor a;
+        a.bufferView = view, a.componentType = component, a.type = type, a.count = count;
+        a.minValues = std::move(mn), a.maxValues = std::move(mx);
+        m.accessors.push_back(a);
+        return int(m.accessors.size() - 1);
+    };
+    for (const Mesh& mesh : scene.meshes) {
+        std::vector<float> pos, st;
+        std::vector<double> mn(3, 1e30), mx(3, -1e30);
+        for (const VertexIn& v : mesh.vertices) {
+            for (int i = 0; i < 3; ++i) {
+                pos.push_back(v.position[i]);
+                mn[std::size_t(i)] = std::min(mn[std::size_t(i)], double(v.position[i]));
+                mx[std::size_t(i)] = std::max(mx[std::size_t(i)], double(v.position[i]));
+            }
+            st.push_back(v.texcoord.x), st.push_back(v.texcoord.y);
+        }
+        tinygltf::Primitive p;
+        p.mode = TINYGLTF_MODE_TRIANGLES;
+        p.attributes["POSITION"] = accessor(append(pos.data(), pos.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                            TINYGLTF_TYPE_VEC3, mesh.vertices.size(), mn, mx);
+        p.attributes["TEXCOORD_0"] = accessor(append(st.data(), st.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                              TINYGLTF_TYPE_VEC2, mesh.vertices.size());
+        p.indices = accessor(append(mesh.indices.data(), mesh.indices.size() * 4),
+                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
+        tinygltf::Mesh gm;
+        gm.name = mesh.name;
+        gm.primitives.push_back(p);
+        m.meshes.push_back(gm);
+    }
+    buffer.uri = path.stem().string() + ".bin";
+    m.buffers.push_back(buffer);
+
+    tinygltf::Scene gs;
+    for (const Object& o : scene.objects) {
+        tinygltf::Material mat;
+        mat.name = o.name;
+        tinygltf::Value::Object extras{{"shader", tinygltf::Value(o.shader)}};
+        if (o.texture >= 0) {
+            extras["teximage"] = tinygltf::Value(
+                std::filesystem::relative(scene.textures[std::size_t(o.texture)].path, path.parent_path()).string());
+        }
+        mat.extras = tinygltf::Value(extras);
+        m.materials.push_back(mat);
+        // A mesh per object, since glTF puts the material on the primitive.
+        tinygltf::Mesh gm = m.meshes[o.mesh];
+        gm.name = o.name;
+        gm.primitives[0].material = int(m.materials.size() - 1);
+        m.meshes.push_back(gm);
+        tinygltf::Node n;
+        n.name = o.name;
+        n.mesh = int(m.meshes.size() - 1);
+        n.matrix.assign(glm::value_ptr(o.world_from_object), glm::value_ptr(o.world_from_object) + 16);
+        m.nodes.push_back(n);
+        gs.nodes.push_back(int(m.nodes.size() - 1));
+    }
+    // Drop the material-less template meshes: objects' meshes follow them.
+    const int templates = int(scene.meshes.size());
+    m.meshes.erase(m.meshes.begin(), m.meshes.begin() + templates);
+    for (tinygltf::Node& n : m.nodes) n.mesh -= templates;
+
+    tinygltf::Camera cam;
+    if (scene.camera.kind == Camera::Kind::Perspective) {
+        cam.type = "perspective";
+        cam.perspective.yfov = scene.camera.yfov;
+        cam.perspective.znear = scene.camera.znear;
+        cam.perspective.zfar = scene.camera.zfar;
+    } else {
+        cam.type = "orthographic";
+        cam.orthographic.xmag = scene.camera.xmag, cam.orthographic.ymag = scene.camera.ymag;
+        cam.orthographic.znear = scene.camera.znear, cam.orthographic.zfar = scene.camera.zfar;
+    }
+    m.cameras.push_back(cam);
+    tinygltf::Node cn;
+    cn.name = "camera";
+    cn.camera = 0;
+    const glm::mat4 world_from_view = glm::inverse(scene.camera.view);
+    cn.matrix.assign(glm::value_ptr(world_from_view), glm::value_ptr(world_from_view) + 16);
+    m.nodes.push_back(cn);
+    gs.nodes.insert(gs.nodes.begin(), int(m.nodes.size() - 1));
+
+    tinygltf::Value::Array clear;
+    for (int i = 0; i < 4; ++i) clear.push_back(tinygltf::Value(double(scene.clear_color[i])));
+    gs.extras = tinygltf::Value(tinygltf::Value::Object{
+        {"clear_color", tinygltf::Value(clear)},
+        {"time", tinygltf::Value(double(scene.time))},
+        {"size", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(scene.width), tinygltf::Value(scene.height)})}});
+    m.scenes.push_back(gs);
+    m.defaultScene = 0;
+
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToFile(&m, path.string(), false, false, true, false)) {
+        throw SceneError(path.string() + ": cannot write glTF");
+    }
+}
+
+}  // namespace qs

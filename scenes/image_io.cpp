@@ -1,0 +1,165 @@
+// The one file that includes OpenImageIO.
+#include "image_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <system_error>
+#include <unistd.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+namespace qs {
+
+namespace {
+
+OIIO::ImageBuf to_buf(const Image& img) {
+    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf buf(spec);
+    buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, img.rgba.data());
+    return buf;
+}
+
+}  // namespace
+
+Image read_image(const std::filesystem::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
+        std::int64_t(spec.width) * spec.height > (std::int64_t(1) << 28)) {
+        throw ImageError(path.string() + ": unsupported image size " + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height));
+    }
+    const int nc = spec.nchannels;
+    std::vector<float> data(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(nc));
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data())) {
+        throw ImageError(path.string() + ": cannot decode image: " + in->geterror());
+    }
+    Image img{spec.width, spec.height, {}};
+    img.rgba.resize(std::size_t(spec.width) * std::size_t(spec.height) * 4);
+    for (std::size_t p = 0; p < std::size_t(spec.width) * std::size_t(spec.height); ++p) {
+        const float* s = &data[p * std::size_t(nc)];
+        float* d = &img.rgba[p * 4];
+        d[0] = s[0];
+        d[1] = nc >= 3 ? s[1] : s[0];
+        d[2] = nc >= 3 ? s[2] : s[0];
+        d[3] = nc == 4 ? s[3] : (nc == 2 ? s[1] : 1.0f);
+    }
+    return img;
+}
+
+glsl::sampler2D load_texture(const std::filesystem::path& path) {
+    Image img = read_image(path);
+    glsl::sampler2D tex;
+    tex.width = img.width, tex.height = img.height;
+    tex.rgba.resize(img.rgba.size());
+    const std::size_t row = std::size_t(img.width) * 4;
+    for (int y = 0; y < img.height; ++y) {  // flip: texel row 0 is t = 0, the image's bottom
+        std::copy_n(&img.rgba[std::size_t(img.height - 1 - y) * row], row, &tex.rgba[std::size_t(y) * row]);
+    }
+    return tex;
+}
+
+bool is_float_format(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
+}
+
+void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
+    const bool is_float = is_float_format(path);
+    // Same directory, so the final rename cannot cross file systems.
+    std::filesystem::path tmp = path;
+    tmp += ".tmp-" + std::to_string(::getpid()) + path.extension().string();
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) throw ImageError(path.string() + ": no image format for this file name: " + OIIO::geterror());
+    const int channels = alpha ? 4 : 3;
+    OIIO::ImageSpec spec(image.width, image.height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    for (const auto& [key, value] : metadata) spec.attribute(key, value);
+    spec.attribute("Software", "quadshade");
+    const std::size_t npixels = std::size_t(image.width) * std::size_t(image.height);
+    std::vector<float> floats(npixels * std::size_t(channels));
+    for (std::size_t p = 0; p < npixels; ++p) {
+        for (int c = 0; c < channels; ++c) floats[p * std::size_t(channels) + std::size_t(c)] = image.rgba[p * 4 + std::size_t(c)];
+    }
+    std::vector<std::uint8_t> bytes;
+    const void* pixels = floats.data();
+    OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT;
+    if (!is_float) {
+        // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
+        bytes.resize(floats.size());
+        for (std::size_t i = 0; i < bytes.size(); ++i) {
+            float c = floats[i];
+            c = std::isnan(c) ? 0.0f : std::min(std::max(c, 0.0f), 1.0f);
+            bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
+        }
+        pixels = bytes.data();
+        format = OIIO::TypeDesc::UINT8;
+    }
+    bool ok = out->open(tmp.string(), spec) && out->write_image(format, pixels) && out->close();
+    if (!ok) {
+        std::string err = out->geterror();
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw ImageError(path.string() + ": cannot write image: " + err);
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw ImageError(path.string() + ": cannot move the finished image into place: " + ec.message());
+    }
+}
+
+Comparison compare_images(const Image& a, const Image& b, float fail_threshold, float warn_threshold) {
+    if (a.width != b.width || a.height != b.height) {
+        throw ImageError("cannot compare a " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                         " image with a " + std::to_string(b.width) + "x" + std::to_string(b.height) + " one");
+    }
+    OIIO::ImageBuf A = to_buf(a), B = to_buf(b);
+    OIIO::ROI rgb = A.roi();
+    rgb.chbegin = 0, rgb.chend = 3;
+    OIIO::ImageBufAlgo::CompareResults r = OIIO::ImageBufAlgo::compare(A, B, fail_threshold, warn_threshold, rgb);
+    if (r.error) throw ImageError("image comparison failed: " + OIIO::geterror());
+    Comparison c;
+    c.mean_error = r.meanerror, c.rms_error = r.rms_error, c.psnr = r.PSNR, c.max_error = r.maxerror;
+    c.max_x = r.maxx, c.max_y = r.maxy, c.max_channel = r.maxc;
+    c.pixels_over_fail = r.nfail, c.pixels_over_warn = r.nwarn;
+    return c;
+}
+
+Image difference_heat_map(const Image& a, const Image& b, float full_scale) {
+    OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(to_buf(a), to_buf(b));
+    std::vector<float> d(std::size_t(a.width) * std::size_t(a.height) * 4);
+    diff.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, d.data());
+    Image heat{a.width, a.height, std::vector<float>(d.size())};
+    for (std::size_t p = 0; p < d.size(); p += 4) {
+        const float m = std::max({d[p], d[p + 1], d[p + 2]});
+        const float t = std::min(m / full_scale, 1.0f);
+        // black -> red -> yellow -> white as the difference grows; exact zero stays black
+        heat.rgba[p] = std::min(3.0f * t, 1.0f);
+        heat.rgba[p + 1] = std::clamp(3.0f * t - 1.0f, 0.0f, 1.0f);
+        heat.rgba[p + 2] = std::clamp(3.0f * t - 2.0f, 0.0f, 1.0f);
+        heat.rgba[p + 3] = 1.0f;
+    }
+    return heat;
+}
+
+Image side_by_side(const std::vector<const Image*>& images) {
+    Image out;
+    for (const Image* i : images) out.width += i->width, out.height = std::max(out.height, i->height);
+    out.rgba.assign(std::size_t(out.width) * std::size_t(out.height) * 4, 0.0f);
+    int x0 = 0;
+    for (const Image* i : images) {
+        for (int y = 0; y < i->height; ++y) {
+            std::copy_n(&i->rgba[std::size_t(y) * std::size_t(i->width) * 4], std::size_t(i->width) * 4,
+                        &out.rgba[(std::size_t(y) * std::size_t(out.width) + std::size_t(x0)) * 4]);
+        }
+        x0 += i->width;
+    }
+    return out;
+}
+
+}  // namespace qs

@@ -1,0 +1,145 @@
+// Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
+// plane and its texture. The outputs are committed; a test regenerates them and compares.
+//
+//   quadshade-make-scenes OUTPUT_DIR
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gltf.h"
+#include "image_io.h"
+#include "scene.h"
+
+namespace {
+
+using qs::Mesh;
+
+// The chapter's sphere: radius 1, poles on +-z, 20 latitude bands, 40 longitude steps with the
+// seam vertex duplicated; a fan at each pole, 18 strips between: 1520 triangles.
+Mesh sphere_mesh() {
+    constexpr int bands = 20, steps = 40;
+    Mesh m;
+    m.name = "sphere";
+    auto vertex = [&](int band, int step) {
+        const double theta = std::numbers::pi * band / bands;  // from the +z pole
+        const double phi = 2.0 * std::numbers::pi * step / steps;
+        m.vertices.push_back({{float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                               float(std::cos(theta))},
+                              {float(step) / steps, 1.0f - float(band) / bands}});
+    };
+    vertex(0, 0);  // north pole
+    for (int band = 1; band < bands; ++band) {
+        for (int step = 0; step <= steps; ++step) vertex(band, step);
+    }
+    vertex(bands, 0);  // south pole
+    const auto ring = [&](int band, int step) { return std::uint32_t(1 + (band - 1) * (steps + 1) + step); };
+    const std::uint32_t south = std::uint32_t(m.vertices.size() - 1);
+    for (int s = 0; s < steps; ++s) m.indices.insert(m.indices.end(), {0, ring(1, s), ring(1, s + 1)});
+    for (int band = 1; band < bands - 1; ++band) {
+        for (int s = 0; s < steps; ++s) {
+            m.indices.insert(m.indices.end(), {ring(band, s), ring(band + 1, s), ring(band, s + 1)});
+            m.indices.insert(m.indices.end(), {ring(band, s + 1), ring(band + 1, s), ring(band + 1, s + 1)});
+        }
+    }
+    for (int s = 0; s < steps; ++s) m.indices.insert(m.indices.end(), {ring(bands - 1, s), south, ring(bands - 1, s + 1)});
+    return m;
+}
+
+// A square (-1,-1,0)..(1,1,0) of two triangles, st = (0,0)..(1,1).
+Mesh square_mesh() {
+    Mesh m;
+    m.name = "square";
+    m.vertices = {{{-1, -1, 0}, {0, 0}}, {{1, -1, 0}, {1, 0}}, {{1, 1, 0}, {1, 1}}, {{-1, 1, 0}, {0, 1}}};
+    m.indices = {0, 1, 2, 0, 2, 3};
+    return m;
+}
+
+qs::Object object(std::string name, std::size_t mesh, const glm::mat4& world_from_object, std::string shader) {
+    qs::Object o;
+    o.name = std::move(name), o.mesh = mesh, o.world_from_object = world_from_object, o.shader = std::move(shader);
+    return o;
+}
+
+qs::Scene figure_1_1() {
+    qs::Scene s;
+    s.meshes = {square_mesh(), sphere_mesh()};
+    s.camera.yfov = glm::radians(15.0f);
+    s.camera.znear = 1.0f, s.camera.zfar = 100.0f;
+    s.camera.view = glm::lookAt(glm::vec3(0, -8, 1), glm::vec3(0, 0, -0.5f), glm::vec3(0, 0, 1));
+    s.clear_color = {0.0f, 0.3f, 0.5f, 0.0f};
+    s.time = 1.0f;
+    s.width = 1264, s.height = 400;
+    const glm::mat4 plane = glm::scale(glm::translate(glm::mat4(1), {0, 3, -1.5f}), {4, 4, 1});
+    s.objects.push_back(object("ground plane", 0, plane, "flow_noise"));
+    const char* shaders[4] = {"simplex3d", "turbulence", "spots", "tiles3d"};
+    const float xs[4] = {-1.8f, -0.6f, 0.6f, 1.8f};
+    for (int i = 0; i < 4; ++i) {
+        const glm::mat4 m = glm::scale(glm::translate(glm::mat4(1), {xs[i], -2, 0}), glm::vec3(0.5f));
+        s.objects.push_back(object("sphere " + std::to_string(i + 1), 1, m, shaders[i]));
+    }
+    return s;
+}
+
+qs::Scene table_1_1_plane(const std::filesystem::path& dir) {
+    qs::Scene s;
+    s.meshes = {square_mesh()};
+    // Orthographic camera at z = 1 looking down -z: the square fills the window exactly.
+    s.camera.kind = qs::Camera::Kind::Orthographic;
+    s.camera.xmag = 1.0f, s.camera.ymag = 1.0f, s.camera.znear = 0.5f, s.camera.zfar = 1.5f;
+    s.camera.view = glm::translate(glm::mat4(1), {0, 0, -1});
+    s.clear_color = {0, 0, 0, 1};
+    s.width = 500, s.height = 500;
+    s.textures.push_back({dir / "textures" / "halftone-source.png", {}, false});
+    qs::Object o = object("plane", 0, glm::mat4(1), "perlin");
+    o.texture = 0;
+    s.objects.push_back(o);
+    return s;
+}
+
+// A 256x256 colour image for the texture shaders: smooth hues, a grey ramp and a few discs, so
+// that the halftone screens show every ink.
+qs::Image test_image() {
+    constexpr int n = 256;
+    qs::Image img{n, n, std::vector<float>(std::size_t(n) * n * 4)};
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            const double u = (x + 0.5) / n, v = (y + 0.5) / n;
+            double r = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (u + 0.0));
+            double g = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (u + v * 0.5 + 0.33));
+            double b = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (v + 0.66));
+            if (v > 0.85) r = g = b = u;  // grey ramp along the top
+            const double cx[3] = {0.3, 0.65, 0.5}, cy[3] = {0.35, 0.5, 0.7}, rad[3] = {0.12, 0.09, 0.06};
+            for (int i = 0; i < 3; ++i) {
+                if (std::hypot(u - cx[i], v - cy[i]) < rad[i]) r = (i == 0), g = (i == 1), b = (i == 2) ? 0.2 : 0.9;
+            }
+            float* p = &img.rgba[(std::size_t(y) * n + std::size_t(x)) * 4];
+            p[0] = float(r), p[1] = float(g), p[2] = float(b), p[3] = 1.0f;
+        }
+    }
+    return img;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2 || std::string(argv[1]) == "--help") {
+        std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
+                             "Writes figure-1.1.gltf, table-1.1-plane.gltf (+ .bin) and textures/.\n");
+        return argc == 2 ? 0 : 2;
+    }
+    try {
+        const std::filesystem::path dir = argv[1];
+        std::filesystem::create_directories(dir / "textures");
+        qs::write_image(dir / "textures" / "halftone-source.png", test_image());
+        qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
+        qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,21 @@
+#include "scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace qs {
+
+glm::mat4 Camera::projection(float aspect) const {
+    if (kind == Kind::Orthographic) {
+        // glTF's orthographic projection: x / xmag, y / ymag, z mapped from [-znear, -zfar].
+        glm::mat4 p(0.0f);
+        p[0][0] = 1.0f / xmag;
+        p[1][1] = 1.0f / ymag;
+        p[2][2] = 2.0f / (znear - zfar);
+        p[3][2] = (zfar + znear) / (znear - zfar);
+        p[3][3] = 1.0f;
+        return p;
+    }
+    return glm::perspective(yfov, aspect, znear, zfar);
+}
+
+}  // namespace qs

@@ -1,0 +1,23 @@
+#pragma once
+// The shader catalogue: every translated shader, looked up by the name scenes use.
+
+#include <string_view>
+#include <vector>
+
+#include "program.h"
+
+namespace qs {
+
+using ProgramList = std::vector<const Program*>;
+
+// All programs, in a stable order (Figure 1.1, Table 1.1, then the other chapter patterns).
+const ProgramList& catalogue();
+// nullptr when no shader has that name.
+const Program* find_program(std::string_view name);
+
+// Registration, one function per translation unit of shaders.
+void register_figure_1_1(ProgramList& list);
+void register_table_1_1(ProgramList& list);
+void register_patterns(ProgramList& list);
+
+}  // namespace qs

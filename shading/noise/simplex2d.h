@@ -1,0 +1,51 @@
+#pragma once
+// 2D simplex noise, Listing 1.3, translated from simplex2d.glsl beside this file.
+
+#include "glsl.h"
+
+namespace qs::noise {
+using namespace qs::glsl;
+
+template <class V>
+V mod289(const V& x) { return x - floor(x * (1.0f / 289.0f)) * 289.0f; }
+template <class V>
+V permute289(const V& x) { return mod289(((x * 34.0f) + 1.0f) * x); }  // GLSL: permute
+
+// Corner offset of Listing 1.3. The seed prints C.xxxx; every published copy has C.xxzz.
+enum class Simplex2dCorner { Correct, SeedTypo };
+
+template <class F, Simplex2dCorner corner = Simplex2dCorner::Correct>
+F snoise(const vec2<F>& v) {
+    const vec4<F> C(0.211324865405187f,    // (3.0-sqrt(3.0))/6.0
+                    0.366025403784439f,    // 0.5*(sqrt(3.0)-1.0)
+                    -0.577350269189626f,   // -1.0 + 2.0 * C.x
+                    0.024390243902439f);   // 1.0 / 41.0
+    // First corner
+    vec2<F> i = floor(v + dot(v, C.yy()));
+    vec2<F> x0 = v - i + dot(i, C.xx());
+    // Other corners
+    vec2<F> i1 = select(x0.x > x0.y, vec2<F>(1.0f, 0.0f), vec2<F>(0.0f, 1.0f));
+    vec4<F> x12 = x0.xyxy() + (corner == Simplex2dCorner::Correct ? C.xxzz() : vec4<F>(C.x));
+    x12 = vec4<F>(x12.xy() - i1, x12.zw());  // GLSL: x12.xy -= i1;
+    // Permutations
+    i = mod289(i);  // Avoid truncation effects in permutation
+    vec3<F> p = permute289(permute289(i.y + vec3<F>(0.0f, i1.y, 1.0f)) + i.x + vec3<F>(0.0f, i1.x, 1.0f));
+    vec3<F> m = max(0.5f - vec3<F>(dot(x0, x0), dot(x12.xy(), x12.xy()), dot(x12.zw(), x12.zw())), 0.0f);
+    m = m * m;
+    m = m * m;
+    // Gradients
+    vec3<F> x = 2.0f * fract(p * vec3<F>(C.w)) - 1.0f;
+    vec3<F> h = abs(x) - 0.5f;
+    vec3<F> a0 = x - floor(x + 0.5f);
+    // Normalise gradients implicitly by scaling m
+    m *= 1.79284291400159f - 0.85373472095314f * (a0 * a0 + h * h);
+    // Compute final noise value at P
+    vec3<F> g;
+    g.x = a0.x * x0.x + h.x * x0.y;
+    vec2<F> gyz = vec2<F>(a0.y, a0.z) * x12.xz() + vec2<F>(h.y, h.z) * x12.yw();  // GLSL: g.yz = ...
+    g.y = gyz.x;
+    g.z = gyz.y;
+    return 130.0f * dot(m, g);
+}
+
+}  // namespace qs::noise

@@ -1,0 +1,136 @@
+#pragma once
+// SIMD lanes as a shading number type, on std::experimental::simd.
+//
+// `Lanes<T, N, Layout>` holds N values that the shader code treats as one GLSL `float`.
+// The Layout says what the lanes are:
+//  - `PixelLanes`: N independent fragments. No derivatives (dFdx does not compile): the per-pixel
+//    path for shaders that use none, with no helper lanes at all.
+//  - `QuadLanes<Rule>`: N/4 whole 2x2 pixel quads. dFdx/dFdy are lane differences inside a quad,
+//    taken by the DerivativeRule. Lane layout of every quad (window coordinates, y up):
+//
+//        y+1: | 2 | 3 |
+//        y  : | 0 | 1 |        x on the left, x+1 on the right, (x, y) even-aligned to the quad grid
+//
+//    Fine        dFdx: row y -> v1-v0, row y+1 -> v3-v2      dFdy: column x -> v2-v0, x+1 -> v3-v1
+//                (Mesa llvmpipe, for dFdx, dFdxFine and dFdxCoarse alike)
+//    CoarseLower dFdx = v1-v0, dFdy = v2-v0 on all four lanes: the lower row and left column, i.e.
+//                the quad's first pixel in y-up order (Mesa softpipe into OSMesa's buffer)
+//    CoarseUpper dFdx = v3-v2, dFdy = v2-v0 on all four lanes: the upper row and left column, i.e.
+//                the first pixel of a quad stored top-down (SwiftShader: lane1-lane0, lane2-lane0)
+//
+// Arithmetic is plain IEEE (no FMA contraction in the build; see CMakeLists.txt). Comparisons
+// yield masks; `select(mask, a, b)` picks per lane. min/max return the non-NaN operand.
+
+#include <cstddef>
+#include <experimental/simd>
+#include <type_traits>
+
+namespace qs {
+
+namespace stdx = std::experimental;
+
+enum class DerivativeRule { Fine, CoarseLower, CoarseUpper };
+
+struct PixelLanes {};
+template <DerivativeRule R>
+struct QuadLanes {
+    static constexpr DerivativeRule rule = R;
+};
+
+template <class T, int N, class Layout = PixelLanes>
+class Lanes {
+public:
+    using value_type = T;
+    using Simd = stdx::simd<T, stdx::simd_abi::deduce_t<T, N>>;
+    using Mask = typename Simd::mask_type;
+    using layout = Layout;
+    static constexpr int size = N;
+    static_assert(Simd::size() == std::size_t(N), "std::experimental::simd gave a different width");
+
+    Simd v;
+
+    Lanes() = default;
+    Lanes(T x) : v(x) {}  // NOLINT: broadcast, as GLSL promotes a literal
+    template <class S>
+        requires(std::is_arithmetic_v<S> && !std::is_same_v<S, T>)
+    Lanes(S x) : v(static_cast<T>(x)) {}  // NOLINT
+    explicit Lanes(const Simd& s) : v(s) {}
+
+    static Lanes load(const T* p) {
+        Lanes r;
+        r.v.copy_from(p, stdx::element_aligned);
+        return r;
+    }
+    void store(T* p) const { v.copy_to(p, stdx::element_aligned); }
+    T operator[](int i) const { return v[i]; }
+
+    // Lane i takes the value of lane index(i); index is a constexpr function of the lane number.
+    template <class Index>
+    Lanes permute(Index index) const {
+        return Lanes(Simd([&](auto i) { return v[index(std::size_t(i))]; }));
+    }
+
+    friend Lanes operator-(const Lanes& a) { return Lanes(-a.v); }
+    friend Lanes operator+(const Lanes& a, const Lanes& b) { return Lanes(a.v + b.v); }
+    friend Lanes operator-(const Lanes& a, const Lanes& b) { return Lanes(a.v - b.v); }
+    friend Lanes operator*(const Lanes& a, const Lanes& b) { return Lanes(a.v * b.v); }
+    friend Lanes operator/(const Lanes& a, const Lanes& b) { return Lanes(a.v / b.v); }
+    Lanes& operator+=(const Lanes& b) { v += b.v; return *this; }
+    Lanes& operator-=(const Lanes& b) { v -= b.v; return *this; }
+    Lanes& operator*=(const Lanes& b) { v *= b.v; return *this; }
+    Lanes& operator/=(const Lanes& b) { v /= b.v; return *this; }
+
+    friend Mask operator<(const Lanes& a, const Lanes& b) { return a.v < b.v; }
+    friend Mask operator<=(const Lanes& a, const Lanes& b) { return a.v <= b.v; }
+    friend Mask operator>(const Lanes& a, const Lanes& b) { return a.v > b.v; }
+    friend Mask operator>=(const Lanes& a, const Lanes& b) { return a.v >= b.v; }
+    friend Mask operator==(const Lanes& a, const Lanes& b) { return a.v == b.v; }
+    friend Mask operator!=(const Lanes& a, const Lanes& b) { return a.v != b.v; }
+
+    friend Lanes select(const Mask& m, const Lanes& a, const Lanes& b) {
+        Simd r = b.v;
+        stdx::where(m, r) = a.v;
+        return Lanes(r);
+    }
+    friend Mask isnan(const Lanes& a) { return stdx::isnan(a.v); }
+    friend Mask isinf(const Lanes& a) { return stdx::isinf(a.v); }
+    // GLSL min/max as llvmpipe evaluates them: a NaN operand loses to the other one.
+    friend Lanes min(const Lanes& a, const Lanes& b) { return select(isnan(b) || a < b, a, b); }
+    friend Lanes max(const Lanes& a, const Lanes& b) { return select(isnan(b) || a > b, a, b); }
+
+    friend Lanes floor(const Lanes& a) { return Lanes(stdx::floor(a.v)); }
+    friend Lanes ceil(const Lanes& a) { return Lanes(stdx::ceil(a.v)); }
+    friend Lanes trunc(const Lanes& a) { return Lanes(stdx::trunc(a.v)); }
+    friend Lanes abs(const Lanes& a) { return Lanes(stdx::abs(a.v)); }
+    friend Lanes sqrt(const Lanes& a) { return Lanes(stdx::sqrt(a.v)); }
+    friend Lanes sin(const Lanes& a) { return Lanes(stdx::sin(a.v)); }
+    friend Lanes cos(const Lanes& a) { return Lanes(stdx::cos(a.v)); }
+    friend Lanes tan(const Lanes& a) { return Lanes(stdx::tan(a.v)); }
+    friend Lanes atan(const Lanes& a) { return Lanes(stdx::atan(a.v)); }
+    friend Lanes atan(const Lanes& y, const Lanes& x) { return Lanes(stdx::atan2(y.v, x.v)); }
+    friend Lanes exp(const Lanes& a) { return Lanes(stdx::exp(a.v)); }
+    friend Lanes log(const Lanes& a) { return Lanes(stdx::log(a.v)); }
+    friend Lanes exp2(const Lanes& a) { return Lanes(stdx::exp2(a.v)); }
+    friend Lanes log2(const Lanes& a) { return Lanes(stdx::log2(a.v)); }
+    friend Lanes pow(const Lanes& a, const Lanes& b) { return Lanes(stdx::pow(a.v, b.v)); }
+
+    friend constexpr int lane_count(const Lanes&) { return N; }
+    friend T lane(const Lanes& a, int i) { return a.v[i]; }
+};
+
+template <class T, class Abi>
+bool lane(const stdx::simd_mask<T, Abi>& m, int i) { return m[i]; }
+template <class T, class Abi>
+bool any(const stdx::simd_mask<T, Abi>& m) { return stdx::any_of(m); }
+template <class T, class Abi>
+bool all(const stdx::simd_mask<T, Abi>& m) { return stdx::all_of(m); }
+
+// Number types the renderer instantiates shaders with.
+template <class T, int N>
+using Pixels = Lanes<T, N, PixelLanes>;
+template <class T, int K, DerivativeRule R = DerivativeRule::Fine>
+using Quads = Lanes<T, 4 * K, QuadLanes<R>>;
+template <class T = float, DerivativeRule R = DerivativeRule::Fine>
+using Quad = Quads<T, 1, R>;
+
+}  // namespace qs

@@ -1,0 +1,130 @@
+#pragma once
+// What makes a type a shading number type, and the derivative built-ins over all of them.
+
+#include <concepts>
+#include <type_traits>
+
+#include "number/dual2.h"
+#include "number/lanes.h"
+#include "number/scalar.h"
+
+namespace qs {
+
+template <class F>
+struct is_lanes : std::false_type {};
+template <class T, int N, class L>
+struct is_lanes<Lanes<T, N, L>> : std::true_type {};
+template <class F>
+struct is_dual2 : std::false_type {};
+template <class T>
+struct is_dual2<Dual2<T>> : std::true_type {};
+
+// A Number stands where GLSL has `float`.
+template <class F>
+concept Number = std::is_floating_point_v<F> || is_lanes<F>::value || is_dual2<F>::value;
+
+// The mask a comparison of two F yields.
+template <Number F>
+using mask_t = decltype(F() < F());
+
+// Whether dFdx/dFdy exist on F: quads (lane differences) and Dual2 (carried partials).
+template <class F>
+struct has_derivatives : std::false_type {};
+template <class T, int N, DerivativeRule R>
+struct has_derivatives<Lanes<T, N, QuadLanes<R>>> : std::true_type {};
+template <class T>
+struct has_derivatives<Dual2<T>> : std::true_type {};
+template <class F>
+inline constexpr bool has_derivatives_v = has_derivatives<F>::value;
+
+template <class F>
+inline constexpr bool always_false = false;
+
+// ---- derivative built-ins on quads ---------------------------------------------------------
+namespace quad_detail {
+// Index functions over the lane number i; `base` is the quad's lane 0.
+constexpr std::size_t base(std::size_t i) { return i & ~std::size_t(3); }
+constexpr std::size_t fine_right(std::size_t i) { return i | 1; }
+constexpr std::size_t fine_left(std::size_t i) { return i & ~std::size_t(1); }
+constexpr std::size_t fine_upper(std::size_t i) { return i | 2; }
+constexpr std::size_t fine_lower(std::size_t i) { return i & ~std::size_t(2); }
+}  // namespace quad_detail
+
+template <class T, int N, DerivativeRule R>
+Lanes<T, N, QuadLanes<R>> dFdxFine(const Lanes<T, N, QuadLanes<R>>& v) {
+    using namespace quad_detail;
+    return v.permute(fine_right) - v.permute(fine_left);
+}
+template <class T, int N, DerivativeRule R>
+Lanes<T, N, QuadLanes<R>> dFdyFine(const Lanes<T, N, QuadLanes<R>>& v) {
+    using namespace quad_detail;
+    return v.permute(fine_upper) - v.permute(fine_lower);
+}
+// Coarse: one difference for the whole quad. Under the Fine rule (llvmpipe) coarse is fine too.
+template <class T, int N, DerivativeRule R>
+Lanes<T, N, QuadLanes<R>> dFdxCoarse(const Lanes<T, N, QuadLanes<R>>& v) {
+    using namespace quad_detail;
+    if constexpr (R == DerivativeRule::Fine) {
+        return dFdxFine(v);
+    } else if constexpr (R == DerivativeRule::CoarseLower) {
+        return v.permute([](std::size_t i) { return base(i) | 1; }) - v.permute(base);
+    } else {
+        return v.permute([](std::size_t i) { return base(i) | 3; }) -
+               v.permute([](std::size_t i) { return base(i) | 2; });
+    }
+}
+template <class T, int N, DerivativeRule R>
+Lanes<T, N, QuadLanes<R>> dFdyCoarse(const Lanes<T, N, QuadLanes<R>>& v) {
+    using namespace quad_detail;
+    if constexpr (R == DerivativeRule::Fine) {
+        return dFdyFine(v);
+    } else {  // both coarse rules take the left column
+        return v.permute([](std::size_t i) { return base(i) | 2; }) - v.permute(base);
+    }
+}
+template <class T, int N, DerivativeRule R>
+Lanes<T, N, QuadLanes<R>> dFdx(const Lanes<T, N, QuadLanes<R>>& v) { return dFdxCoarse(v); }
+template <class T, int N, DerivativeRule R>
+Lanes<T, N, QuadLanes<R>> dFdy(const Lanes<T, N, QuadLanes<R>>& v) { return dFdyCoarse(v); }
+
+// ---- derivative built-ins on Dual2: the carried partials ----------------------------------
+template <class T>
+Dual2<T> dFdx(const Dual2<T>& v) { return Dual2<T>(v.dx); }
+template <class T>
+Dual2<T> dFdy(const Dual2<T>& v) { return Dual2<T>(v.dy); }
+template <class T>
+Dual2<T> dFdxFine(const Dual2<T>& v) { return dFdx(v); }
+template <class T>
+Dual2<T> dFdyFine(const Dual2<T>& v) { return dFdy(v); }
+template <class T>
+Dual2<T> dFdxCoarse(const Dual2<T>& v) { return dFdx(v); }
+template <class T>
+Dual2<T> dFdyCoarse(const Dual2<T>& v) { return dFdy(v); }
+
+// ---- no neighbours, no derivatives --------------------------------------------------------
+#define QS_NO_DERIVATIVE(name)                                                                   \
+    template <Number F>                                                                          \
+        requires(!has_derivatives_v<F>)                                                          \
+    F name(const F&) {                                                                           \
+        static_assert(always_false<F>,                                                           \
+                      #name " needs neighbouring fragments: instantiate the shader with Quads<> " \
+                            "or Dual2<>, not with a per-pixel number type (float, double, Pixels)"); \
+        return F();                                                                              \
+    }
+QS_NO_DERIVATIVE(dFdx)
+QS_NO_DERIVATIVE(dFdy)
+QS_NO_DERIVATIVE(dFdxFine)
+QS_NO_DERIVATIVE(dFdyFine)
+QS_NO_DERIVATIVE(dFdxCoarse)
+QS_NO_DERIVATIVE(dFdyCoarse)
+#undef QS_NO_DERIVATIVE
+
+// GLSL: fwidth(p) = abs(dFdx(p)) + abs(dFdy(p)), exactly (not the gradient's length).
+template <Number F>
+F fwidth(const F& v) { return abs(dFdx(v)) + abs(dFdy(v)); }
+template <Number F>
+F fwidthFine(const F& v) { return abs(dFdxFine(v)) + abs(dFdyFine(v)); }
+template <Number F>
+F fwidthCoarse(const F& v) { return abs(dFdxCoarse(v)) + abs(dFdyCoarse(v)); }
+
+}  // namespace qs

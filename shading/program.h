@@ -1,0 +1,98 @@
+#pragma once
+// The contract between the shader translations and whatever produces fragments (the rasterizer,
+// the ray caster). A Program is one catalogue shader with its vertex stage and its fragment
+// stage instantiated for every number type; the caller picks the instantiation per batch with a
+// ShadeMode. Nothing here knows about images, tiles or threads: a FragmentBatch is just
+// kBatchLanes fragments' inputs, laid out as 4 quads when a quad mode is used.
+
+#include <array>
+#include <string_view>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "glsl/texture.h"
+
+namespace qs {
+
+inline constexpr int kBatchLanes = 16;   // 4 quads: one AVX-512 register of floats
+inline constexpr int kBatchQuads = kBatchLanes / 4;
+inline constexpr int kMaxVaryings = 8;
+
+// How a batch's lanes relate and so how dFdx/dFdy are formed.
+enum class Derivatives {
+    None,         // independent pixels; only for shaders that take no derivatives
+    Fine,         // 2x2 quads, llvmpipe's rule
+    CoarseLower,  // 2x2 quads, softpipe's rule in OSMesa's buffer
+    CoarseUpper,  // 2x2 quads, first pixel of a top-down quad
+    Analytic,     // Dual2: exact partials carried from the interpolated varyings
+};
+enum class Precision { Float, Double };
+
+struct ShadeMode {
+    Derivatives derivatives = Derivatives::Fine;
+    Precision precision = Precision::Float;
+};
+
+// What a shader uses, so that the renderer leaves out everything else.
+struct Needs {
+    bool derivatives = false;  // dFdx/dFdy/fwidth: quads with helper lanes
+    bool texture = false;      // the scene must provide `teximage`
+    bool time = false;         // output changes with the `time` uniform
+    bool depth = true;         // draws into a depth-tested scene (false: full-screen benchmark)
+    int varyings = 0;          // interpolated floats the vertex stage writes
+};
+
+struct ShaderInfo {
+    std::string_view name;
+    std::string_view description;
+    Needs needs;
+    // GLSL sources, relative to shading/, concatenated in order (#version line first).
+    std::array<std::string_view, 3> glsl_vertex;
+    std::array<std::string_view, 3> glsl_fragment;
+    std::string_view glsl_defines = {};  // prepended to both stages after #version
+};
+
+struct Uniforms {
+    glm::mat4 model_view_projection{1.0f};
+    float time = 0.0f;
+    const glsl::sampler2D* teximage = nullptr;  // set when Needs::texture
+};
+
+struct VertexIn {
+    glm::vec3 position;  // object space (gl_Vertex.xyz)
+    glm::vec2 texcoord;  // gl_MultiTexCoord0.st
+};
+struct VertexOut {
+    glm::vec4 clip;  // gl_Position
+    std::array<float, kMaxVaryings> varyings{};
+};
+
+// Inputs of kBatchLanes fragments, structure of arrays. In quad modes lanes 4q..4q+3 are quad q
+// in the layout of number/lanes.h; helper lanes carry extrapolated values like the others.
+struct FragmentBatch {
+    alignas(64) float frag_coord[4][kBatchLanes];  // gl_FragCoord: x, y, z, 1/w
+    alignas(64) float varying[kMaxVaryings][kBatchLanes];
+    // d(varying)/dx and /dy in window space; filled only for Derivatives::Analytic.
+    alignas(64) float varying_dx[kMaxVaryings][kBatchLanes];
+    alignas(64) float varying_dy[kMaxVaryings][kBatchLanes];
+    // d(1/w)/dx, /dy for gl_FragCoord.w in Analytic mode
+    float inv_w_dx = 0.0f, inv_w_dy = 0.0f, z_dx = 0.0f, z_dy = 0.0f;
+};
+
+struct ColorBatch {
+    alignas(64) float rgba[4][kBatchLanes];
+};
+
+class Program {
+public:
+    virtual ~Program() = default;
+    virtual const ShaderInfo& info() const = 0;
+    virtual void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const = 0;
+    // Precondition: mode.derivatives != None unless !info().needs.derivatives.
+    virtual void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const = 0;
+};
+
+}  // namespace qs

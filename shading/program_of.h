@@ -1,0 +1,112 @@
+#pragma once
+// ProgramOf<Shader>: a shader translation (a struct with `info`, `vertex` and a `fragment`
+// template over the number type) as a Program. Include only from the .cpp that instantiates a
+// shader: this is where the number types meet the batch layout.
+//
+// Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
+// each DerivativeRule (float; Fine also double), and Dual2 (float, double).
+
+#include <stdexcept>
+#include <string>
+
+#include "glsl.h"
+#include "program.h"
+
+namespace qs {
+
+// A shader's view of its inputs, in number type F.
+template <class F>
+struct FragmentIn {
+    glsl::vec4<F> gl_FragCoord;
+    F varying[kMaxVaryings];
+    glsl::vec2<F> vec2_at(int i) const { return {varying[i], varying[i + 1]}; }
+    glsl::vec3<F> vec3_at(int i) const { return {varying[i], varying[i + 1], varying[i + 2]}; }
+};
+
+namespace program_detail {
+
+template <class F>
+F load(const float* values, const float* ddx, const float* ddy) {
+    if constexpr (is_dual2<F>::value) {
+        using T = typename F::value_type;
+        return F(load<T>(values, nullptr, nullptr), load<T>(ddx, nullptr, nullptr),
+                 load<T>(ddy, nullptr, nullptr));
+    } else {
+        using T = typename F::value_type;
+        if constexpr (std::is_same_v<T, float>) {
+            return F::load(values);
+        } else {
+            T wide[kBatchLanes];
+            for (int i = 0; i < kBatchLanes; ++i) wide[i] = T(values[i]);
+            return F::load(wide);
+        }
+    }
+}
+
+template <class F>
+void store(const F& v, float* out) {
+    if constexpr (is_dual2<F>::value) {
+        store(v.val, out);
+    } else {
+        for (int i = 0; i < kBatchLanes; ++i) out[i] = float(v[i]);
+    }
+}
+
+}  // namespace program_detail
+
+template <class Shader>
+class ProgramOf final : public Program {
+public:
+    const ShaderInfo& info() const override { return Shader::info; }
+
+    void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const override {
+        Shader::vertex(in, u, out);
+    }
+
+    void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const override {
+        const bool dbl = mode.precision == Precision::Double;
+        switch (mode.derivatives) {
+            case Derivatives::None:
+                if constexpr (!Shader::info.needs.derivatives) {
+                    return dbl ? run<Pixels<double, kBatchLanes>>(in, u, out)
+                               : run<Pixels<float, kBatchLanes>>(in, u, out);
+                } else {
+                    throw std::logic_error(std::string(Shader::info.name) +
+                                           " takes derivatives: it cannot be shaded per pixel");
+                }
+            case Derivatives::Fine:
+                return dbl ? run<Quads<double, kBatchQuads, DerivativeRule::Fine>>(in, u, out)
+                           : run<Quads<float, kBatchQuads, DerivativeRule::Fine>>(in, u, out);
+            case Derivatives::CoarseLower:
+                return run<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>(in, u, out);
+            case Derivatives::CoarseUpper:
+                return run<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>(in, u, out);
+            case Derivatives::Analytic:
+                return dbl ? run<Dual2<Pixels<double, kBatchLanes>>>(in, u, out)
+                           : run<Dual2<Pixels<float, kBatchLanes>>>(in, u, out);
+        }
+    }
+
+private:
+    template <class F>
+    static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+        using program_detail::load;
+        FragmentIn<F> f;
+        // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w are planes in window space.
+        static const float ones[kBatchLanes] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+        static const float zeros[kBatchLanes] = {};
+        float z_dx[kBatchLanes], z_dy[kBatchLanes], w_dx[kBatchLanes], w_dy[kBatchLanes];
+        for (int i = 0; i < kBatchLanes; ++i) {
+            z_dx[i] = in.z_dx, z_dy[i] = in.z_dy, w_dx[i] = in.inv_w_dx, w_dy[i] = in.inv_w_dy;
+        }
+        f.gl_FragCoord = {load<F>(in.frag_coord[0], ones, zeros), load<F>(in.frag_coord[1], zeros, ones),
+                          load<F>(in.frag_coord[2], z_dx, z_dy), load<F>(in.frag_coord[3], w_dx, w_dy)};
+        for (int v = 0; v < Shader::info.needs.varyings; ++v) {
+            f.varying[v] = load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]);
+        }
+        glsl::vec4<F> c = Shader::template fragment<F>(f, u);
+        for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
+    }
+};
+
+}  // namespace qs

@@ -1,0 +1,122 @@
+#pragma once
+// The five shaders of Figure 1.1 (four spheres over a flow-noise ground plane), translated from
+// the .vert/.frag files beside this header. Each struct: `info` (what it needs, its GLSL),
+// `vertex` (float, per vertex) and `fragment<F>` over any number type.
+
+#include "glsl.h"
+#include "noise/cellular.h"
+#include "noise/flow_noise.h"
+#include "noise/simplex3d.h"
+#include "program.h"
+#include "program_of.h"
+#include "vertex.h"
+
+namespace qs::shaders {
+using namespace qs::glsl;
+
+struct FlowNoise {
+    static constexpr ShaderInfo info{
+        "flow_noise", "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
+        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 2},
+        {"shaders/object_plane.vert"}, {"noise/flow_noise.glsl", "shaders/flow_noise.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
+        out.varyings[0] = in.position.x * 8.0f;  // p = gl_Vertex.xy * 8.0
+        out.varyings[1] = in.position.y * 8.0f;
+        out.clip = transform_point(u.model_view_projection, in.position);
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        using noise::srdnoise;
+        vec2<F> p = in.vec2_at(0);
+        F time = u.time;
+        vec2<F> g1, g2;
+        F n1 = srdnoise(p * 0.5f, 0.2f * time, g1);
+        F n2 = srdnoise(p * 2.0f + g1 * 0.5f, 0.51f * time, g2);
+        F n3 = srdnoise(p * 4.0f + g1 * 0.5f + g2 * 0.25f, 0.77f * time, g2);
+        F n = n1 + 0.75f * n2 + 0.5f * n3;
+        return vec4<F>(vec3<F>(0.4f, 0.5f, 0.6f) + vec3<F>(n), 1.0f);
+    }
+};
+
+// Vertex stage shared by the spheres: P = gl_Vertex.xyz * scale + (0, 0, time_sign * time).
+template <int scale, int time_sign>
+inline void sphere_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
+    glm::vec3 P = in.position * float(scale) + glm::vec3(0.0f, 0.0f, float(time_sign) * u.time);
+    out.varyings = {P.x, P.y, P.z};
+    out.clip = transform_point(u.model_view_projection, in.position);
+}
+
+struct Simplex3d {
+    static constexpr ShaderInfo info{
+        "simplex3d", "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
+        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        {"shaders/sphere_simplex.vert"}, {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
+        noise::Simplex3dDemo::glsl_defines};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, 1>(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        F n = noise::snoise3<noise::Simplex3dDemo>(in.vec3_at(0));
+        return vec4<F>(vec3<F>(0.5f + 0.6f * n), 1.0f);
+    }
+};
+
+struct Turbulence {
+    static constexpr ShaderInfo info{
+        "turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
+        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
+        noise::Simplex3dDemo::glsl_defines};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<2, -1>(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        using V = noise::Simplex3dDemo;
+        vec3<F> P = in.vec3_at(0);
+        F n = abs(noise::snoise3<V>(P));
+        n += 0.5f * abs(noise::snoise3<V>(P * 2.0f));
+        n += 0.25f * abs(noise::snoise3<V>(P * 4.0f));
+        n += 0.125f * abs(noise::snoise3<V>(P * 8.0f));
+        return vec4<F>(vec3<F>(1.5f - n, 1.0f - n, 0.5f - n), 1.0f);
+    }
+};
+
+struct Spots {
+    static constexpr ShaderInfo info{
+        "spots", "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
+        Needs{.derivatives = true, .texture = false, .time = true, .depth = true, .varyings = 3},
+        {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular2x2x2(in.vec3_at(0));  // GLSL: vec2 F
+        F s = fwidth(Fs.x);
+        F n1 = smoothstep(0.4f - s, 0.4f + s, Fs.x);
+        F n2 = smoothstep(0.5f - s, 0.5f + s, Fs.x);
+        return vec4<F>(n1, n2, n2, 1.0f);
+    }
+};
+
+struct Tiles3d {
+    static constexpr ShaderInfo info{
+        "tiles3d", "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
+        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        {"noise/simplex3d.glsl", "shaders/sphere_warp.vert"}, {"noise/cellular.glsl", "shaders/tiles3d.frag"},
+        noise::Simplex3dDemo::glsl_defines};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
+        using V = noise::Simplex3dDemo;
+        vec3<float> o(in.position.x, in.position.y, in.position.z);
+        float t = u.time;
+        vec3<float> P = o * 4.0f + 0.2f * vec3<float>(noise::snoise3<V>(o + vec3<float>(0.0f, 0.0f, t)),
+                                                      noise::snoise3<V>(o + vec3<float>(43.0f, 17.0f, t)),
+                                                      noise::snoise3<V>(o + vec3<float>(0.0f, -43.0f, t - 17.0f)));
+        out.varyings = {P.x, P.y, P.z};
+        out.clip = transform_point(u.model_view_projection, in.position);
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.vec3_at(0));  // GLSL: vec2 F
+        F n = 0.1f + Fs.y - Fs.x;
+        return vec4<F>(0.6f * n, 1.1f * n, 0.5f * n, 1.0f);
+    }
+};
+
+}  // namespace qs::shaders

@@ -1,0 +1,179 @@
+#pragma once
+// The eight benchmark shaders of Table 1.1, each on the full-window plane with st in [0,1]^2,
+// translated from the .frag files beside this header.
+
+#include "glsl.h"
+#include "noise/cellular.h"
+#include "noise/simplex2d.h"
+#include "noise/simplex3d.h"
+#include "program.h"
+#include "program_of.h"
+#include "shaders/aastep.h"
+#include "vertex.h"
+
+namespace qs::shaders {
+using namespace qs::glsl;
+
+// st = gl_MultiTexCoord0.st
+inline void plane_st_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
+    out.varyings[0] = in.texcoord.x;
+    out.varyings[1] = in.texcoord.y;
+    out.clip = transform_point(u.model_view_projection, in.position);
+}
+
+inline constexpr Needs kPlaneNeeds{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 2};
+inline constexpr Needs kPlaneDerivativeNeeds{.derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 2};
+
+struct ConstantColor {
+    static constexpr ShaderInfo info{"constant_color", "Table 1.1: constant colour",
+                                     Needs{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     {"shaders/plane_st.vert"}, {"shaders/constant_color.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>&, const Uniforms&) { return vec4<F>(1.0f, 0.5f, 0.0f, 1.0f); }
+};
+
+struct SingleTexture {
+    static constexpr ShaderInfo info{"single_texture", "Table 1.1: one bilinear texture lookup (clamp, no mipmaps)",
+                                     Needs{.derivatives = false, .texture = true, .time = false, .depth = false, .varyings = 2},
+                                     {"shaders/plane_st.vert"}, {"shaders/single_texture.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        return texture2D(*u.teximage, in.vec2_at(0));
+    }
+};
+
+struct Dots {
+    static constexpr ShaderInfo info{"dots", "Table 1.1 / Figure 1.2: dots, smoothstep(0.3, 0.32, ...)",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/dots.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> st = in.vec2_at(0);
+        F grey = smoothstep(0.3f, 0.32f, length(fract(5.0f * st) - 0.5f));
+        return vec4<F>(vec3<F>(grey), 1.0f);
+    }
+};
+
+struct Perlin {
+    static constexpr ShaderInfo info{"perlin", "Table 1.1 / Figure 1.4: 3D simplex noise (benchmark variant 0.51/93)",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin.frag"},
+                                     noise::Simplex3dBenchmark::glsl_defines};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> st = in.vec2_at(0);
+        F n = noise::snoise3<noise::Simplex3dBenchmark>(vec3<F>(10.0f * st, 60.0f));
+        return vec4<F>(vec3<F>(0.5f * n + 0.5f), 1.0f);
+    }
+};
+
+struct Perlin5 {
+    static constexpr ShaderInfo info{"perlin5", "Table 1.1 / Figure 1.4: five octaves of 3D simplex noise",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin5.frag"},
+                                     noise::Simplex3dBenchmark::glsl_defines};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        using V = noise::Simplex3dBenchmark;
+        vec2<F> st = in.vec2_at(0);
+        F n = noise::snoise3<V>(vec3<F>(5.0f * st, 50.0f));
+        n += 0.5f * noise::snoise3<V>(vec3<F>(10.0f * st, 60.0f));
+        n += 0.25f * noise::snoise3<V>(vec3<F>(20.0f * st, 70.0f));
+        n += 0.125f * noise::snoise3<V>(vec3<F>(40.0f * st, 80.0f));
+        n += 0.0625f * noise::snoise3<V>(vec3<F>(80.0f * st, 90.0f));
+        return vec4<F>(vec3<F>(0.4f * n + 0.5f), 1.0f);
+    }
+};
+
+struct Worley {
+    static constexpr ShaderInfo info{"worley", "Table 1.1 / Figure 1.5: F1 of 2D cellular noise (3x3 search)",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/cellular.glsl", "shaders/worley.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.vec2_at(0) * 10.0f);  // GLSL: vec2 F
+        return vec4<F>(vec3<F>(Fs.x), 1.0f);
+    }
+};
+
+struct WorleyTiles {
+    static constexpr ShaderInfo info{"worley_tiles", "Table 1.1 / Figure 1.5: anti-aliased Worley tiles",
+                                     kPlaneDerivativeNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/worley_tiles.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> st = in.vec2_at(0);
+        vec4<F> d1d2;
+        vec2<F> Fs = noise::cellular_vectors(st * 8.0f, d1d2);  // GLSL: vec2 F
+        F thresh = 0.05f * length(d1d2.xy() - d1d2.zw()) / (Fs.x + Fs.y);
+        F f = Fs.y - Fs.x + (0.5f - noise::cellular(st * 64.0f).y) * thresh;
+        return vec4<F>(vec3<F>(aastep(thresh, f)), 1.0f);
+    }
+};
+
+struct Halftone {
+    static constexpr ShaderInfo info{"halftone", "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
+                                     Needs{.derivatives = true, .texture = true, .time = false, .depth = false, .varyings = 4},
+                                     {"shaders/halftone.vert"},
+                                     {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
+        plane_st_vertex(in, u, out);
+        const float dims[2] = {float(u.teximage->width), float(u.teximage->height)};
+        out.varyings[2] = 1.0f / dims[0];  // one = 1.0 / dims
+        out.varyings[3] = 1.0f / dims[1];
+    }
+    // Explicit bilinear lookups to circumvent imprecise interpolation.
+    template <class F>
+    static vec4<F> texture2D_bilinear(const sampler2D& tex, const vec2<F>& st, const vec2<F>& dims, const vec2<F>& one) {
+        vec2<F> uv = st * dims;
+        vec2<F> uv00 = floor(uv - vec2<F>(0.5f));     // Lower left of lower left texel
+        vec2<F> uvlerp = uv - uv00 - vec2<F>(0.5f);   // Texel-local blends [0,1]
+        vec2<F> st00 = (uv00 + vec2<F>(0.5f)) * one;
+        vec4<F> texel00 = texture2D(tex, st00);
+        vec4<F> texel10 = texture2D(tex, st00 + vec2<F>(one.x, 0.0f));
+        vec4<F> texel01 = texture2D(tex, st00 + vec2<F>(0.0f, one.y));
+        vec4<F> texel11 = texture2D(tex, st00 + one);
+        vec4<F> texel0 = mix(texel00, texel01, uvlerp.y);
+        vec4<F> texel1 = mix(texel10, texel11, uvlerp.y);
+        return mix(texel0, texel1, uvlerp.x);
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        using noise::snoise;
+        vec2<F> st = in.vec2_at(0), one = in.vec2_at(2);
+        vec2<F> dims(float(u.teximage->width), float(u.teximage->height));
+        vec3<F> rgb = texture2D_bilinear(*u.teximage, st, dims, one).rgb();
+        F n = 0.1f * snoise(st * 200.0f);
+        n += 0.05f * snoise(st * 400.0f);
+        n += 0.025f * snoise(st * 800.0f);  // Fractal noise, 3 octaves
+        vec4<F> cmyk;
+        vec3<F> cmy = 1.0f - rgb;                   // Rough CMY conversion (GLSL: cmyk.xyz = ...)
+        cmyk.w = min(cmy.x, min(cmy.y, cmy.z));     // Create K
+        cmyk = vec4<F>(cmy - cmyk.w, cmyk.w);       // Subtract K amount from CMY (GLSL: cmyk.xyz -= cmyk.w)
+
+        // CMYK halftone screens, in angles 15/-15/0/45 degrees
+        vec2<F> Cuv = 50.0f * mat2<F>(0.966f, -0.259f, 0.259f, 0.966f) * st;
+        Cuv = fract(Cuv) - 0.5f;
+        F c = aastep(F(0.0f), sqrt(cmyk.x) - 2.0f * length(Cuv) + n);
+        vec2<F> Muv = 50.0f * mat2<F>(0.966f, 0.259f, -0.259f, 0.966f) * st;
+        Muv = fract(Muv) - 0.5f;
+        F m = aastep(F(0.0f), sqrt(cmyk.y) - 2.0f * length(Muv) + n);
+        vec2<F> Yuv = 50.0f * st;  // 0 deg
+        Yuv = fract(Yuv) - 0.5f;
+        F y = aastep(F(0.0f), sqrt(cmyk.z) - 2.0f * length(Yuv) + n);
+        vec2<F> Kuv = 50.0f * mat2<F>(0.707f, -0.707f, 0.707f, 0.707f) * st;
+        Kuv = fract(Kuv) - 0.5f;
+        F k = aastep(F(0.0f), sqrt(cmyk.w) - 2.0f * length(Kuv) + n);
+
+        vec3<F> rgbscreen = 1.0f - vec3<F>(c, m, y);
+        rgbscreen = mix(rgbscreen, vec3<F>(0.0f), 0.7f * k + 0.5f * n);
+        vec2<F> fw = fwidth(st);
+        F blend = smoothstep(0.7f, 1.4f, 200.0f * max(fw.x, fw.y));  // GLSL: fw.s, fw.t
+        return vec4<F>(mix(rgbscreen, rgb, blend), 1.0f);
+    }
+};
+
+}  // namespace qs::shaders
