@@ -1,0 +1,150 @@
+// The one file that calls OpenGL.
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "gl_renderer.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "catalogue.h"
+#include "framebuffer.h"
+#include "scene_render.h"
+
+namespace qs {
+
+namespace {
+
+std::string read_file(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    if (!in) throw std::runtime_error(p.string() + ": cannot read GLSL source");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+GLuint compile(GLenum stage, const std::string& source, const std::string& what) {
+    GLuint s = glCreateShader(stage);
+    const char* text = source.c_str();
+    glShaderSource(s, 1, &text, nullptr);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetShaderInfoLog(s, sizeof log, nullptr, log);
+        throw std::runtime_error(what + ": GLSL does not compile:\n" + log);
+    }
+    return s;
+}
+
+GLuint link_program(const ShaderInfo& info, const std::filesystem::path& shading_dir) {
+    const std::string name(info.name);
+    GLuint vs = compile(GL_VERTEX_SHADER, glsl_source(info, true, shading_dir), name + " (vertex)");
+    GLuint fs = compile(GL_FRAGMENT_SHADER, glsl_source(info, false, shading_dir), name + " (fragment)");
+    GLuint p = glCreateProgram();
+    glAttachShader(p, vs);
+    glAttachShader(p, fs);
+    glLinkProgram(p);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetProgramInfoLog(p, sizeof log, nullptr, log);
+        throw std::runtime_error(name + ": GLSL does not link:\n" + log);
+    }
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    return p;
+}
+
+// Texels as GL_RGBA8: the files are 8-bit, so k/255 survives the round trip exactly.
+GLuint upload_texture(const glsl::sampler2D& t) {
+    std::vector<unsigned char> bytes(t.rgba.size());
+    for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = unorm8(t.rgba[i]);
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return id;
+}
+
+}  // namespace
+
+std::string glsl_source(const ShaderInfo& info, bool vertex_stage, const std::filesystem::path& shading_dir) {
+    std::string src = "#version 120\n";
+    src += info.glsl_defines;
+    for (std::string_view file : vertex_stage ? info.glsl_vertex : info.glsl_fragment) {
+        if (file.empty()) continue;
+        src += "#line 1\n";
+        src += read_file(shading_dir / file);
+    }
+    return src;
+}
+
+Image render_gl(Scene& scene, const GlFrameRequest& request, GlContext& context,
+                const std::filesystem::path& shading_dir) {
+    const int width = context.width(), height = context.height();
+    const float aspect = float(width) / float(height);
+    const float time = request.time.value_or(scene.time);
+    glViewport(0, 0, width, height);
+    glClearColor(scene.clear_color.r, scene.clear_color.g, scene.clear_color.b, scene.clear_color.a);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+
+    std::map<const Program*, GLuint> programs;
+    std::map<int, GLuint> textures;
+    for (const Object& o : scene.objects) {
+        const Program& program = program_for(scene, o, request.shader_override);
+        const ShaderInfo& info = program.info();
+        GLuint& p = programs[&program];
+        if (!p) p = link_program(info, shading_dir);
+        glUseProgram(p);
+        if (info.needs.depth) glEnable(GL_DEPTH_TEST);
+        else glDisable(GL_DEPTH_TEST);
+        // The MVP quadshade computed, as the projection; gl_ModelViewProjectionMatrix = P * I.
+        const glm::mat4 mvp = scene.model_view_projection(o, aspect);
+        glMatrixMode(GL_PROJECTION);
+        glLoadMatrixf(glm::value_ptr(mvp));
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
+        if (info.needs.texture) {
+            if (o.texture < 0) throw std::runtime_error(scene.file.string() + ": no extras.teximage for " + o.name);
+            Texture& t = scene.textures[std::size_t(o.texture)];
+            if (!t.loaded) t.texels = load_texture(t.path), t.loaded = true;
+            GLuint& tex = textures[o.texture];
+            if (!tex) tex = upload_texture(t.texels);
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, tex);
+            if (GLint loc = glGetUniformLocation(p, "teximage"); loc >= 0) glUniform1i(loc, 0);
+            if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) glUniform2f(loc, float(t.texels.width), float(t.texels.height));
+        }
+        const Mesh& mesh = scene.meshes[o.mesh];
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glVertexPointer(3, GL_FLOAT, sizeof(VertexIn), &mesh.vertices[0].position);
+        glTexCoordPointer(2, GL_FLOAT, sizeof(VertexIn), &mesh.vertices[0].texcoord);
+        glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
+    }
+    Image img{width, height, context.read_rgba()};
+    for (auto& [prog, id] : programs) glDeleteProgram(id);
+    for (auto& [t, id] : textures) glDeleteTextures(1, &id);
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) throw std::runtime_error("OpenGL error " + std::to_string(e));
+    return img;
+}
+
+}  // namespace qs
