@@ -1,12 +1,14 @@
 #pragma once
-// Integer edge functions with the top-left fill rule, in framebuffer coordinates (y down).
+// Integer edge functions with llvmpipe's fill rule, in framebuffer coordinates (y down).
 //
 // For an edge a -> b of a triangle whose interior is on the positive side,
 //     E(p) = (b.x - a.x) (p.y - a.y) - (b.y - a.y) (p.x - a.x),
 // and a pixel centre p is covered when E(p) > 0 for all three edges, or E(p) == 0 on an edge the
-// rule includes: a left edge (interior to its right: dE/dx > 0) or a top edge (horizontal,
-// interior below: dE/dx == 0, dE/dy > 0). In GL's y-up window coordinates that is "left and
-// bottom", as llvmpipe rasterizes OSMesa's top-down buffer. Shared edges are covered exactly once.
+// rule includes: a left edge (interior to its right: dE/dx > 0) or a bottom edge (horizontal,
+// interior above it on screen: dE/dx == 0, dE/dy < 0 with y down). That is "left and bottom" in
+// GL's window coordinates too, which is what llvmpipe does in OSMesa's buffer (measured with a
+// rectangle whose edges pass through pixel centres; softpipe takes right and top instead).
+// Shared edges are covered exactly once.
 
 #include <cstdint>
 
@@ -23,7 +25,7 @@ struct EdgeFunction {
         EdgeFunction e;
         const std::int64_t dx = bx - ax, dy = by - ay;
         const std::int64_t dEdx = -dy, dEdy = dx;
-        const bool included = dEdx > 0 || (dEdx == 0 && dEdy > 0);
+        const bool included = dEdx > 0 || (dEdx == 0 && dEdy < 0);
         // E(0, 0) = dx * (0 - ay) - dy * (0 - ax)
         e.c = dx * (-ay) - dy * (-ax) + (included ? 1 : 0);
         e.dcdx = dEdx << subpixel_bits;

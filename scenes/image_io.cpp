@@ -122,7 +122,7 @@ Comparison compare_images(const Image& a, const Image& b, float fail_threshold, 
     OIIO::ROI rgb = A.roi();
     rgb.chbegin = 0, rgb.chend = 3;
     OIIO::ImageBufAlgo::CompareResults r = OIIO::ImageBufAlgo::compare(A, B, fail_threshold, warn_threshold, rgb);
-    if (r.error) throw ImageError("image comparison failed: " + OIIO::geterror());
+    // r.error is also set whenever a pixel fails (OIIO 2.4), so it is not an error here.
     Comparison c;
     c.mean_error = r.meanerror, c.rms_error = r.rms_error, c.psnr = r.PSNR, c.max_error = r.maxerror;
     c.max_x = r.maxx, c.max_y = r.maxy, c.max_channel = r.maxc;

@@ -10,7 +10,7 @@ namespace qs {
 
 using ProgramList = std::vector<const Program*>;
 
-// All programs, in a stable order (Figure 1.1, Table 1.1, then the other chapter patterns).
+// All programs, in a stable order: Figure 1.1, Table 1.1, the other chapter patterns, probes.
 const ProgramList& catalogue();
 // nullptr when no shader has that name.
 const Program* find_program(std::string_view name);
@@ -19,5 +19,6 @@ const Program* find_program(std::string_view name);
 void register_figure_1_1(ProgramList& list);
 void register_table_1_1(ProgramList& list);
 void register_patterns(ProgramList& list);
+void register_probes(ProgramList& list);
 
 }  // namespace qs

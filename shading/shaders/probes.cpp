@@ -1,0 +1,14 @@
+// Explicit instantiation of the probe shaders (see program_of.h).
+#include "shaders/probes.h"
+
+#include "catalogue.h"
+
+namespace qs {
+
+void register_probes(ProgramList& list) {
+    static const ProgramOf<shaders::DerivativeProbe> derivative_probe;
+    static const ProgramOf<shaders::SmoothstepProbe> smoothstep_probe;
+    list.insert(list.end(), {&derivative_probe, &smoothstep_probe});
+}
+
+}  // namespace qs

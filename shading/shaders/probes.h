@@ -1,0 +1,38 @@
+#pragma once
+// Probes that pin down driver behaviour the GLSL specification leaves open, so that tests can
+// compare quadshade's answer with llvmpipe's and softpipe's. Translated from the .frag files.
+
+#include "glsl.h"
+#include "program.h"
+#include "program_of.h"
+#include "shaders/table_1_1.h"
+
+namespace qs::shaders {
+using namespace qs::glsl;
+
+struct DerivativeProbe {
+    static constexpr ShaderInfo info{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
+                                     Needs{.derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> p = in.gl_FragCoord.xy();
+        F v = p.x * p.x + 100.0f * p.y * p.y + 10.0f * p.x * p.y;
+        return vec4<F>(dFdx(v), dFdy(v), v, 1.0f);
+    }
+};
+
+struct SmoothstepProbe {
+    static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e, e, x) and step(e, x) with x == e on every 4th column",
+                                     Needs{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        F e = floor(in.gl_FragCoord.x / 4.0f) * 4.0f + 2.5f;
+        return vec4<F>(smoothstep(e, e, in.gl_FragCoord.x), step(e, in.gl_FragCoord.x), 0.0f, 1.0f);
+    }
+};
+
+}  // namespace qs::shaders

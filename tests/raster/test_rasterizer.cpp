@@ -1,0 +1,280 @@
+// The rasterizer: coverage (watertight, fill rule), interpolation, helper lanes, quad pairing,
+// clipping, robustness, determinism.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+#include "gltf.h"
+#include "scene_render.h"
+#include "test_program.h"
+
+namespace qs::test {
+
+namespace {
+
+const ProgramOf<Flat> kFlat;
+const ProgramOf<Position> kPosition;
+const ProgramOf<Slopes> kSlopes;
+
+// Writes dFdx and dFdy of gl_FragCoord.y squared.
+struct SquareY {
+    static constexpr ShaderInfo info{"test_y2", "", Needs{.derivatives = true, .depth = false, .varyings = 0}, {}, {}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        F y = in.gl_FragCoord.y;
+        return vec4<F>(dFdx(y * y), dFdy(y * y), y, 1.0f);
+    }
+};
+const ProgramOf<SquareY> kSquareY;
+
+// Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
+Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
+                 RasterOptions options = {}, RasterStats* stats = nullptr) {
+    std::vector<VertexIn> verts;
+    std::vector<std::uint32_t> idx;
+    for (const glm::vec3& c : corners) {
+        idx.push_back(std::uint32_t(verts.size()));
+        verts.push_back({c, {0.0f, 0.0f}});
+    }
+    DrawCall d;
+    d.vertices = verts;
+    d.indices = idx;
+    d.program = &program;
+    d.uniforms.model_view_projection = window_to_clip(w, h);
+    return rasterize(w, h, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), options, stats);
+}
+
+// Coverage of GL window pixel (x, y): its alpha.
+float covered(const Framebuffer& fb, int x, int y) { return fb.pixel(x, fb.height - 1 - y)[3]; }
+
+}  // namespace
+
+TEST_CASE("a closed fan covers every pixel inside exactly once and nothing outside", "[raster][coverage]") {
+    std::mt19937 rng(1234);
+    std::uniform_real_distribution<float> jitter(-0.5f, 0.5f);
+    constexpr int W = 64, H = 64;
+    for (int fan = 0; fan < 40; ++fan) {
+        // A star-shaped polygon around a centre, vertices on the 1/256 grid, some on pixel centres.
+        const glm::vec2 centre(32.0f + jitter(rng) * 8, 32.0f + jitter(rng) * 8);
+        const int n = 3 + fan % 9;
+        std::vector<glm::vec2> ring;
+        for (int i = 0; i < n; ++i) {
+            const float a = 6.2831853f * (float(i) + 0.3f * jitter(rng)) / float(n);
+            const float r = 10.0f + 18.0f * (jitter(rng) + 0.5f);
+            glm::vec2 p = centre + r * glm::vec2(std::cos(a), std::sin(a));
+            if (i % 3 == 0) p = glm::floor(p) + 0.5f;  // exactly on a pixel centre
+            ring.push_back(glm::round(p * 256.0f) / 256.0f);
+        }
+        std::vector<float> count(W * H, 0.0f);
+        for (int i = 0; i < n; ++i) {
+            const glm::vec2 a = ring[std::size_t(i)], b = ring[std::size_t((i + 1) % n)];
+            // Alternate the winding: coverage must not depend on it.
+            const std::vector<glm::vec3> tri = (i % 2) ? std::vector<glm::vec3>{{centre, 0}, {a, 0}, {b, 0}}
+                                                       : std::vector<glm::vec3>{{centre, 0}, {b, 0}, {a, 0}};
+            const Framebuffer fb = draw(W, H, tri, kFlat);
+            for (int y = 0; y < H; ++y) {
+                for (int x = 0; x < W; ++x) count[std::size_t(y * W + x)] += covered(fb, x, y);
+            }
+        }
+        for (int y = 0; y < H; ++y) {
+            for (int x = 0; x < W; ++x) {
+                INFO("fan " << fan << " pixel " << x << ", " << y);
+                REQUIRE(count[std::size_t(y * W + x)] <= 1.0f);
+            }
+        }
+        // The centre's pixel and its neighbours are strictly inside.
+        CHECK(count[std::size_t(int(centre.y) * W + int(centre.x))] == 1.0f);
+    }
+}
+
+TEST_CASE("fill rule: pixel centres on left and bottom edges are in, on right and top edges out", "[raster][coverage]") {
+    // Rectangle x in [2.5, 6.5], y in [1.5, 4.5]: every edge passes through pixel centres.
+    const Framebuffer fb = draw(16, 16, {{2.5f, 1.5f, 0}, {6.5f, 1.5f, 0}, {6.5f, 4.5f, 0},
+                                         {2.5f, 1.5f, 0}, {6.5f, 4.5f, 0}, {2.5f, 4.5f, 0}}, kFlat);
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            const bool inside = x >= 2 && x <= 5 && y >= 1 && y <= 3;
+            INFO("pixel " << x << ", " << y);
+            CHECK(covered(fb, x, y) == (inside ? 1.0f : 0.0f));
+        }
+    }
+}
+
+TEST_CASE("two triangles sharing a diagonal through pixel centres cover each pixel once", "[raster][coverage]") {
+    const std::vector<glm::vec3> lower = {{0.5f, 0.5f, 0}, {12.5f, 0.5f, 0}, {12.5f, 12.5f, 0}};
+    const std::vector<glm::vec3> upper = {{0.5f, 0.5f, 0}, {12.5f, 12.5f, 0}, {0.5f, 12.5f, 0}};
+    const Framebuffer a = draw(16, 16, lower, kFlat), b = draw(16, 16, upper, kFlat);
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            const bool inside = x <= 11 && y <= 11;  // left/bottom in, right/top out
+            CHECK(covered(a, x, y) + covered(b, x, y) == (inside ? 1.0f : 0.0f));
+        }
+    }
+}
+
+TEST_CASE("perspective-correct varyings equal the analytic value at pixel centres", "[raster][interpolation]") {
+    // A tilted plane seen through a perspective camera; varyings are the object position.
+    constexpr int W = 64, H = 48;
+    const glm::mat4 proj = glm::perspective(glm::radians(50.0f), float(W) / H, 0.5f, 50.0f);
+    const glm::mat4 view = glm::lookAt(glm::vec3(0, -3, 1.5f), glm::vec3(0, 2, 0), glm::vec3(0, 0, 1));
+    const glm::mat4 mvp = proj * view;
+    std::vector<VertexIn> verts = {{{-4, -1, 0}, {}}, {{4, -1, 0}, {}}, {{4, 9, 0}, {}}, {{-4, 9, 0}, {}}};
+    std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall d{verts, idx, &kPosition, {}};
+    d.uniforms.model_view_projection = mvp;
+    const Framebuffer fb = rasterize(W, H, glm::vec4(0), std::span<const DrawCall>(&d, 1), {});
+    const glm::dmat4 inv = glm::inverse(glm::dmat4(mvp));
+    int checked = 0;
+    for (int row = 0; row < H; ++row) {
+        for (int x = 0; x < W; ++x) {
+            const float* px = fb.pixel(x, row);
+            if (px[3] == 0.0f) continue;
+            // Ray through the pixel centre, intersected with z = 0 in double.
+            const double nx = (x + 0.5) / W * 2 - 1, ny = (H - row - 0.5) / H * 2 - 1;
+            glm::dvec4 a = inv * glm::dvec4(nx, ny, -1, 1), b = inv * glm::dvec4(nx, ny, 1, 1);
+            a /= a.w, b /= b.w;
+            const double t = a.z / (a.z - b.z);
+            const glm::dvec3 hit = glm::dvec3(a) + t * (glm::dvec3(b) - glm::dvec3(a));
+            // Float setup and interpolation over ~10 units: a few ulps of the plane equations.
+            constexpr double kTolerance = 2e-4;
+            CHECK(px[0] == Approx(hit.x).margin(kTolerance));
+            CHECK(px[1] == Approx(hit.y).margin(kTolerance));
+            ++checked;
+        }
+    }
+    CHECK(checked > W * H / 3);
+}
+
+TEST_CASE("dFdx of an interpolated varying on helper lanes equals the interior value", "[raster][helpers]") {
+    // v = x / 4 in window space: every quad difference is exactly 0.25, and 0 in y, including
+    // quads along the sliver's edges where most lanes are helpers extrapolating the plane.
+    const std::vector<glm::vec3> sliver = {{1.3f, 2.1f, 0}, {60.7f, 9.4f, 0}, {3.2f, 5.9f, 0}};
+    std::vector<VertexIn> verts;
+    for (const glm::vec3& c : sliver) verts.push_back({c, {}});
+    // varying 0 is position.x; scale it by 1/4 through the object position itself.
+    for (VertexIn& v : verts) v.position.x *= 1.0f, v.texcoord = {0, 0};
+    RasterStats stats;
+    const Framebuffer fb = draw(64, 16, sliver, kSlopes, {}, &stats);
+    int written = 0;
+    for (int row = 0; row < 16; ++row) {
+        for (int x = 0; x < 64; ++x) {
+            const float* px = fb.pixel(x, row);
+            if (px[3] == 0.0f) continue;
+            ++written;
+            CHECK(px[0] == Approx(1.0f).margin(1e-5));  // d(position.x)/dx = 1 pixel per pixel
+            CHECK(px[1] == Approx(0.0f).margin(1e-5));
+        }
+    }
+    CHECK(written > 0);
+    CHECK(stats.lanes_shaded > std::uint64_t(written));  // helper lanes ran
+}
+
+TEST_CASE("odd image sizes: quads pair rows from the top (OSMesa) or from the bottom (FBO)", "[raster][helpers]") {
+    // 17x15, v = y^2 on a full-window rectangle: dFdy on GL row 0 pairs it with row -1 (a helper
+    // below the image) top-down, with row 1 bottom-up.
+    constexpr int W = 17, H = 15;
+    const ProgramOf<SquareY>& program = kSquareY;
+    const std::vector<glm::vec3> full = {{0, 0, 0}, {W, 0, 0}, {W, H, 0}, {0, 0, 0}, {W, H, 0}, {0, H, 0}};
+    RasterOptions top, bottom;
+    bottom.pairing = QuadPairing::BottomUp;
+    const Framebuffer a = draw(W, H, full, program, top), b = draw(W, H, full, program, bottom);
+    auto dy_at = [](const Framebuffer& fb, int y) { return fb.pixel(16, fb.height - 1 - y)[1]; };
+    CHECK(dy_at(a, 0) == 0.5f * 0.5f - (-0.5f) * (-0.5f));  // rows 0 and -1
+    CHECK(dy_at(b, 0) == 1.5f * 1.5f - 0.5f * 0.5f);        // rows 0 and 1
+    CHECK(dy_at(a, 14) == 14.5f * 14.5f - 13.5f * 13.5f);   // rows 13 and 14
+    CHECK(dy_at(b, 14) == 15.5f * 15.5f - 14.5f * 14.5f);   // rows 14 and 15 (helper above)
+    // Column 16 pairs with the helper column 17 in both.
+    CHECK(a.pixel(16, 0)[0] == 0.0f);
+    for (int i = 0; i < W * H; ++i) CHECK(a.rgba[std::size_t(i) * 4 + 3] == 1.0f);  // every pixel drawn
+}
+
+TEST_CASE("degenerate, sliver and non-finite triangles are dropped without harm", "[raster][robustness]") {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    RasterStats stats;
+    const Framebuffer fb = draw(32, 32,
+                                {{1, 1, 0}, {20, 20, 0}, {10, 10, 0},       // collinear
+                                 {5, 5, 0}, {5, 5, 0}, {5, 5, 0},          // a point
+                                 {nan, 1, 0}, {3, 4, 0}, {9, 2, 0},        // NaN
+                                 {inf, 1, 0}, {3, 4, 0}, {9, 2, 0},        // infinity
+                                 {0.1f, 0.1f, 0}, {31.9f, 0.1f, 0}, {0.1f, 0.1004f, 0}},  // sub-pixel sliver
+                                kFlat, {}, &stats);
+    CHECK(stats.triangles_in == 5);
+    for (float v : fb.rgba) CHECK(std::isfinite(v));
+    float sum = 0.0f;
+    for (std::size_t i = 3; i < fb.rgba.size(); i += 4) sum += fb.rgba[i];
+    CHECK(sum == 0.0f);
+}
+
+TEST_CASE("triangles crossing the near plane and vertices at 1e6 in clip space are clipped, not lost", "[raster][clipping]") {
+    constexpr int W = 32, H = 32;
+    // A ground plane reaching behind the eye: the lower half of the image must be covered.
+    const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
+                          glm::lookAt(glm::vec3(0, 0, 1), glm::vec3(0, 1, 1), glm::vec3(0, 0, 1));
+    std::vector<VertexIn> plane = {{{-50, -50, 0}, {}}, {{50, -50, 0}, {}}, {{50, 50, 0}, {}}, {{-50, 50, 0}, {}}};
+    std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall d{plane, idx, &kFlat, {}};
+    d.uniforms.model_view_projection = mvp;
+    const Framebuffer a = rasterize(W, H, glm::vec4(0), std::span<const DrawCall>(&d, 1), {});
+    for (int row = H / 2 + 1; row < H; ++row) {
+        for (int x = 0; x < W; ++x) CHECK(a.pixel(x, row)[3] == 1.0f);
+    }
+    for (int x = 0; x < W; ++x) CHECK(a.pixel(x, 0)[3] == 0.0f);  // sky stays clear
+    // A triangle with clip coordinates of +-1e6 (w = 1) covers the whole window.
+    std::vector<VertexIn> huge = {{{-1e6f, -1e6f, 0}, {}}, {{1e6f, -1e6f, 0}, {}}, {{0, 1e6f, 0}, {}}};
+    std::vector<std::uint32_t> tri = {0, 1, 2};
+    DrawCall h{huge, tri, &kFlat, {}};
+    const Framebuffer b = rasterize(W, H, glm::vec4(0), std::span<const DrawCall>(&h, 1), {});
+    for (std::size_t i = 3; i < b.rgba.size(); i += 4) CHECK(b.rgba[i] == 1.0f);
+}
+
+TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "[raster][depth]") {
+    const std::vector<glm::vec3> near_tri = {{0, 0, -0.5f}, {32, 0, -0.5f}, {0, 32, -0.5f}};
+    const std::vector<glm::vec3> far_tri = {{0, 0, 0.5f}, {32, 0, 0.5f}, {32, 32, 0.5f}};
+    for (bool near_first : {true, false}) {
+        std::vector<glm::vec3> all = near_first ? near_tri : far_tri;
+        const auto& second = near_first ? far_tri : near_tri;
+        all.insert(all.end(), second.begin(), second.end());
+        const Framebuffer fb = draw(32, 32, all, kPosition);
+        CHECK(!fb.depth.empty());
+        CHECK(fb.pixel(20, 31 - 5)[2] == -0.5f);  // covered by both: the near one's z
+    }
+    CHECK(draw(8, 8, near_tri, kFlat).depth.empty());  // no draw needs depth: no depth buffer
+}
+
+TEST_CASE("derivative-free shaders run per pixel with no helper lanes; derivative shaders in quads", "[raster][specialisation]") {
+    const std::vector<glm::vec3> tri = {{0.5f, 0.5f, 0}, {30.2f, 3.1f, 0}, {7.7f, 29.9f, 0}};
+    RasterStats flat, slopes, general;
+    draw(32, 32, tri, kFlat, {}, &flat);
+    draw(32, 32, tri, kSlopes, {}, &slopes);
+    RasterOptions force;
+    force.force_general_path = true;
+    draw(32, 32, tri, kFlat, force, &general);
+    CHECK(flat.quads == 0);
+    CHECK(flat.lanes_shaded == flat.pixels_written);
+    CHECK(slopes.quads > 0);
+    CHECK(slopes.lanes_shaded == slopes.quads * 4);
+    CHECK(slopes.lanes_shaded > slopes.pixels_written);
+    CHECK(general.pixels_written == flat.pixels_written);
+    CHECK(general.lanes_shaded > general.pixels_written);
+}
+
+TEST_CASE("the Figure 1.1 frame is bit-identical on 1 and 2 threads", "[raster][determinism]") {
+    Scene scene = load_scene(std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/figure-1.1.gltf");
+    FrameRequest one, two;
+    one.width = two.width = 316, one.height = two.height = 100;
+    one.raster.threads = 1, two.raster.threads = 2;
+    const Framebuffer a = render_frame(scene, one), b = render_frame(scene, two);
+    REQUIRE(a.rgba.size() == b.rgba.size());
+    CHECK(std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)) == 0);
+}
+
+TEST_CASE("absurd image sizes are refused with a message", "[raster][robustness]") {
+    CHECK_THROWS_WITH(draw(0, 10, {}, kFlat), Catch::Contains("outside"));
+    CHECK_THROWS_WITH(draw(100000, 10, {}, kFlat), Catch::Contains("outside"));
+}
+
+}  // namespace qs::test
