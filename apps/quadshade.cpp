@@ -52,6 +52,7 @@ const char* kRenderHelp =
     "                          coarse-upper (first pixel of a top-down quad) | analytic (Dual2)\n"
     "  --precision P           float (default) | double\n"
     "  --quad-pairing P        top-down (OSMesa's buffer, default) | bottom-up (an FBO)\n"
+    "  --fill-rule R           pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)\n"
     "  --alpha                 keep the alpha channel (the clear colour's alpha is 0)\n"
     "  --general-path          shade every shader in quads with a depth buffer (no specialisation)\n"
     "  --threads N             worker threads (default: all cores)\n";
@@ -160,6 +161,11 @@ int cmd_render(int argc, char** argv) {
             if (v == "top-down") req.raster.pairing = QuadPairing::TopDown;
             else if (v == "bottom-up") req.raster.pairing = QuadPairing::BottomUp;
             else throw UsageError("--quad-pairing: expected top-down or bottom-up, got '" + v + "'");
+        } else if (a == "--fill-rule") {
+            const std::string v = need_value(i, argc, argv);
+            if (v == "left-bottom") req.raster.fill_rule = FillRule::LeftBottom;
+            else if (v == "right-top") req.raster.fill_rule = FillRule::RightTop;
+            else throw UsageError("--fill-rule: expected left-bottom or right-top, got '" + v + "'");
         } else if (a == "--alpha") {
             alpha = true;
         } else if (a == "--general-path") {

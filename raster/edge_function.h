@@ -7,12 +7,19 @@
 // rule includes: a left edge (interior to its right: dE/dx > 0) or a bottom edge (horizontal,
 // interior above it on screen: dE/dx == 0, dE/dy < 0 with y down). That is "left and bottom" in
 // GL's window coordinates too, which is what llvmpipe does in OSMesa's buffer (measured with a
-// rectangle whose edges pass through pixel centres; softpipe takes right and top instead).
+// rectangle whose edges pass through pixel centres; softpipe takes right and top instead, which
+// FillRule::RightTop reproduces).
 // Shared edges are covered exactly once.
 
 #include <cstdint>
 
 namespace qs {
+
+// Which edges own the pixel centres that lie exactly on them (GL window coordinates).
+enum class FillRule {
+    LeftBottom,  // llvmpipe (default)
+    RightTop,    // softpipe
+};
 
 struct EdgeFunction {
     std::int64_t c = 0;     // E at pixel (0, 0), plus the fill-rule bias (E + bias > 0 inside)
@@ -21,11 +28,13 @@ struct EdgeFunction {
 
     // a, b: fixed-point vertex positions (pixel centres on multiples of fixed::kOne).
     static EdgeFunction from_edge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
-                                  int subpixel_bits) {
+                                  int subpixel_bits, FillRule rule) {
         EdgeFunction e;
         const std::int64_t dx = bx - ax, dy = by - ay;
         const std::int64_t dEdx = -dy, dEdy = dx;
-        const bool included = dEdx > 0 || (dEdx == 0 && dEdy < 0);
+        const bool left_or_bottom = dEdx > 0 || (dEdx == 0 && dEdy < 0);
+        const bool right_or_top = dEdx < 0 || (dEdx == 0 && dEdy > 0);
+        const bool included = rule == FillRule::LeftBottom ? left_or_bottom : right_or_top;
         // E(0, 0) = dx * (0 - ay) - dy * (0 - ax)
         e.c = dx * (-ay) - dy * (-ax) + (included ? 1 : 0);
         e.dcdx = dEdx << subpixel_bits;

@@ -247,7 +247,7 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
             clipped.clear();
             clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, guard_x, guard_y, clipped);
             for (const auto& tri : clipped) {
-                if (auto t = setup_triangle(tri, prepared[di].varyings, width, height)) {
+                if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule)) {
                     t->draw = int(di);
                     triangles.push_back(*t);
                 }

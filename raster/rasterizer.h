@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "draw_call.h"
+#include "edge_function.h"
 #include "framebuffer.h"
 #include "program.h"
 
@@ -27,6 +28,7 @@ struct RasterOptions {
     Derivatives derivatives = Derivatives::Fine;  // for shaders that take derivatives
     Precision precision = Precision::Float;
     QuadPairing pairing = QuadPairing::TopDown;
+    FillRule fill_rule = FillRule::LeftBottom;
     // Shade derivative-free shaders in quads with helper lanes too (the general path), and keep
     // a depth buffer even when no draw needs one. For measuring what specialisation saves.
     bool force_general_path = false;

@@ -8,7 +8,7 @@
 namespace qs {
 
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
-                                            int height) {
+                                            int height, FillRule fill_rule) {
     const float scale_x = float(width) * 0.5f, trans_x = float(width) * 0.5f;
     const float scale_y = -float(height) * 0.5f, trans_y = float(height) * 0.5f;
     float x[3], y[3], z[3], oow[3];
@@ -32,7 +32,7 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     TriangleSetup t;
     for (int e = 0; e < 3; ++e) {
         const int a = order[e], b = order[(e + 1) % 3];
-        t.edges[e] = EdgeFunction::from_edge(fx[a], fy[a], fx[b], fy[b], fixed::kSubpixelBits);
+        t.edges[e] = EdgeFunction::from_edge(fx[a], fy[a], fx[b], fy[b], fixed::kSubpixelBits, fill_rule);
     }
     // Pixel centres i << 8 inside the fixed-point bounds.
     auto lo = [](std::int64_t v) { return int((v + fixed::kOne - 1) >> fixed::kSubpixelBits); };

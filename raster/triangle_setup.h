@@ -26,6 +26,6 @@ struct TriangleSetup {
 // y = ndc.y (-H/2) + H/2, z = ndc.z / 2 + 1/2. Returns nothing for a triangle that covers no
 // pixel centre of the framebuffer or has zero area.
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
-                                            int height);
+                                            int height, FillRule fill_rule);
 
 }  // namespace qs

@@ -24,14 +24,15 @@ struct DerivativeProbe {
 };
 
 struct SmoothstepProbe {
-    static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e, e, x) and step(e, x) with x == e on every 4th column",
-                                     Needs{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+    static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
+                                     Needs{.derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},
                                      {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
         F e = floor(in.gl_FragCoord.x / 4.0f) * 4.0f + 2.5f;
-        return vec4<F>(smoothstep(e, e, in.gl_FragCoord.x), step(e, in.gl_FragCoord.x), 0.0f, 1.0f);
+        F w = 0.7f * length(vec2<F>(dFdx(e), dFdy(e)));
+        return vec4<F>(smoothstep(e - w, e + w, in.gl_FragCoord.x), step(e, in.gl_FragCoord.x), w, 1.0f);
     }
 };
 

@@ -1,0 +1,209 @@
+// The correctness bar: every catalogue shader, rendered live by Mesa from its original GLSL
+// (llvmpipe and softpipe, through quadshade-reference), against quadshade with the matching
+// derivative rule. Coverage must be identical; colour differences are counted in 8-bit steps.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+#include "catalogue.h"
+#include "framebuffer.h"
+#include "gltf.h"
+#include "image_io.h"
+#include "scene_render.h"
+
+namespace qs {
+
+namespace {
+
+const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
+const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
+const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
+const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
+
+// Plane shaders are compared at this size (the book's benchmark is 500x500; 256x256 keeps the
+// 60 reference renders of a test run to seconds).
+constexpr int kPlaneSize = 256;
+
+// The bar (issue #4): at least 99.9% of pixels within 1/255 and none beyond 2/255...
+constexpr double kMaxFractionOver1 = 0.001;
+// ...except where a documented cause is counted and bounded. Measured on Mesa 22.3.6 at the
+// sizes above; each bound is the measured count with a small margin for other Mesa builds.
+struct Exception {
+    int max_over_2;
+    int max_coverage_mismatch;
+    const char* cause;
+};
+const std::map<std::pair<std::string, std::string>, Exception> kExceptions = {
+    {{"perlin5", "llvmpipe"},
+     {80, 0, "octaves at 40 and 80 st reach noise cells where a 1-ulp difference in the lattice "
+          "coordinate picks the neighbouring simplex corner (measured: 64 pixels at 500x500)"}},
+    {{"perlin5", "softpipe"}, {120, 0, "as for llvmpipe; softpipe's interpolation adds its own 1-ulp differences"}},
+    {{"worley_tiles", "llvmpipe"},
+     {4, 0, "a pixel where F1 and F2 tie within an ulp: aastep of their difference flips (1 pixel)"}},
+    {{"worley_tiles", "softpipe"}, {8, 0, "F1/F2 ties as for llvmpipe"}},
+    {{"figure-1.1", "softpipe"},
+     {8, 4, "softpipe sets up edges in floating point without llvmpipe's 8-bit sub-pixel snapping, "
+            "which quadshade follows: 2 pixels where the plane's far edge passes within 1/256 pixel "
+            "of a pixel centre are covered by one and not the other (measured: 2 of 505600), and "
+            "their colours differ as a consequence"}},
+};
+
+struct Case {
+    std::string name;  // a shader, or "figure-1.1" for the whole scene
+    std::filesystem::path scene;
+    std::string shader;  // override, empty for the scene's own
+    int width, height;
+};
+
+std::vector<Case> cases() {
+    std::vector<Case> all = {{"figure-1.1", kFigure, "", 1264, 400}};
+    for (const Program* p : catalogue()) {
+        const ShaderInfo& info = p->info();
+        if (info.needs.depth || info.name.find("probe") != std::string_view::npos) continue;  // Figure 1.1 / probes
+        all.push_back({std::string(info.name), kPlane, std::string(info.name), kPlaneSize, kPlaneSize});
+    }
+    return all;
+}
+
+std::filesystem::path work_dir() {
+    static const auto dir = [] {
+        auto d = std::filesystem::temp_directory_path() / ("quadshade-reference-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(d);
+        return d;
+    }();
+    return dir;
+}
+
+Image reference(const Case& c, const std::string& driver, int width, int height) {
+    const auto out = work_dir() / (c.name + "." + driver + "." + std::to_string(width) + "x" + std::to_string(height) + ".exr");
+    if (!std::filesystem::exists(out)) {
+        std::string cmd = (kBin / "quadshade-reference").string() + " " + c.scene.string() + " -o " + out.string() +
+                          " --driver " + driver + " --size " + std::to_string(width) + "x" + std::to_string(height);
+        if (!c.shader.empty()) cmd += " --shader " + c.shader;
+        cmd += " 2> /dev/null";
+        if (std::system(cmd.c_str()) != 0) throw std::runtime_error("reference render failed: " + cmd);
+    }
+    return read_image(out);
+}
+
+// quadshade set up as the driver: llvmpipe's fine derivatives and left-bottom fill rule, or
+// softpipe's coarse derivatives and right-top fill rule.
+Framebuffer ours(const Case& c, Derivatives rule, int width, int height) {
+    Scene scene = load_scene(c.scene);
+    FrameRequest r;
+    r.width = width, r.height = height;
+    r.shader_override = c.shader;
+    r.raster.derivatives = rule;
+    r.raster.fill_rule = rule == Derivatives::CoarseLower ? FillRule::RightTop : FillRule::LeftBottom;
+    return render_frame(scene, r);
+}
+
+struct Counts {
+    std::size_t pixels = 0, coverage_mismatch = 0, over_1 = 0, over_2 = 0;
+    int max_steps = 0;
+};
+
+// Differences in 8-bit steps after GL's unorm conversion of both; alpha marks coverage.
+Counts count(const Framebuffer& a, const Image& b) {
+    Counts c;
+    c.pixels = std::size_t(a.width) * std::size_t(a.height);
+    for (std::size_t p = 0; p < c.pixels; ++p) {
+        if ((a.rgba[p * 4 + 3] > 0.5f) != (b.rgba[p * 4 + 3] > 0.5f)) ++c.coverage_mismatch;
+        int worst = 0;
+        for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(int(unorm8(a.rgba[p * 4 + std::size_t(ch)])) -
+                                                                         int(unorm8(b.rgba[p * 4 + std::size_t(ch)]))));
+        c.over_1 += worst > 1;
+        c.over_2 += worst > 2;
+        c.max_steps = std::max(c.max_steps, worst);
+    }
+    return c;
+}
+
+void record(const std::string& line) {
+    static std::ofstream csv(std::filesystem::path(QUADSHADE_BIN_DIR) / ".." / "reference-comparison.csv");
+    static bool header = (csv << "case,driver,rule,pixels,coverage_mismatch,over_1,over_2,max_steps\n", true);
+    (void)header;
+    csv << line << "\n" << std::flush;
+}
+
+void check_against(const std::string& driver, Derivatives rule, const char* rule_name) {
+    for (const Case& c : cases()) {
+        DYNAMIC_SECTION(c.name << " vs " << driver) {
+            const Counts n = count(ours(c, rule, c.width, c.height), reference(c, driver, c.width, c.height));
+            record(c.name + "," + driver + "," + rule_name + "," + std::to_string(n.pixels) + "," +
+                   std::to_string(n.coverage_mismatch) + "," + std::to_string(n.over_1) + "," +
+                   std::to_string(n.over_2) + "," + std::to_string(n.max_steps));
+            INFO(c.name << " vs " << driver << ": " << n.over_1 << " pixels over 1/255, " << n.over_2
+                        << " over 2/255, max " << n.max_steps << "/255, coverage mismatches " << n.coverage_mismatch);
+            auto e = kExceptions.find({c.name, driver});
+            const bool excepted = e != kExceptions.end();
+            INFO("documented cause: " << (excepted ? e->second.cause : "none"));
+            CHECK(n.coverage_mismatch <= std::size_t(excepted ? e->second.max_coverage_mismatch : 0));
+            CHECK(double(n.over_1) <= kMaxFractionOver1 * double(n.pixels));
+            CHECK(n.over_2 <= std::size_t(excepted ? e->second.max_over_2 : 0));
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("every shader matches OSMesa llvmpipe under the fine rule", "[reference][llvmpipe]") {
+    check_against("llvmpipe", Derivatives::Fine, "fine");
+}
+
+TEST_CASE("every shader matches OSMesa softpipe under the coarse-lower rule", "[reference][softpipe]") {
+    check_against("softpipe", Derivatives::CoarseLower, "coarse-lower");
+}
+
+TEST_CASE("derivative probe: fine equals llvmpipe and coarse-lower equals softpipe, bit for bit", "[reference][derivatives]") {
+    // 17x15: odd sizes, so quads stick out of the image on the right and at the bottom.
+    const Case probe{"derivative_probe", kPlane, "derivative_probe", 17, 15};
+    const Framebuffer fine = ours(probe, Derivatives::Fine, 17, 15);
+    const Framebuffer coarse = ours(probe, Derivatives::CoarseLower, 17, 15);
+    const Image lp = reference(probe, "llvmpipe", 17, 15), sp = reference(probe, "softpipe", 17, 15);
+    CHECK(fine.rgba == lp.rgba);
+    CHECK(coarse.rgba == sp.rgba);
+    CHECK(fine.rgba != coarse.rgba);  // the rules really differ on this function
+}
+
+TEST_CASE("fill rule: llvmpipe owns left and bottom edges, softpipe right and top, as quadshade's two rules", "[reference][coverage]") {
+    // A 16x16 window with a rectangle whose four edges pass through pixel centres.
+    Scene s = load_scene(kPlane);
+    auto at = [](float wx, float wy) { return glm::vec3(wx * 2.0f / 16.0f - 1.0f, wy * 2.0f / 16.0f - 1.0f, 0.0f); };
+    s.meshes[0].vertices = {{at(2.5f, 1.5f), {}}, {at(6.5f, 1.5f), {}}, {at(6.5f, 4.5f), {}}, {at(2.5f, 4.5f), {}}};
+    s.objects[0].shader = "constant_color";
+    s.width = s.height = 16;
+    const auto file = work_dir() / "fill-rule.gltf";
+    save_scene(s, file);
+    const Case c{"fill-rule", file, "", 16, 16};
+    auto coverage = [](const std::vector<float>& rgba) {
+        std::vector<int> cov;
+        for (std::size_t p = 0; p < rgba.size(); p += 4) cov.push_back(rgba[p] > 0.5f);  // red = drawn
+        return cov;
+    };
+    const auto lp = coverage(reference(c, "llvmpipe", 16, 16).rgba);
+    const auto sp = coverage(reference(c, "softpipe", 16, 16).rgba);
+    CHECK(lp != sp);
+    CHECK(coverage(ours(c, Derivatives::Fine, 16, 16).rgba) == lp);
+    CHECK(coverage(ours(c, Derivatives::CoarseLower, 16, 16).rgba) == sp);
+}
+
+TEST_CASE("smoothstep with equal edges matches llvmpipe's run-time result", "[reference][undefined]") {
+    const Case probe{"smoothstep_probe", kPlane, "smoothstep_probe", 32, 4};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 32, 4);
+    const Image lp = reference(probe, "llvmpipe", 32, 4);
+    CHECK(q.rgba == lp.rgba);
+    // ...which is x > e: 0 below and on the edge, 1 above (column 2 sits on it, x = 2.5).
+    CHECK(q.pixel(1, 0)[0] == 0.0f);
+    CHECK(q.pixel(2, 0)[0] == 0.0f);
+    CHECK(q.pixel(3, 0)[0] == 1.0f);
+    CHECK(q.pixel(2, 0)[1] == 1.0f);  // while step(e, x) is 1 on the edge
+}
+
+}  // namespace qs

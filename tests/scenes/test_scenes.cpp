@@ -1,0 +1,203 @@
+// Scenes and the command line: shipped assets are reproducible, bad input is refused with the
+// file and field named, the CLI's exit codes, and animation frames.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include <glm/trigonometric.hpp>
+
+#include "gltf.h"
+#include "image_io.h"
+#include "scene_render.h"
+
+namespace qs {
+
+namespace {
+
+const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
+const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
+const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
+const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
+
+std::filesystem::path temp_dir(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / ("quadshade-test-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// Runs a command line; returns its exit code and what it wrote to stderr.
+std::pair<int, std::string> run(const std::string& cmd, const std::filesystem::path& dir) {
+    const auto err = dir / "stderr.txt";
+    const int status = std::system((cmd + " 2> '" + err.string() + "' > /dev/null").c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
+}
+
+void write_text(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+}  // namespace
+
+TEST_CASE("the shipped scenes are exactly what the generator makes", "[scenes]") {
+    const auto dir = temp_dir("assets");
+    REQUIRE(std::system(((kBin / "quadshade-make-scenes").string() + " " + dir.string()).c_str()) == 0);
+    for (const char* f : {"figure-1.1.gltf", "figure-1.1.bin", "table-1.1-plane.gltf", "table-1.1-plane.bin",
+                          "textures/halftone-source.png"}) {
+        INFO(f);
+        CHECK(slurp(dir / f) == slurp(kSource / "scenes/assets" / f));
+    }
+}
+
+TEST_CASE("the Figure 1.1 scene has the chapter's camera, objects and shaders", "[scenes]") {
+    const Scene s = load_scene(kFigure);
+    CHECK(s.width == 1264);
+    CHECK(s.height == 400);
+    REQUIRE(s.objects.size() == 5);
+    CHECK(s.objects[0].shader == "flow_noise");
+    CHECK(s.objects[4].shader == "tiles3d");
+    CHECK(s.meshes[s.objects[1].mesh].indices.size() == 1520 * 3);  // 20 bands x 40 steps
+    CHECK(s.camera.yfov == Approx(glm::radians(15.0f)));
+    CHECK(s.clear_color == glm::vec4(0.0f, 0.3f, 0.5f, 0.0f));
+}
+
+TEST_CASE("bad scene input is refused naming the file and the field", "[scenes][errors]") {
+    const auto dir = temp_dir("bad");
+    SECTION("not JSON") {
+        write_text(dir / "a.gltf", "{ this is not json");
+        CHECK_THROWS_WITH(load_scene(dir / "a.gltf"), Catch::Contains("a.gltf") && Catch::Contains("not a valid glTF"));
+    }
+    SECTION("missing file") {
+        CHECK_THROWS_WITH(load_scene(dir / "missing.gltf"), Catch::Contains("missing.gltf") && Catch::Contains("no such file"));
+    }
+    Scene s = load_scene(kPlane);
+    SECTION("NaN vertex") {
+        s.meshes[0].vertices[2].position.y = std::numeric_limits<float>::quiet_NaN();
+        save_scene(s, dir / "nan.gltf");
+        CHECK_THROWS_WITH(load_scene(dir / "nan.gltf"),
+                          Catch::Contains("nan.gltf") && Catch::Contains("attributes.POSITION") && Catch::Contains("vertex 2"));
+    }
+    SECTION("index out of range") {
+        s.meshes[0].indices[4] = 99;
+        save_scene(s, dir / "index.gltf");
+        CHECK_THROWS_WITH(load_scene(dir / "index.gltf"), Catch::Contains(".indices") && Catch::Contains("99"));
+    }
+    SECTION("unknown shader") {
+        s.objects[0].shader = "no_such_shader";
+        save_scene(s, dir / "shader.gltf");
+        Scene loaded = load_scene(dir / "shader.gltf");
+        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("shader.gltf") && Catch::Contains("extras.shader") &&
+                                                        Catch::Contains("no_such_shader"));
+    }
+    SECTION("missing texture") {
+        s.textures[0].path = dir / "textures" / "gone.png";
+        s.objects[0].shader = "halftone";
+        save_scene(s, dir / "tex.gltf");
+        Scene loaded = load_scene(dir / "tex.gltf");
+        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("extras.teximage") && Catch::Contains("gone.png"));
+    }
+    SECTION("a texture is not read when no drawn shader samples it") {
+        s.textures[0].path = dir / "textures" / "gone.png";
+        save_scene(s, dir / "unused.gltf");
+        Scene loaded = load_scene(dir / "unused.gltf");
+        CHECK_NOTHROW(render_frame(loaded, {}));
+    }
+}
+
+TEST_CASE("frames differ where the shader depends on time and nowhere else", "[scenes][animation]") {
+    Scene fig = load_scene(kFigure);
+    FrameRequest r;
+    r.width = 316, r.height = 100;
+    std::vector<Framebuffer> frames;
+    for (float t : {0.0f, 1.0f / 30.0f, 2.0f / 30.0f}) {
+        r.time = t;
+        frames.push_back(render_frame(fig, r));
+    }
+    std::size_t background = 0, object = 0, object_changed = 0;
+    for (std::size_t p = 0; p < frames[0].rgba.size(); p += 4) {
+        const bool drawn = frames[0].rgba[p + 3] == 1.0f;
+        const bool changed = frames[0].rgba[p] != frames[1].rgba[p] || frames[1].rgba[p] != frames[2].rgba[p] ||
+                             frames[0].rgba[p + 1] != frames[2].rgba[p + 1];
+        if (!drawn) {
+            ++background;
+            CHECK_FALSE(changed);  // the clear colour does not move
+        } else {
+            ++object;
+            object_changed += changed;
+        }
+    }
+    CHECK(background > 0);
+    CHECK(object_changed > object * 9 / 10);  // every Figure 1.1 shader animates
+    // A shader without time is identical frame to frame.
+    Scene plane = load_scene(kPlane);
+    FrameRequest a, b;
+    a.width = b.width = a.height = b.height = 64;
+    a.time = 0.0f, b.time = 5.0f;
+    a.shader_override = b.shader_override = "perlin";
+    CHECK(render_frame(plane, a).rgba == render_frame(plane, b).rgba);
+}
+
+TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") {
+    const auto dir = temp_dir("cli");
+    const std::string qs = (kBin / "quadshade").string();
+    const std::string out = (dir / "out.png").string();
+    SECTION("success writes the image") {
+        auto [code, err] = run(qs + " render " + kPlane.string() + " --size 32x32 -o " + out, dir);
+        CHECK(code == 0);
+        CHECK(err.find("frame") != std::string::npos);
+        CHECK(read_image(out).width == 32);
+    }
+    SECTION("bad usage is exit 2") {
+        CHECK(run(qs + " render", dir).first == 2);
+        CHECK(run(qs + " render " + kPlane.string() + " -o " + out + " --size 10", dir).first == 2);
+        CHECK(run(qs + " render " + kPlane.string() + " -o " + out + " --derivatives sideways", dir).first == 2);
+        CHECK(run(qs + " frobnicate", dir).first == 2);
+        CHECK_FALSE(std::filesystem::exists(out));
+    }
+    SECTION("bad input is exit 1, names the culprit, and writes nothing") {
+        auto [code, err] = run(qs + " render " + kPlane.string() + " --shader nope -o " + out, dir);
+        CHECK(code == 1);
+        CHECK(err.find("unknown shader 'nope'") != std::string::npos);
+        auto [code2, err2] = run(qs + " render " + (dir / "none.gltf").string() + " -o " + out, dir);
+        CHECK(code2 == 1);
+        CHECK(err2.find("none.gltf") != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(out));
+        // An unwritable destination leaves no partial file behind.
+        auto [code3, err3] = run(qs + " render " + kPlane.string() + " --size 8x8 -o " + (dir / "no/dir/x.png").string(), dir);
+        CHECK(code3 == 1);
+        CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);  // just stderr.txt
+    }
+    SECTION("an animation writes numbered frames") {
+        auto [code, err] = run(qs + " render " + kFigure.string() + " --size 64x20 --frames 3:5 --fps 10 -o " +
+                                   (dir / "f.png").string(), dir);
+        CHECK(code == 0);
+        for (const char* f : {"f_0003.png", "f_0004.png", "f_0005.png"}) CHECK(std::filesystem::exists(dir / f));
+        CHECK(slurp(dir / "f_0003.png") != slurp(dir / "f_0004.png"));
+    }
+    SECTION("shaders lists the catalogue with what each needs") {
+        const auto list = dir / "list.txt";
+        CHECK(std::system((qs + " shaders > " + list.string()).c_str()) == 0);
+        const std::string text = slurp(list);
+        CHECK(text.find("halftone") != std::string::npos);
+        CHECK(text.find("derivatives") != std::string::npos);
+    }
+    SECTION("compare exits 3 over its threshold") {
+        run(qs + " render " + kPlane.string() + " --size 16x16 --shader perlin -o " + (dir / "a.png").string(), dir);
+        run(qs + " render " + kPlane.string() + " --size 16x16 --shader worley -o " + (dir / "b.png").string(), dir);
+        CHECK(run(qs + " compare " + (dir / "a.png").string() + " " + (dir / "a.png").string(), dir).first == 0);
+        CHECK(run(qs + " compare " + (dir / "a.png").string() + " " + (dir / "b.png").string(), dir).first == 3);
+    }
+}
+
+}  // namespace qs
