@@ -125,18 +125,20 @@ Counts count(const Framebuffer& a, const Image& b) {
     return c;
 }
 
-void record(const std::string& line) {
-    static std::ofstream csv(std::filesystem::path(QUADSHADE_BIN_DIR) / ".." / "reference-comparison.csv");
-    static bool header = (csv << "case,driver,rule,pixels,coverage_mismatch,over_1,over_2,max_steps\n", true);
-    (void)header;
-    csv << line << "\n" << std::flush;
+// One CSV per driver (ctest runs the two test cases in parallel processes), in the build folder.
+void record(const std::string& driver, const std::string& line) {
+    static std::map<std::string, std::ofstream> files;
+    auto [it, fresh] = files.try_emplace(driver, std::filesystem::path(QUADSHADE_BIN_DIR) / ".." /
+                                                     ("reference-comparison-" + driver + ".csv"));
+    if (fresh) it->second << "case,driver,rule,pixels,coverage_mismatch,over_1,over_2,max_steps\n";
+    it->second << line << "\n" << std::flush;
 }
 
 void check_against(const std::string& driver, Derivatives rule, const char* rule_name) {
     for (const Case& c : cases()) {
         DYNAMIC_SECTION(c.name << " vs " << driver) {
             const Counts n = count(ours(c, rule, c.width, c.height), reference(c, driver, c.width, c.height));
-            record(c.name + "," + driver + "," + rule_name + "," + std::to_string(n.pixels) + "," +
+            record(driver, c.name + "," + driver + "," + rule_name + "," + std::to_string(n.pixels) + "," +
                    std::to_string(n.coverage_mismatch) + "," + std::to_string(n.over_1) + "," +
                    std::to_string(n.over_2) + "," + std::to_string(n.max_steps));
             INFO(c.name << " vs " << driver << ": " << n.over_1 << " pixels over 1/255, " << n.over_2
