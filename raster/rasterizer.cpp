@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -32,103 +34,189 @@ struct PreparedDraw {
     int varyings;
 };
 
-// Fragments waiting to be shaded: kBatchLanes pixel positions (framebuffer coordinates) and
-// which lanes write. In quad mode lanes 4q..4q+3 form quad q in the layout of number/lanes.h.
+// A 4x4 pixel block is exactly one batch of kBatchQuads quads. Lane offsets inside a block in
+// framebuffer coordinates (y down): quad-major, quads (0,0) (2,0) (0,2) (2,2), and inside each
+// quad the GL lane order of number/lanes.h (lower row first: lanes 0, 1 on the quad's row + 1).
+inline constexpr int kBlock = 4;
+static_assert(kBlock * kBlock == kBatchLanes);
+inline constexpr int kLaneDx[kBatchLanes] = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
+inline constexpr int kLaneDy[kBatchLanes] = {1, 1, 0, 0, 1, 1, 0, 0, 3, 3, 2, 2, 3, 3, 2, 2};
+inline constexpr std::uint32_t kAllLanes = (1u << kBatchLanes) - 1;
+inline constexpr float kLaneDxF[kBatchLanes] = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
+inline constexpr float kLaneDyF[kBatchLanes] = {1, 1, 0, 0, 1, 1, 0, 0, 3, 3, 2, 2, 3, 3, 2, 2};
+// The inverse: lane of the pixel at (dx, dy) inside its block.
+inline constexpr int kLaneAt[kBlock][kBlock] = {{2, 3, 6, 7}, {0, 1, 4, 5}, {10, 11, 14, 15}, {8, 9, 12, 13}};  // [dy][dx]
+
+// Fragments waiting to be shaded: kBatchLanes pixel positions (framebuffer coordinates) and which
+// lanes write (bit i for lane i).
 struct Batch {
-    int x[kBatchLanes], y[kBatchLanes];
-    bool write[kBatchLanes];
+    alignas(64) int x[kBatchLanes];
+    alignas(64) int y[kBatchLanes];
+    std::uint32_t write = 0;
     int count = 0;
+    int block = -1;  // tile index of lane 0 when the batch is one whole block in lane order
 };
 
+// Renders the triangles of one tile into tile-local colour and depth (64x64, resident in cache),
+// then stores the tile into the framebuffer once. Tile pixels are stored block by block in batch
+// lane order, so a whole block's results go out as one vector store per channel.
 class TileRenderer {
 public:
-    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, int quad_row0)
-        : fb_(fb), draws_(draws), quad_row0_(quad_row0) {}
+    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, int x0, int y0, glm::vec4 clear)
+        : fb_(fb), draws_(draws), x0_(x0), y0_(y0) {
+        for (int c = 0; c < 4; ++c) std::fill_n(color_[c], kTilePixels, clear[c]);
+        std::fill_n(depth_, kTilePixels, 1.0f);
+    }
 
+    // Copies the tile's pixels that lie inside the framebuffer into it: each block row of four
+    // pixels is one 64-byte run of RGBA floats.
+    void store() const {
+        for (int by = 0; by < kTileSize; by += kBlock) {
+            for (int bx = 0; bx < kTileSize; bx += kBlock) {
+                const int base = ((by / kBlock) * (kTileSize / kBlock) + bx / kBlock) * kBatchLanes;
+                const int x = x0_ + bx;
+                const int n = std::min(kBlock, fb_.width - x);
+                for (int r = 0; r < kBlock; ++r) {
+                    const int y = y0_ + by + r;
+                    if (y < 0 || y >= fb_.height) continue;
+                    alignas(64) float row[kBlock * 4];
+                    for (int dx = 0; dx < kBlock; ++dx) {
+                        const int lane = base + kLaneAt[r][dx];
+                        for (int c = 0; c < 4; ++c) row[dx * 4 + c] = color_[c][lane];
+                    }
+                    if (n == kBlock) std::memcpy(fb_.pixel(x, y), row, sizeof row);  // one vector store
+                    else std::copy_n(row, n * 4, fb_.pixel(x, y));
+                    if (!fb_.depth.empty()) {
+                        float* depth = &fb_.depth[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
+                        for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[base + kLaneAt[r][dx]];
+                    }
+                }
+            }
+        }
+    }
+
+    // Rasterizes triangle t inside the tile whose pixels are [x0, x1] x [y0, y1]; the tile's origin
+    // lies on the quad grid.
     void render(const TriangleSetup& t, int x0, int y0, int x1, int y1) {
         const PreparedDraw& d = draws_[t.draw];
         tri_ = &t;
         draw_ = &d;
-        batch_.count = 0;
-        const int bx0 = std::max(x0, t.min_x), bx1 = std::min(x1, t.max_x);
-        const int by0 = std::max(y0, t.min_y), by1 = std::min(y1, t.max_y);
-        if (bx0 > bx1 || by0 > by1) return;
-        if (d.quads) {
-            // Quads aligned to even x and to the pairing's row grid.
-            const int qx0 = bx0 & ~1;
-            const int qy0 = quad_row0_ + (((by0 - quad_row0_) >> 1) << 1);
-            for (int qy = qy0; qy <= by1; qy += 2) {
-                for (int qx = qx0; qx <= bx1; qx += 2) add_quad(qx, qy);
-            }
-        } else {
-            for (int y = by0; y <= by1; ++y) {
-                for (int x = bx0; x <= bx1; ++x) {
-                    if (covered(x, y) && depth_passes(x, y)) add_pixel(x, y);
-                }
-            }
+        pending_.count = 0, pending_.write = 0;
+        const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
+        const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
+        if (lo_x > hi_x || lo_y > hi_y) return;
+        for (int by = y0 + ((lo_y - y0) & ~(kBlock - 1)); by <= hi_y; by += kBlock) {
+            for (int bx = x0 + ((lo_x - x0) & ~(kBlock - 1)); bx <= hi_x; bx += kBlock) block(bx, by);
         }
-        flush();
+        flush(pending_);
     }
+
+    std::uint64_t quads() const { return quads_; }
+    std::uint64_t lanes() const { return lanes_; }
+    std::uint64_t written() const { return written_; }
 
 private:
-    bool covered(int x, int y) const {
-        if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) return false;  // scissor
-        const auto& e = tri_->edges;
-        return e[0].inside(x, y) && e[1].inside(x, y) && e[2].inside(x, y);
-    }
-
-    bool depth_passes(int x, int y) const {
-        if (!draw_->depth_test) return true;
-        const float z = tri_->z.at(float(x), float(y));
-        return z < fb_.depth[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
-    }
-
-    void add_pixel(int x, int y) {
-        const int i = batch_.count++;
-        batch_.x[i] = x, batch_.y[i] = y, batch_.write[i] = true;
-        if (batch_.count == kBatchLanes) flush();
-    }
-
-    // Quad at framebuffer (qx, qy) = its top-left pixel. Lanes in GL order: 0,1 the lower row
-    // (framebuffer row qy+1), 2,3 the upper row (qy).
-    void add_quad(int qx, int qy) {
-        const int lx[4] = {qx, qx + 1, qx, qx + 1};
-        const int ly[4] = {qy + 1, qy + 1, qy, qy};
-        bool write[4];
-        bool any = false;
-        for (int l = 0; l < 4; ++l) {
-            write[l] = covered(lx[l], ly[l]) && depth_passes(lx[l], ly[l]);
-            any |= write[l];
+    // Coverage, early depth and shading of the 4x4 block whose top-left pixel is (bx, by).
+    void block(int bx, int by) {
+        const auto& edges = tri_->edges;
+        // The edge functions are linear: a block is outside an edge when its four corner pixel
+        // centres are, and fully inside when they all are.
+        bool full = bx >= 0 && by >= 0 && bx + kBlock <= fb_.width && by + kBlock <= fb_.height;
+        for (const EdgeFunction& e : edges) {
+            const std::int64_t c00 = e.at(bx, by), sx = e.dcdx * (kBlock - 1), sy = e.dcdy * (kBlock - 1);
+            const std::int64_t c10 = c00 + sx, c01 = c00 + sy, c11 = c00 + sx + sy;
+            if (c00 <= 0 && c10 <= 0 && c01 <= 0 && c11 <= 0) return;
+            full &= c00 > 0 && c10 > 0 && c01 > 0 && c11 > 0;
         }
-        if (!any) return;  // no lane would write: the quad does not run
-        const int base = batch_.count;
-        for (int l = 0; l < 4; ++l) {
-            batch_.x[base + l] = lx[l], batch_.y[base + l] = ly[l], batch_.write[base + l] = write[l];
+        std::uint32_t mask = kAllLanes;
+        if (!full) {
+            mask = 0;
+            for (int i = 0; i < kBatchLanes; ++i) {
+                const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
+                const bool in = x >= 0 && y >= 0 && x < fb_.width && y < fb_.height && edges[0].inside(x, y) &&
+                                edges[1].inside(x, y) && edges[2].inside(x, y);
+                mask |= std::uint32_t(in) << i;
+            }
         }
-        batch_.count += 4;
-        ++quads_;
-        if (batch_.count == kBatchLanes) flush();
+        if (draw_->depth_test) mask &= depth_mask(bx, by, mask);
+        if (mask == 0) return;
+        if (draw_->quads) {
+            // A quad runs when any of its lanes writes; its other lanes are helpers. Blocks whose
+            // four quads all run are shaded as they are, the others' running quads are gathered.
+            std::uint32_t running = 0;
+            for (int q = 0; q < kBatchQuads; ++q) running |= ((mask >> (4 * q)) & 0xFu) ? 0xFu << (4 * q) : 0u;
+            quads_ += std::uint64_t(std::popcount(running) / 4);
+            if (running == kAllLanes) {
+                shade_block(bx, by, mask);
+                return;
+            }
+            for (int q = 0; q < kBatchQuads; ++q) {
+                if (!(running >> (4 * q) & 1)) continue;
+                for (int l = 4 * q; l < 4 * q + 4; ++l) append(bx + kLaneDx[l], by + kLaneDy[l], mask >> l & 1);
+            }
+        } else if (mask == kAllLanes) {
+            shade_block(bx, by, mask);
+        } else {
+            // Per pixel: gather the covered pixels of partial blocks, no helpers.
+            for (int i = 0; i < kBatchLanes; ++i) {
+                if (mask >> i & 1) append(bx + kLaneDx[i], by + kLaneDy[i], true);
+            }
+        }
     }
 
-    void flush() {
-        if (batch_.count == 0) return;
+    void shade_block(int bx, int by, std::uint32_t mask) {
+        Batch b;
+        for (int i = 0; i < kBatchLanes; ++i) b.x[i] = bx + kLaneDx[i], b.y[i] = by + kLaneDy[i];
+        b.count = kBatchLanes;
+        b.write = mask;
+        b.block = block_base(bx, by);
+        flush(b);
+    }
+
+    // Adds one lane to the gathered batch; quads are appended four lanes at a time, so they stay
+    // whole and aligned within it.
+    void append(int x, int y, bool write) {
+        pending_.x[pending_.count] = x, pending_.y[pending_.count] = y;
+        pending_.write |= std::uint32_t(write) << pending_.count;
+        if (++pending_.count == kBatchLanes) {
+            flush(pending_);
+            pending_.count = 0, pending_.write = 0;
+        }
+    }
+
+    std::uint32_t depth_mask(int bx, int by, std::uint32_t mask) const {
+        std::uint32_t pass = 0;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            if (!(mask >> i & 1)) continue;
+            const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
+            const float z = tri_->z.at(float(x), float(y));
+            pass |= std::uint32_t(z < depth_[tile_index(x, y)]) << i;
+        }
+        return pass;
+    }
+
+    // Interpolates, shades and writes one batch.
+    void flush(Batch& b) {
+        if (b.count == 0) return;
         const TriangleSetup& t = *tri_;
         const PreparedDraw& d = *draw_;
         // Unused lanes repeat lane 0 (a valid position) and write nothing.
-        for (int i = batch_.count; i < kBatchLanes; ++i) {
-            batch_.x[i] = batch_.x[0], batch_.y[i] = batch_.y[0], batch_.write[i] = false;
-        }
+        for (int i = b.count; i < kBatchLanes; ++i) b.x[i] = b.x[0], b.y[i] = b.y[0];
         const float height = float(fb_.height);
-        float fx[kBatchLanes], fy[kBatchLanes], inv_w[kBatchLanes], rcp_inv_w[kBatchLanes];
+        alignas(64) float fx[kBatchLanes], fy[kBatchLanes], rcp_inv_w[kBatchLanes];
+        if (b.block >= 0) {  // a whole block: positions from its corner
+            const float bx = float(b.x[2]), by = float(b.y[2]);  // lane 2 is the top-left pixel
+            for (int i = 0; i < kBatchLanes; ++i) fx[i] = bx + kLaneDxF[i], fy[i] = by + kLaneDyF[i];
+        } else {
+            for (int i = 0; i < kBatchLanes; ++i) fx[i] = float(b.x[i]), fy[i] = float(b.y[i]);
+        }
         for (int i = 0; i < kBatchLanes; ++i) {
-            fx[i] = float(batch_.x[i]);
-            fy[i] = float(batch_.y[i]);
-            inv_w[i] = t.inv_w.at(fx[i], fy[i]);
-            rcp_inv_w[i] = 1.0f / inv_w[i];
+            const float inv_w = t.inv_w.at(fx[i], fy[i]);
+            rcp_inv_w[i] = 1.0f / inv_w;
             in_.frag_coord[0][i] = fx[i] + 0.5f;
             in_.frag_coord[1][i] = height - (fy[i] + 0.5f);  // GL window y points up
             in_.frag_coord[2][i] = t.z.at(fx[i], fy[i]);
-            in_.frag_coord[3][i] = inv_w[i];
+            in_.frag_coord[3][i] = inv_w;
         }
         for (int v = 0; v < d.varyings; ++v) {
             const PlaneEquation& p = t.varyings[v];
@@ -149,33 +237,43 @@ private:
             in_.inv_w_dx = t.inv_w.dadx, in_.inv_w_dy = -t.inv_w.dady;
         }
         d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
-        lanes_ += std::uint64_t(batch_.count);
-        for (int i = 0; i < batch_.count; ++i) {
-            if (!batch_.write[i]) continue;
-            float* px = fb_.pixel(batch_.x[i], batch_.y[i]);
-            for (int c = 0; c < 4; ++c) px[c] = out_.rgba[c][i];
-            if (d.depth_test) {
-                fb_.depth[std::size_t(batch_.y[i]) * std::size_t(fb_.width) + std::size_t(batch_.x[i])] =
-                    in_.frag_coord[2][i];
-            }
+        lanes_ += std::uint64_t(b.count);
+        if (b.block >= 0 && b.write == kAllLanes) {
+            for (int c = 0; c < 4; ++c) std::copy_n(out_.rgba[c], kBatchLanes, &color_[c][b.block]);
+            if (d.depth_test) std::copy_n(in_.frag_coord[2], kBatchLanes, &depth_[b.block]);
+            written_ += kBatchLanes;
+            return;
+        }
+        for (int i = 0; i < b.count; ++i) {
+            if (!(b.write >> i & 1)) continue;
+            const int t = tile_index(b.x[i], b.y[i]);
+            color_[0][t] = out_.rgba[0][i], color_[1][t] = out_.rgba[1][i];
+            color_[2][t] = out_.rgba[2][i], color_[3][t] = out_.rgba[3][i];
+            if (d.depth_test) depth_[t] = in_.frag_coord[2][i];
             ++written_;
         }
-        batch_.count = 0;
     }
 
-public:
-    std::uint64_t quads() const { return quads_; }
-    std::uint64_t lanes() const { return lanes_; }
-    std::uint64_t written() const { return written_; }
+    // Index in the tile of lane 0 of the block holding pixel (x, y).
+    int block_base(int x, int y) const {
+        const int tx = x - x0_, ty = y - y0_;
+        return ((ty / kBlock) * (kTileSize / kBlock) + tx / kBlock) * kBatchLanes;
+    }
+    // Index of pixel (x, y) in the tile: its block's 16 lanes, then its lane in that block.
+    int tile_index(int x, int y) const {
+        return block_base(x, y) + kLaneAt[(y - y0_) % kBlock][(x - x0_) % kBlock];
+    }
 
-private:
+    static constexpr int kTilePixels = kTileSize * kTileSize;
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
-    int quad_row0_;
+    int x0_, y0_;
+    alignas(64) float color_[4][kTilePixels];
+    alignas(64) float depth_[kTilePixels];
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     const TriangleSetup* tri_ = nullptr;
     const PreparedDraw* draw_ = nullptr;
-    Batch batch_;
+    Batch pending_;
     FragmentBatch in_;
     ColorBatch out_;
 };
@@ -189,7 +287,14 @@ int quad_row_offset(int height, QuadPairing pairing) {
 }
 
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                      const RasterOptions& options, RasterStats* stats_out) {
+                      const RasterOptions& options, RasterStats* stats) {
+    Framebuffer fb;
+    rasterize_into(fb, width, height, clear, draws, options, stats);
+    return fb;
+}
+
+void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
+                    const RasterOptions& options, RasterStats* stats_out) {
     if (width <= 0 || height <= 0 || width > kMaxDimension || height > kMaxDimension) {
         throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
                                     " is outside 1.." + std::to_string(kMaxDimension));
@@ -270,20 +375,23 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
         }
     }
 
-    Framebuffer fb(width, height, clear, any_depth);
+    // Every pixel is stored by its tile: reuse the caller's memory, no clearing pass.
+    fb.width = width, fb.height = height;
+    fb.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
+    fb.depth.resize(any_depth ? std::size_t(width) * std::size_t(height) : 0);
     std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const auto& r) {
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             const int tx = int(b % std::size_t(tiles_x)), ty = int(b / std::size_t(tiles_x));
             const int x0 = tx * kTileSize, y0 = row0 + ty * kTileSize;
-            TileRenderer tile(fb, prepared, row0);
-            for (std::uint32_t i : bins[b]) tile.render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
-            quads += tile.quads(), lanes += tile.lanes(), written += tile.written();
+            auto tile = std::make_unique<TileRenderer>(fb, prepared, x0, y0, clear);
+            for (std::uint32_t i : bins[b]) tile->render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
+            tile->store();
+            quads += tile->quads(), lanes += tile->lanes(), written += tile->written();
         }
     });
     stats.quads = quads, stats.lanes_shaded = lanes, stats.pixels_written = written;
     if (stats_out) *stats_out = stats;
-    return fb;
 }
 
 }  // namespace qs

@@ -46,6 +46,9 @@ struct RasterStats {
 // Throws std::invalid_argument for absurd sizes or a draw without a program.
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                       const RasterOptions& options, RasterStats* stats = nullptr);
+// The same into `fb`, reusing its memory (animation loops, benchmarks): every pixel is written.
+void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
+                    const RasterOptions& options, RasterStats* stats = nullptr);
 
 // The number of tiles' rows and columns, and the quad grid's row offset, for a framebuffer.
 inline constexpr int kTileSize = 64;

@@ -47,6 +47,8 @@ template <class F>
 void store(const F& v, float* out) {
     if constexpr (is_dual2<F>::value) {
         store(v.val, out);
+    } else if constexpr (std::is_same_v<typename F::value_type, float>) {
+        v.store(out);
     } else {
         for (int i = 0; i < kBatchLanes; ++i) out[i] = float(v[i]);
     }
@@ -92,15 +94,20 @@ private:
     static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         using program_detail::load;
         FragmentIn<F> f;
-        // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w are planes in window space.
-        static const float ones[kBatchLanes] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
-        static const float zeros[kBatchLanes] = {};
-        float z_dx[kBatchLanes], z_dy[kBatchLanes], w_dx[kBatchLanes], w_dy[kBatchLanes];
-        for (int i = 0; i < kBatchLanes; ++i) {
-            z_dx[i] = in.z_dx, z_dy[i] = in.z_dy, w_dx[i] = in.inv_w_dx, w_dy[i] = in.inv_w_dy;
+        if constexpr (is_dual2<F>::value) {
+            // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w are planes in window space.
+            alignas(64) float ones[kBatchLanes], zeros[kBatchLanes], z_dx[kBatchLanes], z_dy[kBatchLanes],
+                w_dx[kBatchLanes], w_dy[kBatchLanes];
+            for (int i = 0; i < kBatchLanes; ++i) {
+                ones[i] = 1.0f, zeros[i] = 0.0f;
+                z_dx[i] = in.z_dx, z_dy[i] = in.z_dy, w_dx[i] = in.inv_w_dx, w_dy[i] = in.inv_w_dy;
+            }
+            f.gl_FragCoord = {load<F>(in.frag_coord[0], ones, zeros), load<F>(in.frag_coord[1], zeros, ones),
+                              load<F>(in.frag_coord[2], z_dx, z_dy), load<F>(in.frag_coord[3], w_dx, w_dy)};
+        } else {
+            f.gl_FragCoord = {load<F>(in.frag_coord[0], nullptr, nullptr), load<F>(in.frag_coord[1], nullptr, nullptr),
+                              load<F>(in.frag_coord[2], nullptr, nullptr), load<F>(in.frag_coord[3], nullptr, nullptr)};
         }
-        f.gl_FragCoord = {load<F>(in.frag_coord[0], ones, zeros), load<F>(in.frag_coord[1], zeros, ones),
-                          load<F>(in.frag_coord[2], z_dx, z_dy), load<F>(in.frag_coord[3], w_dx, w_dy)};
         for (int v = 0; v < Shader::info.needs.varyings; ++v) {
             f.varying[v] = load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]);
         }

@@ -6,6 +6,7 @@
 // have no C++ spelling: the translations rebuild the vector and quote the GLSL beside it.
 
 #include <cstddef>
+#include <utility>
 
 #include "number/number.h"
 
@@ -17,23 +18,24 @@ template <class F> struct vec4;
 
 // Componentwise operators for a vector type V of N components, F scalar; written once.
 #define QS_VEC_OPERATORS(V)                                                                     \
+    /* Componentwise application, unrolled at compile time so components stay in registers. */ \
     template <class Op>                                                                         \
     static V map(const V& a, Op op) {                                                           \
-        V r;                                                                                    \
-        for (int i = 0; i < N; ++i) r[i] = op(a[i]);                                            \
-        return r;                                                                               \
+        return [&]<int... I>(std::integer_sequence<int, I...>) {                                \
+            return V(op(a.template get<I>())...);                                               \
+        }(std::make_integer_sequence<int, N>());                                                \
     }                                                                                           \
     template <class Op>                                                                         \
     static V map(const V& a, const V& b, Op op) {                                               \
-        V r;                                                                                    \
-        for (int i = 0; i < N; ++i) r[i] = op(a[i], b[i]);                                      \
-        return r;                                                                               \
+        return [&]<int... I>(std::integer_sequence<int, I...>) {                                \
+            return V(op(a.template get<I>(), b.template get<I>())...);                          \
+        }(std::make_integer_sequence<int, N>());                                                \
     }                                                                                           \
     template <class Op>                                                                         \
     static V map(const V& a, const V& b, const V& c, Op op) {                                   \
-        V r;                                                                                    \
-        for (int i = 0; i < N; ++i) r[i] = op(a[i], b[i], c[i]);                                \
-        return r;                                                                               \
+        return [&]<int... I>(std::integer_sequence<int, I...>) {                                \
+            return V(op(a.template get<I>(), b.template get<I>(), c.template get<I>())...);     \
+        }(std::make_integer_sequence<int, N>());                                                \
     }                                                                                           \
     friend V operator-(const V& a) { return map(a, [](const F& x) { return -x; }); }             \
     friend V operator+(const V& a, const V& b) { return map(a, b, [](const F& x, const F& y) { return x + y; }); } \
@@ -72,6 +74,10 @@ struct vec2 {
     vec2(const F& x_, const F& y_) : x(x_), y(y_) {}
     F& operator[](int i) { return i == 0 ? x : y; }
     const F& operator[](int i) const { return i == 0 ? x : y; }
+    template <int I>
+    const F& get() const {
+        if constexpr (I == 0) return x; else return y;
+    }
     QS_VEC_OPERATORS(vec2)
     QS_SWZ2(x, x) QS_SWZ2(x, y) QS_SWZ2(y, x) QS_SWZ2(y, y)
     QS_SWZ3(x, x, x) QS_SWZ3(y, y, y)
@@ -90,6 +96,10 @@ struct vec3 {
     vec3(const F& x_, const vec2<F>& yz) : x(x_), y(yz.x), z(yz.y) {}
     F& operator[](int i) { return i == 0 ? x : i == 1 ? y : z; }
     const F& operator[](int i) const { return i == 0 ? x : i == 1 ? y : z; }
+    template <int I>
+    const F& get() const {
+        if constexpr (I == 0) return x; else if constexpr (I == 1) return y; else return z;
+    }
     QS_VEC_OPERATORS(vec3)
     QS_SWZ2(x, x) QS_SWZ2(x, y) QS_SWZ2(x, z) QS_SWZ2(y, x) QS_SWZ2(y, y) QS_SWZ2(y, z)
     QS_SWZ2(z, x) QS_SWZ2(z, y) QS_SWZ2(z, z)
@@ -110,6 +120,10 @@ struct vec4 {
     vec4(const vec2<F>& xy, const F& z_, const F& w_) : x(xy.x), y(xy.y), z(z_), w(w_) {}
     F& operator[](int i) { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
     const F& operator[](int i) const { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+    template <int I>
+    const F& get() const {
+        if constexpr (I == 0) return x; else if constexpr (I == 1) return y; else if constexpr (I == 2) return z; else return w;
+    }
     QS_VEC_OPERATORS(vec4)
     QS_SWZ2(x, y) QS_SWZ2(z, w) QS_SWZ2(x, z) QS_SWZ2(y, w) QS_SWZ2(x, x) QS_SWZ2(y, y)
     QS_SWZ2(y, z) QS_SWZ2(z, z) QS_SWZ2(w, w)

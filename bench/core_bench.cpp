@@ -1,0 +1,183 @@
+// quadshade-bench-core: the chapter's 2D simplex noise (Listing 1.3) over a 1024x1024 grid on every
+// number type, next to a plain loop written directly with std::experimental::simd at native
+// width, and the same noise rasterized as a full-screen quad. One run, so the ratios are fair:
+//   wide lane type / plain loop       goal >= 0.80 (the abstraction costs nothing)
+//   rasterized / plain loop, 1 thread goal >= 0.70 (rasterization keeps the throughput)
+// Usage: quadshade-bench-core [Google Benchmark flags]
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <experimental/simd>
+#include <map>
+#include <string>
+
+#include "catalogue.h"
+#include "glsl.h"
+#include "noise/simplex2d.h"
+#include "rasterizer.h"
+
+namespace {
+
+using namespace qs;
+using namespace qs::glsl;
+namespace stdx = std::experimental;
+
+constexpr int kSide = 1024;
+constexpr int kFragments = kSide * kSide;
+constexpr float kScale = 10.0f / kSide;  // st * 10, as the simplex2d shader
+
+template <class F>
+constexpr int lanes_of() {
+    if constexpr (is_dual2<F>::value) return lanes_of<typename F::value_type>();
+    else if constexpr (is_lanes<F>::value) return F::size;
+    else return 1;
+}
+
+template <class F>
+F lane_ramp(float start, float step) {
+    if constexpr (is_dual2<F>::value) {
+        return F(lane_ramp<typename F::value_type>(start, step), typename F::value_type(1.0f), typename F::value_type(0.0f));
+    } else if constexpr (is_lanes<F>::value) {
+        typename F::value_type v[F::size];
+        for (int i = 0; i < F::size; ++i) v[i] = typename F::value_type(start + step * float(i));
+        return F::load(v);
+    } else {
+        return F(start);
+    }
+}
+
+template <class F>
+void BM_simplex2d(benchmark::State& state) {
+    constexpr int n = lanes_of<F>();
+    static_assert(kSide % n == 0);
+    double sink = 0.0;
+    for (auto _ : state) {
+        F acc(0.0f);
+        for (int y = 0; y < kSide; ++y) {
+            const F py((float(y) + 0.5f) * kScale);
+            for (int x = 0; x < kSide; x += n) {
+                const F px = lane_ramp<F>((float(x) + 0.5f) * kScale, kScale);
+                acc += noise::snoise(vec2<F>(px, py));
+            }
+        }
+        sink += double(lane(acc, 0));
+        benchmark::DoNotOptimize(sink);
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// The same function written straight on std::experimental::simd, at native width: the yardstick.
+using V = stdx::native_simd<float>;
+inline V mod289(V x) { return x - stdx::floor(x * (1.0f / 289.0f)) * 289.0f; }
+inline V permute(V x) { return mod289(((x * 34.0f) + 1.0f) * x); }
+inline V plain_snoise(V vx, V vy) {
+    const float Cx = 0.211324865405187f, Cy = 0.366025403784439f, Cz = -0.577350269189626f, Cw = 0.024390243902439f;
+    const V s = (vx * Cy + vy * Cy);
+    V ix = stdx::floor(vx + s), iy = stdx::floor(vy + s);
+    const V t = ix * Cx + iy * Cx;
+    const V x0x = vx - ix + t, x0y = vy - iy + t;
+    V i1x(0.0f), i1y(1.0f);
+    const auto m_ = x0x > x0y;
+    stdx::where(m_, i1x) = 1.0f;
+    stdx::where(m_, i1y) = 0.0f;
+    const V x12x = x0x + Cx - i1x, x12y = x0y + Cx - i1y, x12z = x0x + Cz, x12w = x0y + Cz;
+    ix = mod289(ix), iy = mod289(iy);
+    const V p0 = permute(permute(iy) + ix), p1 = permute(permute(iy + i1y) + ix + i1x),
+            p2 = permute(permute(iy + 1.0f) + ix + 1.0f);
+    auto corner = [&](V p, V dx, V dy) {
+        V m = stdx::max(0.5f - (dx * dx + dy * dy), V(0.0f));
+        m = m * m;
+        m = m * m;
+        const V xx = 2.0f * (p * Cw - stdx::floor(p * Cw)) - 1.0f;
+        const V h = stdx::abs(xx) - 0.5f;
+        const V a0 = xx - stdx::floor(xx + 0.5f);
+        m *= 1.79284291400159f - 0.85373472095314f * (a0 * a0 + h * h);
+        return m * (a0 * dx + h * dy);
+    };
+    return 130.0f * (corner(p0, x0x, x0y) + corner(p1, x12x, x12y) + corner(p2, x12z, x12w));
+}
+
+void BM_plain_stdx_loop(benchmark::State& state) {
+    constexpr int n = int(V::size());
+    double sink = 0.0;
+    for (auto _ : state) {
+        V acc(0.0f);
+        const V ramp([](auto i) { return float(i) * kScale; });
+        for (int y = 0; y < kSide; ++y) {
+            const V py((float(y) + 0.5f) * kScale);
+            for (int x = 0; x < kSide; x += n) acc += plain_snoise(V((float(x) + 0.5f) * kScale) + ramp, py);
+        }
+        sink += double(acc[0]);
+        benchmark::DoNotOptimize(sink);
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// A full-window square through the whole pipeline: vertex stage, setup, tiles, quads/pixels.
+void BM_raster(benchmark::State& state, const char* shader, int threads) {
+    const Program* program = find_program(shader);
+    static const std::vector<VertexIn> verts = {{{-1, -1, 0}, {0, 0}}, {{1, -1, 0}, {1, 0}}, {{1, 1, 0}, {1, 1}}, {{-1, 1, 0}, {0, 1}}};
+    static const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall d{verts, idx, program, {}};
+    RasterOptions options;
+    options.threads = threads;
+    Framebuffer fb;  // reused, as an animation loop does
+    for (auto _ : state) {
+        rasterize_into(fb, kSide, kSide, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), options);
+        benchmark::DoNotOptimize(fb.rgba.data());
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Keeps each benchmark's rate so main can print the ratios of this very run.
+class RateReporter : public benchmark::ConsoleReporter {
+public:
+    std::map<std::string, double> rates;
+    void ReportRuns(const std::vector<Run>& runs) override {
+        for (const Run& r : runs) {
+            if (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median") continue;
+            auto it = r.counters.find("Mfrag/s");
+            if (it != r.counters.end()) rates[r.run_name.function_name + (r.run_name.args.empty() ? "" : "/" + r.run_name.args)] = it->second;
+        }
+        ConsoleReporter::ReportRuns(runs);
+    }
+};
+
+}  // namespace
+
+BENCHMARK_TEMPLATE(BM_simplex2d, float)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_simplex2d, double)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_simplex2d, Pixels<float, 16>)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_simplex2d, Quads<float, 4>)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_simplex2d, Dual2<Pixels<float, 16>>)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_plain_stdx_loop)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_raster, constant_color_1thread, "constant_color", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster, simplex2d_1thread, "simplex2d", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster, constant_color_all_threads, "constant_color", 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster, simplex2d_all_threads, "simplex2d", 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    RateReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    auto rate = [&](const std::string& name) {
+        auto it = reporter.rates.find(name);
+        return it == reporter.rates.end() ? 0.0 : it->second;
+    };
+    const double plain = rate("BM_plain_stdx_loop");
+    const double wide = rate("BM_simplex2d<Pixels<float, 16>>");
+    const double raster1 = rate("BM_raster/simplex2d_1thread");
+    if (plain > 0 && wide > 0) {
+        std::printf("\nnative simd width: %zu floats\n", stdx::native_simd<float>::size());
+        std::printf("Pixels<float,16> / plain std::experimental::simd loop: %.2f (goal >= 0.80) %s\n", wide / plain,
+                    wide / plain >= 0.80 ? "MET" : "NOT MET");
+    }
+    if (plain > 0 && raster1 > 0) {
+        std::printf("rasterized simplex2d (1 thread) / plain loop: %.2f (goal >= 0.70) %s\n", raster1 / plain,
+                    raster1 / plain >= 0.70 ? "MET" : "NOT MET");
+    }
+    benchmark::Shutdown();
+    return 0;
+}
