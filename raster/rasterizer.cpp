@@ -32,6 +32,7 @@ struct PreparedDraw {
     bool quads;       // shade 2x2 quads with helper lanes
     bool depth_test;  // LESS test and depth write
     int varyings;
+    unsigned flat;    // flat varyings
 };
 
 // A 4x4 pixel block is exactly one batch of kBatchQuads quads. Lane offsets inside a block in
@@ -220,6 +221,10 @@ private:
         }
         for (int v = 0; v < d.varyings; ++v) {
             const PlaneEquation& p = t.varyings[v];
+            if (d.flat >> v & 1) {
+                std::fill_n(in_.varying[v], kBatchLanes, p.a0);
+                continue;
+            }
             for (int i = 0; i < kBatchLanes; ++i) in_.varying[v][i] = p.at(fx[i], fy[i]) * rcp_inv_w[i];
         }
         if (d.mode.derivatives == Derivatives::Analytic) {
@@ -227,8 +232,9 @@ private:
             // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
             for (int v = 0; v < d.varyings; ++v) {
                 const PlaneEquation& p = t.varyings[v];
+                const bool flat = d.flat >> v & 1;  // constant: zero derivatives
                 for (int i = 0; i < kBatchLanes; ++i) {
-                    const float value = in_.varying[v][i];
+                    const float value = flat ? 0.0f : in_.varying[v][i];
                     in_.varying_dx[v][i] = (p.dadx - value * t.inv_w.dadx) * rcp_inv_w[i];
                     in_.varying_dy[v][i] = -(p.dady - value * t.inv_w.dady) * rcp_inv_w[i];
                 }
@@ -304,7 +310,8 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     for (const DrawCall& call : draws) {
         if (!call.program) throw std::invalid_argument("draw call without a program");
         const Needs& needs = call.program->info().needs;
-        PreparedDraw d{&call, {options.derivatives, options.precision}, true, needs.depth, needs.varyings};
+        PreparedDraw d{&call, {options.derivatives, options.precision}, true, needs.depth, needs.varyings,
+                       needs.flat_varyings};
         if (!needs.derivatives && !options.force_general_path) {
             d.mode.derivatives = Derivatives::None;  // per pixel, no helper lanes
             d.quads = false;
@@ -352,7 +359,8 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
             clipped.clear();
             clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, guard_x, guard_y, clipped);
             for (const auto& tri : clipped) {
-                if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule)) {
+                if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule,
+                                            prepared[di].flat, verts[c])) {
                     t->draw = int(di);
                     triangles.push_back(*t);
                 }

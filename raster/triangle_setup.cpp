@@ -8,7 +8,8 @@
 namespace qs {
 
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
-                                            int height, FillRule fill_rule) {
+                                            int height, FillRule fill_rule, unsigned flat,
+                                            const ClipVertex& provoking) {
     const float scale_x = float(width) * 0.5f, trans_x = float(width) * 0.5f;
     const float scale_y = -float(height) * 0.5f, trans_y = float(height) * 0.5f;
     float x[3], y[3], z[3], oow[3];
@@ -49,6 +50,10 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     t.z = PlaneEquation(s, z[0], z[1], z[2]);
     t.inv_w = PlaneEquation(s, oow[0], oow[1], oow[2]);
     for (int v = 0; v < varying_count; ++v) {
+        if (flat >> v & 1) {
+            t.varyings[v].a0 = provoking.varyings[v];  // constant, not divided by w
+            continue;
+        }
         t.varyings[v] = PlaneEquation(s, tri[0].varyings[v] * oow[0], tri[1].varyings[v] * oow[1],
                                       tri[2].varyings[v] * oow[2]);
     }

@@ -1,7 +1,7 @@
 // quadshade-reference: renders a scene's original GLSL through OSMesa (Mesa llvmpipe or
 // softpipe) into a float image, the reference quadshade's images are compared with.
 //
-//   quadshade-reference SCENE.gltf -o OUT.exr [--driver llvmpipe|softpipe] [--size WxH]
+//   quadshade-reference SCENE.gltf -o OUT.exr [-o OUT.png ...] [--driver llvmpipe|softpipe] [--size WxH]
 //                       [--time T] [--shader NAME] [--threads N] [--repeat N]
 // Exit codes: 0 success, 1 bad input or GL failure, 2 bad usage.
 
@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "gl_renderer.h"
 #include "gltf.h"
@@ -17,7 +18,8 @@
 namespace {
 
 const char* kUsage =
-    "usage: quadshade-reference SCENE.gltf -o OUT.exr [options]\n"
+    "usage: quadshade-reference SCENE.gltf -o OUT.exr [-o OUT.png ...] [options]\n"
+    "  -o FILE          an output; .exr/.tif keep float, .png is GL's 8-bit conversion (repeatable)\n"
     "  --driver D       llvmpipe (default) or softpipe\n"
     "  --size WxH       image size (default: the scene's)\n"
     "  --time T         the `time` uniform (default: the scene's)\n"
@@ -29,7 +31,8 @@ const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string scene_path, output, shader;
+    std::string scene_path, shader;
+    std::vector<std::string> outputs;
     qs::GlDriver driver = qs::GlDriver::Llvmpipe;
     int width = 0, height = 0, threads = 0, repeat = 1;
     std::optional<float> time;
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
             std::fputs(kUsage, stdout);
             return 0;
         } else if (a == "-o") {
-            output = value();
+            outputs.push_back(value());
         } else if (a == "--driver") {
             const std::string d = value();
             if (d == "llvmpipe") driver = qs::GlDriver::Llvmpipe;
@@ -73,7 +76,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (scene_path.empty() || output.empty()) {
+    if (scene_path.empty() || outputs.empty()) {
         std::fputs(kUsage, stderr);
         return 2;
     }
@@ -94,12 +97,14 @@ int main(int argc, char** argv) {
             img = qs::render_gl(scene, req, *context, shading_dir);
             frames.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count());
         }
-        qs::write_image(output, img,
-                        {{"quadshade:reference_driver", driver == qs::GlDriver::Softpipe ? "softpipe" : "llvmpipe"},
-                         {"quadshade:gl_renderer", info.renderer},
-                         {"quadshade:gl_version", info.version},
-                         {"quadshade:scene", scene_path}},
-                        true);
+        for (const std::string& output : outputs) {
+            qs::write_image(output, img,
+                            {{"quadshade:reference_driver", driver == qs::GlDriver::Softpipe ? "softpipe" : "llvmpipe"},
+                             {"quadshade:gl_renderer", info.renderer},
+                             {"quadshade:gl_version", info.version},
+                             {"quadshade:scene", scene_path}},
+                            true);
+        }
         std::fprintf(stderr, "quadshade-reference: %s | %s | first frame (context, compile, render) %.1f ms", info.renderer.c_str(),
                      info.version.c_str(), first * 1e3);
         if (!frames.empty()) {

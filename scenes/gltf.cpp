@@ -4,9 +4,13 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <map>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
@@ -128,6 +132,27 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
 
 double number_of(const tinygltf::Value& v) { return v.IsInt() ? double(v.Get<int>()) : v.Get<double>(); }
 
+// For a file without a camera: glTF's front view (looking down -Z, +Y up) at the bounding
+// sphere of everything in the scene, with a 45 degree vertical field of view.
+Camera framing_camera(const Scene& scene) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const Object& o : scene.objects) {
+        for (const VertexIn& v : scene.meshes[o.mesh].vertices) {
+            const glm::vec3 p = glm::vec3(o.world_from_object * glm::vec4(v.position, 1.0f));
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
+    }
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    Camera cam;
+    cam.yfov = glm::radians(45.0f);
+    const float distance = radius / std::sin(0.5f * cam.yfov) * 1.05f;
+    cam.view = glm::lookAt(centre + glm::vec3(0.0f, 0.0f, distance), centre, glm::vec3(0.0f, 1.0f, 0.0f));
+    cam.znear = std::max(distance - 1.5f * radius, distance * 1e-3f);
+    cam.zfar = distance + 1.5f * radius;
+    return cam;
+}
+
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path) {
@@ -239,8 +264,8 @@ Scene load_scene(const std::filesystem::path& path) {
         for (int child : n.children) visit(child, world);
     };
     for (int ni : gs.nodes) visit(ni, glm::mat4(1.0f));
-    if (!have_camera) fail(path, "nodes", "no node carries a camera");
     if (scene.objects.empty()) fail(path, "nodes", "no node carries a mesh");
+    if (!have_camera) scene.camera = framing_camera(scene);
     return scene;
 }
 

@@ -5,7 +5,8 @@
 //  - each mesh primitive (TRIANGLES, POSITION required, TEXCOORD_0 optional) is drawn with the
 //    shader its material names: materials[i].extras = { "shader": "flow_noise",
 //    "teximage": "textures/image.png" (optional, relative to the .gltf) };
-//  - the camera is the first node with a camera, in the default scene's node order;
+//  - the camera is the first node with a camera, in the default scene's node order; a file
+//    without one is seen from the front (down -Z, +Y up), framing its bounding sphere;
 //  - scenes[i].extras = { "clear_color": [r, g, b, a], "time": t, "size": [w, h] } (all optional).
 // Shaders see the untransformed POSITION as gl_Vertex, the node's world matrix in the MVP.
 

@@ -43,6 +43,7 @@ struct Needs {
     bool time = false;         // output changes with the `time` uniform
     bool depth = true;         // draws into a depth-tested scene (false: full-screen benchmark)
     int varyings = 0;          // interpolated floats the vertex stage writes
+    unsigned flat_varyings = 0;  // bit v: varying v is `flat`, the provoking (last) vertex's value
 };
 
 struct ShaderInfo {

@@ -35,6 +35,16 @@ struct Position {
     }
 };
 
+// Writes varying 0 flat (the provoking vertex's) and varying 1 smooth.
+struct FlatX {
+    static constexpr ShaderInfo info{"test_flat_x", "", Needs{.derivatives = false, .depth = false, .varyings = 5, .flat_varyings = 1u}, {}, {}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        return vec4<F>(in.varying[0], in.varying[1], 0.0f, 1.0f);
+    }
+};
+
 // Writes dFdx and dFdy of varying 0 and the varying itself.
 struct Slopes {
     static constexpr ShaderInfo info{"test_slopes", "", Needs{.derivatives = true, .depth = false, .varyings = 5}, {}, {}};

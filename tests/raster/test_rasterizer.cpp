@@ -149,6 +149,22 @@ TEST_CASE("perspective-correct varyings equal the analytic value at pixel centre
     CHECK(checked > W * H / 3);
 }
 
+TEST_CASE("flat varyings take the provoking (last) vertex's value over the whole triangle", "[raster][interpolation]") {
+    static const ProgramOf<FlatX> flat;
+    const Framebuffer fb = draw(32, 32, {{1.0f, 1.0f, 0}, {30.0f, 2.0f, 0}, {12.0f, 29.0f, 0}}, flat);
+    int drawn = 0;
+    for (int row = 0; row < 32; ++row) {
+        for (int x = 0; x < 32; ++x) {
+            const float* px = fb.pixel(x, row);
+            if (px[3] == 0.0f) continue;
+            ++drawn;
+            CHECK(px[0] == 12.0f);                   // flat: the last vertex's x
+            CHECK(std::abs(px[1] - (31 - row + 0.5f)) < 1e-3f);  // smooth: the pixel centre's y
+        }
+    }
+    CHECK(drawn > 100);
+}
+
 TEST_CASE("dFdx of an interpolated varying on helper lanes equals the interior value", "[raster][helpers]") {
     // v = x / 4 in window space: every quad difference is exactly 0.25, and 0 in y, including
     // quads along the sliver's edges where most lanes are helpers extrapolating the plane.
