@@ -190,11 +190,12 @@ int cmd_render(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     double render_seconds = 0.0;
     RasterStats stats;
+    Framebuffer fb;
     for (int f = first; f <= last; ++f) {
         FrameRequest fr = req;
         if (frames) fr.time = float(f) / fps;
         const auto t0 = std::chrono::steady_clock::now();
-        Framebuffer fb = render_frame(scene, fr, &stats);
+        render_frame_into(fb, scene, fr, &stats);
         render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const std::string path = frames ? frame_path(output, f) : output;
         write_image(path, to_image(fb),

@@ -22,6 +22,12 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
 }
 
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats) {
+    Framebuffer fb;
+    render_frame_into(fb, scene, request, stats);
+    return fb;
+}
+
+void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats) {
     const int width = request.width > 0 ? request.width : scene.width;
     const int height = request.height > 0 ? request.height : scene.height;
     const float aspect = float(width) / float(height);
@@ -54,7 +60,7 @@ Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats*
         }
         draws.push_back(d);
     }
-    return rasterize(width, height, scene.clear_color, draws, request.raster, stats);
+    rasterize_into(fb, width, height, scene.clear_color, draws, request.raster, stats);
 }
 
 }  // namespace qs

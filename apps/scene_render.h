@@ -21,6 +21,8 @@ struct FrameRequest {
 // Throws SceneError for an unknown or missing shader (naming the scene file and material) or a
 // texture that cannot be read.
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
+// The same into `fb`, reusing its memory from frame to frame.
+void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
 
 // The shader each object is drawn with under `shader_override`, checked against the catalogue.
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override);

@@ -5,6 +5,7 @@
 
 #include "gl_renderer.h"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -92,59 +93,90 @@ std::string glsl_source(const ShaderInfo& info, bool vertex_stage, const std::fi
     return src;
 }
 
-Image render_gl(Scene& scene, const GlFrameRequest& request, GlContext& context,
-                const std::filesystem::path& shading_dir) {
-    const int width = context.width(), height = context.height();
+GlSceneRenderer::GlSceneRenderer(Scene& scene, const GlFrameRequest& request, GlContext& context,
+                                 const std::filesystem::path& shading_dir)
+    : scene_(scene), request_(request), context_(context) {
+    std::map<const Program*, GLuint> linked;
+    std::map<int, GLuint> uploaded;
+    for (const Object& o : scene.objects) {
+        const Program& program = program_for(scene, o, request.shader_override);
+        GLuint& p = linked[&program];
+        if (!p) p = link_program(program.info(), shading_dir);
+        programs_.push_back(p);
+        GLuint tex = 0;
+        if (program.info().needs.texture) {
+            if (o.texture < 0) throw std::runtime_error(scene.file.string() + ": no extras.teximage for " + o.name);
+            Texture& t = scene.textures[std::size_t(o.texture)];
+            if (!t.loaded) t.texels = load_texture(t.path), t.loaded = true;
+            GLuint& id = uploaded[o.texture];
+            if (!id) id = upload_texture(t.texels);
+            tex = id;
+        }
+        textures_.push_back(tex);
+    }
+}
+
+GlSceneRenderer::~GlSceneRenderer() {
+    std::vector<GLuint> p(programs_.begin(), programs_.end());
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    for (GLuint id : p) glDeleteProgram(id);
+    for (GLuint id : textures_) {
+        if (id) glDeleteTextures(1, &id);
+    }
+}
+
+void GlSceneRenderer::draw() {
+    const int width = context_.width(), height = context_.height();
     const float aspect = float(width) / float(height);
-    const float time = request.time.value_or(scene.time);
+    const float time = request_.time.value_or(scene_.time);
     glViewport(0, 0, width, height);
-    glClearColor(scene.clear_color.r, scene.clear_color.g, scene.clear_color.b, scene.clear_color.a);
+    glClearColor(scene_.clear_color.r, scene_.clear_color.g, scene_.clear_color.b, scene_.clear_color.a);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDepthFunc(GL_LESS);
-
-    std::map<const Program*, GLuint> programs;
-    std::map<int, GLuint> textures;
-    for (const Object& o : scene.objects) {
-        const Program& program = program_for(scene, o, request.shader_override);
-        const ShaderInfo& info = program.info();
-        GLuint& p = programs[&program];
-        if (!p) p = link_program(info, shading_dir);
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+        const Object& o = scene_.objects[i];
+        const ShaderInfo& info = program_for(scene_, o, request_.shader_override).info();
+        const GLuint p = programs_[i];
         glUseProgram(p);
         if (info.needs.depth) glEnable(GL_DEPTH_TEST);
         else glDisable(GL_DEPTH_TEST);
         // The MVP quadshade computed, as the projection; gl_ModelViewProjectionMatrix = P * I.
-        const glm::mat4 mvp = scene.model_view_projection(o, aspect);
+        const glm::mat4 mvp = scene_.model_view_projection(o, aspect);
         glMatrixMode(GL_PROJECTION);
         glLoadMatrixf(glm::value_ptr(mvp));
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
         if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
-        if (info.needs.texture) {
-            if (o.texture < 0) throw std::runtime_error(scene.file.string() + ": no extras.teximage for " + o.name);
-            Texture& t = scene.textures[std::size_t(o.texture)];
-            if (!t.loaded) t.texels = load_texture(t.path), t.loaded = true;
-            GLuint& tex = textures[o.texture];
-            if (!tex) tex = upload_texture(t.texels);
+        if (textures_[i]) {
+            const glsl::sampler2D& t = scene_.textures[std::size_t(o.texture)].texels;
             glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, tex);
+            glBindTexture(GL_TEXTURE_2D, textures_[i]);
             if (GLint loc = glGetUniformLocation(p, "teximage"); loc >= 0) glUniform1i(loc, 0);
-            if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) glUniform2f(loc, float(t.texels.width), float(t.texels.height));
+            if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) glUniform2f(loc, float(t.width), float(t.height));
         }
-        const Mesh& mesh = scene.meshes[o.mesh];
+        const Mesh& mesh = scene_.meshes[o.mesh];
         glEnableClientState(GL_VERTEX_ARRAY);
         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
         glVertexPointer(3, GL_FLOAT, sizeof(VertexIn), &mesh.vertices[0].position);
         glTexCoordPointer(2, GL_FLOAT, sizeof(VertexIn), &mesh.vertices[0].texcoord);
         glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
     }
-    Image img{width, height, context.read_rgba()};
-    for (auto& [prog, id] : programs) glDeleteProgram(id);
-    for (auto& [t, id] : textures) glDeleteTextures(1, &id);
+    glFinish();
     if (GLenum e = glGetError(); e != GL_NO_ERROR) throw std::runtime_error("OpenGL error " + std::to_string(e));
-    return img;
+}
+
+Image GlSceneRenderer::render() {
+    draw();
+    return Image{context_.width(), context_.height(), context_.read_rgba()};
+}
+
+Image render_gl(Scene& scene, const GlFrameRequest& request, GlContext& context,
+                const std::filesystem::path& shading_dir) {
+    return GlSceneRenderer(scene, request, context, shading_dir).render();
 }
 
 }  // namespace qs

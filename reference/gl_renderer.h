@@ -23,8 +23,30 @@ struct GlFrameRequest {
 // The GLSL text of one stage: "#version 120", the shader's defines, then its files in order.
 std::string glsl_source(const ShaderInfo& info, bool vertex_stage, const std::filesystem::path& shading_dir);
 
-// Renders into the current context (sized request.width x request.height). Throws
-// std::runtime_error with the compiler's log when GLSL fails to compile or link.
+// Renders a scene's frames into the current context: GLSL compiled and textures uploaded once,
+// at construction. Throws std::runtime_error with the compiler's log when GLSL fails.
+class GlSceneRenderer {
+public:
+    GlSceneRenderer(Scene& scene, const GlFrameRequest& request, GlContext& context,
+                    const std::filesystem::path& shading_dir);
+    ~GlSceneRenderer();
+    GlSceneRenderer(const GlSceneRenderer&) = delete;
+    GlSceneRenderer& operator=(const GlSceneRenderer&) = delete;
+
+    // Draws the frame and waits for it (glFinish), without reading it back.
+    void draw();
+    // draw(), then the colour buffer.
+    Image render();
+
+private:
+    Scene& scene_;
+    GlFrameRequest request_;
+    GlContext& context_;
+    std::vector<unsigned> programs_;  // per object
+    std::vector<unsigned> textures_;  // per object, 0 for none
+};
+
+// One frame: GlSceneRenderer(...).render().
 Image render_gl(Scene& scene, const GlFrameRequest& request, GlContext& context,
                 const std::filesystem::path& shading_dir);
 

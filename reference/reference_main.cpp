@@ -89,12 +89,13 @@ int main(int argc, char** argv) {
         const std::filesystem::path shading_dir = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "shading";
         qs::GlFrameRequest req{width, height, time, shader};
         // The first frame includes GLSL compilation (and llvmpipe's JIT): timed separately.
-        qs::Image img = qs::render_gl(scene, req, *context, shading_dir);
+        qs::GlSceneRenderer gl(scene, req, *context, shading_dir);
+        qs::Image img = gl.render();
         const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         std::vector<double> frames;
         for (int r = 1; r < repeat; ++r) {
             const auto f0 = std::chrono::steady_clock::now();
-            img = qs::render_gl(scene, req, *context, shading_dir);
+            gl.draw();
             frames.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count());
         }
         for (const std::string& output : outputs) {

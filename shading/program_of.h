@@ -90,8 +90,10 @@ public:
     }
 
 private:
+    // `flatten` inlines the whole shader into this function: one straight-line SIMD body per
+    // number type, as a GPU compiler would make it, instead of calls passing vectors in memory.
     template <class F>
-    static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+    [[gnu::flatten]] static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         using program_detail::load;
         FragmentIn<F> f;
         if constexpr (is_dual2<F>::value) {

@@ -27,17 +27,42 @@ struct sampler2D {
 };
 
 namespace texture_detail {
-// A number whose lane i is texel channel c at the integer coordinates held by (ix, iy).
-template <Number F, class I>
-F gather(const sampler2D& tex, const I& ix, const I& iy, int dx, int dy, int c) {
-    if constexpr (std::is_floating_point_v<F>) {
-        return F(tex.texel(int(ix) + dx, int(iy) + dy)[c]);
-    } else if constexpr (is_dual2<F>::value) {
-        return F(gather<typename F::value_type>(tex, ix.val, iy.val, dx, dy, c));
+// The four texels around each lane's lower-left texel (iu, iv), clamped to the edge: t[dy][dx].
+template <Number F>
+void gather_2x2(const sampler2D& tex, const F& iu, const F& iv, vec4<F> (&t)[2][2]) {
+    if constexpr (is_dual2<F>::value) {
+        // Texel values are constants: their derivatives are zero (the weights carry them).
+        using T = typename F::value_type;
+        vec4<T> v[2][2];
+        gather_2x2<T>(tex, iu.val, iv.val, v);
+        for (int dy = 0; dy < 2; ++dy) {
+            for (int dx = 0; dx < 2; ++dx) t[dy][dx] = vec4<F>(F(v[dy][dx].x), F(v[dy][dx].y), F(v[dy][dx].z), F(v[dy][dx].w));
+        }
+    } else if constexpr (std::is_floating_point_v<F>) {
+        for (int dy = 0; dy < 2; ++dy) {
+            for (int dx = 0; dx < 2; ++dx) {
+                const float* p = tex.texel(int(iu) + dx, int(iv) + dy);
+                t[dy][dx] = vec4<F>(F(p[0]), F(p[1]), F(p[2]), F(p[3]));
+            }
+        }
     } else {
-        typename F::value_type vals[F::size];
-        for (int i = 0; i < F::size; ++i) vals[i] = tex.texel(int(ix[i]) + dx, int(iy[i]) + dy)[c];
-        return F::load(vals);
+        using T = typename F::value_type;
+        alignas(64) T lanes[2][2][4][F::size];
+        for (int i = 0; i < F::size; ++i) {
+            const int x = int(iu[i]), y = int(iv[i]);
+            for (int dy = 0; dy < 2; ++dy) {
+                for (int dx = 0; dx < 2; ++dx) {
+                    const float* p = tex.texel(x + dx, y + dy);
+                    for (int c = 0; c < 4; ++c) lanes[dy][dx][c][i] = T(p[c]);
+                }
+            }
+        }
+        for (int dy = 0; dy < 2; ++dy) {
+            for (int dx = 0; dx < 2; ++dx) {
+                t[dy][dx] = vec4<F>(F::load(lanes[dy][dx][0]), F::load(lanes[dy][dx][1]), F::load(lanes[dy][dx][2]),
+                                    F::load(lanes[dy][dx][3]));
+            }
+        }
     }
 }
 }  // namespace texture_detail
@@ -49,14 +74,9 @@ vec4<F> texture2D(const sampler2D& tex, const vec2<F>& st) {
     F v = st.y * F(float(tex.height)) - F(0.5f);
     F iu = floor(u), iv = floor(v);
     F fu = u - iu, fv = v - iv;
-    vec4<F> out;
-    for (int c = 0; c < 4; ++c) {
-        using texture_detail::gather;
-        F t00 = gather<F>(tex, iu, iv, 0, 0, c), t10 = gather<F>(tex, iu, iv, 1, 0, c);
-        F t01 = gather<F>(tex, iu, iv, 0, 1, c), t11 = gather<F>(tex, iu, iv, 1, 1, c);
-        out[c] = mix(mix(t00, t10, fu), mix(t01, t11, fu), fv);
-    }
-    return out;
+    vec4<F> t[2][2];
+    texture_detail::gather_2x2(tex, iu, iv, t);
+    return mix(mix(t[0][0], t[0][1], fu), mix(t[1][0], t[1][1], fu), fv);
 }
 
 }  // namespace qs::glsl

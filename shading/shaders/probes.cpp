@@ -8,7 +8,8 @@ namespace qs {
 void register_probes(ProgramList& list) {
     static const ProgramOf<shaders::DerivativeProbe> derivative_probe;
     static const ProgramOf<shaders::SmoothstepProbe> smoothstep_probe;
-    list.insert(list.end(), {&derivative_probe, &smoothstep_probe});
+    static const ProgramOf<shaders::ArithmeticProbe> arithmetic_probe;
+    list.insert(list.end(), {&derivative_probe, &smoothstep_probe, &arithmetic_probe});
 }
 
 }  // namespace qs

@@ -36,4 +36,17 @@ struct SmoothstepProbe {
     }
 };
 
+struct ArithmeticProbe {
+    static constexpr ShaderInfo info{"arithmetic_probe", "probe: a / b, mod(a, 289), mod(a, b), a / 7 of run-time values",
+                                     Needs{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     {"shaders/plane_st.vert"}, {"shaders/arithmetic_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        F a = in.gl_FragCoord.x * 7.13f + in.gl_FragCoord.y * 289.0f;
+        F b = in.gl_FragCoord.y * 0.37f + 1.0f;
+        return vec4<F>(a / b, mod(a, 289.0f), mod(a, b), a / 7.0f);
+    }
+};
+
 }  // namespace qs::shaders

@@ -1,0 +1,131 @@
+// quadshade-bench-throughput: Table 1.1's shaders on the Table 1.1 plane, quadshade next to OSMesa
+// llvmpipe in one run on the same cores (LP_NUM_THREADS = quadshade's thread count), next to
+// the book's 2011 GPU figures. Frames are timed after set-up (context creation and GLSL
+// compilation are reported separately); llvmpipe frames end with glFinish. Both render into a
+// float RGBA target, as the reference comparisons do.
+//
+//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--out DIR]
+// Writes DIR/throughput.csv and DIR/throughput.md and prints the Markdown table.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gl_renderer.h"
+#include "gltf.h"
+#include "scene_render.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Row {
+    const char* shader;
+    const char* book_name;
+    int book[4];  // Mfrag/s on NVIDIA 9600M, AMD HD6310, AMD HD4850, NVIDIA GTX260 (seed 000)
+};
+const Row kRows[] = {
+    {"constant_color", "Constant color", {422, 430, 2721, 3610}},
+    {"single_texture", "Single texture", {412, 414, 2718, 3610}},
+    {"dots", "Dots (Fig 1.2)", {360, 355, 2720, 3420}},
+    {"perlin", "Perlin noise (Fig 1.4)", {63, 97, 1042, 697}},
+    {"perlin5", "5x Perlin (Fig 1.4)", {11, 23, 271, 146}},
+    {"worley", "Worley noise (Fig 1.5)", {82, 116, 1192, 787}},
+    {"worley_tiles", "Worley tiles (Fig 1.5)", {26, 51, 580, 345}},
+    {"halftone", "Halftone (Fig 1.6)", {34, 52, 597, 373}},
+};
+
+struct Stats {
+    double median = 0, min = 0, max = 0;  // ms per frame
+};
+Stats stats_of(std::vector<double> ms) {
+    std::sort(ms.begin(), ms.end());
+    return {ms[ms.size() / 2], ms.front(), ms.back()};
+}
+
+template <class F>
+Stats time_frames(int repeat, F&& frame) {
+    frame();  // warm-up
+    std::vector<double> ms;
+    for (int i = 0; i < repeat; ++i) {
+        const auto t0 = Clock::now();
+        frame();
+        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    return stats_of(ms);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int threads = 2, repeat = 15;
+    std::vector<int> sizes = {1024, 500};
+    std::string out = "bench-results";
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+        if (a == "--threads") threads = std::max(1, std::atoi(value().c_str()));
+        else if (a == "--repeat") repeat = std::max(3, std::atoi(value().c_str()));
+        else if (a == "--out") out = value();
+        else if (a == "--sizes") {
+            sizes.clear();
+            std::stringstream ss(value());
+            for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::atoi(s.c_str()));
+        } else {
+            std::fprintf(stderr, "usage: quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--out DIR]\n");
+            return a == "--help" ? 0 : 2;
+        }
+    }
+    try {
+        const std::filesystem::path plane = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/table-1.1-plane.gltf";
+        const std::filesystem::path shading = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "shading";
+        std::filesystem::create_directories(out);
+        std::ofstream csv(std::filesystem::path(out) / "throughput.csv");
+        csv << "shader,size,threads,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max,llvmpipe_ms_median,"
+               "llvmpipe_ms_min,llvmpipe_ms_max,llvmpipe_setup_ms,quadshade_mfrags,llvmpipe_mfrags,speedup\n";
+        std::ostringstream md;
+        md << "| shader | size | quadshade Mfrag/s | llvmpipe Mfrag/s | speedup (goal >= 2) | llvmpipe set-up ms | "
+              "2011 GPUs: 9600M / HD6310 / HD4850 / GTX260 |\n|---|---|---|---|---|---|---|\n";
+        for (int size : sizes) {
+            auto context = qs::create_osmesa_context(size, size, qs::GlDriver::Llvmpipe, threads);
+            for (const Row& row : kRows) {
+                std::fprintf(stderr, "\r%-16s %4dx%-4d ...", row.shader, size, size);
+                qs::Scene scene = qs::load_scene(plane);
+                qs::FrameRequest req;
+                req.width = req.height = size;
+                req.shader_override = row.shader;
+                req.raster.threads = threads;
+                qs::Framebuffer fb;
+                const Stats q = time_frames(repeat, [&] { qs::render_frame_into(fb, scene, req); });
+                const auto s0 = Clock::now();
+                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, shading);
+                gl.draw();  // the first frame compiles llvmpipe's code
+                const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
+                const Stats l = time_frames(repeat, [&] { gl.draw(); });
+                const double frags = double(size) * size * 1e-3;  // per ms -> Mfrag/s
+                const double qm = frags / q.median, lm = frags / l.median;
+                csv << row.shader << "," << size << "," << threads << "," << q.median << "," << q.min << "," << q.max << ","
+                    << l.median << "," << l.min << "," << l.max << "," << setup << "," << qm << "," << lm << ","
+                    << qm / lm << "\n";
+                char line[512];
+                std::snprintf(line, sizeof line, "| %s | %d | %.0f (%.0f-%.0f) | %.0f (%.0f-%.0f) | %.2fx | %.0f | %d / %d / %d / %d |\n",
+                              row.book_name, size, qm, frags / q.max, frags / q.min, lm, frags / l.max, frags / l.min,
+                              qm / lm, setup, row.book[0], row.book[1], row.book[2], row.book[3]);
+                md << line;
+            }
+        }
+        std::fprintf(stderr, "\r%40s\r", "");
+        std::ofstream(std::filesystem::path(out) / "throughput.md") << md.str();
+        std::printf("%d threads, median of %d frames (min-max in brackets), float RGBA target\n\n%s", threads, repeat,
+                    md.str().c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "quadshade-bench-throughput: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
