@@ -28,13 +28,6 @@ constexpr int kFragments = kSide * kSide;
 constexpr float kScale = 10.0f / kSide;  // st * 10, as the simplex2d shader
 
 template <class F>
-constexpr int lanes_of() {
-    if constexpr (is_dual2<F>::value) return lanes_of<typename F::value_type>();
-    else if constexpr (is_lanes<F>::value) return F::size;
-    else return 1;
-}
-
-template <class F>
 F lane_ramp(float start, float step) {
     if constexpr (is_dual2<F>::value) {
         return F(lane_ramp<typename F::value_type>(start, step), typename F::value_type(1.0f), typename F::value_type(0.0f));

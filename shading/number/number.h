@@ -23,6 +23,14 @@ struct is_dual2<Dual2<T>> : std::true_type {};
 template <class F>
 concept Number = std::is_floating_point_v<F> || is_lanes<F>::value || is_dual2<F>::value;
 
+// How many values one F holds (1 for float, double and Dual2 of them).
+template <class F>
+constexpr int lanes_of() {
+    if constexpr (is_dual2<F>::value) return lanes_of<typename F::value_type>();
+    else if constexpr (is_lanes<F>::value) return F::size;
+    else return 1;
+}
+
 // The mask a comparison of two F yields.
 template <Number F>
 using mask_t = decltype(F() < F());

@@ -16,15 +16,13 @@
 #include "gltf.h"
 #include "image_io.h"
 #include "scene_render.h"
+#include "test_paths.h"
 
 namespace qs {
 
 namespace {
 
-const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
-const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
-const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
-const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
+using namespace test;
 
 // Plane shaders are compared at this size (the book's benchmark is 500x500; 256x256 keeps the
 // 60 reference renders of a test run to seconds).
@@ -67,11 +65,7 @@ std::vector<Case> cases() {
 }
 
 std::filesystem::path work_dir() {
-    static const auto dir = [] {
-        auto d = std::filesystem::temp_directory_path() / ("quadshade-reference-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(d);
-        return d;
-    }();
+    static const auto dir = temp_dir("reference");
     return dir;
 }
 

@@ -18,22 +18,13 @@
 #include "gltf.h"
 #include "image_io.h"
 #include "scene_render.h"
+#include "test_paths.h"
 
 namespace qs {
 
 namespace {
 
-const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
-const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
-const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
-const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
-
-std::filesystem::path temp_dir(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / ("quadshade-test-" + name + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
+using namespace test;
 
 std::string slurp(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);

@@ -9,12 +9,7 @@
 
 namespace qs::test {
 
-template <class F>
-constexpr int lanes_of() {
-    if constexpr (is_dual2<F>::value) return lanes_of<typename F::value_type>();
-    else if constexpr (is_lanes<F>::value) return F::size;
-    else return 1;
-}
+using qs::lanes_of;
 
 // The scalar type a number type computes in (float or double).
 template <class F>
