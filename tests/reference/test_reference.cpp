@@ -194,6 +194,11 @@ TEST_CASE("fill rule: llvmpipe owns left and bottom edges, softpipe right and to
     CHECK(coverage(ours(c, Derivatives::CoarseLower, 16, 16).rgba) == sp);
 }
 
+TEST_CASE("division and mod are exact IEEE operations, bit for bit as llvmpipe", "[reference][arithmetic]") {
+    const Case probe{"arithmetic_probe", kPlane, "arithmetic_probe", 64, 64};
+    CHECK(ours(probe, Derivatives::Fine, 64, 64).rgba == reference(probe, "llvmpipe", 64, 64).rgba);
+}
+
 TEST_CASE("smoothstep with equal edges matches llvmpipe's run-time result", "[reference][undefined]") {
     const Case probe{"smoothstep_probe", kPlane, "smoothstep_probe", 32, 4};
     const Framebuffer q = ours(probe, Derivatives::Fine, 32, 4);
