@@ -6,8 +6,6 @@
 #include <cstdint>
 #include <vector>
 
-#include <glm/vec4.hpp>
-
 namespace qs {
 
 struct Framebuffer {
@@ -15,18 +13,14 @@ struct Framebuffer {
     std::vector<float> rgba;   // 4 per pixel, top-down
     std::vector<float> depth;  // empty when no draw needed depth; else 1 per pixel, cleared to 1
 
-    Framebuffer() = default;
-    Framebuffer(int w, int h, glm::vec4 clear, bool with_depth);
-
     float* pixel(int x, int row) { return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4]; }
     const float* pixel(int x, int row) const {
         return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4];
     }
-
-    // GL's conversion to an 8-bit unorm target: clamp to [0, 1], scale by 255, round to nearest.
-    std::vector<std::uint8_t> to_rgba8() const;
 };
 
+// GL's conversion to an 8-bit unorm target: clamp to [0, 1] (NaN to 0), scale by 255, round to
+// nearest.
 std::uint8_t unorm8(float v);
 
 }  // namespace qs
