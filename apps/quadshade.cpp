@@ -230,12 +230,22 @@ int cmd_shaders(int argc, char** argv) {
         }
         throw UsageError(std::string("shaders: unexpected argument ") + argv[i]);
     }
-    std::printf("%-20s %-11s %-7s %-4s %-5s %s\n", "name", "derivatives", "texture", "time", "depth", "description");
+    auto coordinates = [](Coordinates c) {
+        switch (c) {
+            case Coordinates::None: return "window";
+            case Coordinates::Texcoord2D: return "st 2D";
+            case Coordinates::Object2D: return "object 2D";
+            case Coordinates::Object3D: return "object 3D";
+        }
+        return "?";
+    };
+    std::printf("%-20s %-11s %-11s %-7s %-4s %-5s %s\n", "name", "coordinates", "derivatives", "texture", "time", "depth",
+                "description");
     for (const Program* p : catalogue()) {
         const ShaderInfo& s = p->info();
-        std::printf("%-20s %-11s %-7s %-4s %-5s %s\n", std::string(s.name).c_str(), s.needs.derivatives ? "yes" : "-",
-                    s.needs.texture ? "yes" : "-", s.needs.time ? "yes" : "-", s.needs.depth ? "yes" : "-",
-                    std::string(s.description).c_str());
+        std::printf("%-20s %-11s %-11s %-7s %-4s %-5s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
+                    s.needs.derivatives ? "yes" : "-", s.needs.texture ? "yes" : "-", s.needs.time ? "yes" : "-",
+                    s.needs.depth ? "yes" : "-", std::string(s.description).c_str());
     }
     return 0;
 }

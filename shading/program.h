@@ -36,8 +36,17 @@ struct ShadeMode {
     Precision precision = Precision::Float;
 };
 
+// The pattern's coordinate space: what the vertex stage feeds the fragment stage.
+enum class Coordinates {
+    None,        // window position only (gl_FragCoord)
+    Texcoord2D,  // st from TEXCOORD_0
+    Object2D,    // the object-space position's x and y
+    Object3D,    // the object-space position (a solid texture)
+};
+
 // What a shader uses, so that the renderer leaves out everything else.
 struct Needs {
+    Coordinates coordinates = Coordinates::Texcoord2D;
     bool derivatives = false;  // dFdx/dFdy/fwidth: quads with helper lanes
     bool texture = false;      // the scene must provide `teximage`
     bool time = false;         // output changes with the `time` uniform

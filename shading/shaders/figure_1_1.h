@@ -17,7 +17,7 @@ using namespace qs::glsl;
 struct FlowNoise {
     static constexpr ShaderInfo info{
         "flow_noise", "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
-        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 2},
+        Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 2},
         {"shaders/object_plane.vert"}, {"noise/flow_noise.glsl", "shaders/flow_noise.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
         out.varyings[0] = in.position.x * 8.0f;  // p = gl_Vertex.xy * 8.0
@@ -49,7 +49,7 @@ inline void sphere_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out)
 struct Simplex3d {
     static constexpr ShaderInfo info{
         "simplex3d", "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
-        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"shaders/sphere_simplex.vert"}, {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
         noise::Simplex3dDemo::glsl_defines};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, 1>(in, u, out); }
@@ -63,7 +63,7 @@ struct Simplex3d {
 struct Turbulence {
     static constexpr ShaderInfo info{
         "turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
-        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
         noise::Simplex3dDemo::glsl_defines};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<2, -1>(in, u, out); }
@@ -82,7 +82,7 @@ struct Turbulence {
 struct Spots {
     static constexpr ShaderInfo info{
         "spots", "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
-        Needs{.derivatives = true, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
     template <class F>
@@ -98,7 +98,7 @@ struct Spots {
 struct Tiles3d {
     static constexpr ShaderInfo info{
         "tiles3d", "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
-        Needs{.derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"noise/simplex3d.glsl", "shaders/sphere_warp.vert"}, {"noise/cellular.glsl", "shaders/tiles3d.frag"},
         noise::Simplex3dDemo::glsl_defines};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {

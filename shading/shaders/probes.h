@@ -12,7 +12,7 @@ using namespace qs::glsl;
 
 struct DerivativeProbe {
     static constexpr ShaderInfo info{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
-                                     Needs{.derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},
                                      {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -25,7 +25,7 @@ struct DerivativeProbe {
 
 struct SmoothstepProbe {
     static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
-                                     Needs{.derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},
                                      {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -38,7 +38,7 @@ struct SmoothstepProbe {
 
 struct ArithmeticProbe {
     static constexpr ShaderInfo info{"arithmetic_probe", "probe: a / b, mod(a, 289), mod(a, b), a / 7 of run-time values",
-                                     Needs{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
                                      {"shaders/plane_st.vert"}, {"shaders/arithmetic_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>

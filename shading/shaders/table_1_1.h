@@ -26,7 +26,7 @@ inline constexpr Needs kPlaneDerivativeNeeds{.derivatives = true, .texture = fal
 
 struct ConstantColor {
     static constexpr ShaderInfo info{"constant_color", "Table 1.1: constant colour",
-                                     Needs{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
                                      {"shaders/plane_st.vert"}, {"shaders/constant_color.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>

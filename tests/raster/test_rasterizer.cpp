@@ -21,7 +21,7 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{"test_y2", "", Needs{.derivatives = true, .depth = false, .varyings = 0}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .depth = false, .varyings = 0}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
