@@ -53,6 +53,7 @@ const char* kRenderHelp =
     "  --precision P           float (default) | double\n"
     "  --quad-pairing P        top-down (OSMesa's buffer, default) | bottom-up (an FBO)\n"
     "  --fill-rule R           pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)\n"
+    "  --interpolation I       fused (llvmpipe on FMA hosts; the default there) | separate (softpipe)\n"
     "  --alpha                 keep the alpha channel (the clear colour's alpha is 0)\n"
     "  --general-path          shade every shader in quads with a depth buffer (no specialisation)\n"
     "  --threads N             worker threads (default: all cores)\n";
@@ -166,6 +167,11 @@ int cmd_render(int argc, char** argv) {
             if (v == "left-bottom") req.raster.fill_rule = FillRule::LeftBottom;
             else if (v == "right-top") req.raster.fill_rule = FillRule::RightTop;
             else throw UsageError("--fill-rule: expected left-bottom or right-top, got '" + v + "'");
+        } else if (a == "--interpolation") {
+            const std::string v = need_value(i, argc, argv);
+            if (v == "fused") req.raster.fused_interpolation = true;
+            else if (v == "separate") req.raster.fused_interpolation = false;
+            else throw UsageError("--interpolation: expected fused or separate, got '" + v + "'");
         } else if (a == "--alpha") {
             alpha = true;
         } else if (a == "--general-path") {

@@ -32,6 +32,7 @@ struct PreparedDraw {
     bool depth_test;  // LESS test and depth write
     int varyings;
     unsigned flat;    // flat varyings
+    bool fused;       // fused plane evaluation
 };
 
 // A 4x4 pixel block is exactly one batch of kBatchQuads quads. Lane offsets inside a block in
@@ -189,7 +190,7 @@ private:
         for (int i = 0; i < kBatchLanes; ++i) {
             if (!(mask >> i & 1)) continue;
             const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            const float z = tri_->z.at(float(x), float(y));
+            const float z = tri_->z.at(float(x), float(y), draw_->fused);
             pass |= std::uint32_t(z < depth_[tile_index(x, y)]) << i;
         }
         return pass;
@@ -210,13 +211,20 @@ private:
         } else {
             for (int i = 0; i < kBatchLanes; ++i) fx[i] = float(b.x[i]), fy[i] = float(b.y[i]);
         }
+        // Plane evaluation, one form or the other for the whole batch (see plane_equation.h).
+        auto eval = [&](const PlaneEquation& p, float* out) {
+            if (d.fused) {
+                for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at_fused(fx[i], fy[i]);
+            } else {
+                for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at(fx[i], fy[i]);
+            }
+        };
+        eval(t.inv_w, in_.frag_coord[3]);
+        eval(t.z, in_.frag_coord[2]);
         for (int i = 0; i < kBatchLanes; ++i) {
-            const float inv_w = t.inv_w.at(fx[i], fy[i]);
-            rcp_inv_w[i] = 1.0f / inv_w;
+            rcp_inv_w[i] = 1.0f / in_.frag_coord[3][i];
             in_.frag_coord[0][i] = fx[i] + 0.5f;
             in_.frag_coord[1][i] = height - (fy[i] + 0.5f);  // GL window y points up
-            in_.frag_coord[2][i] = t.z.at(fx[i], fy[i]);
-            in_.frag_coord[3][i] = inv_w;
         }
         for (int v = 0; v < d.varyings; ++v) {
             const PlaneEquation& p = t.varyings[v];
@@ -224,7 +232,8 @@ private:
                 std::fill_n(in_.varying[v], kBatchLanes, p.a0);
                 continue;
             }
-            for (int i = 0; i < kBatchLanes; ++i) in_.varying[v][i] = p.at(fx[i], fy[i]) * rcp_inv_w[i];
+            eval(p, in_.varying[v]);
+            for (int i = 0; i < kBatchLanes; ++i) in_.varying[v][i] *= rcp_inv_w[i];
         }
         if (d.mode.derivatives == Derivatives::Analytic) {
             // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W.
@@ -310,7 +319,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         if (!call.program) throw std::invalid_argument("draw call without a program");
         const Needs& needs = call.program->info().needs;
         PreparedDraw d{&call, {options.derivatives, options.precision}, true, needs.depth, needs.varyings,
-                       needs.flat_varyings};
+                       needs.flat_varyings, options.fused_interpolation};
         if (!needs.derivatives && !options.force_general_path) {
             d.mode.derivatives = Derivatives::None;  // per pixel, no helper lanes
             d.quads = false;

@@ -14,6 +14,7 @@
 
 #include "draw_call.h"
 #include "edge_function.h"
+#include "plane_equation.h"
 #include "framebuffer.h"
 #include "program.h"
 
@@ -29,6 +30,9 @@ struct RasterOptions {
     Precision precision = Precision::Float;
     QuadPairing pairing = QuadPairing::TopDown;
     FillRule fill_rule = FillRule::LeftBottom;
+    // Evaluate attribute planes with fused multiply-adds (llvmpipe on FMA hosts) or separately
+    // rounded ones (softpipe). See plane_equation.h.
+    bool fused_interpolation = kFusedInterpolationDefault;
     // Shade derivative-free shaders in quads with helper lanes too (the general path), and keep
     // a depth buffer even when no draw needs one. For measuring what specialisation saves.
     bool force_general_path = false;
