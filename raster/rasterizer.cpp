@@ -196,6 +196,17 @@ private:
         return pass;
     }
 
+    // A plane at the batch's pixel centres, one form or the other for the whole batch (see
+    // plane_equation.h); `out` never aliases the positions, so the loops vectorize.
+    static void evaluate(const PlaneEquation& p, const float* __restrict fx, const float* __restrict fy,
+                         float* __restrict out, bool fused) {
+        if (fused) {
+            for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at_fused(fx[i], fy[i]);
+        } else {
+            for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at(fx[i], fy[i]);
+        }
+    }
+
     // Interpolates, shades and writes one batch.
     void flush(Batch& b) {
         if (b.count == 0) return;
@@ -211,14 +222,7 @@ private:
         } else {
             for (int i = 0; i < kBatchLanes; ++i) fx[i] = float(b.x[i]), fy[i] = float(b.y[i]);
         }
-        // Plane evaluation, one form or the other for the whole batch (see plane_equation.h).
-        auto eval = [&](const PlaneEquation& p, float* out) {
-            if (d.fused) {
-                for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at_fused(fx[i], fy[i]);
-            } else {
-                for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at(fx[i], fy[i]);
-            }
-        };
+        auto eval = [&](const PlaneEquation& p, float* out) { evaluate(p, fx, fy, out, d.fused); };
         eval(t.inv_w, in_.frag_coord[3]);
         eval(t.z, in_.frag_coord[2]);
         for (int i = 0; i < kBatchLanes; ++i) {
