@@ -12,13 +12,17 @@
 
 namespace qs {
 
-// Whether interpolation fuses its multiply-adds, as llvmpipe does on hosts with FMA (a fused
-// multiply-add is exact in software too, only slower, where the hardware has none).
-#if defined(__FMA__)
-inline constexpr bool kFusedInterpolationDefault = true;
+// Whether interpolation should fuse its multiply-adds to match llvmpipe on this machine: LLVM
+// fuses llvm.fmuladd when the CPU has FMA, whatever quadshade itself was compiled for (std::fma is
+// exact either way; without -mfma it is a library call, slower but the same numbers).
+inline bool fused_interpolation_default() {
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool fma = __builtin_cpu_supports("fma");
+    return fma;
 #else
-inline constexpr bool kFusedInterpolationDefault = false;
+    return false;
 #endif
+}
 
 // The triangle-wide factors every plane of one triangle shares.
 struct PlaneSetup {

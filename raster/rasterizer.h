@@ -32,7 +32,7 @@ struct RasterOptions {
     FillRule fill_rule = FillRule::LeftBottom;
     // Evaluate attribute planes with fused multiply-adds (llvmpipe on FMA hosts) or separately
     // rounded ones (softpipe). See plane_equation.h.
-    bool fused_interpolation = kFusedInterpolationDefault;
+    bool fused_interpolation = fused_interpolation_default();
     // Shade derivative-free shaders in quads with helper lanes too (the general path), and keep
     // a depth buffer even when no draw needs one. For measuring what specialisation saves.
     bool force_general_path = false;

@@ -96,7 +96,7 @@ Framebuffer ours(const Case& c, Derivatives rule, int width, int height) {
     r.raster.derivatives = rule;
     const bool softpipe = rule == Derivatives::CoarseLower;
     r.raster.fill_rule = softpipe ? FillRule::RightTop : FillRule::LeftBottom;
-    r.raster.fused_interpolation = softpipe ? false : kFusedInterpolationDefault;
+    r.raster.fused_interpolation = softpipe ? false : fused_interpolation_default();
     return render_frame(scene, r);
 }
 
@@ -201,14 +201,12 @@ TEST_CASE("fill rule: llvmpipe owns left and bottom edges, softpipe right and to
     CHECK(coverage(ours(c, Derivatives::CoarseLower, 16, 16).rgba) == sp);
 }
 
-#if defined(__FMA__)
-// llvmpipe interpolates with llvm.fmuladd, fused on FMA hardware; so does quadshade when built
-// for such hardware (raster/plane_equation.h). A portable build rounds differently by an ulp.
+// llvmpipe interpolates with llvm.fmuladd, fused on FMA hardware; quadshade fuses on the same
+// machines (raster/plane_equation.h), native or portable build alike.
 TEST_CASE("interpolated varyings equal llvmpipe's bit for bit", "[reference][interpolation]") {
     const Case st{"pattern_s", kPlane, "pattern_s", 500, 500};  // writes st.s unchanged
     CHECK(ours(st, Derivatives::Fine, 500, 500).rgba == reference(st, "llvmpipe", 500, 500).rgba);
 }
-#endif
 
 TEST_CASE("division and mod are exact IEEE operations, bit for bit as llvmpipe", "[reference][arithmetic]") {
     const Case probe{"arithmetic_probe", kPlane, "arithmetic_probe", 64, 64};
