@@ -12,6 +12,17 @@
 #include "glsl.h"
 #include "program.h"
 
+// `flatten` inlines the whole shader into ProgramOf::run: one straight-line SIMD body per number
+// type, as a GPU compiler would make it, instead of calls passing vectors through memory (it
+// doubled the noise shaders' throughput). Only where a batch is one native register (AVX-512):
+// with narrower vectors a batch is a tuple of registers and flattening it makes compile times
+// explode (minutes per shader group) for little gain.
+#if defined(__AVX512F__)
+#define QS_FLATTEN [[gnu::flatten]]
+#else
+#define QS_FLATTEN
+#endif
+
 namespace qs {
 
 // A shader's view of its inputs, in number type F.
@@ -90,10 +101,8 @@ public:
     }
 
 private:
-    // `flatten` inlines the whole shader into this function: one straight-line SIMD body per
-    // number type, as a GPU compiler would make it, instead of calls passing vectors in memory.
     template <class F>
-    [[gnu::flatten]] static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+    QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         using program_detail::load;
         FragmentIn<F> f;
         if constexpr (is_dual2<F>::value) {
