@@ -191,6 +191,10 @@ int cmd_render(int argc, char** argv) {
 
     Scene scene = load_scene(scene_path);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
+    const std::filesystem::path out_dir = std::filesystem::path(output).parent_path();
+    if (!out_dir.empty() && !std::filesystem::is_directory(out_dir)) {
+        throw std::runtime_error(output + ": no folder " + out_dir.string() + " to write into");
+    }
     const int first = frames ? frames->first : 0, last = frames ? frames->second : 0;
     const bool progress = frames && last > first && ::isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();

@@ -70,6 +70,10 @@ bool is_float_format(const std::filesystem::path& path) {
 
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
     const bool is_float = is_float_format(path);
+    const std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+    if (!std::filesystem::is_directory(folder)) {
+        throw ImageError(path.string() + ": cannot write image: no folder " + folder.string());
+    }
     // Same directory, so the final rename cannot cross file systems.
     std::filesystem::path tmp = path;
     tmp += ".tmp-" + std::to_string(::getpid()) + path.extension().string();
@@ -100,10 +104,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Me
     }
     bool ok = out->open(tmp.string(), spec) && out->write_image(format, pixels) && out->close();
     if (!ok) {
-        std::string err = out->geterror();
         std::error_code ec;
         std::filesystem::remove(tmp, ec);
-        throw ImageError(path.string() + ": cannot write image: " + err);
+        throw ImageError(path.string() + ": cannot write image (" + out->geterror() + ")");
     }
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);

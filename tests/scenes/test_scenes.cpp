@@ -192,6 +192,7 @@ TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") 
         // An unwritable destination leaves no partial file behind.
         auto [code3, err3] = run(qs + " render " + kPlane.string() + " --size 8x8 -o " + (dir / "no/dir/x.png").string(), dir);
         CHECK(code3 == 1);
+        CHECK(err3.find("no folder") != std::string::npos);
         CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);  // just stderr.txt
     }
     SECTION("an animation writes numbered frames") {
