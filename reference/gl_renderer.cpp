@@ -29,18 +29,23 @@ std::string read_file(const std::filesystem::path& p) {
     return ss.str();
 }
 
+// Throws with the driver's log when a shader or program object reports failure.
+template <class GetStatus, class GetLog>
+void check(GLuint object, GLenum status, GetStatus get_status, GetLog get_log, const std::string& what) {
+    GLint ok = 0;
+    get_status(object, status, &ok);
+    if (ok) return;
+    char log[4096] = {};
+    get_log(object, GLsizei(sizeof log), nullptr, log);
+    throw std::runtime_error(what + ":\n" + log);
+}
+
 GLuint compile(GLenum stage, const std::string& source, const std::string& what) {
     GLuint s = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(s, 1, &text, nullptr);
     glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[4096];
-        glGetShaderInfoLog(s, sizeof log, nullptr, log);
-        throw std::runtime_error(what + ": GLSL does not compile:\n" + log);
-    }
+    check(s, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, what + ": GLSL does not compile");
     return s;
 }
 
@@ -52,13 +57,7 @@ GLuint link_program(const ShaderInfo& info, const std::filesystem::path& shading
     glAttachShader(p, vs);
     glAttachShader(p, fs);
     glLinkProgram(p);
-    GLint ok = 0;
-    glGetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[4096];
-        glGetProgramInfoLog(p, sizeof log, nullptr, log);
-        throw std::runtime_error(name + ": GLSL does not link:\n" + log);
-    }
+    check(p, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, name + ": GLSL does not link");
     glDeleteShader(vs);
     glDeleteShader(fs);
     return p;
