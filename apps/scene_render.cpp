@@ -21,6 +21,23 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
+const glsl::sampler2D& texture_for(Scene& scene, const Object& o, const Program& program) {
+    if (o.texture < 0) {
+        throw SceneError(scene.file.string() + ": material '" + o.material + "': shader '" +
+                         std::string(program.info().name) + "' samples a texture but extras.teximage is missing");
+    }
+    Texture& t = scene.textures[std::size_t(o.texture)];
+    if (!t.loaded) {
+        try {
+            t.texels = load_texture(t.path);
+        } catch (const ImageError& e) {
+            throw SceneError(scene.file.string() + ": material '" + o.material + "' extras.teximage: " + e.what());
+        }
+        t.loaded = true;
+    }
+    return t.texels;
+}
+
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats) {
     Framebuffer fb;
     render_frame_into(fb, scene, request, stats);
@@ -42,22 +59,7 @@ void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& reques
         d.program = &program;
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = request.time.value_or(scene.time);
-        if (program.info().needs.texture) {
-            if (o.texture < 0) {
-                throw SceneError(scene.file.string() + ": material '" + o.material + "': shader '" +
-                                 std::string(program.info().name) + "' samples a texture but extras.teximage is missing");
-            }
-            Texture& t = scene.textures[std::size_t(o.texture)];
-            if (!t.loaded) {
-                try {
-                    t.texels = load_texture(t.path);
-                } catch (const ImageError& e) {
-                    throw SceneError(scene.file.string() + ": material '" + o.material + "' extras.teximage: " + e.what());
-                }
-                t.loaded = true;
-            }
-            d.uniforms.teximage = &t.texels;
-        }
+        if (program.info().needs.texture) d.uniforms.teximage = &texture_for(scene, o, program);
         draws.push_back(d);
     }
     rasterize_into(fb, width, height, scene.clear_color, draws, request.raster, stats);

@@ -24,6 +24,10 @@ Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats*
 // The same into `fb`, reusing its memory from frame to frame.
 void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
 
+// The texture an object's program samples, loaded on first use. Throws SceneError naming the
+// material when extras.teximage is missing or unreadable.
+const glsl::sampler2D& texture_for(Scene& scene, const Object& object, const Program& program);
+
 // The shader each object is drawn with under `shader_override`, checked against the catalogue.
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override);
 

@@ -1,6 +1,7 @@
 #include "rasterizer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -43,8 +44,14 @@ static_assert(kBlock * kBlock == kBatchLanes);
 inline constexpr int kLaneDx[kBatchLanes] = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
 inline constexpr int kLaneDy[kBatchLanes] = {1, 1, 0, 0, 1, 1, 0, 0, 3, 3, 2, 2, 3, 3, 2, 2};
 inline constexpr std::uint32_t kAllLanes = (1u << kBatchLanes) - 1;
-inline constexpr float kLaneDxF[kBatchLanes] = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
-inline constexpr float kLaneDyF[kBatchLanes] = {1, 1, 0, 0, 1, 1, 0, 0, 3, 3, 2, 2, 3, 3, 2, 2};
+// The same offsets as floats, for interpolation.
+constexpr std::array<float, kBatchLanes> as_floats(const int (&v)[kBatchLanes]) {
+    std::array<float, kBatchLanes> f{};
+    for (int i = 0; i < kBatchLanes; ++i) f[std::size_t(i)] = float(v[i]);
+    return f;
+}
+inline constexpr auto kLaneDxF = as_floats(kLaneDx);
+inline constexpr auto kLaneDyF = as_floats(kLaneDy);
 // The inverse: lane of the pixel at (dx, dy) inside its block.
 inline constexpr int kLaneAt[kBlock][kBlock] = {{2, 3, 6, 7}, {0, 1, 4, 5}, {10, 11, 14, 15}, {8, 9, 12, 13}};  // [dy][dx]
 
@@ -218,7 +225,7 @@ private:
         alignas(64) float fx[kBatchLanes], fy[kBatchLanes], rcp_inv_w[kBatchLanes];
         if (b.block >= 0) {  // a whole block: positions from its corner
             const float bx = float(b.x[2]), by = float(b.y[2]);  // lane 2 is the top-left pixel
-            for (int i = 0; i < kBatchLanes; ++i) fx[i] = bx + kLaneDxF[i], fy[i] = by + kLaneDyF[i];
+            for (int i = 0; i < kBatchLanes; ++i) fx[i] = bx + kLaneDxF[std::size_t(i)], fy[i] = by + kLaneDyF[std::size_t(i)];
         } else {
             for (int i = 0; i < kBatchLanes; ++i) fx[i] = float(b.x[i]), fy[i] = float(b.y[i]);
         }

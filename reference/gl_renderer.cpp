@@ -101,17 +101,18 @@ GlSceneRenderer::GlSceneRenderer(Scene& scene, const GlFrameRequest& request, Gl
         const Program& program = program_for(scene, o, request.shader_override);
         GLuint& p = linked[&program];
         if (!p) p = link_program(program.info(), shading_dir);
+        infos_.push_back(&program.info());
         programs_.push_back(p);
         GLuint tex = 0;
+        const glsl::sampler2D* texels = nullptr;
         if (program.info().needs.texture) {
-            if (o.texture < 0) throw std::runtime_error(scene.file.string() + ": no extras.teximage for " + o.name);
-            Texture& t = scene.textures[std::size_t(o.texture)];
-            if (!t.loaded) t.texels = load_texture(t.path), t.loaded = true;
+            texels = &texture_for(scene, o, program);
             GLuint& id = uploaded[o.texture];
-            if (!id) id = upload_texture(t.texels);
+            if (!id) id = upload_texture(*texels);
             tex = id;
         }
         textures_.push_back(tex);
+        texels_.push_back(texels);
     }
 }
 
@@ -120,7 +121,10 @@ GlSceneRenderer::~GlSceneRenderer() {
     std::sort(p.begin(), p.end());
     p.erase(std::unique(p.begin(), p.end()), p.end());
     for (GLuint id : p) glDeleteProgram(id);
-    for (GLuint id : textures_) {
+    std::vector<GLuint> t(textures_.begin(), textures_.end());
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+    for (GLuint id : t) {
         if (id) glDeleteTextures(1, &id);
     }
 }
@@ -138,7 +142,7 @@ void GlSceneRenderer::draw() {
     glDepthFunc(GL_LESS);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
         const Object& o = scene_.objects[i];
-        const ShaderInfo& info = program_for(scene_, o, request_.shader_override).info();
+        const ShaderInfo& info = *infos_[i];
         const GLuint p = programs_[i];
         glUseProgram(p);
         if (info.needs.depth) glEnable(GL_DEPTH_TEST);
@@ -151,7 +155,7 @@ void GlSceneRenderer::draw() {
         glLoadIdentity();
         if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
         if (textures_[i]) {
-            const glsl::sampler2D& t = scene_.textures[std::size_t(o.texture)].texels;
+            const glsl::sampler2D& t = *texels_[i];
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, textures_[i]);
             if (GLint loc = glGetUniformLocation(p, "teximage"); loc >= 0) glUniform1i(loc, 0);

@@ -42,8 +42,10 @@ private:
     Scene& scene_;
     GlFrameRequest request_;
     GlContext& context_;
-    std::vector<unsigned> programs_;  // per object
-    std::vector<unsigned> textures_;  // per object, 0 for none
+    std::vector<const ShaderInfo*> infos_;      // per object
+    std::vector<unsigned> programs_;            // per object
+    std::vector<unsigned> textures_;            // per object, 0 for none
+    std::vector<const glsl::sampler2D*> texels_;  // per object, nullptr for none
 };
 
 // One frame: GlSceneRenderer(...).render().
