@@ -2,6 +2,9 @@
 
 #include "catalogue.h"
 #include "image_io.h"
+#if defined(QUADSHADE_HAS_RAYCAST)
+#include "ray_caster.h"
+#endif
 
 namespace qs {
 
@@ -38,18 +41,22 @@ const glsl::sampler2D& texture_for(Scene& scene, const Object& o, const Program&
     return t.texels;
 }
 
-Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats) {
-    Framebuffer fb;
-    render_frame_into(fb, scene, request, stats);
-    return fb;
-}
+#if defined(QUADSHADE_HAS_RAYCAST)
+struct SceneRenderer::Caster {
+    Caster(std::span<const DrawCall> draws, const glm::mat4& clip_from_world) : caster(draws, clip_from_world) {}
+    RayCaster caster;
+};
+#else
+struct SceneRenderer::Caster {};
+#endif
 
-void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats) {
-    const int width = request.width > 0 ? request.width : scene.width;
-    const int height = request.height > 0 ? request.height : scene.height;
-    const float aspect = float(width) / float(height);
-    std::vector<DrawCall> draws;
-    draws.reserve(scene.objects.size());
+SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
+    : scene_(scene),
+      request_(request),
+      width_(request.width > 0 ? request.width : scene.width),
+      height_(request.height > 0 ? request.height : scene.height) {
+    const float aspect = float(width_) / float(height_);
+    draws_.reserve(scene.objects.size());
     for (const Object& o : scene.objects) {
         const Program& program = program_for(scene, o, request.shader_override);
         DrawCall d;
@@ -60,9 +67,49 @@ void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& reques
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = request.time.value_or(scene.time);
         if (program.info().needs.texture) d.uniforms.teximage = &texture_for(scene, o, program);
-        draws.push_back(d);
+        draws_.push_back(d);
     }
-    rasterize_into(fb, width, height, scene.clear_color, draws, request.raster, stats);
+    if (request.backend == Backend::RayCaster) {
+#if defined(QUADSHADE_HAS_RAYCAST)
+        const Camera& c = scene.camera;
+        caster_ = std::make_unique<Caster>(draws_, c.projection(aspect) * c.view);
+#else
+        throw std::runtime_error("this quadshade was built without the ray caster (QUADSHADE_RAYCAST=OFF: no Embree)");
+#endif
+    }
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+double SceneRenderer::bvh_build_seconds() const {
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (caster_) return caster_->caster.build_seconds();
+#endif
+    return 0.0;
+}
+
+void SceneRenderer::render_into(Framebuffer& fb, std::optional<float> time, RasterStats* stats) {
+    const float t = time.value_or(request_.time.value_or(scene_.time));
+    for (DrawCall& d : draws_) d.uniforms.time = t;
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (caster_) {
+        const RasterOptions& r = request_.raster;
+        caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_,
+                                    {r.derivatives, r.precision, r.pairing, r.threads}, stats);
+        return;
+    }
+#endif
+    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster, stats);
+}
+
+Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats) {
+    Framebuffer fb;
+    render_frame_into(fb, scene, request, stats);
+    return fb;
+}
+
+void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats) {
+    SceneRenderer(scene, request).render_into(fb, std::nullopt, stats);
 }
 
 }  // namespace qs

@@ -3,25 +3,55 @@
 // textures the drawn shaders sample (and no others), and builds the draw calls. Shared by the
 // command line, the reference comparisons and the benchmarks.
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "rasterizer.h"
 #include "scene.h"
 
 namespace qs {
 
+enum class Backend { Rasterizer, RayCaster };
+
 struct FrameRequest {
     int width = 0, height = 0;           // 0: the scene's size
     std::optional<float> time;           // default: the scene's time
     std::string shader_override;         // draw every object with this shader
+    Backend backend = Backend::Rasterizer;
+    // Derivative rule, precision, quad pairing and threads apply to both backends; fill rule,
+    // interpolation and the general path to the rasterizer only.
     RasterOptions raster;
 };
 
-// Throws SceneError for an unknown or missing shader (naming the scene file and material) or a
-// texture that cannot be read.
+// A scene made ready for frames: shaders resolved, textures loaded, draw calls built and, for the
+// ray caster, the BVH built; each frame then only changes the time. Throws SceneError for an
+// unknown or missing shader (naming the scene file and material) or a texture that cannot be
+// read, std::runtime_error when the ray caster was not built in.
+class SceneRenderer {
+public:
+    SceneRenderer(Scene& scene, const FrameRequest& request);
+    ~SceneRenderer();
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+    void render_into(Framebuffer& fb, std::optional<float> time, RasterStats* stats = nullptr);
+    int width() const { return width_; }
+    int height() const { return height_; }
+    double bvh_build_seconds() const;  // 0 for the rasterizer
+
+private:
+    Scene& scene_;
+    FrameRequest request_;
+    int width_, height_;
+    std::vector<DrawCall> draws_;
+    struct Caster;
+    std::unique_ptr<Caster> caster_;
+};
+
+// One frame, for callers that render a scene once.
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
-// The same into `fb`, reusing its memory from frame to frame.
 void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
 
 // The texture an object's program samples, loaded on first use. Throws SceneError naming the

@@ -60,6 +60,50 @@ Stats time_frames(int repeat, F&& frame) {
     return stats_of(ms);
 }
 
+// Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
+// differentials) next to llvmpipe, with the ray caster's one-off BVH build apart.
+std::string figure_frames(int threads, int repeat, const std::filesystem::path& shading) {
+    const std::filesystem::path file = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/figure-1.1.gltf";
+    qs::Scene scene = qs::load_scene(file);
+    std::ostringstream md;
+    md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms |\n|---|---|---|---|---|\n";
+    struct Mode {
+        const char* name;
+        qs::Backend backend;
+        qs::Derivatives rule;
+        const char* rule_name;
+    };
+    const Mode modes[] = {{"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Fine, "fine quads"},
+                          {"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Analytic, "Dual2, plane derivatives"},
+                          {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Fine, "fine ray quads"},
+                          {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Analytic, "Dual2, ray differentials"}};
+    for (const Mode& m : modes) {
+        qs::FrameRequest req;
+        req.backend = m.backend;
+        req.raster.derivatives = m.rule;
+        req.raster.threads = threads;
+        const auto s0 = Clock::now();
+        qs::SceneRenderer renderer(scene, req);
+        const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
+        qs::Framebuffer fb;
+        const Stats t = time_frames(repeat, [&] { renderer.render_into(fb, std::nullopt); });
+        char line[256];
+        std::snprintf(line, sizeof line, "| %s | %s | %.1f (%.1f-%.1f) | %.1f | %.1f |\n", m.name, m.rule_name, t.median,
+                      t.min, t.max, setup, 1e3 * renderer.bvh_build_seconds());
+        md << line;
+    }
+    auto context = qs::create_osmesa_context(scene.width, scene.height, qs::GlDriver::Llvmpipe, threads);
+    const auto s0 = Clock::now();
+    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, ""}, *context, shading);
+    gl.draw();
+    const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
+    const Stats l = time_frames(repeat, [&] { gl.draw(); });
+    char line[256];
+    std::snprintf(line, sizeof line, "| OSMesa llvmpipe | fine quads | %.1f (%.1f-%.1f) | %.0f (context, GLSL compile) | - |\n", l.median, l.min, l.max, setup);
+    md << line;
+    return md.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -101,7 +145,8 @@ int main(int argc, char** argv) {
                 req.shader_override = row.shader;
                 req.raster.threads = threads;
                 qs::Framebuffer fb;
-                const Stats q = time_frames(repeat, [&] { qs::render_frame_into(fb, scene, req); });
+                qs::SceneRenderer renderer(scene, req);
+                const Stats q = time_frames(repeat, [&] { renderer.render_into(fb, std::nullopt); });
                 const auto s0 = Clock::now();
                 qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, shading);
                 gl.draw();  // the first frame compiles llvmpipe's code
@@ -123,6 +168,10 @@ int main(int argc, char** argv) {
         std::ofstream(std::filesystem::path(out) / "throughput.md") << md.str();
         std::printf("%d threads, median of %d frames (min-max in brackets), float RGBA target\n\n%s", threads, repeat,
                     md.str().c_str());
+        const std::string figure = figure_frames(threads, repeat, shading);
+        std::ofstream(std::filesystem::path(out) / "figure-1.1-frame.md") << figure;
+        std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", threads, repeat,
+                    figure.c_str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-bench-throughput: %s\n", e.what());
         return 1;

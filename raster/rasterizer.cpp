@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include "block_layout.h"
 #include "clipper.h"
 #include "fixed_point.h"
 #include "triangle_setup.h"
@@ -35,25 +36,6 @@ struct PreparedDraw {
     unsigned flat;    // flat varyings
     bool fused;       // fused plane evaluation
 };
-
-// A 4x4 pixel block is exactly one batch of kBatchQuads quads. Lane offsets inside a block in
-// framebuffer coordinates (y down): quad-major, quads (0,0) (2,0) (0,2) (2,2), and inside each
-// quad the GL lane order of number/lanes.h (lower row first: lanes 0, 1 on the quad's row + 1).
-inline constexpr int kBlock = 4;
-static_assert(kBlock * kBlock == kBatchLanes);
-inline constexpr int kLaneDx[kBatchLanes] = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
-inline constexpr int kLaneDy[kBatchLanes] = {1, 1, 0, 0, 1, 1, 0, 0, 3, 3, 2, 2, 3, 3, 2, 2};
-inline constexpr std::uint32_t kAllLanes = (1u << kBatchLanes) - 1;
-// The same offsets as floats, for interpolation.
-constexpr std::array<float, kBatchLanes> as_floats(const int (&v)[kBatchLanes]) {
-    std::array<float, kBatchLanes> f{};
-    for (int i = 0; i < kBatchLanes; ++i) f[std::size_t(i)] = float(v[i]);
-    return f;
-}
-inline constexpr auto kLaneDxF = as_floats(kLaneDx);
-inline constexpr auto kLaneDyF = as_floats(kLaneDy);
-// The inverse: lane of the pixel at (dx, dy) inside its block.
-inline constexpr int kLaneAt[kBlock][kBlock] = {{2, 3, 6, 7}, {0, 1, 4, 5}, {10, 11, 14, 15}, {8, 9, 12, 13}};  // [dy][dx]
 
 // Fragments waiting to be shaded: kBatchLanes pixel positions (framebuffer coordinates) and which
 // lanes write (bit i for lane i).
@@ -151,8 +133,7 @@ private:
         if (draw_->quads) {
             // A quad runs when any of its lanes writes; its other lanes are helpers. Blocks whose
             // four quads all run are shaded as they are, the others' running quads are gathered.
-            std::uint32_t running = 0;
-            for (int q = 0; q < kBatchQuads; ++q) running |= ((mask >> (4 * q)) & 0xFu) ? 0xFu << (4 * q) : 0u;
+            const std::uint32_t running = running_quads(mask);
             quads_ += std::uint64_t(std::popcount(running) / 4);
             if (running == kAllLanes) {
                 shade_block(bx, by, mask);
@@ -258,8 +239,10 @@ private:
                     in_.varying_dy[v][i] = -(p.dady - value * t.inv_w.dady) * rcp_inv_w[i];
                 }
             }
-            in_.z_dx = t.z.dadx, in_.z_dy = -t.z.dady;
-            in_.inv_w_dx = t.inv_w.dadx, in_.inv_w_dy = -t.inv_w.dady;
+            std::fill_n(in_.frag_coord_dx[0], kBatchLanes, t.z.dadx);
+            std::fill_n(in_.frag_coord_dy[0], kBatchLanes, -t.z.dady);
+            std::fill_n(in_.frag_coord_dx[1], kBatchLanes, t.inv_w.dadx);
+            std::fill_n(in_.frag_coord_dy[1], kBatchLanes, -t.inv_w.dady);
         }
         d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
         lanes_ += std::uint64_t(b.count);

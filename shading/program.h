@@ -88,8 +88,10 @@ struct FragmentBatch {
     // d(varying)/dx and /dy in window space; filled only for Derivatives::Analytic.
     alignas(64) float varying_dx[kMaxVaryings][kBatchLanes];
     alignas(64) float varying_dy[kMaxVaryings][kBatchLanes];
-    // d(1/w)/dx, /dy for gl_FragCoord.w in Analytic mode
-    float inv_w_dx = 0.0f, inv_w_dy = 0.0f, z_dx = 0.0f, z_dy = 0.0f;
+    // d/dx and d/dy of gl_FragCoord.z and .w (1/w), per lane: planes for the rasterizer, ray
+    // differentials for the ray caster. Filled only for Derivatives::Analytic.
+    alignas(64) float frag_coord_dx[2][kBatchLanes];
+    alignas(64) float frag_coord_dy[2][kBatchLanes];
 };
 
 struct ColorBatch {

@@ -106,15 +106,12 @@ private:
         using program_detail::load;
         FragmentIn<F> f;
         if constexpr (is_dual2<F>::value) {
-            // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w are planes in window space.
-            alignas(64) float ones[kBatchLanes], zeros[kBatchLanes], z_dx[kBatchLanes], z_dy[kBatchLanes],
-                w_dx[kBatchLanes], w_dy[kBatchLanes];
-            for (int i = 0; i < kBatchLanes; ++i) {
-                ones[i] = 1.0f, zeros[i] = 0.0f;
-                z_dx[i] = in.z_dx, z_dy[i] = in.z_dy, w_dx[i] = in.inv_w_dx, w_dy[i] = in.inv_w_dy;
-            }
+            // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w come with their derivatives.
+            alignas(64) float ones[kBatchLanes], zeros[kBatchLanes];
+            for (int i = 0; i < kBatchLanes; ++i) ones[i] = 1.0f, zeros[i] = 0.0f;
             f.gl_FragCoord = {load<F>(in.frag_coord[0], ones, zeros), load<F>(in.frag_coord[1], zeros, ones),
-                              load<F>(in.frag_coord[2], z_dx, z_dy), load<F>(in.frag_coord[3], w_dx, w_dy)};
+                              load<F>(in.frag_coord[2], in.frag_coord_dx[0], in.frag_coord_dy[0]),
+                              load<F>(in.frag_coord[3], in.frag_coord_dx[1], in.frag_coord_dy[1])};
         } else {
             f.gl_FragCoord = {load<F>(in.frag_coord[0], nullptr, nullptr), load<F>(in.frag_coord[1], nullptr, nullptr),
                               load<F>(in.frag_coord[2], nullptr, nullptr), load<F>(in.frag_coord[3], nullptr, nullptr)};

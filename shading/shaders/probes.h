@@ -23,6 +23,18 @@ struct DerivativeProbe {
     }
 };
 
+struct StDerivativeProbe {
+    static constexpr ShaderInfo info{"st_derivative_probe", "probe: dFdx(st) in red, green; dFdy(st) in blue, alpha",
+                                     Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = false, .time = false, .depth = true, .varyings = 2},
+                                     {"shaders/plane_st.vert"}, {"shaders/st_derivative_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec2<F> st = in.vec2_at(0);
+        return vec4<F>(dFdx(st), dFdy(st));
+    }
+};
+
 struct SmoothstepProbe {
     static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
                                      Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0},

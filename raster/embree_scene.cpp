@@ -1,0 +1,121 @@
+#include "embree_scene.h"
+
+#include <cstring>
+#include <mutex>
+#include <string>
+
+#include <embree3/rtcore.h>
+
+namespace qs {
+
+namespace {
+
+const char* error_name(RTCError code) {
+    switch (code) {
+        case RTC_ERROR_NONE: return "no error";
+        case RTC_ERROR_UNKNOWN: return "unknown error";
+        case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+        case RTC_ERROR_CANCELLED: return "cancelled";
+    }
+    return "error";
+}
+
+}  // namespace
+
+// The device and its scene. Embree reports errors through a C callback, which must not throw:
+// it records the first message and the next check() throws it.
+struct EmbreeScene::Device {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    std::mutex mutex;
+    std::string error;
+
+    static void on_error(void* user, RTCError code, const char* message) {
+        auto* self = static_cast<Device*>(user);
+        const std::lock_guard lock(self->mutex);
+        if (self->error.empty()) self->error = std::string(error_name(code)) + ": " + (message ? message : "");
+    }
+
+    void check(const char* what) {
+        const std::lock_guard lock(mutex);
+        if (!error.empty()) throw RayCastError(std::string("Embree ") + what + ": " + error);
+    }
+
+    ~Device() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+EmbreeScene::EmbreeScene() : device_(std::make_unique<Device>()) {
+    device_->device = rtcNewDevice(nullptr);
+    if (!device_->device) {
+        throw RayCastError(std::string("Embree: cannot create a device: ") + error_name(rtcGetDeviceError(nullptr)));
+    }
+    rtcSetDeviceErrorFunction(device_->device, &Device::on_error, device_.get());
+    device_->scene = rtcNewScene(device_->device);
+    // Robust: no shortcuts that trade accuracy for speed, so that rays through shared edges and
+    // vertices never fall between two triangles.
+    rtcSetSceneFlags(device_->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(device_->scene, RTC_BUILD_QUALITY_HIGH);
+    device_->check("scene creation");
+}
+
+EmbreeScene::~EmbreeScene() = default;
+
+std::uint32_t EmbreeScene::add_mesh(std::span<const glm::vec3> positions,
+                                    std::span<const std::array<std::uint32_t, 3>> triangles) {
+    if (committed_) throw std::logic_error("EmbreeScene::add_mesh after commit");
+    RTCGeometry g = rtcNewGeometry(device_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree may read 16 bytes at the last vertex: one float3 of padding.
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), positions.size() + 1));
+    auto* t = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                  3 * sizeof(std::uint32_t), triangles.size()));
+    if (v && t) {
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            v[3 * i] = positions[i].x, v[3 * i + 1] = positions[i].y, v[3 * i + 2] = positions[i].z;
+        }
+        if (!triangles.empty()) std::memcpy(t, triangles.data(), triangles.size_bytes());
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(device_->scene, g, meshes_);
+    }
+    rtcReleaseGeometry(g);
+    device_->check("mesh");
+    return meshes_++;
+}
+
+void EmbreeScene::commit() {
+    rtcCommitScene(device_->scene);
+    device_->check("BVH build");
+    committed_ = true;
+}
+
+void EmbreeScene::intersect(const RayPacket& rays, RayHits& hits) const {
+    static_assert(kBatchLanes == 16, "one RTCRayHit16 per packet");
+    alignas(64) RTCRayHit16 r;
+    alignas(64) int valid[16];
+    for (int i = 0; i < 16; ++i) {
+        valid[i] = (rays.active >> i & 1) ? -1 : 0;
+        r.ray.org_x[i] = rays.origin[0][i], r.ray.org_y[i] = rays.origin[1][i], r.ray.org_z[i] = rays.origin[2][i];
+        r.ray.dir_x[i] = rays.direction[0][i], r.ray.dir_y[i] = rays.direction[1][i];
+        r.ray.dir_z[i] = rays.direction[2][i];
+        r.ray.tnear[i] = 0.0f, r.ray.tfar[i] = 1.0f, r.ray.time[i] = 0.0f;
+        r.ray.mask[i] = 0xFFFFFFFFu, r.ray.id[i] = unsigned(i), r.ray.flags[i] = 0;
+        r.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID, r.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+        r.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // neighbouring primary rays
+    rtcIntersect16(valid, device_->scene, &context, &r);
+    for (int i = 0; i < 16; ++i) {
+        hits.geometry[i] = r.hit.geomID[i];
+        hits.primitive[i] = r.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ? kNoHit : r.hit.primID[i];
+    }
+}
+
+}  // namespace qs

@@ -1,0 +1,392 @@
+#include "ray_caster.h"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec3.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "block_layout.h"
+#include "embree_scene.h"
+
+namespace qs {
+
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+// One draw's geometry in world space and this frame's vertex stage output.
+struct Mesh {
+    std::vector<glm::dvec3> world;    // per vertex
+    std::vector<Triangle> triangles;  // Embree's primitive i is triangles[i]: the finite ones
+    std::vector<VertexOut> out;       // per vertex, this frame
+};
+
+// Primary rays through pixel centres in GL window coordinates (y up), from the near plane
+// (origin, t = 0) to the far plane (t = 1), and their derivatives in window x and y.
+struct Eye {
+    glm::dmat4 clip_from_world, world_from_clip;
+    double ndc_per_x = 0.0, ndc_per_y = 0.0;  // 2/W, 2/H
+
+    struct Ray {
+        glm::dvec3 origin, direction;
+    };
+    // d(origin)/dx, d(direction)/dx and the same for y.
+    struct Differentials {
+        glm::dvec3 origin_dx, direction_dx, origin_dy, direction_dy;
+    };
+
+    // The world point of NDC (x, y, z), and its derivative along the NDC direction `d` (a point
+    // p = h.xyz / h.w with h linear: dp = (dh.xyz - p dh.w) / h.w).
+    glm::dvec3 unproject(double x, double y, double z, const glm::dvec4* d = nullptr, glm::dvec3* dp = nullptr) const {
+        const glm::dvec4 h = world_from_clip * glm::dvec4(x, y, z, 1.0);
+        const glm::dvec3 p = glm::dvec3(h) / h.w;
+        if (d) {
+            const glm::dvec4 dh = world_from_clip * *d;
+            *dp = (glm::dvec3(dh) - p * dh.w) / h.w;
+        }
+        return p;
+    }
+
+    Ray ray(double xw, double yw) const {
+        const double x = xw * ndc_per_x - 1.0, y = yw * ndc_per_y - 1.0;
+        const glm::dvec3 near = unproject(x, y, -1.0), far = unproject(x, y, 1.0);
+        return {near, far - near};
+    }
+
+    Differentials differentials(double xw, double yw) const {
+        const double x = xw * ndc_per_x - 1.0, y = yw * ndc_per_y - 1.0;
+        const glm::dvec4 dx(ndc_per_x, 0.0, 0.0, 0.0), dy(0.0, ndc_per_y, 0.0, 0.0);
+        Differentials d;
+        glm::dvec3 far_dx, far_dy;
+        unproject(x, y, -1.0, &dx, &d.origin_dx), unproject(x, y, 1.0, &dx, &far_dx);
+        unproject(x, y, -1.0, &dy, &d.origin_dy), unproject(x, y, 1.0, &dy, &far_dy);
+        d.direction_dx = far_dx - d.origin_dx, d.direction_dy = far_dy - d.origin_dy;
+        return d;
+    }
+};
+
+// How one draw's fragments are produced.
+struct PreparedDraw {
+    const DrawCall* call;
+    const Mesh* mesh;
+    ShadeMode mode;
+    bool quads;
+    int varyings;
+    unsigned flat;
+};
+
+// Fragments waiting to be shaded with one draw's program: pixel positions (framebuffer
+// coordinates), the primitive each lane is evaluated on, and which lanes write.
+struct Batch {
+    int x[kBatchLanes], y[kBatchLanes];
+    std::uint32_t primitive[kBatchLanes];
+    std::uint32_t write = 0;
+    int count = 0;
+};
+
+class TileCaster {
+public:
+    TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws)
+        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), pending_(draws.size()) {}
+
+    // Casts, shades and writes the 4x4 block whose top-left pixel is (bx, by) in framebuffer
+    // coordinates; pixels outside the framebuffer only ever serve as helpers.
+    void block(int bx, int by, glm::vec4 clear) {
+        RayPacket rays;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
+            if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) continue;
+            rays.active |= 1u << i;
+            const Eye::Ray r = eye_.ray(x + 0.5, fb_.height - (y + 0.5));
+            for (int c = 0; c < 3; ++c) {
+                rays.origin[c][i] = float(r.origin[c]), rays.direction[c][i] = float(r.direction[c]);
+            }
+        }
+        RayHits hits;
+        bvh_.intersect(rays, hits);
+        for (int i = 0; i < kBatchLanes; ++i) {
+            if (!(rays.active >> i & 1) || hits.geometry[i] != kNoHit) continue;
+            float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
+            p[0] = clear.r, p[1] = clear.g, p[2] = clear.b, p[3] = clear.a;
+        }
+        for (int q = 0; q < kBatchQuads; ++q) {
+            // Each primitive hit in the quad runs it once; done[] marks lanes already served.
+            bool done[4] = {};
+            for (int l = 0; l < 4; ++l) {
+                const int lane = 4 * q + l;
+                if (done[l] || hits.geometry[lane] == kNoHit) continue;
+                const std::uint32_t g = hits.geometry[lane], p = hits.primitive[lane];
+                std::uint32_t owned = 0;
+                for (int k = l; k < 4; ++k) {
+                    if (hits.geometry[4 * q + k] == g && hits.primitive[4 * q + k] == p) owned |= 1u << k, done[k] = true;
+                }
+                const PreparedDraw& d = draws_[g];
+                if (d.quads) {
+                    ++quads_;
+                    for (int k = 0; k < 4; ++k) append(g, bx + kLaneDx[4 * q + k], by + kLaneDy[4 * q + k], p, owned >> k & 1);
+                } else {
+                    for (int k = 0; k < 4; ++k) {
+                        if (owned >> k & 1) append(g, bx + kLaneDx[4 * q + k], by + kLaneDy[4 * q + k], p, true);
+                    }
+                }
+            }
+        }
+    }
+
+    void finish() {
+        for (std::size_t g = 0; g < pending_.size(); ++g) flush(g);
+    }
+
+    std::uint64_t quads() const { return quads_; }
+    std::uint64_t lanes() const { return lanes_; }
+    std::uint64_t written() const { return written_; }
+
+private:
+    // Quads are appended four lanes at a time and batches hold whole quads, so they stay aligned.
+    void append(std::uint32_t g, int x, int y, std::uint32_t primitive, bool write) {
+        Batch& b = pending_[g];
+        b.x[b.count] = x, b.y[b.count] = y, b.primitive[b.count] = primitive;
+        b.write |= std::uint32_t(write) << b.count;
+        if (++b.count == kBatchLanes) flush(g);
+    }
+
+    // Lane `lane` of in_: the pixel's ray meets triangle `primitive`'s plane at P; the attributes
+    // there are the vertices' weighted by P's barycentric coordinates, which is perspective-
+    // correct interpolation (a GPU's a/w over 1/w is the same point seen from the screen). For a
+    // helper lane P lies outside the triangle and the weights extrapolate.
+    void fragment(const PreparedDraw& d, int lane, int x, int y, std::uint32_t primitive, bool differentials) {
+        const Mesh& m = *d.mesh;
+        const Triangle& tri = m.triangles[primitive];
+        const glm::dvec3 p0 = m.world[tri[0]], e1 = m.world[tri[1]] - p0, e2 = m.world[tri[2]] - p0;
+        const glm::dvec3 n = glm::cross(e1, e2);
+        const double nn = glm::dot(n, n);
+        const double xw = x + 0.5, yw = fb_.height - (y + 0.5);
+        const Eye::Ray r = eye_.ray(xw, yw);
+        const double dn = glm::dot(r.direction, n);
+        const double t = glm::dot(p0 - r.origin, n) / dn;
+        const glm::dvec3 rel = r.origin + t * r.direction - p0;
+        // Barycentric weights of vertices 1 and 2: signed sub-triangle areas over the whole.
+        const double b1 = glm::dot(glm::cross(rel, e2), n) / nn, b2 = glm::dot(glm::cross(e1, rel), n) / nn;
+        const double b0 = 1.0 - b1 - b2;
+        const glm::dvec4 clip = eye_.clip_from_world * glm::dvec4(p0 + rel, 1.0);
+        in_.frag_coord[0][lane] = float(xw);
+        in_.frag_coord[1][lane] = float(yw);
+        in_.frag_coord[2][lane] = float(0.5 * clip.z / clip.w + 0.5);
+        in_.frag_coord[3][lane] = float(1.0 / clip.w);
+        const auto& a0 = m.out[tri[0]].varyings, &a1 = m.out[tri[1]].varyings, &a2 = m.out[tri[2]].varyings;
+        for (int v = 0; v < d.varyings; ++v) {
+            in_.varying[v][lane] = (d.flat >> v & 1) ? a2[std::size_t(v)]  // provoking: the last vertex
+                                                     : float(b0 * a0[std::size_t(v)] + b1 * a1[std::size_t(v)] +
+                                                             b2 * a2[std::size_t(v)]);
+        }
+        if (!differentials) return;
+        // Igehy's transfer: the hit moves along the surface as the ray moves with the pixel,
+        // dP = dO + t dD + dt D with dt = -((dO + t dD) . n) / (D . n); the weights' derivatives
+        // follow from dP as the weights from P, and everything else by the chain rule.
+        const Eye::Differentials rd = eye_.differentials(xw, yw);
+        auto carry = [&](const glm::dvec3& dorigin, const glm::dvec3& ddirection, int axis) {
+            const glm::dvec3 moved = dorigin + t * ddirection;
+            const glm::dvec3 dp = moved - (glm::dot(moved, n) / dn) * r.direction;
+            const double db1 = glm::dot(glm::cross(dp, e2), n) / nn, db2 = glm::dot(glm::cross(e1, dp), n) / nn;
+            const glm::dvec4 dclip = eye_.clip_from_world * glm::dvec4(dp, 0.0);
+            float(&vdx)[kMaxVaryings][kBatchLanes] = axis == 0 ? in_.varying_dx : in_.varying_dy;
+            float(&fdx)[2][kBatchLanes] = axis == 0 ? in_.frag_coord_dx : in_.frag_coord_dy;
+            fdx[0][lane] = float(0.5 * (dclip.z * clip.w - clip.z * dclip.w) / (clip.w * clip.w));
+            fdx[1][lane] = float(-dclip.w / (clip.w * clip.w));
+            for (int v = 0; v < d.varyings; ++v) {
+                const std::size_t s = std::size_t(v);
+                vdx[v][lane] = (d.flat >> v & 1) ? 0.0f : float(db1 * (a1[s] - a0[s]) + db2 * (a2[s] - a0[s]));
+            }
+        };
+        carry(rd.origin_dx, rd.direction_dx, 0);
+        carry(rd.origin_dy, rd.direction_dy, 1);
+    }
+
+    void flush(std::size_t g) {
+        Batch& b = pending_[g];
+        if (b.count == 0) return;
+        const PreparedDraw& d = draws_[g];
+        const bool differentials = d.mode.derivatives == Derivatives::Analytic;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            const int k = i < b.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
+            fragment(d, i, b.x[k], b.y[k], b.primitive[k], differentials);
+        }
+        d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
+        lanes_ += std::uint64_t(b.count);
+        for (int i = 0; i < b.count; ++i) {
+            if (!(b.write >> i & 1)) continue;
+            float* p = fb_.pixel(b.x[i], b.y[i]);
+            for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
+            ++written_;
+        }
+        b.count = 0, b.write = 0;
+    }
+
+    Framebuffer& fb_;
+    const EmbreeScene& bvh_;
+    const Eye& eye_;
+    const std::vector<PreparedDraw>& draws_;
+    std::vector<Batch> pending_;  // per draw
+    std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
+    FragmentBatch in_;
+    ColorBatch out_;
+};
+
+// Runs every draw's vertex stage into meshes[i].out (in parallel over vertices).
+void run_vertex_stages(std::span<const DrawCall> draws, std::vector<Mesh>& meshes) {
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        const DrawCall& call = draws[i];
+        if (!call.program) throw std::invalid_argument("draw call without a program");
+        Mesh& m = meshes[i];
+        m.out.resize(call.vertices.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.out.size(), 256), [&](const auto& r) {
+            for (std::size_t v = r.begin(); v != r.end(); ++v) call.program->vertex(call.vertices[v], call.uniforms, m.out[v]);
+        });
+    }
+}
+
+}  // namespace
+
+struct RayCaster::Impl {
+    Eye eye;
+    std::vector<Mesh> meshes;
+    std::unique_ptr<EmbreeScene> bvh;
+    double build_seconds = 0.0;
+    int builds = 0;
+
+    // World positions from this frame's gl_Position; true when they differ from the BVH's.
+    bool update_positions() {
+        bool moved = false;
+        for (Mesh& m : meshes) {
+            m.world.resize(m.out.size());
+            for (std::size_t v = 0; v < m.out.size(); ++v) {
+                const glm::dvec4 h = eye.world_from_clip * glm::dvec4(m.out[v].clip);
+                const glm::dvec3 p = glm::dvec3(h) / h.w;
+                moved |= std::memcmp(&p, &m.world[v], sizeof p) != 0;  // bitwise: NaN equals itself
+                m.world[v] = p;
+            }
+        }
+        return moved;
+    }
+
+    void build(std::span<const DrawCall> draws) {
+        const auto start = std::chrono::steady_clock::now();
+        auto scene = std::make_unique<EmbreeScene>();
+        std::vector<glm::vec3> positions;
+        for (std::size_t i = 0; i < meshes.size(); ++i) {
+            Mesh& m = meshes[i];
+            positions.assign(m.world.begin(), m.world.end());
+            // Triangles with a vertex that is not finite are left out, as the rasterizer drops them.
+            m.triangles.clear();
+            const auto& idx = draws[i].indices;
+            for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
+                const Triangle t{idx[k], idx[k + 1], idx[k + 2]};
+                if (std::max({t[0], t[1], t[2]}) >= positions.size()) {
+                    throw std::invalid_argument("triangle " + std::to_string(k / 3) + " indexes vertex " +
+                                                std::to_string(std::max({t[0], t[1], t[2]})) + " of " +
+                                                std::to_string(positions.size()));
+                }
+                auto finite = [&](std::uint32_t v) {
+                    return std::isfinite(positions[v].x) && std::isfinite(positions[v].y) && std::isfinite(positions[v].z);
+                };
+                if (finite(t[0]) && finite(t[1]) && finite(t[2])) m.triangles.push_back(t);
+            }
+            scene->add_mesh(positions, m.triangles);
+        }
+        scene->commit();
+        bvh = std::move(scene);
+        ++builds;
+        build_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+};
+
+RayCaster::RayCaster(std::span<const DrawCall> draws, const glm::mat4& clip_from_world) : impl_(std::make_unique<Impl>()) {
+    impl_->eye.clip_from_world = glm::dmat4(clip_from_world);
+    impl_->eye.world_from_clip = glm::inverse(impl_->eye.clip_from_world);
+    impl_->meshes.resize(draws.size());
+    run_vertex_stages(draws, impl_->meshes);
+    impl_->update_positions();
+    impl_->build(draws);
+}
+
+RayCaster::~RayCaster() = default;
+
+double RayCaster::build_seconds() const { return impl_->build_seconds; }
+int RayCaster::builds() const { return impl_->builds; }
+
+void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
+                            const RayCastOptions& options, RasterStats* stats_out) {
+    Impl& im = *impl_;
+    if (width <= 0 || height <= 0 || width > (1 << 15) || height > (1 << 15)) {
+        throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                                    " is outside 1.." + std::to_string(1 << 15));
+    }
+    if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        if (draws[i].vertices.size() != im.meshes[i].out.size()) {
+            throw std::invalid_argument("ray caster: draw " + std::to_string(i) + " has other vertices than its BVH");
+        }
+    }
+    std::unique_ptr<tbb::global_control> limit;
+    if (options.threads > 0) {
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      std::size_t(options.threads));
+    }
+    run_vertex_stages(draws, im.meshes);
+    if (im.update_positions()) im.build(draws);
+
+    RasterStats stats;
+    std::vector<PreparedDraw> prepared;
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        const Needs& needs = draws[i].program->info().needs;
+        PreparedDraw d{&draws[i], &im.meshes[i], {options.derivatives, options.precision}, true, needs.varyings,
+                       needs.flat_varyings};
+        if (!needs.derivatives || d.mode.derivatives == Derivatives::None) {
+            d.mode.derivatives = needs.derivatives ? Derivatives::Fine : Derivatives::None;
+            d.quads = needs.derivatives;
+        } else if (d.mode.derivatives == Derivatives::Analytic) {
+            d.quads = false;  // ray differentials: no neighbours needed
+        }
+        prepared.push_back(d);
+        stats.triangles_in += draws[i].indices.size() / 3;
+        stats.triangles_setup += im.meshes[i].triangles.size();
+    }
+    im.eye.ndc_per_x = 2.0 / width, im.eye.ndc_per_y = 2.0 / height;
+
+    fb.width = width, fb.height = height;
+    fb.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
+    fb.depth.clear();
+    const int row0 = quad_row_offset(height, options.pairing);
+    const int tiles_x = (width + kTileSize - 1) / kTileSize;
+    const int tiles_y = (height - row0 + kTileSize - 1) / kTileSize;
+    std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
+    tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const auto& r) {
+        for (int tile = r.begin(); tile != r.end(); ++tile) {
+            const int x0 = (tile % tiles_x) * kTileSize, y0 = row0 + (tile / tiles_x) * kTileSize;
+            TileCaster caster(fb, *im.bvh, im.eye, prepared);
+            for (int by = y0; by < std::min(y0 + kTileSize, height); by += kBlock) {
+                for (int bx = x0; bx < std::min(x0 + kTileSize, width); bx += kBlock) caster.block(bx, by, clear);
+            }
+            caster.finish();
+            quads += caster.quads(), lanes += caster.lanes(), written += caster.written();
+        }
+    });
+    stats.quads = quads, stats.lanes_shaded = lanes, stats.pixels_written = written;
+    if (stats_out) *stats_out = stats;
+}
+
+}  // namespace qs
