@@ -8,6 +8,7 @@ const ProgramList& catalogue() {
         register_figure_1_1(l);
         register_table_1_1(l);
         register_patterns(l);
+        register_aa_variants(l);
         register_probes(l);
         return l;
     }();

@@ -20,5 +20,6 @@ void register_figure_1_1(ProgramList& list);
 void register_table_1_1(ProgramList& list);
 void register_patterns(ProgramList& list);
 void register_probes(ProgramList& list);
+void register_aa_variants(ProgramList& list);
 
 }  // namespace qs

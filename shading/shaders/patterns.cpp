@@ -14,8 +14,8 @@ void register_patterns(ProgramList& list) {
     static const ProgramOf<Wave> wave;
     static const ProgramOf<WaveAA> wave_aa;
     static const ProgramOf<Bricks> bricks;
-    static const ProgramOf<BricksAA> bricks_aa;
-    static const ProgramOf<DotsAA> dots_aa;
+    static const ProgramOf<BricksAA<>> bricks_aa;
+    static const ProgramOf<DotsAA<>> dots_aa;
     static const ProgramOf<Facets> facets;
     static const ProgramOf<Blobs> blobs;
     static const ProgramOf<Rings> rings;

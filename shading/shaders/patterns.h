@@ -97,23 +97,27 @@ struct Bricks {
     }
 };
 
+template <AAWidth W = AAWidth::Length>
 struct BricksAA {
-    static constexpr ShaderInfo info = plane_pattern("bricks_aa", "Figure 1.2: bricks with aastep", true,
-                                                     {"shaders/aastep.glsl", "shaders/bricks_aa.frag"});
+    static constexpr ShaderInfo info = plane_pattern(aa_variant_name(W, "bricks_aa", "bricks_aa_fwidth", "bricks_aa_step"),
+                                                     "Figure 1.2: bricks with aastep", W != AAWidth::Step,
+                                                     {"shaders/aastep.glsl", "shaders/bricks_aa.frag"}, aa_variant_defines(W));
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(aastep(F(0.45f), brick_distance(in.vec2_at(0))));
+        return grey(aastep<W>(F(0.45f), brick_distance(in.vec2_at(0))));
     }
 };
 
+template <AAWidth W = AAWidth::Length>
 struct DotsAA {
-    static constexpr ShaderInfo info = plane_pattern("dots_aa", "Figure 1.2: dots with aastep", true,
-                                                     {"shaders/aastep.glsl", "shaders/dots_aa.frag"});
+    static constexpr ShaderInfo info = plane_pattern(aa_variant_name(W, "dots_aa", "dots_aa_fwidth", "dots_aa_step"),
+                                                     "Figure 1.2: dots with aastep", W != AAWidth::Step,
+                                                     {"shaders/aastep.glsl", "shaders/dots_aa.frag"}, aa_variant_defines(W));
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(aastep(F(0.31f), length(fract(5.0f * in.vec2_at(0)) - 0.5f)));
+        return grey(aastep<W>(F(0.31f), length(fract(5.0f * in.vec2_at(0)) - 0.5f)));
     }
 };
 

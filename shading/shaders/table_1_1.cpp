@@ -12,8 +12,8 @@ void register_table_1_1(ProgramList& list) {
     static const ProgramOf<shaders::Perlin> perlin;
     static const ProgramOf<shaders::Perlin5> perlin5;
     static const ProgramOf<shaders::Worley> worley;
-    static const ProgramOf<shaders::WorleyTiles> worley_tiles;
-    static const ProgramOf<shaders::Halftone> halftone;
+    static const ProgramOf<shaders::WorleyTiles<>> worley_tiles;
+    static const ProgramOf<shaders::Halftone<>> halftone;
     list.insert(list.end(), {&constant_color, &single_texture, &dots, &perlin, &perlin5, &worley,
                              &worley_tiles, &halftone});
 }

@@ -98,10 +98,13 @@ struct Worley {
     }
 };
 
+template <AAWidth W = AAWidth::Length>
 struct WorleyTiles {
-    static constexpr ShaderInfo info{"worley_tiles", "Table 1.1 / Figure 1.5: anti-aliased Worley tiles",
-                                     kPlaneDerivativeNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/worley_tiles.frag"}};
+    static constexpr ShaderInfo info{aa_variant_name(W, "worley_tiles", "worley_tiles_fwidth", "worley_tiles_step"),
+                                     "Table 1.1 / Figure 1.5: anti-aliased Worley tiles",
+                                     W == AAWidth::Step ? kPlaneNeeds : kPlaneDerivativeNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/worley_tiles.frag"},
+                                     aa_variant_defines(W)};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -110,15 +113,19 @@ struct WorleyTiles {
         vec2<F> Fs = noise::cellular_vectors(st * 8.0f, d1d2);  // GLSL: vec2 F
         F thresh = 0.05f * length(d1d2.xy() - d1d2.zw()) / (Fs.x + Fs.y);
         F f = Fs.y - Fs.x + (0.5f - noise::cellular(st * 64.0f).y) * thresh;
-        return vec4<F>(vec3<F>(aastep(thresh, f)), 1.0f);
+        return vec4<F>(vec3<F>(aastep<W>(thresh, f)), 1.0f);
     }
 };
 
+// The blend to plain RGB takes derivatives in every variant, the step one included.
+template <AAWidth W = AAWidth::Length>
 struct Halftone {
-    static constexpr ShaderInfo info{"halftone", "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
+    static constexpr ShaderInfo info{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
+                                     "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
                                      Needs{.derivatives = true, .texture = true, .time = false, .depth = false, .varyings = 4},
                                      {"shaders/halftone.vert"},
-                                     {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"}};
+                                     {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"},
+                                     aa_variant_defines(W)};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
         plane_st_vertex(in, u, out);
         const float dims[2] = {float(u.teximage->width), float(u.teximage->height)};
@@ -157,16 +164,16 @@ struct Halftone {
         // CMYK halftone screens, in angles 15/-15/0/45 degrees
         vec2<F> Cuv = 50.0f * mat2<F>(0.966f, -0.259f, 0.259f, 0.966f) * st;
         Cuv = fract(Cuv) - 0.5f;
-        F c = aastep(F(0.0f), sqrt(cmyk.x) - 2.0f * length(Cuv) + n);
+        F c = aastep<W>(F(0.0f), sqrt(cmyk.x) - 2.0f * length(Cuv) + n);
         vec2<F> Muv = 50.0f * mat2<F>(0.966f, 0.259f, -0.259f, 0.966f) * st;
         Muv = fract(Muv) - 0.5f;
-        F m = aastep(F(0.0f), sqrt(cmyk.y) - 2.0f * length(Muv) + n);
+        F m = aastep<W>(F(0.0f), sqrt(cmyk.y) - 2.0f * length(Muv) + n);
         vec2<F> Yuv = 50.0f * st;  // 0 deg
         Yuv = fract(Yuv) - 0.5f;
-        F y = aastep(F(0.0f), sqrt(cmyk.z) - 2.0f * length(Yuv) + n);
+        F y = aastep<W>(F(0.0f), sqrt(cmyk.z) - 2.0f * length(Yuv) + n);
         vec2<F> Kuv = 50.0f * mat2<F>(0.707f, -0.707f, 0.707f, 0.707f) * st;
         Kuv = fract(Kuv) - 0.5f;
-        F k = aastep(F(0.0f), sqrt(cmyk.w) - 2.0f * length(Kuv) + n);
+        F k = aastep<W>(F(0.0f), sqrt(cmyk.w) - 2.0f * length(Kuv) + n);
 
         vec3<F> rgbscreen = 1.0f - vec3<F>(c, m, y);
         rgbscreen = mix(rgbscreen, vec3<F>(0.0f), 0.7f * k + 0.5f * n);

@@ -48,6 +48,13 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "1/255, 95 over 2/255, of 250000)"}},
     {{"worley_tiles", "softpipe"},
      {8, 8, 0, "as for perlin5: an ulp of st moves a few pixels across a cell border (measured: 4)"}},
+    {{"worley_tiles_fwidth", "softpipe"}, {8, 8, 0, "as for worley_tiles (measured: 4)"}},
+    {{"worley_tiles_step", "softpipe"}, {6, 6, 0, "as for worley_tiles, and a step flips fully (measured: 2)"}},
+    {{"halftone_step", "llvmpipe"},
+     {3, 3, 0,
+      "the un-anti-aliased variant: a plain step turns the last-ulp difference of a value lying on its "
+      "threshold into a full flip, which aastep's ramp absorbs (measured: 1 pixel, 178/255)"}},
+    {{"halftone_step", "softpipe"}, {6, 6, 0, "as against llvmpipe (measured: 3 pixels)"}},
 };
 constexpr double kMaxFractionOver1 = 0.001;  // the bar itself, never loosened by a bound
 
