@@ -18,6 +18,7 @@
 #include "block_layout.h"
 #include "clipper.h"
 #include "fixed_point.h"
+#include "float_environment.h"
 #include "triangle_setup.h"
 
 namespace qs {
@@ -391,6 +392,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     fb.depth.resize(any_depth ? std::size_t(width) * std::size_t(height) : 0);
     std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const auto& r) {
+        const FlushDenormals ftz;
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             const int tx = int(b % std::size_t(tiles_x)), ty = int(b / std::size_t(tiles_x));
             const int x0 = tx * kTileSize, y0 = row0 + ty * kTileSize;

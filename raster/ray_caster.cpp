@@ -21,6 +21,7 @@
 
 #include "block_layout.h"
 #include "embree_scene.h"
+#include "float_environment.h"
 
 namespace qs {
 
@@ -375,6 +376,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     const int tiles_y = (height - row0 + kTileSize - 1) / kTileSize;
     std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const auto& r) {
+        const FlushDenormals ftz;
         for (int tile = r.begin(); tile != r.end(); ++tile) {
             const int x0 = (tile % tiles_x) * kTileSize, y0 = row0 + (tile / tiles_x) * kTileSize;
             TileCaster caster(fb, *im.bvh, im.eye, prepared);

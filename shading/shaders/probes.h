@@ -61,4 +61,26 @@ struct ArithmeticProbe {
     }
 };
 
+struct FloatEnvironmentProbe {
+    static constexpr ShaderInfo info{"float_env_probe", "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     {"shaders/plane_st.vert"}, {"shaders/float_env_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        F z = floor(in.gl_FragCoord.x / 4096.0f);
+        F column = floor(in.gl_FragCoord.x);
+        // GLSL's if/else chain, as selects from the last case back to the first.
+        F v = z * inversesqrt(z);
+        v = select(column < 7.0f, log(z), v);
+        v = select(column < 6.0f, sqrt(-1.0f + z), v);
+        v = select(column < 5.0f, ((1e-38f + z) * 1e-3f) * 1e30f, v);
+        v = select(column < 4.0f, mod(1.0f + z, z), v);
+        v = select(column < 3.0f, pow(-2.0f + z, F(1.5f)), v);
+        v = select(column < 2.0f, inversesqrt(z), v);
+        v = select(column < 1.0f, normalize(vec3<F>(z)).x, v);
+        return vec4<F>(v, 0.0f, 0.0f, 1.0f);
+    }
+};
+
 }  // namespace qs::shaders

@@ -233,3 +233,25 @@ TEST_CASE("smoothstep with equal edges matches llvmpipe's run-time result", "[re
 }
 
 }  // namespace qs
+
+namespace qs {
+
+TEST_CASE("float environment: GLSL's undefined cases and denormals as llvmpipe", "[reference][undefined][stability]") {
+    const Case probe{"float_env_probe", kPlane, "float_env_probe", 8, 1};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 8, 1);
+    const Image lp = reference(probe, "llvmpipe", 8, 1);
+    const char* names[8] = {"normalize(vec3(0)).x", "inversesqrt(0)", "pow(-2, 1.5)", "mod(1, 0)", "1e-41 * 1e30",
+                            "sqrt(-1)", "log(0)", "0 * inversesqrt(0)"};
+    for (int x = 0; x < 8; ++x) {
+        const float a = q.pixel(x, 0)[0], b = lp.rgba[std::size_t(x) * 4];
+        std::printf("float environment: %-22s quadshade %-12g llvmpipe %g\n", names[x], double(a), double(b));
+        INFO(names[x] << ": quadshade " << a << ", llvmpipe " << b);
+        // Same class of result (NaN's sign bit is not meaningful), and equal when not NaN.
+        CHECK(std::isnan(a) == std::isnan(b));
+        if (!std::isnan(a)) CHECK(a == b);
+    }
+    CHECK(q.pixel(4, 0)[0] == 0.0f);  // denormals flushed, as llvmpipe: a documented choice
+    CHECK(std::isinf(q.pixel(1, 0)[0]));
+}
+
+}  // namespace qs
