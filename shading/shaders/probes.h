@@ -5,6 +5,7 @@
 #include "glsl.h"
 #include "program.h"
 #include "program_of.h"
+#include "shaders/figure_1_1.h"
 #include "shaders/table_1_1.h"
 
 namespace qs::shaders {
@@ -32,6 +33,18 @@ struct StDerivativeProbe {
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
         vec2<F> st = in.vec2_at(0);
         return vec4<F>(dFdx(st), dFdy(st));
+    }
+};
+
+struct PositionDerivativeProbe {
+    static constexpr ShaderInfo info{"position_derivative_probe", "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
+                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true, .depth = true, .varyings = 3},
+                                     {"shaders/sphere_spots.vert"}, {"shaders/position_derivative_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+        vec3<F> P = in.vec3_at(0);
+        return vec4<F>(dFdx(P), length(dFdy(P)));
     }
 };
 
