@@ -56,6 +56,9 @@ const char* kRenderHelp =
     "  --quad-pairing P        top-down (OSMesa's buffer, default) | bottom-up (an FBO)\n"
     "  --fill-rule R           pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)\n"
     "  --interpolation I       fused (llvmpipe on FMA hosts; the default there) | separate (softpipe)\n"
+    "  --stable-time           reduce time by each shader's exact period in double before it\n"
+    "                          becomes the float uniform: long animations (t ~ 1e6 s) keep\n"
+    "                          their frame spacing (default: float time, as GL)\n"
     "  --alpha                 keep the alpha channel (the clear colour's alpha is 0)\n"
     "  --general-path          shade every shader in quads with a depth buffer (no specialisation)\n"
     "  --threads N             worker threads (default: all cores)\n";
@@ -81,6 +84,13 @@ int parse_int(const std::string& flag, const std::string& s, int lo, int hi) {
         throw UsageError(flag + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" + s + "'");
     }
     return int(v);
+}
+
+double parse_double(const std::string& flag, const std::string& s) {
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end || !std::isfinite(v)) throw UsageError(flag + ": expected a finite number, got '" + s + "'");
+    return v;
 }
 
 float parse_float(const std::string& flag, const std::string& s) {
@@ -135,7 +145,7 @@ int cmd_render(int argc, char** argv) {
             req.width = parse_int("--size", v.substr(0, x), 1, 32768);
             req.height = parse_int("--size", v.substr(x + 1), 1, 32768);
         } else if (a == "--time") {
-            req.time = parse_float(a, need_value(i, argc, argv));
+            req.time = parse_double(a, need_value(i, argc, argv));
         } else if (a == "--frames") {
             const std::string v = need_value(i, argc, argv);
             const auto c = v.find(':');
@@ -179,6 +189,8 @@ int cmd_render(int argc, char** argv) {
             if (v == "fused") req.raster.fused_interpolation = true;
             else if (v == "separate") req.raster.fused_interpolation = false;
             else throw UsageError("--interpolation: expected fused or separate, got '" + v + "'");
+        } else if (a == "--stable-time") {
+            req.stable_time = true;
         } else if (a == "--alpha") {
             alpha = true;
         } else if (a == "--general-path") {
@@ -211,14 +223,15 @@ int cmd_render(int argc, char** argv) {
     SceneRenderer renderer(scene, req);
     for (int f = first; f <= last; ++f) {
         FrameRequest fr = req;
-        if (frames) fr.time = float(f) / fps;
+        if (frames) fr.time = double(f) / double(fps);
         const auto t0 = std::chrono::steady_clock::now();
         renderer.render_into(fb, fr.time, &stats);
         render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const std::string path = frames ? frame_path(output, f) : output;
         write_image(path, to_image(fb),
                     {{"quadshade:scene", scene_path},
-                     {"quadshade:time", std::to_string(fr.time.value_or(scene.time))},
+                     {"quadshade:time", std::to_string(fr.time.value_or(double(scene.time)))},
+                     {"quadshade:stable_time", req.stable_time ? "on" : "off"},
                      {"quadshade:derivatives", rule_name(req.raster.derivatives)},
                      {"quadshade:backend", req.backend == Backend::RayCaster ? "raycast" : "raster"},
                      {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override}},

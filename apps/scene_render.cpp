@@ -1,5 +1,7 @@
 #include "scene_render.h"
 
+#include <cmath>
+
 #include "catalogue.h"
 #include "image_io.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
@@ -65,7 +67,7 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.indices = mesh.indices;
         d.program = &program;
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
-        d.uniforms.time = request.time.value_or(scene.time);
+        d.uniforms.time = float(request.time.value_or(double(scene.time)));
         if (program.info().needs.texture) d.uniforms.teximage = &texture_for(scene, o, program);
         draws_.push_back(d);
     }
@@ -88,9 +90,12 @@ double SceneRenderer::bvh_build_seconds() const {
     return 0.0;
 }
 
-void SceneRenderer::render_into(Framebuffer& fb, std::optional<float> time, RasterStats* stats) {
-    const float t = time.value_or(request_.time.value_or(scene_.time));
-    for (DrawCall& d : draws_) d.uniforms.time = t;
+void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats) {
+    const double t = time.value_or(request_.time.value_or(double(scene_.time)));
+    for (DrawCall& d : draws_) {
+        const double period = d.program->info().time_period;
+        d.uniforms.time = float(request_.stable_time && period > 0.0 ? t - period * std::floor(t / period) : t);
+    }
 #if defined(QUADSHADE_HAS_RAYCAST)
     if (caster_) {
         const RasterOptions& r = request_.raster;

@@ -17,7 +17,10 @@ enum class Backend { Rasterizer, RayCaster };
 
 struct FrameRequest {
     int width = 0, height = 0;           // 0: the scene's size
-    std::optional<float> time;           // default: the scene's time
+    std::optional<double> time;          // default: the scene's time
+    // Hand each shader time modulo its period (ShaderInfo::time_period), reduced in double: long
+    // animations keep their frame spacing. Off: time goes to the shader as float, as GL would.
+    bool stable_time = false;
     std::string shader_override;         // draw every object with this shader
     Backend backend = Backend::Rasterizer;
     // Derivative rule, precision, quad pairing and threads apply to both backends; fill rule,
@@ -36,7 +39,7 @@ public:
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-    void render_into(Framebuffer& fb, std::optional<float> time, RasterStats* stats = nullptr);
+    void render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats = nullptr);
     int width() const { return width_; }
     int height() const { return height_; }
     double bvh_build_seconds() const;  // 0 for the rasterizer

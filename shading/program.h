@@ -63,6 +63,10 @@ struct ShaderInfo {
     std::array<std::string_view, 3> glsl_vertex;
     std::array<std::string_view, 3> glsl_fragment;
     std::string_view glsl_defines = {};  // prepended to both stages after #version
+    // Seconds after which the output repeats exactly (the noise's hash period along the axis
+    // time moves): lets a renderer keep long animations' time in double and hand the shader
+    // time modulo the period. 0: time unused, or no exact period.
+    double time_period = 0.0;
 };
 
 struct Uniforms {

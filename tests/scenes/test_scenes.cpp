@@ -232,3 +232,49 @@ TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") 
 }
 
 }  // namespace qs
+
+namespace qs {
+
+TEST_CASE("long animations: float time freezes and jumps near 1e6 s; --stable-time keeps every frame", "[animation][stability]") {
+    Scene scene = load_scene(kFigure);
+    FrameRequest r;
+    r.width = 158, r.height = 50;  // an eighth of the figure: enough to see every object move
+    SceneRenderer plain(scene, r);
+    r.stable_time = true;
+    SceneRenderer stable(scene, r);
+    const double start = 1e6;
+    std::vector<std::vector<float>> plain_frames, stable_frames;
+    double worst_time_error = 0.0;
+    for (int f = 0; f < 30; ++f) {  // one second at 30 frames per second
+        const double t = start + f / 30.0;
+        worst_time_error = std::max(worst_time_error, std::abs(double(float(t)) - t));
+        Framebuffer fb;
+        plain.render_into(fb, t);
+        plain_frames.push_back(fb.rgba);
+        stable.render_into(fb, t);
+        stable_frames.push_back(fb.rgba);
+    }
+    auto distinct = [](const std::vector<std::vector<float>>& frames) {
+        std::size_t n = 1;
+        for (std::size_t i = 1; i < frames.size(); ++i) n += frames[i] != frames[i - 1];
+        return n;
+    };
+    std::printf("long animations at t = 1e6 s, 30 frames at 30 fps: float time gives %zu distinct frames (time off by "
+                "up to %.3f s), stable time %zu\n", distinct(plain_frames), worst_time_error, distinct(stable_frames));
+    CHECK(distinct(plain_frames) < 20);  // float spacing at 1e6 is 1/16 s: frames repeat
+    CHECK(distinct(stable_frames) == 30);
+
+    // With stable time each object sees its time modulo its period: the spots sphere alone at
+    // 1e6 s is the same image as at 1e6 mod 289 s.
+    std::erase_if(scene.objects, [](const Object& o) { return o.shader != "spots"; });
+    FrameRequest spots = r;
+    SceneRenderer wrapped(scene, spots);
+    spots.stable_time = false;
+    SceneRenderer small(scene, spots);
+    Framebuffer a, b;
+    wrapped.render_into(a, start + 0.5);
+    small.render_into(b, std::fmod(start + 0.5, 289.0));
+    CHECK(a.rgba == b.rgba);
+}
+
+}  // namespace qs
