@@ -88,6 +88,19 @@ def throughput_sections(root):
     return parts
 
 
+def stability_section(root):
+    """The lines the [stability] tests print (large coordinates, float environment, silhouettes,
+    stiff geometry, long animations), with their pass/fail summary."""
+    path = os.path.join(root, "stability.txt")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        lines = [l.rstrip() for l in f if l.strip() and not l.startswith(("Filters:", "~", "="))]
+    return ["<h2>Numerical stability</h2><p>Printed by the tests tagged [stability] in this run; each "
+            "also asserts the documented behaviour (see the README).</p><pre>",
+            html.escape("\n".join(lines)), "</pre>"]
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -143,6 +156,7 @@ def main():
                 out.append(f"<figure><img class='px' src='{src}' alt='{cap}'><figcaption>{cap}</figcaption></figure>")
             out.append("</div>")
     out.extend(throughput_sections(root))
+    out.extend(stability_section(root))
     # Tells a headless browser (and a reader) whether every image loaded.
     out.append("""<script>
 window.addEventListener('load', () => {
