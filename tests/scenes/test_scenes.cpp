@@ -12,6 +12,7 @@
 #include <limits>
 #include <sstream>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "catalogue.h"
@@ -276,6 +277,78 @@ TEST_CASE("long animations: float time freezes and jumps near 1e6 s; --stable-ti
     wrapped.render_into(a, start + 0.5);
     small.render_into(b, std::fmod(start + 0.5, 289.0));
     CHECK(a.rgba == b.rgba);
+}
+
+}  // namespace qs
+
+namespace qs {
+
+TEST_CASE("the ground plane at the horizon: derivatives of 1e4 texels per pixel, no NaN, halftone flat, aastep aliases",
+          "[stability][derivatives]") {
+    // The Table 1.1 plane made 2000 units wide, st scaled with it, seen from 0.5 above: towards
+    // the horizon one pixel spans thousands of pattern cells.
+    Scene s = load_scene(kPlane);
+    for (VertexIn& v : s.meshes[0].vertices) v.texcoord *= 1000.0f;
+    s.objects[0].world_from_object = glm::scale(glm::mat4(1.0f), glm::vec3(1000.0f, 1000.0f, 1.0f));
+    s.camera.kind = Camera::Kind::Perspective;
+    s.camera.yfov = glm::radians(40.0f);
+    s.camera.znear = 0.05f, s.camera.zfar = 5000.0f;
+    s.camera.view = glm::lookAt(glm::vec3(0.0f, -990.0f, 0.5f), glm::vec3(0.0f, 0.0f, 0.3f), glm::vec3(0.0f, 0.0f, 1.0f));
+    FrameRequest r;
+    r.width = 256, r.height = 128;
+    r.shader_override = "st_derivative_probe";
+    const Framebuffer d = render_frame(s, r);
+    double largest = 0.0;
+    int largest_row = 0;
+    for (int y = 0; y < d.height; ++y) {
+        for (int x = 0; x < d.width; ++x) {
+            const float* p = d.pixel(x, y);
+            const double w = std::max(std::abs(p[0]) + std::abs(p[2]), std::abs(p[1]) + std::abs(p[3]));  // fwidth
+            if (w > largest) largest = w, largest_row = y;
+        }
+    }
+    // The halftone's texture is 512 texels across st's unit: texels per pixel = 512 fwidth(st).
+    std::printf("horizon: largest fwidth(st) %.4g (%.4g halftone texels per pixel) at row %d of %d\n", largest,
+                512.0 * largest, largest_row, d.height);
+    CHECK(512.0 * largest > 1e3);
+
+    // The row of the largest derivative is the plane's far edge; the statistics below use the
+    // first row under it that the plane covers from side to side.
+    auto row_stats = [&](const Framebuffer& f) {
+        int row = largest_row;
+        auto full = [&](int y) {
+            for (int x = 0; x < f.width; ++x) {
+                if (f.pixel(x, y)[3] == 0.0f) return false;
+            }
+            return true;
+        };
+        while (row + 1 < f.height && !full(row)) ++row;
+        double sum = 0.0, sum2 = 0.0;
+        for (int x = 0; x < f.width; ++x) {
+            const double v = f.pixel(x, row)[0];
+            sum += v, sum2 += v * v;
+        }
+        const double mean = sum / f.width;
+        return std::pair(mean, std::sqrt(std::max(0.0, sum2 / f.width - mean * mean)));
+    };
+    for (const char* shader : {"dots_aa", "halftone", "worley_tiles"}) {
+        r.shader_override = shader;
+        const Framebuffer f = render_frame(s, r);
+        std::size_t nan = 0;
+        for (float v : f.rgba) nan += !std::isfinite(v);
+        const auto [mean, spread] = row_stats(f);
+        std::printf("horizon: %-12s no NaN: %s; red on the horizon row: mean %.3f, spread %.3f\n", shader,
+                    nan == 0 ? "yes" : "NO", mean, spread);
+        INFO(shader);
+        CHECK(nan == 0);
+        // The halftone blends to the texture's colour once fwidth(st) passes 1.4/200: flat.
+        if (std::string(shader) == "halftone") CHECK(spread < 0.05);
+        // aastep does not fade to grey here: its width is the derivative of the *pattern value*,
+        // length(fract(5 st) - 0.5), whose neighbour differences stay below its range (0.7) however
+        // many cells a pixel spans, so the ramp never covers the value range and the row stays
+        // noise. Measured: spread 0.35. A documented limit of aastep, not of quadshade.
+        if (std::string(shader) == "dots_aa") CHECK(spread > 0.2);
+    }
 }
 
 }  // namespace qs

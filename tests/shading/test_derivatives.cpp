@@ -2,10 +2,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "noise/flow_noise.h"
 #include "noise/simplex2d.h"
 #include "number_types.h"
+#include "shaders/aastep.h"
 
 // Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
 namespace qs::glsl {
@@ -129,6 +131,26 @@ TEST_CASE("dFdx of a Dual2 is its carried partial, and second derivatives are no
     CHECK(dFdy(v).val == 0.0f);
     CHECK(fwidth(v).val == 6.0f);
     CHECK(dFdx(dFdx(v)).val == 0.0f);
+}
+
+TEST_CASE("aastep never makes NaN from a finite value: zero, huge and infinite derivatives", "[derivatives][stability]") {
+    // Quad 0 constant (zero derivatives: equal smoothstep edges), quad 1 with differences of
+    // 1e38 (finite), quad 2 with 3e38 - (-3e38) = inf, quad 3 with a NaN neighbour as a helper
+    // lane might carry at infinity.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float values[16] = {0.5f, 0.5f, 0.5f, 0.5f,  0.0f, 1e38f, 0.0f, 1e38f,
+                              -3e38f, 3e38f, 0.2f, 0.4f,  0.3f, nan, 0.3f, 0.35f};
+    const auto v = Quads<float, 4, DerivativeRule::Fine>::load(values);
+    const auto a = shaders::aastep(Quads<float, 4, DerivativeRule::Fine>(0.31f), v);
+    for (int i = 0; i < 16; ++i) {
+        INFO("lane " << i << " value " << values[i] << " -> " << a[i]);
+        if (std::isnan(values[i])) continue;  // NaN in, NaN out: GLSL defines nothing better
+        CHECK_FALSE(std::isnan(a[i]));
+        CHECK(a[i] >= 0.0f);
+        CHECK(a[i] <= 1.0f);
+    }
+    // Equal edges (constant value over the quad): llvmpipe's value > threshold.
+    CHECK(a[0] == 1.0f);
 }
 
 }  // namespace qs::glsl
