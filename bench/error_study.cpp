@@ -74,7 +74,9 @@ std::vector<View> plane_views() {
 
 struct Family {
     std::string shader;       // the book's anti-aliased shader
-    std::string fwidth, step;  // its variants; empty when it has none (spots)
+    std::string alternative;  // its other anti-aliasing width: fwidth for aastep, length for spots
+    std::string alternative_mode;
+    std::string step;         // its un-anti-aliased variant
     fs::path scene;
     std::vector<View> views;
 };
@@ -98,11 +100,10 @@ std::vector<Mode> modes_of(const Family& f) {
         {"ray-differentials", "derivatives", f.shader, Backend::RayCaster, Derivatives::Analytic},
         {"double", "precision", f.shader, Backend::Rasterizer, Derivatives::Fine, Precision::Double},
     };
-    if (!f.fwidth.empty()) m.push_back({"aastep-fwidth", "anti-aliasing", f.fwidth});
-    // No anti-aliasing, then supersampling the un-anti-aliased pattern (spots: its own AA, which
-    // narrows with the sample spacing).
-    const std::string plain = f.step.empty() ? f.shader : f.step;
-    if (!f.step.empty()) m.push_back({"step", "anti-aliasing", plain});
+    m.push_back({f.alternative_mode, "anti-aliasing", f.alternative});
+    // No anti-aliasing, then supersampling the un-anti-aliased pattern.
+    const std::string plain = f.step;
+    m.push_back({"step", "anti-aliasing", plain});
     for (int k : {2, 4, 8}) {
         Mode s{"ss" + std::to_string(k) + "x" + std::to_string(k), "anti-aliasing", plain};
         s.supersample = k;
@@ -251,7 +252,7 @@ private:
 
     // The un-anti-aliased pattern, K x K samples per pixel in double precision, box-filtered.
     Image ground_truth(Scene& scene, const Family& f) {
-        Mode m{"truth", "", f.step.empty() ? f.shader : f.step};
+        Mode m{"truth", "", f.step};
         m.precision = Precision::Double;
         SceneRenderer renderer(scene, request(scene, m, o_.truth));
         Framebuffer fb;
@@ -300,11 +301,12 @@ int main(int argc, char** argv) {
                               std::erase_if(s.objects, [](const Object& o) { return o.shader != "spots"; });
                           }};
     std::vector<Family> families = {
-        {"dots_aa", "dots_aa_fwidth", "dots_aa_step", plane, plane_views()},
-        {"bricks_aa", "bricks_aa_fwidth", "bricks_aa_step", plane, plane_views()},
-        {"worley_tiles", "worley_tiles_fwidth", "worley_tiles_step", plane, plane_views()},
-        {"halftone", "halftone_fwidth", "halftone_step", plane, plane_views()},
-        {"spots", "", "", figure, {spots_view}},
+        {"dots_aa", "dots_aa_fwidth", "aastep-fwidth", "dots_aa_step", plane, plane_views()},
+        {"bricks_aa", "bricks_aa_fwidth", "aastep-fwidth", "bricks_aa_step", plane, plane_views()},
+        {"worley_tiles", "worley_tiles_fwidth", "aastep-fwidth", "worley_tiles_step", plane, plane_views()},
+        {"halftone", "halftone_fwidth", "aastep-fwidth", "halftone_step", plane, plane_views()},
+        // The book's spots blend over fwidth; the alternative is the gradient's true length.
+        {"spots", "spots_length", "width-length", "spots_step", figure, {spots_view}},
     };
     if (o.quick) {  // one family, one view: a smoke run
         families.resize(1);

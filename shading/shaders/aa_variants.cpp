@@ -2,6 +2,7 @@
 // gradient's length, and no anti-aliasing (a plain step; the pattern supersampling filters).
 // Instantiated apart from the originals so that the two build in parallel.
 #include "catalogue.h"
+#include "shaders/figure_1_1.h"
 #include "shaders/patterns.h"
 #include "shaders/table_1_1.h"
 
@@ -17,8 +18,10 @@ void register_aa_variants(ProgramList& list) {
     static const ProgramOf<WorleyTiles<AAWidth::Step>> worley_tiles_step;
     static const ProgramOf<Halftone<AAWidth::Fwidth>> halftone_fwidth;
     static const ProgramOf<Halftone<AAWidth::Step>> halftone_step;
+    static const ProgramOf<Spots<AAWidth::Length>> spots_length;
+    static const ProgramOf<Spots<AAWidth::Step>> spots_step;
     list.insert(list.end(), {&dots_aa_fwidth, &dots_aa_step, &bricks_aa_fwidth, &bricks_aa_step, &worley_tiles_fwidth,
-                             &worley_tiles_step, &halftone_fwidth, &halftone_step});
+                             &worley_tiles_step, &halftone_fwidth, &halftone_step, &spots_length, &spots_step});
 }
 
 }  // namespace qs

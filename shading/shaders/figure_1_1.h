@@ -9,6 +9,7 @@
 #include "noise/simplex3d.h"
 #include "program.h"
 #include "program_of.h"
+#include "shaders/aastep.h"
 #include "vertex.h"
 
 namespace qs::shaders {
@@ -86,20 +87,31 @@ struct Turbulence {
     }
 };
 
+// The book's form blends over fwidth; the error study adds the gradient's length (AAWidth::Length)
+// and no anti-aliasing (AAWidth::Step), selected in GLSL by SPOTS_LENGTH / SPOTS_STEP.
+template <AAWidth W = AAWidth::Fwidth>
 struct Spots {
     static constexpr ShaderInfo info{
-        "spots", "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true, .depth = true, .varyings = 3},
-        {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"}, {},
+        W == AAWidth::Fwidth ? "spots" : W == AAWidth::Length ? "spots_length" : "spots_step",
+        "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true, .depth = true, .varyings = 3},
+        {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"},
+        W == AAWidth::Fwidth ? "" : W == AAWidth::Length ? "#define SPOTS_LENGTH\n" : "#define SPOTS_STEP\n",
         289.0};  // P.z moves with time; cellular hashes floor(P) mod 289
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
         vec2<F> Fs = noise::cellular2x2x2(in.vec3_at(0));  // GLSL: vec2 F
-        F s = fwidth(Fs.x);
-        F n1 = smoothstep(0.4f - s, 0.4f + s, Fs.x);
-        F n2 = smoothstep(0.5f - s, 0.5f + s, Fs.x);
-        return vec4<F>(n1, n2, n2, 1.0f);
+        if constexpr (W == AAWidth::Step) {
+            F n1 = step(0.4f, Fs.x);
+            F n2 = step(0.5f, Fs.x);
+            return vec4<F>(n1, n2, n2, 1.0f);
+        } else {
+            F s = W == AAWidth::Length ? length(vec2<F>(dFdx(Fs.x), dFdy(Fs.x))) : fwidth(Fs.x);
+            F n1 = smoothstep(0.4f - s, 0.4f + s, Fs.x);
+            F n2 = smoothstep(0.5f - s, 0.5f + s, Fs.x);
+            return vec4<F>(n1, n2, n2, 1.0f);
+        }
     }
 };
 

@@ -379,3 +379,19 @@ TEST_CASE("stiff geometry: slivers, sub-pixel triangles, the near plane, the gua
 }
 
 }  // namespace qs
+
+namespace qs {
+
+TEST_CASE("the spots' anti-aliasing variants match llvmpipe on Figure 1.1", "[reference][derivatives]") {
+    for (const char* shader : {"spots_length", "spots_step"}) {
+        const Case c{shader, kFigure, shader, 1264, 400};
+        const Counts n = count(ours(c, Derivatives::Fine, 1264, 400), reference(c, "llvmpipe", 1264, 400));
+        INFO(shader << ": " << n.coverage_mismatch << " coverage mismatches, " << n.over_1 << " pixels over 1/255");
+        std::printf("%s vs llvmpipe: %zu coverage mismatches, %zu pixels over 1/255 (max %d/255)\n", shader,
+                    n.coverage_mismatch, n.over_1, n.max_steps);
+        CHECK(n.coverage_mismatch == 0);
+        CHECK(double(n.over_1) <= kMaxFractionOver1 * double(n.pixels));
+    }
+}
+
+}  // namespace qs
