@@ -233,12 +233,13 @@ private:
         Framebuffer fb;
         Image image;
         std::vector<double> ms;
-        for (int i = 0; i < o_.repeat + 1; ++i) {
+        constexpr int kWarmUp = 3;  // untimed: thread pool, caches, first-touch of the framebuffer
+        for (int i = 0; i < o_.repeat + kWarmUp; ++i) {
             const auto t0 = Clock::now();
             renderer.render_into(fb, std::nullopt);
             image = m.supersample > 1 ? downsample(fb.rgba, fb.width, fb.height, m.supersample)
                                       : Image{fb.width, fb.height, fb.rgba};
-            if (i > 0) ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());  // first: warm-up
+            if (i >= kWarmUp) ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
         }
         return {image, median(ms)};
     }
