@@ -25,7 +25,6 @@ namespace qs {
 
 namespace {
 
-inline constexpr int kMaxDimension = 1 << 15;  // larger images exceed the guard band's intent
 
 // A draw's vertex stage output and the mode its fragments are shaded in.
 struct PreparedDraw {
@@ -289,6 +288,13 @@ private:
 
 }  // namespace
 
+void check_image_size(int width, int height) {
+    if (width <= 0 || height <= 0 || width > kMaxDimension || height > kMaxDimension) {
+        throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                                    " is outside 1.." + std::to_string(kMaxDimension));
+    }
+}
+
 int quad_row_offset(int height, QuadPairing pairing) {
     // Top-down pairing: framebuffer rows (2k, 2k+1), offset 0. Bottom-up: GL rows (2k, 2k+1) are
     // framebuffer rows (H-2-2k, H-1-2k), so at an odd height the grid starts at row -1.
@@ -304,10 +310,7 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
 
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                     const RasterOptions& options, RasterStats* stats_out) {
-    if (width <= 0 || height <= 0 || width > kMaxDimension || height > kMaxDimension) {
-        throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                                    " is outside 1.." + std::to_string(kMaxDimension));
-    }
+    check_image_size(width, height);
     std::vector<PreparedDraw> prepared;
     bool any_depth = options.force_general_path;
     for (const DrawCall& call : draws) {

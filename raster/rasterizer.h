@@ -58,4 +58,9 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
 inline constexpr int kTileSize = 64;
 int quad_row_offset(int height, QuadPairing pairing);
 
+// Framebuffer sizes both renderers accept: 1..kMaxDimension on each side (larger images exceed
+// the guard band's intent). Throws std::invalid_argument naming the size otherwise.
+inline constexpr int kMaxDimension = 1 << 15;
+void check_image_size(int width, int height);
+
 }  // namespace qs

@@ -332,10 +332,7 @@ int RayCaster::builds() const { return impl_->builds; }
 void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                             const RayCastOptions& options, RasterStats* stats_out) {
     Impl& im = *impl_;
-    if (width <= 0 || height <= 0 || width > (1 << 15) || height > (1 << 15)) {
-        throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                                    " is outside 1.." + std::to_string(1 << 15));
-    }
+    check_image_size(width, height);
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
     for (std::size_t i = 0; i < draws.size(); ++i) {
         if (draws[i].vertices.size() != im.meshes[i].out.size()) {
