@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <bitset>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -47,40 +48,32 @@ struct Batch {
     int block = -1;  // tile index of lane 0 when the batch is one whole block in lane order
 };
 
-// Renders the triangles of one tile into tile-local colour and depth (64x64, resident in cache),
-// then stores the tile into the framebuffer once. Tile pixels are stored block by block in batch
-// lane order, so a whole block's results go out as one vector store per channel.
+// Renders the triangles of one tile, in submission order, straight into the tile's part of the
+// framebuffer (no thread else writes there, so the result is the same for any thread count).
+// A whole block's colour is transposed in registers from lane order into its four pixel rows.
+// Blocks are cleared lazily: a block's first partial write clears it first, blocks never
+// written are cleared by finish(), and a block covered at once is never cleared at all.
+// Depth, when a draw needs it, stays tile-local in lane order and is stored once at the end.
 class TileRenderer {
 public:
     TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, int x0, int y0, glm::vec4 clear)
-        : fb_(fb), draws_(draws), x0_(x0), y0_(y0) {
-        for (int c = 0; c < 4; ++c) std::fill_n(color_[c], kTilePixels, clear[c]);
-        std::fill_n(depth_, kTilePixels, 1.0f);
+        : fb_(fb), draws_(draws), x0_(x0), y0_(y0), clear_(clear) {
+        if (!fb_.depth.empty()) std::fill_n(depth_, kTilePixels, 1.0f);
     }
 
-    // Copies the tile's pixels that lie inside the framebuffer into it: each block row of four
-    // pixels is one 64-byte run of RGBA floats.
-    void store() const {
-        for (int by = 0; by < kTileSize; by += kBlock) {
-            for (int bx = 0; bx < kTileSize; bx += kBlock) {
-                const int base = ((by / kBlock) * (kTileSize / kBlock) + bx / kBlock) * kBatchLanes;
-                const int x = x0_ + bx;
-                const int n = std::min(kBlock, fb_.width - x);
-                for (int r = 0; r < kBlock; ++r) {
-                    const int y = y0_ + by + r;
-                    if (y < 0 || y >= fb_.height) continue;
-                    alignas(64) float row[kBlock * 4];
-                    for (int dx = 0; dx < kBlock; ++dx) {
-                        const int lane = base + kLaneAt[r][dx];
-                        for (int c = 0; c < 4; ++c) row[dx * 4 + c] = color_[c][lane];
-                    }
-                    if (n == kBlock) std::memcpy(fb_.pixel(x, y), row, sizeof row);  // one vector store
-                    else std::copy_n(row, n * 4, fb_.pixel(x, y));
-                    if (!fb_.depth.empty()) {
-                        float* depth = &fb_.depth[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
-                        for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[base + kLaneAt[r][dx]];
-                    }
-                }
+    // Clears the blocks no triangle wrote and stores the depth.
+    void finish() {
+        for (int block = 0; block < kTileBlocks; ++block) {
+            if (!touched_[std::size_t(block)]) clear_block(block);
+        }
+        if (fb_.depth.empty()) return;
+        for (int block = 0; block < kTileBlocks; ++block) {
+            const int x = block_x(block), y = block_y(block);
+            const int n = std::min(kBlock, fb_.width - x);
+            for (int r = 0; r < kBlock; ++r) {
+                if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
+                float* depth = &fb_.depth[std::size_t(y + r) * std::size_t(fb_.width) + std::size_t(x)];
+                for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[block * kBatchLanes + kLaneAt[r][dx]];
             }
         }
     }
@@ -185,13 +178,17 @@ private:
     }
 
     // A plane at the batch's pixel centres, one form or the other for the whole batch (see
-    // plane_equation.h); `out` never aliases the positions, so the loops vectorize.
+    // plane_equation.h), times `scale` per lane when given (perspective division). `out` never
+    // aliases the inputs, so the loops vectorize.
     static void evaluate(const PlaneEquation& p, const float* __restrict fx, const float* __restrict fy,
-                         float* __restrict out, bool fused) {
+                         const float* __restrict scale, float* __restrict out, bool fused) {
         if (fused) {
             for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at_fused(fx[i], fy[i]);
         } else {
             for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at(fx[i], fy[i]);
+        }
+        if (scale) {
+            for (int i = 0; i < kBatchLanes; ++i) out[i] *= scale[i];
         }
     }
 
@@ -210,13 +207,21 @@ private:
         } else {
             for (int i = 0; i < kBatchLanes; ++i) fx[i] = float(b.x[i]), fy[i] = float(b.y[i]);
         }
-        auto eval = [&](const PlaneEquation& p, float* out) { evaluate(p, fx, fy, out, d.fused); };
+        auto eval = [&](const PlaneEquation& p, float* out) { evaluate(p, fx, fy, nullptr, out, d.fused); };
         eval(t.inv_w, in_.frag_coord[3]);
         eval(t.z, in_.frag_coord[2]);
         for (int i = 0; i < kBatchLanes; ++i) {
-            rcp_inv_w[i] = 1.0f / in_.frag_coord[3][i];
             in_.frag_coord[0][i] = fx[i] + 0.5f;
             in_.frag_coord[1][i] = height - (fy[i] + 0.5f);  // GL window y points up
+        }
+        // Perspective division, per lane; an affine triangle (equal w at its vertices, 1/w a
+        // constant plane) shares one reciprocal, the same number each lane would compute.
+        if (d.varyings > 0) {
+            if (t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f) {
+                std::fill_n(rcp_inv_w, kBatchLanes, 1.0f / t.inv_w.a0);
+            } else {
+                for (int i = 0; i < kBatchLanes; ++i) rcp_inv_w[i] = 1.0f / in_.frag_coord[3][i];
+            }
         }
         for (int v = 0; v < d.varyings; ++v) {
             const PlaneEquation& p = t.varyings[v];
@@ -224,8 +229,7 @@ private:
                 std::fill_n(in_.varying[v], kBatchLanes, p.a0);
                 continue;
             }
-            eval(p, in_.varying[v]);
-            for (int i = 0; i < kBatchLanes; ++i) in_.varying[v][i] *= rcp_inv_w[i];
+            evaluate(p, fx, fy, rcp_inv_w, in_.varying[v], d.fused);
         }
         if (d.mode.derivatives == Derivatives::Analytic) {
             // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W.
@@ -246,8 +250,11 @@ private:
         }
         d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
         lanes_ += std::uint64_t(b.count);
-        if (b.block >= 0 && b.write == kAllLanes) {
-            for (int c = 0; c < 4; ++c) std::copy_n(out_.rgba[c], kBatchLanes, &color_[c][b.block]);
+        if (b.block >= 0 && b.write == kAllLanes) {  // a whole block inside the image
+            const int block = b.block / kBatchLanes, x = block_x(block), y = block_y(block);
+            block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
+                          {fb_.pixel(x, y), fb_.pixel(x, y + 1), fb_.pixel(x, y + 2), fb_.pixel(x, y + 3)});
+            touched_[std::size_t(block)] = true;
             if (d.depth_test) std::copy_n(in_.frag_coord[2], kBatchLanes, &depth_[b.block]);
             written_ += kBatchLanes;
             return;
@@ -255,10 +262,29 @@ private:
         for (int i = 0; i < b.count; ++i) {
             if (!(b.write >> i & 1)) continue;
             const int t = tile_index(b.x[i], b.y[i]);
-            color_[0][t] = out_.rgba[0][i], color_[1][t] = out_.rgba[1][i];
-            color_[2][t] = out_.rgba[2][i], color_[3][t] = out_.rgba[3][i];
+            if (!touched_[std::size_t(t / kBatchLanes)]) {
+                clear_block(t / kBatchLanes);
+                touched_[std::size_t(t / kBatchLanes)] = true;
+            }
+            float* p = fb_.pixel(b.x[i], b.y[i]);
+            p[0] = out_.rgba[0][i], p[1] = out_.rgba[1][i], p[2] = out_.rgba[2][i], p[3] = out_.rgba[3][i];
             if (d.depth_test) depth_[t] = in_.frag_coord[2][i];
             ++written_;
+        }
+    }
+
+    // Framebuffer position of a tile block's top-left pixel.
+    int block_x(int block) const { return x0_ + (block % (kTileSize / kBlock)) * kBlock; }
+    int block_y(int block) const { return y0_ + (block / (kTileSize / kBlock)) * kBlock; }
+
+    // Writes the clear colour into the block's pixels that lie inside the framebuffer.
+    void clear_block(int block) {
+        const int x = block_x(block), y = block_y(block);
+        const int n = std::min(kBlock, fb_.width - x);
+        for (int r = 0; r < kBlock; ++r) {
+            if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
+            float* p = fb_.pixel(x, y + r);
+            for (int dx = 0; dx < n; ++dx) std::memcpy(p + 4 * dx, &clear_[0], 4 * sizeof(float));
         }
     }
 
@@ -273,10 +299,12 @@ private:
     }
 
     static constexpr int kTilePixels = kTileSize * kTileSize;
+    static constexpr int kTileBlocks = kTilePixels / kBatchLanes;
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
     int x0_, y0_;
-    alignas(64) float color_[4][kTilePixels];
+    glm::vec4 clear_;
+    std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     const TriangleSetup* tri_ = nullptr;
@@ -401,7 +429,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
             const int x0 = tx * kTileSize, y0 = row0 + ty * kTileSize;
             auto tile = std::make_unique<TileRenderer>(fb, prepared, x0, y0, clear);
             for (std::uint32_t i : bins[b]) tile->render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
-            tile->store();
+            tile->finish();
             quads += tile->quads(), lanes += tile->lanes(), written += tile->written();
         }
     });
