@@ -18,6 +18,7 @@
 #include "gltf.h"
 #include "image_io.h"
 #include "scene_render.h"
+#include "undefined_mask.h"
 
 namespace {
 
@@ -61,6 +62,11 @@ const char* kRenderHelp =
     "                          their frame spacing (default: float time, as GL)\n"
     "  --alpha                 keep the alpha channel (the clear colour's alpha is 0)\n"
     "  --general-path          shade every shader in quads with a depth buffer (no specialisation)\n"
+    "  --undefined-mask FILE   also write where the colour depends on a GLSL case with an undefined\n"
+    "                          result: red NaN produced, green division by zero, blue a built-in\n"
+    "                          outside its domain (smoothstep e0 >= e1, clamp lo > hi, sqrt, log,\n"
+    "                          pow, inversesqrt, atan); shades slower, same colours; float quads or\n"
+    "                          pixels only (not with analytic derivatives or double precision)\n"
     "  --threads N             worker threads (default: all cores)\n";
 
 const char* kCompareHelp =
@@ -131,6 +137,7 @@ int cmd_render(int argc, char** argv) {
     std::optional<std::pair<int, int>> frames;
     float fps = 30.0f;
     bool alpha = false;
+    std::string mask_output;
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--help" || a == "-h") {
@@ -195,6 +202,9 @@ int cmd_render(int argc, char** argv) {
             alpha = true;
         } else if (a == "--general-path") {
             req.raster.force_general_path = true;
+        } else if (a == "--undefined-mask") {
+            mask_output = need_value(i, argc, argv);
+            req.raster.check_undefined = true;
         } else if (a == "--threads") {
             req.raster.threads = parse_int(a, need_value(i, argc, argv), 1, 1024);
         } else if (!a.empty() && a[0] == '-') {
@@ -207,18 +217,26 @@ int cmd_render(int argc, char** argv) {
     }
     if (scene_path.empty()) throw UsageError("render: no scene given");
     if (output.empty()) throw UsageError("render: no output given (-o FILE)");
+    if (req.raster.check_undefined) {
+        if (req.raster.derivatives == Derivatives::Analytic) throw UsageError("--undefined-mask: not with --derivatives analytic");
+        if (req.raster.precision == Precision::Double) throw UsageError("--undefined-mask: not with --precision double");
+        if (mask_output == output) throw UsageError("--undefined-mask: the same file as -o");
+    }
 
     Scene scene = load_scene(scene_path);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
-    const std::filesystem::path out_dir = std::filesystem::path(output).parent_path();
-    if (!out_dir.empty() && !std::filesystem::is_directory(out_dir)) {
-        throw std::runtime_error(output + ": no folder " + out_dir.string() + " to write into");
+    for (const std::string& file : {output, mask_output}) {
+        const std::filesystem::path dir = std::filesystem::path(file).parent_path();
+        if (!dir.empty() && !std::filesystem::is_directory(dir)) {
+            throw std::runtime_error(file + ": no folder " + dir.string() + " to write into");
+        }
     }
     const int first = frames ? frames->first : 0, last = frames ? frames->second : 0;
     const bool progress = frames && last > first && ::isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
     double render_seconds = 0.0;
     RasterStats stats;
+    UndefinedCounts undefined;
     Framebuffer fb;
     SceneRenderer renderer(scene, req);
     for (int f = first; f <= last; ++f) {
@@ -228,14 +246,21 @@ int cmd_render(int argc, char** argv) {
         renderer.render_into(fb, fr.time, &stats);
         render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const std::string path = frames ? frame_path(output, f) : output;
-        write_image(path, to_image(fb),
-                    {{"quadshade:scene", scene_path},
-                     {"quadshade:time", std::to_string(fr.time.value_or(double(scene.time)))},
-                     {"quadshade:stable_time", req.stable_time ? "on" : "off"},
-                     {"quadshade:derivatives", rule_name(req.raster.derivatives)},
-                     {"quadshade:backend", req.backend == Backend::RayCaster ? "raycast" : "raster"},
-                     {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override}},
-                    alpha);
+        Metadata metadata = {{"quadshade:scene", scene_path},
+                             {"quadshade:time", std::to_string(fr.time.value_or(double(scene.time)))},
+                             {"quadshade:stable_time", req.stable_time ? "on" : "off"},
+                             {"quadshade:derivatives", rule_name(req.raster.derivatives)},
+                             {"quadshade:backend", req.backend == Backend::RayCaster ? "raycast" : "raster"},
+                             {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override}};
+        write_image(path, to_image(fb), metadata, alpha);
+        if (!mask_output.empty()) {
+            metadata.emplace_back("quadshade:undefined_mask",
+                                  "red: NaN produced, green: division by zero, blue: built-in outside its domain");
+            write_image(frames ? frame_path(mask_output, f) : mask_output, undefined_mask_image(fb), metadata);
+            const UndefinedCounts c = count_undefined(fb);
+            undefined.pixels += c.pixels;
+            for (std::size_t k = 0; k < c.per_case.size(); ++k) undefined.per_case[k] += c.per_case[k];
+        }
         if (progress) {
             const int done = f - first + 1, total = last - first + 1, width = 30;
             const int filled = done * width / total;
@@ -253,6 +278,13 @@ int cmd_render(int argc, char** argv) {
                  (unsigned long long)stats.lanes_shaded);
     if (req.backend == Backend::RayCaster) std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
     std::fputc('\n', stderr);
+    if (!mask_output.empty()) {
+        std::fprintf(stderr,
+                     "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "
+                     "built-in outside its domain %llu\n",
+                     (unsigned long long)undefined.pixels, (unsigned long long)undefined.per_case[0],
+                     (unsigned long long)undefined.per_case[1], (unsigned long long)undefined.per_case[2]);
+    }
     return 0;
 }
 

@@ -100,7 +100,7 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ras
     if (caster_) {
         const RasterOptions& r = request_.raster;
         caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_,
-                                    {r.derivatives, r.precision, r.pairing, r.threads}, stats);
+                                    {r.derivatives, r.precision, r.pairing, r.check_undefined, r.threads}, stats);
         return;
     }
 #endif

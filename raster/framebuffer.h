@@ -12,6 +12,9 @@ struct Framebuffer {
     int width = 0, height = 0;
     std::vector<float> rgba;   // 4 per pixel, top-down
     std::vector<float> depth;  // empty when no draw needed depth; else 1 per pixel, cleared to 1
+    // Empty unless the render checked for undefined GLSL cases; else 1 per pixel, top-down: the
+    // Undefined bits (number/checked.h) of the fragment that wrote the pixel, 0 where cleared.
+    std::vector<std::uint8_t> undefined;
 
     float* pixel(int x, int row) { return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4]; }
     const float* pixel(int x, int row) const {

@@ -255,6 +255,9 @@ private:
             block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
                           {fb_.pixel(x, y), fb_.pixel(x, y + 1), fb_.pixel(x, y + 2), fb_.pixel(x, y + 3)});
             touched_[std::size_t(block)] = true;
+            if (d.mode.check_undefined) {
+                for (int i = 0; i < kBatchLanes; ++i) *undefined_at(x + kLaneDx[i], y + kLaneDy[i]) = out_.undefined[i];
+            }
             if (d.depth_test) std::copy_n(in_.frag_coord[2], kBatchLanes, &depth_[b.block]);
             written_ += kBatchLanes;
             return;
@@ -268,6 +271,7 @@ private:
             }
             float* p = fb_.pixel(b.x[i], b.y[i]);
             p[0] = out_.rgba[0][i], p[1] = out_.rgba[1][i], p[2] = out_.rgba[2][i], p[3] = out_.rgba[3][i];
+            if (d.mode.check_undefined) *undefined_at(b.x[i], b.y[i]) = out_.undefined[i];
             if (d.depth_test) depth_[t] = in_.frag_coord[2][i];
             ++written_;
         }
@@ -285,7 +289,12 @@ private:
             if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
             float* p = fb_.pixel(x, y + r);
             for (int dx = 0; dx < n; ++dx) std::memcpy(p + 4 * dx, &clear_[0], 4 * sizeof(float));
+            if (!fb_.undefined.empty()) std::fill_n(undefined_at(x, y + r), n, std::uint8_t(0));
         }
+    }
+
+    std::uint8_t* undefined_at(int x, int y) {
+        return &fb_.undefined[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
     }
 
     // Index in the tile of lane 0 of the block holding pixel (x, y).
@@ -323,6 +332,16 @@ void check_image_size(int width, int height) {
     }
 }
 
+void check_undefined_mode(bool check_undefined, Derivatives derivatives, Precision precision) {
+    if (!check_undefined) return;
+    if (derivatives == Derivatives::Analytic) {
+        throw std::invalid_argument("checking for undefined GLSL cases needs quad or per-pixel derivatives, not analytic");
+    }
+    if (precision == Precision::Double) {
+        throw std::invalid_argument("checking for undefined GLSL cases shades in float, not double");
+    }
+}
+
 int quad_row_offset(int height, QuadPairing pairing) {
     // Top-down pairing: framebuffer rows (2k, 2k+1), offset 0. Bottom-up: GL rows (2k, 2k+1) are
     // framebuffer rows (H-2-2k, H-1-2k), so at an odd height the grid starts at row -1.
@@ -339,13 +358,14 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                     const RasterOptions& options, RasterStats* stats_out) {
     check_image_size(width, height);
+    check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
     std::vector<PreparedDraw> prepared;
     bool any_depth = options.force_general_path;
     for (const DrawCall& call : draws) {
         if (!call.program) throw std::invalid_argument("draw call without a program");
         const Needs& needs = call.program->info().needs;
-        PreparedDraw d{&call, {options.derivatives, options.precision}, true, needs.depth, needs.varyings,
-                       needs.flat_varyings, options.fused_interpolation};
+        PreparedDraw d{&call, {options.derivatives, options.precision, options.check_undefined}, true, needs.depth,
+                       needs.varyings, needs.flat_varyings, options.fused_interpolation};
         if (!needs.derivatives && !options.force_general_path) {
             d.mode.derivatives = Derivatives::None;  // per pixel, no helper lanes
             d.quads = false;
@@ -421,6 +441,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     fb.width = width, fb.height = height;
     fb.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
     fb.depth.resize(any_depth ? std::size_t(width) * std::size_t(height) : 0);
+    fb.undefined.resize(options.check_undefined ? std::size_t(width) * std::size_t(height) : 0);
     std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const auto& r) {
         const FlushDenormals ftz;

@@ -36,6 +36,9 @@ struct RasterOptions {
     // Shade derivative-free shaders in quads with helper lanes too (the general path), and keep
     // a depth buffer even when no draw needs one. For measuring what specialisation saves.
     bool force_general_path = false;
+    // Fill Framebuffer::undefined: shade with Checked numbers (float only; not with Analytic
+    // derivatives or Double precision: std::invalid_argument). Same colours, slower.
+    bool check_undefined = false;
     int threads = 0;  // 0: all cores
 };
 
@@ -62,5 +65,9 @@ int quad_row_offset(int height, QuadPairing pairing);
 // the guard band's intent). Throws std::invalid_argument naming the size otherwise.
 inline constexpr int kMaxDimension = 1 << 15;
 void check_image_size(int width, int height);
+
+// Undefined-case checking shades Checked float pixels or quads: throws std::invalid_argument
+// for Analytic derivatives or Double precision when `check_undefined` is on.
+void check_undefined_mode(bool check_undefined, Derivatives derivatives, Precision precision);
 
 }  // namespace qs

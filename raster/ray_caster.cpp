@@ -123,6 +123,7 @@ public:
             if (!(rays.active >> i & 1) || hits.geometry[i] != kNoHit) continue;
             float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
             p[0] = clear.r, p[1] = clear.g, p[2] = clear.b, p[3] = clear.a;
+            if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
         }
         for (int q = 0; q < kBatchQuads; ++q) {
             // Each primitive hit in the quad runs it once; done[] marks lanes already served.
@@ -232,9 +233,14 @@ private:
             if (!(b.write >> i & 1)) continue;
             float* p = fb_.pixel(b.x[i], b.y[i]);
             for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
+            if (d.mode.check_undefined) *undefined_at(b.x[i], b.y[i]) = out_.undefined[i];
             ++written_;
         }
         b.count = 0, b.write = 0;
+    }
+
+    std::uint8_t* undefined_at(int x, int y) {
+        return &fb_.undefined[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
     }
 
     Framebuffer& fb_;
@@ -333,6 +339,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
                             const RayCastOptions& options, RasterStats* stats_out) {
     Impl& im = *impl_;
     check_image_size(width, height);
+    check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
     for (std::size_t i = 0; i < draws.size(); ++i) {
         if (draws[i].vertices.size() != im.meshes[i].out.size()) {
@@ -351,7 +358,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     std::vector<PreparedDraw> prepared;
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Needs& needs = draws[i].program->info().needs;
-        PreparedDraw d{&draws[i], &im.meshes[i], {options.derivatives, options.precision}, true, needs.varyings,
+        PreparedDraw d{&draws[i], &im.meshes[i], {options.derivatives, options.precision, options.check_undefined}, true, needs.varyings,
                        needs.flat_varyings};
         if (!needs.derivatives || d.mode.derivatives == Derivatives::None) {
             d.mode.derivatives = needs.derivatives ? Derivatives::Fine : Derivatives::None;
@@ -368,6 +375,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     fb.width = width, fb.height = height;
     fb.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
     fb.depth.clear();
+    fb.undefined.resize(options.check_undefined ? std::size_t(width) * std::size_t(height) : 0);
     const int row0 = quad_row_offset(height, options.pairing);
     const int tiles_x = (width + kTileSize - 1) / kTileSize;
     const int tiles_y = (height - row0 + kTileSize - 1) / kTileSize;

@@ -31,6 +31,7 @@ struct RayCastOptions {
     Derivatives derivatives = Derivatives::Fine;  // a quad rule, or Analytic: ray differentials
     Precision precision = Precision::Float;
     QuadPairing pairing = QuadPairing::TopDown;
+    bool check_undefined = false;  // fill Framebuffer::undefined, as RasterOptions::check_undefined
     int threads = 0;  // 0: all cores
 };
 

@@ -6,6 +6,7 @@
 // kBatchLanes fragments' inputs, laid out as 4 quads when a quad mode is used.
 
 #include <array>
+#include <cstdint>
 #include <string_view>
 
 #include <glm/mat4x4.hpp>
@@ -34,6 +35,10 @@ enum class Precision { Float, Double };
 struct ShadeMode {
     Derivatives derivatives = Derivatives::Fine;
     Precision precision = Precision::Float;
+    // Also report, per lane, the GLSL cases with undefined results the colour depends on
+    // (ColorBatch::undefined; number/checked.h). Float pixels or quads only: not with Analytic
+    // or Double. The colours are the same as without.
+    bool check_undefined = false;
 };
 
 // The pattern's coordinate space: what the vertex stage feeds the fragment stage.
@@ -100,6 +105,9 @@ struct FragmentBatch {
 
 struct ColorBatch {
     alignas(64) float rgba[4][kBatchLanes];
+    // Per lane, the Undefined bits (number/checked.h) of its colour; written only when
+    // ShadeMode::check_undefined.
+    std::uint8_t undefined[kBatchLanes];
 };
 
 class Program {

@@ -4,7 +4,8 @@
 // shader: this is where the number types meet the batch layout.
 //
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
-// each DerivativeRule (float; Fine also double), and Dual2 (float, double).
+// each DerivativeRule (float; Fine also double), and Dual2 (float, double); and, for the
+// undefined-case mask, Checked float pixels and quads.
 
 #include <stdexcept>
 #include <string>
@@ -77,6 +78,7 @@ public:
     }
 
     void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const override {
+        if (mode.check_undefined) return shade_checked(mode, in, u, out);
         const bool dbl = mode.precision == Precision::Double;
         switch (mode.derivatives) {
             case Derivatives::None:
@@ -101,8 +103,48 @@ public:
     }
 
 private:
+    // The same shader over Checked numbers: colours as above, and each lane's undefined cases.
+    static void shade_checked(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+        if (mode.precision == Precision::Double || mode.derivatives == Derivatives::Analytic) {
+            throw std::logic_error("undefined-case checking shades float pixels or quads, not double or Dual2");
+        }
+        switch (mode.derivatives) {
+            case Derivatives::None:
+                if constexpr (!Shader::info.needs.derivatives) {
+                    return run_checked<Checked<Pixels<float, kBatchLanes>>>(in, u, out);
+                } else {
+                    throw std::logic_error(std::string(Shader::info.name) +
+                                           " takes derivatives: it cannot be shaded per pixel");
+                }
+            case Derivatives::Fine:
+                return run_checked<Checked<Quads<float, kBatchQuads, DerivativeRule::Fine>>>(in, u, out);
+            case Derivatives::CoarseLower:
+                return run_checked<Checked<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>>(in, u, out);
+            case Derivatives::CoarseUpper:
+                return run_checked<Checked<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>>(in, u, out);
+            case Derivatives::Analytic:
+                break;
+        }
+    }
+
     template <class F>
     QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+        const glsl::vec4<F> c = fragment<F>(in, u);
+        for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
+    }
+
+    // Not flattened: a debugging mode, and flattening the checks would multiply compile time.
+    template <class F>
+    static void run_checked(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+        const glsl::vec4<F> c = fragment<F>(in, u);
+        for (int k = 0; k < 4; ++k) c[k].store(out.rgba[k]);
+        const LaneCases cases = c[0].cases | c[1].cases | c[2].cases | c[3].cases;
+        for (int i = 0; i < kBatchLanes; ++i) out.undefined[i] = cases.at(i);
+    }
+
+    // The shader's inputs in number type F, and its output colour.
+    template <class F>
+    static glsl::vec4<F> fragment(const FragmentBatch& in, const Uniforms& u) {
         using program_detail::load;
         FragmentIn<F> f;
         if constexpr (is_dual2<F>::value) {
@@ -119,8 +161,7 @@ private:
         for (int v = 0; v < Shader::info.needs.varyings; ++v) {
             f.varying[v] = load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]);
         }
-        glsl::vec4<F> c = Shader::template fragment<F>(f, u);
-        for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
+        return Shader::template fragment<F>(f, u);
     }
 };
 

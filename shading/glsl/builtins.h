@@ -9,7 +9,9 @@
 //   smoothstep(e, e, x) = (x > e) ? 1 : 0 (GLSL: undefined; this is llvmpipe's run-time result,
 //   since (x-e)/0 is +inf, -inf or NaN and clamp maps them to 1, 0, 0), mod(x, 0) = NaN,
 //   inversesqrt(0) = +inf, normalize(vec(0)) = NaN.
-// Primitives (floor, abs, sqrt, sin, min, ...) come from the number types themselves.
+// Primitives (floor, abs, sqrt, sin, min, ...) come from the number types themselves. On a
+// Checked number (number/checked.h), the built-ins GLSL leaves undefined outside a domain flag
+// that case and otherwise compute exactly as on the number type it wraps.
 
 #include <type_traits>
 
@@ -64,7 +66,12 @@ template <class X, class A, class B>
     requires Numbers<X, A, B>
 promote_t<X, A, B> clamp(const X& x, const A& lo, const B& hi) {
     using F = promote_t<X, A, B>;
-    return min(max(F(x), F(lo)), F(hi));
+    if constexpr (is_checked_v<F>) {  // GLSL: undefined if lo > hi
+        const F v(x), a(lo), b(hi);
+        return F::builtin(clamp(v.v, a.v, b.v), a > b, v, a, b);
+    } else {
+        return min(max(F(x), F(lo)), F(hi));
+    }
 }
 
 template <class X, class Y, class A>
@@ -85,12 +92,24 @@ template <class E0, class E1, class X>
     requires Numbers<E0, E1, X>
 promote_t<E0, E1, X> smoothstep(const E0& e0, const E1& e1, const X& x) {
     using F = promote_t<E0, E1, X>;
-    F t = clamp((F(x) - F(e0)) / (F(e1) - F(e0)), 0.0f, 1.0f);
-    return t * t * (F(3.0f) - F(2.0f) * t);
+    if constexpr (is_checked_v<F>) {
+        // GLSL: undefined if e0 >= e1; flagged as that, not as the division by zero it implies.
+        const F a(e0), b(e1), v(x);
+        return F::builtin(smoothstep(a.v, b.v, v.v), a >= b, a, b, v);
+    } else {
+        F t = clamp((F(x) - F(e0)) / (F(e1) - F(e0)), 0.0f, 1.0f);
+        return t * t * (F(3.0f) - F(2.0f) * t);
+    }
 }
 
 template <Number F>
-F inversesqrt(const F& x) { return F(1.0f) / sqrt(x); }
+F inversesqrt(const F& x) {
+    if constexpr (is_checked_v<F>) {  // GLSL: undefined if x <= 0
+        return F::builtin(inversesqrt(x.v), x <= F(0.0f), x);
+    } else {
+        return F(1.0f) / sqrt(x);
+    }
+}
 
 template <Number F>
 F radians(const F& deg) { return deg * F(0.017453292519943295f); }

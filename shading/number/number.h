@@ -4,6 +4,7 @@
 #include <concepts>
 #include <type_traits>
 
+#include "number/checked.h"
 #include "number/dual2.h"
 #include "number/lanes.h"
 #include "number/scalar.h"
@@ -18,18 +19,28 @@ template <class F>
 struct is_dual2 : std::false_type {};
 template <class T>
 struct is_dual2<Dual2<T>> : std::true_type {};
+template <class F>
+struct is_checked : std::false_type {};
+template <class L>
+struct is_checked<Checked<L>> : std::true_type {};
+template <class F>
+inline constexpr bool is_checked_v = is_checked<F>::value;
 
 // A Number stands where GLSL has `float`.
 template <class F>
-concept Number = std::is_floating_point_v<F> || is_lanes<F>::value || is_dual2<F>::value;
+concept Number = std::is_floating_point_v<F> || is_lanes<F>::value || is_dual2<F>::value || is_checked_v<F>;
 
 // How many values one F holds (1 for float, double and Dual2 of them).
 template <class F>
 constexpr int lanes_of() {
     if constexpr (is_dual2<F>::value) return lanes_of<typename F::value_type>();
-    else if constexpr (is_lanes<F>::value) return F::size;
+    else if constexpr (is_lanes<F>::value || is_checked_v<F>) return F::size;
     else return 1;
 }
+
+// Lanes that hold whole 2x2 quads (Quads, and Checked Quads), with their DerivativeRule.
+template <class F>
+concept QuadNumber = requires { F::layout::rule; };
 
 // The mask a comparison of two F yields.
 template <Number F>
@@ -38,8 +49,8 @@ using mask_t = decltype(F() < F());
 // Whether dFdx/dFdy exist on F: quads (lane differences) and Dual2 (carried partials).
 template <class F>
 struct has_derivatives : std::false_type {};
-template <class T, int N, DerivativeRule R>
-struct has_derivatives<Lanes<T, N, QuadLanes<R>>> : std::true_type {};
+template <QuadNumber F>
+struct has_derivatives<F> : std::true_type {};
 template <class T>
 struct has_derivatives<Dual2<T>> : std::true_type {};
 template <class F>
@@ -58,20 +69,21 @@ constexpr std::size_t fine_upper(std::size_t i) { return i | 2; }
 constexpr std::size_t fine_lower(std::size_t i) { return i & ~std::size_t(2); }
 }  // namespace quad_detail
 
-template <class T, int N, DerivativeRule R>
-Lanes<T, N, QuadLanes<R>> dFdxFine(const Lanes<T, N, QuadLanes<R>>& v) {
+template <QuadNumber V>
+V dFdxFine(const V& v) {
     using namespace quad_detail;
     return v.permute(fine_right) - v.permute(fine_left);
 }
-template <class T, int N, DerivativeRule R>
-Lanes<T, N, QuadLanes<R>> dFdyFine(const Lanes<T, N, QuadLanes<R>>& v) {
+template <QuadNumber V>
+V dFdyFine(const V& v) {
     using namespace quad_detail;
     return v.permute(fine_upper) - v.permute(fine_lower);
 }
 // Coarse: one difference for the whole quad. Under the Fine rule (llvmpipe) coarse is fine too.
-template <class T, int N, DerivativeRule R>
-Lanes<T, N, QuadLanes<R>> dFdxCoarse(const Lanes<T, N, QuadLanes<R>>& v) {
+template <QuadNumber V>
+V dFdxCoarse(const V& v) {
     using namespace quad_detail;
+    constexpr DerivativeRule R = V::layout::rule;
     if constexpr (R == DerivativeRule::Fine) {
         return dFdxFine(v);
     } else if constexpr (R == DerivativeRule::CoarseLower) {
@@ -81,19 +93,19 @@ Lanes<T, N, QuadLanes<R>> dFdxCoarse(const Lanes<T, N, QuadLanes<R>>& v) {
                v.permute([](std::size_t i) { return base(i) | 2; });
     }
 }
-template <class T, int N, DerivativeRule R>
-Lanes<T, N, QuadLanes<R>> dFdyCoarse(const Lanes<T, N, QuadLanes<R>>& v) {
+template <QuadNumber V>
+V dFdyCoarse(const V& v) {
     using namespace quad_detail;
-    if constexpr (R == DerivativeRule::Fine) {
+    if constexpr (V::layout::rule == DerivativeRule::Fine) {
         return dFdyFine(v);
     } else {  // both coarse rules take the left column
         return v.permute([](std::size_t i) { return base(i) | 2; }) - v.permute(base);
     }
 }
-template <class T, int N, DerivativeRule R>
-Lanes<T, N, QuadLanes<R>> dFdx(const Lanes<T, N, QuadLanes<R>>& v) { return dFdxCoarse(v); }
-template <class T, int N, DerivativeRule R>
-Lanes<T, N, QuadLanes<R>> dFdy(const Lanes<T, N, QuadLanes<R>>& v) { return dFdyCoarse(v); }
+template <QuadNumber V>
+V dFdx(const V& v) { return dFdxCoarse(v); }
+template <QuadNumber V>
+V dFdy(const V& v) { return dFdyCoarse(v); }
 
 // ---- derivative built-ins on Dual2: the carried partials ----------------------------------
 template <class T>

@@ -6,7 +6,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -18,6 +21,7 @@
 #include "catalogue.h"
 #include "gltf.h"
 #include "image_io.h"
+#include "number/checked.h"
 #include "scene_render.h"
 #include "test_paths.h"
 
@@ -348,6 +352,120 @@ TEST_CASE("the ground plane at the horizon: derivatives of 1e4 texels per pixel,
         // many cells a pixel spans, so the ramp never covers the value range and the row stays
         // noise. Measured: spread 0.35. A documented limit of aastep, not of quadshade.
         if (std::string(shader) == "dots_aa") CHECK(spread > 0.2);
+    }
+}
+
+}  // namespace qs
+
+namespace qs {
+
+namespace {
+constexpr std::uint8_t kNaN = std::uint8_t(Undefined::NaN);
+constexpr std::uint8_t kDivision = std::uint8_t(Undefined::DivisionByZero);
+constexpr std::uint8_t kArgument = std::uint8_t(Undefined::Argument);
+
+Framebuffer render_checked(Scene& scene, const std::string& shader, int width, int height, bool check,
+                           Backend backend = Backend::Rasterizer) {
+    FrameRequest r;
+    r.width = width, r.height = height;
+    r.shader_override = shader;
+    r.backend = backend;
+    r.raster.check_undefined = check;
+    return render_frame(scene, r);
+}
+}  // namespace
+
+TEST_CASE("the undefined-case mask flags each of the float environment probe's columns with its own cases",
+          "[undefined][stability]") {
+    // float_env_probe, column x (see shaders/probes.h): 0 normalize(vec3(0)), 1 inversesqrt(0),
+    // 2 pow(-2, 1.5), 3 mod(1, 0), 4 a denormal (defined), 5 sqrt(-1), 6 log(0), 7.. 0 * inversesqrt(0).
+    const std::uint8_t expected[8] = {kArgument | kNaN, kArgument, kArgument | kNaN, kDivision | kNaN, 0,
+                                      kArgument | kNaN, kArgument, kArgument | kNaN};
+    Scene plane = load_scene(kPlane);
+    std::vector<Backend> backends = {Backend::Rasterizer};
+#if defined(QUADSHADE_HAS_RAYCAST)
+    backends.push_back(Backend::RayCaster);
+#endif
+    for (Backend backend : backends) {
+        const Framebuffer fb = render_checked(plane, "float_env_probe", 12, 6, true, backend);
+        REQUIRE(fb.undefined.size() == 12 * 6);
+        for (int row = 0; row < fb.height; ++row) {
+            for (int x = 0; x < fb.width; ++x) {
+                INFO("backend " << int(backend) << ", column " << x << ", row " << row);
+                CHECK(int(fb.undefined[std::size_t(row * fb.width + x)]) == int(expected[std::min(x, 7)]));
+            }
+        }
+    }
+    // The select that stands for GLSL's if/else chain keeps each column to its own case: no
+    // column carries the cases of the branches GLSL does not run there.
+}
+
+TEST_CASE("the undefined-case mask: aastep with a zero derivative is flagged, and checking never changes a colour",
+          "[undefined][stability]") {
+    Scene plane = load_scene(kPlane);
+    SECTION("smoothstep(e - w, e + w, x) with w = 0 everywhere") {
+        const Framebuffer fb = render_checked(plane, "smoothstep_probe", 16, 8, true);
+        for (std::uint8_t u : fb.undefined) CHECK(int(u) == int(kArgument));
+    }
+    SECTION("every catalogue shader on the plane, and Figure 1.1's own, give the same colours checked") {
+        for (const Program* p : catalogue()) {
+            if (p->info().needs.texture) continue;  // the plane has no texture
+            const std::string name(p->info().name);
+            INFO(name);
+            const Framebuffer plain = render_checked(plane, name, 40, 24, false);
+            const Framebuffer checked = render_checked(plane, name, 40, 24, true);
+            CHECK(plain.undefined.empty());
+            CHECK(std::memcmp(plain.rgba.data(), checked.rgba.data(), plain.rgba.size() * sizeof(float)) == 0);
+        }
+        Scene fig = load_scene(kFigure);
+        const Framebuffer plain = render_checked(fig, "", 158, 50, false);
+        const Framebuffer checked = render_checked(fig, "", 158, 50, true);
+        CHECK(std::memcmp(plain.rgba.data(), checked.rgba.data(), plain.rgba.size() * sizeof(float)) == 0);
+        // Figure 1.1 hits no undefined case; the clear colour is never flagged.
+        CHECK(std::all_of(checked.undefined.begin(), checked.undefined.end(), [](std::uint8_t u) { return u == 0; }));
+    }
+    SECTION("bricks_aa: at a brick's centre the gradient of b vanishes on one row of the quad") {
+        // b = max(|fract(8s - ...) - 0.5|, ...) has a symmetric peak there: aastep's width is 0.
+        const Framebuffer fb = render_checked(plane, "bricks_aa", 256, 256, true);
+        const auto flagged = std::count(fb.undefined.begin(), fb.undefined.end(), kArgument);
+        CHECK(flagged > 0);
+        CHECK(flagged == std::count_if(fb.undefined.begin(), fb.undefined.end(), [](std::uint8_t u) { return u != 0; }));
+    }
+    SECTION("checking refuses analytic derivatives and double precision") {
+        FrameRequest r;
+        r.width = r.height = 8;
+        r.raster.check_undefined = true;
+        r.raster.derivatives = Derivatives::Analytic;
+        CHECK_THROWS_WITH(render_frame(plane, r), Catch::Contains("not analytic"));
+        r.raster.derivatives = Derivatives::Fine;
+        r.raster.precision = Precision::Double;
+        CHECK_THROWS_WITH(render_frame(plane, r), Catch::Contains("not double"));
+    }
+}
+
+TEST_CASE("the command line writes the undefined-case mask and counts it", "[undefined][cli]") {
+    const auto dir = temp_dir("mask");
+    const std::string qs = (kBin / "quadshade").string();
+    const std::string base = qs + " render " + kPlane.string() + " --shader float_env_probe --size 12x4 -o " +
+                             (dir / "out.png").string();
+    SECTION("a PNG: red NaN, green division by zero, blue outside a built-in's domain") {
+        auto [code, err] = run(base + " --undefined-mask " + (dir / "mask.png").string(), dir);
+        CHECK(code == 0);
+        CHECK(err.find("undefined GLSL cases on 44 pixels: NaN produced 36, division by zero 4, built-in outside its "
+                       "domain 40") != std::string::npos);
+        const Image mask = read_image(dir / "mask.png");
+        auto rgb = [&](int x) { return std::array<float, 3>{mask.rgba[4 * x], mask.rgba[4 * x + 1], mask.rgba[4 * x + 2]}; };
+        CHECK(rgb(1) == std::array<float, 3>{0, 0, 1});  // inversesqrt(0)
+        CHECK(rgb(3) == std::array<float, 3>{1, 1, 0});  // mod(1, 0)
+        CHECK(rgb(4) == std::array<float, 3>{0, 0, 0});  // a denormal is defined
+        CHECK(rgb(5) == std::array<float, 3>{1, 0, 1});  // sqrt(-1)
+    }
+    SECTION("refused with analytic derivatives, before writing anything") {
+        auto [code, err] = run(base + " --derivatives analytic --undefined-mask " + (dir / "mask.png").string(), dir);
+        CHECK(code == 2);
+        CHECK(err.find("--undefined-mask") != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(dir / "out.png"));
+        CHECK_FALSE(std::filesystem::exists(dir / "mask.png"));
     }
 }
 

@@ -18,6 +18,8 @@ template <class T, int N, class L>
 struct scalar_of<Lanes<T, N, L>> { using type = T; };
 template <class T>
 struct scalar_of<Dual2<T>> { using type = typename scalar_of<T>::type; };
+template <class L>
+struct scalar_of<Checked<L>> { using type = typename scalar_of<L>::type; };
 template <class F>
 using scalar_t = typename scalar_of<F>::type;
 
@@ -25,7 +27,7 @@ template <class F>
 F from_values(const double* v) {
     if constexpr (is_dual2<F>::value) {
         return F(from_values<typename F::value_type>(v));
-    } else if constexpr (is_lanes<F>::value) {
+    } else if constexpr (is_lanes<F>::value || is_checked_v<F>) {
         typename F::value_type tmp[F::size];
         for (int i = 0; i < F::size; ++i) tmp[i] = typename F::value_type(v[i]);
         return F::load(tmp);

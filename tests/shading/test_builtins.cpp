@@ -71,7 +71,7 @@ void check_binary(Op op, Oracle oracle) {
 }  // namespace
 
 #define NUMBER_TYPES float, double, (Pixels<float, 16>), (Quads<float, 4>), (Pixels<double, 8>), Dual2<float>, \
-                     (Dual2<Pixels<float, 16>>)
+                     (Dual2<Pixels<float, 16>>), (Checked<Pixels<float, 16>>), (Checked<Quads<float, 4>>)
 
 TEMPLATE_TEST_CASE("unary built-ins equal GLM lane by lane", "[builtins]", NUMBER_TYPES) {
     using F = TestType;
@@ -156,7 +156,7 @@ TEST_CASE("mat2 and mat2x3 multiply as GLSL (column-major) and as GLM", "[builti
 }
 
 TEMPLATE_TEST_CASE("NaN and infinity follow llvmpipe: min and max return the non-NaN operand", "[builtins][nan]", float,
-                   double, (Pixels<float, 16>), (Quads<float, 4>), Dual2<float>) {
+                   double, (Pixels<float, 16>), (Quads<float, 4>), Dual2<float>, (Checked<Quads<float, 4>>)) {
     using F = TestType;
     const F nan = std::numeric_limits<float>::quiet_NaN();
     const F inf = std::numeric_limits<float>::infinity();
@@ -174,7 +174,7 @@ TEMPLATE_TEST_CASE("NaN and infinity follow llvmpipe: min and max return the non
 }
 
 TEMPLATE_TEST_CASE("smoothstep with equal edges is x > edge, as llvmpipe runs it", "[builtins][nan]", float, double,
-                   (Pixels<float, 16>), (Quads<float, 4>), Dual2<float>) {
+                   (Pixels<float, 16>), (Quads<float, 4>), Dual2<float>, (Checked<Quads<float, 4>>)) {
     using F = TestType;
     CHECK(value_at(smoothstep(F(0.5f), F(0.5f), F(0.25f)), 0) == 0.0);
     CHECK(value_at(smoothstep(F(0.5f), F(0.5f), F(0.5f)), 0) == 0.0);  // 0/0 is NaN, clamped to 0

@@ -1,0 +1,29 @@
+#pragma once
+// The undefined-case mask of a render checked with RasterOptions::check_undefined, as an image
+// and as counts: where the shader's colour depends on a GLSL case with an undefined result.
+//   red    NaN produced (an operation made NaN from operands that were not NaN)
+//   green  division by zero (also mod(x, 0))
+//   blue   a built-in outside its domain (smoothstep with e0 >= e1, clamp with lo > hi,
+//          sqrt/inversesqrt/log/log2/pow/atan where GLSL leaves them undefined)
+// Several cases mix their colours (red + green = yellow ...); black: no undefined case, or no
+// fragment (clear colour).
+
+#include <array>
+#include <cstdint>
+
+#include "framebuffer.h"
+#include "image_io.h"
+#include "number/checked.h"
+
+namespace qs {
+
+// Precondition: fb.undefined is filled (the render checked for undefined cases).
+Image undefined_mask_image(const Framebuffer& fb);
+
+struct UndefinedCounts {
+    std::uint64_t pixels = 0;                // pixels with any case
+    std::array<std::uint64_t, kUndefinedCases> per_case{};  // NaN, division by zero, argument
+};
+UndefinedCounts count_undefined(const Framebuffer& fb);
+
+}  // namespace qs

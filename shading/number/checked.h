@@ -1,0 +1,206 @@
+#pragma once
+// Checked<L>: a lane type L (Pixels or Quads of float) whose values also carry, per lane, the
+// GLSL cases with undefined results that they depend on. It is the number type of the
+// undefined-case mask (`quadshade render --undefined-mask`). The cases:
+//   NaN             an operation returned NaN from operands that were not NaN (0 / 0, inf - inf,
+//                   0 * inf, sqrt(-1), a derivative across a helper lane's inf, ...), or a NaN
+//                   came in from outside the fragment shader (a varying, a texel);
+//   DivisionByZero  x / 0, and so mod(x, 0), which GLSL defines through x / y;
+//   Argument        a built-in outside the domain where GLSL defines it: smoothstep(e0, e1, x)
+//                   with e0 >= e1, clamp(x, lo, hi) with lo > hi, sqrt(x < 0), inversesqrt(x <= 0),
+//                   log and log2 (x <= 0), pow(x < 0, y) and pow(0, y <= 0), atan(0, 0).
+//
+// Every operation computes exactly what L computes, so a checked render has the unchecked
+// colours bit for bit. The cases flow with the data, not with control: a result carries the
+// union of its operands' cases plus those it hits itself, and select(m, a, b) carries m's cases
+// and, lane by lane, those of the operand it picks. So a translated GLSL `if`, evaluated on both
+// sides and selected, flags only the side GLSL runs; a case whose value is later multiplied by
+// zero or clamped away still flags the pixel, whose value did depend on it. dFdx/dFdy move the
+// cases with the values: a helper lane's NaN reaches the pixels whose derivatives it enters.
+
+#include <bit>
+#include <cstdint>
+#include <type_traits>
+
+#include "number/lanes.h"
+
+namespace qs {
+
+// The cases, as the bits of a pixel's entry in the mask.
+enum class Undefined : std::uint8_t { NaN = 1, DivisionByZero = 2, Argument = 4 };
+inline constexpr int kUndefinedCases = 3;
+
+// Which cases hit which of up to 16 lanes: bit 16 k + i is case k (the k-th bit of Undefined)
+// on lane i, so that a union is one OR and untouched values cost nothing to track.
+class LaneCases {
+public:
+    static constexpr int kMaxLanes = 16;
+
+    LaneCases() = default;
+    // Case c on the lanes set in `lanes` (bit i: lane i).
+    static LaneCases on(std::uint32_t lanes, Undefined c) {
+        return LaneCases(std::uint64_t(lanes & 0xFFFFu) << (16 * std::countr_zero(unsigned(c))));
+    }
+
+    friend LaneCases operator|(LaneCases a, LaneCases b) { return LaneCases(a.bits_ | b.bits_); }
+    LaneCases& operator|=(LaneCases b) {
+        bits_ |= b.bits_;
+        return *this;
+    }
+    bool none() const { return bits_ == 0; }
+
+    // The cases of the lanes set in `lanes` only.
+    LaneCases only(std::uint32_t lanes) const {
+        return LaneCases(bits_ & (std::uint64_t(lanes & 0xFFFFu) * 0x0000'0001'0001'0001ull));
+    }
+    // Lane i takes the cases of lane index(i), as Lanes::permute moves values.
+    template <class Index>
+    LaneCases permute(Index index, int lanes) const {
+        if (none()) return *this;
+        std::uint64_t moved = 0;
+        for (int k = 0; k < kUndefinedCases; ++k) {
+            for (int i = 0; i < lanes; ++i) moved |= (bits_ >> (16 * k + int(index(std::size_t(i)))) & 1u) << (16 * k + i);
+        }
+        return LaneCases(moved);
+    }
+    // Lane i's cases as Undefined bits.
+    std::uint8_t at(int lane) const {
+        std::uint8_t r = 0;
+        for (int k = 0; k < kUndefinedCases; ++k) r |= std::uint8_t((bits_ >> (16 * k + lane) & 1u) << k);
+        return r;
+    }
+
+private:
+    explicit LaneCases(std::uint64_t bits) : bits_(bits) {}
+    std::uint64_t bits_ = 0;
+};
+
+// A mask's lanes as bits (bit i: lane i).
+template <class M>
+std::uint32_t lane_bits(const M& m) {
+    if (!any(m)) return 0;
+    std::uint32_t bits = 0;
+    for (int i = 0; i < int(m.size()); ++i) bits |= std::uint32_t(bool(m[i])) << i;
+    return bits;
+}
+
+// A comparison's mask with the cases of the values compared.
+template <class L>
+struct CheckedMask {
+    typename L::Mask m;
+    LaneCases cases;
+
+    friend CheckedMask operator&&(const CheckedMask& a, const CheckedMask& b) { return {a.m && b.m, a.cases | b.cases}; }
+    friend CheckedMask operator||(const CheckedMask& a, const CheckedMask& b) { return {a.m || b.m, a.cases | b.cases}; }
+    friend CheckedMask operator!(const CheckedMask& a) { return {!a.m, a.cases}; }
+    friend bool any(const CheckedMask& a) { return any(a.m); }
+    friend bool all(const CheckedMask& a) { return all(a.m); }
+    friend bool lane(const CheckedMask& a, int i) { return a.m[i]; }
+};
+
+template <class L>
+class Checked {
+public:
+    using value_type = typename L::value_type;
+    using layout = typename L::layout;
+    using Mask = CheckedMask<L>;
+    static constexpr int size = L::size;
+    static_assert(size <= LaneCases::kMaxLanes, "LaneCases holds 16 lanes");
+
+    L v;
+    LaneCases cases;
+
+    Checked() = default;
+    Checked(value_type x) : v(x) {}  // NOLINT: broadcast, as GLSL promotes a literal
+    template <class S>
+        requires(std::is_arithmetic_v<S> && !std::is_same_v<S, value_type>)
+    Checked(S x) : v(x) {}  // NOLINT
+    Checked(const L& value, LaneCases c) : v(value), cases(c) {}
+
+    // Values from outside the shader (varyings, texels): a NaN among them is flagged on entry.
+    static Checked load(const value_type* p) {
+        const L x = L::load(p);
+        return {x, LaneCases::on(lane_bits(isnan(x)), Undefined::NaN)};
+    }
+    void store(value_type* p) const { v.store(p); }
+    value_type operator[](int i) const { return v[i]; }
+
+    template <class Index>
+    Checked permute(Index index) const {
+        return {v.permute(index), cases.permute(index, size)};
+    }
+
+    // The result r of an operation on `operands`: their cases, the cases `hit`, and NaN on the
+    // lanes where r is NaN and no operand was.
+    template <class... Operands>
+    static Checked result(const L& r, LaneCases hit, const Operands&... operands) {
+        LaneCases c = (hit | ... | operands.cases);
+        const auto nan = isnan(r);
+        if (any(nan)) c |= LaneCases::on(lane_bits((nan && ... && !isnan(operands.v))), Undefined::NaN);
+        return {r, c};
+    }
+    // A built-in GLSL leaves undefined where `outside` holds, r computed as L computes it.
+    template <class... Operands>
+    static Checked builtin(const L& r, const Mask& outside, const Operands&... operands) {
+        return result(r, outside.cases | LaneCases::on(lane_bits(outside.m), Undefined::Argument), operands...);
+    }
+
+    friend Checked operator-(const Checked& a) { return {-a.v, a.cases}; }
+    friend Checked operator+(const Checked& a, const Checked& b) { return result(a.v + b.v, {}, a, b); }
+    friend Checked operator-(const Checked& a, const Checked& b) { return result(a.v - b.v, {}, a, b); }
+    friend Checked operator*(const Checked& a, const Checked& b) { return result(a.v * b.v, {}, a, b); }
+    friend Checked operator/(const Checked& a, const Checked& b) {
+        return result(a.v / b.v, LaneCases::on(lane_bits(b.v == L(0.0f)), Undefined::DivisionByZero), a, b);
+    }
+    Checked& operator+=(const Checked& b) { return *this = *this + b; }
+    Checked& operator-=(const Checked& b) { return *this = *this - b; }
+    Checked& operator*=(const Checked& b) { return *this = *this * b; }
+    Checked& operator/=(const Checked& b) { return *this = *this / b; }
+
+    friend Mask operator<(const Checked& a, const Checked& b) { return {a.v < b.v, a.cases | b.cases}; }
+    friend Mask operator<=(const Checked& a, const Checked& b) { return {a.v <= b.v, a.cases | b.cases}; }
+    friend Mask operator>(const Checked& a, const Checked& b) { return {a.v > b.v, a.cases | b.cases}; }
+    friend Mask operator>=(const Checked& a, const Checked& b) { return {a.v >= b.v, a.cases | b.cases}; }
+    friend Mask operator==(const Checked& a, const Checked& b) { return {a.v == b.v, a.cases | b.cases}; }
+    friend Mask operator!=(const Checked& a, const Checked& b) { return {a.v != b.v, a.cases | b.cases}; }
+
+    friend Checked select(const Mask& m, const Checked& a, const Checked& b) {
+        LaneCases c = m.cases;
+        if (!a.cases.none() || !b.cases.none()) {
+            const std::uint32_t picked = lane_bits(m.m);
+            c |= a.cases.only(picked) | b.cases.only(~picked);
+        }
+        return {select(m.m, a.v, b.v), c};
+    }
+    friend Mask isnan(const Checked& a) { return {isnan(a.v), a.cases}; }
+    friend Mask isinf(const Checked& a) { return {isinf(a.v), a.cases}; }
+    friend Checked min(const Checked& a, const Checked& b) { return result(min(a.v, b.v), {}, a, b); }
+    friend Checked max(const Checked& a, const Checked& b) { return result(max(a.v, b.v), {}, a, b); }
+
+    friend Checked floor(const Checked& a) { return result(floor(a.v), {}, a); }
+    friend Checked ceil(const Checked& a) { return result(ceil(a.v), {}, a); }
+    friend Checked trunc(const Checked& a) { return result(trunc(a.v), {}, a); }
+    friend Checked abs(const Checked& a) { return result(abs(a.v), {}, a); }
+    friend Checked sin(const Checked& a) { return result(sin(a.v), {}, a); }
+    friend Checked cos(const Checked& a) { return result(cos(a.v), {}, a); }
+    friend Checked tan(const Checked& a) { return result(tan(a.v), {}, a); }
+    friend Checked atan(const Checked& a) { return result(atan(a.v), {}, a); }
+    friend Checked exp(const Checked& a) { return result(exp(a.v), {}, a); }
+    friend Checked exp2(const Checked& a) { return result(exp2(a.v), {}, a); }
+    // GLSL: undefined if x < 0 (sqrt), x <= 0 (log, log2), x < 0 or x = 0 and y <= 0 (pow),
+    // x = y = 0 (atan(y, x)).
+    friend Checked sqrt(const Checked& a) { return builtin(sqrt(a.v), a < Checked(0.0f), a); }
+    friend Checked log(const Checked& a) { return builtin(log(a.v), a <= Checked(0.0f), a); }
+    friend Checked log2(const Checked& a) { return builtin(log2(a.v), a <= Checked(0.0f), a); }
+    friend Checked pow(const Checked& a, const Checked& b) {
+        return builtin(pow(a.v, b.v), a < Checked(0.0f) || (a == Checked(0.0f) && b <= Checked(0.0f)), a, b);
+    }
+    friend Checked atan(const Checked& y, const Checked& x) {
+        return builtin(atan(y.v, x.v), y == Checked(0.0f) && x == Checked(0.0f), y, x);
+    }
+
+    friend constexpr int lane_count(const Checked&) { return size; }
+    friend value_type lane(const Checked& a, int i) { return a.v[i]; }
+};
+
+}  // namespace qs
