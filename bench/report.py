@@ -96,9 +96,20 @@ def stability_section(root):
         return []
     with open(path) as f:
         lines = [l.rstrip() for l in f if l.strip() and not l.startswith(("Filters:", "~", "="))]
-    return ["<h2>Numerical stability</h2><p>Printed by the tests tagged [stability] in this run; each "
-            "also asserts the documented behaviour (see the README).</p><pre>",
-            html.escape("\n".join(lines)), "</pre>"]
+    parts = ["<h2>Numerical stability</h2><p>Printed by the tests tagged [stability] in this run; each "
+             "also asserts the documented behaviour (see the README).</p><pre>",
+             html.escape("\n".join(lines)), "</pre>"]
+    masks = [s for s in ("float_env_probe", "bricks_aa")
+             if os.path.exists(os.path.join(root, f"undefined-{s}-mask.png"))]
+    if masks:
+        parts.append("<h3>Undefined-case masks</h3><p><code>quadshade render --undefined-mask</code>, "
+                     "render and mask side by side: red NaN produced, green division by zero, blue a "
+                     "built-in outside its domain (smoothstep e0 &ge; e1, sqrt, log, pow, inversesqrt, "
+                     "clamp, atan).</p>")
+        for s in masks:
+            parts.append(f"<p>{s}: <img src='undefined-{s}.png' width=256> "
+                         f"<img src='undefined-{s}-mask.png' width=256 style='image-rendering: pixelated'></p>")
+    return parts
 
 
 def main():

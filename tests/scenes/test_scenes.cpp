@@ -416,6 +416,16 @@ TEST_CASE("the undefined-case mask: aastep with a zero derivative is flagged, an
             const Framebuffer checked = render_checked(plane, name, 40, 24, true);
             CHECK(plain.undefined.empty());
             CHECK(std::memcmp(plain.rgba.data(), checked.rgba.data(), plain.rgba.size() * sizeof(float)) == 0);
+            std::size_t cases[3] = {}, pixels = 0;
+            for (std::uint8_t u : checked.undefined) {
+                pixels += u != 0;
+                for (int k = 0; k < 3; ++k) cases[k] += (u >> k) & 1u;
+            }
+            if (pixels > 0) {
+                std::printf("undefined-case mask, plane 40x24: %-20s %4zu of %d pixels (NaN %zu, division by zero %zu, "
+                            "outside a built-in's domain %zu)\n",
+                            name.c_str(), pixels, 40 * 24, cases[0], cases[1], cases[2]);
+            }
         }
         Scene fig = load_scene(kFigure);
         const Framebuffer plain = render_checked(fig, "", 158, 50, false);
