@@ -6,7 +6,8 @@
 
 #include <array>
 #include <cstdint>
-#include <experimental/simd>
+#include <cstring>
+#include <utility>
 
 #include "program.h"
 
@@ -38,38 +39,50 @@ inline std::uint32_t running_quads(std::uint32_t covered) {
 }
 
 namespace block_detail {
-namespace stdx = std::experimental;
-using Row = stdx::simd<float, stdx::simd_abi::deduce_t<float, kBatchLanes>>;
+// Sixteen floats as a GCC/Clang generic vector: __builtin_shufflevector picks from two of them
+// with constant indices, one instruction on AVX-512 (vpermt2ps), a few on narrower ISAs.
+typedef float Floats16 __attribute__((vector_size(16 * sizeof(float))));
 
-// Row R's float j is channel j % 4 of the pixel at dx = j / 4: a single-source permute of each
-// channel, then blends by component, which compile to vector permutes, not 64 scalar moves.
-// The channels are read straight from the caller's memory: a copy in a local array first made
-// the compiler load it again at an offset, stalling on store forwarding.
-template <int R>
-[[gnu::always_inline]] inline Row pixel_row(const float* const (&rgba)[4]) {
-    auto pick = [](const float* channel) {
-        Row v(channel, stdx::element_aligned);
-        return Row([&](auto j) { return v[kLaneAt[R][int(j) / 4]]; });
-    };
-    const Row component([](auto j) { return float(int(j) % 4); });
-    Row row = pick(rgba[0]);
-    where(component == 1.0f, row) = pick(rgba[1]);
-    where(component == 2.0f, row) = pick(rgba[2]);
-    where(component == 3.0f, row) = pick(rgba[3]);
-    return row;
+// Lanes 8 h .. 8 h + 7 of x and y interleaved: x(8h), y(8h), x(8h+1), y(8h+1), ...
+template <int Half, int... J>
+void interleave(const Floats16& x, const Floats16& y, Floats16& out, std::integer_sequence<int, J...>) {
+    out = __builtin_shufflevector(x, y, ((J % 2) * 16 + Half * 8 + J / 2)...);
+}
+
+// Block row R from the interleaved halves holding its lanes: output float j is component j % 4
+// of the pixel at dx = j / 4, lane L = kLaneAt[R][dx]; red and green come from `rg`, blue and
+// alpha from `ba`, each at 2 (L mod 8) + component.
+template <int R, int... J>
+void row(const Floats16& rg, const Floats16& ba, Floats16& out, std::integer_sequence<int, J...>) {
+    out = __builtin_shufflevector(
+        rg, ba, ((J % 4) < 2 ? 2 * (kLaneAt[R][J / 4] % 8) + J % 4 : 16 + 2 * (kLaneAt[R][J / 4] % 8) + J % 4 - 2)...);
 }
 }  // namespace block_detail
 
 // Transposes a block's colour from lane order, one array per channel (`rgba[c][i]` is lane i),
 // into four framebuffer rows of four RGBA pixels: rows[r] receives the 16 floats of pixels
-// (0..3, r) of the block, y down.
+// (0..3, r) of the block, y down. Eight two-source shuffles: rows 0 and 1 hold lanes 0..7 (the
+// upper quads), rows 2 and 3 lanes 8..15.
 inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kBlock]) {
-    using block_detail::pixel_row;
-    namespace stdx = std::experimental;
-    pixel_row<0>(rgba).copy_to(rows[0], stdx::element_aligned);
-    pixel_row<1>(rgba).copy_to(rows[1], stdx::element_aligned);
-    pixel_row<2>(rgba).copy_to(rows[2], stdx::element_aligned);
-    pixel_row<3>(rgba).copy_to(rows[3], stdx::element_aligned);
+    using namespace block_detail;
+    static_assert(kLaneAt[0][0] < 8 && kLaneAt[1][3] < 8 && kLaneAt[2][0] >= 8 && kLaneAt[3][0] >= 8);
+    constexpr auto sixteen = std::make_integer_sequence<int, 16>();
+    Floats16 r, g, b, a;
+    std::memcpy(&r, rgba[0], sizeof r);
+    std::memcpy(&g, rgba[1], sizeof g);
+    std::memcpy(&b, rgba[2], sizeof b);
+    std::memcpy(&a, rgba[3], sizeof a);
+    Floats16 rg_low, rg_high, ba_low, ba_high;
+    interleave<0>(r, g, rg_low, sixteen);
+    interleave<1>(r, g, rg_high, sixteen);
+    interleave<0>(b, a, ba_low, sixteen);
+    interleave<1>(b, a, ba_high, sixteen);
+    Floats16 out[kBlock];
+    row<0>(rg_low, ba_low, out[0], sixteen);
+    row<1>(rg_low, ba_low, out[1], sixteen);
+    row<2>(rg_high, ba_high, out[2], sixteen);
+    row<3>(rg_high, ba_high, out[3], sixteen);
+    for (int i = 0; i < kBlock; ++i) std::memcpy(rows[i], &out[i], sizeof out[i]);
 }
 
 }  // namespace qs

@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <experimental/simd>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -25,6 +26,8 @@
 namespace qs {
 
 namespace {
+
+namespace stdx = std::experimental;
 
 
 // A draw's vertex stage output and the mode its fragments are shaded in.
@@ -45,7 +48,6 @@ struct Batch {
     alignas(64) int y[kBatchLanes];
     std::uint32_t write = 0;
     int count = 0;
-    int block = -1;  // tile index of lane 0 when the batch is one whole block in lane order
 };
 
 // Renders the triangles of one tile, in submission order, straight into the tile's part of the
@@ -88,8 +90,23 @@ public:
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y) return;
+        // Each edge function at the blocks' top-left pixels, stepped block to block, and its
+        // largest and smallest offset from there over the block's pixel centres: the corners
+        // its gradient points to and away from.
+        BlockEdges edges;
+        for (int k = 0; k < 3; ++k) {
+            const EdgeFunction& e = t.edges[std::size_t(k)];
+            const std::int64_t sx = e.dcdx * (kBlock - 1), sy = e.dcdy * (kBlock - 1);
+            edges.most[k] = std::max<std::int64_t>(sx, 0) + std::max<std::int64_t>(sy, 0);
+            edges.least[k] = std::min<std::int64_t>(sx, 0) + std::min<std::int64_t>(sy, 0);
+        }
+        const int bx0 = x0 + ((lo_x - x0) & ~(kBlock - 1));
         for (int by = y0 + ((lo_y - y0) & ~(kBlock - 1)); by <= hi_y; by += kBlock) {
-            for (int bx = x0 + ((lo_x - x0) & ~(kBlock - 1)); bx <= hi_x; bx += kBlock) block(bx, by);
+            for (int k = 0; k < 3; ++k) edges.at[k] = t.edges[std::size_t(k)].at(bx0, by);
+            for (int bx = bx0; bx <= hi_x; bx += kBlock) {
+                block(bx, by, edges);
+                for (int k = 0; k < 3; ++k) edges.at[k] += t.edges[std::size_t(k)].dcdx * kBlock;
+            }
         }
         flush(pending_);
     }
@@ -99,17 +116,21 @@ public:
     std::uint64_t written() const { return written_; }
 
 private:
+    struct BlockEdges {
+        std::int64_t at[3];     // edge k at the block's top-left pixel centre
+        std::int64_t most[3];   // the largest offset from there over the block's pixel centres
+        std::int64_t least[3];  // the smallest
+    };
+
     // Coverage, early depth and shading of the 4x4 block whose top-left pixel is (bx, by).
-    void block(int bx, int by) {
+    void block(int bx, int by, const BlockEdges& e) {
         const auto& edges = tri_->edges;
-        // The edge functions are linear: a block is outside an edge when its four corner pixel
-        // centres are, and fully inside when they all are.
+        // The edge functions are linear: the block is outside an edge when its largest value
+        // there is not inside, fully inside when its smallest is.
         bool full = bx >= 0 && by >= 0 && bx + kBlock <= fb_.width && by + kBlock <= fb_.height;
-        for (const EdgeFunction& e : edges) {
-            const std::int64_t c00 = e.at(bx, by), sx = e.dcdx * (kBlock - 1), sy = e.dcdy * (kBlock - 1);
-            const std::int64_t c10 = c00 + sx, c01 = c00 + sy, c11 = c00 + sx + sy;
-            if (c00 <= 0 && c10 <= 0 && c01 <= 0 && c11 <= 0) return;
-            full &= c00 > 0 && c10 > 0 && c01 > 0 && c11 > 0;
+        for (int k = 0; k < 3; ++k) {
+            if (e.at[k] + e.most[k] <= 0) return;
+            full &= e.at[k] + e.least[k] > 0;
         }
         std::uint32_t mask = kAllLanes;
         if (!full) {
@@ -146,13 +167,29 @@ private:
         }
     }
 
+    // Shades the whole block whose top-left pixel is (bx, by); `mask`: the lanes that write.
     void shade_block(int bx, int by, std::uint32_t mask) {
-        Batch b;
-        for (int i = 0; i < kBatchLanes; ++i) b.x[i] = bx + kLaneDx[i], b.y[i] = by + kLaneDy[i];
-        b.count = kBatchLanes;
-        b.write = mask;
-        b.block = block_base(bx, by);
-        flush(b);
+        const Floats fx = Floats(float(bx)) + Floats([](auto i) { return float(kLaneDx[i]); });
+        const Floats fy = Floats(float(by)) + Floats([](auto i) { return float(kLaneDy[i]); });
+        interpolate(fx, fy);
+        draw_->call->program->shade(draw_->mode, in_, draw_->call->uniforms, out_);
+        lanes_ += kBatchLanes;
+        if (mask != kAllLanes) {
+            for (int i = 0; i < kBatchLanes; ++i) {
+                if (mask >> i & 1) write_lane(i, bx + kLaneDx[i], by + kLaneDy[i]);
+            }
+            return;
+        }
+        // The block lies inside the image: its colour goes out as four rows.
+        const int block = ((by - y0_) / kBlock) * (kTileSize / kBlock) + (bx - x0_) / kBlock;
+        block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
+                      {fb_.pixel(bx, by), fb_.pixel(bx, by + 1), fb_.pixel(bx, by + 2), fb_.pixel(bx, by + 3)});
+        touched_[std::size_t(block)] = true;
+        if (draw_->mode.check_undefined) {
+            for (int i = 0; i < kBatchLanes; ++i) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = out_.undefined[i];
+        }
+        if (draw_->depth_test) std::copy_n(in_.frag_coord[2], kBatchLanes, &depth_[block * kBatchLanes]);
+        written_ += kBatchLanes;
     }
 
     // Adds one lane to the gathered batch; quads are appended four lanes at a time, so they stay
@@ -177,104 +214,79 @@ private:
         return pass;
     }
 
-    // A plane at the batch's pixel centres, one form or the other for the whole batch (see
-    // plane_equation.h), times `scale` per lane when given (perspective division). `out` never
-    // aliases the inputs, so the loops vectorize.
-    static void evaluate(const PlaneEquation& p, const float* __restrict fx, const float* __restrict fy,
-                         const float* __restrict scale, float* __restrict out, bool fused) {
-        if (fused) {
-            for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at_fused(fx[i], fy[i]);
-        } else {
-            for (int i = 0; i < kBatchLanes; ++i) out[i] = p.at(fx[i], fy[i]);
+    using Floats = stdx::simd<float, stdx::simd_abi::deduce_t<float, kBatchLanes>>;
+
+    // A plane at the lanes' pixel centres, in one form or the other (see plane_equation.h).
+    [[gnu::always_inline]] static Floats evaluate(const PlaneEquation& p, const Floats& fx, const Floats& fy,
+                                                  bool fused) {
+        if (fused) return stdx::fma(Floats(p.dady), fy, stdx::fma(Floats(p.dadx), fx, Floats(p.a0)));
+        return (Floats(p.a0) + Floats(p.dadx) * fx) + Floats(p.dady) * fy;
+    }
+
+    // The shader inputs of the lanes at pixels (fx, fy) (framebuffer coordinates, y down) from
+    // the current triangle's planes.
+    void interpolate(const Floats& fx, const Floats& fy) {
+        const TriangleSetup& t = *tri_;
+        const PreparedDraw& d = *draw_;
+        constexpr auto aligned = stdx::vector_aligned;
+        const Floats inv_w = evaluate(t.inv_w, fx, fy, d.fused);
+        (fx + 0.5f).copy_to(in_.frag_coord[0], aligned);
+        (Floats(float(fb_.height)) - (fy + 0.5f)).copy_to(in_.frag_coord[1], aligned);  // GL window y points up
+        evaluate(t.z, fx, fy, d.fused).copy_to(in_.frag_coord[2], aligned);
+        inv_w.copy_to(in_.frag_coord[3], aligned);
+        const bool analytic = d.mode.derivatives == Derivatives::Analytic;
+        if (analytic) {
+            // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
+            Floats(t.z.dadx).copy_to(in_.frag_coord_dx[0], aligned);
+            Floats(-t.z.dady).copy_to(in_.frag_coord_dy[0], aligned);
+            Floats(t.inv_w.dadx).copy_to(in_.frag_coord_dx[1], aligned);
+            Floats(-t.inv_w.dady).copy_to(in_.frag_coord_dy[1], aligned);
         }
-        if (scale) {
-            for (int i = 0; i < kBatchLanes; ++i) out[i] *= scale[i];
+        if (d.varyings == 0) return;
+        // Perspective division; an affine triangle (equal w at its vertices, 1/w a constant
+        // plane) shares one reciprocal, the same number each lane would compute.
+        const Floats rcp_inv_w = (t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f) ? Floats(1.0f / t.inv_w.a0)
+                                                                                  : Floats(1.0f) / inv_w;
+        for (int v = 0; v < d.varyings; ++v) {
+            const PlaneEquation& p = t.varyings[v];
+            const bool flat = d.flat >> v & 1;
+            const Floats value = flat ? Floats(p.a0) : evaluate(p, fx, fy, d.fused) * rcp_inv_w;
+            value.copy_to(in_.varying[v], aligned);
+            if (analytic) {
+                // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
+                // varying enters as 0 (its plane is constant: zero derivatives).
+                const Floats v0 = flat ? Floats(0.0f) : value;
+                ((Floats(p.dadx) - v0 * Floats(t.inv_w.dadx)) * rcp_inv_w).copy_to(in_.varying_dx[v], aligned);
+                (-((Floats(p.dady) - v0 * Floats(t.inv_w.dady)) * rcp_inv_w)).copy_to(in_.varying_dy[v], aligned);
+            }
         }
     }
 
-    // Interpolates, shades and writes one batch.
+    // Interpolates, shades and writes the gathered batch.
     void flush(Batch& b) {
         if (b.count == 0) return;
-        const TriangleSetup& t = *tri_;
-        const PreparedDraw& d = *draw_;
         // Unused lanes repeat lane 0 (a valid position) and write nothing.
         for (int i = b.count; i < kBatchLanes; ++i) b.x[i] = b.x[0], b.y[i] = b.y[0];
-        const float height = float(fb_.height);
-        alignas(64) float fx[kBatchLanes], fy[kBatchLanes], rcp_inv_w[kBatchLanes];
-        if (b.block >= 0) {  // a whole block: positions from its corner
-            const float bx = float(b.x[2]), by = float(b.y[2]);  // lane 2 is the top-left pixel
-            for (int i = 0; i < kBatchLanes; ++i) fx[i] = bx + kLaneDxF[std::size_t(i)], fy[i] = by + kLaneDyF[std::size_t(i)];
-        } else {
-            for (int i = 0; i < kBatchLanes; ++i) fx[i] = float(b.x[i]), fy[i] = float(b.y[i]);
-        }
-        auto eval = [&](const PlaneEquation& p, float* out) { evaluate(p, fx, fy, nullptr, out, d.fused); };
-        eval(t.inv_w, in_.frag_coord[3]);
-        eval(t.z, in_.frag_coord[2]);
-        for (int i = 0; i < kBatchLanes; ++i) {
-            in_.frag_coord[0][i] = fx[i] + 0.5f;
-            in_.frag_coord[1][i] = height - (fy[i] + 0.5f);  // GL window y points up
-        }
-        // Perspective division, per lane; an affine triangle (equal w at its vertices, 1/w a
-        // constant plane) shares one reciprocal, the same number each lane would compute.
-        if (d.varyings > 0) {
-            if (t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f) {
-                std::fill_n(rcp_inv_w, kBatchLanes, 1.0f / t.inv_w.a0);
-            } else {
-                for (int i = 0; i < kBatchLanes; ++i) rcp_inv_w[i] = 1.0f / in_.frag_coord[3][i];
-            }
-        }
-        for (int v = 0; v < d.varyings; ++v) {
-            const PlaneEquation& p = t.varyings[v];
-            if (d.flat >> v & 1) {
-                std::fill_n(in_.varying[v], kBatchLanes, p.a0);
-                continue;
-            }
-            evaluate(p, fx, fy, rcp_inv_w, in_.varying[v], d.fused);
-        }
-        if (d.mode.derivatives == Derivatives::Analytic) {
-            // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W.
-            // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
-            for (int v = 0; v < d.varyings; ++v) {
-                const PlaneEquation& p = t.varyings[v];
-                const bool flat = d.flat >> v & 1;  // constant: zero derivatives
-                for (int i = 0; i < kBatchLanes; ++i) {
-                    const float value = flat ? 0.0f : in_.varying[v][i];
-                    in_.varying_dx[v][i] = (p.dadx - value * t.inv_w.dadx) * rcp_inv_w[i];
-                    in_.varying_dy[v][i] = -(p.dady - value * t.inv_w.dady) * rcp_inv_w[i];
-                }
-            }
-            std::fill_n(in_.frag_coord_dx[0], kBatchLanes, t.z.dadx);
-            std::fill_n(in_.frag_coord_dy[0], kBatchLanes, -t.z.dady);
-            std::fill_n(in_.frag_coord_dx[1], kBatchLanes, t.inv_w.dadx);
-            std::fill_n(in_.frag_coord_dy[1], kBatchLanes, -t.inv_w.dady);
-        }
-        d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
+        interpolate(Floats([&](auto i) { return float(b.x[i]); }), Floats([&](auto i) { return float(b.y[i]); }));
+        draw_->call->program->shade(draw_->mode, in_, draw_->call->uniforms, out_);
         lanes_ += std::uint64_t(b.count);
-        if (b.block >= 0 && b.write == kAllLanes) {  // a whole block inside the image
-            const int block = b.block / kBatchLanes, x = block_x(block), y = block_y(block);
-            block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
-                          {fb_.pixel(x, y), fb_.pixel(x, y + 1), fb_.pixel(x, y + 2), fb_.pixel(x, y + 3)});
-            touched_[std::size_t(block)] = true;
-            if (d.mode.check_undefined) {
-                for (int i = 0; i < kBatchLanes; ++i) *undefined_at(x + kLaneDx[i], y + kLaneDy[i]) = out_.undefined[i];
-            }
-            if (d.depth_test) std::copy_n(in_.frag_coord[2], kBatchLanes, &depth_[b.block]);
-            written_ += kBatchLanes;
-            return;
-        }
         for (int i = 0; i < b.count; ++i) {
-            if (!(b.write >> i & 1)) continue;
-            const int t = tile_index(b.x[i], b.y[i]);
-            if (!touched_[std::size_t(t / kBatchLanes)]) {
-                clear_block(t / kBatchLanes);
-                touched_[std::size_t(t / kBatchLanes)] = true;
-            }
-            float* p = fb_.pixel(b.x[i], b.y[i]);
-            p[0] = out_.rgba[0][i], p[1] = out_.rgba[1][i], p[2] = out_.rgba[2][i], p[3] = out_.rgba[3][i];
-            if (d.mode.check_undefined) *undefined_at(b.x[i], b.y[i]) = out_.undefined[i];
-            if (d.depth_test) depth_[t] = in_.frag_coord[2][i];
-            ++written_;
+            if (b.write >> i & 1) write_lane(i, b.x[i], b.y[i]);
         }
+    }
+
+    // Writes lane i's colour (and depth, and undefined cases) to pixel (x, y).
+    void write_lane(int i, int x, int y) {
+        const int t = tile_index(x, y);
+        if (!touched_[std::size_t(t / kBatchLanes)]) {
+            clear_block(t / kBatchLanes);
+            touched_[std::size_t(t / kBatchLanes)] = true;
+        }
+        float* p = fb_.pixel(x, y);
+        p[0] = out_.rgba[0][i], p[1] = out_.rgba[1][i], p[2] = out_.rgba[2][i], p[3] = out_.rgba[3][i];
+        if (draw_->mode.check_undefined) *undefined_at(x, y) = out_.undefined[i];
+        if (draw_->depth_test) depth_[t] = in_.frag_coord[2][i];
+        ++written_;
     }
 
     // Framebuffer position of a tile block's top-left pixel.

@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 
+#include "block_layout.h"
 #include "gltf.h"
 #include "scene_render.h"
 #include "test_program.h"
@@ -52,6 +53,19 @@ Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Prog
 float covered(const Framebuffer& fb, int x, int y) { return fb.pixel(x, fb.height - 1 - y)[3]; }
 
 }  // namespace
+
+TEST_CASE("a block's colours go from lane order to framebuffer rows, each pixel where its lane lies", "[raster][layout]") {
+    // Channel c of lane i holds 100 c + i: each output float names where it came from.
+    alignas(64) float channels[4][kBatchLanes];
+    for (int c = 0; c < 4; ++c) {
+        for (int i = 0; i < kBatchLanes; ++i) channels[c][i] = float(100 * c + i);
+    }
+    float rows[kBlock][4 * kBlock];
+    block_to_rows({channels[0], channels[1], channels[2], channels[3]}, {rows[0], rows[1], rows[2], rows[3]});
+    for (int i = 0; i < kBatchLanes; ++i) {
+        for (int c = 0; c < 4; ++c) CHECK(rows[kLaneDy[i]][4 * kLaneDx[i] + c] == float(100 * c + i));
+    }
+}
 
 TEST_CASE("a closed fan covers every pixel inside exactly once and nothing outside", "[raster][coverage]") {
     std::mt19937 rng(1234);
