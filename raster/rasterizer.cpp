@@ -181,7 +181,7 @@ private:
             return;
         }
         // The block lies inside the image: its colour goes out as four rows.
-        const int block = ((by - y0_) / kBlock) * (kTileSize / kBlock) + (bx - x0_) / kBlock;
+        const int block = block_base(bx, by) / kBatchLanes;
         block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
                       {fb_.pixel(bx, by), fb_.pixel(bx, by + 1), fb_.pixel(bx, by + 2), fb_.pixel(bx, by + 3)});
         touched_[std::size_t(block)] = true;
