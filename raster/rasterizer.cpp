@@ -2,18 +2,18 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <bitset>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <experimental/simd>
 #include <vector>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -27,8 +27,6 @@ namespace qs {
 
 namespace {
 
-namespace stdx = std::experimental;
-
 
 // A draw's vertex stage output and the mode its fragments are shaded in.
 struct PreparedDraw {
@@ -36,6 +34,7 @@ struct PreparedDraw {
     ShadeMode mode;
     bool quads;       // shade 2x2 quads with helper lanes
     bool depth_test;  // LESS test and depth write
+    bool frag_coord;  // interpolate gl_FragCoord
     int varyings;
     unsigned flat;    // flat varyings
     bool fused;       // fused plane evaluation
@@ -58,8 +57,14 @@ struct Batch {
 // Depth, when a draw needs it, stays tile-local in lane order and is stored once at the end.
 class TileRenderer {
 public:
-    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, int x0, int y0, glm::vec4 clear)
-        : fb_(fb), draws_(draws), x0_(x0), y0_(y0), clear_(clear) {
+    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear)
+        : fb_(fb), draws_(draws), clear_(clear) {}
+
+    // Starts the tile whose top-left pixel is (x0, y0); one renderer per thread renders its tiles
+    // one after the other.
+    void start(int x0, int y0) {
+        x0_ = x0, y0_ = y0;
+        touched_.reset();
         if (!fb_.depth.empty()) std::fill_n(depth_, kTilePixels, 1.0f);
     }
 
@@ -87,6 +92,11 @@ public:
         tri_ = &t;
         draw_ = &d;
         pending_.count = 0, pending_.write = 0;
+        if (!d.frag_coord && frag_coord_set_) {
+            // A shader that reads gl_FragCoord without saying so reads NaN, not the last draw's.
+            std::fill_n(&in_.frag_coord[0][0], 4 * kBatchLanes, std::numeric_limits<float>::quiet_NaN());
+        }
+        frag_coord_set_ = d.frag_coord || d.depth_test;
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y) return;
@@ -169,9 +179,9 @@ private:
 
     // Shades the whole block whose top-left pixel is (bx, by); `mask`: the lanes that write.
     void shade_block(int bx, int by, std::uint32_t mask) {
-        const Floats fx = Floats(float(bx)) + Floats([](auto i) { return float(kLaneDx[i]); });
-        const Floats fy = Floats(float(by)) + Floats([](auto i) { return float(kLaneDy[i]); });
-        interpolate(fx, fy);
+        alignas(64) float x[kBatchLanes], y[kBatchLanes];
+        for (int i = 0; i < kBatchLanes; ++i) x[i] = float(bx + kLaneDx[i]), y[i] = float(by + kLaneDy[i]);
+        interpolate(x, y);
         draw_->call->program->shade(draw_->mode, in_, draw_->call->uniforms, out_);
         lanes_ += kBatchLanes;
         if (mask != kAllLanes) {
@@ -214,50 +224,68 @@ private:
         return pass;
     }
 
-    using Floats = stdx::simd<float, stdx::simd_abi::deduce_t<float, kBatchLanes>>;
-
-    // A plane at the lanes' pixel centres, in one form or the other (see plane_equation.h).
-    [[gnu::always_inline]] static Floats evaluate(const PlaneEquation& p, const Floats& fx, const Floats& fy,
-                                                  bool fused) {
-        if (fused) return stdx::fma(Floats(p.dady), fy, stdx::fma(Floats(p.dadx), fx, Floats(p.a0)));
-        return (Floats(p.a0) + Floats(p.dadx) * fx) + Floats(p.dady) * fy;
+    // The shader inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) from the
+    // current triangle's planes. Plain loops over the lanes, which the compiler turns into one
+    // vector instruction per register (std::fma too, on FMA hosts); each lane computes exactly
+    // what PlaneEquation::at does.
+    void interpolate(const float (&x)[kBatchLanes], const float (&y)[kBatchLanes]) {
+        if (draw_->fused) {
+            interpolate<true>(x, y);
+        } else {
+            interpolate<false>(x, y);
+        }
     }
 
-    // The shader inputs of the lanes at pixels (fx, fy) (framebuffer coordinates, y down) from
-    // the current triangle's planes.
-    void interpolate(const Floats& fx, const Floats& fy) {
+    template <bool Fused>
+    void interpolate(const float (&x)[kBatchLanes], const float (&y)[kBatchLanes]) {
         const TriangleSetup& t = *tri_;
         const PreparedDraw& d = *draw_;
-        constexpr auto aligned = stdx::vector_aligned;
-        const Floats inv_w = evaluate(t.inv_w, fx, fy, d.fused);
-        (fx + 0.5f).copy_to(in_.frag_coord[0], aligned);
-        (Floats(float(fb_.height)) - (fy + 0.5f)).copy_to(in_.frag_coord[1], aligned);  // GL window y points up
-        evaluate(t.z, fx, fy, d.fused).copy_to(in_.frag_coord[2], aligned);
-        inv_w.copy_to(in_.frag_coord[3], aligned);
+        const auto at = [](const PlaneEquation& p, float px, float py) { return Fused ? p.at_fused(px, py) : p.at(px, py); };
+        const float height = float(fb_.height);
+        if (d.frag_coord) {
+            for (int i = 0; i < kBatchLanes; ++i) {
+                in_.frag_coord[0][i] = x[i] + 0.5f;
+                in_.frag_coord[1][i] = height - (y[i] + 0.5f);  // GL window y points up
+                in_.frag_coord[2][i] = at(t.z, x[i], y[i]);
+                in_.frag_coord[3][i] = at(t.inv_w, x[i], y[i]);
+            }
+        } else if (d.depth_test) {
+            for (int i = 0; i < kBatchLanes; ++i) in_.frag_coord[2][i] = at(t.z, x[i], y[i]);  // the depth written
+        }
         const bool analytic = d.mode.derivatives == Derivatives::Analytic;
-        if (analytic) {
+        if (analytic && d.frag_coord) {
             // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
-            Floats(t.z.dadx).copy_to(in_.frag_coord_dx[0], aligned);
-            Floats(-t.z.dady).copy_to(in_.frag_coord_dy[0], aligned);
-            Floats(t.inv_w.dadx).copy_to(in_.frag_coord_dx[1], aligned);
-            Floats(-t.inv_w.dady).copy_to(in_.frag_coord_dy[1], aligned);
+            std::fill_n(in_.frag_coord_dx[0], kBatchLanes, t.z.dadx);
+            std::fill_n(in_.frag_coord_dy[0], kBatchLanes, -t.z.dady);
+            std::fill_n(in_.frag_coord_dx[1], kBatchLanes, t.inv_w.dadx);
+            std::fill_n(in_.frag_coord_dy[1], kBatchLanes, -t.inv_w.dady);
         }
         if (d.varyings == 0) return;
         // Perspective division; an affine triangle (equal w at its vertices, 1/w a constant
         // plane) shares one reciprocal, the same number each lane would compute.
-        const Floats rcp_inv_w = (t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f) ? Floats(1.0f / t.inv_w.a0)
-                                                                                  : Floats(1.0f) / inv_w;
+        alignas(64) float rcp[kBatchLanes];
+        if (t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f) {
+            std::fill_n(rcp, kBatchLanes, 1.0f / t.inv_w.a0);
+        } else {
+            for (int i = 0; i < kBatchLanes; ++i) rcp[i] = 1.0f / at(t.inv_w, x[i], y[i]);
+        }
         for (int v = 0; v < d.varyings; ++v) {
             const PlaneEquation& p = t.varyings[v];
             const bool flat = d.flat >> v & 1;
-            const Floats value = flat ? Floats(p.a0) : evaluate(p, fx, fy, d.fused) * rcp_inv_w;
-            value.copy_to(in_.varying[v], aligned);
+            float* value = in_.varying[v];
+            if (flat) {
+                std::fill_n(value, kBatchLanes, p.a0);
+            } else {
+                for (int i = 0; i < kBatchLanes; ++i) value[i] = at(p, x[i], y[i]) * rcp[i];
+            }
             if (analytic) {
                 // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
                 // varying enters as 0 (its plane is constant: zero derivatives).
-                const Floats v0 = flat ? Floats(0.0f) : value;
-                ((Floats(p.dadx) - v0 * Floats(t.inv_w.dadx)) * rcp_inv_w).copy_to(in_.varying_dx[v], aligned);
-                (-((Floats(p.dady) - v0 * Floats(t.inv_w.dady)) * rcp_inv_w)).copy_to(in_.varying_dy[v], aligned);
+                for (int i = 0; i < kBatchLanes; ++i) {
+                    const float v0 = flat ? 0.0f : value[i];
+                    in_.varying_dx[v][i] = (p.dadx - v0 * t.inv_w.dadx) * rcp[i];
+                    in_.varying_dy[v][i] = -((p.dady - v0 * t.inv_w.dady) * rcp[i]);
+                }
             }
         }
     }
@@ -267,7 +295,9 @@ private:
         if (b.count == 0) return;
         // Unused lanes repeat lane 0 (a valid position) and write nothing.
         for (int i = b.count; i < kBatchLanes; ++i) b.x[i] = b.x[0], b.y[i] = b.y[0];
-        interpolate(Floats([&](auto i) { return float(b.x[i]); }), Floats([&](auto i) { return float(b.y[i]); }));
+        alignas(64) float x[kBatchLanes], y[kBatchLanes];
+        for (int i = 0; i < kBatchLanes; ++i) x[i] = float(b.x[i]), y[i] = float(b.y[i]);
+        interpolate(x, y);
         draw_->call->program->shade(draw_->mode, in_, draw_->call->uniforms, out_);
         lanes_ += std::uint64_t(b.count);
         for (int i = 0; i < b.count; ++i) {
@@ -283,7 +313,7 @@ private:
             touched_[std::size_t(t / kBatchLanes)] = true;
         }
         float* p = fb_.pixel(x, y);
-        p[0] = out_.rgba[0][i], p[1] = out_.rgba[1][i], p[2] = out_.rgba[2][i], p[3] = out_.rgba[3][i];
+        for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
         if (draw_->mode.check_undefined) *undefined_at(x, y) = out_.undefined[i];
         if (draw_->depth_test) depth_[t] = in_.frag_coord[2][i];
         ++written_;
@@ -323,14 +353,15 @@ private:
     static constexpr int kTileBlocks = kTilePixels / kBatchLanes;
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
-    int x0_, y0_;
     glm::vec4 clear_;
+    int x0_ = 0, y0_ = 0;
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     const TriangleSetup* tri_ = nullptr;
     const PreparedDraw* draw_ = nullptr;
     Batch pending_;
+    bool frag_coord_set_ = true;  // in_.frag_coord may hold numbers (it starts uninitialised)
     FragmentBatch in_;
     ColorBatch out_;
 };
@@ -376,8 +407,14 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     for (const DrawCall& call : draws) {
         if (!call.program) throw std::invalid_argument("draw call without a program");
         const Needs& needs = call.program->info().needs;
-        PreparedDraw d{&call, {options.derivatives, options.precision, options.check_undefined}, true, needs.depth,
-                       needs.varyings, needs.flat_varyings, options.fused_interpolation};
+        PreparedDraw d{&call,
+                       {options.derivatives, options.precision, options.check_undefined},
+                       true,
+                       needs.depth,
+                       needs.frag_coord || options.force_general_path,
+                       needs.varyings,
+                       needs.flat_varyings,
+                       options.fused_interpolation};
         if (!needs.derivatives && !options.force_general_path) {
             d.mode.derivatives = Derivatives::None;  // per pixel, no helper lanes
             d.quads = false;
@@ -451,22 +488,28 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
 
     // Every pixel is stored by its tile: reuse the caller's memory, no clearing pass.
     fb.width = width, fb.height = height;
-    fb.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
-    fb.depth.resize(any_depth ? std::size_t(width) * std::size_t(height) : 0);
-    fb.undefined.resize(options.check_undefined ? std::size_t(width) * std::size_t(height) : 0);
-    std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    fb.rgba.resize(pixels * 4);
+    fb.depth.resize(any_depth ? pixels : 0);
+    fb.undefined.resize(options.check_undefined ? pixels : 0);
+    // One renderer per thread, made once per frame rather than once per tile: it holds a tile's
+    // depth.
+    tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const auto& r) {
         const FlushDenormals ftz;
+        std::unique_ptr<TileRenderer>& tile = renderers.local();
+        if (!tile) tile = std::make_unique<TileRenderer>(fb, prepared, clear);
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             const int tx = int(b % std::size_t(tiles_x)), ty = int(b / std::size_t(tiles_x));
             const int x0 = tx * kTileSize, y0 = row0 + ty * kTileSize;
-            auto tile = std::make_unique<TileRenderer>(fb, prepared, x0, y0, clear);
+            tile->start(x0, y0);
             for (std::uint32_t i : bins[b]) tile->render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
             tile->finish();
-            quads += tile->quads(), lanes += tile->lanes(), written += tile->written();
         }
     });
-    stats.quads = quads, stats.lanes_shaded = lanes, stats.pixels_written = written;
+    for (const auto& tile : renderers) {
+        stats.quads += tile->quads(), stats.lanes_shaded += tile->lanes(), stats.pixels_written += tile->written();
+    }
     if (stats_out) *stats_out = stats;
 }
 

@@ -33,8 +33,9 @@ struct RasterOptions {
     // Evaluate attribute planes with fused multiply-adds (llvmpipe on FMA hosts) or separately
     // rounded ones (softpipe). See plane_equation.h.
     bool fused_interpolation = fused_interpolation_default();
-    // Shade derivative-free shaders in quads with helper lanes too (the general path), and keep
-    // a depth buffer even when no draw needs one. For measuring what specialisation saves.
+    // Shade derivative-free shaders in quads with helper lanes too (the general path), interpolate
+    // gl_FragCoord for every shader, and keep a depth buffer even when no draw needs one. For
+    // measuring what specialisation saves, and for checking that it changes nothing.
     bool force_general_path = false;
     // Fill Framebuffer::undefined: shade with Checked numbers (float only; not with Analytic
     // derivatives or Double precision: std::invalid_argument). Same colours, slower.

@@ -58,6 +58,10 @@ struct Needs {
     bool depth = true;         // draws into a depth-tested scene (false: full-screen benchmark)
     int varyings = 0;          // interpolated floats the vertex stage writes
     unsigned flat_varyings = 0;  // bit v: varying v is `flat`, the provoking (last) vertex's value
+    // The fragment stage reads gl_FragCoord. When false the rasterizer does not interpolate it
+    // and it reads as NaN; the reference tests against OSMesa would catch a shader that reads it
+    // without saying so.
+    bool frag_coord = false;
 };
 
 struct ShaderInfo {

@@ -22,7 +22,7 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .depth = false, .varyings = 0}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .depth = false, .varyings = 0, .frag_coord = true}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -31,6 +31,12 @@ struct SquareY {
     }
 };
 const ProgramOf<SquareY> kSquareY;
+
+// The same shader not saying that it reads gl_FragCoord.
+struct UndeclaredSquareY : SquareY {
+    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .depth = false, .varyings = 0}, {}, {}};
+};
+const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
 // Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
 Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
@@ -220,6 +226,21 @@ TEST_CASE("odd image sizes: quads pair rows from the top (OSMesa) or from the bo
     // Column 16 pairs with the helper column 17 in both.
     CHECK(a.pixel(16, 0)[0] == 0.0f);
     for (int i = 0; i < W * H; ++i) CHECK(a.rgba[std::size_t(i) * 4 + 3] == 1.0f);  // every pixel drawn
+}
+
+TEST_CASE("a shader that reads gl_FragCoord without declaring it reads NaN, never another draw's numbers",
+          "[raster][specialisation]") {
+    // Two draws over the same pixels: the first interpolates gl_FragCoord, the second leaves it out.
+    constexpr int W = 8, H = 8;
+    const std::vector<VertexIn> verts = {{{0, 0, 0}, {}}, {{W, 0, 0}, {}}, {{W, H, 0}, {}}, {{0, H, 0}, {}}};
+    const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall declared{verts, idx, &kSquareY, {}}, undeclared{verts, idx, &kUndeclaredSquareY, {}};
+    declared.uniforms.model_view_projection = undeclared.uniforms.model_view_projection = window_to_clip(W, H);
+    const DrawCall both[] = {declared, undeclared};
+    const Framebuffer fb = rasterize(W, H, glm::vec4(0.0f), both, {});
+    for (int i = 0; i < W * H; ++i) CHECK(std::isnan(fb.rgba[std::size_t(i) * 4 + 2]));  // blue: gl_FragCoord.y
+    const Framebuffer first = rasterize(W, H, glm::vec4(0.0f), std::span(both, 1), {});
+    CHECK(first.pixel(3, H - 1 - 5)[2] == 5.5f);
 }
 
 TEST_CASE("degenerate, sliver and non-finite triangles are dropped without harm", "[raster][robustness]") {

@@ -171,6 +171,25 @@ TEST_CASE("frames differ where the shader depends on time and nowhere else", "[s
     CHECK(render_frame(plane, a).rgba == render_frame(plane, b).rgba);
 }
 
+TEST_CASE("leaving out what a shader does not use (gl_FragCoord, helper lanes, depth) changes no colour",
+          "[scenes][specialisation]") {
+    // The general path interpolates gl_FragCoord for every shader and shades everything in quads
+    // with a depth buffer: a shader that read gl_FragCoord without declaring it would differ here.
+    Scene plane = load_scene(kPlane);
+    for (const Program* p : catalogue()) {
+        if (p->info().needs.texture) continue;  // the plane has no texture
+        INFO(p->info().name);
+        FrameRequest r;
+        r.width = 40, r.height = 24;
+        r.shader_override = std::string(p->info().name);
+        const Framebuffer lean = render_frame(plane, r);
+        r.raster.force_general_path = true;
+        const Framebuffer general = render_frame(plane, r);
+        REQUIRE(lean.rgba.size() == general.rgba.size());
+        CHECK(std::memcmp(lean.rgba.data(), general.rgba.data(), lean.rgba.size() * sizeof(float)) == 0);
+    }
+}
+
 TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") {
     const auto dir = temp_dir("cli");
     const std::string qs = (kBin / "quadshade").string();
