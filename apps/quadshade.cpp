@@ -61,7 +61,7 @@ const char* kRenderHelp =
     "                          becomes the float uniform: long animations (t ~ 1e6 s) keep\n"
     "                          their frame spacing (default: float time, as GL)\n"
     "  --alpha                 keep the alpha channel (the clear colour's alpha is 0)\n"
-    "  --general-path          shade every shader in quads with a depth buffer (no specialisation)\n"
+    "  --general-path          shade every shader in quads with gl_FragCoord and a depth buffer (no specialisation)\n"
     "  --undefined-mask FILE   also write where the colour depends on a GLSL case with an undefined\n"
     "                          result: red NaN produced, green division by zero, blue a built-in\n"
     "                          outside its domain (smoothstep e0 >= e1, clamp lo > hi, sqrt, log,\n"

@@ -27,7 +27,6 @@ namespace qs {
 
 namespace {
 
-
 // A draw's vertex stage output and the mode its fragments are shaded in.
 struct PreparedDraw {
     const DrawCall* call;
