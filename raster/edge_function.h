@@ -11,6 +11,7 @@
 // FillRule::RightTop reproduces).
 // Shared edges are covered exactly once.
 
+#include <algorithm>
 #include <cstdint>
 
 namespace qs {
@@ -44,6 +45,16 @@ struct EdgeFunction {
 
     std::int64_t at(int x, int y) const { return c + dcdx * x + dcdy * y; }
     bool inside(int x, int y) const { return at(x, y) > 0; }
+
+    // The smallest and largest of at(x + i, y + j) - at(x, y) over an n x n square of pixels
+    // (0 <= i, j < n): E is linear, so they lie at the corners its gradient points away from
+    // and towards.
+    std::int64_t least_offset(int n) const {
+        return std::min<std::int64_t>(dcdx * (n - 1), 0) + std::min<std::int64_t>(dcdy * (n - 1), 0);
+    }
+    std::int64_t most_offset(int n) const {
+        return std::max<std::int64_t>(dcdx * (n - 1), 0) + std::max<std::int64_t>(dcdy * (n - 1), 0);
+    }
 };
 
 }  // namespace qs

@@ -99,15 +99,20 @@ public:
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y) return;
+        if (covers_tile(t, x0, y0) && !d.depth_test) {
+            // Every block is whole: no coverage to test, block by block.
+            for (int by = y0; by < y0 + kTileSize; by += kBlock) {
+                for (int bx = x0; bx < x0 + kTileSize; bx += kBlock) shade_block(bx, by, kAllLanes);
+            }
+            if (d.quads) quads_ += std::uint64_t(kTileBlocks * kBatchQuads);
+            return;
+        }
         // Each edge function at the blocks' top-left pixels, stepped block to block, and its
-        // largest and smallest offset from there over the block's pixel centres: the corners
-        // its gradient points to and away from.
+        // largest and smallest offset from there over the block's pixel centres.
         BlockEdges edges;
         for (int k = 0; k < 3; ++k) {
-            const EdgeFunction& e = t.edges[std::size_t(k)];
-            const std::int64_t sx = e.dcdx * (kBlock - 1), sy = e.dcdy * (kBlock - 1);
-            edges.most[k] = std::max<std::int64_t>(sx, 0) + std::max<std::int64_t>(sy, 0);
-            edges.least[k] = std::min<std::int64_t>(sx, 0) + std::min<std::int64_t>(sy, 0);
+            edges.most[k] = t.edges[std::size_t(k)].most_offset(kBlock);
+            edges.least[k] = t.edges[std::size_t(k)].least_offset(kBlock);
         }
         const int bx0 = x0 + ((lo_x - x0) & ~(kBlock - 1));
         for (int by = y0 + ((lo_y - y0) & ~(kBlock - 1)); by <= hi_y; by += kBlock) {
@@ -118,6 +123,15 @@ public:
             }
         }
         flush(pending_);
+    }
+
+    // Whether the tile at (x0, y0) lies inside the image and every pixel centre of it inside t.
+    bool covers_tile(const TriangleSetup& t, int x0, int y0) const {
+        if (x0 < 0 || y0 < 0 || x0 + kTileSize > fb_.width || y0 + kTileSize > fb_.height) return false;
+        for (const EdgeFunction& e : t.edges) {
+            if (e.at(x0, y0) + e.least_offset(kTileSize) <= 0) return false;
+        }
+        return true;
     }
 
     std::uint64_t quads() const { return quads_; }

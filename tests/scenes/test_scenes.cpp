@@ -175,12 +175,14 @@ TEST_CASE("leaving out what a shader does not use (gl_FragCoord, helper lanes, d
           "[scenes][specialisation]") {
     // The general path interpolates gl_FragCoord for every shader and shades everything in quads
     // with a depth buffer: a shader that read gl_FragCoord without declaring it would differ here.
+    // At 200x136 the plane fills the frame, so the lean path also takes its whole-tile shortcut
+    // (no coverage tests in 64x64 tiles inside a triangle), which the depth-tested path never does.
     Scene plane = load_scene(kPlane);
     for (const Program* p : catalogue()) {
         if (p->info().needs.texture) continue;  // the plane has no texture
         INFO(p->info().name);
         FrameRequest r;
-        r.width = 40, r.height = 24;
+        r.width = 200, r.height = 136;
         r.shader_override = std::string(p->info().name);
         const Framebuffer lean = render_frame(plane, r);
         r.raster.force_general_path = true;
