@@ -99,7 +99,7 @@ public:
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y) return;
-        if (covers_tile(t, x0, y0) && !d.depth_test) {
+        if (!d.depth_test && covers_tile(t, x0, y0)) {
             // Every block is whole: no coverage to test, block by block.
             for (int by = y0; by < y0 + kTileSize; by += kBlock) {
                 for (int bx = x0; bx < x0 + kTileSize; bx += kBlock) shade_block(bx, by, kAllLanes);
