@@ -8,6 +8,7 @@
 #include <cstring>
 #include <utility>
 
+#include "lanes16.h"
 #include "program.h"
 
 namespace qs {
@@ -29,9 +30,9 @@ inline std::uint32_t running_quads(std::uint32_t covered) {
 }
 
 namespace block_detail {
-// Sixteen floats as a GCC/Clang generic vector: __builtin_shufflevector picks from two of them
-// with constant indices, one instruction on AVX-512 (vpermt2ps), a few on narrower ISAs.
-typedef float Floats16 __attribute__((vector_size(16 * sizeof(float))));
+// __builtin_shufflevector picks from two generic vectors with constant indices: one instruction
+// on AVX-512 (vpermt2ps), a few on narrower ISAs.
+using Floats16 = lanes16::Floats;
 
 // Lanes 8 h .. 8 h + 7 of x and y interleaved: x(8h), y(8h), x(8h+1), y(8h+1), ...
 template <int Half, int... J>

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "block_layout.h"
 #include "clipper.h"
 #include "fixed_point.h"
+#include "lanes16.h"
 #include "float_environment.h"
 #include "triangle_setup.h"
 
@@ -90,10 +92,16 @@ public:
         const PreparedDraw& d = draws_[t.draw];
         tri_ = &t;
         draw_ = &d;
+        // Perspective division: an affine triangle (equal w at its vertices, 1/w a constant
+        // plane) shares one reciprocal, the same number each lane would compute.
+        affine_ = t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f;
+        affine_rcp_ = 1.0f / t.inv_w.a0;
         pending_.count = 0, pending_.write = 0;
         if (!d.frag_coord && frag_coord_set_) {
             // A shader that reads gl_FragCoord without saying so reads NaN, not the last draw's.
-            std::fill_n(&in_.frag_coord[0][0], 4 * kBatchLanes, std::numeric_limits<float>::quiet_NaN());
+            for (FragmentBatch& in : in_) {
+                std::fill_n(&in.frag_coord[0][0], 4 * kBatchLanes, std::numeric_limits<float>::quiet_NaN());
+            }
         }
         frag_coord_set_ = d.frag_coord || d.depth_test;
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
@@ -104,6 +112,7 @@ public:
             for (int by = y0; by < y0 + kTileSize; by += kBlock) {
                 for (int bx = x0; bx < x0 + kTileSize; bx += kBlock) shade_block(bx, by, kAllLanes);
             }
+            flush_blocks();
             if (d.quads) quads_ += std::uint64_t(kTileBlocks * kBatchQuads);
             return;
         }
@@ -122,6 +131,7 @@ public:
                 for (int k = 0; k < 3; ++k) edges.at[k] += t.edges[std::size_t(k)].dcdx * kBlock;
             }
         }
+        flush_blocks();
         flush(pending_);
     }
 
@@ -191,27 +201,59 @@ private:
     }
 
     // Shades the whole block whose top-left pixel is (bx, by); `mask`: the lanes that write.
+    // Blocks are shaded two at a time (Program::shade_pair): the first waits for the second, or
+    // for flush_blocks() at the end of the triangle. The two are different pixels of one triangle,
+    // so the order they are written in does not matter.
     void shade_block(int bx, int by, std::uint32_t mask) {
-        alignas(64) float x[kBatchLanes], y[kBatchLanes];
-        for (int i = 0; i < kBatchLanes; ++i) x[i] = float(bx + kLaneDx[i]), y[i] = float(by + kLaneDy[i]);
-        interpolate(x, y);
-        draw_->call->program->shade(draw_->mode, in_, draw_->call->uniforms, out_);
+        if (!waiting_) {
+            waiting_ = WaitingBlock{bx, by, mask};
+            return;
+        }
+        const WaitingBlock first = *waiting_;
+        waiting_.reset();
+        interpolate_block(in_[0], first.bx, first.by);
+        interpolate_block(in_[1], bx, by);
+        draw_->call->program->shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
+        write_block(0, first.bx, first.by, first.mask);
+        write_block(1, bx, by, mask);
+    }
+
+    // Shades the block left waiting, if any.
+    void flush_blocks() {
+        if (!waiting_) return;
+        const WaitingBlock b = *waiting_;
+        waiting_.reset();
+        interpolate_block(in_[0], b.bx, b.by);
+        draw_->call->program->shade(draw_->mode, in_[0], draw_->call->uniforms, out_[0]);
+        write_block(0, b.bx, b.by, b.mask);
+    }
+
+    void interpolate_block(FragmentBatch& in, int bx, int by) {
+        const lanes16::Ints dx = lanes16::load(kLaneDx), dy = lanes16::load(kLaneDy);
+        interpolate(in, lanes16::to_float(bx + dx), lanes16::to_float(by + dy));
+    }
+
+    // Writes the shaded batch h, the block whose top-left pixel is (bx, by); `mask`: the lanes
+    // that write.
+    void write_block(int h, int bx, int by, std::uint32_t mask) {
+        const ColorBatch& out = out_[h];
         lanes_ += kBatchLanes;
         if (mask != kAllLanes) {
             for (int i = 0; i < kBatchLanes; ++i) {
-                if (mask >> i & 1) write_lane(i, bx + kLaneDx[i], by + kLaneDy[i]);
+                if (mask >> i & 1) write_lane(h, i, bx + kLaneDx[i], by + kLaneDy[i]);
             }
             return;
         }
         // The block lies inside the image: its colour goes out as four rows.
         const int block = block_base(bx, by) / kBatchLanes;
-        block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
-                      {fb_.pixel(bx, by), fb_.pixel(bx, by + 1), fb_.pixel(bx, by + 2), fb_.pixel(bx, by + 3)});
+        float* const row = fb_.pixel(bx, by);
+        const std::size_t pitch = 4 * std::size_t(fb_.width);
+        block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]}, {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
         touched_[std::size_t(block)] = true;
         if (draw_->mode.check_undefined) {
-            for (int i = 0; i < kBatchLanes; ++i) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = out_.undefined[i];
+            for (int i = 0; i < kBatchLanes; ++i) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = out.undefined[i];
         }
-        if (draw_->depth_test) std::copy_n(in_.frag_coord[2], kBatchLanes, &depth_[block * kBatchLanes]);
+        if (draw_->depth_test) std::copy_n(in_[h].frag_coord[2], kBatchLanes, &depth_[block * kBatchLanes]);
         written_ += kBatchLanes;
     }
 
@@ -238,67 +280,56 @@ private:
     }
 
     // The shader inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) from the
-    // current triangle's planes. Plain loops over the lanes, which the compiler turns into one
-    // vector instruction per register (std::fma too, on FMA hosts); each lane computes exactly
-    // what PlaneEquation::at does.
-    void interpolate(const float (&x)[kBatchLanes], const float (&y)[kBatchLanes]) {
+    // current triangle's planes; each lane computes exactly what PlaneEquation::at does.
+    void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
         if (draw_->fused) {
-            interpolate<true>(x, y);
+            interpolate<true>(in, x, y);
         } else {
-            interpolate<false>(x, y);
+            interpolate<false>(in, x, y);
         }
     }
 
     template <bool Fused>
-    void interpolate(const float (&x)[kBatchLanes], const float (&y)[kBatchLanes]) {
+    void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
+        using lanes16::broadcast, lanes16::store, lanes16::Floats;
         const TriangleSetup& t = *tri_;
         const PreparedDraw& d = *draw_;
-        const auto at = [](const PlaneEquation& p, float px, float py) { return Fused ? p.at_fused(px, py) : p.at(px, py); };
-        const float height = float(fb_.height);
-        if (d.frag_coord) {
-            for (int i = 0; i < kBatchLanes; ++i) {
-                in_.frag_coord[0][i] = x[i] + 0.5f;
-                in_.frag_coord[1][i] = height - (y[i] + 0.5f);  // GL window y points up
-                in_.frag_coord[2][i] = at(t.z, x[i], y[i]);
-                in_.frag_coord[3][i] = at(t.inv_w, x[i], y[i]);
+        const auto at = [&](const PlaneEquation& p) -> Floats {
+            if constexpr (Fused) {
+                return lanes16::fma(broadcast(p.dady), y, lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0)));
+            } else {
+                return (p.a0 + p.dadx * x) + p.dady * y;
             }
+        };
+        if (d.frag_coord) {
+            store(in.frag_coord[0], x + 0.5f);
+            store(in.frag_coord[1], float(fb_.height) - (y + 0.5f));  // GL window y points up
+            store(in.frag_coord[2], at(t.z));
+            store(in.frag_coord[3], at(t.inv_w));
         } else if (d.depth_test) {
-            for (int i = 0; i < kBatchLanes; ++i) in_.frag_coord[2][i] = at(t.z, x[i], y[i]);  // the depth written
+            store(in.frag_coord[2], at(t.z));  // the depth written
         }
         const bool analytic = d.mode.derivatives == Derivatives::Analytic;
         if (analytic && d.frag_coord) {
             // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
-            std::fill_n(in_.frag_coord_dx[0], kBatchLanes, t.z.dadx);
-            std::fill_n(in_.frag_coord_dy[0], kBatchLanes, -t.z.dady);
-            std::fill_n(in_.frag_coord_dx[1], kBatchLanes, t.inv_w.dadx);
-            std::fill_n(in_.frag_coord_dy[1], kBatchLanes, -t.inv_w.dady);
+            store(in.frag_coord_dx[0], broadcast(t.z.dadx));
+            store(in.frag_coord_dy[0], broadcast(-t.z.dady));
+            store(in.frag_coord_dx[1], broadcast(t.inv_w.dadx));
+            store(in.frag_coord_dy[1], broadcast(-t.inv_w.dady));
         }
         if (d.varyings == 0) return;
-        // Perspective division; an affine triangle (equal w at its vertices, 1/w a constant
-        // plane) shares one reciprocal, the same number each lane would compute.
-        alignas(64) float rcp[kBatchLanes];
-        if (t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f) {
-            std::fill_n(rcp, kBatchLanes, 1.0f / t.inv_w.a0);
-        } else {
-            for (int i = 0; i < kBatchLanes; ++i) rcp[i] = 1.0f / at(t.inv_w, x[i], y[i]);
-        }
+        const Floats rcp = affine_ ? broadcast(affine_rcp_) : 1.0f / at(t.inv_w);
         for (int v = 0; v < d.varyings; ++v) {
-            const PlaneEquation& p = t.varyings[v];
+            const PlaneEquation& p = t.varyings[std::size_t(v)];
             const bool flat = d.flat >> v & 1;
-            float* value = in_.varying[v];
-            if (flat) {
-                std::fill_n(value, kBatchLanes, p.a0);
-            } else {
-                for (int i = 0; i < kBatchLanes; ++i) value[i] = at(p, x[i], y[i]) * rcp[i];
-            }
+            const Floats value = flat ? broadcast(p.a0) : at(p) * rcp;
+            store(in.varying[v], value);
             if (analytic) {
                 // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
                 // varying enters as 0 (its plane is constant: zero derivatives).
-                for (int i = 0; i < kBatchLanes; ++i) {
-                    const float v0 = flat ? 0.0f : value[i];
-                    in_.varying_dx[v][i] = (p.dadx - v0 * t.inv_w.dadx) * rcp[i];
-                    in_.varying_dy[v][i] = -((p.dady - v0 * t.inv_w.dady) * rcp[i]);
-                }
+                const Floats v0 = flat ? broadcast(0.0f) : value;
+                store(in.varying_dx[v], (p.dadx - v0 * t.inv_w.dadx) * rcp);
+                store(in.varying_dy[v], -((p.dady - v0 * t.inv_w.dady) * rcp));
             }
         }
     }
@@ -308,27 +339,25 @@ private:
         if (b.count == 0) return;
         // Unused lanes repeat lane 0 (a valid position) and write nothing.
         for (int i = b.count; i < kBatchLanes; ++i) b.x[i] = b.x[0], b.y[i] = b.y[0];
-        alignas(64) float x[kBatchLanes], y[kBatchLanes];
-        for (int i = 0; i < kBatchLanes; ++i) x[i] = float(b.x[i]), y[i] = float(b.y[i]);
-        interpolate(x, y);
-        draw_->call->program->shade(draw_->mode, in_, draw_->call->uniforms, out_);
+        interpolate(in_[0], lanes16::to_float(lanes16::load(b.x)), lanes16::to_float(lanes16::load(b.y)));
+        draw_->call->program->shade(draw_->mode, in_[0], draw_->call->uniforms, out_[0]);
         lanes_ += std::uint64_t(b.count);
         for (int i = 0; i < b.count; ++i) {
-            if (b.write >> i & 1) write_lane(i, b.x[i], b.y[i]);
+            if (b.write >> i & 1) write_lane(0, i, b.x[i], b.y[i]);
         }
     }
 
-    // Writes lane i's colour (and depth, and undefined cases) to pixel (x, y).
-    void write_lane(int i, int x, int y) {
+    // Writes lane i of batch h's colour (and depth, and undefined cases) to pixel (x, y).
+    void write_lane(int h, int i, int x, int y) {
         const int t = tile_index(x, y);
         if (!touched_[std::size_t(t / kBatchLanes)]) {
             clear_block(t / kBatchLanes);
             touched_[std::size_t(t / kBatchLanes)] = true;
         }
         float* p = fb_.pixel(x, y);
-        for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
-        if (draw_->mode.check_undefined) *undefined_at(x, y) = out_.undefined[i];
-        if (draw_->depth_test) depth_[t] = in_.frag_coord[2][i];
+        for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i];
+        if (draw_->mode.check_undefined) *undefined_at(x, y) = out_[h].undefined[i];
+        if (draw_->depth_test) depth_[t] = in_[h].frag_coord[2][i];
         ++written_;
     }
 
@@ -354,12 +383,12 @@ private:
 
     // Index in the tile of lane 0 of the block holding pixel (x, y).
     int block_base(int x, int y) const {
-        const int tx = x - x0_, ty = y - y0_;
-        return ((ty / kBlock) * (kTileSize / kBlock) + tx / kBlock) * kBatchLanes;
+        const unsigned tx = unsigned(x - x0_), ty = unsigned(y - y0_);  // inside the tile: >= 0
+        return int(((ty / kBlock) * (kTileSize / kBlock) + tx / kBlock) * kBatchLanes);
     }
     // Index of pixel (x, y) in the tile: its block's 16 lanes, then its lane in that block.
     int tile_index(int x, int y) const {
-        return block_base(x, y) + kLaneAt[(y - y0_) % kBlock][(x - x0_) % kBlock];
+        return block_base(x, y) + kLaneAt[unsigned(y - y0_) % kBlock][unsigned(x - x0_) % kBlock];
     }
 
     static constexpr int kTilePixels = kTileSize * kTileSize;
@@ -373,10 +402,18 @@ private:
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     const TriangleSetup* tri_ = nullptr;
     const PreparedDraw* draw_ = nullptr;
+    bool affine_ = false;      // tri_'s 1/w is constant
+    float affine_rcp_ = 0.0f;  // and this its reciprocal
     Batch pending_;
-    bool frag_coord_set_ = true;  // in_.frag_coord may hold numbers (it starts uninitialised)
-    FragmentBatch in_;
-    ColorBatch out_;
+    bool frag_coord_set_ = true;  // in_[].frag_coord may hold numbers (it starts uninitialised)
+    struct WaitingBlock {
+        int bx, by;
+        std::uint32_t mask;
+    };
+    std::optional<WaitingBlock> waiting_;  // a whole block waiting to be shaded with the next
+    // Two batches: the gathered batch uses the first, pairs of whole blocks both.
+    FragmentBatch in_[2];
+    ColorBatch out_[2];
 };
 
 }  // namespace

@@ -121,6 +121,13 @@ public:
     virtual void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const = 0;
     // Precondition: mode.derivatives != None unless !info().needs.derivatives.
     virtual void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const = 0;
+    // Shades two batches at once, with the same results as shade() on each. Where a batch is a
+    // single register (float pixels and Fine quads on AVX-512) both go through the shader as one
+    // number of twice the width: every operation becomes two independent instructions, which
+    // the CPU overlaps, while one batch alone leaves a noise shader's long dependency chains
+    // exposed (measured: about a fifth faster on the simplex square).
+    virtual void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
+                            ColorBatch& out_a, ColorBatch& out_b) const = 0;
 };
 
 }  // namespace qs

@@ -4,9 +4,11 @@
 // shader: this is where the number types meet the batch layout.
 //
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
-// each DerivativeRule (float; Fine also double), and Dual2 (float, double); and, for the
-// undefined-case mask, Checked float pixels and quads.
+// each DerivativeRule (float; Fine also double), and Dual2 (float, double); for the undefined-case
+// mask, Checked float pixels and quads; and on AVX-512, float pixels and Fine quads two batches
+// wide (shade_pair).
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +25,17 @@
 #else
 #define QS_FLATTEN
 #endif
+
+namespace qs {
+// Whether Program::shade_pair shades two batches as one number of twice the width. Only where a
+// batch is one register: with narrower vectors a batch already spans several registers, whose
+// instructions the CPU overlaps anyway.
+#if defined(__AVX512F__)
+inline constexpr bool kWidePairs = true;
+#else
+inline constexpr bool kWidePairs = false;
+#endif
+}  // namespace qs
 
 namespace qs {
 
@@ -53,6 +66,24 @@ F load(const float* values, const float* ddx, const float* ddy) {
             return F::load(wide);
         }
     }
+}
+
+// Lanes 0..kBatchLanes-1 from `a`, the next kBatchLanes from `b`: two batches as one number.
+template <class F>
+F load_pair(const float* a, const float* b) {
+    static_assert(F::size == 2 * kBatchLanes && std::is_same_v<typename F::value_type, float>);
+    alignas(64) float both[2 * kBatchLanes];
+    std::memcpy(both, a, kBatchLanes * sizeof(float));
+    std::memcpy(both + kBatchLanes, b, kBatchLanes * sizeof(float));
+    return F::load(both);
+}
+
+template <class F>
+void store_pair(const F& v, float* a, float* b) {
+    alignas(64) float both[2 * kBatchLanes];
+    v.store(both);
+    std::memcpy(a, both, kBatchLanes * sizeof(float));
+    std::memcpy(b, both + kBatchLanes, kBatchLanes * sizeof(float));
 }
 
 template <class F>
@@ -102,6 +133,24 @@ public:
         }
     }
 
+    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
+                    ColorBatch& out_a, ColorBatch& out_b) const override {
+        if constexpr (kWidePairs) {
+            if (!mode.check_undefined && mode.precision == Precision::Float) {
+                if constexpr (!Shader::info.needs.derivatives) {
+                    if (mode.derivatives == Derivatives::None) {
+                        return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
+                    }
+                }
+                if (mode.derivatives == Derivatives::Fine) {
+                    return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
+                }
+            }
+        }
+        shade(mode, a, u, out_a);
+        shade(mode, b, u, out_b);
+    }
+
 private:
     // The same shader over Checked numbers: colours as above, and each lane's undefined cases.
     static void shade_checked(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
@@ -131,6 +180,18 @@ private:
     QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         const glsl::vec4<F> c = fragment<F>(in, u);
         for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
+    }
+
+    template <class F>
+    QS_FLATTEN static void run_pair(const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
+                                    ColorBatch& out_a, ColorBatch& out_b) {
+        using program_detail::load_pair;
+        FragmentIn<F> f;
+        f.gl_FragCoord = {load_pair<F>(a.frag_coord[0], b.frag_coord[0]), load_pair<F>(a.frag_coord[1], b.frag_coord[1]),
+                          load_pair<F>(a.frag_coord[2], b.frag_coord[2]), load_pair<F>(a.frag_coord[3], b.frag_coord[3])};
+        for (int v = 0; v < Shader::info.needs.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
+        const glsl::vec4<F> c = Shader::template fragment<F>(f, u);
+        for (int k = 0; k < 4; ++k) program_detail::store_pair(c[k], out_a.rgba[k], out_b.rgba[k]);
     }
 
     // Not flattened: a debugging mode, and flattening the checks would multiply compile time.
