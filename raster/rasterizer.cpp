@@ -108,12 +108,13 @@ public:
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y) return;
         if (!d.depth_test && covers_tile(t, x0, y0)) {
-            // Every block is whole: no coverage to test, block by block.
-            for (int by = y0; by < y0 + kTileSize; by += kBlock) {
-                for (int bx = x0; bx < x0 + kTileSize; bx += kBlock) shade_block(bx, by, kAllLanes);
+            if (d.fused) {
+                shade_tile<true>(x0, y0);
+            } else {
+                shade_tile<false>(x0, y0);
             }
-            flush_blocks();
             if (d.quads) quads_ += std::uint64_t(kTileBlocks * kBatchQuads);
+            lanes_ += std::uint64_t(kTilePixels), written_ += std::uint64_t(kTilePixels);
             return;
         }
         // Each edge function at the blocks' top-left pixels, stepped block to block, and its
@@ -200,6 +201,31 @@ private:
         }
     }
 
+    // Shades the tile at (x0, y0), which lies inside the triangle and the image, block pair by
+    // block pair: no coverage to test, no early depth (the caller checks), nothing to count per
+    // block. The loop is the same work as shade_block's, with the per-draw choices inside
+    // interpolate made once per tile rather than per block (about a tenth of the simplex square).
+    template <bool Fused>
+    void shade_tile(int x0, int y0) {
+        static_assert(kTileSize % (2 * kBlock) == 0);
+        const Program& program = *draw_->call->program;
+        for (int by = y0; by < y0 + kTileSize; by += kBlock) {
+            const lanes16::Floats y = lanes_y(by);
+            for (int bx = x0; bx < x0 + kTileSize; bx += 2 * kBlock) {
+                interpolate<Fused>(in_[0], lanes_x(bx), y);
+                interpolate<Fused>(in_[1], lanes_x(bx + kBlock), y);
+                program.shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
+                store_block(out_[0], bx, by);
+                store_block(out_[1], bx + kBlock, by);
+            }
+        }
+        touched_.set();
+    }
+
+    // The framebuffer x and y of the lanes of the block whose top-left pixel is (bx, by).
+    static lanes16::Floats lanes_x(int bx) { return lanes16::to_float(bx + lanes16::load(kLaneDx)); }
+    static lanes16::Floats lanes_y(int by) { return lanes16::to_float(by + lanes16::load(kLaneDy)); }
+
     // Shades the whole block whose top-left pixel is (bx, by); `mask`: the lanes that write.
     // Blocks are shaded two at a time (Program::shade_pair): the first waits for the second, or
     // for flush_blocks() at the end of the triangle. The two are different pixels of one triangle,
@@ -228,10 +254,7 @@ private:
         write_block(0, b.bx, b.by, b.mask);
     }
 
-    void interpolate_block(FragmentBatch& in, int bx, int by) {
-        const lanes16::Ints dx = lanes16::load(kLaneDx), dy = lanes16::load(kLaneDy);
-        interpolate(in, lanes16::to_float(bx + dx), lanes16::to_float(by + dy));
-    }
+    void interpolate_block(FragmentBatch& in, int bx, int by) { interpolate(in, lanes_x(bx), lanes_y(by)); }
 
     // Writes the shaded batch h, the block whose top-left pixel is (bx, by); `mask`: the lanes
     // that write.
@@ -244,17 +267,22 @@ private:
             }
             return;
         }
-        // The block lies inside the image: its colour goes out as four rows.
+        store_block(out, bx, by);
         const int block = block_base(bx, by) / kBatchLanes;
+        touched_[std::size_t(block)] = true;
+        if (draw_->depth_test) std::copy_n(in_[h].frag_coord[2], kBatchLanes, &depth_[block * kBatchLanes]);
+        written_ += kBatchLanes;
+    }
+
+    // Writes a whole block's colour (and undefined cases): the block lies inside the image, its
+    // colour goes out as four rows.
+    void store_block(const ColorBatch& out, int bx, int by) {
         float* const row = fb_.pixel(bx, by);
         const std::size_t pitch = 4 * std::size_t(fb_.width);
         block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]}, {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
-        touched_[std::size_t(block)] = true;
         if (draw_->mode.check_undefined) {
             for (int i = 0; i < kBatchLanes; ++i) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = out.undefined[i];
         }
-        if (draw_->depth_test) std::copy_n(in_[h].frag_coord[2], kBatchLanes, &depth_[block * kBatchLanes]);
-        written_ += kBatchLanes;
     }
 
     // Adds one lane to the gathered batch; quads are appended four lanes at a time, so they stay
@@ -290,7 +318,7 @@ private:
     }
 
     template <bool Fused>
-    void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
+    [[gnu::always_inline]] void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
         using lanes16::broadcast, lanes16::store, lanes16::Floats;
         const TriangleSetup& t = *tri_;
         const PreparedDraw& d = *draw_;
