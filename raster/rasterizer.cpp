@@ -71,8 +71,10 @@ public:
 
     // Clears the blocks no triangle wrote and stores the depth.
     void finish() {
-        for (int block = 0; block < kTileBlocks; ++block) {
-            if (!touched_[std::size_t(block)]) clear_block(block);
+        if (!touched_.all()) {
+            for (int block = 0; block < kTileBlocks; ++block) {
+                if (!touched_[std::size_t(block)]) clear_block(block);
+            }
         }
         if (fb_.depth.empty()) return;
         for (int block = 0; block < kTileBlocks; ++block) {
