@@ -76,7 +76,19 @@ struct ShaderInfo {
     // time moves): lets a renderer keep long animations' time in double and hand the shader
     // time modulo the period. 0: time unused, or no exact period.
     double time_period = 0.0;
+    // Program::shade_pair runs two batches as one number of twice the width, as a GPU driver
+    // picks a wave size per shader. It pays where a shader is long dependency chains on few
+    // values (the noises: up to a quarter faster) and costs where its values outgrow the
+    // registers or it works lane by lane (Worley's search, texture fetches: up to 3x slower).
+    // Set from quadshade-bench-batch-width, which times both for every shader.
+    bool wide_batches = false;
 };
+
+// `info` with wide_batches set.
+constexpr ShaderInfo with_wide_batches(ShaderInfo info) {
+    info.wide_batches = true;
+    return info;
+}
 
 struct Uniforms {
     glm::mat4 model_view_projection{1.0f};

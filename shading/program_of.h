@@ -5,8 +5,8 @@
 //
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
 // each DerivativeRule (float; Fine also double), and Dual2 (float, double); for the undefined-case
-// mask, Checked float pixels and quads; and on AVX-512, float pixels and Fine quads two batches
-// wide (shade_pair).
+// mask, Checked float pixels and quads; and on AVX-512, for shaders that ask for wide batches,
+// float pixels and Fine quads two batches wide (shade_pair).
 
 #include <cstring>
 #include <stdexcept>
@@ -135,7 +135,7 @@ public:
 
     void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
                     ColorBatch& out_a, ColorBatch& out_b) const override {
-        if constexpr (kWidePairs) {
+        if constexpr (kWidePairs && Shader::info.wide_batches) {
             if (!mode.check_undefined && mode.precision == Precision::Float) {
                 if constexpr (!Shader::info.needs.derivatives) {
                     if (mode.derivatives == Derivatives::None) {

@@ -16,13 +16,13 @@ namespace qs::shaders {
 using namespace qs::glsl;
 
 struct FlowNoise {
-    static constexpr ShaderInfo info{
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "flow_noise", "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
         Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 2},
         {"shaders/object_plane.vert"}, {"noise/flow_noise.glsl", "shaders/flow_noise.frag"}, {},
         // srdnoise's rotation enters through fract(hash * K + rot): period 1 in rot, so the
         // octaves' 0.2 t, 0.51 t, 0.77 t are all whole after 100 s
-        100.0};
+        100.0});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
         out.varyings[0] = in.position.x * 8.0f;  // p = gl_Vertex.xy * 8.0
         out.varyings[1] = in.position.y * 8.0f;
@@ -55,11 +55,11 @@ inline void sphere_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out)
 inline constexpr double kSimplex3dTimePeriod = 867.0;
 
 struct Simplex3d {
-    static constexpr ShaderInfo info{
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "simplex3d", "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
         Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"shaders/sphere_simplex.vert"}, {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
-        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod};
+        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, 1>(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -69,11 +69,11 @@ struct Simplex3d {
 };
 
 struct Turbulence {
-    static constexpr ShaderInfo info{
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
         Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
-        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod};
+        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<2, -1>(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -116,11 +116,11 @@ struct Spots {
 };
 
 struct Tiles3d {
-    static constexpr ShaderInfo info{
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "tiles3d", "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
         Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
         {"noise/simplex3d.glsl", "shaders/sphere_warp.vert"}, {"noise/cellular.glsl", "shaders/tiles3d.frag"},
-        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod};
+        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
         using V = noise::Simplex3dDemo;
         vec3<float> o(in.position.x, in.position.y, in.position.z);

@@ -122,8 +122,8 @@ struct DotsAA {
 };
 
 struct Facets {
-    static constexpr ShaderInfo info = plane_pattern("facets", "Figure 1.5: 0.1 + F2 - F1", false,
-                                                     {"noise/cellular.glsl", "shaders/facets.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(
+        plane_pattern("facets", "Figure 1.5: 0.1 + F2 - F1", false, {"noise/cellular.glsl", "shaders/facets.frag"}));
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -133,8 +133,8 @@ struct Facets {
 };
 
 struct Blobs {
-    static constexpr ShaderInfo info = plane_pattern("blobs", "Figure 1.5: 1 - F1^2", false,
-                                                     {"noise/cellular.glsl", "shaders/blobs.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(
+        plane_pattern("blobs", "Figure 1.5: 1 - F1^2", false, {"noise/cellular.glsl", "shaders/blobs.frag"}));
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -164,11 +164,11 @@ inline void plane_st10_vertex(const VertexIn& in, const Uniforms& u, VertexOut& 
 template <noise::Simplex2dCorner corner>
 struct Simplex2d {
     static constexpr bool typo = corner == noise::Simplex2dCorner::SeedTypo;
-    static constexpr ShaderInfo info = plane_pattern(
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
         typo ? "simplex2d_seed_typo" : "simplex2d",
         typo ? "Listing 1.3 with the seed's C.xxxx typo (breaks along simplex edges)" : "Listing 1.3: 2D simplex noise",
         false, {"noise/simplex2d.glsl", "shaders/simplex2d.frag"}, typo ? "#define SIMPLEX2D_SEED_TYPO\n" : "",
-        "shaders/plane_st10.vert");
+        "shaders/plane_st10.vert"));
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st10_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -177,8 +177,9 @@ struct Simplex2d {
 };
 
 struct Cellular2x2 {
-    static constexpr ShaderInfo info = plane_pattern("cellular2x2", "Listing 1.4 as printed: squared F1, 2x2 search",
-                                                     false, {"shaders/cellular2x2.frag"}, {}, "shaders/plane_st10.vert");
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
+        "cellular2x2", "Listing 1.4 as printed: squared F1, 2x2 search", false, {"shaders/cellular2x2.frag"}, {},
+        "shaders/plane_st10.vert"));
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st10_vertex(in, u, out); }
     template <class V>
     static V permute(const V& x) { return mod((34.0f * x + 1.0f) * x, 289.0f); }

@@ -57,9 +57,9 @@ struct Dots {
 };
 
 struct Perlin {
-    static constexpr ShaderInfo info{"perlin", "Table 1.1 / Figure 1.4: 3D simplex noise (benchmark variant 0.51/93)",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin.frag"},
-                                     noise::Simplex3dBenchmark::glsl_defines};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
+        "perlin", "Table 1.1 / Figure 1.4: 3D simplex noise (benchmark variant 0.51/93)", kPlaneNeeds,
+        {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin.frag"}, noise::Simplex3dBenchmark::glsl_defines});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -70,9 +70,9 @@ struct Perlin {
 };
 
 struct Perlin5 {
-    static constexpr ShaderInfo info{"perlin5", "Table 1.1 / Figure 1.4: five octaves of 3D simplex noise",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin5.frag"},
-                                     noise::Simplex3dBenchmark::glsl_defines};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
+        "perlin5", "Table 1.1 / Figure 1.4: five octaves of 3D simplex noise", kPlaneNeeds, {"shaders/plane_st.vert"},
+        {"noise/simplex3d.glsl", "shaders/perlin5.frag"}, noise::Simplex3dBenchmark::glsl_defines});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
