@@ -22,8 +22,10 @@
 // yield masks; `select(mask, a, b)` picks per lane. min/max return the non-NaN operand.
 
 #include <cstddef>
+#include <cstring>
 #include <experimental/simd>
 #include <type_traits>
+#include <utility>
 
 namespace qs {
 
@@ -64,10 +66,21 @@ public:
     void store(T* p) const { v.copy_to(p, stdx::element_aligned); }
     T operator[](int i) const { return v[i]; }
 
-    // Lane i takes the value of lane index(i); index is a constexpr function of the lane number.
+    // Lane i takes the value of lane Index{}(i): a stateless function object, evaluated at
+    // compile time, so the move is one shuffle instruction (a generator reading v[index(i)]
+    // lane by lane became sixteen scalar loads, and a function pointer a call per lane).
     template <class Index>
-    Lanes permute(Index index) const {
-        return Lanes(Simd([&](auto i) { return v[index(std::size_t(i))]; }));
+    Lanes permute(Index) const {
+        typedef T Vector __attribute__((vector_size(N * sizeof(T))));
+        alignas(Vector) T lanes[N];
+        v.copy_to(lanes, stdx::element_aligned);
+        Vector x;
+        std::memcpy(&x, lanes, sizeof x);
+        const Vector moved = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return __builtin_shufflevector(x, x, Index{}(I)...);
+        }(std::make_index_sequence<std::size_t(N)>());
+        std::memcpy(lanes, &moved, sizeof moved);
+        return load(lanes);
     }
 
     friend Lanes operator-(const Lanes& a) { return Lanes(-a.v); }

@@ -61,12 +61,14 @@ inline constexpr bool always_false = false;
 
 // ---- derivative built-ins on quads ---------------------------------------------------------
 namespace quad_detail {
-// Index functions over the lane number i; `base` is the quad's lane 0.
-constexpr std::size_t base(std::size_t i) { return i & ~std::size_t(3); }
-constexpr std::size_t fine_right(std::size_t i) { return i | 1; }
-constexpr std::size_t fine_left(std::size_t i) { return i & ~std::size_t(1); }
-constexpr std::size_t fine_upper(std::size_t i) { return i | 2; }
-constexpr std::size_t fine_lower(std::size_t i) { return i & ~std::size_t(2); }
+// Index functions over the lane number i; `base` is the quad's lane 0. Function objects, not
+// functions: their type carries them, so permute() knows the lanes at compile time and makes
+// one shuffle of them.
+inline constexpr auto base = [](std::size_t i) { return i & ~std::size_t(3); };
+inline constexpr auto fine_right = [](std::size_t i) { return i | 1; };
+inline constexpr auto fine_left = [](std::size_t i) { return i & ~std::size_t(1); };
+inline constexpr auto fine_upper = [](std::size_t i) { return i | 2; };
+inline constexpr auto fine_lower = [](std::size_t i) { return i & ~std::size_t(2); };
 }  // namespace quad_detail
 
 template <QuadNumber V>
