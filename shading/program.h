@@ -78,9 +78,10 @@ struct ShaderInfo {
     double time_period = 0.0;
     // Program::shade_pair runs two batches as one number of twice the width, as a GPU driver
     // picks a wave size per shader. It pays where a shader is long dependency chains on few
-    // values (the noises: up to a quarter faster) and costs where its values outgrow the
-    // registers or it works lane by lane (Worley's search, texture fetches: up to 3x slower).
-    // Set from quadshade-bench-batch-width, which times both for every shader.
+    // values (the noises: 8-22% faster) and costs where its values outgrow the registers or it
+    // works lane by lane (Worley's 3x3 search, texture fetches: up to 1.5x slower). Per pixel
+    // only: quad derivatives on two registers shuffle far slower than they gain. Set from
+    // quadshade-bench-batch-width, which times both for every shader.
     bool wide_batches = false;
 };
 
@@ -133,11 +134,11 @@ public:
     virtual void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const = 0;
     // Precondition: mode.derivatives != None unless !info().needs.derivatives.
     virtual void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const = 0;
-    // Shades two batches at once, with the same results as shade() on each. Where a batch is a
-    // single register (float pixels and Fine quads on AVX-512) both go through the shader as one
-    // number of twice the width: every operation becomes two independent instructions, which
-    // the CPU overlaps, while one batch alone leaves a noise shader's long dependency chains
-    // exposed (measured: about a fifth faster on the simplex square).
+    // Shades two batches at once, with the same results as shade() on each. For a shader with
+    // ShaderInfo::wide_batches, shaded per pixel in float on AVX-512 (a batch is then one
+    // register), both go through the shader as one number of twice the width: every operation
+    // becomes two independent instructions, which the CPU overlaps, while one batch alone
+    // leaves a noise shader's long dependency chains exposed. Otherwise two shade() calls.
     virtual void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
                             ColorBatch& out_a, ColorBatch& out_b) const = 0;
 };

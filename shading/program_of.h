@@ -6,7 +6,7 @@
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
 // each DerivativeRule (float; Fine also double), and Dual2 (float, double); for the undefined-case
 // mask, Checked float pixels and quads; and on AVX-512, for shaders that ask for wide batches,
-// float pixels and Fine quads two batches wide (shade_pair).
+// float pixels two batches wide (shade_pair).
 
 #include <cstring>
 #include <stdexcept>
@@ -135,16 +135,11 @@ public:
 
     void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
                     ColorBatch& out_a, ColorBatch& out_b) const override {
+        static_assert(!Shader::info.wide_batches || !Shader::info.needs.derivatives,
+                      "wide batches are per pixel: quads on two registers shuffle slower than they gain");
         if constexpr (kWidePairs && Shader::info.wide_batches) {
-            if (!mode.check_undefined && mode.precision == Precision::Float) {
-                if constexpr (!Shader::info.needs.derivatives) {
-                    if (mode.derivatives == Derivatives::None) {
-                        return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
-                    }
-                }
-                if (mode.derivatives == Derivatives::Fine) {
-                    return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
-                }
+            if (!mode.check_undefined && mode.precision == Precision::Float && mode.derivatives == Derivatives::None) {
+                return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
             }
         }
         shade(mode, a, u, out_a);
