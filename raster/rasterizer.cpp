@@ -21,8 +21,8 @@
 #include "block_layout.h"
 #include "clipper.h"
 #include "fixed_point.h"
-#include "lanes16.h"
 #include "float_environment.h"
+#include "lanes16.h"
 #include "triangle_setup.h"
 
 namespace qs {
@@ -281,7 +281,8 @@ private:
     void store_block(const ColorBatch& out, int bx, int by) {
         float* const row = fb_.pixel(bx, by);
         const std::size_t pitch = 4 * std::size_t(fb_.width);
-        block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]}, {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
+        block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]},
+                      {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
         if (draw_->mode.check_undefined) {
             for (int i = 0; i < kBatchLanes; ++i) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = out.undefined[i];
         }

@@ -27,6 +27,7 @@
 #endif
 
 namespace qs {
+
 // Whether Program::shade_pair shades two batches as one number of twice the width. Only where a
 // batch is one register: with narrower vectors a batch already spans several registers, whose
 // instructions the CPU overlaps anyway.
@@ -35,9 +36,6 @@ inline constexpr bool kWidePairs = true;
 #else
 inline constexpr bool kWidePairs = false;
 #endif
-}  // namespace qs
-
-namespace qs {
 
 // A shader's view of its inputs, in number type F.
 template <class F>
@@ -182,8 +180,7 @@ private:
                                     ColorBatch& out_a, ColorBatch& out_b) {
         using program_detail::load_pair;
         FragmentIn<F> f;
-        f.gl_FragCoord = {load_pair<F>(a.frag_coord[0], b.frag_coord[0]), load_pair<F>(a.frag_coord[1], b.frag_coord[1]),
-                          load_pair<F>(a.frag_coord[2], b.frag_coord[2]), load_pair<F>(a.frag_coord[3], b.frag_coord[3])};
+        for (int k = 0; k < 4; ++k) f.gl_FragCoord[k] = load_pair<F>(a.frag_coord[k], b.frag_coord[k]);
         for (int v = 0; v < Shader::info.needs.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
         const glsl::vec4<F> c = Shader::template fragment<F>(f, u);
         for (int k = 0; k < 4; ++k) program_detail::store_pair(c[k], out_a.rgba[k], out_b.rgba[k]);

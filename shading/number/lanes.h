@@ -76,8 +76,9 @@ public:
         v.copy_to(lanes, stdx::element_aligned);
         Vector x;
         std::memcpy(&x, lanes, sizeof x);
-        const Vector moved = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return __builtin_shufflevector(x, x, Index{}(I)...);
+        Vector moved;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            moved = __builtin_shufflevector(x, x, Index{}(I)...);
         }(std::make_index_sequence<std::size_t(N)>());
         std::memcpy(lanes, &moved, sizeof moved);
         return load(lanes);

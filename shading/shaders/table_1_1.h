@@ -59,7 +59,8 @@ struct Dots {
 struct Perlin {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "perlin", "Table 1.1 / Figure 1.4: 3D simplex noise (benchmark variant 0.51/93)", kPlaneNeeds,
-        {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin.frag"}, noise::Simplex3dBenchmark::glsl_defines});
+        {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin.frag"},
+        noise::Simplex3dBenchmark::glsl_defines});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
