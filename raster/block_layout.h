@@ -5,7 +5,6 @@
 // number/lanes.h (lower row first: lanes 0, 1 on the quad's row + 1).
 
 #include <cstdint>
-#include <cstring>
 #include <utility>
 
 #include "lanes16.h"
@@ -32,11 +31,11 @@ inline std::uint32_t running_quads(std::uint32_t covered) {
 namespace block_detail {
 // __builtin_shufflevector picks from two generic vectors with constant indices: one instruction
 // on AVX-512 (vpermt2ps), a few on narrower ISAs.
-using Floats16 = lanes16::Floats;
+using lanes16::Floats;
 
 // Lanes 8 h .. 8 h + 7 of x and y interleaved: x(8h), y(8h), x(8h+1), y(8h+1), ...
 template <int Half, int... J>
-void interleave(const Floats16& x, const Floats16& y, Floats16& out, std::integer_sequence<int, J...>) {
+void interleave(const Floats& x, const Floats& y, Floats& out, std::integer_sequence<int, J...>) {
     out = __builtin_shufflevector(x, y, ((J % 2) * 16 + Half * 8 + J / 2)...);
 }
 
@@ -44,7 +43,7 @@ void interleave(const Floats16& x, const Floats16& y, Floats16& out, std::intege
 // of the pixel at dx = j / 4, lane L = kLaneAt[R][dx]; red and green come from `rg`, blue and
 // alpha from `ba`, each at 2 (L mod 8) + component.
 template <int R, int... J>
-void row(const Floats16& rg, const Floats16& ba, Floats16& out, std::integer_sequence<int, J...>) {
+void row(const Floats& rg, const Floats& ba, Floats& out, std::integer_sequence<int, J...>) {
     out = __builtin_shufflevector(
         rg, ba, ((J % 4) < 2 ? 2 * (kLaneAt[R][J / 4] % 8) + J % 4 : 16 + 2 * (kLaneAt[R][J / 4] % 8) + J % 4 - 2)...);
 }
@@ -58,22 +57,19 @@ inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kB
     using namespace block_detail;
     static_assert(kLaneAt[0][0] < 8 && kLaneAt[1][3] < 8 && kLaneAt[2][0] >= 8 && kLaneAt[3][0] >= 8);
     constexpr auto sixteen = std::make_integer_sequence<int, 16>();
-    Floats16 r, g, b, a;
-    std::memcpy(&r, rgba[0], sizeof r);
-    std::memcpy(&g, rgba[1], sizeof g);
-    std::memcpy(&b, rgba[2], sizeof b);
-    std::memcpy(&a, rgba[3], sizeof a);
-    Floats16 rg_low, rg_high, ba_low, ba_high;
+    const Floats r = lanes16::load(rgba[0]), g = lanes16::load(rgba[1]), b = lanes16::load(rgba[2]),
+                 a = lanes16::load(rgba[3]);
+    Floats rg_low, rg_high, ba_low, ba_high;
     interleave<0>(r, g, rg_low, sixteen);
     interleave<1>(r, g, rg_high, sixteen);
     interleave<0>(b, a, ba_low, sixteen);
     interleave<1>(b, a, ba_high, sixteen);
-    Floats16 out[kBlock];
+    Floats out[kBlock];
     row<0>(rg_low, ba_low, out[0], sixteen);
     row<1>(rg_low, ba_low, out[1], sixteen);
     row<2>(rg_high, ba_high, out[2], sixteen);
     row<3>(rg_high, ba_high, out[3], sixteen);
-    for (int i = 0; i < kBlock; ++i) std::memcpy(rows[i], &out[i], sizeof out[i]);
+    for (int i = 0; i < kBlock; ++i) lanes16::store(rows[i], out[i]);
 }
 
 }  // namespace qs
