@@ -112,9 +112,12 @@ void EmbreeScene::intersect(const RayPacket& rays, RayHits& hits) const {
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // neighbouring primary rays
     rtcIntersect16(valid, device_->scene, &context, &r);
+    // Inactive lanes are misses whatever Embree left in them: without native 16-wide packets
+    // (no AVX-512) it traces the packet in narrower pieces and returns inactive lanes unset.
     for (int i = 0; i < 16; ++i) {
-        hits.geometry[i] = r.hit.geomID[i];
-        hits.primitive[i] = r.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ? kNoHit : r.hit.primID[i];
+        const bool hit = (rays.active >> i & 1) && r.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+        hits.geometry[i] = hit ? r.hit.geomID[i] : kNoHit;
+        hits.primitive[i] = hit ? r.hit.primID[i] : kNoHit;
     }
 }
 
