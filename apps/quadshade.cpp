@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "catalogue.h"
-#include "gltf.h"
-#include "image_io.h"
-#include "scene_render.h"
-#include "undefined_mask.h"
+#include "shading/catalogue.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "render/scene_render.h"
+#include "render/undefined_mask.h"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "catalogue.h"
+#include "shading/catalogue.h"
 
 namespace {
 

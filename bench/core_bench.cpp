@@ -12,10 +12,10 @@
 #include <map>
 #include <string>
 
-#include "catalogue.h"
-#include "glsl.h"
-#include "noise/simplex2d.h"
-#include "rasterizer.h"
+#include "shading/catalogue.h"
+#include "shading/glsl.h"
+#include "shading/noise/simplex2d.h"
+#include "raster/rasterizer.h"
 
 namespace {
 

@@ -24,10 +24,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "catalogue.h"
-#include "gl_renderer.h"
-#include "gltf.h"
-#include "scene_render.h"
+#include "shading/catalogue.h"
+#include "reference/gl_renderer.h"
+#include "scenes/gltf.h"
+#include "render/scene_render.h"
 
 namespace {
 

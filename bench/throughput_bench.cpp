@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "catalogue.h"
-#include "gl_renderer.h"
-#include "gltf.h"
-#include "scene_render.h"
+#include "shading/catalogue.h"
+#include "reference/gl_renderer.h"
+#include "scenes/gltf.h"
+#include "render/scene_render.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <utility>
 
-#include "lanes16.h"
-#include "program.h"
+#include "raster/lanes16.h"
+#include "shading/program.h"
 
 namespace qs {
 

@@ -1,4 +1,4 @@
-#include "clipper.h"
+#include "raster/clipper.h"
 
 #include <cmath>
 

@@ -13,7 +13,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "program.h"
+#include "shading/program.h"
 
 namespace qs {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <span>
 
-#include "program.h"
+#include "shading/program.h"
 
 namespace qs {
 

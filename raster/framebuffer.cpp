@@ -1,4 +1,4 @@
-#include "framebuffer.h"
+#include "raster/framebuffer.h"
 
 #include <cmath>
 

@@ -13,7 +13,7 @@
 #include <immintrin.h>
 #endif
 
-#include "program.h"
+#include "shading/program.h"
 
 namespace qs::lanes16 {
 

@@ -1,4 +1,4 @@
-#include "rasterizer.h"
+#include "raster/rasterizer.h"
 
 #include <algorithm>
 #include <array>
@@ -18,12 +18,12 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "block_layout.h"
-#include "clipper.h"
-#include "fixed_point.h"
-#include "float_environment.h"
-#include "lanes16.h"
-#include "triangle_setup.h"
+#include "raster/block_layout.h"
+#include "raster/clipper.h"
+#include "raster/fixed_point.h"
+#include "raster/float_environment.h"
+#include "raster/lanes16.h"
+#include "raster/triangle_setup.h"
 
 namespace qs {
 

@@ -12,11 +12,11 @@
 
 #include <glm/vec4.hpp>
 
-#include "draw_call.h"
-#include "edge_function.h"
-#include "plane_equation.h"
-#include "framebuffer.h"
-#include "program.h"
+#include "raster/draw_call.h"
+#include "raster/edge_function.h"
+#include "raster/plane_equation.h"
+#include "raster/framebuffer.h"
+#include "shading/program.h"
 
 namespace qs {
 

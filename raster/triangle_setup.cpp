@@ -1,9 +1,9 @@
-#include "triangle_setup.h"
+#include "raster/triangle_setup.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "fixed_point.h"
+#include "raster/fixed_point.h"
 
 namespace qs {
 

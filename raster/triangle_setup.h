@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <optional>
 
-#include "clipper.h"
-#include "edge_function.h"
-#include "plane_equation.h"
+#include "raster/clipper.h"
+#include "raster/edge_function.h"
+#include "raster/plane_equation.h"
 
 namespace qs {
 

@@ -3,7 +3,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include "gl_renderer.h"
+#include "reference/gl_renderer.h"
 
 #include <algorithm>
 #include <fstream>
@@ -13,9 +13,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "catalogue.h"
-#include "framebuffer.h"
-#include "scene_render.h"
+#include "shading/catalogue.h"
+#include "raster/framebuffer.h"
+#include "render/scene_render.h"
 
 namespace qs {
 

@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "gl_context.h"
-#include "image_io.h"
-#include "scene.h"
+#include "reference/gl_context.h"
+#include "scenes/image_io.h"
+#include "scenes/scene.h"
 
 namespace qs {
 

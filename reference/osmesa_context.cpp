@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "gl_context.h"
+#include "reference/gl_context.h"
 
 namespace qs {
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "gl_renderer.h"
-#include "gltf.h"
+#include "reference/gl_renderer.h"
+#include "scenes/gltf.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // The one file that includes tinygltf.
-#include "gltf.h"
+#include "scenes/gltf.h"
 
 #include <cmath>
 #include <cstring>

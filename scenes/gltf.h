@@ -12,7 +12,7 @@
 
 #include <filesystem>
 
-#include "scene.h"
+#include "scenes/scene.h"
 
 namespace qs {
 

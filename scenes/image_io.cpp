@@ -1,5 +1,5 @@
 // The one file that includes OpenImageIO.
-#include "image_io.h"
+#include "scenes/image_io.h"
 
 #include <algorithm>
 #include <cmath>

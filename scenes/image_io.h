@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "glsl/texture.h"
+#include "shading/glsl/texture.h"
 
 namespace qs {
 

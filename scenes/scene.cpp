@@ -1,4 +1,4 @@
-#include "scene.h"
+#include "scenes/scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -11,8 +11,8 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
-#include "glsl/texture.h"
-#include "program.h"
+#include "shading/glsl/texture.h"
+#include "shading/program.h"
 
 namespace qs {
 

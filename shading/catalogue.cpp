@@ -1,4 +1,4 @@
-#include "catalogue.h"
+#include "shading/catalogue.h"
 
 namespace qs {
 

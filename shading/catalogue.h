@@ -4,7 +4,7 @@
 #include <string_view>
 #include <vector>
 
-#include "program.h"
+#include "shading/program.h"
 
 namespace qs {
 

@@ -14,7 +14,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "glsl/texture.h"
+#include "shading/glsl/texture.h"
 
 namespace qs {
 

@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "glsl.h"
-#include "program.h"
+#include "shading/glsl.h"
+#include "shading/program.h"
 
 // `flatten` inlines the whole shader into ProgramOf::run: one straight-line SIMD body per number
 // type, as a GPU compiler would make it, instead of calls passing vectors through memory (it

@@ -15,9 +15,9 @@
 
 #include <type_traits>
 
-#include "glsl/mat.h"
-#include "glsl/vec.h"
-#include "number/number.h"
+#include "shading/glsl/mat.h"
+#include "shading/glsl/vec.h"
+#include "shading/number/number.h"
 
 namespace qs::glsl {
 

@@ -3,7 +3,7 @@
 // Jacobian) and mat2x3 (Listing 1.2, 2 columns of vec3). Column-major as in GLSL: the
 // constructor takes columns, `m * v` combines columns, `v * m` dots v with each column.
 
-#include "glsl/vec.h"
+#include "shading/glsl/vec.h"
 
 namespace qs::glsl {
 

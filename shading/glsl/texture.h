@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "glsl/builtins.h"
+#include "shading/glsl/builtins.h"
 
 namespace qs::glsl {
 

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <utility>
 
-#include "number/number.h"
+#include "shading/number/number.h"
 
 namespace qs::glsl {
 

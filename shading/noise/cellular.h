@@ -1,8 +1,8 @@
 #pragma once
 // Cellular (Worley) noise, translated from cellular.glsl beside this file.
 
-#include "glsl.h"
-#include "noise/flow_noise.h"
+#include "shading/glsl.h"
+#include "shading/noise/flow_noise.h"
 
 namespace qs::noise {
 using namespace qs::glsl;

@@ -2,7 +2,7 @@
 // Flow noise: 2D simplex noise with rotating gradients and analytic gradient, translated from
 // flow_noise.glsl beside this file.
 
-#include "glsl.h"
+#include "shading/glsl.h"
 
 namespace qs::noise {
 using namespace qs::glsl;

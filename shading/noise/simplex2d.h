@@ -1,7 +1,7 @@
 #pragma once
 // 2D simplex noise, Listing 1.3, translated from simplex2d.glsl beside this file.
 
-#include "glsl.h"
+#include "shading/glsl.h"
 
 namespace qs::noise {
 using namespace qs::glsl;

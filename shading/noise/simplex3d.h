@@ -2,8 +2,8 @@
 // 3D simplex noise, 2011 variant, translated from simplex3d.glsl beside this file. The variant's
 // constants are a template argument, as the GLSL takes them from #defines.
 
-#include "glsl.h"
-#include "noise/simplex2d.h"
+#include "shading/glsl.h"
+#include "shading/noise/simplex2d.h"
 
 namespace qs::noise {
 using namespace qs::glsl;

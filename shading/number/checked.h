@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "number/lanes.h"
+#include "shading/number/lanes.h"
 
 namespace qs {
 

@@ -8,7 +8,7 @@
 
 #include <type_traits>
 
-#include "number/scalar.h"
+#include "shading/number/scalar.h"
 
 namespace qs {
 

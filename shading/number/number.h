@@ -4,10 +4,10 @@
 #include <concepts>
 #include <type_traits>
 
-#include "number/checked.h"
-#include "number/dual2.h"
-#include "number/lanes.h"
-#include "number/scalar.h"
+#include "shading/number/checked.h"
+#include "shading/number/dual2.h"
+#include "shading/number/lanes.h"
+#include "shading/number/scalar.h"
 
 namespace qs {
 

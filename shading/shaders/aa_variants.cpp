@@ -1,10 +1,10 @@
 // The error study's anti-aliasing alternatives of the aastep shaders: 0.7 fwidth instead of the
 // gradient's length, and no anti-aliasing (a plain step; the pattern supersampling filters).
 // Instantiated apart from the originals so that the two build in parallel.
-#include "catalogue.h"
-#include "shaders/figure_1_1.h"
-#include "shaders/patterns.h"
-#include "shaders/table_1_1.h"
+#include "shading/catalogue.h"
+#include "shading/shaders/figure_1_1.h"
+#include "shading/shaders/patterns.h"
+#include "shading/shaders/table_1_1.h"
 
 namespace qs {
 

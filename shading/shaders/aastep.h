@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "glsl.h"
+#include "shading/glsl.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;

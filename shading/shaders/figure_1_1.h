@@ -3,14 +3,14 @@
 // the .vert/.frag files beside this header. Each struct: `info` (what it needs, its GLSL),
 // `vertex` (float, per vertex) and `fragment<F>` over any number type.
 
-#include "glsl.h"
-#include "noise/cellular.h"
-#include "noise/flow_noise.h"
-#include "noise/simplex3d.h"
-#include "program.h"
-#include "program_of.h"
-#include "shaders/aastep.h"
-#include "vertex.h"
+#include "shading/glsl.h"
+#include "shading/noise/cellular.h"
+#include "shading/noise/flow_noise.h"
+#include "shading/noise/simplex3d.h"
+#include "shading/program.h"
+#include "shading/program_of.h"
+#include "shading/shaders/aastep.h"
+#include "shading/vertex.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;

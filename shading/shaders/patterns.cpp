@@ -1,7 +1,7 @@
 // Explicit instantiation of the pattern shaders for every number type (see program_of.h).
-#include "shaders/patterns.h"
+#include "shading/shaders/patterns.h"
 
-#include "catalogue.h"
+#include "shading/catalogue.h"
 
 namespace qs {
 

@@ -3,14 +3,14 @@
 // and anti-aliased; Figure 1.5 Worley patterns; Listings 1.2, 1.3 and 1.4. Translated from the
 // .frag files beside this header.
 
-#include "glsl.h"
-#include "noise/cellular.h"
-#include "noise/flow_noise.h"
-#include "noise/simplex2d.h"
-#include "program.h"
-#include "program_of.h"
-#include "shaders/aastep.h"
-#include "shaders/table_1_1.h"
+#include "shading/glsl.h"
+#include "shading/noise/cellular.h"
+#include "shading/noise/flow_noise.h"
+#include "shading/noise/simplex2d.h"
+#include "shading/program.h"
+#include "shading/program_of.h"
+#include "shading/shaders/aastep.h"
+#include "shading/shaders/table_1_1.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;

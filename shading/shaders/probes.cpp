@@ -1,7 +1,7 @@
 // Explicit instantiation of the probe shaders (see program_of.h).
-#include "shaders/probes.h"
+#include "shading/shaders/probes.h"
 
-#include "catalogue.h"
+#include "shading/catalogue.h"
 
 namespace qs {
 

@@ -2,11 +2,11 @@
 // Probes that pin down driver behaviour the GLSL specification leaves open, so that tests can
 // compare quadshade's answer with llvmpipe's and softpipe's. Translated from the .frag files.
 
-#include "glsl.h"
-#include "program.h"
-#include "program_of.h"
-#include "shaders/figure_1_1.h"
-#include "shaders/table_1_1.h"
+#include "shading/glsl.h"
+#include "shading/program.h"
+#include "shading/program_of.h"
+#include "shading/shaders/figure_1_1.h"
+#include "shading/shaders/table_1_1.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;

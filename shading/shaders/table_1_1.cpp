@@ -1,7 +1,7 @@
 // Explicit instantiation of the Table 1.1 shaders for every number type (see program_of.h).
-#include "shaders/table_1_1.h"
+#include "shading/shaders/table_1_1.h"
 
-#include "catalogue.h"
+#include "shading/catalogue.h"
 
 namespace qs {
 

@@ -2,14 +2,14 @@
 // The eight benchmark shaders of Table 1.1, each on the full-window plane with st in [0,1]^2,
 // translated from the .frag files beside this header.
 
-#include "glsl.h"
-#include "noise/cellular.h"
-#include "noise/simplex2d.h"
-#include "noise/simplex3d.h"
-#include "program.h"
-#include "program_of.h"
-#include "shaders/aastep.h"
-#include "vertex.h"
+#include "shading/glsl.h"
+#include "shading/noise/cellular.h"
+#include "shading/noise/simplex2d.h"
+#include "shading/noise/simplex3d.h"
+#include "shading/program.h"
+#include "shading/program_of.h"
+#include "shading/shaders/aastep.h"
+#include "shading/vertex.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;

@@ -4,9 +4,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "program_of.h"
-#include "rasterizer.h"
-#include "vertex.h"
+#include "shading/program_of.h"
+#include "raster/rasterizer.h"
+#include "shading/vertex.h"
 
 namespace qs::test {
 using namespace qs::glsl;

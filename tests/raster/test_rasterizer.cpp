@@ -7,10 +7,10 @@
 #include <limits>
 #include <random>
 
-#include "block_layout.h"
-#include "gltf.h"
-#include "scene_render.h"
-#include "test_program.h"
+#include "raster/block_layout.h"
+#include "scenes/gltf.h"
+#include "render/scene_render.h"
+#include "tests/raster/test_program.h"
 
 namespace qs::test {
 

@@ -13,12 +13,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "catalogue.h"
-#include "framebuffer.h"
-#include "gltf.h"
-#include "image_io.h"
-#include "scene_render.h"
-#include "test_paths.h"
+#include "shading/catalogue.h"
+#include "raster/framebuffer.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "render/scene_render.h"
+#include "tests/test_paths.h"
 
 namespace qs {
 

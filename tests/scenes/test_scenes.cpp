@@ -18,12 +18,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "catalogue.h"
-#include "gltf.h"
-#include "image_io.h"
-#include "number/checked.h"
-#include "scene_render.h"
-#include "test_paths.h"
+#include "shading/catalogue.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "shading/number/checked.h"
+#include "render/scene_render.h"
+#include "tests/test_paths.h"
 
 namespace qs {
 

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "glsl.h"
+#include "shading/glsl.h"
 
 namespace qs::test {
 

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "number_types.h"
+#include "tests/shading/number_types.h"
 
 // Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
 namespace qs::glsl {

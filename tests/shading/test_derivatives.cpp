@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include "noise/flow_noise.h"
-#include "noise/simplex2d.h"
-#include "number_types.h"
-#include "shaders/aastep.h"
+#include "shading/noise/flow_noise.h"
+#include "shading/noise/simplex2d.h"
+#include "tests/shading/number_types.h"
+#include "shading/shaders/aastep.h"
 
 // Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
 namespace qs::glsl {

@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <functional>
 
-#include "noise/cellular.h"
-#include "noise/noise_period.h"
-#include "noise/simplex2d.h"
-#include "noise/simplex3d.h"
+#include "shading/noise/cellular.h"
+#include "shading/noise/noise_period.h"
+#include "shading/noise/simplex2d.h"
+#include "shading/noise/simplex3d.h"
 
 namespace qs::glsl {
 

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "noise/cellular.h"
-#include "noise/flow_noise.h"
-#include "noise/simplex2d.h"
-#include "noise/simplex3d.h"
+#include "shading/noise/cellular.h"
+#include "shading/noise/flow_noise.h"
+#include "shading/noise/simplex2d.h"
+#include "shading/noise/simplex3d.h"
 
 // Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
 namespace qs::glsl {

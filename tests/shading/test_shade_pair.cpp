@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string>
 
-#include "catalogue.h"
+#include "shading/catalogue.h"
 
 namespace qs {
 namespace {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <random>
 
-#include "number_types.h"
-#include "shaders/aastep.h"
+#include "tests/shading/number_types.h"
+#include "shading/shaders/aastep.h"
 
 // Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
 namespace qs::glsl {

@@ -11,7 +11,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "program.h"
+#include "shading/program.h"
 
 namespace qs {
 

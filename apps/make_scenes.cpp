@@ -10,9 +10,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "gltf.h"
-#include "image_io.h"
-#include "scene.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "scenes/scene.h"
 
 namespace {
 

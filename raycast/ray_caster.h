@@ -21,9 +21,9 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
-#include "draw_call.h"
-#include "framebuffer.h"
-#include "rasterizer.h"
+#include "raster/draw_call.h"
+#include "raster/framebuffer.h"
+#include "raster/rasterizer.h"
 
 namespace qs {
 

@@ -1,4 +1,4 @@
-#include "ray_caster.h"
+#include "raycast/ray_caster.h"
 
 #include <algorithm>
 #include <atomic>
@@ -19,9 +19,9 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "block_layout.h"
-#include "embree_scene.h"
-#include "float_environment.h"
+#include "raster/block_layout.h"
+#include "raycast/embree_scene.h"
+#include "raster/float_environment.h"
 
 namespace qs {
 

@@ -11,9 +11,9 @@
 #include <array>
 #include <cstdint>
 
-#include "framebuffer.h"
-#include "image_io.h"
-#include "number/checked.h"
+#include "raster/framebuffer.h"
+#include "scenes/image_io.h"
+#include "shading/number/checked.h"
 
 namespace qs {
 

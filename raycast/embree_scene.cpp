@@ -1,4 +1,4 @@
-#include "embree_scene.h"
+#include "raycast/embree_scene.h"
 
 #include <cstring>
 #include <mutex>

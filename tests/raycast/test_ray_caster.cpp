@@ -9,10 +9,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "catalogue.h"
-#include "gltf.h"
-#include "scene_render.h"
-#include "test_paths.h"
+#include "shading/catalogue.h"
+#include "scenes/gltf.h"
+#include "render/scene_render.h"
+#include "tests/test_paths.h"
 
 namespace qs {
 

@@ -1,4 +1,4 @@
-#include "undefined_mask.h"
+#include "render/undefined_mask.h"
 
 #include <stdexcept>
 

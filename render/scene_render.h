@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "rasterizer.h"
-#include "scene.h"
+#include "raster/rasterizer.h"
+#include "scenes/scene.h"
 
 namespace qs {
 

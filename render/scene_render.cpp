@@ -1,11 +1,11 @@
-#include "scene_render.h"
+#include "render/scene_render.h"
 
 #include <cmath>
 
-#include "catalogue.h"
-#include "image_io.h"
+#include "shading/catalogue.h"
+#include "scenes/image_io.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
-#include "ray_caster.h"
+#include "raycast/ray_caster.h"
 #endif
 
 namespace qs {
