@@ -1,5 +1,6 @@
 #include "raycast/embree_scene.h"
 
+#include <cmath>
 #include <cstring>
 #include <mutex>
 #include <string>
@@ -99,11 +100,16 @@ void EmbreeScene::intersect(const RayPacket& rays, RayHits& hits) const {
     alignas(64) RTCRayHit16 r;
     alignas(64) int valid[16];
     for (int i = 0; i < 16; ++i) {
-        valid[i] = (rays.active >> i & 1) ? -1 : 0;
-        r.ray.org_x[i] = rays.origin[0][i], r.ray.org_y[i] = rays.origin[1][i], r.ray.org_z[i] = rays.origin[2][i];
-        r.ray.dir_x[i] = rays.direction[0][i], r.ray.dir_y[i] = rays.direction[1][i];
-        r.ray.dir_z[i] = rays.direction[2][i];
-        r.ray.tnear[i] = 0.0f, r.ray.tfar[i] = 1.0f, r.ray.time[i] = 0.0f;
+        const bool active = rays.active >> i & 1;
+        valid[i] = active ? -1 : 0;
+        // An inactive lane still gets a well-formed, empty ray: without 16-wide packets (no
+        // AVX-512) Embree checks every lane of its 8-wide pieces (`ray.valid()`, an assertion that
+        // aborts), whatever the valid mask says, and the caller leaves these lanes unset.
+        r.ray.org_x[i] = active ? rays.origin[0][i] : 0.0f, r.ray.org_y[i] = active ? rays.origin[1][i] : 0.0f;
+        r.ray.org_z[i] = active ? rays.origin[2][i] : 0.0f;
+        r.ray.dir_x[i] = active ? rays.direction[0][i] : 0.0f, r.ray.dir_y[i] = active ? rays.direction[1][i] : 0.0f;
+        r.ray.dir_z[i] = active ? rays.direction[2][i] : 1.0f;
+        r.ray.tnear[i] = 0.0f, r.ray.tfar[i] = active ? 1.0f : -INFINITY, r.ray.time[i] = 0.0f;
         r.ray.mask[i] = 0xFFFFFFFFu, r.ray.id[i] = unsigned(i), r.ray.flags[i] = 0;
         r.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID, r.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
         r.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
