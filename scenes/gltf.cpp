@@ -1,4 +1,6 @@
-// The one file that includes tinygltf.
+// The one file that includes tinygltf. What tinygltf does not check (file access, offsets,
+// strides, sparse data, the node graph, transforms, counts) is checked here before it is used,
+// with the help of scenes/gltf_checks.h and scenes/scene_files.h.
 #include "scenes/gltf.h"
 
 #include <cmath>
@@ -13,65 +15,227 @@
 #include <glm/trigonometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
+
+#include "scenes/gltf_checks.h"
+#include "scenes/limits.h"
+#include "scenes/scene_files.h"
 
 namespace qs {
 
 namespace {
 
+namespace checks = gltf_checks;
+
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& field, const std::string& what) {
     throw SceneError(file.string() + ": " + field + ": " + what);
 }
 
-// Bytes of accessor `index`, element by element, with its type checked.
-struct AccessorView {
-    const unsigned char* data = nullptr;
-    std::size_t count = 0, stride = 0;
-    int component_type = 0;
+std::string indexed(const std::string& array, std::size_t i) { return array + "[" + std::to_string(i) + "]"; }
+
+// ---- files the scene refers to --------------------------------------------------------------
+
+// tinygltf looks a URI up under each of its search folders (the base folder it is given, then
+// "."), and reads what it finds through these callbacks. It is given a base folder that is no
+// real folder, so that every lookup arrives here with the URI behind it, goes through
+// resolve_scene_uri and read_scene_file, and the "." lookups (the working directory) are refused.
+struct FileAccess {
+    static constexpr std::string_view kBase = "<scene folder>";
+    std::filesystem::path scene_file;
+    ScenePathPolicy policy;
+
+    std::optional<std::filesystem::path> resolve(const std::string& looked_up, std::string* err) const {
+        if (looked_up.size() <= kBase.size() || looked_up.compare(0, kBase.size(), kBase) != 0 ||
+            looked_up[kBase.size()] != '/') {
+            return std::nullopt;
+        }
+        try {
+            return resolve_scene_uri(scene_file, std::string_view(looked_up).substr(kBase.size() + 1), policy);
+        } catch (const SceneError& e) {
+            if (err) *err += e.what();
+            return std::nullopt;
+        }
+    }
+
+    static bool exists(const std::string& path, void* self) {
+        const auto p = static_cast<const FileAccess*>(self)->resolve(path, nullptr);
+        return p && std::filesystem::exists(*p);
+    }
+    static std::string expand(const std::string& path, void*) { return path; }
+    static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* self) {
+        const auto p = static_cast<const FileAccess*>(self)->resolve(path, err);
+        if (!p) return false;
+        try {
+            *out = read_scene_file(*p, limits::kResourceFileBytes);
+            return true;
+        } catch (const SceneError& e) {
+            if (err) *err += e.what();
+            return false;
+        }
+    }
+    static bool write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+        if (err) *err += "loading a scene writes no files";
+        return false;
+    }
 };
 
-AccessorView view_accessor(const tinygltf::Model& m, int index, const std::filesystem::path& file,
-                           const std::string& field, int want_type, std::initializer_list<int> want_components) {
+// glTF images are not decoded while the file loads (tinygltf would use stb_image on anything it
+// finds): an image is decoded, with its size checked first, only when a texture uses it.
+bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                          void*) {
+    return true;
+}
+
+// Every buffer and image URI resolved before tinygltf reads anything, so that a message names
+// the field, and the scene's list of input files. `json` has passed the depth check.
+void check_uris(std::string_view json, const std::filesystem::path& file, const ScenePathPolicy& policy,
+                std::vector<std::filesystem::path>& inputs) {
+    const nlohmann::json doc = nlohmann::json::parse(json, nullptr, /*allow_exceptions=*/false);
+    if (!doc.is_object()) return;  // tinygltf reports what is wrong with it
+    for (const char* array : {"buffers", "images"}) {
+        const auto list = doc.find(array);
+        if (list == doc.end() || !list->is_array()) continue;
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const nlohmann::json& item = (*list)[i];
+            if (!item.is_object() || !item.contains("uri") || !item["uri"].is_string()) continue;
+            const std::string& uri = item["uri"].get_ref<const std::string&>();
+            if (uri.rfind("data:", 0) == 0) continue;  // embedded
+            std::filesystem::path resolved;
+            try {
+                resolved = resolve_scene_uri(file, checks::percent_decoded(uri), policy);
+            } catch (const SceneError& e) {
+                fail(file, indexed(array, i) + ".uri", e.what());
+            }
+            if (std::filesystem::is_directory(resolved)) fail(file, indexed(array, i) + ".uri", "'" + uri + "' is a folder");
+            inputs.push_back(resolved);
+        }
+    }
+}
+
+// ---- buffers and accessors ------------------------------------------------------------------
+
+// Buffer views lie inside their buffers and have strides glTF allows; checked once for all,
+// before any accessor reads through them.
+void check_buffer_views(const tinygltf::Model& m, const std::filesystem::path& file) {
+    for (std::size_t i = 0; i < m.bufferViews.size(); ++i) {
+        const tinygltf::BufferView& v = m.bufferViews[i];
+        const std::string field = indexed("bufferViews", i);
+        if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size()) fail(file, field + ".buffer", "index out of range");
+        const auto end = checks::checked_add(v.byteOffset, v.byteLength);
+        const std::size_t size = m.buffers[std::size_t(v.buffer)].data.size();
+        if (!end || *end > size) {
+            fail(file, field, "bytes " + std::to_string(v.byteOffset) + " + " + std::to_string(v.byteLength) +
+                                  " reach past the end of buffers[" + std::to_string(v.buffer) + "] (" +
+                                  std::to_string(size) + " bytes)");
+        }
+        if (v.byteStride != 0 && (v.byteStride < 4 || v.byteStride > 252 || v.byteStride % 4 != 0)) {
+            fail(file, field + ".byteStride", std::to_string(v.byteStride) + " is not a multiple of 4 in 4..252");
+        }
+    }
+}
+
+// An accessor's elements, tightly packed, sparse substitutions applied.
+struct AccessorData {
+    std::vector<unsigned char> bytes;
+    std::size_t count = 0, element = 0;
+    int component_type = 0;
+    const unsigned char* at(std::size_t i) const { return bytes.data() + i * element; }
+};
+
+// Bytes [offset, offset + (count - 1) stride + element) of buffer view `view`, checked.
+const unsigned char* view_range(const tinygltf::Model& m, int view, std::uint64_t offset, std::uint64_t count,
+                                std::uint64_t stride, std::uint64_t element, const std::filesystem::path& file,
+                                const std::string& field) {
+    if (view < 0 || std::size_t(view) >= m.bufferViews.size()) fail(file, field + ".bufferView", "index out of range");
+    const tinygltf::BufferView& v = m.bufferViews[std::size_t(view)];
+    const auto end = checks::strided_end(offset, count, stride, element);
+    if (!end || *end > v.byteLength) {
+        fail(file, field, std::to_string(count) + " elements of " + std::to_string(element) + " bytes, " +
+                              std::to_string(stride) + " apart from byte " + std::to_string(offset) +
+                              ", reach past the end of bufferViews[" + std::to_string(view) + "] (" +
+                              std::to_string(v.byteLength) + " bytes)");
+    }
+    return m.buffers[std::size_t(v.buffer)].data.data() + v.byteOffset;  // v checked by check_buffer_views
+}
+
+std::uint32_t read_index(const unsigned char* p, int component_type) {
+    if (component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return *p;
+    if (component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        std::uint16_t s;
+        std::memcpy(&s, p, 2);
+        return s;
+    }
+    std::uint32_t v;
+    std::memcpy(&v, p, 4);
+    return v;
+}
+
+bool is_index_type(int component_type) {
+    return component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+           component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+}
+
+AccessorData read_accessor(const tinygltf::Model& m, int index, const std::filesystem::path& file,
+                           const std::string& field, int want_type, std::initializer_list<int> want_components,
+                           std::uint64_t max_count) {
     if (index < 0 || std::size_t(index) >= m.accessors.size()) fail(file, field, "accessor index out of range");
     const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
-    if (a.type != want_type) fail(file, field, "accessor has the wrong element type");
+    const std::string af = indexed("accessors", std::size_t(index));
+    if (a.type != want_type) fail(file, field, af + " has the wrong element type");
     bool component_ok = false;
     for (int c : want_components) component_ok |= a.componentType == c;
-    if (!component_ok) fail(file, field, "accessor has an unsupported component type " + std::to_string(a.componentType));
-    if (a.bufferView < 0 || std::size_t(a.bufferView) >= m.bufferViews.size()) fail(file, field, "accessor has no buffer view");
-    const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
-    if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size()) fail(file, field, "buffer view has no buffer");
-    const tinygltf::Buffer& b = m.buffers[std::size_t(v.buffer)];
-    const std::size_t element = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType))) *
-                                std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
-    const std::size_t stride = v.byteStride ? v.byteStride : element;
-    const std::size_t begin = v.byteOffset + a.byteOffset;
-    if (a.count > 0 && (begin + stride * (a.count - 1) + element > v.byteOffset + v.byteLength ||
-                        v.byteOffset + v.byteLength > b.data.size())) {
-        fail(file, field, "accessor reaches past the end of its buffer");
+    if (!component_ok) fail(file, field, af + " has an unsupported component type " + std::to_string(a.componentType));
+    if (a.count > max_count) {
+        fail(file, af + ".count", std::to_string(a.count) + " is more than the " + std::to_string(max_count) +
+                                      " quadshade accepts");
     }
-    return {b.data.data() + begin, a.count, stride, a.componentType};
+    AccessorData d;
+    d.count = a.count;
+    d.component_type = a.componentType;
+    d.element = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType))) *
+                std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(a.type)));
+    d.bytes.assign(d.count * d.element, 0);  // no buffer view: zeros (sparse data may follow)
+    if (a.bufferView >= 0) {
+        if (std::size_t(a.bufferView) >= m.bufferViews.size()) fail(file, af + ".bufferView", "index out of range");
+        const std::size_t view_stride = m.bufferViews[std::size_t(a.bufferView)].byteStride;
+        const std::size_t stride = view_stride ? view_stride : d.element;
+        if (stride < d.element) fail(file, af, "byteStride " + std::to_string(stride) + " is less than an element");
+        const unsigned char* base = view_range(m, a.bufferView, a.byteOffset, d.count, stride, d.element, file, af);
+        for (std::size_t i = 0; i < d.count; ++i) std::memcpy(&d.bytes[i * d.element], base + a.byteOffset + i * stride, d.element);
+    }
+    if (a.sparse.isSparse) {
+        const auto& s = a.sparse;
+        const std::string sf = af + ".sparse";
+        if (s.count < 1 || std::uint64_t(s.count) > d.count) {
+            fail(file, sf + ".count", std::to_string(s.count) + " is not in 1.." + std::to_string(d.count));
+        }
+        if (!is_index_type(s.indices.componentType)) fail(file, sf + ".indices.componentType", "not an unsigned integer type");
+        if (s.indices.byteOffset < 0) fail(file, sf + ".indices.byteOffset", "negative");
+        if (s.values.byteOffset < 0) fail(file, sf + ".values.byteOffset", "negative");
+        const std::size_t index_size = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(s.indices.componentType)));
+        const unsigned char* indices = view_range(m, s.indices.bufferView, std::uint64_t(s.indices.byteOffset),
+                                                  std::uint64_t(s.count), index_size, index_size, file, sf + ".indices");
+        const unsigned char* values = view_range(m, s.values.bufferView, std::uint64_t(s.values.byteOffset),
+                                                 std::uint64_t(s.count), d.element, d.element, file, sf + ".values");
+        indices += s.indices.byteOffset, values += s.values.byteOffset;
+        std::int64_t previous = -1;
+        for (std::size_t k = 0; k < std::size_t(s.count); ++k) {
+            const std::uint32_t i = read_index(indices + k * index_size, s.indices.componentType);
+            if (std::int64_t(i) <= previous || i >= d.count) {
+                fail(file, sf + ".indices", "index " + std::to_string(i) + " at position " + std::to_string(k) +
+                                                " does not increase or is not below count " + std::to_string(d.count));
+            }
+            previous = i;
+            std::memcpy(&d.bytes[i * d.element], values + k * d.element, d.element);
+        }
+    }
+    return d;
 }
 
-glm::mat4 node_matrix(const tinygltf::Node& n) {
-    if (n.matrix.size() == 16) {
-        glm::mat4 m;
-        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = float(n.matrix[std::size_t(i)]);
-        return m;
-    }
-    glm::mat4 m(1.0f);
-    if (n.translation.size() == 3) {
-        m = glm::translate(m, glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2])));
-    }
-    if (n.rotation.size() == 4) {
-        glm::quat q(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
-        m = m * glm::mat4_cast(q);
-    }
-    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2])));
-    return m;
-}
-
-Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, const std::filesystem::path& file) {
+Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, const std::filesystem::path& file,
+                    std::uint64_t vertices_left) {
     const tinygltf::Primitive& p = m.meshes[mi].primitives[pi];
     const std::string field = "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
     if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
@@ -79,26 +243,26 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
     }
     auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) fail(file, field + ".attributes", "no POSITION");
-    AccessorView pv = view_accessor(m, pos->second, file, field + ".attributes.POSITION", TINYGLTF_TYPE_VEC3,
-                                    {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    const AccessorData pv = read_accessor(m, pos->second, file, field + ".attributes.POSITION", TINYGLTF_TYPE_VEC3,
+                                          {TINYGLTF_COMPONENT_TYPE_FLOAT}, vertices_left);
     Mesh mesh;
     mesh.name = m.meshes[mi].name.empty() ? field : m.meshes[mi].name;
     mesh.vertices.resize(pv.count);
     for (std::size_t i = 0; i < pv.count; ++i) {
         float xyz[3];
-        std::memcpy(xyz, pv.data + i * pv.stride, sizeof xyz);
+        std::memcpy(xyz, pv.at(i), sizeof xyz);
         if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
             fail(file, field + ".attributes.POSITION", "vertex " + std::to_string(i) + " is not finite");
         }
         mesh.vertices[i] = {{xyz[0], xyz[1], xyz[2]}, {0.0f, 0.0f}};
     }
     if (auto tc = p.attributes.find("TEXCOORD_0"); tc != p.attributes.end()) {
-        AccessorView tv = view_accessor(m, tc->second, file, field + ".attributes.TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-                                        {TINYGLTF_COMPONENT_TYPE_FLOAT});
+        const AccessorData tv = read_accessor(m, tc->second, file, field + ".attributes.TEXCOORD_0", TINYGLTF_TYPE_VEC2,
+                                              {TINYGLTF_COMPONENT_TYPE_FLOAT}, limits::kVertices);
         if (tv.count != pv.count) fail(file, field + ".attributes.TEXCOORD_0", "count differs from POSITION's");
         for (std::size_t i = 0; i < tv.count; ++i) {
             float st[2];
-            std::memcpy(st, tv.data + i * tv.stride, sizeof st);
+            std::memcpy(st, tv.at(i), sizeof st);
             if (!std::isfinite(st[0]) || !std::isfinite(st[1])) {
                 fail(file, field + ".attributes.TEXCOORD_0", "texcoord " + std::to_string(i) + " is not finite");
             }
@@ -106,16 +270,13 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
         }
     }
     if (p.indices >= 0) {
-        AccessorView iv = view_accessor(m, p.indices, file, field + ".indices", TINYGLTF_TYPE_SCALAR,
-                                        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+        const AccessorData iv = read_accessor(m, p.indices, file, field + ".indices", TINYGLTF_TYPE_SCALAR,
+                                              {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                               TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                                              3 * limits::kTriangles);
         mesh.indices.resize(iv.count);
         for (std::size_t i = 0; i < iv.count; ++i) {
-            const unsigned char* e = iv.data + i * iv.stride;
-            std::uint32_t v = 0;
-            if (iv.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) v = *e;
-            else if (iv.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) { std::uint16_t s; std::memcpy(&s, e, 2); v = s; }
-            else std::memcpy(&v, e, 4);
+            const std::uint32_t v = read_index(iv.at(i), iv.component_type);
             if (v >= pv.count) {
                 fail(file, field + ".indices", "index " + std::to_string(v) + " at position " + std::to_string(i) +
                                                    " exceeds the " + std::to_string(pv.count) + " vertices");
@@ -128,6 +289,86 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
     }
     if (mesh.indices.size() % 3 != 0) fail(file, field + ".indices", "count is not a multiple of 3");
     return mesh;
+}
+
+// ---- nodes and cameras ----------------------------------------------------------------------
+
+// A node's local transform, every number checked: glTF gives them as doubles, and one that does
+// not fit in float (a translation of 1e39) would place everything at infinity.
+glm::mat4 node_matrix(const tinygltf::Node& n, const std::filesystem::path& file, const std::string& field) {
+    auto to_float = [&](double v, const char* what) {
+        const float f = float(v);
+        if (!std::isfinite(f)) fail(file, field + "." + what, "value " + std::to_string(v) + " is not a finite float");
+        return f;
+    };
+    if (!n.matrix.empty()) {
+        if (n.matrix.size() != 16) fail(file, field + ".matrix", "expected 16 numbers");
+        glm::mat4 m;
+        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = to_float(n.matrix[std::size_t(i)], "matrix");
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (!n.translation.empty()) {
+        if (n.translation.size() != 3) fail(file, field + ".translation", "expected 3 numbers");
+        m = glm::translate(m, glm::vec3(to_float(n.translation[0], "translation"), to_float(n.translation[1], "translation"),
+                                        to_float(n.translation[2], "translation")));
+    }
+    if (!n.rotation.empty()) {
+        if (n.rotation.size() != 4) fail(file, field + ".rotation", "expected 4 numbers");
+        glm::quat q(to_float(n.rotation[3], "rotation"), to_float(n.rotation[0], "rotation"),
+                    to_float(n.rotation[1], "rotation"), to_float(n.rotation[2], "rotation"));
+        if (glm::length(q) == 0.0f) fail(file, field + ".rotation", "a zero quaternion is no rotation");
+        m = m * glm::mat4_cast(glm::normalize(q));
+    }
+    if (!n.scale.empty()) {
+        if (n.scale.size() != 3) fail(file, field + ".scale", "expected 3 numbers");
+        m = glm::scale(m, glm::vec3(to_float(n.scale[0], "scale"), to_float(n.scale[1], "scale"), to_float(n.scale[2], "scale")));
+    }
+    return m;
+}
+
+Camera read_camera(const tinygltf::Model& m, int index, const glm::mat4& world, const std::filesystem::path& file,
+                   const std::string& node_field) {
+    if (std::size_t(index) >= m.cameras.size()) fail(file, node_field + ".camera", "index out of range");
+    if (!checks::places_things(world)) {
+        fail(file, node_field, "the camera's transform is not finite or is degenerate (determinant " +
+                                   std::to_string(checks::determinant(world)) + "): it sees nothing");
+    }
+    const tinygltf::Camera& c = m.cameras[std::size_t(index)];
+    const std::string cf = indexed("cameras", std::size_t(index));
+    Camera cam;
+    cam.view = glm::inverse(world);
+    if (!checks::is_finite(cam.view)) fail(file, node_field, "the camera's transform cannot be inverted in float");
+    auto finite_float = [](double v) { return std::isfinite(float(v)); };
+    if (c.type == "perspective") {
+        cam.yfov = float(c.perspective.yfov);
+        cam.znear = float(c.perspective.znear);
+        cam.zfar = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 1e6f;
+        if (!(cam.yfov > 1e-6f && cam.yfov < 3.14159f)) fail(file, cf + ".perspective.yfov", "must be in (0, pi)");
+        if (!finite_float(c.perspective.znear) || !finite_float(c.perspective.zfar) ||
+            !(cam.znear > 0.0f && cam.zfar > cam.znear)) {
+            fail(file, cf + ".perspective", "needs finite 0 < znear < zfar");
+        }
+    } else if (c.type == "orthographic") {
+        cam.kind = Camera::Kind::Orthographic;
+        cam.xmag = float(c.orthographic.xmag), cam.ymag = float(c.orthographic.ymag);
+        cam.znear = float(c.orthographic.znear), cam.zfar = float(c.orthographic.zfar);
+        for (const float v : {cam.xmag, cam.ymag}) {
+            if (!std::isfinite(v) || v == 0.0f || !std::isfinite(1.0f / v)) {
+                fail(file, cf + ".orthographic", "xmag and ymag must be finite and non-zero");
+            }
+        }
+        if (!std::isfinite(cam.znear) || !std::isfinite(cam.zfar) || !(cam.zfar > cam.znear) ||
+            !std::isfinite(2.0f / (cam.znear - cam.zfar))) {
+            fail(file, cf + ".orthographic", "needs finite znear < zfar");
+        }
+    } else {
+        fail(file, cf + ".type", "unknown camera type '" + c.type + "'");
+    }
+    if (!checks::is_finite(cam.projection(1.0f) * cam.view)) {
+        fail(file, cf, "its projection of " + node_field + "'s view is not finite");
+    }
+    return cam;
 }
 
 double number_of(const tinygltf::Value& v) { return v.IsInt() ? double(v.Get<int>()) : v.Get<double>(); }
@@ -153,91 +394,123 @@ Camera framing_camera(const Scene& scene) {
     return cam;
 }
 
+void read_scene_extras(const tinygltf::Value& extras, const std::filesystem::path& path, const std::string& field,
+                       Scene& scene) {
+    if (!extras.IsObject()) return;
+    if (extras.Has("clear_color")) {
+        const tinygltf::Value& c = extras.Get("clear_color");
+        if (!c.IsArray() || c.ArrayLen() != 4) fail(path, field + ".clear_color", "expected 4 numbers");
+        for (int i = 0; i < 4; ++i) {
+            if (!c.Get(i).IsNumber() || !std::isfinite(float(number_of(c.Get(i))))) {
+                fail(path, field + ".clear_color", "expected 4 finite numbers");
+            }
+            scene.clear_color[i] = float(number_of(c.Get(i)));
+        }
+    }
+    if (extras.Has("time")) {
+        const tinygltf::Value& t = extras.Get("time");
+        if (!t.IsNumber() || !std::isfinite(float(number_of(t)))) fail(path, field + ".time", "expected a finite number");
+        scene.time = float(number_of(t));
+    }
+    if (extras.Has("size")) {
+        const tinygltf::Value& s = extras.Get("size");
+        if (!s.IsArray() || s.ArrayLen() != 2 || !s.Get(0).IsInt() || !s.Get(1).IsInt()) {
+            fail(path, field + ".size", "expected [width, height] integers");
+        }
+        scene.width = s.Get(0).Get<int>(), scene.height = s.Get(1).Get<int>();
+        if (scene.width <= 0 || scene.height <= 0 || scene.width > limits::kImageSide || scene.height > limits::kImageSide) {
+            fail(path, field + ".size", std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                                            " is outside 1.." + std::to_string(limits::kImageSide));
+        }
+    }
+}
+
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& path) {
-    if (!std::filesystem::is_regular_file(path)) throw SceneError(path.string() + ": no such file");
-    tinygltf::Model m;
-    tinygltf::TinyGLTF loader;
-    std::string err, warn;
-    const bool binary = path.extension() == ".glb";
-    const bool ok = binary ? loader.LoadBinaryFromFile(&m, &err, &warn, path.string())
-                           : loader.LoadASCIIFromFile(&m, &err, &warn, path.string());
-    if (!ok) throw SceneError(path.string() + ": not a valid glTF file: " + (err.empty() ? warn : err));
+Scene load_scene(const std::filesystem::path& path, const SceneLoadOptions& options) {
+    return parse_scene(read_scene_file(path, limits::kSceneFileBytes, /*follow_symlink=*/true), path, options);
+}
 
+Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::path& path, const SceneLoadOptions& options) {
+    const bool binary = checks::has_glb_magic(bytes);
+    if (path.extension() == ".glb" && !binary) fail(path, "header", "a .glb file without the binary glTF magic");
+    std::string_view json;
+    try {
+        json = binary ? checks::glb_json_chunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    } catch (const SceneError& e) {
+        fail(path, "header", e.what());
+    }
+    if (checks::json_nesting_depth(json, limits::kJsonDepth) > limits::kJsonDepth) {
+        fail(path, "JSON", "objects and arrays nest deeper than " + std::to_string(limits::kJsonDepth) + " levels");
+    }
     Scene scene;
     scene.file = path;
-    const std::filesystem::path dir = path.parent_path();
+    std::error_code ec;
+    scene.inputs.push_back(std::filesystem::weakly_canonical(path, ec));
+    check_uris(json, path, options.paths, scene.inputs);
+
+    tinygltf::Model m;
+    tinygltf::TinyGLTF loader;
+    FileAccess access{path, options.paths};
+    loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read, &FileAccess::write, &access});
+    loader.SetImageLoader(&keep_image_undecoded, nullptr);
+    std::string err, warn;
+    const std::string base(FileAccess::kBase);
+    const bool ok = binary ? loader.LoadBinaryFromMemory(&m, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
+                           : loader.LoadASCIIFromString(&m, &err, &warn, json.data(), unsigned(json.size()), base);
+    if (!ok) throw SceneError(path.string() + ": not a valid glTF file: " + (err.empty() ? warn : err));
+    check_buffer_views(m, path);
+
     const int scene_index = m.defaultScene >= 0 ? m.defaultScene : 0;
     if (m.scenes.empty() || std::size_t(scene_index) >= m.scenes.size()) fail(path, "scenes", "no scene to render");
     const tinygltf::Scene& gs = m.scenes[std::size_t(scene_index)];
-    const std::string scene_field = "scenes[" + std::to_string(scene_index) + "].extras";
-    if (gs.extras.IsObject()) {
-        if (gs.extras.Has("clear_color")) {
-            const tinygltf::Value& c = gs.extras.Get("clear_color");
-            if (!c.IsArray() || c.ArrayLen() != 4) fail(path, scene_field + ".clear_color", "expected 4 numbers");
-            for (int i = 0; i < 4; ++i) scene.clear_color[i] = float(number_of(c.Get(i)));
-        }
-        if (gs.extras.Has("time")) {
-            const tinygltf::Value& t = gs.extras.Get("time");
-            if (!t.IsNumber()) fail(path, scene_field + ".time", "expected a number");
-            scene.time = float(number_of(t));
-        }
-        if (gs.extras.Has("size")) {
-            const tinygltf::Value& s = gs.extras.Get("size");
-            if (!s.IsArray() || s.ArrayLen() != 2 || !s.Get(0).IsInt() || !s.Get(1).IsInt()) {
-                fail(path, scene_field + ".size", "expected [width, height] integers");
-            }
-            scene.width = s.Get(0).Get<int>(), scene.height = s.Get(1).Get<int>();
-            if (scene.width <= 0 || scene.height <= 0) fail(path, scene_field + ".size", "must be positive");
-        }
-    }
+    read_scene_extras(gs.extras, path, indexed("scenes", std::size_t(scene_index)) + ".extras", scene);
 
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> mesh_of;  // (mesh, primitive) -> Scene::meshes
     std::map<std::string, int> texture_of;
+    std::vector<bool> reached(m.nodes.size(), false);
+    std::uint64_t vertices = 0, triangles = 0;
     bool have_camera = false;
-    std::function<void(int, const glm::mat4&)> visit = [&](int ni, const glm::mat4& parent) {
+    std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
         if (ni < 0 || std::size_t(ni) >= m.nodes.size()) fail(path, "nodes", "node index " + std::to_string(ni) + " out of range");
+        const std::string node_field = indexed("nodes", std::size_t(ni));
+        if (reached[std::size_t(ni)]) {
+            fail(path, node_field, "is reached twice (a cycle, or a child of two parents): glTF nodes form trees");
+        }
+        reached[std::size_t(ni)] = true;
+        if (depth > limits::kNodeDepth) {
+            fail(path, node_field, "lies deeper than " + std::to_string(limits::kNodeDepth) + " levels below the scene's root");
+        }
         const tinygltf::Node& n = m.nodes[std::size_t(ni)];
-        const glm::mat4 world = parent * node_matrix(n);
-        const std::string node_field = "nodes[" + std::to_string(ni) + "]";
+        const glm::mat4 world = parent * node_matrix(n, path, node_field);
+        if (!checks::is_finite(world)) fail(path, node_field, "its world transform is not finite (too large for float)");
         if (n.camera >= 0 && !have_camera) {
-            if (std::size_t(n.camera) >= m.cameras.size()) fail(path, node_field + ".camera", "index out of range");
-            const tinygltf::Camera& c = m.cameras[std::size_t(n.camera)];
-            const std::string cf = "cameras[" + std::to_string(n.camera) + "]";
-            Camera cam;
-            cam.view = glm::inverse(world);
-            if (c.type == "perspective") {
-                cam.yfov = float(c.perspective.yfov);
-                cam.znear = float(c.perspective.znear);
-                cam.zfar = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 1e6f;
-                if (!(cam.yfov > 0.0f && cam.yfov < 3.14159f)) fail(path, cf + ".perspective.yfov", "must be in (0, pi)");
-                if (!(cam.znear > 0.0f && cam.zfar > cam.znear)) fail(path, cf + ".perspective", "needs 0 < znear < zfar");
-            } else if (c.type == "orthographic") {
-                cam.kind = Camera::Kind::Orthographic;
-                cam.xmag = float(c.orthographic.xmag), cam.ymag = float(c.orthographic.ymag);
-                cam.znear = float(c.orthographic.znear), cam.zfar = float(c.orthographic.zfar);
-                if (cam.xmag == 0.0f || cam.ymag == 0.0f) fail(path, cf + ".orthographic", "xmag and ymag must be non-zero");
-                if (!(cam.zfar > cam.znear)) fail(path, cf + ".orthographic", "needs znear < zfar");
-            } else {
-                fail(path, cf + ".type", "unknown camera type '" + c.type + "'");
-            }
-            scene.camera = cam;
+            scene.camera = read_camera(m, n.camera, world, path, node_field);
             have_camera = true;
         }
         if (n.mesh >= 0) {
             if (std::size_t(n.mesh) >= m.meshes.size()) fail(path, node_field + ".mesh", "index out of range");
+            if (!checks::places_things(world)) {
+                fail(path, node_field, "its world transform is degenerate (determinant " +
+                                           std::to_string(checks::determinant(world)) + "): its mesh would be invisible");
+            }
             const tinygltf::Mesh& gm = m.meshes[std::size_t(n.mesh)];
             for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
                 const auto key = std::make_pair(std::size_t(n.mesh), pi);
                 if (!mesh_of.count(key)) {
                     mesh_of[key] = scene.meshes.size();
-                    scene.meshes.push_back(read_primitive(m, std::size_t(n.mesh), pi, path));
+                    scene.meshes.push_back(read_primitive(m, std::size_t(n.mesh), pi, path, limits::kVertices - vertices));
+                    vertices += scene.meshes.back().vertices.size();
                 }
                 Object o;
                 o.name = n.name.empty() ? node_field : n.name;
                 o.mesh = mesh_of[key];
                 o.world_from_object = world;
+                triangles += scene.meshes[o.mesh].indices.size() / 3;
+                if (triangles > limits::kTriangles || scene.objects.size() >= limits::kObjects) {
+                    fail(path, node_field, "the scene draws more than " + std::to_string(limits::kTriangles) +
+                                               " triangles or " + std::to_string(limits::kObjects) + " objects");
+                }
                 const int mat = gm.primitives[pi].material;
                 if (mat >= 0) {
                     if (std::size_t(mat) >= m.materials.size()) fail(path, "meshes[" + std::to_string(n.mesh) + "].material", "index out of range");
@@ -252,8 +525,17 @@ Scene load_scene(const std::filesystem::path& path) {
                         if (!gmat.extras.Get("teximage").IsString()) fail(path, mf + ".teximage", "expected a file name");
                         const std::string rel = gmat.extras.Get("teximage").Get<std::string>();
                         if (!texture_of.count(rel)) {
+                            // Refused only when a shader samples it: textures are read then.
+                            Texture t;
+                            try {
+                                t.path = resolve_scene_uri(path, rel, options.paths);
+                                scene.inputs.push_back(t.path);
+                            } catch (const SceneError& e) {
+                                t.path = rel;
+                                t.refused = e.what();
+                            }
                             texture_of[rel] = int(scene.textures.size());
-                            scene.textures.push_back({dir / rel, {}, false});
+                            scene.textures.push_back(std::move(t));
                         }
                         o.texture = texture_of[rel];
                     }
@@ -261,11 +543,16 @@ Scene load_scene(const std::filesystem::path& path) {
                 scene.objects.push_back(o);
             }
         }
-        for (int child : n.children) visit(child, world);
+        for (int child : n.children) visit(child, world, depth + 1);
     };
-    for (int ni : gs.nodes) visit(ni, glm::mat4(1.0f));
+    for (int ni : gs.nodes) visit(ni, glm::mat4(1.0f), 0);
     if (scene.objects.empty()) fail(path, "nodes", "no node carries a mesh");
-    if (!have_camera) scene.camera = framing_camera(scene);
+    if (!have_camera) {
+        scene.camera = framing_camera(scene);
+        if (!checks::is_finite(scene.camera.projection(1.0f) * scene.camera.view)) {
+            fail(path, "nodes", "the scene has no camera and its bounds are too large to frame in float");
+        }
+    }
     return scene;
 }
 

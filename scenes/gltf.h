@@ -11,13 +11,26 @@
 // Shaders see the untransformed POSITION as gl_Vertex, the node's world matrix in the MVP.
 
 #include <filesystem>
+#include <span>
 
 #include "scenes/scene.h"
+#include "scenes/scene_files.h"
 
 namespace qs {
 
-// Throws SceneError naming the file and the field at fault.
-Scene load_scene(const std::filesystem::path& path);
+struct SceneLoadOptions {
+    ScenePathPolicy paths;  // which files the scene may read besides itself
+};
+
+// Throws SceneError naming the file and the field at fault. Everything scenes/limits.h bounds is
+// checked before it is allocated; buffer and image URIs, and extras.teximage, are resolved by
+// resolve_scene_uri (scene_files.h) and must lie in the scene's folder unless
+// options.paths.allow_outside; images are not decoded here.
+Scene load_scene(const std::filesystem::path& path, const SceneLoadOptions& options = {});
+// The same from the file's bytes (JSON or binary glTF, told apart by the binary magic); `path`
+// names the file in messages and its folder is where URIs lead.
+Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::path& path,
+                  const SceneLoadOptions& options = {});
 
 // Writes `scene` as .gltf with its buffer in a .bin beside it (used by the scene generator).
 void save_scene(const Scene& scene, const std::filesystem::path& path);

@@ -1,14 +1,22 @@
 // The one file that includes OpenImageIO.
 #include "scenes/image_io.h"
 
-#include <algorithm>
-#include <cmath>
-#include <system_error>
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+
+#include "scenes/limits.h"
+#include "scenes/scene.h"
+#include "scenes/scene_files.h"
+#include "scenes/temporary_file.h"
 
 namespace qs {
 
@@ -21,25 +29,88 @@ OIIO::ImageBuf to_buf(const Image& img) {
     return buf;
 }
 
+std::string size_text(std::int64_t width, std::int64_t height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+// OpenImageIO writes through this into the temporary file: every write goes straight to the
+// file descriptor, and a short or failed one is recorded, so that commit() refuses a file that
+// is missing bytes (a full disk) whatever the format's writer made of the failure.
+class TemporaryFileProxy final : public OIIO::Filesystem::IOProxy {
+public:
+    explicit TemporaryFileProxy(TemporaryFile& file) : IOProxy(file.path().string(), Write), file_(file) {}
+    const char* proxytype() const override { return "quadshade-temporary-file"; }
+    size_t write(const void* buf, size_t size) override {
+        const size_t n = pwrite(buf, size, m_pos);
+        m_pos += std::int64_t(n);
+        return n;
+    }
+    size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+        size_t done = 0;
+        while (done < size) {
+            const ssize_t n = ::pwrite(file_.fd(), static_cast<const char*>(buf) + done, size - done, offset + std::int64_t(done));
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) {
+                file_.note_write_error(n < 0 ? errno : ENOSPC);
+                break;
+            }
+            done += size_t(n);
+        }
+        end_ = std::max(end_, offset + std::int64_t(done));
+        return done;
+    }
+    size_t read(void* buf, size_t size) override {
+        const size_t n = pread(buf, size, m_pos);
+        m_pos += std::int64_t(n);
+        return n;
+    }
+    size_t pread(void* buf, size_t size, int64_t offset) override {
+        const ssize_t n = ::pread(file_.fd(), buf, size, offset);
+        return n > 0 ? size_t(n) : 0;
+    }
+    size_t size() const override { return size_t(end_); }
+
+private:
+    TemporaryFile& file_;
+    std::int64_t end_ = 0;
+};
+
 }  // namespace
 
-Image read_image(const std::filesystem::path& path) {
-    auto in = OIIO::ImageInput::open(path.string());
+std::uint64_t image_read_bytes(std::uint64_t width, std::uint64_t height) {
+    // Up to four decoded float channels, then the RGBA copy.
+    return width * height * (4 + 4) * sizeof(float);
+}
+
+Image read_image(const std::filesystem::path& path, const ImageReadLimits& limits) {
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = read_scene_file(path, limits.max_file_bytes, limits.follow_symlink);
+    } catch (const SceneError& e) {
+        throw ImageError(e.what());
+    }
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    auto in = OIIO::ImageInput::open(path.string(), nullptr, &memory);
     if (!in) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
-        std::int64_t(spec.width) * spec.height > (std::int64_t(1) << 28)) {
-        throw ImageError(path.string() + ": unsupported image size " + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height));
+    // The header's size, checked before a pixel is decoded: a small file can declare a huge image.
+    if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.nchannels <= 0 || spec.nchannels > 64) {
+        throw ImageError(path.string() + ": unsupported image: " + size_text(spec.width, spec.height) + "x" +
+                         std::to_string(spec.depth) + ", " + std::to_string(spec.nchannels) + " channels");
     }
-    const int nc = spec.nchannels;
-    std::vector<float> data(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(nc));
+    const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
+    if (spec.width > limits.max_side || spec.height > limits.max_side || pixels > limits.max_pixels) {
+        throw ImageError(path.string() + ": image is " + size_text(spec.width, spec.height) + " (" + std::to_string(pixels) +
+                         " pixels): more than the " + std::to_string(limits.max_side) + " per side and " +
+                         std::to_string(limits.max_pixels) + " pixels read here (it would take " +
+                         byte_size_text(image_read_bytes(std::uint64_t(spec.width), std::uint64_t(spec.height))) + ")");
+    }
+    const int nc = std::min(spec.nchannels, 4);  // channels past RGBA are not needed
+    std::vector<float> data(std::size_t(pixels) * std::size_t(nc));
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data())) {
         throw ImageError(path.string() + ": cannot decode image: " + in->geterror());
     }
     Image img{spec.width, spec.height, {}};
-    img.rgba.resize(std::size_t(spec.width) * std::size_t(spec.height) * 4);
-    for (std::size_t p = 0; p < std::size_t(spec.width) * std::size_t(spec.height); ++p) {
+    img.rgba.resize(std::size_t(pixels) * 4);
+    for (std::size_t p = 0; p < std::size_t(pixels); ++p) {
         const float* s = &data[p * std::size_t(nc)];
         float* d = &img.rgba[p * 4];
         d[0] = s[0];
@@ -51,7 +122,12 @@ Image read_image(const std::filesystem::path& path) {
 }
 
 glsl::sampler2D load_texture(const std::filesystem::path& path) {
-    Image img = read_image(path);
+    ImageReadLimits limits;
+    limits.max_side = limits::kTextureSide;
+    limits.max_pixels = limits::kTextureTexels;
+    limits.max_file_bytes = limits::kResourceFileBytes;
+    limits.follow_symlink = false;
+    Image img = read_image(path, limits);
     glsl::sampler2D tex;
     tex.width = img.width, tex.height = img.height;
     tex.rgba.resize(img.rgba.size());
@@ -68,52 +144,98 @@ bool is_float_format(const std::filesystem::path& path) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
 }
 
-void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
-    const bool is_float = is_float_format(path);
-    const std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    if (!std::filesystem::is_directory(folder)) {
-        throw ImageError(path.string() + ": cannot write image: no folder " + folder.string());
+struct ImageWriter::State {
+    std::filesystem::path path;
+    int width = 0, height = 0, channels = 0, next_row = 0;
+    bool is_float = false;
+    std::unique_ptr<TemporaryFile> file;
+    std::unique_ptr<TemporaryFileProxy> proxy;
+    std::unique_ptr<OIIO::ImageOutput> out;  // destroyed first: it writes through proxy
+    std::vector<float> floats;
+    std::vector<std::uint8_t> bytes;
+
+    ~State() {
+        if (out) out->close();
     }
-    // Same directory, so the final rename cannot cross file systems.
-    std::filesystem::path tmp = path;
-    tmp += ".tmp-" + std::to_string(::getpid()) + path.extension().string();
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out) throw ImageError(path.string() + ": no image format for this file name: " + OIIO::geterror());
-    const int channels = alpha ? 4 : 3;
-    OIIO::ImageSpec spec(image.width, image.height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+};
+
+ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int height, bool alpha, const Metadata& metadata)
+    : state_(std::make_unique<State>()) {
+    State& s = *state_;
+    s.path = path, s.width = width, s.height = height, s.channels = alpha ? 4 : 3;
+    s.is_float = is_float_format(path);
+    if (width <= 0 || height <= 0) throw ImageError(path.string() + ": cannot write an image of " + size_text(width, height));
+    s.out = OIIO::ImageOutput::create(path.string());
+    if (!s.out) throw ImageError(path.string() + ": no image format for this file name: " + OIIO::geterror());
+    if (!s.out->supports("ioproxy")) {
+        throw ImageError(path.string() + ": OpenImageIO cannot write this format through a checked file");
+    }
+    try {
+        s.file = std::make_unique<TemporaryFile>(path);
+    } catch (const std::runtime_error& e) {
+        throw ImageError(std::string("cannot write image: ") + e.what());
+    }
+    s.proxy = std::make_unique<TemporaryFileProxy>(*s.file);
+    OIIO::ImageSpec spec(width, height, s.channels, s.is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
     spec.attribute("Software", "quadshade");
-    const std::size_t npixels = std::size_t(image.width) * std::size_t(image.height);
-    std::vector<float> floats(npixels * std::size_t(channels));
-    for (std::size_t p = 0; p < npixels; ++p) {
-        for (int c = 0; c < channels; ++c) floats[p * std::size_t(channels) + std::size_t(c)] = image.rgba[p * 4 + std::size_t(c)];
+    if (!s.out->set_ioproxy(s.proxy.get()) || !s.out->open(s.file->path().string(), spec)) {
+        throw ImageError(path.string() + ": cannot write image (" + s.out->geterror() + ")");
     }
-    std::vector<std::uint8_t> bytes;
-    const void* pixels = floats.data();
+}
+
+ImageWriter::~ImageWriter() = default;
+
+std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha) {
+    const std::uint64_t values = std::uint64_t(width) * std::uint64_t(rows) * (alpha ? 4u : 3u);
+    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1));
+}
+
+void ImageWriter::write_rows(int rows, const float* rgba) {
+    State& s = *state_;
+    if (rows <= 0 || s.next_row + rows > s.height) throw std::logic_error("ImageWriter: more rows than the image has");
+    const std::size_t n = std::size_t(s.width) * std::size_t(rows);
+    const std::size_t nc = std::size_t(s.channels);
+    s.floats.resize(n * nc);
+    for (std::size_t p = 0; p < n; ++p) {
+        for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = rgba[p * 4 + c];
+    }
+    const void* pixels = s.floats.data();
     OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT;
-    if (!is_float) {
+    if (!s.is_float) {
         // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
-        bytes.resize(floats.size());
-        for (std::size_t i = 0; i < bytes.size(); ++i) {
-            float c = floats[i];
+        s.bytes.resize(s.floats.size());
+        for (std::size_t i = 0; i < s.bytes.size(); ++i) {
+            float c = s.floats[i];
             c = std::isnan(c) ? 0.0f : std::min(std::max(c, 0.0f), 1.0f);
-            bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
+            s.bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
         }
-        pixels = bytes.data();
+        pixels = s.bytes.data();
         format = OIIO::TypeDesc::UINT8;
     }
-    bool ok = out->open(tmp.string(), spec) && out->write_image(format, pixels) && out->close();
-    if (!ok) {
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        throw ImageError(path.string() + ": cannot write image (" + out->geterror() + ")");
+    if (!s.out->write_scanlines(s.next_row, s.next_row + rows, 0, format, pixels)) {
+        throw ImageError(s.path.string() + ": cannot write image (" + s.out->geterror() + ")");
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw ImageError(path.string() + ": cannot move the finished image into place: " + ec.message());
+    s.next_row += rows;
+}
+
+void ImageWriter::commit() {
+    State& s = *state_;
+    if (s.next_row != s.height) throw std::logic_error("ImageWriter: commit before every row was written");
+    const bool closed = s.out->close();
+    s.out.reset();
+    if (!closed) throw ImageError(s.path.string() + ": cannot write image (" + OIIO::geterror() + ")");
+    try {
+        s.file->commit();
+    } catch (const std::runtime_error& e) {
+        throw ImageError(e.what());
     }
+}
+
+void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
+    ImageWriter writer(path, image.width, image.height, alpha, metadata);
+    writer.write_rows(image.height, image.rgba.data());
+    writer.commit();
 }
 
 Comparison compare_images(const Image& a, const Image& b, float fail_threshold, float warn_threshold) {

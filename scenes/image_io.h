@@ -1,10 +1,13 @@
 #pragma once
 // Image files through OpenImageIO (the only file that includes it is image_io.cpp): reading
-// textures, writing renders atomically (a temporary file renamed into place, so a failed write
-// leaves no partial file), and comparing two images.
+// textures and images to compare (regular files only, their size checked on the header before
+// anything is decoded), writing renders safely (a temporary file, every write checked, renamed
+// into place: see temporary_file.h), in one piece or row band by row band, and comparing images.
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,14 +29,50 @@ struct Image {
 
 using Metadata = std::vector<std::pair<std::string, std::string>>;
 
-// Reads any format OpenImageIO knows; grey/RGB are expanded to RGBA (alpha 1).
-Image read_image(const std::filesystem::path& path);
+// What read_image accepts, checked on the file's header before any pixel is decoded.
+struct ImageReadLimits {
+    int max_side = 1 << 15;
+    std::uint64_t max_pixels = std::uint64_t(1) << 28;
+    std::uint64_t max_file_bytes = std::uint64_t(1) << 31;
+    bool follow_symlink = true;  // false for files a scene names (their links are resolved already)
+};
 
-// A texture for texture2D: GL's first row is the image's bottom row.
+// Reads any format OpenImageIO knows; grey/RGB are expanded to RGBA (alpha 1). Only regular
+// files are opened (never a FIFO or device); the image is decoded from memory.
+Image read_image(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+
+// A texture for texture2D: GL's first row is the image's bottom row. Limits: scenes/limits.h.
 glsl::sampler2D load_texture(const std::filesystem::path& path);
 
-// Writes RGB, or RGBA with `alpha`: 8-bit unorm for formats without float (PNG, ...), float for
-// EXR/TIFF/HDR/PFM. `metadata` becomes string attributes (PNG text chunks, EXR headers).
+// Bytes an image of width x height takes as read_image's result at its peak (decoded channels
+// and the RGBA copy), for checking memory before reading.
+std::uint64_t image_read_bytes(std::uint64_t width, std::uint64_t height);
+
+// Writes an image row band by row band: RGB, or RGBA with `alpha`, as 8-bit unorm for formats
+// without float (PNG, ...), float for EXR/TIFF/HDR. `metadata` becomes string attributes (PNG
+// text chunks, EXR headers). Nothing appears at `path` until commit() has checked every write;
+// a writer destroyed without commit() leaves the previous file, if any, untouched.
+class ImageWriter {
+public:
+    // Throws ImageError naming `path` (a folder, no folder to write into, an unknown format).
+    ImageWriter(const std::filesystem::path& path, int width, int height, bool alpha, const Metadata& metadata = {});
+    ~ImageWriter();
+    ImageWriter(const ImageWriter&) = delete;
+    ImageWriter& operator=(const ImageWriter&) = delete;
+
+    // The next `rows` rows, top-down, RGBA float (4 per pixel, width per row).
+    void write_rows(int rows, const float* rgba);
+    void commit();
+
+    // Bytes write_rows needs beside its input for `rows` rows (the conversion to the file's
+    // channels and type).
+    static std::uint64_t conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata = {},
                  bool alpha = false);
 

@@ -53,6 +53,9 @@ struct Texture {
     std::filesystem::path path;
     glsl::sampler2D texels;  // loaded only when a shader that samples it is drawn
     bool loaded = false;
+    // Why `path` may not be read (resolve_scene_uri refused it: outside the scene's folder, a
+    // URI scheme, ...); empty when it may. Reported when a shader that samples it is drawn.
+    std::string refused;
 };
 
 struct Scene {
@@ -64,6 +67,9 @@ struct Scene {
     float time = 0.0f;
     int width = 512, height = 512;            // default render size
     std::vector<Texture> textures;
+    // Every file the scene was read from or names (itself, buffers, images, textures), resolved:
+    // an output must be none of them.
+    std::vector<std::filesystem::path> inputs;
 
     // MVP of an object for a render of the given aspect ratio.
     glm::mat4 model_view_projection(const Object& o, float aspect) const {

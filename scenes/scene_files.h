@@ -1,0 +1,39 @@
+#pragma once
+// The files a scene refers to: glTF buffers and images, materials' extras.teximage. Every name a
+// scene file gives for another file goes through resolve_scene_uri, so one rule decides what a
+// scene may read: files inside the scene's own folder (symlinks resolved), unless the user lifts
+// it (--allow-outside-paths); never anything fetched over a network. read_scene_file then reads
+// only regular files (no folders, FIFOs or devices such as /dev/zero) of bounded size.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace qs {
+
+struct ScenePathPolicy {
+    // Allow absolute paths and paths that leave the scene's folder (by ../ or a symlink).
+    bool allow_outside = false;
+};
+
+// The file that `reference` (a relative path as written in the scene, with percent-escapes
+// already decoded for glTF URIs) names for the scene file `scene_file`, with `.`/`..` and every
+// symlink of its existing part resolved. The file need not exist (a texture is read only when a
+// shader samples it). Throws SceneError saying what is wrong with `reference` (the caller adds
+// the file and the field): empty, a URI scheme (http:, https:, file:, ...), a NUL byte, an
+// absolute path or a path outside the scene's folder without policy.allow_outside.
+std::filesystem::path resolve_scene_uri(const std::filesystem::path& scene_file, std::string_view reference,
+                                        const ScenePathPolicy& policy);
+
+// The whole content of `path`, which must be a regular file of at most `max_bytes` (opened
+// without following a final symlink and without blocking, so that a FIFO or device is refused,
+// never waited on or read forever). Throws SceneError naming the path.
+std::vector<unsigned char> read_scene_file(const std::filesystem::path& path, std::uint64_t max_bytes,
+                                           bool follow_symlink = false);
+
+// "2.0 GiB", "512 KiB": for messages about sizes.
+std::string byte_size_text(std::uint64_t bytes);
+
+}  // namespace qs
