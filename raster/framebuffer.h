@@ -3,23 +3,29 @@
 // order of OSMesa's buffer and of image files. GL window coordinates have y up: the pixel at
 // window (x, y) is row height-1-y.
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace qs {
 
 struct Framebuffer {
-    int width = 0, height = 0;
+    int width = 0, height = 0;  // the image's size
+    // The rows held: [first_row, first_row + rows) of the image. The whole image, unless it was
+    // rendered band by band (RowBand, rasterizer.h); the vectors below hold these rows only.
+    int first_row = 0, rows = 0;
     std::vector<float> rgba;   // 4 per pixel, top-down
     std::vector<float> depth;  // empty when no draw needed depth; else 1 per pixel, cleared to 1
     // Empty unless the render checked for undefined GLSL cases; else 1 per pixel, top-down: the
     // Undefined bits (number/checked.h) of the fragment that wrote the pixel, 0 where cleared.
     std::vector<std::uint8_t> undefined;
 
-    float* pixel(int x, int row) { return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4]; }
-    const float* pixel(int x, int row) const {
-        return &rgba[(std::size_t(row) * std::size_t(width) + std::size_t(x)) * 4];
+    // Index of image pixel (x, row), which must lie in the rows held.
+    std::size_t index(int x, int row) const {
+        return std::size_t(row - first_row) * std::size_t(width) + std::size_t(x);
     }
+    float* pixel(int x, int row) { return &rgba[index(x, row) * 4]; }
+    const float* pixel(int x, int row) const { return &rgba[index(x, row) * 4]; }
 };
 
 // GL's conversion to an 8-bit unorm target: clamp to [0, 1] (NaN to 0), scale by 255, round to

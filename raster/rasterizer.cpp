@@ -82,7 +82,7 @@ public:
             const int n = std::min(kBlock, fb_.width - x);
             for (int r = 0; r < kBlock; ++r) {
                 if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
-                float* depth = &fb_.depth[std::size_t(y + r) * std::size_t(fb_.width) + std::size_t(x)];
+                float* depth = &fb_.depth[fb_.index(x, y + r)];
                 for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[block * kBatchLanes + kLaneAt[r][dx]];
             }
         }
@@ -408,9 +408,7 @@ private:
         }
     }
 
-    std::uint8_t* undefined_at(int x, int y) {
-        return &fb_.undefined[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
-    }
+    std::uint8_t* undefined_at(int x, int y) { return &fb_.undefined[fb_.index(x, y)]; }
 
     // Index in the tile of lane 0 of the block holding pixel (x, y).
     int block_base(int x, int y) const {
@@ -472,6 +470,31 @@ int quad_row_offset(int height, QuadPairing pairing) {
     return (pairing == QuadPairing::BottomUp && (height & 1)) ? -1 : 0;
 }
 
+std::vector<RowBand> image_bands(int height, QuadPairing pairing, int max_rows) {
+    const int row0 = quad_row_offset(height, pairing);
+    const int tile_rows = std::max(1, max_rows / kTileSize);
+    std::vector<RowBand> bands;
+    for (int begin = 0; begin < height;) {
+        // The first band starts at row 0 inside the tile that begins at row0 (-1 or 0).
+        const int end = std::min(height, row0 + ((begin - row0) / kTileSize + tile_rows) * kTileSize);
+        bands.push_back({begin, end});
+        begin = end;
+    }
+    return bands;
+}
+
+RowBand checked_band(RowBand band, int height, QuadPairing pairing) {
+    if (band.begin == 0 && band.end == 0) return {0, height};
+    const int row0 = quad_row_offset(height, pairing);
+    auto on_grid = [&](int row, int edge) { return row == edge || (row - row0) % kTileSize == 0; };
+    if (band.begin < 0 || band.end > height || band.begin >= band.end || !on_grid(band.begin, 0) ||
+        !on_grid(band.end, height)) {
+        throw std::invalid_argument("row band " + std::to_string(band.begin) + ".." + std::to_string(band.end) +
+                                    " does not lie on the tile grid of an image " + std::to_string(height) + " rows high");
+    }
+    return band;
+}
+
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                       const RasterOptions& options, RasterStats* stats) {
     Framebuffer fb;
@@ -480,8 +503,9 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
 }
 
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RasterStats* stats_out) {
+                    const RasterOptions& options, RasterStats* stats_out, RowBand band) {
     check_image_size(width, height);
+    band = checked_band(band, height, options.pairing);
     check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
     std::vector<PreparedDraw> prepared;
     bool any_depth = options.force_general_path;
@@ -555,13 +579,16 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
 
     // Binning: tile rows follow the quad grid so that no quad straddles two tiles.
     const int row0 = quad_row_offset(height, options.pairing);
+    // A band's tiles are the whole frame's tile rows band_ty0.. (bins[0] is the band's first).
     const int tiles_x = (width + kTileSize - 1) / kTileSize;
-    const int tiles_y = (height - row0 + kTileSize - 1) / kTileSize;
+    const int band_ty0 = (band.begin - row0) / kTileSize;
+    const int tiles_y = (band.end - row0 + kTileSize - 1) / kTileSize - band_ty0;
     std::vector<std::vector<std::uint32_t>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
     for (std::uint32_t i = 0; i < triangles.size(); ++i) {
         const TriangleSetup& t = triangles[i];
         const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
-        const int ty0 = (t.min_y - row0) / kTileSize, ty1 = (t.max_y - row0) / kTileSize;
+        const int ty0 = std::max((t.min_y - row0) / kTileSize - band_ty0, 0);
+        const int ty1 = std::min((t.max_y - row0) / kTileSize - band_ty0, tiles_y - 1);
         for (int ty = ty0; ty <= ty1; ++ty) {
             for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * std::size_t(tiles_x) + std::size_t(tx)].push_back(i);
         }
@@ -569,7 +596,8 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
 
     // Every pixel is stored by its tile: reuse the caller's memory, no clearing pass.
     fb.width = width, fb.height = height;
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    fb.first_row = band.begin, fb.rows = band.end - band.begin;
+    const std::size_t pixels = std::size_t(width) * std::size_t(fb.rows);
     fb.rgba.resize(pixels * 4);
     fb.depth.resize(any_depth ? pixels : 0);
     fb.undefined.resize(options.check_undefined ? pixels : 0);
@@ -582,7 +610,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         if (!tile) tile = std::make_unique<TileRenderer>(fb, prepared, clear);
         for (std::size_t b = r.begin(); b != r.end(); ++b) {
             const int tx = int(b % std::size_t(tiles_x)), ty = int(b / std::size_t(tiles_x));
-            const int x0 = tx * kTileSize, y0 = row0 + ty * kTileSize;
+            const int x0 = tx * kTileSize, y0 = row0 + (band_ty0 + ty) * kTileSize;
             tile->start(x0, y0);
             for (std::uint32_t i : bins[b]) tile->render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
             tile->finish();

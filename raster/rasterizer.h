@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include <glm/vec4.hpp>
 
@@ -50,17 +51,32 @@ struct RasterStats {
     std::uint64_t pixels_written = 0;
 };
 
+// Rows [begin, end) of an image, top-down: a render of a band holds and renders those rows
+// only, each pixel exactly as a render of the whole image gives it. {0, 0}: the whole image.
+struct RowBand {
+    int begin = 0, end = 0;
+};
+
 // Renders draws into a width x height framebuffer cleared to `clear`.
 // Throws std::invalid_argument for absurd sizes or a draw without a program.
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                       const RasterOptions& options, RasterStats* stats = nullptr);
-// The same into `fb`, reusing its memory (animation loops, benchmarks): every pixel is written.
+// The same into `fb`, reusing its memory (animation loops, benchmarks): every pixel is written;
+// with a band (from image_bands), only its rows.
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RasterStats* stats = nullptr);
+                    const RasterOptions& options, RasterStats* stats = nullptr, RowBand band = {});
 
 // The number of tiles' rows and columns, and the quad grid's row offset, for a framebuffer.
 inline constexpr int kTileSize = 64;
 int quad_row_offset(int height, QuadPairing pairing);
+
+// An image's rows in bands of at most `max_rows` (at least one tile row), split on the tile
+// grid: a tile, and so every quad, lies in one band, and a band renders exactly its part of the
+// whole frame. The same split serves both backends.
+std::vector<RowBand> image_bands(int height, QuadPairing pairing, int max_rows);
+// `band` resolved ({0, 0}: the whole image) and checked to be one image_bands could give;
+// throws std::invalid_argument otherwise.
+RowBand checked_band(RowBand band, int height, QuadPairing pairing);
 
 // Framebuffer sizes both renderers accept: 1..kMaxDimension on each side (larger images exceed
 // the guard band's intent). Throws std::invalid_argument naming the size otherwise.

@@ -80,6 +80,29 @@ struct Eye {
     }
 };
 
+// Embree works on rays and vertices whose coordinates stay within +-1.844e18 (FLT_LARGE in its
+// sources); beyond, its assertions abort or its builder drops triangles silently.
+constexpr double kEmbreeRange = 1.8e18;
+
+bool within_embree_range(const glm::dvec3& v) {
+    return std::abs(v.x) <= kEmbreeRange && std::abs(v.y) <= kEmbreeRange && std::abs(v.z) <= kEmbreeRange;
+}
+
+// The rays of a width x height image are within Embree's range: the near-plane points and the
+// directions are projective images of the screen rectangle, largest at its corners.
+void check_rays(const Eye& eye, int width, int height) {
+    for (const double x : {0.0, double(width)}) {
+        for (const double y : {0.0, double(height)}) {
+            const Eye::Ray r = eye.ray(x, y);
+            if (!within_embree_range(r.origin) || !within_embree_range(r.direction)) {
+                throw RayCastError("ray caster: the camera's rays reach coordinates beyond +-1.8e18 (the camera is too "
+                                   "far from the origin, or its view too wide), where Embree cannot trace them; the "
+                                   "rasterizer (--backend raster) can render this view");
+            }
+        }
+    }
+}
+
 // How one draw's fragments are produced.
 struct PreparedDraw {
     const DrawCall* call;
@@ -239,9 +262,7 @@ private:
         b.count = 0, b.write = 0;
     }
 
-    std::uint8_t* undefined_at(int x, int y) {
-        return &fb_.undefined[std::size_t(y) * std::size_t(fb_.width) + std::size_t(x)];
-    }
+    std::uint8_t* undefined_at(int x, int y) { return &fb_.undefined[fb_.index(x, y)]; }
 
     Framebuffer& fb_;
     const EmbreeScene& bvh_;
@@ -310,7 +331,15 @@ struct RayCaster::Impl {
                 auto finite = [&](std::uint32_t v) {
                     return std::isfinite(positions[v].x) && std::isfinite(positions[v].y) && std::isfinite(positions[v].z);
                 };
-                if (finite(t[0]) && finite(t[1]) && finite(t[2])) m.triangles.push_back(t);
+                if (!finite(t[0]) || !finite(t[1]) || !finite(t[2])) continue;
+                for (std::uint32_t v : t) {
+                    if (!within_embree_range(m.world[v])) {
+                        throw RayCastError("ray caster: vertex " + std::to_string(v) + " of draw " + std::to_string(i) +
+                                           " lies beyond +-1.8e18, where Embree cannot trace it; the rasterizer "
+                                           "(--backend raster) can draw it");
+                    }
+                }
+                m.triangles.push_back(t);
             }
             scene->add_mesh(positions, m.triangles);
         }
@@ -336,9 +365,10 @@ double RayCaster::build_seconds() const { return impl_->build_seconds; }
 int RayCaster::builds() const { return impl_->builds; }
 
 void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                            const RayCastOptions& options, RasterStats* stats_out) {
+                            const RayCastOptions& options, RasterStats* stats_out, RowBand band) {
     Impl& im = *impl_;
     check_image_size(width, height);
+    band = checked_band(band, height, options.pairing);
     check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
     for (std::size_t i = 0; i < draws.size(); ++i) {
@@ -371,19 +401,24 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
         stats.triangles_setup += im.meshes[i].triangles.size();
     }
     im.eye.ndc_per_x = 2.0 / width, im.eye.ndc_per_y = 2.0 / height;
+    check_rays(im.eye, width, height);
 
     fb.width = width, fb.height = height;
-    fb.rgba.resize(std::size_t(width) * std::size_t(height) * 4);
+    fb.first_row = band.begin, fb.rows = band.end - band.begin;
+    const std::size_t pixels = std::size_t(width) * std::size_t(fb.rows);
+    fb.rgba.resize(pixels * 4);
     fb.depth.clear();
-    fb.undefined.resize(options.check_undefined ? std::size_t(width) * std::size_t(height) : 0);
+    fb.undefined.resize(options.check_undefined ? pixels : 0);
+    // The band's tiles: the whole frame's tile rows band_ty0.., each cast whole.
     const int row0 = quad_row_offset(height, options.pairing);
     const int tiles_x = (width + kTileSize - 1) / kTileSize;
-    const int tiles_y = (height - row0 + kTileSize - 1) / kTileSize;
+    const int band_ty0 = (band.begin - row0) / kTileSize;
+    const int tiles_y = (band.end - row0 + kTileSize - 1) / kTileSize - band_ty0;
     std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const auto& r) {
         const FlushDenormals ftz;
         for (int tile = r.begin(); tile != r.end(); ++tile) {
-            const int x0 = (tile % tiles_x) * kTileSize, y0 = row0 + (tile / tiles_x) * kTileSize;
+            const int x0 = (tile % tiles_x) * kTileSize, y0 = row0 + (band_ty0 + tile / tiles_x) * kTileSize;
             TileCaster caster(fb, *im.bvh, im.eye, prepared);
             for (int by = y0; by < std::min(y0 + kTileSize, height); by += kBlock) {
                 for (int bx = x0; bx < std::min(x0 + kTileSize, width); bx += kBlock) caster.block(bx, by, clear);

@@ -46,10 +46,10 @@ public:
     RayCaster& operator=(const RayCaster&) = delete;
 
     // Renders `draws` (the construction's meshes in the same order; uniforms may change, e.g.
-    // time) into a width x height framebuffer cleared to `clear`. Writes colour only: visibility
-    // is the closest hit, no depth buffer.
+    // time) into a width x height framebuffer cleared to `clear`, or only the rows of `band`
+    // (rasterizer.h). Writes colour only: visibility is the closest hit, no depth buffer.
     void render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                     const RayCastOptions& options, RasterStats* stats = nullptr);
+                     const RayCastOptions& options, RasterStats* stats = nullptr, RowBand band = {});
 
     double build_seconds() const;  // time spent building BVHs, in total
     int builds() const;            // BVHs built: 1 unless a vertex stage moved vertices

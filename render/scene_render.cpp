@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
 #include "scenes/image_io.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
@@ -32,6 +33,9 @@ const glsl::sampler2D& texture_for(Scene& scene, const Object& o, const Program&
                          std::string(program.info().name) + "' samples a texture but extras.teximage is missing");
     }
     Texture& t = scene.textures[std::size_t(o.texture)];
+    if (!t.refused.empty()) {
+        throw SceneError(scene.file.string() + ": material '" + o.material + "' extras.teximage: " + t.refused);
+    }
     if (!t.loaded) {
         try {
             t.texels = load_texture(t.path);
@@ -90,7 +94,23 @@ double SceneRenderer::bvh_build_seconds() const {
     return 0.0;
 }
 
-void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats) {
+std::uint64_t SceneRenderer::frame_bytes(int rows) const {
+    bool depth = request_.raster.force_general_path && request_.backend == Backend::Rasterizer;
+    std::uint64_t vertices = 0, triangles = 0;
+    for (const DrawCall& d : draws_) {
+        depth |= d.program->info().needs.depth && request_.backend == Backend::Rasterizer;
+        vertices += d.vertices.size();
+        triangles += d.indices.size() / 3;
+    }
+    const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(rows);
+    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (request_.raster.check_undefined ? 1 : 0);
+    // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
+    // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
+    constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
+    return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+}
+
+void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats, RowBand band) {
     const double t = time.value_or(request_.time.value_or(double(scene_.time)));
     for (DrawCall& d : draws_) {
         const double period = d.program->info().time_period;
@@ -100,11 +120,11 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ras
     if (caster_) {
         const RasterOptions& r = request_.raster;
         caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_,
-                                    {r.derivatives, r.precision, r.pairing, r.check_undefined, r.threads}, stats);
+                                    {r.derivatives, r.precision, r.pairing, r.check_undefined, r.threads}, stats, band);
         return;
     }
 #endif
-    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster, stats);
+    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster, stats, band);
 }
 
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats) {

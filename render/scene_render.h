@@ -3,6 +3,7 @@
 // textures the drawn shaders sample (and no others), and builds the draw calls. Shared by the
 // command line, the reference comparisons and the benchmarks.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,10 +40,16 @@ public:
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-    void render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats = nullptr);
+    // A frame at `time`, or the rows of `band` only (image_bands, rasterizer.h): the same pixels.
+    void render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats = nullptr, RowBand band = {});
     int width() const { return width_; }
     int height() const { return height_; }
     double bvh_build_seconds() const;  // 0 for the rasterizer
+
+    // Bytes a render of `rows` rows holds while it runs: the framebuffer's colour, depth (where
+    // a draw tests it) and undefined-case mask, and the vertex stage's and triangle setup's
+    // working memory. Textures are loaded (and counted by the caller) already.
+    std::uint64_t frame_bytes(int rows) const;
 
 private:
     Scene& scene_;

@@ -6,7 +6,7 @@ namespace qs {
 
 namespace {
 void require_mask(const Framebuffer& fb) {
-    if (fb.undefined.size() != std::size_t(fb.width) * std::size_t(fb.height)) {
+    if (fb.undefined.size() != std::size_t(fb.width) * std::size_t(fb.rows)) {
         throw std::logic_error("the framebuffer has no undefined-case mask: render with check_undefined");
     }
 }
@@ -14,7 +14,7 @@ void require_mask(const Framebuffer& fb) {
 
 Image undefined_mask_image(const Framebuffer& fb) {
     require_mask(fb);
-    Image image{fb.width, fb.height, std::vector<float>(fb.undefined.size() * 4)};
+    Image image{fb.width, fb.rows, std::vector<float>(fb.undefined.size() * 4)};
     for (std::size_t i = 0; i < fb.undefined.size(); ++i) {
         const std::uint8_t u = fb.undefined[i];
         float* p = &image.rgba[4 * i];

@@ -17,7 +17,8 @@
 
 namespace qs {
 
-// Precondition: fb.undefined is filled (the render checked for undefined cases).
+// Precondition: fb.undefined is filled (the render checked for undefined cases). The image has
+// the framebuffer's rows: the whole image, or the band rendered.
 Image undefined_mask_image(const Framebuffer& fb);
 
 struct UndefinedCounts {
