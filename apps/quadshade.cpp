@@ -1,4 +1,4 @@
-// quadshade: the command line. Parses arguments and calls the libraries; nothing else.
+// quadshade: the command line. Parses arguments (CLI11) and calls the libraries; nothing else.
 //
 // Exit codes: 0 success, 1 bad input or failed render (message on stderr), 2 bad usage,
 // 3 `compare` found differences over its thresholds.
@@ -8,21 +8,27 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "shading/catalogue.h"
-#include "scenes/gltf.h"
-#include "scenes/image_io.h"
+#include <CLI/CLI.hpp>
+
+#include "apps/frame_pattern.h"
+#include "render/memory_plan.h"
 #include "render/scene_render.h"
 #include "render/undefined_mask.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "scenes/temporary_file.h"
+#include "shading/catalogue.h"
 
 namespace {
 
 using namespace qs;
+namespace fs = std::filesystem;
 
 constexpr int kExitInput = 1, kExitUsage = 2, kExitDifferent = 3;
 
@@ -30,96 +36,158 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-const char* kHelp =
-    "quadshade: CPU renderer of GLSL-style procedural shaders with GPU-exact derivatives\n"
-    "\n"
-    "usage:\n"
-    "  quadshade render SCENE.gltf -o OUT.png [options]   render a glTF scene\n"
-    "  quadshade shaders                                  list the shader catalogue\n"
-    "  quadshade compare A B [options]                    compare two images\n"
-    "  quadshade COMMAND --help                           help on one command\n";
+// ---- outputs ------------------------------------------------------------------------------
 
-const char* kRenderHelp =
-    "usage: quadshade render SCENE.gltf -o OUT [options]\n"
-    "\n"
-    "  -o, --output FILE       image to write (.png: 8-bit, .exr/.tif: float); with --frames,\n"
-    "                          a %d (or %04d ...) in FILE is the frame number, else _NNNN is added\n"
-    "  --size WxH              image size (default: the scene's, e.g. 1264x400 for Figure 1.1)\n"
-    "  --time T                the `time` uniform in seconds (default: the scene's)\n"
-    "  --frames A:B            render frames A..B (inclusive) at time = frame / fps\n"
-    "  --fps N                 frames per second for --frames (default 30)\n"
-    "  --shader NAME           draw every object with this catalogue shader\n"
-    "  --backend B             raster (default) | raycast (Embree, 2x2 ray quads)\n"
-    "  --derivatives RULE      fine (llvmpipe, default) | coarse-lower (softpipe) |\n"
-    "                          coarse-upper (first pixel of a top-down quad) | analytic (Dual2;\n"
-    "                          with raycast: ray differentials)\n"
-    "  --precision P           float (default) | double\n"
-    "  --quad-pairing P        top-down (OSMesa's buffer, default) | bottom-up (an FBO)\n"
-    "  --fill-rule R           pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)\n"
-    "  --interpolation I       fused (llvmpipe on FMA hosts; the default there) | separate (softpipe)\n"
-    "  --stable-time           reduce time by each shader's exact period in double before it\n"
-    "                          becomes the float uniform: long animations (t ~ 1e6 s) keep\n"
-    "                          their frame spacing (default: float time, as GL)\n"
-    "  --alpha                 keep the alpha channel (the clear colour's alpha is 0)\n"
-    "  --general-path          shade every shader in quads with gl_FragCoord and a depth buffer\n"
-    "                          (no specialisation)\n"
-    "  --undefined-mask FILE   also write where the colour depends on a GLSL case with an undefined\n"
-    "                          result: red NaN produced, green division by zero, blue a built-in\n"
-    "                          outside its domain (smoothstep e0 >= e1, clamp lo > hi, sqrt, log,\n"
-    "                          pow, inversesqrt, atan); shades slower, same colours; float quads or\n"
-    "                          pixels only (not with analytic derivatives or double precision)\n"
-    "  --threads N             worker threads (default: all cores)\n";
-
-const char* kCompareHelp =
-    "usage: quadshade compare A B [options]\n"
-    "\n"
-    "Compares two images' RGB with OpenImageIO and prints mean, RMS, PSNR and the largest error.\n"
-    "  --fail X                per-channel difference that fails a pixel, in 8-bit units (default 2)\n"
-    "  --max-failing N         exit 3 when more pixels than this fail (default 0)\n"
-    "  --heat-map FILE         write |A - B| as a heat map (full scale = 8/255)\n"
-    "  --side-by-side FILE     write A | B | heat map\n";
-
-std::string need_value(int& i, int argc, char** argv) {
-    if (i + 1 >= argc) throw UsageError(std::string(argv[i]) + " needs a value");
-    return argv[++i];
+// The output's path as the file system will resolve it (symlinked folders included).
+fs::path resolved(const fs::path& p) {
+    std::error_code ec;
+    const fs::path r = fs::weakly_canonical(p, ec);
+    return ec ? p.lexically_normal() : r;
 }
 
-int parse_int(const std::string& flag, const std::string& s, int lo, int hi) {
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if (s.empty() || *end || v < lo || v > hi) {
-        throw UsageError(flag + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got '" + s + "'");
+// Refuses (UsageError) an output that is a folder or one of the scene's own files.
+void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option) {
+    if (fs::is_directory(output)) throw UsageError(std::string(option) + " " + output.string() + ": is a folder; give a file name");
+    const fs::path r = resolved(output);
+    for (const fs::path& in : inputs) {
+        if (r == in) throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
     }
-    return int(v);
 }
 
-double parse_double(const std::string& flag, const std::string& s) {
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end || !std::isfinite(v)) throw UsageError(flag + ": expected a finite number, got '" + s + "'");
-    return v;
+// ---- arguments ------------------------------------------------------------------------------
+
+// A CLI11 check that a number is finite (CLI11 reads "nan", "inf" and 1e400 as numbers).
+const CLI::Validator kFinite(
+    [](std::string& s) {
+        double v = 0.0;
+        return CLI::detail::lexical_cast(s, v) && std::isfinite(v) ? std::string() : "expected a finite number, got '" + s + "'";
+    },
+    "FINITE");
+
+// An option whose value is one of `choices`, with the old command line's messages.
+template <class T>
+CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::vector<std::pair<std::string, T>> choices,
+                        const std::string& text, const std::string& help) {
+    return app
+        .add_option_function<std::string>(
+            name,
+            [&target, choices, name](const std::string& v) {
+                std::string names;
+                for (const auto& [n, value] : choices) {
+                    if (n == v) {
+                        target = value;
+                        return;
+                    }
+                    names += (names.empty() ? "" : " | ") + n;
+                }
+                throw CLI::ValidationError(name, "expected " + names + ", got '" + v + "'");
+            },
+            help)
+        ->option_text(text);
 }
 
-float parse_float(const std::string& flag, const std::string& s) {
-    char* end = nullptr;
-    const float v = std::strtof(s.c_str(), &end);
-    if (s.empty() || *end || !std::isfinite(v)) throw UsageError(flag + ": expected a finite number, got '" + s + "'");
-    return v;
+struct RenderArgs {
+    std::string scene, output, mask_output;
+    FrameRequest request;
+    std::pair<int, int> frames{-1, -1};  // -1: no animation
+    float fps = 30.0f;
+    bool alpha = false;
+    SceneLoadOptions load;
+    std::string memory_limit;  // empty: what the system has available
+    bool animated() const { return frames.first >= 0; }
+};
+
+void add_render_options(CLI::App& cmd, RenderArgs& a) {
+    FrameRequest& r = a.request;
+    cmd.add_option("SCENE", a.scene, "the glTF scene (.gltf or .glb)")->required()->option_text("SCENE.gltf");
+    cmd.add_option("-o,--output", a.output,
+                   "image to write (.png: 8-bit, .exr/.tif: float); with --frames,\n"
+                   "a %d (or %04d ...) in FILE is the frame number, else _NNNN is added")
+        ->required()->option_text("FILE")->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    cmd.add_option_function<std::vector<int>>(
+           "--size", [&r](const std::vector<int>& v) { r.width = v[0], r.height = v[1]; },
+           "image size (default: the scene's, e.g. 1264x400 for Figure 1.1)")
+        ->delimiter('x')->expected(2)->check(CLI::Range(1, 1 << 15))->option_text("WxH");
+    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--frames", a.frames, "render frames A..B (inclusive) at time = frame / fps")
+        ->delimiter(':')->check(CLI::Range(0, 1000000))->option_text("A:B");
+    cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
+        ->check(kFinite & CLI::PositiveNumber)->option_text("N");
+    cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
+    add_choice<Backend>(cmd, "--backend", r.backend, {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}}, "B",
+                        "raster (default) | raycast (Embree, 2x2 ray quads)");
+    add_choice<Derivatives>(cmd, "--derivatives", r.raster.derivatives,
+                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
+                             {"coarse", Derivatives::CoarseLower}, {"coarse-upper", Derivatives::CoarseUpper},
+                             {"analytic", Derivatives::Analytic}},
+                            "RULE",
+                            "fine (llvmpipe, default) | coarse-lower (softpipe) |\n"
+                            "coarse-upper (first pixel of a top-down quad) | analytic (Dual2;\n"
+                            "with raycast: ray differentials)");
+    add_choice<Precision>(cmd, "--precision", r.raster.precision, {{"float", Precision::Float}, {"double", Precision::Double}},
+                          "P", "float (default) | double");
+    add_choice<QuadPairing>(cmd, "--quad-pairing", r.raster.pairing,
+                            {{"top-down", QuadPairing::TopDown}, {"bottom-up", QuadPairing::BottomUp}}, "P",
+                            "top-down (OSMesa's buffer, default) | bottom-up (an FBO)");
+    add_choice<FillRule>(cmd, "--fill-rule", r.raster.fill_rule,
+                         {{"left-bottom", FillRule::LeftBottom}, {"right-top", FillRule::RightTop}}, "R",
+                         "pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)");
+    add_choice<bool>(cmd, "--interpolation", r.raster.fused_interpolation, {{"fused", true}, {"separate", false}}, "I",
+                     "fused (llvmpipe on FMA hosts; the default there) | separate (softpipe)");
+    cmd.add_flag("--stable-time", r.stable_time,
+                 "reduce time by each shader's exact period in double before it\n"
+                 "becomes the float uniform: long animations (t ~ 1e6 s) keep\n"
+                 "their frame spacing (default: float time, as GL)");
+    cmd.add_flag("--alpha", a.alpha, "keep the alpha channel (the clear colour's alpha is 0)");
+    cmd.add_flag("--general-path", r.raster.force_general_path,
+                 "shade every shader in quads with gl_FragCoord and a depth buffer\n(no specialisation)");
+    cmd.add_option("--undefined-mask", a.mask_output,
+                   "also write where the colour depends on a GLSL case with an undefined\n"
+                   "result: red NaN produced, green division by zero, blue a built-in\n"
+                   "outside its domain (smoothstep e0 >= e1, clamp lo > hi, sqrt, log,\n"
+                   "pow, inversesqrt, atan); shades slower, same colours; float quads or\n"
+                   "pixels only (not with analytic derivatives or double precision)")
+        ->option_text("FILE");
+    cmd.add_option("--threads", r.raster.threads, "worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_flag("--allow-outside-paths", a.load.paths.allow_outside,
+                 "let the scene read files outside its own folder (absolute paths,\n"
+                 "../, symlinks); by default only files beside it are read");
+    cmd.add_option("--memory-limit", a.memory_limit,
+                   "memory the render may use, e.g. 4G (default: what the system has\n"
+                   "available); larger images are rendered and written in bands of rows")
+        ->option_text("SIZE");
 }
 
-std::string frame_path(const std::string& pattern, int frame) {
-    if (pattern.find('%') != std::string::npos) {
-        std::vector<char> buf(pattern.size() + 32);
-        std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
-        return buf.data();
+struct CompareArgs {
+    std::vector<std::string> images;
+    float fail = 2.0f;
+    long long max_failing = 0;
+    std::string heat, side, memory_limit;
+};
+
+void add_compare_options(CLI::App& cmd, CompareArgs& a) {
+    cmd.add_option("images", a.images, "the two images")->required()->expected(2)->option_text("A B");
+    cmd.add_option("--fail", a.fail, "per-channel difference that fails a pixel, in 8-bit units (default 2)")
+        ->check(kFinite)->option_text("X");
+    cmd.add_option("--max-failing", a.max_failing, "exit 3 when more pixels than this fail (default 0)")
+        ->check(CLI::Range(0, 1 << 30))->option_text("N");
+    cmd.add_option("--heat-map", a.heat, "write |A - B| as a heat map (full scale = 8/255)")->option_text("FILE");
+    cmd.add_option("--side-by-side", a.side, "write A | B | heat map")->option_text("FILE");
+    cmd.add_option("--memory-limit", a.memory_limit, "memory the comparison may use (default: what is available)")
+        ->option_text("SIZE");
+}
+
+std::uint64_t memory_limit(const std::string& option) {
+    if (option.empty()) return available_memory();
+    try {
+        return parse_byte_size(option);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--memory-limit: ") + e.what());
     }
-    std::filesystem::path p(pattern);
-    char suffix[16];
-    std::snprintf(suffix, sizeof suffix, "_%04d", frame);
-    return (p.parent_path() / (p.stem().string() + suffix + p.extension().string())).string();
 }
 
-Image to_image(const Framebuffer& fb) { return Image{fb.width, fb.height, fb.rgba}; }
+// ---- render ---------------------------------------------------------------------------------
 
 const char* rule_name(Derivatives d) {
     switch (d) {
@@ -132,154 +200,138 @@ const char* rule_name(Derivatives d) {
     return "?";
 }
 
-int cmd_render(int argc, char** argv) {
-    std::string scene_path, output;
-    FrameRequest req;
-    std::optional<std::pair<int, int>> frames;
-    float fps = 30.0f;
-    bool alpha = false;
-    std::string mask_output;
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h") {
-            std::fputs(kRenderHelp, stdout);
-            return 0;
-        } else if (a == "-o" || a == "--output") {
-            output = need_value(i, argc, argv);
-        } else if (a == "--size") {
-            const std::string v = need_value(i, argc, argv);
-            const auto x = v.find('x');
-            if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + v + "'");
-            req.width = parse_int("--size", v.substr(0, x), 1, 32768);
-            req.height = parse_int("--size", v.substr(x + 1), 1, 32768);
-        } else if (a == "--time") {
-            req.time = parse_double(a, need_value(i, argc, argv));
-        } else if (a == "--frames") {
-            const std::string v = need_value(i, argc, argv);
-            const auto c = v.find(':');
-            if (c == std::string::npos) throw UsageError("--frames: expected A:B, got '" + v + "'");
-            frames = {parse_int(a, v.substr(0, c), 0, 1000000), parse_int(a, v.substr(c + 1), 0, 1000000)};
-            if (frames->second < frames->first) throw UsageError("--frames: B must not be less than A");
-        } else if (a == "--fps") {
-            fps = parse_float(a, need_value(i, argc, argv));
-            if (fps <= 0.0f) throw UsageError("--fps must be positive");
-        } else if (a == "--shader") {
-            req.shader_override = need_value(i, argc, argv);
-        } else if (a == "--backend") {
-            const std::string v = need_value(i, argc, argv);
-            if (v == "raster") req.backend = Backend::Rasterizer;
-            else if (v == "raycast") req.backend = Backend::RayCaster;
-            else throw UsageError("--backend: expected raster or raycast, got '" + v + "'");
-        } else if (a == "--derivatives") {
-            const std::string v = need_value(i, argc, argv);
-            if (v == "fine") req.raster.derivatives = Derivatives::Fine;
-            else if (v == "coarse-lower" || v == "coarse") req.raster.derivatives = Derivatives::CoarseLower;
-            else if (v == "coarse-upper") req.raster.derivatives = Derivatives::CoarseUpper;
-            else if (v == "analytic") req.raster.derivatives = Derivatives::Analytic;
-            else throw UsageError("--derivatives: unknown rule '" + v + "'");
-        } else if (a == "--precision") {
-            const std::string v = need_value(i, argc, argv);
-            if (v == "float") req.raster.precision = Precision::Float;
-            else if (v == "double") req.raster.precision = Precision::Double;
-            else throw UsageError("--precision: expected float or double, got '" + v + "'");
-        } else if (a == "--quad-pairing") {
-            const std::string v = need_value(i, argc, argv);
-            if (v == "top-down") req.raster.pairing = QuadPairing::TopDown;
-            else if (v == "bottom-up") req.raster.pairing = QuadPairing::BottomUp;
-            else throw UsageError("--quad-pairing: expected top-down or bottom-up, got '" + v + "'");
-        } else if (a == "--fill-rule") {
-            const std::string v = need_value(i, argc, argv);
-            if (v == "left-bottom") req.raster.fill_rule = FillRule::LeftBottom;
-            else if (v == "right-top") req.raster.fill_rule = FillRule::RightTop;
-            else throw UsageError("--fill-rule: expected left-bottom or right-top, got '" + v + "'");
-        } else if (a == "--interpolation") {
-            const std::string v = need_value(i, argc, argv);
-            if (v == "fused") req.raster.fused_interpolation = true;
-            else if (v == "separate") req.raster.fused_interpolation = false;
-            else throw UsageError("--interpolation: expected fused or separate, got '" + v + "'");
-        } else if (a == "--stable-time") {
-            req.stable_time = true;
-        } else if (a == "--alpha") {
-            alpha = true;
-        } else if (a == "--general-path") {
-            req.raster.force_general_path = true;
-        } else if (a == "--undefined-mask") {
-            mask_output = need_value(i, argc, argv);
-            req.raster.check_undefined = true;
-        } else if (a == "--threads") {
-            req.raster.threads = parse_int(a, need_value(i, argc, argv), 1, 1024);
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("render: unknown option " + a);
-        } else if (scene_path.empty()) {
-            scene_path = a;
-        } else {
-            throw UsageError("render: more than one scene given ('" + scene_path + "', '" + a + "')");
+bool writes_in_bands(const fs::path& file) {
+    std::string ext = file.extension().string();
+    for (char& c : ext) c = char(std::tolower((unsigned char)c));
+    return ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
+}
+
+// What a render of the whole frame, or of bands of it, needs beside the loaded scene.
+std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs& a, std::uint64_t limit) {
+    const int w = renderer.width();
+    MemoryPlanInput in;
+    in.height = renderer.height();
+    in.pairing = a.request.raster.pairing;
+    in.limit = limit;
+    in.can_band = writes_in_bands(a.output) && (a.mask_output.empty() || writes_in_bands(a.mask_output));
+    in.bytes_for_rows = [&](int rows) {
+        std::uint64_t bytes = renderer.frame_bytes(rows) + ImageWriter::conversion_bytes(a.output, w, rows, a.alpha);
+        if (!a.mask_output.empty()) {
+            bytes += std::uint64_t(w) * std::uint64_t(rows) * 4 * sizeof(float) +
+                     ImageWriter::conversion_bytes(a.mask_output, w, rows, false);
+        }
+        return bytes;
+    };
+    return plan_bands(in);
+}
+
+struct FrameTotals {
+    double render_seconds = 0.0;
+    RasterStats stats;  // of the last frame
+    UndefinedCounts undefined;
+};
+
+// Renders the frame at `time` band by band into `output` (and the undefined-case mask into
+// `mask_output` unless empty). The files are opened once the first band is rendered (OpenImageIO
+// keeps every string attribute, the frame's time among them, for the process's lifetime: made
+// after the frame's working memory is freed, it does not pin the heap) and renamed into place
+// once complete.
+void write_frame(SceneRenderer& renderer, const std::vector<RowBand>& bands, double time, const RenderArgs& a,
+                 const std::string& output, const std::string& mask_output, Framebuffer& fb, FrameTotals& totals) {
+    const FrameRequest& req = a.request;
+    std::optional<ImageWriter> image, mask;
+    totals.stats = {};
+    for (const RowBand& band : bands) {
+        RasterStats band_stats;
+        const auto t0 = std::chrono::steady_clock::now();
+        renderer.render_into(fb, time, &band_stats, band);
+        totals.render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        totals.stats.triangles_setup = band_stats.triangles_setup, totals.stats.lanes_shaded += band_stats.lanes_shaded;
+        if (!image) {
+            Metadata metadata = {{"quadshade:scene", a.scene},
+                                 {"quadshade:time", std::to_string(time)},
+                                 {"quadshade:stable_time", req.stable_time ? "on" : "off"},
+                                 {"quadshade:derivatives", rule_name(req.raster.derivatives)},
+                                 {"quadshade:backend", req.backend == Backend::RayCaster ? "raycast" : "raster"},
+                                 {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override}};
+            image.emplace(output, fb.width, fb.height, a.alpha, metadata);
+            if (!mask_output.empty()) {
+                metadata.emplace_back("quadshade:undefined_mask",
+                                      "red: NaN produced, green: division by zero, blue: built-in outside its domain");
+                mask.emplace(mask_output, fb.width, fb.height, false, metadata);
+            }
+        }
+        image->write_rows(fb.rows, fb.rgba.data());
+        if (mask) {
+            mask->write_rows(fb.rows, undefined_mask_image(fb).rgba.data());
+            const UndefinedCounts c = count_undefined(fb);
+            totals.undefined.pixels += c.pixels;
+            for (std::size_t k = 0; k < c.per_case.size(); ++k) totals.undefined.per_case[k] += c.per_case[k];
         }
     }
-    if (scene_path.empty()) throw UsageError("render: no scene given");
-    if (output.empty()) throw UsageError("render: no output given (-o FILE)");
-    if (req.raster.check_undefined) {
+    image->commit();
+    if (mask) mask->commit();
+}
+
+void print_progress(int done, int total) {
+    const int width = 30, filled = done * width / total;
+    std::fprintf(stderr, "\r[%s%s] %d/%d frames", std::string(std::size_t(filled), '#').c_str(),
+                 std::string(std::size_t(width - filled), '.').c_str(), done, total);
+    if (done == total) std::fputc('\n', stderr);
+}
+
+int cmd_render(RenderArgs& a) {
+    FrameRequest& req = a.request;
+    if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
+    if (req.raster.check_undefined = !a.mask_output.empty(); req.raster.check_undefined) {
         if (req.raster.derivatives == Derivatives::Analytic) throw UsageError("--undefined-mask: not with --derivatives analytic");
         if (req.raster.precision == Precision::Double) throw UsageError("--undefined-mask: not with --precision double");
-        if (mask_output == output) throw UsageError("--undefined-mask: the same file as -o");
+        if (resolved(a.mask_output) == resolved(a.output)) throw UsageError("--undefined-mask: the same file as -o");
     }
+    const std::uint64_t limit = memory_limit(a.memory_limit);
+    const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
+    auto path_of = [&](const std::string& pattern, int f) {
+        try {
+            return a.animated() ? frame_path(pattern, f) : pattern;
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
+    };
+    path_of(a.output, first);  // a bad pattern is refused before anything is read
+    if (!a.mask_output.empty()) path_of(a.mask_output, first);
 
-    Scene scene = load_scene(scene_path);
+    Scene scene = load_scene(a.scene, a.load);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
-    for (const std::string& file : {output, mask_output}) {
-        const std::filesystem::path dir = std::filesystem::path(file).parent_path();
-        if (!dir.empty() && !std::filesystem::is_directory(dir)) {
-            throw std::runtime_error(file + ": no folder " + dir.string() + " to write into");
-        }
-    }
-    const int first = frames ? frames->first : 0, last = frames ? frames->second : 0;
-    const bool progress = frames && last > first && ::isatty(STDERR_FILENO);
-    const auto start = std::chrono::steady_clock::now();
-    double render_seconds = 0.0;
-    RasterStats stats;
-    UndefinedCounts undefined;
-    Framebuffer fb;
-    SceneRenderer renderer(scene, req);
     for (int f = first; f <= last; ++f) {
-        FrameRequest fr = req;
-        if (frames) fr.time = double(f) / double(fps);
-        const auto t0 = std::chrono::steady_clock::now();
-        renderer.render_into(fb, fr.time, &stats);
-        render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        const std::string path = frames ? frame_path(output, f) : output;
-        Metadata metadata = {{"quadshade:scene", scene_path},
-                             {"quadshade:time", std::to_string(fr.time.value_or(double(scene.time)))},
-                             {"quadshade:stable_time", req.stable_time ? "on" : "off"},
-                             {"quadshade:derivatives", rule_name(req.raster.derivatives)},
-                             {"quadshade:backend", req.backend == Backend::RayCaster ? "raycast" : "raster"},
-                             {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override}};
-        write_image(path, to_image(fb), metadata, alpha);
-        if (!mask_output.empty()) {
-            metadata.emplace_back("quadshade:undefined_mask",
-                                  "red: NaN produced, green: division by zero, blue: built-in outside its domain");
-            write_image(frames ? frame_path(mask_output, f) : mask_output, undefined_mask_image(fb), metadata);
-            const UndefinedCounts c = count_undefined(fb);
-            undefined.pixels += c.pixels;
-            for (std::size_t k = 0; k < c.per_case.size(); ++k) undefined.per_case[k] += c.per_case[k];
-        }
-        if (progress) {
-            const int done = f - first + 1, total = last - first + 1, width = 30;
-            const int filled = done * width / total;
-            std::fprintf(stderr, "\r[%s%s] %d/%d frames", std::string(std::size_t(filled), '#').c_str(),
-                         std::string(std::size_t(width - filled), '.').c_str(), done, total);
-            if (done == total) std::fputc('\n', stderr);
-        }
+        check_output(path_of(a.output, f), scene.inputs, "-o");
+        if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");
+    }
+    SceneRenderer renderer(scene, req);
+    const std::vector<RowBand> bands = plan_render(renderer, a, limit);
+
+    const bool progress = last > first && ::isatty(STDERR_FILENO);
+    const auto start = std::chrono::steady_clock::now();
+    FrameTotals totals;
+    Framebuffer fb;
+    for (int f = first; f <= last; ++f) {
+        const double time = a.animated() ? double(f) / double(a.fps) : req.time.value_or(double(scene.time));
+        const std::string mask = a.mask_output.empty() ? "" : path_of(a.mask_output, f);
+        write_frame(renderer, bands, time, a, path_of(a.output, f), mask, fb, totals);
+        if (progress) print_progress(f - first + 1, last - first + 1);
     }
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int nframes = last - first + 1;
-    const int w = renderer.width(), h = renderer.height();
+    const int nframes = last - first + 1, w = renderer.width(), h = renderer.height();
+    const double render_seconds = totals.render_seconds;
+    const RasterStats& stats = totals.stats;
+    const UndefinedCounts& undefined = totals.undefined;
     std::fprintf(stderr, "quadshade: %d frame%s %dx%d in %.3f s (render %.1f ms/frame, %.1f Mpixel/s), %llu triangles, %llu lanes shaded",
                  nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / nframes,
                  double(w) * h * nframes / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
                  (unsigned long long)stats.lanes_shaded);
+    if (bands.size() > 1) std::fprintf(stderr, ", in %zu bands of rows", bands.size());
     if (req.backend == Backend::RayCaster) std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
     std::fputc('\n', stderr);
-    if (!mask_output.empty()) {
+    if (!a.mask_output.empty()) {
         std::fprintf(stderr,
                      "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "
                      "built-in outside its domain %llu\n",
@@ -289,14 +341,7 @@ int cmd_render(int argc, char** argv) {
     return 0;
 }
 
-int cmd_shaders(int argc, char** argv) {
-    for (int i = 2; i < argc; ++i) {
-        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-            std::puts("usage: quadshade shaders\nLists every catalogue shader and what it needs.");
-            return 0;
-        }
-        throw UsageError(std::string("shaders: unexpected argument ") + argv[i]);
-    }
+int cmd_shaders() {
     auto coordinates = [](Coordinates c) {
         switch (c) {
             case Coordinates::None: return "window";
@@ -317,61 +362,62 @@ int cmd_shaders(int argc, char** argv) {
     return 0;
 }
 
-int cmd_compare(int argc, char** argv) {
-    std::vector<std::string> files;
-    float fail = 2.0f;
-    long long max_failing = 0;
-    std::string heat, side;
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h") {
-            std::fputs(kCompareHelp, stdout);
-            return 0;
-        } else if (a == "--fail") {
-            fail = parse_float(a, need_value(i, argc, argv));
-        } else if (a == "--max-failing") {
-            max_failing = parse_int(a, need_value(i, argc, argv), 0, 1 << 30);
-        } else if (a == "--heat-map") {
-            heat = need_value(i, argc, argv);
-        } else if (a == "--side-by-side") {
-            side = need_value(i, argc, argv);
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("compare: unknown option " + a);
-        } else {
-            files.push_back(a);
-        }
-    }
-    if (files.size() != 2) throw UsageError("compare: expected two images");
-    const Image a = read_image(files[0]), b = read_image(files[1]);
+int cmd_compare(const CompareArgs& a) {
+    std::vector<fs::path> inputs = {resolved(a.images[0]), resolved(a.images[1])};
+    if (!a.heat.empty()) check_output(a.heat, inputs, "--heat-map");
+    if (!a.side.empty()) check_output(a.side, inputs, "--side-by-side");
+    // Per pixel: both images and their copies inside the comparison (4 x 16 bytes), the heat
+    // map with its two intermediates (48) and the side-by-side strip (48).
+    constexpr std::uint64_t kBytesPerPixel = 160;
+    ImageReadLimits limits;
+    limits.max_pixels = std::min<std::uint64_t>(limits.max_pixels, memory_limit(a.memory_limit) / kBytesPerPixel);
+    const Image A = read_image(a.images[0], limits), B = read_image(a.images[1], limits);
     // A margin of half a step: 8-bit values differ by whole multiples of 1/255.
-    const Comparison c = compare_images(a, b, (fail + 0.5f) / 255.0f, (1.0f + 0.5f) / 255.0f);
+    const Comparison c = compare_images(A, B, (a.fail + 0.5f) / 255.0f, (1.0f + 0.5f) / 255.0f);
     std::printf("mean %.6f  rms %.6f  psnr %.2f dB  max %.1f/255 at (%d, %d) channel %d\n", c.mean_error, c.rms_error,
                 c.psnr, c.max_error * 255.0, c.max_x, c.max_y, c.max_channel);
-    std::printf("pixels over %g/255: %llu   over 1/255: %llu   of %d\n", double(fail),
-                (unsigned long long)c.pixels_over_fail, (unsigned long long)c.pixels_over_warn, a.width * a.height);
-    if (!heat.empty() || !side.empty()) {
-        const Image h = difference_heat_map(a, b, 8.0f / 255.0f);
-        if (!heat.empty()) write_image(heat, h);
-        if (!side.empty()) write_image(side, side_by_side({&a, &b, &h}));
+    std::printf("pixels over %g/255: %llu   over 1/255: %llu   of %d\n", double(a.fail),
+                (unsigned long long)c.pixels_over_fail, (unsigned long long)c.pixels_over_warn, A.width * A.height);
+    if (!a.heat.empty() || !a.side.empty()) {
+        const Image heat = difference_heat_map(A, B, 8.0f / 255.0f);
+        if (!a.heat.empty()) write_image(a.heat, heat);
+        if (!a.side.empty()) write_image(a.side, side_by_side({&A, &B, &heat}));
     }
-    return (long long)c.pixels_over_fail > max_failing ? kExitDifferent : 0;
+    return (long long)c.pixels_over_fail > a.max_failing ? kExitDifferent : 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    remove_temporaries_on_signals();
+    CLI::App app("quadshade: CPU renderer of GLSL-style procedural shaders with GPU-exact derivatives", "quadshade");
+    app.require_subcommand(1, 1);
+    app.get_formatter()->column_width(26);
+    RenderArgs render;
+    CompareArgs compare;
+    CLI::App* render_cmd = app.add_subcommand("render", "render a glTF scene");
+    add_render_options(*render_cmd, render);
+    CLI::App* shaders_cmd = app.add_subcommand("shaders", "list the shader catalogue, with what each shader needs");
+    CLI::App* compare_cmd = app.add_subcommand(
+        "compare", "compare two images' RGB with OpenImageIO: mean, RMS, PSNR and the largest error");
+    add_compare_options(*compare_cmd, compare);
+    CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
-        const std::string cmd = argc > 1 ? argv[1] : "";
-        if (cmd == "render") return cmd_render(argc, argv);
-        if (cmd == "shaders") return cmd_shaders(argc, argv);
-        if (cmd == "compare") return cmd_compare(argc, argv);
-        if (cmd == "--help" || cmd == "-h" || cmd == "help") {
-            std::fputs(kHelp, stdout);
-            return 0;
-        }
-        throw UsageError(cmd.empty() ? "no command given" : "unknown command '" + cmd + "'");
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "quadshade: %s\n\n%s", e.what(), app.help().c_str());
+        return kExitUsage;
+    }
+    try {
+        if (render_cmd->parsed()) return cmd_render(render);
+        if (shaders_cmd->parsed()) return cmd_shaders();
+        if (compare_cmd->parsed()) return cmd_compare(compare);
+        if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
+        return 0;
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "quadshade: %s\n\n%s", e.what(), kHelp);
+        std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade: %s\n", e.what());
