@@ -20,7 +20,13 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
         x[i] = c.x * oow[i] * scale_x + trans_x;
         y[i] = c.y * oow[i] * scale_y + trans_y;
         z[i] = c.z * oow[i] * 0.5f + 0.5f;
-        if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i])) return std::nullopt;
+        // The clipper keeps x and y inside the guard band (+-2^18 pixels around the viewport);
+        // a vertex its arithmetic leaves far outside (an intersection near w = 0, where an ulp
+        // of w moves x by millions of pixels) would overflow the 64-bit edge functions, so its
+        // triangle is dropped like one with a vertex that is not finite. Within 2^19 pixels,
+        // edge products stay below 2^56.
+        constexpr float kLimit = 2.0f * fixed::kGuardBand;
+        if (!(std::abs(x[i]) <= kLimit && std::abs(y[i]) <= kLimit) || !std::isfinite(z[i])) return std::nullopt;
         fx[i] = fixed::snap(x[i]);
         fy[i] = fixed::snap(y[i]);
     }
