@@ -93,7 +93,7 @@ qs::Scene table_1_1_plane(const std::filesystem::path& dir) {
     s.camera.view = glm::translate(glm::mat4(1), {0, 0, -1});
     s.clear_color = {0, 0, 0, 1};
     s.width = 500, s.height = 500;
-    s.textures.push_back({dir / "textures" / "halftone-source.png", {}, false});
+    s.textures.push_back({dir / "textures" / "halftone-source.png", {}, false, {}});
     qs::Object o = object("plane", 0, glm::mat4(1), "perlin");
     o.texture = 0;
     s.objects.push_back(o);

@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <iterator>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include "scenes/image_checks.h"
 #include "scenes/limits.h"
 #include "scenes/scene.h"
 #include "scenes/scene_files.h"
@@ -27,6 +29,12 @@ OIIO::ImageBuf to_buf(const Image& img) {
     OIIO::ImageBuf buf(spec);
     buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, img.rgba.data());
     return buf;
+}
+
+std::string lowercase_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
 }
 
 std::string size_text(std::int64_t width, std::int64_t height) { return std::to_string(width) + "x" + std::to_string(height); }
@@ -87,9 +95,29 @@ Image read_image(const std::filesystem::path& path, const ImageReadLimits& limit
     } catch (const SceneError& e) {
         throw ImageError(e.what());
     }
+    return decode_image(bytes, path, limits);
+}
+
+Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::path& path, const ImageReadLimits& limits) {
+    // Only the reader the extension names, and only formats a texture or a render may be: never
+    // OpenImageIO's tour of every reader it has (DICOM, camera raw, video...) on unknown bytes.
+    // Not BMP, whose reader allocates what a 200-byte file's run lengths claim (fuzzing found
+    // 0.8 GB), nor TGA or PNM, which quadshade has no use for.
+    static const char* const kReadable[] = {".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".hdr"};
+    const std::string ext = lowercase_extension(path);
+    if (std::find(std::begin(kReadable), std::end(kReadable), ext) == std::end(kReadable)) {
+        throw ImageError(path.string() + ": unsupported image format '" + ext +
+                         "' (quadshade reads PNG, JPEG, OpenEXR, TIFF and HDR)");
+    }
+    if (const std::string problem = image_container_problem(bytes, ext); !problem.empty()) {
+        throw ImageError(path.string() + ": cannot read image: " + problem);
+    }
     OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    auto in = OIIO::ImageInput::open(path.string(), nullptr, &memory);
-    if (!in) throw ImageError(path.string() + ": cannot read image: " + OIIO::geterror());
+    auto in = OIIO::ImageInput::create(ext.substr(1), false);
+    OIIO::ImageSpec opened;
+    if (!in || !in->set_ioproxy(&memory) || !in->open(path.string(), opened)) {
+        throw ImageError(path.string() + ": cannot read image: " + (in ? in->geterror() : OIIO::geterror()));
+    }
     const OIIO::ImageSpec& spec = in->spec();
     // The header's size, checked before a pixel is decoded: a small file can declare a huge image.
     if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.nchannels <= 0 || spec.nchannels > 64) {
@@ -139,8 +167,7 @@ glsl::sampler2D load_texture(const std::filesystem::path& path) {
 }
 
 bool is_float_format(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowercase_extension(path);
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -37,9 +38,14 @@ struct ImageReadLimits {
     bool follow_symlink = true;  // false for files a scene names (their links are resolved already)
 };
 
-// Reads any format OpenImageIO knows; grey/RGB are expanded to RGBA (alpha 1). Only regular
-// files are opened (never a FIFO or device); the image is decoded from memory.
+// Reads PNG, JPEG, OpenEXR, TIFF and HDR files, the format named by the extension;
+// grey/RGB are expanded to RGBA (alpha 1). Only regular files are opened (never a FIFO or
+// device); the image is decoded from memory.
 Image read_image(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+// The same from a file's bytes already in memory; `name`'s extension picks the format, and
+// `name` names the image in messages.
+Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::path& name,
+                   const ImageReadLimits& limits = {});
 
 // A texture for texture2D: GL's first row is the image's bottom row. Limits: scenes/limits.h.
 glsl::sampler2D load_texture(const std::filesystem::path& path);

@@ -326,6 +326,23 @@ TEST_CASE("textures: only regular files, their size checked on the header before
     }
 }
 
+TEST_CASE("image files whose containers claim more than they hold are refused before decoding", "[hostile][textures]") {
+    // Inputs the image fuzzer found (fuzz/regressions/image; the first byte picks the format):
+    // each made a decoder allocate about a gigabyte before it noticed the file was short.
+    auto refusal = [](const char* name, const char* as) {
+        const std::string bytes = slurp(kSource / "fuzz/regressions/image" / name);
+        try {
+            decode_image({reinterpret_cast<const unsigned char*>(bytes.data()) + 1, bytes.size() - 1}, as);
+        } catch (const ImageError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(decoded)");
+    };
+    CHECK_THAT(refusal("png-chunk-claims-805-MB", "t.png"), Catch::Contains("PNG chunk 'tEXt' claims 805306393 bytes"));
+    CHECK_THAT(refusal("exr-attribute-claims-1.9-GB", "t.exr"), Catch::Contains("OpenEXR attribute") && Catch::Contains("claims"));
+    CHECK_THAT(refusal("bmp-rle-claims-805-MB", "t.bmp"), Catch::Contains("unsupported image format '.bmp'"));
+}
+
 TEST_CASE("transforms, cameras and hierarchies that would show nothing are reported", "[hostile][nodes]") {
     const auto dir = temp_dir("hostile-nodes");
     json s = triangle_scene();
