@@ -38,19 +38,22 @@ struct UsageError : std::runtime_error {
 
 // ---- outputs ------------------------------------------------------------------------------
 
-// The output's path as the file system will resolve it (symlinked folders included).
+// The file system entry `p` names: its folder resolved (symlinks and all), its own name kept. An
+// output replaces that entry (written beside it, renamed over it), never what a link there points to.
 fs::path resolved(const fs::path& p) {
     std::error_code ec;
-    const fs::path r = fs::weakly_canonical(p, ec);
-    return ec ? p.lexically_normal() : r;
+    const fs::path folder = fs::weakly_canonical(p.parent_path().empty() ? fs::path(".") : p.parent_path(), ec);
+    return ec ? p.lexically_normal() : folder / p.filename();
 }
 
-// Refuses (UsageError) an output that is a folder or one of the scene's own files.
+// Refuses (UsageError) an output that is a folder or one of the scene's own files. Cheap for a
+// million frames: only an output named like an input has its folder resolved.
 void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option) {
     if (fs::is_directory(output)) throw UsageError(std::string(option) + " " + output.string() + ": is a folder; give a file name");
-    const fs::path r = resolved(output);
     for (const fs::path& in : inputs) {
-        if (r == in) throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
+        if (output.filename() == in.filename() && resolved(output) == in) {
+            throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
+        }
     }
 }
 
@@ -363,7 +366,11 @@ int cmd_shaders() {
 }
 
 int cmd_compare(const CompareArgs& a) {
-    std::vector<fs::path> inputs = {resolved(a.images[0]), resolved(a.images[1])};
+    std::vector<fs::path> inputs;  // each image's entry and, if it is a link, what it points to
+    for (const std::string& image : a.images) {
+        std::error_code ec;
+        inputs.insert(inputs.end(), {resolved(image), fs::weakly_canonical(image, ec)});
+    }
     if (!a.heat.empty()) check_output(a.heat, inputs, "--heat-map");
     if (!a.side.empty()) check_output(a.side, inputs, "--side-by-side");
     // Per pixel: both images and their copies inside the comparison (4 x 16 bytes), the heat

@@ -6,6 +6,7 @@
 #include "shading/catalogue.h"
 #include "scenes/image_io.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
+#include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
 #endif
 
@@ -78,7 +79,11 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
     if (request.backend == Backend::RayCaster) {
 #if defined(QUADSHADE_HAS_RAYCAST)
         const Camera& c = scene.camera;
-        caster_ = std::make_unique<Caster>(draws_, c.projection(aspect) * c.view);
+        try {
+            caster_ = std::make_unique<Caster>(draws_, c.projection(aspect) * c.view);
+        } catch (const RayCastError& e) {
+            throw SceneError(scene.file.string() + ": " + e.what());
+        }
 #else
         throw std::runtime_error("this quadshade was built without the ray caster (QUADSHADE_RAYCAST=OFF: no Embree)");
 #endif
@@ -119,8 +124,12 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ras
 #if defined(QUADSHADE_HAS_RAYCAST)
     if (caster_) {
         const RasterOptions& r = request_.raster;
-        caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_,
-                                    {r.derivatives, r.precision, r.pairing, r.check_undefined, r.threads}, stats, band);
+        try {
+            caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_,
+                                        {r.derivatives, r.precision, r.pairing, r.check_undefined, r.threads}, stats, band);
+        } catch (const RayCastError& e) {
+            throw SceneError(scene_.file.string() + ": " + e.what());
+        }
         return;
     }
 #endif

@@ -458,7 +458,13 @@ Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::p
     const std::string base(FileAccess::kBase);
     const bool ok = binary ? loader.LoadBinaryFromMemory(&m, &err, &warn, bytes.data(), unsigned(bytes.size()), base)
                            : loader.LoadASCIIFromString(&m, &err, &warn, json.data(), unsigned(json.size()), base);
-    if (!ok) throw SceneError(path.string() + ": not a valid glTF file: " + (err.empty() ? warn : err));
+    if (!ok) {
+        // tinygltf names the files it looked for under the base it was given: show the folder.
+        std::string what = err.empty() ? warn : err;
+        const std::string folder = path.parent_path().empty() ? "." : path.parent_path().string();
+        for (std::size_t at; (at = what.find(FileAccess::kBase)) != std::string::npos;) what.replace(at, FileAccess::kBase.size(), folder);
+        throw SceneError(path.string() + ": not a valid glTF file: " + what);
+    }
     check_buffer_views(m, path);
 
     const int scene_index = m.defaultScene >= 0 ? m.defaultScene : 0;

