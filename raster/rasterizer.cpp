@@ -13,16 +13,15 @@
 #include <string>
 #include <vector>
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include "raster/block_layout.h"
 #include "raster/clipper.h"
 #include "raster/fixed_point.h"
 #include "raster/float_environment.h"
 #include "raster/lanes16.h"
+#include "raster/parallel.h"
 #include "raster/triangle_setup.h"
 
 namespace qs {
@@ -548,7 +547,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     for (std::size_t di = 0; di < prepared.size(); ++di) {
         const DrawCall& call = *prepared[di].call;
         std::vector<ClipVertex> verts(call.vertices.size());
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, verts.size(), 256), [&](const auto& r) {
+        parallel_chunks<std::size_t>(0, verts.size(), 256, [&](const auto& r) {
             for (std::size_t i = r.begin(); i != r.end(); ++i) {
                 VertexOut out;
                 call.program->vertex(call.vertices[i], call.uniforms, out);
@@ -604,7 +603,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     // One renderer per thread, made once per frame rather than once per tile: it holds a tile's
     // depth.
     tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bins.size(), 1), [&](const auto& r) {
+    parallel_chunks<std::size_t>(0, bins.size(), 1, [&](const auto& r) {
         const FlushDenormals ftz;
         std::unique_ptr<TileRenderer>& tile = renderers.local();
         if (!tile) tile = std::make_unique<TileRenderer>(fb, prepared, clear);

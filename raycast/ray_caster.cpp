@@ -15,13 +15,12 @@
 #include <glm/matrix.hpp>
 #include <glm/vec3.hpp>
 
-#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include "raster/block_layout.h"
 #include "raycast/embree_scene.h"
 #include "raster/float_environment.h"
+#include "raster/parallel.h"
 
 namespace qs {
 
@@ -281,7 +280,7 @@ void run_vertex_stages(std::span<const DrawCall> draws, std::vector<Mesh>& meshe
         if (!call.program) throw std::invalid_argument("draw call without a program");
         Mesh& m = meshes[i];
         m.out.resize(call.vertices.size());
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.out.size(), 256), [&](const auto& r) {
+        parallel_chunks<std::size_t>(0, m.out.size(), 256, [&](const auto& r) {
             for (std::size_t v = r.begin(); v != r.end(); ++v) call.program->vertex(call.vertices[v], call.uniforms, m.out[v]);
         });
     }
@@ -415,7 +414,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     const int band_ty0 = (band.begin - row0) / kTileSize;
     const int tiles_y = (band.end - row0 + kTileSize - 1) / kTileSize - band_ty0;
     std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const auto& r) {
+    parallel_chunks<int>(0, tiles_x * tiles_y, 1, [&](const auto& r) {
         const FlushDenormals ftz;
         for (int tile = r.begin(); tile != r.end(); ++tile) {
             const int x0 = (tile % tiles_x) * kTileSize, y0 = row0 + (band_ty0 + tile / tiles_x) * kTileSize;

@@ -1,0 +1,25 @@
+// The ThreadSanitizer build's canary (ctest expects TSan's report): two chunks of parallel_chunks
+// write the same variable without synchronisation. If TSan stopped seeing the renderers' threads
+// (raster/parallel.h), test_threads would pass without checking anything; this would then fail.
+#include <tbb/global_control.h>
+
+#include <atomic>
+#include <cstdio>
+
+#include "raster/parallel.h"
+
+int main() {
+    const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);
+    long shared = 0;
+    // Each chunk waits for the other to start, so the two run on two threads at once; the count
+    // is relaxed, which orders nothing, as two tiles of a frame are ordered by nothing.
+    std::atomic<int> started{0};
+    qs::parallel_chunks<int>(0, 2, 1, [&](const auto& r) {
+        started.fetch_add(1, std::memory_order_relaxed);
+        while (started.load(std::memory_order_relaxed) < 2) {
+        }
+        shared += r.begin() + 1;  // the race
+    });
+    std::printf("canary: %ld\n", shared);
+    return 0;
+}
