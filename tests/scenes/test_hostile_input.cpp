@@ -342,6 +342,12 @@ TEST_CASE("image files whose containers claim more than they hold are refused be
     CHECK_THAT(refusal("png-chunk-claims-805-MB", "t.png"), Catch::Contains("PNG chunk 'tEXt' claims 805306393 bytes"));
     CHECK_THAT(refusal("exr-attribute-claims-1.9-GB", "t.exr"), Catch::Contains("OpenEXR attribute") && Catch::Contains("claims"));
     CHECK_THAT(refusal("bmp-rle-claims-805-MB", "t.bmp"), Catch::Contains("unsupported image format '.bmp'"));
+    // A channel list whose entries do not fill its declared size: OpenEXR reads it by its layout,
+    // goes on from the wrong place and allocated a 2.2 GB string (14 s) for this 745-byte file.
+    CHECK_THAT(refusal("exr-channel-list-misread-claims-2.2-GB", "t.exr"),
+               Catch::Contains("OpenEXR attribute") && Catch::Contains("not the layout of its type"));
+    // The checks pass files as written: quadshade's own EXR (the fuzz corpus' seed) decodes.
+    CHECK(refusal("../../corpus/image/render.exr", "t.exr") == "(decoded)");
 }
 
 TEST_CASE("transforms, cameras and hierarchies that would show nothing are reported", "[hostile][nodes]") {
