@@ -2,15 +2,19 @@
 // replaced by a hostile one, an array emptied, cut or multiplied, a key dropped, extras nested
 // deep, the buffer's bytes changed or cut), each loaded and rendered by both backends in a child
 // process under a time limit. Every scene must end in a frame or in a message (exit 0 or 1); a
-// signal, a sanitizer report, a hang or another exit fails the run, and the scene is kept.
+// signal, a sanitizer report, a hang or another exit fails the run, and the scene is kept. A
+// report is looked for in the child's error output whatever its exit status: UBSan and ASan end
+// a process with status 1 unless told to abort, and 1 is also a refusal.
 //
 //   quadshade-mutation-run COUNT [SEED] [KEEP_DIR]
 //
 // Prints a table of outcomes and the most frequent messages. Deterministic for a seed.
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -180,7 +184,8 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> shader_names = shaders();
     Mutator m(seed);
-    int rendered = 0, refused = 0, failed = 0;
+    int rendered = 0, refused = 0;
+    std::map<std::string, int> failures;  // sanitizer report, signal, hang, exit
     std::map<std::string, int> kinds;
     for (int n = 0; n < count; ++n) {
         const int which = m.pick(2);
@@ -194,10 +199,13 @@ int main(int argc, char** argv) {
         const std::string shader = shader_names[std::size_t(m.pick(int(shader_names.size())))];
         int pipe_fds[2];
         if (::pipe(pipe_fds) != 0) return 3;
+        const fs::path errors = work / "stderr.txt";
         std::fflush(nullptr);
         const pid_t pid = ::fork();
         if (pid == 0) {
             ::close(pipe_fds[0]);
+            const int err = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+            if (err < 0 || ::dup2(err, 2) < 0) ::_exit(3);
             load_and_render(scene, shader, pipe_fds[1]);
         }
         ::close(pipe_fds[1]);
@@ -207,17 +215,25 @@ int main(int argc, char** argv) {
         ::close(pipe_fds[0]);
         int status = 0;
         ::waitpid(pid, &status, 0);
-        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        const std::string error_output = slurp(errors);
+        const bool report = error_output.find("Sanitizer") != std::string::npos ||
+                            error_output.find("runtime error:") != std::string::npos;
+        const char* failure = report                                     ? "sanitizer report"
+                              : WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? "hang (60 s)"
+                              : WIFSIGNALED(status)                      ? "signal"
+                              : WEXITSTATUS(status) > 1                  ? "exit"
+                                                                         : nullptr;
+        if (!failure && WEXITSTATUS(status) == 0) {
             ++rendered;
-        } else if (WIFEXITED(status) && WEXITSTATUS(status) == 1) {
+        } else if (!failure) {
             ++refused;
             ++kinds[kind(message)];
         } else {
-            ++failed;
+            ++failures[failure];
             const fs::path kept = keep / std::to_string(n);
             fs::create_directories(kept);
             fs::copy(work, kept, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-            std::printf("scene %d (%s, shader %s): %s %d; kept in %s\n", n, names[which], shader.c_str(),
+            std::printf("scene %d (%s, shader %s): %s (%s %d); kept in %s\n", n, names[which], shader.c_str(), failure,
                         WIFSIGNALED(status) ? "signal" : "exit", WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status),
                         kept.c_str());
         }
@@ -226,9 +242,12 @@ int main(int argc, char** argv) {
     std::vector<std::pair<int, std::string>> top;
     for (const auto& [k, c] : kinds) top.emplace_back(c, k);
     std::sort(top.rbegin(), top.rend());
-    std::printf("mutation run, seed %u: %d scenes, %d rendered by both backends, %d refused with a message, %d failed "
-                "(signal, hang or other exit)\n", seed, count, rendered, refused, failed);
+    auto failed = [&](const char* what) { return failures.count(what) ? failures.at(what) : 0; };
+    std::printf("mutation run, seed %u: %d scenes, %d rendered by both backends, %d refused with a message; "
+                "%d sanitizer reports, %d signals, %d hangs, %d other exits\n",
+                seed, count, rendered, refused, failed("sanitizer report"), failed("signal"), failed("hang (60 s)"),
+                failed("exit"));
     std::printf("%zu kinds of message; the most frequent:\n", kinds.size());
     for (std::size_t i = 0; i < top.size() && i < 15; ++i) std::printf("  %5d  %s\n", top[i].first, top[i].second.c_str());
-    return failed == 0 ? 0 : 1;
+    return failures.empty() ? 0 : 1;
 }

@@ -512,35 +512,38 @@ TEST_CASE("outputs: never a folder, an input or through a planted link; written 
     }
 }
 
-TEST_CASE("SIGTERM during a long animation leaves complete frames and no partial file", "[hostile][cli][signals]") {
-    const auto dir = temp_dir("hostile-signal");
-    const pid_t pid = ::fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-        const std::string out = (dir / "f_%06d.png").string();
-        ::execl(kQuadshade.c_str(), "quadshade", "render", kPlane.c_str(), "--shader", "perlin", "--size", "96x30", "--frames",
-                "0:100000", "-o", out.c_str(), static_cast<char*>(nullptr));
-        ::_exit(127);
-    }
-    auto frames = [&] {
-        int n = 0;
-        for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".png" && e.path().filename().string()[0] == 'f';
-        return n;
-    };
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (frames() < 5 && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    ::kill(pid, SIGTERM);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    CHECK(WIFSIGNALED(status));
-    CHECK(WTERMSIG(status) == SIGTERM);
-    CHECK(frames() >= 5);
-    CHECK_FALSE(has_temporaries(dir));
-    for (const auto& e : fs::directory_iterator(dir)) {
-        INFO(e.path());
-        const Image frame = read_image(e.path());
-        CHECK(frame.width == 96);
-        CHECK(frame.height == 30);
+TEST_CASE("SIGINT or SIGTERM during a long animation leaves complete frames and no partial file", "[hostile][cli][signals]") {
+    for (const int sig : {SIGTERM, SIGINT}) {
+        INFO("signal " << sig);
+        const auto dir = temp_dir("hostile-signal-" + std::to_string(sig));
+        const pid_t pid = ::fork();
+        REQUIRE(pid >= 0);
+        if (pid == 0) {
+            const std::string out = (dir / "f_%06d.png").string();
+            ::execl(kQuadshade.c_str(), "quadshade", "render", kPlane.c_str(), "--shader", "perlin", "--size", "96x30", "--frames",
+                    "0:100000", "-o", out.c_str(), static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        auto frames = [&] {
+            int n = 0;
+            for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".png" && e.path().filename().string()[0] == 'f';
+            return n;
+        };
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+        while (frames() < 5 && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        ::kill(pid, sig);
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        CHECK(WIFSIGNALED(status));
+        CHECK(WTERMSIG(status) == sig);
+        CHECK(frames() >= 5);
+        CHECK_FALSE(has_temporaries(dir));
+        for (const auto& e : fs::directory_iterator(dir)) {
+            INFO(e.path());
+            const Image frame = read_image(e.path());
+            CHECK(frame.width == 96);
+            CHECK(frame.height == 30);
+        }
     }
 }
 
