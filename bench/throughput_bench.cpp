@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shading/catalogue.h"
+#include "shading/glsl_export.h"
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
@@ -74,7 +75,7 @@ std::string needs_of(const char* shader) {
 
 // Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
 // differentials) next to llvmpipe, with the ray caster's one-off BVH build apart.
-std::string figure_frames(int threads, int repeat, const std::filesystem::path& shading) {
+std::string figure_frames(int threads, int repeat, const std::filesystem::path& glsl) {
     const std::filesystem::path file = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/figure-1.1.gltf";
     qs::Scene scene = qs::load_scene(file);
     std::ostringstream md;
@@ -106,7 +107,7 @@ std::string figure_frames(int threads, int repeat, const std::filesystem::path& 
     }
     auto context = qs::create_osmesa_context(scene.width, scene.height, qs::GlDriver::Llvmpipe, threads);
     const auto s0 = Clock::now();
-    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, ""}, *context, shading);
+    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, ""}, *context, glsl);
     gl.draw();
     const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
     const Stats l = time_frames(repeat, [&] { gl.draw(); });
@@ -139,8 +140,9 @@ int main(int argc, char** argv) {
     }
     try {
         const std::filesystem::path plane = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/table-1.1-plane.gltf";
-        const std::filesystem::path shading = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "shading";
         std::filesystem::create_directories(out);
+        const std::filesystem::path glsl = std::filesystem::path(out) / "glsl";  // what llvmpipe compiles
+        qs::export_glsl(glsl);
         std::ofstream csv(std::filesystem::path(out) / "throughput.csv");
         csv << "shader,size,threads,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max,llvmpipe_ms_median,"
                "llvmpipe_ms_min,llvmpipe_ms_max,llvmpipe_setup_ms,quadshade_mfrags,llvmpipe_mfrags,speedup\n";
@@ -173,7 +175,7 @@ int main(int argc, char** argv) {
                               needs_of(row.shader).c_str(), q.median, g.median, 100.0 * (1.0 - q.median / g.median));
                 special << saving;
                 const auto s0 = Clock::now();
-                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, shading);
+                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, glsl);
                 gl.draw();  // the first frame compiles llvmpipe's code
                 const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
                 const Stats l = time_frames(repeat, [&] { gl.draw(); });
@@ -197,7 +199,7 @@ int main(int argc, char** argv) {
         std::printf("\nLeaving out what a shader does not need (median ms per frame, %d threads): the specialised "
                     "pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
                     threads, special.str().c_str());
-        const std::string figure = figure_frames(threads, repeat, shading);
+        const std::string figure = figure_frames(threads, repeat, glsl);
         std::ofstream(std::filesystem::path(out) / "figure-1.1-frame.md") << figure;
         std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", threads, repeat,
                     figure.c_str());

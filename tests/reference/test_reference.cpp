@@ -86,7 +86,8 @@ Image reference(const Case& c, const std::string& driver, int width, int height)
     const auto out = work_dir() / (c.name + "." + driver + "." + std::to_string(width) + "x" + std::to_string(height) + ".exr");
     if (!std::filesystem::exists(out)) {
         std::string cmd = (kBin / "quadshade-reference").string() + " " + c.scene.string() + " -o " + out.string() +
-                          " --driver " + driver + " --size " + std::to_string(width) + "x" + std::to_string(height);
+                          " --glsl " + QUADSHADE_GLSL_DIR + " --driver " + driver + " --size " + std::to_string(width) +
+                          "x" + std::to_string(height);
         if (!c.shader.empty()) cmd += " --shader " + c.shader;
         cmd += " 2> /dev/null";
         if (std::system(cmd.c_str()) != 0) throw std::runtime_error("reference render failed: " + cmd);
