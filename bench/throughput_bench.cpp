@@ -4,7 +4,7 @@
 // compilation are reported separately); llvmpipe frames end with glFinish. Both render into a
 // float RGBA target, as the reference comparisons do.
 //
-//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--out DIR]
+//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--shaders a,b] [--out DIR]
 // Writes DIR/throughput.csv and DIR/throughput.md and prints the Markdown table.
 
 #include <algorithm>
@@ -123,18 +123,24 @@ int main(int argc, char** argv) {
     int threads = 2, repeat = 15;
     std::vector<int> sizes = {1024, 500};
     std::string out = "bench-results";
+    std::vector<std::string> only;  // --shaders: these rows only, and no Figure 1.1 frame
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
         if (a == "--threads") threads = std::max(1, std::atoi(value().c_str()));
         else if (a == "--repeat") repeat = std::max(3, std::atoi(value().c_str()));
         else if (a == "--out") out = value();
+        else if (a == "--shaders") {
+            std::stringstream ss(value());
+            for (std::string sh; std::getline(ss, sh, ',');) only.push_back(sh);
+        }
         else if (a == "--sizes") {
             sizes.clear();
             std::stringstream ss(value());
             for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::atoi(s.c_str()));
         } else {
-            std::fprintf(stderr, "usage: quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--out DIR]\n");
+            std::fprintf(stderr, "usage: quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] "
+                                 "[--shaders a,b] [--out DIR]\n");
             return a == "--help" ? 0 : 2;
         }
     }
@@ -155,6 +161,7 @@ int main(int argc, char** argv) {
         for (int size : sizes) {
             auto context = qs::create_osmesa_context(size, size, qs::GlDriver::Llvmpipe, threads);
             for (const Row& row : kRows) {
+                if (!only.empty() && std::find(only.begin(), only.end(), row.shader) == only.end()) continue;
                 std::fprintf(stderr, "\r%-16s %4dx%-4d ...", row.shader, size, size);
                 qs::Scene scene = qs::load_scene(plane);
                 qs::FrameRequest req;
@@ -199,6 +206,7 @@ int main(int argc, char** argv) {
         std::printf("\nLeaving out what a shader does not need (median ms per frame, %d threads): the specialised "
                     "pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
                     threads, special.str().c_str());
+        if (!only.empty()) return 0;
         const std::string figure = figure_frames(threads, repeat, glsl);
         std::ofstream(std::filesystem::path(out) / "figure-1.1-frame.md") << figure;
         std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", threads, repeat,

@@ -51,6 +51,10 @@ Ints wrapping_add(const Ints& a, const Ints& b) { return Ints(Uints(a) + Uints(b
 Floats minps(const Floats& a, const Floats& b) { return a < b ? a : b; }
 Floats maxps(const Floats& a, const Floats& b) { return a > b ? a : b; }
 Ints imin(const Ints& a, const Ints& b) { return a < b ? a : b; }
+bool any(const Ints& m) {
+    Ints zero{};
+    return std::memcmp(&m, &zero, sizeof m) != 0;
+}
 Ints imax(const Ints& a, const Ints& b) { return a > b ? a : b; }
 
 // Applies a 128-, 256- or 512-bit intrinsic to every register's worth of a 16-lane vector.
@@ -163,12 +167,51 @@ Uints gather(const std::uint32_t* texels, const Ints& index) {
 #endif
 }
 
-// Channel c (0: red) of packed RGBA8 texels.
-Ints channel(const Uints& texels, int c) { return Ints((texels >> (8 * c)) & 255u); }
+// llvmpipe's 8-bit lerp (lp_build_lerp with pre-scaled weights, pmulhrsw): weight w in 1/256,
+// rounded half up, on 8-bit values: a + ((w (b - a) + 128) >> 8).
+//
+// On two channels at once: red and blue (or green and alpha) of a lane's texel in the two 16-bit
+// halves of its 32-bit lane, as llvmpipe unpacks them, and w in both halves. pmulhrsw computes
+// (w (d << 7) + 2^14) >> 15, which is the same; the sum stays in [0, 255], so nothing carries.
+typedef std::int16_t Shorts __attribute__((vector_size(L * sizeof(std::int32_t))));
+Shorts mulhrs(const Shorts& a, const Shorts& b) {
+#if defined(__AVX512BW__)
+    return per_register<Shorts>(a, [&](const char* p) {
+        const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&a);
+        return _mm512_mulhrs_epi16(_mm512_loadu_si512(p), _mm512_loadu_si512(reinterpret_cast<const char*>(&b) + i));
+    });
+#elif defined(__AVX2__)
+    return per_register<Shorts>(a, [&](const char* p) {
+        const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&a);
+        return _mm256_mulhrs_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)),
+                                   _mm256_loadu_si256(reinterpret_cast<const __m256i*>(reinterpret_cast<const char*>(&b) + i)));
+    });
+#else
+    Shorts r;
+    for (int i = 0; i < 2 * L; ++i) r[i] = std::int16_t((std::int32_t(a[i]) * b[i] + (1 << 14)) >> 15);
+    return r;
+#endif
+}
+Uints lerp8_pairs(const Uints& w_pairs, const Uints& a, const Uints& b) {
+    const Shorts d = (Shorts(b) - Shorts(a)) * std::int16_t(128);
+    return Uints(Shorts(a) + mulhrs(Shorts(w_pairs), d));
+}
+// A weight in both 16-bit halves.
+Uints pairs(const Ints& w) { return Uints(w) | (Uints(w) << 16); }
 
-// llvmpipe's 8-bit lerp (lp_build_lerp with pre-scaled weights: pmulhrsw): weight w in 1/256,
-// rounded half up, on 8-bit values.
-Ints lerp8(const Ints& w, const Ints& a, const Ints& b) { return a + ((w * (b - a) + 128) >> 8); }
+// Texels split into (red, blue) and (green, alpha) 16-bit pairs, and back to channels.
+struct Pairs {
+    Uints rb, ga;
+};
+Pairs split(const Uints& t) { return {t & 0x00ff00ffu, (t >> 8) & 0x00ff00ffu}; }
+Pairs lerp8(const Ints& w, const Pairs& a, const Pairs& b) {
+    const Uints w2 = pairs(w);
+    return {lerp8_pairs(w2, a.rb, b.rb), lerp8_pairs(w2, a.ga, b.ga)};
+}
+Ints channel(const Pairs& q, int c) {
+    const Uints& v = (c & 1) ? q.ga : q.rb;
+    return Ints(c < 2 ? (v & 0xffffu) : (v >> 16));
+}
 
 // The unorm8 value q as the shader sees it: q times the float nearest 1/255 (a multiply, not a
 // division: lp_build_unsigned_norm_to_float).
@@ -255,8 +298,9 @@ struct Axis {
     Floats w;
 };
 
-// lp_bld_sample_aos.c: the 8-bit fixed-point path, REPEAT and CLAMP_TO_EDGE.
-Axis aos_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints& linear) {
+// lp_bld_sample_aos.c: the 8-bit fixed-point path, REPEAT and CLAMP_TO_EDGE. Linear filtering
+// along one axis (lp_build_sample_wrap_linear_int).
+Axis aos_linear(const Floats& s, const Ints& size, Wrap wrap, bool pot) {
     Axis a{};
     const Ints last = size - 1;
     // Linear: 8 fractional bits of s * size - 0.5, rounded to even.
@@ -280,18 +324,32 @@ Axis aos_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints
         l0 = imin(imax(i0, Ints{}), last);
         l1 = ((i0 >= 0) & (i0 < last)) ? l0 + 1 : l0;
     }
-    // Nearest (lp_build_sample_wrap_nearest_int).
-    Ints n;
-    if (wrap == Wrap::Repeat && !pot) {
-        n = cvt_trunc(minps(s - floor(s), splat(0x1.fffffep-1f)) * to_float(size));
-    } else {
-        const Ints i = cvt_trunc(floor(s * to_float(size)));
-        n = wrap == Wrap::Repeat ? (i & last) : imin(imax(i, Ints{}), last);
-    }
-    a.i0 = linear ? l0 : n;
-    a.i1 = linear ? l1 : n;
-    a.w8 = w & linear;
+    a.i0 = l0, a.i1 = l1, a.w8 = w;
     a.w = to_float(a.w8) * (1.0f / 256.0f);
+    return a;
+}
+
+// The nearest texel along one axis (lp_build_sample_wrap_nearest_int).
+Ints aos_nearest(const Floats& s, const Ints& size, Wrap wrap, bool pot) {
+    const Ints last = size - 1;
+    if (wrap == Wrap::Repeat && !pot) return cvt_trunc(minps(s - floor(s), splat(0x1.fffffep-1f)) * to_float(size));
+    const Ints i = cvt_trunc(floor(s * to_float(size)));
+    return wrap == Wrap::Repeat ? (i & last) : imin(imax(i, Ints{}), last);
+}
+
+// Linear lanes as aos_linear gives them, the others their nearest texel with weight 0 (which
+// llvmpipe's lerp returns exactly); each part computed only when some lane needs it.
+Axis aos_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints& linear) {
+    const bool some_linear = any(linear), all_linear = !any(~linear);
+    Axis a{};
+    if (some_linear) a = aos_linear(s, size, wrap, pot);
+    if (!all_linear) {
+        const Ints n = aos_nearest(s, size, wrap, pot);
+        a.i0 = linear ? a.i0 : n;
+        a.i1 = linear ? a.i1 : n;
+        a.w8 = a.w8 & linear;
+        a.w = from_bits(bits(a.w) & linear);
+    }
     return a;
 }
 
@@ -373,6 +431,9 @@ Texels fetch(const sampler2D& tex, const LevelLanes& level, const Axis& x, const
     return {gather(t, row0 + x.i0), gather(t, row0 + x.i1), gather(t, row1 + x.i0), gather(t, row1 + x.i1)};
 }
 
+// Channel c (0: red) of packed RGBA8 texels.
+Ints channel(const Uints& texels, int c) { return Ints((texels >> (8 * c)) & 255u); }
+
 // d(colour)/ds and /dt of the bilinear interpolant (texels as floats), for Dual2.
 void bilinear_gradient(const Texels& k, const Axis& x, const Axis& y, const LevelLanes& level, int c, Floats& ds,
                        Floats& dt) {
@@ -390,20 +451,18 @@ struct Sample {
     Floats ds[4], dt[4];
 };
 
-// One level, 8-bit path: q per channel.
-void aos_level(const sampler2D& tex, const Floats& s, const Floats& t, const Ints& level, const Ints& linear,
-               bool gradient, Ints (&q)[4], Floats (&ds)[4], Floats (&dt)[4]) {
+// One level, 8-bit path: the filtered texel's channels in (red, blue) and (green, alpha) pairs.
+Pairs aos_level(const sampler2D& tex, const Floats& s, const Floats& t, const Ints& level, const Ints& linear,
+                bool gradient, Floats (&ds)[4], Floats (&dt)[4]) {
     const SamplerState& st = tex.sampler;
     const LevelLanes lv = level_lanes(tex, level);
     const bool pot_w = std::has_single_bit(unsigned(tex.width)), pot_h = std::has_single_bit(unsigned(tex.height));
     const Axis x = aos_axis(s, lv.width, st.wrap_s, pot_w, linear), y = aos_axis(t, lv.height, st.wrap_t, pot_h, linear);
     const Texels k = fetch(tex, lv, x, y);
-    for (int c = 0; c < 4; ++c) {
-        const Ints r0 = lerp8(x.w8, channel(k.t00, c), channel(k.t10, c));
-        const Ints r1 = lerp8(x.w8, channel(k.t01, c), channel(k.t11, c));
-        q[c] = lerp8(y.w8, r0, r1);
-        if (gradient) bilinear_gradient(k, x, y, lv, c, ds[c], dt[c]);
+    if (gradient) {
+        for (int c = 0; c < 4; ++c) bilinear_gradient(k, x, y, lv, c, ds[c], dt[c]);
     }
+    return lerp8(y.w8, lerp8(x.w8, split(k.t00), split(k.t10)), lerp8(x.w8, split(k.t01), split(k.t11)));
 }
 
 // One level, float path.
@@ -421,12 +480,6 @@ void soa_level(const sampler2D& tex, const Floats& s, const Floats& t, const Int
         out[c] = lerp(y.w, r0, r1);
         if (gradient) bilinear_gradient(k, x, y, lv, c, ds[c], dt[c]);
     }
-}
-
-bool any(const Ints& m) {
-    Ints r = m;
-    for (int i = 1; i < L; ++i) r[0] |= m[i];
-    return r[0] != 0;
 }
 
 // llvmpipe decides per 8-lane vector whether a MIRRORED_REPEAT lookup with different min and mag
@@ -451,18 +504,16 @@ Sample sample_lanes(const sampler2D& tex, const Floats& s, const Floats& t, cons
     if (st.wrap_s != Wrap::MirroredRepeat && st.wrap_t != Wrap::MirroredRepeat) {
         // The 8-bit path; the second level blends in with an 8-bit weight truncated from the
         // fraction (lp_build_sample_mipmap).
-        Ints q[4], q1[4];
-        aos_level(tex, s, t, lc.level0, lc.linear, gradient, q, out.ds, out.dt);
+        Pairs q = aos_level(tex, s, t, lc.level0, lc.linear, gradient, out.ds, out.dt);
         if (blend) {
             Floats ds1[4], dt1[4];
-            aos_level(tex, s, t, lc.level1, lc.linear, gradient, q1, ds1, dt1);
-            const Ints w = imax(cvt_trunc(lc.blend * 256.0f), Ints{});
-            for (int c = 0; c < 4; ++c) {
-                q[c] = lerp8(w, q[c], q1[c]);
-                if (gradient) out.ds[c] += lc.blend * (ds1[c] - out.ds[c]), out.dt[c] += lc.blend * (dt1[c] - out.dt[c]);
+            const Pairs q1 = aos_level(tex, s, t, lc.level1, lc.linear, gradient, ds1, dt1);
+            q = lerp8(imax(cvt_trunc(lc.blend * 256.0f), Ints{}), q, q1);
+            if (gradient) {
+                for (int c = 0; c < 4; ++c) out.ds[c] += lc.blend * (ds1[c] - out.ds[c]), out.dt[c] += lc.blend * (dt1[c] - out.dt[c]);
             }
         }
-        for (int c = 0; c < 4; ++c) out.rgba[c] = unorm(q[c]);
+        for (int c = 0; c < 4; ++c) out.rgba[c] = unorm(channel(q, c));
         return out;
     }
     // The float path (a mirrored axis); lp_build_sample_mipmap, or lp_build_sample_mipmap_both

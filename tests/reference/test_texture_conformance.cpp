@@ -280,3 +280,58 @@ TEST_CASE("orientation: glTF's UV (0, 0) is the image's top-left: t = 0.01 sampl
 }
 
 }  // namespace qs
+
+namespace qs {
+
+namespace {
+// Pixels whose 8-bit RGBA differs by more than one step.
+std::size_t over_one_step(const Framebuffer& a, const Framebuffer& b) {
+    std::size_t n = 0;
+    for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
+        int worst = 0;
+        for (std::size_t c = 0; c < 4; ++c) worst = std::max(worst, std::abs(int(unorm8(a.rgba[p + c])) - int(unorm8(b.rgba[p + c]))));
+        n += worst > 1;
+    }
+    return n;
+}
+}  // namespace
+
+TEST_CASE("Dual2's level of detail from its partials: on an affine mapping, the quads' levels", "[textures][derivatives]") {
+    // The minified orthographic plane (st over 80 periods of a 16x8 image), now trilinear: quad
+    // differences of an affine st are its derivatives, up to the rounding of st's values. (One
+    // lookup: the halftone's own aastep takes derivatives of non-affine values, where quads and
+    // Dual2 differ by design.)
+    Scene s = load_scene(work_dir() / "scenes" / (texture_scenes(), "texture-wrap-repeat-pot.gltf"));
+    s.textures[0].sampler.min_filter = Filter::LinearMipmapLinear;
+    FrameRequest quads, dual2;
+    dual2.raster.derivatives = Derivatives::Analytic;
+    const Framebuffer a = render_frame(s, quads), b = render_frame(s, dual2);
+    const std::size_t n = over_one_step(a, b);
+    std::printf("Dual2 against quads, single_texture, trilinear, minified orthographic plane: %zu of %d pixels over "
+                "1/255\n", n, a.width * a.height);
+    CHECK(n <= std::size_t(a.width * a.height) / 100);
+    s.textures[0].sampler.min_filter = Filter::Linear;  // the same without mipmaps is another image
+    CHECK(over_one_step(a, render_frame(s, quads)) > std::size_t(a.width * a.height) / 2);
+}
+
+#if defined(QUADSHADE_HAS_RAYCAST)
+TEST_CASE("the ray caster shades a texture that needs a level of detail in quads, as the rasterizer",
+          "[textures][raycast]") {
+    for (const char* file : {"texture-min-linear-mipmap-linear.gltf", "texture-mirrored-mipmaps.gltf"}) {
+        Scene s = load_scene(work_dir() / "scenes" / (texture_scenes(), file));
+        for (const char* shader : {"single_texture", "halftone"}) {
+            FrameRequest raster, raycast;
+            raster.shader_override = raycast.shader_override = shader;
+            raycast.backend = Backend::RayCaster;
+            const Framebuffer a = render_frame(s, raster), b = render_frame(s, raycast);
+            const std::size_t n = over_one_step(a, b);
+            std::printf("ray caster against rasterizer, %s, %s: %zu of %d pixels over 1/255\n", file, shader, n,
+                        a.width * a.height);
+            INFO(file << " " << shader);
+            CHECK(n <= std::size_t(a.width * a.height) / 200);
+        }
+    }
+}
+#endif
+
+}  // namespace qs
