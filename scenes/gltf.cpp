@@ -330,6 +330,11 @@ Scene load_scene(const std::filesystem::path& path) {
                            : loader.LoadASCIIFromFile(&m, &err, &warn, path.string());
     if (!ok) throw SceneError(path.string() + ": not a valid glTF file: " + (err.empty() ? warn : err));
 
+    // glTF: a loader must refuse a file that requires an extension it does not implement.
+    for (std::size_t i = 0; i < m.extensionsRequired.size(); ++i) {
+        fail(path, "extensionsRequired[" + std::to_string(i) + "]",
+             "'" + m.extensionsRequired[i] + "' is required but not supported (quadshade implements no extension)");
+    }
     Scene scene;
     scene.file = path;
     const int scene_index = m.defaultScene >= 0 ? m.defaultScene : 0;

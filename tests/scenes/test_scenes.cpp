@@ -184,6 +184,13 @@ TEST_CASE("textures: baseColorTexture, extras.teximage, glTF's sampler defaults,
         CHECK_THROWS_WITH(load_scene(dir / "e.gltf"), Catch::Contains("e.gltf") && Catch::Contains("images[0].uri") &&
                                                           Catch::Contains("/etc/outside.png"));
     }
+    SECTION("a required extension") {
+        std::string text = gltf(base, "{}", "images/a%20b.png");
+        text.insert(1, R"("extensionsUsed": ["KHR_texture_transform"], "extensionsRequired": ["KHR_texture_transform"],)");
+        write_text(dir / "g.gltf", text);
+        CHECK_THROWS_WITH(load_scene(dir / "g.gltf"), Catch::Contains("extensionsRequired[0]") &&
+                                                          Catch::Contains("KHR_texture_transform"));
+    }
     SECTION("a second texture coordinate set") {
         const std::string m = R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1}}})";
         write_text(dir / "f.gltf", gltf(m, "{}", "images/a%20b.png"));
