@@ -266,7 +266,6 @@ LevelChoice choose_levels(const sampler2D& tex, const float* rho2_lanes) {
     }
     // Magnified lanes take the magnification filter at level0, unblended.
     const Ints minified = st.min == st.mag ? splat(-1) : positive;
-    if (st.mip != MipFilter::Linear) c.blend = Floats{};
     c.blend = from_bits(bits(c.blend) & minified);
     const Ints min_linear = splat(st.min == Filter::Linear ? -1 : 0), mag_linear = splat(st.mag == Filter::Linear ? -1 : 0);
     c.linear = minified ? min_linear : mag_linear;
@@ -608,7 +607,9 @@ void throw_lod_without_quads() {
                            "but the shader was run on independent pixels");
 }
 
-void sample(const sampler2D& tex, const Lookup& l) {
+// Flattened: the helpers above become one straight body (called as functions, their 64-byte
+// vectors would travel through memory on targets without AVX-512).
+[[gnu::flatten]] void sample(const sampler2D& tex, const Lookup& l) {
     alignas(64) float s[L] = {}, t[L] = {}, rho2[L] = {};
     std::copy_n(l.s, l.lanes, s);
     std::copy_n(l.t, l.lanes, t);
