@@ -4,7 +4,8 @@
 // Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping -> triangle setup ->
 // binning into 64x64 tiles -> tiles in parallel (oneTBB), each tile's triangles in submission
 // order -> quads (or single pixels for derivative-free shaders) batched kBatchLanes lanes at a
-// time -> early depth test -> shading -> colour and depth writes for covered lanes only.
+// time -> early depth test (unless no two triangles overlap: depth_buffer.h) -> shading -> colour
+// and depth writes for covered lanes only.
 // The output is bit-identical for any thread count.
 
 #include <cstdint>
@@ -34,8 +35,9 @@ struct RasterOptions {
     // rounded ones (softpipe). See plane_equation.h.
     bool fused_interpolation = fused_interpolation_default();
     // Shade derivative-free shaders in quads with helper lanes too (the general path), interpolate
-    // gl_FragCoord for every shader, and keep a depth buffer even when no draw needs one. For
-    // measuring what specialisation saves, and for checking that it changes nothing.
+    // gl_FragCoord for every shader, and keep a depth buffer even when it provably changes
+    // nothing (depth_buffer.h). For measuring what specialisation saves, and for checking that it
+    // changes nothing.
     bool force_general_path = false;
     // Fill Framebuffer::undefined: shade with Checked numbers (float only; not with Analytic
     // derivatives or Double precision: std::invalid_argument). Same colours, slower.
@@ -48,6 +50,7 @@ struct RasterStats {
     std::uint64_t quads = 0;          // quads shaded (quad path)
     std::uint64_t lanes_shaded = 0;   // lanes run through a shader, helpers included
     std::uint64_t pixels_written = 0;
+    bool depth_buffer = false;        // the frame was depth tested (depth_buffer.h)
 };
 
 // Renders draws into a width x height framebuffer cleared to `clear`.

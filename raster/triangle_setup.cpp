@@ -34,6 +34,7 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     for (int e = 0; e < 3; ++e) {
         const int a = order[e], b = order[(e + 1) % 3];
         t.edges[e] = EdgeFunction::from_edge(fx[a], fy[a], fx[b], fy[b], fixed::kSubpixelBits, fill_rule);
+        t.corner_x[std::size_t(e)] = fx[a], t.corner_y[std::size_t(e)] = fy[a];
     }
     // Pixel centres i << 8 inside the fixed-point bounds.
     auto lo = [](std::int64_t v) { return int((v + fixed::kOne - 1) >> fixed::kSubpixelBits); };

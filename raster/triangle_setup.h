@@ -15,6 +15,9 @@ namespace qs {
 
 struct TriangleSetup {
     std::array<EdgeFunction, 3> edges;
+    // The snapped vertices (fixed point, pixel centres on multiples of fixed::kOne), in edge
+    // order: edge k runs from corner k to corner k + 1, the interior on its positive side.
+    std::array<std::int64_t, 3> corner_x, corner_y;
     int min_x, min_y, max_x, max_y;  // inclusive pixel bounds, clamped to the framebuffer
     PlaneEquation z;                 // window depth, linear in screen space
     PlaneEquation inv_w;             // 1/w_clip, linear in screen space
