@@ -10,7 +10,7 @@ namespace qs {
 namespace {
 
 // Edge k of t at the fixed-point point (px, py), without the fill rule's bias: positive inside.
-// Vertices are within the guard band (2^26 in fixed point), so the products fit easily.
+// Clipped vertices lie in the viewport (below 2^24 in fixed point), so the products fit easily.
 std::int64_t edge_at(const TriangleSetup& t, int k, std::int64_t px, std::int64_t py) {
     const std::size_t a = std::size_t(k), b = std::size_t((k + 1) % 3);
     return (t.corner_x[b] - t.corner_x[a]) * (py - t.corner_y[a]) - (t.corner_y[b] - t.corner_y[a]) * (px - t.corner_x[a]);

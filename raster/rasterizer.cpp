@@ -21,7 +21,6 @@
 #include "raster/block_layout.h"
 #include "raster/clipper.h"
 #include "raster/depth_buffer.h"
-#include "raster/fixed_point.h"
 #include "raster/float_environment.h"
 #include "raster/lanes16.h"
 #include "raster/triangle_setup.h"
@@ -518,18 +517,20 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     }
 
     RasterStats stats;
-    // Vertex stage, clipping and setup, per draw, triangles kept in submission order.
-    const float guard_x = fixed::kGuardBand / (float(width) * 0.5f) - 1.0f;
-    const float guard_y = fixed::kGuardBand / (float(height) * 0.5f) - 1.0f;
+    // Vertex stage, clipping and setup, per draw, triangles kept in submission order; with
+    // denormals flushed, as Mesa's draw module runs them.
+    const Viewport viewport(width, height);
     std::vector<TriangleSetup> triangles;
+    const FlushDenormals ftz;
     for (std::size_t di = 0; di < prepared.size(); ++di) {
         const DrawCall& call = *prepared[di].call;
         std::vector<ClipVertex> verts(call.vertices.size());
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, verts.size(), 256), [&](const auto& r) {
+            const FlushDenormals vertex_ftz;
             for (std::size_t i = r.begin(); i != r.end(); ++i) {
                 VertexOut out;
                 call.program->vertex(call.vertices[i], call.uniforms, out);
-                verts[i] = {out.clip, out.varyings};
+                verts[i] = {out.clip, viewport.window(out.clip, options.fused_viewport), out.varyings};
             }
         });
         std::vector<std::array<ClipVertex, 3>> clipped;
@@ -542,7 +543,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
                                             std::to_string(verts.size()));
             }
             clipped.clear();
-            clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, guard_x, guard_y, clipped);
+            clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, viewport, clipped);
             for (const auto& tri : clipped) {
                 if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule,
                                             prepared[di].flat, verts[c])) {

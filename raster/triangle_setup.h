@@ -25,10 +25,11 @@ struct TriangleSetup {
     int draw = 0;                    // index of the draw call it came from
 };
 
-// Window mapping in framebuffer coordinates (y down, as OSMesa's buffer): x = ndc.x W/2 + W/2,
-// y = ndc.y (-H/2) + H/2, z = ndc.z / 2 + 1/2. Returns nothing for a triangle that covers no
-// pixel centre of the framebuffer or has zero area. Flat varyings (bits of `flat`) take the
-// value of `provoking`, the last vertex of the triangle before clipping, in the plane's a0.
+// From the vertices' window coordinates (ClipVertex::window: framebuffer pixels, y down as
+// OSMesa's buffer, depth, 1/w), snapped to fixed point for the edges. Returns nothing for a
+// triangle that covers no pixel centre of the framebuffer or has zero area. Flat varyings (bits
+// of `flat`) take the value of `provoking`, the last vertex of the triangle before clipping, in
+// the plane's a0.
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
                                             const ClipVertex& provoking);

@@ -15,10 +15,11 @@ const ProgramOf<Flat> kFlat;
 const ProgramOf<Position> kPosition;
 
 // A triangle given in framebuffer pixels (x right, y down) and window depth, set up for a
-// width x height image (powers of two: the window coordinates come back exact).
+// width x height image.
 std::optional<TriangleSetup> setup_pixels(int width, int height, const std::array<glm::vec3, 3>& p, FillRule rule) {
     std::array<ClipVertex, 3> tri;
     for (std::size_t i = 0; i < 3; ++i) {
+        tri[i].window = {p[i], 1.0f};
         tri[i].clip = {p[i].x * 2.0f / float(width) - 1.0f, 1.0f - p[i].y * 2.0f / float(height), p[i].z * 2.0f - 1.0f, 1.0f};
         tri[i].varyings = {};
     }
