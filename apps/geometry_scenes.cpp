@@ -58,15 +58,6 @@ Mesh box_mesh() {
     return m;
 }
 
-// The square (-1, -1, 0)..(1, 1, 0) as two triangles, st (0, 0)..(1, 1).
-Mesh square_mesh() {
-    Mesh m;
-    m.name = "square";
-    m.vertices = {{{-1, -1, 0}, {0, 0}}, {{1, -1, 0}, {1, 0}}, {{1, 1, 0}, {1, 1}}, {{-1, 1, 0}, {0, 1}}};
-    m.indices = {0, 1, 2, 0, 2, 3};
-    return m;
-}
-
 // A size x size plane in xz (y = 0) centred on the origin, cells x cells squares of two
 // triangles; st is the position divided by st_unit, shifted to start at 0.
 Mesh grid_mesh(float size, int cells, float st_unit) {
@@ -160,17 +151,20 @@ Scene torus_rolled() {
 // middle square (lines where surfaces cross), drawn far and near in mixed order.
 Scene overlap(bool reversed, int width, int height) {
     Scene s = base_scene(width, height, camera({0.8f, 0.9f, 4.2f}, {0.0f, 0.0f, 0.0f}, 40.0f, 1.0f, 10.0f));
-    s.meshes = {square_mesh(), box_mesh(), torus_mesh(0.5f, 0.2f, 40, 16, 4.0f, 1.0f)};
+    s.meshes = {grid_mesh(2.0f, 1, 2.0f), box_mesh(), torus_mesh(0.5f, 0.2f, 40, 16, 4.0f, 1.0f)};
     const glm::mat4 I(1.0f);
+    // The squares stand up: (x, y, z) -> (x, -z, y) takes the grid's xz plane to xy, exactly.
+    const glm::mat4 stand_up(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(0, -1, 0, 0), glm::vec4(0, 0, 0, 1));
     std::vector<Object> o = {
-        object("middle square", 0, glm::rotate(glm::scale(I, glm::vec3(1.2f)), glm::radians(20.0f), {0, 1, 0}), "dots"),
+        object("middle square", 0, glm::rotate(glm::scale(I, glm::vec3(1.2f)), glm::radians(20.0f), {0, 1, 0}) * stand_up, "dots"),
         object("torus", 2, glm::rotate(glm::translate(I, {0.3f, 0.2f, 0.25f}), glm::radians(60.0f), {1, 0, 0}), "dots"),
-        object("far square", 0, glm::scale(glm::translate(I, {-0.6f, 0.1f, -1.2f}), glm::vec3(1.5f)), "dots"),
+        object("far square", 0, glm::scale(glm::translate(I, {-0.6f, 0.1f, -1.2f}), glm::vec3(1.5f)) * stand_up, "dots"),
         object("box", 1,
                glm::scale(glm::rotate(glm::translate(I, {-0.5f, -0.4f, 0.1f}), glm::radians(30.0f), {1, 1, 0}), glm::vec3(0.5f)),
                "dots"),
         object("near square", 0,
-               glm::rotate(glm::scale(glm::translate(I, {0.6f, -0.5f, 0.9f}), glm::vec3(0.5f)), glm::radians(15.0f), {1, 0, 0}),
+               glm::rotate(glm::scale(glm::translate(I, {0.6f, -0.5f, 0.9f}), glm::vec3(0.5f)), glm::radians(15.0f), {1, 0, 0}) *
+                   stand_up,
                "dots"),
     };
     if (reversed) o.assign(o.rbegin(), o.rend());

@@ -26,6 +26,11 @@ bool separated_by_an_edge_of(const TriangleSetup& a, const TriangleSetup& b) {
     return false;
 }
 
+// Whether two triangles' pixel bounding boxes meet: where they do not, no pixel is shared.
+bool boxes_meet(const TriangleSetup& a, const TriangleSetup& b) {
+    return std::max(a.min_x, b.min_x) <= std::min(a.max_x, b.max_x) && std::max(a.min_y, b.min_y) <= std::min(a.max_y, b.max_y);
+}
+
 }  // namespace
 
 bool interiors_overlap(const TriangleSetup& a, const TriangleSetup& b) {
@@ -52,7 +57,16 @@ bool depth_buffer_matters(std::span<const TriangleSetup> triangles, int width, i
     for (const TriangleSetup& t : triangles) {
         if (may_reach_depth_one(t)) return true;
     }
-    if (triangles.size() < 2) return false;
+    // A few triangles (a quad, a handful of them): every pair, without building a grid.
+    constexpr std::size_t kEveryPair = 16;
+    if (triangles.size() <= kEveryPair) {
+        for (std::size_t i = 0; i < triangles.size(); ++i) {
+            for (std::size_t j = i + 1; j < triangles.size(); ++j) {
+                if (boxes_meet(triangles[i], triangles[j]) && interiors_overlap(triangles[i], triangles[j])) return true;
+            }
+        }
+        return false;
+    }
     // Each triangle in the grid cells its pixel bounding box meets; only triangles sharing a
     // cell can share a pixel.
     constexpr int kCell = 64;
