@@ -12,7 +12,8 @@
 //  - A crossing edge's new vertex is interpolated from the endpoint nearer the plane (the inside
 //    one on a tie), t = d_from / (d_from - d_to), each of clip x, y, z, w and every varying as
 //    from + t (to - from); its window coordinates are then computed from its clip position, in
-//    float without fused multiply-adds (Mesa's C, built for baseline x86-64).
+//    float without fused multiply-adds (Mesa's C, built for baseline x86-64). The choice depends
+//    on the two distances only, so an edge two triangles share is cut at the same point in both.
 //  - The polygon is fanned as (p[i-1], p[i], p[0]): the original first vertex last.
 // The original vertices' window coordinates come from the vertex stage (Viewport::window, fused
 // on FMA hosts as the draw module's LLVM code). Triangles with a coordinate or plane distance

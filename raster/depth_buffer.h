@@ -41,8 +41,9 @@ bool may_reach_depth_one(const TriangleSetup& t);
 
 // Whether a depth buffer could change the frame these triangles draw. False only when proven
 // (above); true as well when the proof would cost too much: more than kMaxTrianglesTested
-// triangles, or more candidate pairs than a budget linear in their number (pairs are only
-// those whose pixel bounding boxes meet, found through a grid of kTileSize cells).
+// triangles, or more candidate pairs than a budget linear in their number. Pairs are only those
+// whose pixel bounding boxes meet: all of them for a handful of triangles, otherwise found
+// through a grid of 64-pixel cells, each pair tested once.
 bool depth_buffer_matters(std::span<const TriangleSetup> triangles, int width, int height);
 
 inline constexpr std::size_t kMaxTrianglesTested = std::size_t(1) << 16;
