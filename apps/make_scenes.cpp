@@ -1,18 +1,17 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture. The outputs are committed; a test regenerates them and compares. With
-// --conformance, the scenes the tests compare with OSMesa instead (written at test time).
+// plane and its texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
+// outputs are committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
-//   quadshade-make-scenes --conformance OUTPUT_DIR
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "apps/geometry_scenes.h"
 #include "apps/texture_scenes.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
@@ -136,29 +135,19 @@ qs::Image test_image() {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string usage =
-        "usage: quadshade-make-scenes OUTPUT_DIR\n"
-        "       quadshade-make-scenes --conformance OUTPUT_DIR\n"
-        "Writes figure-1.1.gltf, table-1.1-plane.gltf (+ .bin) and textures/; with --conformance, the\n"
-        "conformance scenes the tests compare with OSMesa, and texture-scenes.txt listing them.\n";
-    const bool conformance = argc == 3 && std::string(argv[1]) == "--conformance";
-    if (!(argc == 2 || conformance) || std::string(argv[1]) == "--help") {
-        std::fputs(usage.c_str(), argc == 2 ? stdout : stderr);
+    if (argc != 2 || std::string(argv[1]) == "--help") {
+        std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
+                             "Writes figure-1.1.gltf, table-1.1-plane.gltf (+ .bin), textures/ and conformance/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
-        const std::filesystem::path dir = argv[argc - 1];
-        if (conformance) {
-            const auto scenes = qs::conformance::write_texture_scenes(dir);
-            std::ofstream list(dir / "texture-scenes.txt");
-            for (const auto& f : scenes) list << f.file << "\t" << f.description << "\n";
-            if (!list.flush()) throw std::runtime_error((dir / "texture-scenes.txt").string() + ": cannot write");
-            return 0;
-        }
+        const std::filesystem::path dir = argv[1];
         std::filesystem::create_directories(dir / "textures");
         qs::write_image(dir / "textures" / "halftone-source.png", test_image());
         qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
+        qs::write_geometry_scenes(dir);
+        qs::write_texture_scenes(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
         return 1;

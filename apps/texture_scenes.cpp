@@ -10,7 +10,7 @@
 #include "scenes/image_io.h"
 #include "scenes/scene.h"
 
-namespace qs::conformance {
+namespace qs {
 
 namespace {
 
@@ -82,7 +82,7 @@ Scene receding_scene(int width, int height, const Texture& texture) {
 }
 
 Texture file_texture(const std::filesystem::path& dir, int w, int h, Sampler sampler) {
-    const std::string name = "texture-" + std::to_string(w) + "x" + std::to_string(h) + ".png";
+    const std::string name = "texture-" + std::to_string(w) + "x" + std::to_string(h) + ".png";  // in images/
     const std::filesystem::path file = dir / "images" / name;
     if (!std::filesystem::exists(file)) write_image(file, test_image(w, h), {}, true);
     Texture t;
@@ -107,58 +107,61 @@ const char* filter_name(Filter f) {
 
 }  // namespace
 
-std::vector<SceneFile> write_texture_scenes(const std::filesystem::path& dir) {
+void write_texture_scenes(const std::filesystem::path& root) {
+    const std::filesystem::path dir = root / "conformance";
     std::filesystem::create_directories(dir / "images");
-    std::vector<SceneFile> files;
-    auto save = [&](const Scene& s, const std::string& name, const std::string& description) {
-        save_scene(s, dir / name);
-        files.push_back({name, description});
-    };
+    auto save = [&](const Scene& s, const std::string& name) { save_scene(s, dir / ("texture-" + name)); };
     constexpr Wrap kRepeat = Wrap::Repeat, kMirror = Wrap::MirroredRepeat, kClamp = Wrap::ClampToEdge;
     constexpr Filter kLinear = Filter::Linear, kNearest = Filter::Nearest;
+    const Sampler bilinear_repeat = sampler(kLinear, kLinear, kRepeat, kRepeat);
 
-    // Wrap modes, UVs far outside [0, 1], on odd (npot) and power-of-two images; odd and even
-    // image sizes.
-    save(flat_scene(61, 45, {-2.6f, -1.7f}, {3.4f, 2.3f}, file_texture(dir, 13, 7, sampler(kLinear, kLinear, kRepeat, kRepeat))),
-         "texture-wrap-repeat-npot.gltf", "REPEAT, 13x7 image (npot), st in [-2.6, 3.4] x [-1.7, 2.3], bilinear, 61x45");
-    save(flat_scene(64, 48, {-37.3f, -21.9f}, {45.1f, 30.3f}, file_texture(dir, 16, 8, sampler(kLinear, kLinear, kRepeat, kRepeat))),
-         "texture-wrap-repeat-pot.gltf", "REPEAT, 16x8 image, st in [-37.3, 45.1] x [-21.9, 30.3] (minified, no mipmaps), 64x48");
+    // Wraps, st far outside [0, 1], on odd (non-power-of-two) and power-of-two images, odd and
+    // even image sizes, orthographic:
+    // REPEAT on a 13x7 image, st in [-2.6, 3.4] x [-1.7, 2.3], bilinear, 61x45;
+    save(flat_scene(61, 45, {-2.6f, -1.7f}, {3.4f, 2.3f}, file_texture(dir, 13, 7, bilinear_repeat)), "wrap-repeat-npot.gltf");
+    // REPEAT on a 16x8 image over 80 periods (minified, no mipmaps), 64x48;
+    save(flat_scene(64, 48, {-37.3f, -21.9f}, {45.1f, 30.3f}, file_texture(dir, 16, 8, bilinear_repeat)),
+         "wrap-repeat-pot.gltf");
+    // MIRRORED_REPEAT (llvmpipe's float path), bilinear, 61x45;
     save(flat_scene(61, 45, {-2.6f, -1.7f}, {3.4f, 2.3f}, file_texture(dir, 13, 7, sampler(kLinear, kLinear, kMirror, kMirror))),
-         "texture-wrap-mirrored.gltf", "MIRRORED_REPEAT, 13x7 image, st in [-2.6, 3.4] x [-1.7, 2.3], bilinear, 61x45");
+         "wrap-mirrored.gltf");
+    // CLAMP_TO_EDGE, nearest, st in [-0.6, 1.7] x [-0.45, 1.35], 64x48;
     save(flat_scene(64, 48, {-0.6f, -0.45f}, {1.7f, 1.35f}, file_texture(dir, 13, 7, sampler(kNearest, kNearest, kClamp, kClamp))),
-         "texture-wrap-clamp.gltf", "CLAMP_TO_EDGE, 13x7 image, st in [-0.6, 1.7] x [-0.45, 1.35], nearest, 64x48");
+         "wrap-clamp.gltf");
+    // MIRRORED_REPEAT along s, REPEAT along t, 61x45.
     save(flat_scene(61, 45, {-2.6f, -1.7f}, {3.4f, 2.3f}, file_texture(dir, 16, 8, sampler(kLinear, kLinear, kMirror, kRepeat))),
-         "texture-wrap-mixed.gltf", "MIRRORED_REPEAT in s, REPEAT in t, 16x8 image, bilinear, 61x45");
+         "wrap-mixed.gltf");
 
-    // Every filter under magnification and minification (mipmaps included) on a plane receding
-    // to the horizon; a non-square image.
+    // Every filter under magnification and minification on the receding plane (64x32 image, 64x48):
+    // each minification filter with LINEAR magnification;
     for (Filter min : {Filter::Nearest, Filter::Linear, Filter::NearestMipmapNearest, Filter::LinearMipmapNearest,
                        Filter::NearestMipmapLinear, Filter::LinearMipmapLinear}) {
         save(receding_scene(64, 48, file_texture(dir, 64, 32, sampler(kLinear, min, kRepeat, kRepeat))),
-             std::string("texture-min-") + filter_name(min) + ".gltf",
-             std::string("receding plane, 64x32 image, REPEAT, mag LINEAR, min ") + filter_name(min) + ", 64x48");
+             std::string("min-") + filter_name(min) + ".gltf");
     }
+    // NEAREST magnification under trilinear minification, 61x45;
     save(receding_scene(61, 45, file_texture(dir, 64, 32, sampler(kNearest, Filter::LinearMipmapLinear, kRepeat, kRepeat))),
-         "texture-mag-nearest.gltf", "receding plane, 64x32 image, REPEAT, mag NEAREST, min LINEAR_MIPMAP_LINEAR, 61x45");
+         "mag-nearest.gltf");
+    // mipmaps of a 37x19 image (levels 18x9, 9x4, ...: odd sizes), CLAMP_TO_EDGE along s, 61x45;
     save(receding_scene(61, 45, file_texture(dir, 37, 19, sampler(kLinear, Filter::LinearMipmapLinear, kClamp, kRepeat))),
-         "texture-npot-mipmaps.gltf",
-         "receding plane, 37x19 image (odd sizes: mipmaps 18x9, 9x4, ...), CLAMP_TO_EDGE in s, trilinear, 61x45");
+         "npot-mipmaps.gltf");
+    // MIRRORED_REPEAT with mipmaps and different min and mag filters (llvmpipe's float path,
+    // which decides per two quads whether to filter linearly).
     save(receding_scene(64, 48, file_texture(dir, 64, 32, sampler(kLinear, Filter::NearestMipmapLinear, kMirror, kMirror))),
-         "texture-mirrored-mipmaps.gltf",
-         "receding plane, 64x32 image, MIRRORED_REPEAT, mag LINEAR, min NEAREST_MIPMAP_LINEAR (llvmpipe's float path), 64x48");
+         "mirrored-mipmaps.gltf");
 
-    // Where the image comes from: a file, a data: URI, a .glb's bufferView; the same pixels.
+    // Where the image comes from: a PNG file, the same bytes as a data: URI and in a .glb's
+    // bufferView (16x16, trilinear, REPEAT).
     const Texture from_file = file_texture(dir, 16, 16, sampler(kLinear, Filter::LinearMipmapLinear, kRepeat, kRepeat));
     Texture embedded = from_file;
     embedded.image.bytes = read_bytes(from_file.image.file);
     embedded.image.file.clear();
     embedded.image.mime_type = "image/png";
-    save(receding_scene(64, 48, from_file), "texture-source-file.gltf", "baseColorTexture from a PNG file, 16x16, trilinear");
+    save(receding_scene(64, 48, from_file), "source-file.gltf");
     embedded.image.kind = ImageSource::Kind::DataUri;
-    save(receding_scene(64, 48, embedded), "texture-source-data-uri.gltf", "the same image as a data: URI");
+    save(receding_scene(64, 48, embedded), "source-data-uri.gltf");
     embedded.image.kind = ImageSource::Kind::BufferView;
-    save(receding_scene(64, 48, embedded), "texture-source-buffer-view.glb", "the same image in a .glb's bufferView");
-    return files;
+    save(receding_scene(64, 48, embedded), "source-buffer-view.glb");
 }
 
-}  // namespace qs::conformance
+}  // namespace qs
