@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,9 +41,8 @@ int main(int argc, char** argv) {
     app.add_option("--glsl", o.glsl, "folder of NAME.vert / NAME.frag (quadshade shaders --export-glsl DIR)")
         ->required()
         ->check(CLI::ExistingDirectory);
-    const std::map<std::string, qs::GlDriver> drivers = {{"llvmpipe", qs::GlDriver::Llvmpipe},
-                                                         {"softpipe", qs::GlDriver::Softpipe}};
-    app.add_option("--driver", o.driver, "llvmpipe (default) or softpipe")->transform(CLI::CheckedTransformer(drivers));
+    std::string driver = "llvmpipe";
+    app.add_option("--driver", driver, "llvmpipe (default) or softpipe")->check(CLI::IsMember({"llvmpipe", "softpipe"}));
     app.add_option("--size", o.size, "image size WxH (default: the scene's)");
     app.add_option("--time", o.time, "the `time` uniform (default: the scene's)");
     app.add_option("--shader", o.shader, "draw every object with this shader's GLSL");
@@ -56,6 +54,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 2;
     }
+    o.driver = driver == "softpipe" ? qs::GlDriver::Softpipe : qs::GlDriver::Llvmpipe;
     int width = 0, height = 0;
     if (!o.size.empty()) {
         std::size_t x = o.size.find('x');

@@ -482,16 +482,14 @@ void soa_level(const sampler2D& tex, const Floats& s, const Floats& t, const Int
 }
 
 // llvmpipe decides per 8-lane vector whether a MIRRORED_REPEAT lookup with different min and mag
-// filters runs its linear code: every lane of a vector where one lane filters linearly.
+// filters runs its linear code: every lane of a vector where one lane filters linearly. An OR
+// across each half of the batch, in three shuffles.
 Ints any_per_vector(const Ints& linear, bool quad_vectors) {
+    static_assert(L == 16);
     if (!quad_vectors) return linear;
-    Ints r;
-    for (int h = 0; h < L; h += 8) {
-        std::int32_t a = 0;
-        for (int i = h; i < h + 8; ++i) a |= linear[i];
-        for (int i = h; i < h + 8; ++i) r[i] = a;
-    }
-    return r;
+    Ints r = linear | __builtin_shufflevector(linear, linear, 1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14);
+    r |= __builtin_shufflevector(r, r, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13);
+    return r | __builtin_shufflevector(r, r, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11);
 }
 
 Sample sample_lanes(const sampler2D& tex, const Floats& s, const Floats& t, const float* rho2, bool quad_vectors,
