@@ -24,6 +24,7 @@
 #include "scenes/image_io.h"
 #include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
+#include "shading/glsl_export.h"
 
 namespace {
 
@@ -332,7 +333,11 @@ int cmd_render(RenderArgs& a) {
                  double(w) * h * nframes / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
                  (unsigned long long)stats.lanes_shaded);
     if (bands.size() > 1) std::fprintf(stderr, ", in %zu bands of rows", bands.size());
-    if (req.backend == Backend::RayCaster) std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
+    if (req.backend == Backend::RayCaster) {
+        std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
+    } else {
+        std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (no two triangles overlap)", stderr);
+    }
     std::fputc('\n', stderr);
     if (!a.mask_output.empty()) {
         std::fprintf(stderr,
@@ -344,7 +349,12 @@ int cmd_render(RenderArgs& a) {
     return 0;
 }
 
-int cmd_shaders() {
+int cmd_shaders(const std::string& export_dir) {
+    if (!export_dir.empty()) {
+        const int n = export_glsl(export_dir);
+        std::printf("wrote the GLSL of %d shaders to %s\n", n, export_dir.c_str());
+        return 0;
+    }
     auto coordinates = [](Coordinates c) {
         switch (c) {
             case Coordinates::None: return "window";
@@ -354,13 +364,13 @@ int cmd_shaders() {
         }
         return "?";
     };
-    std::printf("%-20s %-11s %-11s %-7s %-4s %-5s %s\n", "name", "coordinates", "derivatives", "texture", "time", "depth",
+    std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", "name", "coordinates", "derivatives", "texture", "time",
                 "description");
     for (const Program* p : catalogue()) {
         const ShaderInfo& s = p->info();
-        std::printf("%-20s %-11s %-11s %-7s %-4s %-5s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
+        std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
                     s.needs.derivatives ? "yes" : "-", s.needs.texture ? "yes" : "-", s.needs.time ? "yes" : "-",
-                    s.needs.depth ? "yes" : "-", std::string(s.description).c_str());
+                    std::string(s.description).c_str());
     }
     return 0;
 }
@@ -405,6 +415,11 @@ int main(int argc, char** argv) {
     CLI::App* render_cmd = app.add_subcommand("render", "render a glTF scene");
     add_render_options(*render_cmd, render);
     CLI::App* shaders_cmd = app.add_subcommand("shaders", "list the shader catalogue, with what each shader needs");
+    std::string export_dir;
+    shaders_cmd->add_option("--export-glsl", export_dir,
+                            "write each shader's complete GLSL (DIR/NAME.vert, DIR/NAME.frag) as an OpenGL program "
+                            "compiles it (quadshade-reference --glsl DIR renders scenes from it)")
+        ->option_text("DIR");
     CLI::App* compare_cmd = app.add_subcommand(
         "compare", "compare two images' RGB with OpenImageIO: mean, RMS, PSNR and the largest error");
     add_compare_options(*compare_cmd, compare);
@@ -419,7 +434,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (render_cmd->parsed()) return cmd_render(render);
-        if (shaders_cmd->parsed()) return cmd_shaders();
+        if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;

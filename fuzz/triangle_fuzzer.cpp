@@ -11,7 +11,6 @@
 
 #include "fuzz/fuzz_check.h"
 #include "raster/clipper.h"
-#include "raster/fixed_point.h"
 #include "raster/rasterizer.h"
 #include "raster/triangle_setup.h"
 
@@ -85,16 +84,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const FillRule fill = flags & 1 ? FillRule::RightTop : FillRule::LeftBottom;
 
     // Clipping and setup on their own: what setup keeps lies inside the image.
+    const Viewport viewport(width, height);
+    const bool fused = flags & 32;
     std::array<ClipVertex, 3> cv;
-    for (int i = 0; i < 3; ++i) cv[std::size_t(i)] = {v[std::size_t(i)].clip, v[std::size_t(i)].varyings};
-    const float guard_x = fixed::kGuardBand / (float(width) * 0.5f) - 1.0f;
-    const float guard_y = fixed::kGuardBand / (float(height) * 0.5f) - 1.0f;
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec4& clip = v[std::size_t(i)].clip;
+        cv[std::size_t(i)] = {clip, viewport.window(clip, fused), v[std::size_t(i)].varyings};
+    }
     std::vector<std::array<ClipVertex, 3>> clipped;
-    clip_triangle(cv[0], cv[1], cv[2], varyings, guard_x, guard_y, clipped);
+    clip_triangle(cv[0], cv[1], cv[2], varyings, viewport, clipped);
     FUZZ_CHECK(clipped.size() <= 7);  // six planes cut a triangle into at most nine corners
     for (const auto& tri : clipped) {
         // A clipped vertex can still overflow (interpolating between coordinates near float's
-        // largest); setup drops what does not map to finite window coordinates.
+        // largest); setup drops what does not map to finite window coordinates near the image.
         if (auto t = setup_triangle(tri, varyings, width, height, fill, flat, cv[2])) {
             FUZZ_CHECK(0 <= t->min_x && t->min_x <= t->max_x && t->max_x < width);
             FUZZ_CHECK(0 <= t->min_y && t->min_y <= t->max_y && t->max_y < height);
@@ -105,7 +107,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     Needs needs;
     needs.coordinates = Coordinates::Object3D;
     needs.derivatives = mode & 1;
-    needs.depth = mode & 2;
     needs.frag_coord = mode & 4;
     needs.varyings = varyings;
     needs.flat_varyings = flat;
@@ -120,6 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     options.pairing = flags & 2 ? QuadPairing::BottomUp : QuadPairing::TopDown;
     options.fill_rule = fill;
     options.fused_interpolation = flags & 4;
+    options.fused_viewport = fused;
     options.force_general_path = flags & 8;
     options.check_undefined = (flags & 16) && options.derivatives != Derivatives::Analytic;
     options.threads = 1;

@@ -4,7 +4,7 @@
 
 #include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
-#include "scenes/image_io.h"
+#include "render/textures.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
@@ -28,24 +28,16 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
-const glsl::sampler2D& texture_for(Scene& scene, const Object& o, const Program& program) {
+const glsl::sampler2D& SceneRenderer::texture_for(const Object& o, const Program& program) {
     if (o.texture < 0) {
-        throw SceneError(scene.file.string() + ": material '" + o.material + "': shader '" +
-                         std::string(program.info().name) + "' samples a texture but extras.teximage is missing");
+        throw SceneError(scene_.file.string() + ": material '" + o.material + "': shader '" +
+                         std::string(program.info().name) +
+                         "' samples a texture (teximage) but the material has no "
+                         "pbrMetallicRoughness.baseColorTexture or extras.teximage");
     }
-    Texture& t = scene.textures[std::size_t(o.texture)];
-    if (!t.refused.empty()) {
-        throw SceneError(scene.file.string() + ": material '" + o.material + "' extras.teximage: " + t.refused);
-    }
-    if (!t.loaded) {
-        try {
-            t.texels = load_texture(t.path);
-        } catch (const ImageError& e) {
-            throw SceneError(scene.file.string() + ": material '" + o.material + "' extras.teximage: " + e.what());
-        }
-        t.loaded = true;
-    }
-    return t.texels;
+    std::unique_ptr<glsl::sampler2D>& t = textures_[std::size_t(o.texture)];
+    if (!t) t = std::make_unique<glsl::sampler2D>(load_texture(scene_, scene_.textures[std::size_t(o.texture)]));
+    return *t;
 }
 
 #if defined(QUADSHADE_HAS_RAYCAST)
@@ -63,17 +55,27 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
       width_(request.width > 0 ? request.width : scene.width),
       height_(request.height > 0 ? request.height : scene.height) {
     const float aspect = float(width_) / float(height_);
+    vertices_.resize(scene.meshes.size());
+    textures_.resize(scene.textures.size());
     draws_.reserve(scene.objects.size());
     for (const Object& o : scene.objects) {
         const Program& program = program_for(scene, o, request.shader_override);
         DrawCall d;
         const Mesh& mesh = scene.meshes[o.mesh];
-        d.vertices = mesh.vertices;
+        std::vector<VertexIn>& vertices = vertices_[o.mesh];
+        if (vertices.empty()) {
+            vertices.reserve(mesh.vertices.size());
+            for (const Vertex& v : mesh.vertices) vertices.push_back({v.position, v.texcoord});
+        }
+        d.vertices = vertices;
         d.indices = mesh.indices;
         d.program = &program;
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = float(request.time.value_or(double(scene.time)));
-        if (program.info().needs.texture) d.uniforms.teximage = &texture_for(scene, o, program);
+        if (program.info().needs.texture) {
+            d.uniforms.teximage = &texture_for(o, program);
+            d.texture_lod = d.uniforms.teximage->needs_lod();
+        }
         draws_.push_back(d);
     }
     if (request.backend == Backend::RayCaster) {
@@ -100,10 +102,10 @@ double SceneRenderer::bvh_build_seconds() const {
 }
 
 std::uint64_t SceneRenderer::frame_bytes(int rows) const {
-    bool depth = request_.raster.force_general_path && request_.backend == Backend::Rasterizer;
+    // The rasterizer decides on a depth buffer per frame (depth_buffer.h): counted whenever it may.
+    const bool depth = request_.backend == Backend::Rasterizer;
     std::uint64_t vertices = 0, triangles = 0;
     for (const DrawCall& d : draws_) {
-        depth |= d.program->info().needs.depth && request_.backend == Backend::Rasterizer;
         vertices += d.vertices.size();
         triangles += d.indices.size() / 3;
     }

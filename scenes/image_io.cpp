@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <iterator>
+#include <memory>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
@@ -98,39 +99,57 @@ Image read_image(const std::filesystem::path& path, const ImageReadLimits& limit
     return decode_image(bytes, path, limits);
 }
 
-Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::path& path, const ImageReadLimits& limits) {
+namespace {
+
+// An image's bytes opened with the one reader `ext` names, after the container checks
+// (image_checks.h), its header's size checked against `limits` before a pixel is decoded. `name`
+// names it in messages; `memory` must outlive the reader.
+std::unique_ptr<OIIO::ImageInput> open_image(std::span<const unsigned char> bytes, const std::string& name,
+                                             const std::string& ext, const ImageReadLimits& limits,
+                                             OIIO::Filesystem::IOMemReader& memory, OIIO::ImageSpec config = {}) {
     // Only the reader the extension names, and only formats a texture or a render may be: never
     // OpenImageIO's tour of every reader it has (DICOM, camera raw, video...) on unknown bytes.
     // Not BMP, whose reader allocates what a 200-byte file's run lengths claim (fuzzing found
     // 0.8 GB), nor TGA or PNM, which quadshade has no use for.
     static const char* const kReadable[] = {".png", ".jpg", ".jpeg", ".exr", ".tif", ".tiff", ".hdr"};
-    const std::string ext = lowercase_extension(path);
     if (std::find(std::begin(kReadable), std::end(kReadable), ext) == std::end(kReadable)) {
-        throw ImageError(path.string() + ": unsupported image format '" + ext +
-                         "' (quadshade reads PNG, JPEG, OpenEXR, TIFF and HDR)");
+        throw ImageError(name + ": unsupported image format '" + ext + "' (quadshade reads PNG, JPEG, OpenEXR, TIFF and HDR)");
     }
     if (const std::string problem = image_container_problem(bytes, ext); !problem.empty()) {
-        throw ImageError(path.string() + ": cannot read image: " + problem);
+        throw ImageError(name + ": cannot read image: " + problem);
     }
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
     auto in = OIIO::ImageInput::create(ext.substr(1), false);
+    // OpenImageIO 2.4 reads from memory through this hint (its open()'s proxy argument alone
+    // still looks for a file).
+    void* proxy = &memory;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
     OIIO::ImageSpec opened;
-    if (!in || !in->set_ioproxy(&memory) || !in->open(path.string(), opened)) {
-        throw ImageError(path.string() + ": cannot read image: " + (in ? in->geterror() : OIIO::geterror()));
+    if (!in || !in->set_ioproxy(&memory) || !in->open(name, opened, config)) {
+        throw ImageError(name + ": cannot read image: " + (in ? in->geterror() : OIIO::geterror()));
     }
     const OIIO::ImageSpec& spec = in->spec();
     // The header's size, checked before a pixel is decoded: a small file can declare a huge image.
     if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.nchannels <= 0 || spec.nchannels > 64) {
-        throw ImageError(path.string() + ": unsupported image: " + size_text(spec.width, spec.height) + "x" +
+        throw ImageError(name + ": unsupported image: " + size_text(spec.width, spec.height) + "x" +
                          std::to_string(spec.depth) + ", " + std::to_string(spec.nchannels) + " channels");
     }
     const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
     if (spec.width > limits.max_side || spec.height > limits.max_side || pixels > limits.max_pixels) {
-        throw ImageError(path.string() + ": image is " + size_text(spec.width, spec.height) + " (" + std::to_string(pixels) +
+        throw ImageError(name + ": image is " + size_text(spec.width, spec.height) + " (" + std::to_string(pixels) +
                          " pixels): more than the " + std::to_string(limits.max_side) + " per side and " +
                          std::to_string(limits.max_pixels) + " pixels read here (it would take " +
                          byte_size_text(image_read_bytes(std::uint64_t(spec.width), std::uint64_t(spec.height))) + ")");
     }
+    return in;
+}
+
+}  // namespace
+
+Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::path& path, const ImageReadLimits& limits) {
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    const auto in = open_image(bytes, path.string(), lowercase_extension(path), limits, memory);
+    const OIIO::ImageSpec& spec = in->spec();
+    const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
     const int nc = std::min(spec.nchannels, 4);  // channels past RGBA are not needed
     std::vector<float> data(std::size_t(pixels) * std::size_t(nc));
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data())) {
@@ -149,21 +168,51 @@ Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::
     return img;
 }
 
-glsl::sampler2D load_texture(const std::filesystem::path& path) {
+Image8 read_texture_image(const ImageSource& source) {
+    if (!source.refused.empty()) throw ImageError(source.refused);
     ImageReadLimits limits;
     limits.max_side = limits::kTextureSide;
     limits.max_pixels = limits::kTextureTexels;
-    limits.max_file_bytes = limits::kResourceFileBytes;
-    limits.follow_symlink = false;
-    Image img = read_image(path, limits);
-    glsl::sampler2D tex;
-    tex.width = img.width, tex.height = img.height;
-    tex.rgba.resize(img.rgba.size());
-    const std::size_t row = std::size_t(img.width) * 4;
-    for (int y = 0; y < img.height; ++y) {  // flip: texel row 0 is t = 0, the image's bottom
-        std::copy_n(&img.rgba[std::size_t(img.height - 1 - y) * row], row, &tex.rgba[std::size_t(y) * row]);
+    std::vector<unsigned char> file_bytes;
+    std::span<const unsigned char> bytes = source.bytes;
+    std::string name = source.file.string(), ext = lowercase_extension(source.file);
+    if (source.kind == ImageSource::Kind::File) {
+        try {
+            file_bytes = read_scene_file(source.file, limits::kResourceFileBytes);  // resolved already: no links
+        } catch (const SceneError& e) {
+            throw ImageError(e.what());
+        }
+        bytes = file_bytes;
+    } else {
+        // Embedded: the format its MIME type gives (glTF's two), else its signature.
+        const std::string& mime = source.mime_type;
+        const bool png = mime == "image/png" || (mime.empty() && bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P');
+        const bool jpeg = mime == "image/jpeg" || (mime.empty() && bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8);
+        name = source.kind == ImageSource::Kind::DataUri ? "data: URI image" : "bufferView image";
+        ext = png ? ".png" : jpeg ? ".jpg" : "";
+        if (ext.empty()) throw ImageError(name + ": not a PNG or JPEG image (MIME type '" + mime + "')");
     }
-    return tex;
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);  // PNG alpha stays as stored, as GL uploads it
+    const auto in = open_image(bytes, name, ext, limits, memory, config);
+    const OIIO::ImageSpec& spec = in->spec();
+    const int nc = std::min(spec.nchannels, 4);  // channels past RGBA are not needed
+    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<std::uint8_t> data(pixels * std::size_t(nc));
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, data.data())) {
+        throw ImageError(name + ": cannot decode image: " + in->geterror());
+    }
+    Image8 img{spec.width, spec.height, std::vector<std::uint8_t>(pixels * 4)};
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const std::uint8_t* s = &data[p * std::size_t(nc)];
+        std::uint8_t* d = &img.rgba[p * 4];
+        d[0] = s[0];
+        d[1] = nc >= 3 ? s[1] : s[0];
+        d[2] = nc >= 3 ? s[2] : s[0];
+        d[3] = nc >= 4 ? s[3] : (nc == 2 ? s[1] : 255);
+    }
+    return img;
 }
 
 bool is_float_format(const std::filesystem::path& path) {
@@ -263,6 +312,13 @@ void write_image(const std::filesystem::path& path, const Image& image, const Me
     ImageWriter writer(path, image.width, image.height, alpha, metadata);
     writer.write_rows(image.height, image.rgba.data());
     writer.commit();
+}
+
+void write_image(const std::filesystem::path& path, const Image8& image, const Metadata& metadata, bool alpha) {
+    // Through the float rows: v / 255 converts back to v exactly in write_rows.
+    Image wide{image.width, image.height, std::vector<float>(image.rgba.size())};
+    for (std::size_t i = 0; i < image.rgba.size(); ++i) wide.rgba[i] = float(image.rgba[i]) / 255.0f;
+    write_image(path, wide, metadata, alpha);
 }
 
 Comparison compare_images(const Image& a, const Image& b, float fail_threshold, float warn_threshold) {

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "shading/glsl/texture.h"
+#include "scenes/scene.h"
 
 namespace qs {
 
@@ -47,8 +47,19 @@ Image read_image(const std::filesystem::path& path, const ImageReadLimits& limit
 Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::path& name,
                    const ImageReadLimits& limits = {});
 
-// A texture for texture2D: GL's first row is the image's bottom row. Limits: scenes/limits.h.
-glsl::sampler2D load_texture(const std::filesystem::path& path);
+// An RGBA image of 8-bit unorm channels, rows top-down: what a GL_RGBA8 texture holds.
+struct Image8 {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+// A texture's image decoded as a GL application uploads it: rows in the file's order (glTF puts
+// UV (0, 0) at the first row), alpha as stored (never premultiplied), grey and RGB expanded to
+// RGBA (alpha 255), deeper channels rounded to 8 bits. A file is read as read_image reads one
+// (a regular file, the reader its extension names) and embedded bytes by their MIME type; both
+// within the texture limits of scenes/limits.h, checked on the header. Throws ImageError naming
+// the file (or the embedded image's kind) when it cannot or may not (ImageSource::refused) be read.
+Image8 read_texture_image(const ImageSource& source);
 
 // Bytes an image of width x height takes as read_image's result at its peak (decoded channels
 // and the RGBA copy), for checking memory before reading.
@@ -80,6 +91,10 @@ private:
 };
 
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata = {},
+                 bool alpha = false);
+
+// Writes 8-bit RGB, or RGBA with `alpha`, as they are (for formats without float).
+void write_image(const std::filesystem::path& path, const Image8& image, const Metadata& metadata = {},
                  bool alpha = false);
 
 // Whether a file name's format stores float.

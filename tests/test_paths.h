@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "scenes/scene.h"
+
 namespace qs::test {
 
 inline const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
@@ -19,6 +21,18 @@ inline std::filesystem::path temp_dir(const std::string& name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+// The scene's texture files copied to `dir`/textures and named from there, for a scene to be
+// saved into `dir`: a scene may read only files in its own folder (scenes/scene_files.h).
+inline void copy_textures_into(Scene& scene, const std::filesystem::path& dir) {
+    std::filesystem::create_directories(dir / "textures");
+    for (Texture& t : scene.textures) {
+        if (t.image.kind != ImageSource::Kind::File || !std::filesystem::exists(t.image.file)) continue;
+        const auto copy = dir / "textures" / t.image.file.filename();
+        std::filesystem::copy_file(t.image.file, copy, std::filesystem::copy_options::overwrite_existing);
+        t.image.file = copy;
+    }
 }
 
 }  // namespace qs::test

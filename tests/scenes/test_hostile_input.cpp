@@ -325,6 +325,17 @@ TEST_CASE("textures: only regular files, their size checked on the header before
         CHECK(code == 1);
         CHECK_THAT(err, Catch::Contains("16384x16384"));
     }
+    SECTION("embedded images (a data: URI, a bufferView) pass the same checks") {
+        const std::string png = png_claiming(16384, 16384, dir);
+        for (const ImageSource::Kind kind : {ImageSource::Kind::DataUri, ImageSource::Kind::BufferView}) {
+            Scene scene = load_scene(file);
+            scene.textures[0].image = {{}, std::vector<std::uint8_t>(png.begin(), png.end()), "image/png", kind};
+            save_scene(scene, dir / "embedded.gltf");
+            CHECK_THAT(render_error(dir / "embedded.gltf"),
+                       Catch::Contains(kind == ImageSource::Kind::DataUri ? "data: URI image" : "bufferView image") &&
+                           Catch::Contains("16384x16384") && Catch::Contains("67108864"));
+        }
+    }
 }
 
 TEST_CASE("image files whose containers claim more than they hold are refused before decoding", "[hostile][textures]") {
@@ -345,6 +356,9 @@ TEST_CASE("image files whose containers claim more than they hold are refused be
     // A channel list whose entries do not fill its declared size: OpenEXR reads it by its layout,
     // goes on from the wrong place and allocated a 2.2 GB string (14 s) for this 745-byte file.
     CHECK_THAT(refusal("exr-channel-list-misread-claims-2.2-GB", "t.exr"),
+               Catch::Contains("OpenEXR attribute") && Catch::Contains("not the layout of its type"));
+    // A preview whose width times height times 4 overflowed that check's own arithmetic (UBSan).
+    CHECK_THAT(refusal("exr-preview-size-overflows", "t.exr"),
                Catch::Contains("OpenEXR attribute") && Catch::Contains("not the layout of its type"));
     // The checks pass files as written: quadshade's own EXR (the fuzz corpus' seed) decodes.
     CHECK(refusal("../../corpus/image/render.exr", "t.exr") == "(decoded)");
@@ -423,7 +437,7 @@ TEST_CASE("limits: sizes, counts and memory are checked before work, naming the 
     SECTION("a whole frame that cannot fit, in a format written whole") {
         auto [code, err] = run(base + "--size 32768x32768 --memory-limit 1G -o " + (dir / "o.hdr").string(), dir);
         CHECK(code == 1);
-        CHECK_THAT(err, Catch::Contains("needs 28.0 GiB for the whole frame") && Catch::Contains("1.0 GiB available"));
+        CHECK_THAT(err, Catch::Contains("needs 32.0 GiB for the whole frame") && Catch::Contains("1.0 GiB available"));
     }
     SECTION("not even one band fits") {
         auto [code, err] = run(base + "--size 32768x32768 --memory-limit 1M -o " + (dir / "o.png").string(), dir);
