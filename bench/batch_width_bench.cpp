@@ -65,9 +65,11 @@ int main(int argc, char** argv) {
     std::vector<std::uint8_t> texels;
     for (int t = 0; t < 64 * 64 * 4; ++t) texels.push_back(std::uint8_t(t % 13 * 19));
     const glsl::sampler2D texture(64, 64, texels.data(), {});
+    const glsl::sampler3D volume(16, 16, 16, texels.data(), {glsl::Wrap::Repeat, glsl::Wrap::Repeat, glsl::Wrap::Repeat});
     Uniforms u;
     u.time = 0.5f;
     u.teximage = &texture;
+    u.samplers[0] = &volume;  // the named-sampler shaders' one sampler3D
     const FragmentBatch a = batch_at(0.0f);
     const FragmentBatch b = batch_at(4.0f);
     ColorBatch out_a, out_b;

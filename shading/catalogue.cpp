@@ -10,6 +10,7 @@ const ProgramList& catalogue() {
         register_patterns(l);
         register_aa_variants(l);
         register_probes(l);
+        register_texture_shaders(l);
         return l;
     }();
     return list;

@@ -21,5 +21,6 @@ void register_table_1_1(ProgramList& list);
 void register_patterns(ProgramList& list);
 void register_probes(ProgramList& list);
 void register_aa_variants(ProgramList& list);
+void register_texture_shaders(ProgramList& list);
 
 }  // namespace qs
