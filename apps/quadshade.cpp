@@ -16,6 +16,7 @@
 
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
+#include "render/plugins.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "render/scene_render.h"
@@ -166,6 +167,8 @@ int cmd_render(int argc, char** argv) {
             if (fps <= 0.0f) throw UsageError("--fps must be positive");
         } else if (a == "--shader") {
             req.shader_override = need_value(i, argc, argv);
+        } else if (a == "--plugin") {
+            load_plugin(need_value(i, argc, argv));
         } else if (a == "--backend") {
             const std::string v = need_value(i, argc, argv);
             if (v == "raster") req.backend = Backend::Rasterizer;
@@ -306,6 +309,8 @@ int cmd_shaders(int argc, char** argv) {
             return 0;
         } else if (a == "--export-glsl") {
             export_dir = need_value(i, argc, argv);
+        } else if (a == "--plugin") {
+            load_plugin(need_value(i, argc, argv));
         } else {
             throw UsageError("shaders: unexpected argument " + a);
         }
