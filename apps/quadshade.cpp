@@ -18,6 +18,7 @@
 
 #include "apps/frame_pattern.h"
 #include "render/memory_plan.h"
+#include "render/plugins.h"
 #include "render/scene_render.h"
 #include "render/undefined_mask.h"
 #include "scenes/gltf.h"
@@ -90,6 +91,13 @@ CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::
         ->option_text(text);
 }
 
+// --plugin, repeatable: shared libraries whose shaders join the catalogue (render/plugins.h),
+// loaded in order once the command line has parsed.
+void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins) {
+    cmd.add_option("--plugin", plugins, "load a shader plugin (quadshade_add_shader_plugin) first; repeatable")
+        ->option_text("LIB")->allow_extra_args(false);
+}
+
 struct RenderArgs {
     std::string scene, output, mask_output;
     FrameRequest request;
@@ -98,6 +106,7 @@ struct RenderArgs {
     bool alpha = false;
     SceneLoadOptions load;
     std::string memory_limit;  // empty: what the system has available
+    std::vector<std::string> plugins;
     bool animated() const { return frames.first >= 0; }
 };
 
@@ -118,6 +127,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
+    add_plugin_option(cmd, a.plugins);
     add_choice<Backend>(cmd, "--backend", r.backend, {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}}, "B",
                         "raster (default) | raycast (Embree, 2x2 ray quads)");
     add_choice<Derivatives>(cmd, "--derivatives", r.raster.derivatives,
@@ -369,7 +379,7 @@ int cmd_shaders(const std::string& export_dir) {
     for (const Program* p : catalogue()) {
         const ShaderInfo& s = p->info();
         std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
-                    s.needs.derivatives ? "yes" : "-", s.needs.texture ? "yes" : "-", s.needs.time ? "yes" : "-",
+                    s.needs.derivatives ? "yes" : "-", samples_textures(s.needs) ? "yes" : "-", s.needs.time ? "yes" : "-",
                     std::string(s.description).c_str());
     }
     return 0;
@@ -416,6 +426,8 @@ int main(int argc, char** argv) {
     add_render_options(*render_cmd, render);
     CLI::App* shaders_cmd = app.add_subcommand("shaders", "list the shader catalogue, with what each shader needs");
     std::string export_dir;
+    std::vector<std::string> shader_plugins;
+    add_plugin_option(*shaders_cmd, shader_plugins);
     shaders_cmd->add_option("--export-glsl", export_dir,
                             "write each shader's complete GLSL (DIR/NAME.vert, DIR/NAME.frag) as an OpenGL program "
                             "compiles it (quadshade-reference --glsl DIR renders scenes from it)")
@@ -433,6 +445,7 @@ int main(int argc, char** argv) {
         return kExitUsage;
     }
     try {
+        for (const std::string& plugin : render_cmd->parsed() ? render.plugins : shader_plugins) load_plugin(plugin);
         if (render_cmd->parsed()) return cmd_render(render);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);

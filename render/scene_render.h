@@ -53,14 +53,15 @@ public:
     std::uint64_t frame_bytes(int rows) const;
 
 private:
-    // The texture an object's program samples, loaded on first use.
-    const glsl::sampler2D& texture_for(const Object& object, const Program& program);
+    // The texture an object binds to `uniform` (teximage or one of the program's Needs::samplers),
+    // of the kind the program declares, loaded on first use.
+    const glsl::Texture& texture_for(const Object& object, const Program& program, std::string_view uniform, int dims);
 
     Scene& scene_;
     FrameRequest request_;
     int width_, height_;
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
-    std::vector<std::unique_ptr<glsl::sampler2D>> textures_;  // per scene texture, null until sampled
+    std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> draws_;
     struct Caster;
     std::unique_ptr<Caster> caster_;

@@ -169,7 +169,6 @@ Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::
 }
 
 Image8 read_texture_image(const ImageSource& source) {
-    if (!source.refused.empty()) throw ImageError(source.refused);
     ImageReadLimits limits;
     limits.max_side = limits::kTextureSide;
     limits.max_pixels = limits::kTextureTexels;

@@ -58,7 +58,7 @@ struct Image8 {
 // RGBA (alpha 255), deeper channels rounded to 8 bits. A file is read as read_image reads one
 // (a regular file, the reader its extension names) and embedded bytes by their MIME type; both
 // within the texture limits of scenes/limits.h, checked on the header. Throws ImageError naming
-// the file (or the embedded image's kind) when it cannot or may not (ImageSource::refused) be read.
+// the file (or the embedded image's kind) when it cannot be read.
 Image8 read_texture_image(const ImageSource& source);
 
 // Bytes an image of width x height takes as read_image's result at its peak (decoded channels

@@ -26,14 +26,15 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 
 }  // namespace
 
-std::string glsl_source(const ShaderInfo& info, bool vertex_stage) {
-    const std::filesystem::path shading_dir = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "shading";
+std::string glsl_source(const Program& program, bool vertex_stage) {
+    const ShaderInfo& info = program.info();
+    const std::filesystem::path folder = glsl_folder(program);
     std::string src = "#version 120\n";
     src += info.glsl_defines;
     for (std::string_view file : vertex_stage ? info.glsl_vertex : info.glsl_fragment) {
         if (file.empty()) continue;
         src += "#line 1\n";
-        src += read_file(shading_dir / file);
+        src += read_file(folder / file);
     }
     return src;
 }
@@ -44,10 +45,9 @@ int export_glsl(const std::filesystem::path& dir) {
     if (ec) throw std::runtime_error(dir.string() + ": cannot create folder: " + ec.message());
     int n = 0;
     for (const Program* p : catalogue()) {
-        const ShaderInfo& info = p->info();
-        const std::string name(info.name);
-        write_file(dir / (name + ".vert"), glsl_source(info, true));
-        write_file(dir / (name + ".frag"), glsl_source(info, false));
+        const std::string name(p->info().name);
+        write_file(dir / (name + ".vert"), glsl_source(*p, true));
+        write_file(dir / (name + ".frag"), glsl_source(*p, false));
         ++n;
     }
     return n;

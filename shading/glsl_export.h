@@ -10,12 +10,12 @@
 
 namespace qs {
 
-// One stage's source: "#version 120", the shader's defines, then its files (under shading/ in
-// the source tree) in order, each after a "#line 1". Throws std::runtime_error naming a file
-// that cannot be read.
-std::string glsl_source(const ShaderInfo& info, bool vertex_stage);
+// One stage's source: "#version 120", the shader's defines, then its files (in its GLSL folder,
+// catalogue.h) in order, each after a "#line 1". Throws std::runtime_error naming a file that
+// cannot be read.
+std::string glsl_source(const Program& program, bool vertex_stage);
 
-// Writes DIR/NAME.vert and DIR/NAME.frag for every catalogue shader (DIR is created); returns
+// Writes DIR/NAME.vert and DIR/NAME.frag for every catalogue shader, plugins' included (DIR is created); returns
 // how many shaders it wrote. Throws std::runtime_error naming a file that cannot be written.
 int export_glsl(const std::filesystem::path& dir);
 

@@ -285,10 +285,14 @@ TEST_CASE("a scene reads only files in its own folder unless allowed", "[hostile
         CHECK(code == 1);
         CHECK_FALSE(fs::exists(elsewhere / "out.png"));
     }
-    SECTION("extras.teximage outside the folder is refused when a shader samples it") {
+    SECTION("extras.teximage and extras.textures outside the folder are refused as the scene loads") {
         s["materials"][0]["extras"] = {{"shader", "single_texture"}, {"teximage", "../../../../../../../../etc/passwd"}};
         const fs::path file = save(dir, s);
-        CHECK_THAT(render_error(file), Catch::Contains("extras.teximage") && Catch::Contains("leads outside"));
+        CHECK_THAT(load_error(file), Catch::Contains("extras.teximage") && Catch::Contains("leads outside"));
+        json named = s;
+        named["materials"][0]["extras"] = {{"shader", "single_texture"}, {"textures", {{"u", {{"image", "/etc/passwd"}}}}}};
+        CHECK_THAT(load_error(save(dir, named, "named.gltf")), Catch::Contains("extras.textures.u.image") &&
+                                                                   Catch::Contains("absolute path"));
         auto [code, err] = run(kQuadshade + " render '" + file.string() + "' --size 8x8 -o " + (root / "o.png").string() +
                                    " --allow-outside-paths", root);
         CHECK(code == 1);  // allowed, read, and not an image
