@@ -261,6 +261,7 @@ void write_frame(SceneRenderer& renderer, const std::vector<RowBand>& bands, dou
         renderer.render_into(fb, time, &band_stats, band);
         totals.render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         totals.stats.triangles_setup = band_stats.triangles_setup, totals.stats.lanes_shaded += band_stats.lanes_shaded;
+        totals.stats.depth_buffer = band_stats.depth_buffer;  // decided for the whole frame, the same in every band
         if (!image) {
             Metadata metadata = {{"quadshade:scene", a.scene},
                                  {"quadshade:time", std::to_string(time)},

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <thread>
 
 #include "render/memory_plan.h"
@@ -112,6 +113,22 @@ TEST_CASE("images are bit-identical for 1, 2 and 7 threads and across runs, on b
         }
         CHECK(read_image(dir / "a.exr").rgba == read_image(dir / "b.exr").rgba);
     }
+}
+
+TEST_CASE("the summary line says whether the frame was depth tested, in one band or several", "[render][bands]") {
+    const auto dir = temp_dir("summary-depth");
+    auto summary = [&](const std::string& scene, const std::string& extra) {
+        const std::string cmd = (kBin / "quadshade").string() + " render " + scene + extra + " -o " +
+                                (dir / "x.png").string() + " 2> " + (dir / "err.txt").string();
+        REQUIRE(std::system(cmd.c_str()) == 0);
+        std::ifstream in(dir / "err.txt");
+        return std::string((std::istreambuf_iterator<char>(in)), {});
+    };
+    // Figure 1.1's spheres hide their own back halves: depth tested, whatever the bands.
+    CHECK(summary(kFigure.string(), " --size 316x100").find(", depth tested") != std::string::npos);
+    const std::string banded = summary(kFigure.string(), " --size 1264x800 --memory-limit 12M");
+    CHECK(banded.find("bands of rows, depth tested") != std::string::npos);
+    CHECK(summary(kPlane.string(), " --size 316x100").find(", no depth buffer") != std::string::npos);
 }
 
 TEST_CASE("memory plans: one band when it fits, the fewest bands that fit, or a message with the size", "[render][memory]") {
