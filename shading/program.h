@@ -83,11 +83,21 @@ struct ShaderInfo {
     // only: quad derivatives on two registers shuffle far slower than they gain. Set from
     // quadshade-bench-batch-width, which times both for every shader.
     bool wide_batches = false;
+    // The GLSL version its sources are compiled as (the #version line the reference writes):
+    // 120, or 130 and later for integers, bit operations and the like; from 150 on the
+    // compatibility profile, which keeps gl_Vertex, gl_FragColor and the matrix uniforms.
+    // OSMesa's llvmpipe compiles up to 450, softpipe up to 330.
+    int glsl_version = 120;
 };
 
 // `info` with wide_batches set.
 constexpr ShaderInfo with_wide_batches(ShaderInfo info) {
     info.wide_batches = true;
+    return info;
+}
+// `info` compiled as GLSL `version`.
+constexpr ShaderInfo with_glsl_version(ShaderInfo info, int version) {
+    info.glsl_version = version;
     return info;
 }
 
@@ -122,6 +132,9 @@ struct FragmentBatch {
 
 struct ColorBatch {
     alignas(64) float rgba[4][kBatchLanes];
+    // Bit i: lane i executed GLSL's discard. Its fragment writes neither colour nor depth; it
+    // was shaded to the end all the same, as a helper for its quad's derivatives. Always written.
+    std::uint32_t discarded = 0;
     // Per lane, the Undefined bits (number/checked.h) of its colour; written only when
     // ShadeMode::check_undefined.
     std::uint8_t undefined[kBatchLanes];

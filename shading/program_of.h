@@ -46,6 +46,17 @@ struct FragmentIn {
     glsl::vec3<F> vec3_at(int i) const { return {varying[i], varying[i + 1], varying[i + 2]}; }
 };
 
+// What a fragment stage that may discard returns (one that never does returns its colour).
+template <class F>
+struct FragmentOut {
+    glsl::vec4<F> gl_FragColor;
+    Bool<F> discarded = Bool<F>(false);
+
+    // if (c) discard;  The lanes of c write nothing. As in GL they keep running, as helpers for
+    // their neighbours' derivatives (in a loop, discard through the loop: Loop::discard_if).
+    void discard_if(const Bool<F>& c) { discarded = discarded || c; }
+};
+
 namespace program_detail {
 
 template <class F>
@@ -82,6 +93,22 @@ void store_pair(const F& v, float* a, float* b) {
     v.store(both);
     std::memcpy(a, both, kBatchLanes * sizeof(float));
     std::memcpy(b, both + kBatchLanes, kBatchLanes * sizeof(float));
+}
+
+// A fragment stage's colour and discarded lanes (bit i: lane i), whichever it returns.
+template <class F>
+const glsl::vec4<F>& color_of(const glsl::vec4<F>& c) { return c; }
+template <class F>
+const glsl::vec4<F>& color_of(const FragmentOut<F>& out) { return out.gl_FragColor; }
+template <class F>
+std::uint32_t discarded_of(const glsl::vec4<F>&) { return 0; }
+template <class F>
+std::uint32_t discarded_of(const FragmentOut<F>& out) {
+    if constexpr (is_checked_mask<Bool<F>>::value) {
+        return lane_bits(out.discarded.m);
+    } else {
+        return lane_bits(out.discarded);
+    }
 }
 
 template <class F>
@@ -171,8 +198,10 @@ private:
 
     template <class F>
     QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
-        const glsl::vec4<F> c = fragment<F>(in, u);
+        const auto result = fragment<F>(in, u);
+        const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
+        out.discarded = program_detail::discarded_of(result);
     }
 
     template <class F>
@@ -182,22 +211,28 @@ private:
         FragmentIn<F> f;
         for (int k = 0; k < 4; ++k) f.gl_FragCoord[k] = load_pair<F>(a.frag_coord[k], b.frag_coord[k]);
         for (int v = 0; v < Shader::info.needs.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
-        const glsl::vec4<F> c = Shader::template fragment<F>(f, u);
+        const auto result = Shader::template fragment<F>(f, u);
+        const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) program_detail::store_pair(c[k], out_a.rgba[k], out_b.rgba[k]);
+        const std::uint64_t discarded = program_detail::discarded_of(result);
+        out_a.discarded = std::uint32_t(discarded & 0xFFFFu);
+        out_b.discarded = std::uint32_t(discarded >> kBatchLanes);
     }
 
     // Not flattened: a debugging mode, and flattening the checks would multiply compile time.
     template <class F>
     static void run_checked(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
-        const glsl::vec4<F> c = fragment<F>(in, u);
+        const auto result = fragment<F>(in, u);
+        const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) c[k].store(out.rgba[k]);
+        out.discarded = program_detail::discarded_of(result);
         const LaneCases cases = c[0].cases | c[1].cases | c[2].cases | c[3].cases;
         for (int i = 0; i < kBatchLanes; ++i) out.undefined[i] = cases.at(i);
     }
 
-    // The shader's inputs in number type F, and its output colour.
+    // The shader's inputs in number type F, and its output: a colour or a FragmentOut.
     template <class F>
-    static glsl::vec4<F> fragment(const FragmentBatch& in, const Uniforms& u) {
+    static auto fragment(const FragmentBatch& in, const Uniforms& u) {
         using program_detail::load;
         FragmentIn<F> f;
         if constexpr (is_dual2<F>::value) {
