@@ -82,7 +82,8 @@ GLuint upload_texture(const glsl::sampler2D& t) {
 }  // namespace
 
 std::string glsl_source(const ShaderInfo& info, bool vertex_stage, const std::filesystem::path& shading_dir) {
-    std::string src = "#version 120\n";
+    // ShaderInfo::glsl_version; from 1.50 on the compatibility profile (gl_Vertex, gl_FragColor).
+    std::string src = "#version " + std::to_string(info.glsl_version) + (info.glsl_version >= 150 ? " compatibility\n" : "\n");
     src += info.glsl_defines;
     for (std::string_view file : vertex_stage ? info.glsl_vertex : info.glsl_fragment) {
         if (file.empty()) continue;

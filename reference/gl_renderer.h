@@ -20,7 +20,8 @@ struct GlFrameRequest {
     std::string shader_override;
 };
 
-// The GLSL text of one stage: "#version 120", the shader's defines, then its files in order.
+// The GLSL text of one stage: the #version line of ShaderInfo::glsl_version, the shader's
+// defines, then its files in order.
 std::string glsl_source(const ShaderInfo& info, bool vertex_stage, const std::filesystem::path& shading_dir);
 
 // Renders a scene's frames into the current context: GLSL compiled and textures uploaded once,

@@ -9,7 +9,9 @@ const ProgramList& catalogue() {
         register_table_1_1(l);
         register_patterns(l);
         register_aa_variants(l);
+        register_seed_patterns(l);
         register_probes(l);
+        register_vocabulary_probes(l);
         return l;
     }();
     return list;

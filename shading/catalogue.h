@@ -10,7 +10,8 @@ namespace qs {
 
 using ProgramList = std::vector<const Program*>;
 
-// All programs, in a stable order: Figure 1.1, Table 1.1, the other chapter patterns, probes.
+// All programs, in a stable order: Figure 1.1, Table 1.1, the other chapter patterns, the seeds'
+// shaders, probes.
 const ProgramList& catalogue();
 // nullptr when no shader has that name.
 const Program* find_program(std::string_view name);
@@ -21,5 +22,7 @@ void register_table_1_1(ProgramList& list);
 void register_patterns(ProgramList& list);
 void register_probes(ProgramList& list);
 void register_aa_variants(ProgramList& list);
+void register_seed_patterns(ProgramList& list);
+void register_vocabulary_probes(ProgramList& list);
 
 }  // namespace qs

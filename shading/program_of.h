@@ -53,7 +53,8 @@ struct FragmentOut {
     Bool<F> discarded = Bool<F>(false);
 
     // if (c) discard;  The lanes of c write nothing. As in GL they keep running, as helpers for
-    // their neighbours' derivatives (in a loop, discard through the loop: Loop::discard_if).
+    // their neighbours' derivatives (in a loop, discard through the loop: Loop::discard_if), and
+    // the values they compute are those llvmpipe's derivatives see (discard_probe).
     void discard_if(const Bool<F>& c) { discarded = discarded || c; }
 };
 

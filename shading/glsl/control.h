@@ -7,8 +7,9 @@
 //
 // Loops: a Loop holds the variables its body assigns and the lanes still running. The body runs
 // for every lane while any lane is running; each lane's variables keep the values they had when
-// it left (break, return, discard, or its condition failing), and a lane that continues resumes
-// at the next iteration with the values it had at the continue.
+// it left (break, return, or its condition failing), and a lane that continues resumes at the
+// next iteration with the values it had at the continue. A lane that discards runs on (GLSL's
+// discard makes it a helper, not a lane that stops).
 //
 //     float x = cx, y = cy, r = 0.0;         F x = cx, y = cy, r = 0.0f;
 //                                            Loop loop(x, y, r);  // what the body assigns
@@ -32,7 +33,7 @@
 // lanes that left too and are thrown away for them, as GLSL wants. Inside a loop, conditions of
 // side effects go through the loop (return_if, discard_if), so that lanes that have left do not
 // act. A loop inside a varying `if` starts with `Loop loop(inside(c), ...)`, a nested loop with
-// `Loop inner(outer, ...)`: return and discard leave the enclosing loops as well.
+// `Loop inner(outer, ...)`: return leaves the enclosing loops as well.
 //
 // A for loop with continue_if and an increment of a registered variable writes the increment
 // after loop.next() (`for (...; loop(c); loop.next(), t += 0.1f)`), so that lanes that continued
@@ -46,10 +47,13 @@
 
 namespace qs::glsl {
 
-// The mask type of a variable's lanes.
+// The mask type of a variable's lanes; none for anything else.
 template <class V>
-struct mask_of {
-    using type = Bool<V>;  // a Number or an IntegerNumber
+struct mask_of {};
+template <class V>
+    requires(Number<V> || IntegerNumber<V>)
+struct mask_of<V> {
+    using type = Bool<V>;
 };
 template <class V>
     requires requires { typename V::value_type; V::N; }
@@ -94,31 +98,28 @@ private:
     Mask returned_ = Mask(false);
 };
 
-// The lanes of a loop: running, gone (break, return, discard, condition failed) and paused
-// (continue). Nested loops reach their parents through this.
+struct LoopTag {};
+
+// The lanes of a loop: running, gone (break, return, condition failed) and paused (continue).
+// Nested loops reach their parents through this.
 template <class M>
-class LoopLanes {
+class LoopLanes : public LoopTag {
 public:
     // Lanes running the current iteration: what side effects in the body are masked with.
     const M& active() const { return active_; }
 
 protected:
     LoopLanes(const M& entry, LoopLanes* parent) : active_(entry), left_(!entry), parent_(parent) {}
-    ~LoopLanes() = default;
     LoopLanes(const LoopLanes&) = delete;
     LoopLanes& operator=(const LoopLanes&) = delete;
 
-    // Keeps the loop's variables of `lanes` at their present values.
-    virtual void freeze(const M& lanes) = 0;
-    // `lanes` leave this loop and every enclosing one, their values kept (return, discard).
+    // `lanes` leave this loop and every enclosing one (return). Their variables are left as the
+    // loops find them: the function's value for them is in its Return.
     void leave_all(const M& lanes) {
         for (LoopLanes* l = this; l; l = l->parent_) {
-            const M gone = lanes && !l->left_;
-            if (!any(gone)) continue;
-            l->freeze(gone);
-            l->left_ = l->left_ || gone;
-            l->active_ = l->active_ && !gone;
-            l->paused_ = l->paused_ && !gone;
+            l->left_ = l->left_ || lanes;
+            l->active_ = l->active_ && !lanes;
+            l->paused_ = l->paused_ && !lanes;
         }
     }
 
@@ -178,15 +179,12 @@ public:
         ret.return_if(going, v);
         this->leave_all(going);
     }
-    // if (c) discard;  (`out` is the fragment's output, shading/program_of.h; the lanes leave
-    // the enclosing loops with their values, as llvmpipe stops writing a discarded lane's
-    // variables)
+    // if (c) discard;  (`out` is the fragment's output, shading/program_of.h.) The lanes that
+    // discard run on to the loop's end and beyond, as helpers for their quad's derivatives:
+    // llvmpipe's values for them, measured by discard_probe, are those of a lane that went on.
     template <class Out>
     void discard_if(Out& out, const M& c) {
-        const M going = this->active_ && c;
-        if (!any(going)) return;
-        out.discard_if(going);
-        this->leave_all(going);
+        out.discard_if(this->active_ && c);
     }
 
     // The lanes that continued rejoin, with the values they had at the continue.
@@ -215,7 +213,6 @@ private:
         this->left_ = this->left_ || lanes;
         this->active_ = this->active_ && !lanes;
     }
-    void freeze(const M& lanes) override { save(lanes); }
     void save(const M& lanes) {
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             ((std::get<I>(saved_) = select(lanes, std::get<I>(vars_), std::get<I>(saved_))), ...);
@@ -233,7 +230,6 @@ private:
 };
 
 template <class V, class... Vs>
-    requires(!std::is_base_of_v<LoopLanes<mask_of_t<V>>, V>)
 Loop(V&, Vs&...) -> Loop<mask_of_t<V>, V, Vs...>;
 template <class M, class... Vs>
 Loop(Inside<M>, Vs&...) -> Loop<M, Vs...>;

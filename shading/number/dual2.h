@@ -107,6 +107,11 @@ struct Dual2 {
     friend Dual2 acos(const Dual2& a) { return chain(acos(a.val), T(-1.0f) / sqrt(T(1.0f) - a.val * a.val), a); }
     // d atan(u) = du / (1 + u^2)
     friend Dual2 atan(const Dual2& a) { return chain(atan(a.val), T(1.0f) / (T(1.0f) + a.val * a.val), a); }
+    // d atan(y, x) = (x dy - y dx) / (x^2 + y^2)
+    friend Dual2 atan(const Dual2& y, const Dual2& x) {
+        const T q = x.val * x.val + y.val * y.val;
+        return {atan(y.val, x.val), (x.val * y.dx - y.val * x.dx) / q, (x.val * y.dy - y.val * x.dy) / q};
+    }
     // d exp(u) = exp(u) du, d exp2(u) = ln2 exp2(u) du
     friend Dual2 exp(const Dual2& a) {
         T e = exp(a.val);
