@@ -1,5 +1,6 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture. The outputs are committed; a test regenerates them and compares.
+// plane and its texture, and the conformance scenes (geometry_scenes.h). The outputs are
+// committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
 
@@ -10,6 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "apps/geometry_scenes.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/scene.h"
@@ -128,7 +130,7 @@ qs::Image test_image() {
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, table-1.1-plane.gltf (+ .bin) and textures/.\n");
+                             "Writes figure-1.1.gltf, table-1.1-plane.gltf (+ .bin), textures/ and conformance/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -137,6 +139,7 @@ int main(int argc, char** argv) {
         qs::write_image(dir / "textures" / "halftone-source.png", test_image());
         qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
+        qs::write_geometry_scenes(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
         return 1;

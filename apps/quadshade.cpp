@@ -277,7 +277,11 @@ int cmd_render(int argc, char** argv) {
                  nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / nframes,
                  double(w) * h * nframes / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
                  (unsigned long long)stats.lanes_shaded);
-    if (req.backend == Backend::RayCaster) std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
+    if (req.backend == Backend::RayCaster) {
+        std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
+    } else {
+        std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (no two triangles overlap)", stderr);
+    }
     std::fputc('\n', stderr);
     if (!mask_output.empty()) {
         std::fprintf(stderr,
@@ -306,13 +310,13 @@ int cmd_shaders(int argc, char** argv) {
         }
         return "?";
     };
-    std::printf("%-20s %-11s %-11s %-7s %-4s %-5s %s\n", "name", "coordinates", "derivatives", "texture", "time", "depth",
+    std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", "name", "coordinates", "derivatives", "texture", "time",
                 "description");
     for (const Program* p : catalogue()) {
         const ShaderInfo& s = p->info();
-        std::printf("%-20s %-11s %-11s %-7s %-4s %-5s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
+        std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
                     s.needs.derivatives ? "yes" : "-", s.needs.texture ? "yes" : "-", s.needs.time ? "yes" : "-",
-                    s.needs.depth ? "yes" : "-", std::string(s.description).c_str());
+                    std::string(s.description).c_str());
     }
     return 0;
 }

@@ -4,66 +4,97 @@
 
 namespace qs {
 
+Viewport::Viewport(int width, int height)
+    : scale{float(width) * 0.5f, -float(height) * 0.5f, 0.5f}, translate{float(width) * 0.5f, float(height) * 0.5f, 0.5f} {}
+
+glm::vec4 Viewport::window(const glm::vec4& clip, bool fused) const {
+    const float oow = 1.0f / clip.w;
+    glm::vec4 r;
+    for (int k = 0; k < 3; ++k) {
+        r[k] = fused ? std::fma(clip[k] * oow, scale[k], translate[k]) : clip[k] * oow * scale[k] + translate[k];
+    }
+    r.w = oow;
+    return r;
+}
+
 namespace {
 
-// A clip plane as a dot product with (x, y, z, w): inside when >= 0.
-struct Plane {
-    glm::vec4 n;
-    float distance(const glm::vec4& p) const { return n.x * p.x + n.y * p.y + n.z * p.z + n.w * p.w; }
+// The view volume's planes in Mesa's order, as dot products with (x, y, z, w): inside when >= 0.
+constexpr int kPlanes = 6;
+constexpr float kPlane[kPlanes][4] = {
+    {-1, 0, 0, 1},  // x <= w
+    {1, 0, 0, 1},   // x >= -w
+    {0, -1, 0, 1},  // y <= w
+    {0, 1, 0, 1},   // y >= -w
+    {0, 0, 1, 1},   // near: z >= -w
+    {0, 0, -1, 1},  // far: z <= w
 };
 
-ClipVertex lerp(const ClipVertex& a, const ClipVertex& b, float t, int varying_count) {
+float distance(int plane, const glm::vec4& c) {
+    const float* p = kPlane[plane];
+    return ((c.x * p[0] + c.y * p[1]) + c.z * p[2]) + c.w * p[3];
+}
+
+// Bit p set: the vertex is outside plane p (draw_llvm.c's clip mask).
+unsigned outside_mask(const glm::vec4& c) {
+    return unsigned(c.x > c.w) | unsigned(0.0f > c.x + c.w) << 1 | unsigned(c.y > c.w) << 2 |
+           unsigned(0.0f > c.y + c.w) << 3 | unsigned(0.0f > c.z + c.w) << 4 | unsigned(c.z > c.w) << 5;
+}
+
+// The vertex at `from + t (to - from)`, with window coordinates computed from it (unfused).
+ClipVertex interpolate(float t, const ClipVertex& from, const ClipVertex& to, int varying_count, const Viewport& viewport) {
     ClipVertex r;
-    r.clip = a.clip + (b.clip - a.clip) * t;
-    for (int i = 0; i < varying_count; ++i) r.varyings[i] = a.varyings[i] + (b.varyings[i] - a.varyings[i]) * t;
+    for (int k = 0; k < 4; ++k) r.clip[k] = from.clip[k] + t * (to.clip[k] - from.clip[k]);
+    r.window = viewport.window(r.clip, false);
+    for (int i = 0; i < varying_count; ++i) r.varyings[i] = from.varyings[i] + t * (to.varyings[i] - from.varyings[i]);
     return r;
 }
 
 }  // namespace
 
 bool clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, int varying_count,
-                   float guard_x, float guard_y, std::vector<std::array<ClipVertex, 3>>& out) {
+                   const Viewport& viewport, std::vector<std::array<ClipVertex, 3>>& out) {
     for (const ClipVertex* v : {&a, &b, &c}) {
         const glm::vec4& p = v->clip;
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(p.w)) return false;
     }
-    const Plane planes[6] = {
-        {{0, 0, 1, 1}},         // near:  z >= -w
-        {{0, 0, -1, 1}},        // far:   z <= w
-        {{1, 0, 0, guard_x}},   // x >= -gx w
-        {{-1, 0, 0, guard_x}},  // x <= gx w
-        {{0, 1, 0, guard_y}},   // y >= -gy w
-        {{0, -1, 0, guard_y}},  // y <= gy w
-    };
-    unsigned outside_any = 0;
-    for (int p = 0; p < 6; ++p) {
-        for (const ClipVertex* v : {&a, &b, &c}) {
-            if (planes[p].distance(v->clip) < 0.0f) outside_any |= 1u << p;
-        }
-    }
-    if (outside_any == 0) {  // the common case: the triangle reaches setup bit-for-bit unchanged
+    const unsigned ma = outside_mask(a.clip), mb = outside_mask(b.clip), mc = outside_mask(c.clip);
+    if ((ma | mb | mc) == 0) {  // the common case: the triangle reaches setup bit-for-bit unchanged
         out.push_back({a, b, c});
         return true;
     }
+    if (ma & mb & mc) return false;  // wholly outside one plane
     std::vector<ClipVertex> poly = {a, b, c}, next;
-    for (int p = 0; p < 6 && !poly.empty(); ++p) {
-        if (!(outside_any & (1u << p))) continue;
+    for (int p = 0; p < kPlanes && poly.size() >= 3; ++p) {
+        if (!((ma | mb | mc) >> p & 1)) continue;
         next.clear();
-        for (std::size_t i = 0; i < poly.size(); ++i) {
-            const ClipVertex& s = poly[i];
-            const ClipVertex& e = poly[(i + 1) % poly.size()];
-            const float ds = planes[p].distance(s.clip), de = planes[p].distance(e.clip);
-            if (ds >= 0.0f) next.push_back(s);
-            if ((ds >= 0.0f) != (de >= 0.0f)) {
-                // Interpolate from the inside vertex, so that shared edges clip identically.
-                next.push_back(ds >= 0.0f ? lerp(s, e, ds / (ds - de), varying_count)
-                                          : lerp(e, s, de / (de - ds), varying_count));
+        const std::size_t n = poly.size();
+        float d_prev = distance(p, poly[0].clip);
+        for (std::size_t i = 1; i <= n; ++i) {
+            const ClipVertex& prev = poly[i - 1];
+            const ClipVertex& cur = poly[i % n];
+            const float d = distance(p, cur.clip);
+            if (!std::isfinite(d) || !std::isfinite(d_prev)) return false;
+            bool crossing;
+            if (d_prev >= 0.0f) {
+                next.push_back(prev);
+                crossing = d < 0.0f;
+            } else {
+                crossing = !(d < 0.0f);
             }
+            if (crossing) {
+                // From the endpoint nearer the plane (on a tie the inside one), Mesa's expressions.
+                const float denom = d - d_prev;
+                const bool from_cur = d < 0.0f ? -d < d_prev : !(-d_prev < d);
+                next.push_back(from_cur ? interpolate(d / denom, cur, prev, varying_count, viewport)
+                                        : interpolate(-d_prev / denom, prev, cur, varying_count, viewport));
+            }
+            d_prev = d;
         }
         poly.swap(next);
     }
     if (poly.size() < 3) return false;
-    for (std::size_t i = 1; i + 1 < poly.size(); ++i) out.push_back({poly[0], poly[i], poly[i + 1]});
+    for (std::size_t i = 2; i < poly.size(); ++i) out.push_back({poly[i - 1], poly[i], poly[0]});
     return true;
 }
 

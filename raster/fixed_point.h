@@ -10,10 +10,6 @@ namespace qs::fixed {
 inline constexpr int kSubpixelBits = 8;
 inline constexpr std::int64_t kOne = std::int64_t(1) << kSubpixelBits;
 
-// Window coordinates beyond which triangles are clipped (the guard band): 2^18 pixels keeps
-// every edge-function product below 2^(2*(18+8+1)) = 2^54, far inside int64.
-inline constexpr float kGuardBand = float(1 << 18);
-
 inline std::int64_t snap(float window_coord) {
     return std::int64_t(std::lrint((window_coord - 0.5f) * float(kOne)));
 }

@@ -11,7 +11,9 @@ namespace qs {
 struct Framebuffer {
     int width = 0, height = 0;
     std::vector<float> rgba;   // 4 per pixel, top-down
-    std::vector<float> depth;  // empty when no draw needed depth; else 1 per pixel, cleared to 1
+    // Empty when the frame needed no depth buffer; else 1 per pixel, cleared to 1: window depth
+    // as a 24-bit depth buffer holds it (depth_buffer.h).
+    std::vector<float> depth;
     // Empty unless the render checked for undefined GLSL cases; else 1 per pixel, top-down: the
     // Undefined bits (number/checked.h) of the fragment that wrote the pixel, 0 where cleared.
     std::vector<std::uint8_t> undefined;

@@ -20,7 +20,7 @@
 
 #include "raster/block_layout.h"
 #include "raster/clipper.h"
-#include "raster/fixed_point.h"
+#include "raster/depth_buffer.h"
 #include "raster/float_environment.h"
 #include "raster/lanes16.h"
 #include "raster/triangle_setup.h"
@@ -34,7 +34,7 @@ struct PreparedDraw {
     const DrawCall* call;
     ShadeMode mode;
     bool quads;       // shade 2x2 quads with helper lanes
-    bool depth_test;  // LESS test and depth write
+    bool depth_test;  // LESS test and depth write (the same for every draw of a frame)
     bool frag_coord;  // interpolate gl_FragCoord
     int varyings;
     unsigned flat;    // flat varyings
@@ -55,7 +55,8 @@ struct Batch {
 // A whole block's colour is transposed in registers from lane order into its four pixel rows.
 // Blocks are cleared lazily: a block's first partial write clears it first, blocks never
 // written are cleared by finish(), and a block covered at once is never cleared at all.
-// Depth, when a draw needs it, stays tile-local in lane order and is stored once at the end.
+// Depth, when the frame needs it, stays tile-local in lane order, as the 24-bit values the
+// reference's depth buffer holds (depth_buffer.h), and is stored once at the end.
 class TileRenderer {
 public:
     TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear)
@@ -66,7 +67,7 @@ public:
     void start(int x0, int y0) {
         x0_ = x0, y0_ = y0;
         touched_.reset();
-        if (!fb_.depth.empty()) std::fill_n(depth_, kTilePixels, 1.0f);
+        if (!fb_.depth.empty()) std::fill_n(depth_, kTilePixels, kDepthCleared);
     }
 
     // Clears the blocks no triangle wrote and stores the depth.
@@ -83,7 +84,7 @@ public:
             for (int r = 0; r < kBlock; ++r) {
                 if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
                 float* depth = &fb_.depth[std::size_t(y + r) * std::size_t(fb_.width) + std::size_t(x)];
-                for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[block * kBatchLanes + kLaneAt[r][dx]];
+                for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[block * kBatchLanes + kLaneAt[r][dx]] / kDepthCleared;
             }
         }
     }
@@ -285,7 +286,9 @@ private:
         store_block(out, bx, by);
         const int block = block_base(bx, by) / kBatchLanes;
         touched_[std::size_t(block)] = true;
-        if (draw_->depth_test) std::copy_n(in_[h].frag_coord[2], kBatchLanes, &depth_[block * kBatchLanes]);
+        if (draw_->depth_test) {
+            for (int i = 0; i < kBatchLanes; ++i) depth_[block * kBatchLanes + i] = depth24(in_[h].frag_coord[2][i]);
+        }
         written_ += kBatchLanes;
     }
 
@@ -318,7 +321,7 @@ private:
             if (!(mask >> i & 1)) continue;
             const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
             const float z = tri_->z.at(float(x), float(y), draw_->fused);
-            pass |= std::uint32_t(z < depth_[tile_index(x, y)]) << i;
+            pass |= std::uint32_t(depth24(z) < depth_[tile_index(x, y)]) << i;
         }
         return pass;
     }
@@ -402,7 +405,7 @@ private:
         float* p = fb_.pixel(x, y);
         for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i];
         if (draw_->mode.check_undefined) *undefined_at(x, y) = out_[h].undefined[i];
-        if (draw_->depth_test) depth_[t] = in_[h].frag_coord[2][i];
+        if (draw_->depth_test) depth_[t] = depth24(in_[h].frag_coord[2][i]);
         ++written_;
     }
 
@@ -443,7 +446,7 @@ private:
     glm::vec4 clear_;
     int x0_ = 0, y0_ = 0;
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
-    alignas(64) float depth_[kTilePixels];
+    alignas(64) float depth_[kTilePixels];  // 24-bit depths (depth24), exact in float
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     const TriangleSetup* tri_ = nullptr;
     const PreparedDraw* draw_ = nullptr;
@@ -498,14 +501,13 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     check_image_size(width, height);
     check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
     std::vector<PreparedDraw> prepared;
-    bool any_depth = options.force_general_path;
     for (const DrawCall& call : draws) {
         if (!call.program) throw std::invalid_argument("draw call without a program");
         const Needs& needs = call.program->info().needs;
         PreparedDraw d{&call,
                        {options.derivatives, options.precision, options.check_undefined},
                        true,
-                       needs.depth,
+                       false,  // decided below, for the whole frame
                        needs.frag_coord || options.force_general_path,
                        needs.varyings,
                        needs.flat_varyings,
@@ -519,8 +521,6 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         } else if (d.mode.derivatives == Derivatives::Analytic) {
             d.quads = false;  // Dual2 carries derivatives: no neighbours needed
         }
-        if (options.force_general_path) d.depth_test = true;
-        any_depth |= d.depth_test;
         prepared.push_back(d);
     }
 
@@ -531,18 +531,20 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     }
 
     RasterStats stats;
-    // Vertex stage, clipping and setup, per draw, triangles kept in submission order.
-    const float guard_x = fixed::kGuardBand / (float(width) * 0.5f) - 1.0f;
-    const float guard_y = fixed::kGuardBand / (float(height) * 0.5f) - 1.0f;
+    // Vertex stage, clipping and setup, per draw, triangles kept in submission order; with
+    // denormals flushed, as Mesa's draw module runs them.
+    const Viewport viewport(width, height);
     std::vector<TriangleSetup> triangles;
+    const FlushDenormals ftz;
     for (std::size_t di = 0; di < prepared.size(); ++di) {
         const DrawCall& call = *prepared[di].call;
         std::vector<ClipVertex> verts(call.vertices.size());
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, verts.size(), 256), [&](const auto& r) {
+            const FlushDenormals vertex_ftz;
             for (std::size_t i = r.begin(); i != r.end(); ++i) {
                 VertexOut out;
                 call.program->vertex(call.vertices[i], call.uniforms, out);
-                verts[i] = {out.clip, out.varyings};
+                verts[i] = {out.clip, viewport.window(out.clip, options.fused_viewport), out.varyings};
             }
         });
         std::vector<std::array<ClipVertex, 3>> clipped;
@@ -555,7 +557,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
                                             std::to_string(verts.size()));
             }
             clipped.clear();
-            clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, guard_x, guard_y, clipped);
+            clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, viewport, clipped);
             for (const auto& tri : clipped) {
                 if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule,
                                             prepared[di].flat, verts[c])) {
@@ -566,6 +568,11 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         }
     }
     stats.triangles_setup = triangles.size();
+    // Depth is tested for every draw or none: GL tests it always, and leaving it out is only
+    // allowed where it provably changes nothing (depth_buffer.h).
+    const bool depth = options.force_general_path || depth_buffer_matters(triangles, width, height);
+    for (PreparedDraw& d : prepared) d.depth_test = depth;
+    stats.depth_buffer = depth;
 
     // Binning: tile rows follow the quad grid so that no quad straddles two tiles.
     const int row0 = quad_row_offset(height, options.pairing);
@@ -585,7 +592,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     fb.width = width, fb.height = height;
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     fb.rgba.resize(pixels * 4);
-    fb.depth.resize(any_depth ? pixels : 0);
+    fb.depth.resize(depth ? pixels : 0);
     fb.undefined.resize(options.check_undefined ? pixels : 0);
     // One renderer per thread, made once per frame rather than once per tile: it holds a tile's
     // depth.

@@ -1,10 +1,11 @@
 #pragma once
 // The 2x2-quad rasterizer: draw calls in, a framebuffer out, as a GL driver would produce it.
 //
-// Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping -> triangle setup ->
+// Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping (clipper.h) -> triangle setup ->
 // binning into 64x64 tiles -> tiles in parallel (oneTBB), each tile's triangles in submission
 // order -> quads (or single pixels for derivative-free shaders) batched kBatchLanes lanes at a
-// time -> early depth test -> shading -> colour and depth writes for covered lanes only.
+// time -> early depth test (unless no two triangles overlap: depth_buffer.h) -> shading -> colour
+// and depth writes for covered lanes only.
 // The output is bit-identical for any thread count.
 
 #include <cstdint>
@@ -33,9 +34,13 @@ struct RasterOptions {
     // Evaluate attribute planes with fused multiply-adds (llvmpipe on FMA hosts) or separately
     // rounded ones (softpipe). See plane_equation.h.
     bool fused_interpolation = fused_interpolation_default();
+    // The vertices' viewport transform as one fused multiply-add: Mesa's draw module (both
+    // drivers' vertex stage) compiles it with llvm.fmuladd, fused on FMA hosts. See clipper.h.
+    bool fused_viewport = fused_interpolation_default();
     // Shade derivative-free shaders in quads with helper lanes too (the general path), interpolate
-    // gl_FragCoord for every shader, and keep a depth buffer even when no draw needs one. For
-    // measuring what specialisation saves, and for checking that it changes nothing.
+    // gl_FragCoord for every shader, and keep a depth buffer even when it provably changes
+    // nothing (depth_buffer.h). For measuring what specialisation saves, and for checking that it
+    // changes nothing.
     bool force_general_path = false;
     // Fill Framebuffer::undefined: shade with Checked numbers (float only; not with Analytic
     // derivatives or Double precision: std::invalid_argument). Same colours, slower.
@@ -48,6 +53,7 @@ struct RasterStats {
     std::uint64_t quads = 0;          // quads shaded (quad path)
     std::uint64_t lanes_shaded = 0;   // lanes run through a shader, helpers included
     std::uint64_t pixels_written = 0;
+    bool depth_buffer = false;        // the frame was depth tested (depth_buffer.h)
 };
 
 // Renders draws into a width x height framebuffer cleared to `clear`.
@@ -62,8 +68,9 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
 inline constexpr int kTileSize = 64;
 int quad_row_offset(int height, QuadPairing pairing);
 
-// Framebuffer sizes both renderers accept: 1..kMaxDimension on each side (larger images exceed
-// the guard band's intent). Throws std::invalid_argument naming the size otherwise.
+// Framebuffer sizes both renderers accept: 1..kMaxDimension on each side (clipped vertices lie
+// in the viewport, so edge-function products stay below 2^52). Throws std::invalid_argument
+// naming the size otherwise.
 inline constexpr int kMaxDimension = 1 << 15;
 void check_image_size(int width, int height);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "raster/fixed_point.h"
 
@@ -10,19 +11,12 @@ namespace qs {
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
                                             const ClipVertex& provoking) {
-    const float scale_x = float(width) * 0.5f, trans_x = float(width) * 0.5f;
-    const float scale_y = -float(height) * 0.5f, trans_y = float(height) * 0.5f;
-    float x[3], y[3], z[3], oow[3];
     std::int64_t fx[3], fy[3];
     for (int i = 0; i < 3; ++i) {
-        const glm::vec4& c = tri[i].clip;
-        oow[i] = 1.0f / c.w;
-        x[i] = c.x * oow[i] * scale_x + trans_x;
-        y[i] = c.y * oow[i] * scale_y + trans_y;
-        z[i] = c.z * oow[i] * 0.5f + 0.5f;
-        if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i])) return std::nullopt;
-        fx[i] = fixed::snap(x[i]);
-        fy[i] = fixed::snap(y[i]);
+        const glm::vec4& w = tri[std::size_t(i)].window;
+        if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z) || !std::isfinite(w.w)) return std::nullopt;
+        fx[i] = fixed::snap(w.x);
+        fy[i] = fixed::snap(w.y);
     }
     // Orient so that the interior is on the positive side of every edge.
     const std::int64_t area = (fx[1] - fx[0]) * (fy[2] - fy[0]) - (fx[2] - fx[0]) * (fy[1] - fy[0]);
@@ -34,6 +28,7 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     for (int e = 0; e < 3; ++e) {
         const int a = order[e], b = order[(e + 1) % 3];
         t.edges[e] = EdgeFunction::from_edge(fx[a], fy[a], fx[b], fy[b], fixed::kSubpixelBits, fill_rule);
+        t.corner_x[std::size_t(e)] = fx[a], t.corner_y[std::size_t(e)] = fy[a];
     }
     // Pixel centres i << 8 inside the fixed-point bounds.
     auto lo = [](std::int64_t v) { return int((v + fixed::kOne - 1) >> fixed::kSubpixelBits); };
@@ -44,18 +39,25 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     t.max_y = std::min(hi(std::max({fy[0], fy[1], fy[2]})), height - 1);
     if (t.min_x > t.max_x || t.min_y > t.max_y) return std::nullopt;
 
-    // Planes from the float positions in the vertices' original order, as llvmpipe's setup.
+    // Planes from the float window positions as llvmpipe's setup takes them: in the vertices'
+    // order when their winding is counter-clockwise in GL's window (front facing; area < 0 here,
+    // y down), else with the first two swapped (lp_setup_tri.c: triangle_both).
+    std::array<const ClipVertex*, 3> v = {&tri[0], &tri[1], &tri[2]};
+    if (area > 0) std::swap(v[0], v[1]);
+    const float x[3] = {v[0]->window.x, v[1]->window.x, v[2]->window.x};
+    const float y[3] = {v[0]->window.y, v[1]->window.y, v[2]->window.y};
     const PlaneSetup s(x, y);
     if (!s.valid) return std::nullopt;
-    t.z = PlaneEquation(s, z[0], z[1], z[2]);
-    t.inv_w = PlaneEquation(s, oow[0], oow[1], oow[2]);
-    for (int v = 0; v < varying_count; ++v) {
-        if (flat >> v & 1) {
-            t.varyings[v].a0 = provoking.varyings[v];  // constant, not divided by w
+    t.z = PlaneEquation(s, v[0]->window.z, v[1]->window.z, v[2]->window.z);
+    t.inv_w = PlaneEquation(s, v[0]->window.w, v[1]->window.w, v[2]->window.w);
+    for (int k = 0; k < varying_count; ++k) {
+        if (flat >> k & 1) {
+            t.varyings[std::size_t(k)].a0 = provoking.varyings[std::size_t(k)];  // constant, not divided by w
             continue;
         }
-        t.varyings[v] = PlaneEquation(s, tri[0].varyings[v] * oow[0], tri[1].varyings[v] * oow[1],
-                                      tri[2].varyings[v] * oow[2]);
+        t.varyings[std::size_t(k)] = PlaneEquation(s, v[0]->varyings[std::size_t(k)] * v[0]->window.w,
+                                                   v[1]->varyings[std::size_t(k)] * v[1]->window.w,
+                                                   v[2]->varyings[std::size_t(k)] * v[2]->window.w);
     }
     return t;
 }

@@ -15,6 +15,9 @@ namespace qs {
 
 struct TriangleSetup {
     std::array<EdgeFunction, 3> edges;
+    // The snapped vertices (fixed point, pixel centres on multiples of fixed::kOne), in edge
+    // order: edge k runs from corner k to corner k + 1, the interior on its positive side.
+    std::array<std::int64_t, 3> corner_x, corner_y;
     int min_x, min_y, max_x, max_y;  // inclusive pixel bounds, clamped to the framebuffer
     PlaneEquation z;                 // window depth, linear in screen space
     PlaneEquation inv_w;             // 1/w_clip, linear in screen space
@@ -22,10 +25,11 @@ struct TriangleSetup {
     int draw = 0;                    // index of the draw call it came from
 };
 
-// Window mapping in framebuffer coordinates (y down, as OSMesa's buffer): x = ndc.x W/2 + W/2,
-// y = ndc.y (-H/2) + H/2, z = ndc.z / 2 + 1/2. Returns nothing for a triangle that covers no
-// pixel centre of the framebuffer or has zero area. Flat varyings (bits of `flat`) take the
-// value of `provoking`, the last vertex of the triangle before clipping, in the plane's a0.
+// From the vertices' window coordinates (ClipVertex::window: framebuffer pixels, y down as
+// OSMesa's buffer, depth, 1/w), snapped to fixed point for the edges. Returns nothing for a
+// triangle that covers no pixel centre of the framebuffer or has zero area. Flat varyings (bits
+// of `flat`) take the value of `provoking`, the last vertex of the triangle before clipping, in
+// the plane's a0.
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
                                             const ClipVertex& provoking);

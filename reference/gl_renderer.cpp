@@ -140,14 +140,12 @@ void GlSceneRenderer::draw() {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);  // as any GL application drawing a 3D scene
     glDepthFunc(GL_LESS);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
         const Object& o = scene_.objects[i];
-        const ShaderInfo& info = *infos_[i];
         const GLuint p = programs_[i];
         glUseProgram(p);
-        if (info.needs.depth) glEnable(GL_DEPTH_TEST);
-        else glDisable(GL_DEPTH_TEST);
         // The MVP quadshade computed, as the projection; gl_ModelViewProjectionMatrix = P * I.
         const glm::mat4 mvp = scene_.model_view_projection(o, aspect);
         glMatrixMode(GL_PROJECTION);

@@ -1,8 +1,8 @@
 #pragma once
 // Renders a scene through OpenGL with the original GLSL of each object's shader (the files
 // listed in its ShaderInfo, under shading/), with the same meshes, matrices, uniforms and
-// textures quadshade uses. Fixed-function state as the chapter's demo: depth test LESS when
-// any object needs depth, no culling, no blending.
+// textures quadshade uses. Fixed-function state as the chapter's demo: depth test LESS against
+// a depth buffer cleared to 1 for every object, no culling, no blending.
 
 #include <filesystem>
 #include <optional>

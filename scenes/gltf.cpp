@@ -1,6 +1,7 @@
 // The one file that includes tinygltf.
 #include "scenes/gltf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -269,7 +270,7 @@ Scene load_scene(const std::filesystem::path& path) {
     return scene;
 }
 
-void save_scene(const Scene& scene, const std::filesystem::path& path) {
+void save_scene(const Scene& scene, const std::filesystem::path& path, std::span<const SavedNode> nodes) {
     tinygltf::Model m;
     m.asset.version = "2.0";
     m.asset.generator = "quadshade scene generator";
@@ -320,6 +321,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
     m.buffers.push_back(buffer);
 
     tinygltf::Scene gs;
+    std::vector<int> mesh_of_object;
     for (const Object& o : scene.objects) {
         tinygltf::Material mat;
         mat.name = o.name;
@@ -335,17 +337,46 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
         gm.name = o.name;
         gm.primitives[0].material = int(m.materials.size() - 1);
         m.meshes.push_back(gm);
+        mesh_of_object.push_back(int(m.meshes.size() - 1));
+        if (!nodes.empty()) continue;
         tinygltf::Node n;
         n.name = o.name;
-        n.mesh = int(m.meshes.size() - 1);
+        n.mesh = mesh_of_object.back();
         n.matrix.assign(glm::value_ptr(o.world_from_object), glm::value_ptr(o.world_from_object) + 16);
         m.nodes.push_back(n);
         gs.nodes.push_back(int(m.nodes.size() - 1));
     }
+    std::vector<int> carried(scene.objects.size(), 0);
+    const std::size_t first_node = m.nodes.size();  // glTF index of nodes[0]
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const SavedNode& sn = nodes[i];
+        const std::string field = path.string() + ": saving node " + std::to_string(i) + " '" + sn.name + "': ";
+        if (sn.parent >= int(i) || sn.parent < -1) throw SceneError(field + "its parent must be an earlier node");
+        if (sn.object >= int(scene.objects.size()) || sn.object < -1) throw SceneError(field + "no such object");
+        tinygltf::Node n;
+        n.name = sn.name;
+        if (sn.object >= 0) n.mesh = mesh_of_object[std::size_t(sn.object)], ++carried[std::size_t(sn.object)];
+        if (sn.matrix) {
+            n.matrix.assign(glm::value_ptr(*sn.matrix), glm::value_ptr(*sn.matrix) + 16);
+        } else {
+            n.translation = {sn.translation.x, sn.translation.y, sn.translation.z};
+            n.rotation = {sn.rotation.x, sn.rotation.y, sn.rotation.z, sn.rotation.w};
+            n.scale = {sn.scale.x, sn.scale.y, sn.scale.z};
+        }
+        m.nodes.push_back(n);
+        const int index = int(first_node + i);
+        if (sn.parent < 0) gs.nodes.push_back(index);
+        else m.nodes[first_node + std::size_t(sn.parent)].children.push_back(index);
+    }
+    if (!nodes.empty() && std::count(carried.begin(), carried.end(), 1) != std::ptrdiff_t(carried.size())) {
+        throw SceneError(path.string() + ": saving nodes: every object must sit on exactly one node");
+    }
     // Drop the material-less template meshes: objects' meshes follow them.
     const int templates = int(scene.meshes.size());
     m.meshes.erase(m.meshes.begin(), m.meshes.begin() + templates);
-    for (tinygltf::Node& n : m.nodes) n.mesh -= templates;
+    for (tinygltf::Node& n : m.nodes) {
+        if (n.mesh >= 0) n.mesh -= templates;
+    }
 
     tinygltf::Camera cam;
     if (scene.camera.kind == Camera::Kind::Perspective) {

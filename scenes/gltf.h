@@ -11,6 +11,11 @@
 // Shaders see the untransformed POSITION as gl_Vertex, the node's world matrix in the MVP.
 
 #include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
 
 #include "scenes/scene.h"
 
@@ -19,7 +24,23 @@ namespace qs {
 // Throws SceneError naming the file and the field at fault.
 Scene load_scene(const std::filesystem::path& path);
 
+// A node for save_scene to write, for scenes that exercise glTF's node hierarchy: its parent (an
+// earlier node, or -1 for a root), its local transform as a matrix or else as translation,
+// rotation and scale (glTF's T * R * S), and the object it carries (-1 for none).
+struct SavedNode {
+    std::string name;
+    int parent = -1;
+    std::optional<glm::mat4> matrix;
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
+    glm::vec3 scale{1.0f};
+    int object = -1;
+};
+
 // Writes `scene` as .gltf with its buffer in a .bin beside it (used by the scene generator).
-void save_scene(const Scene& scene, const std::filesystem::path& path);
+// Without `nodes` each object is a root node with its world matrix; with them, the objects sit
+// where the nodes put them (each object on exactly one node; its world_from_object is not
+// written, the loader composes it from the hierarchy). Throws SceneError otherwise.
+void save_scene(const Scene& scene, const std::filesystem::path& path, std::span<const SavedNode> nodes = {});
 
 }  // namespace qs

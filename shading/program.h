@@ -55,7 +55,6 @@ struct Needs {
     bool derivatives = false;  // dFdx/dFdy/fwidth: quads with helper lanes
     bool texture = false;      // the scene must provide `teximage`
     bool time = false;         // output changes with the `time` uniform
-    bool depth = true;         // draws into a depth-tested scene (false: full-screen benchmark)
     int varyings = 0;          // interpolated floats the vertex stage writes
     unsigned flat_varyings = 0;  // bit v: varying v is `flat`, the provoking (last) vertex's value
     // The fragment stage reads gl_FragCoord. When false the rasterizer does not interpolate it

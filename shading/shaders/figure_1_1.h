@@ -18,7 +18,7 @@ using namespace qs::glsl;
 struct FlowNoise {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "flow_noise", "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
-        Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 2},
+        Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true, .varyings = 2},
         {"shaders/object_plane.vert"}, {"noise/flow_noise.glsl", "shaders/flow_noise.frag"}, {},
         // srdnoise's rotation enters through fract(hash * K + rot): period 1 in rot, so the
         // octaves' 0.2 t, 0.51 t, 0.77 t are all whole after 100 s
@@ -57,7 +57,7 @@ inline constexpr double kSimplex3dTimePeriod = 867.0;
 struct Simplex3d {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "simplex3d", "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .varyings = 3},
         {"shaders/sphere_simplex.vert"}, {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
         noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, 1>(in, u, out); }
@@ -71,7 +71,7 @@ struct Simplex3d {
 struct Turbulence {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .varyings = 3},
         {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
         noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<2, -1>(in, u, out); }
@@ -94,7 +94,7 @@ struct Spots {
     static constexpr ShaderInfo info{
         W == AAWidth::Fwidth ? "spots" : W == AAWidth::Length ? "spots_length" : "spots_step",
         "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true, .varyings = 3},
         {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"},
         W == AAWidth::Fwidth ? "" : W == AAWidth::Length ? "#define SPOTS_LENGTH\n" : "#define SPOTS_STEP\n",
         289.0};  // P.z moves with time; cellular hashes floor(P) mod 289
@@ -118,7 +118,7 @@ struct Spots {
 struct Tiles3d {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "tiles3d", "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .depth = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .varyings = 3},
         {"noise/simplex3d.glsl", "shaders/sphere_warp.vert"}, {"noise/cellular.glsl", "shaders/tiles3d.frag"},
         noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {

@@ -15,12 +15,12 @@
 namespace qs::shaders {
 using namespace qs::glsl;
 
-// Plane pattern: st varying, no time, no texture, no depth.
+// Plane pattern: st varying, no time, no texture.
 constexpr ShaderInfo plane_pattern(std::string_view name, std::string_view description, bool derivatives,
                                    std::array<std::string_view, 3> fragment, std::string_view defines = {},
                                    std::string_view vertex = "shaders/plane_st.vert") {
     return ShaderInfo{name, description,
-                      Needs{.derivatives = derivatives, .texture = false, .time = false, .depth = false, .varyings = 2},
+                      Needs{.derivatives = derivatives, .texture = false, .time = false, .varyings = 2},
                       {vertex}, fragment, defines};
 }
 

@@ -13,7 +13,7 @@ using namespace qs::glsl;
 
 struct DerivativeProbe {
     static constexpr ShaderInfo info{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -26,7 +26,7 @@ struct DerivativeProbe {
 
 struct StDerivativeProbe {
     static constexpr ShaderInfo info{"st_derivative_probe", "probe: dFdx(st) in red, green; dFdy(st) in blue, alpha",
-                                     Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = false, .time = false, .depth = true, .varyings = 2},
+                                     Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = false, .time = false, .varyings = 2},
                                      {"shaders/plane_st.vert"}, {"shaders/st_derivative_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -38,7 +38,7 @@ struct StDerivativeProbe {
 
 struct PositionDerivativeProbe {
     static constexpr ShaderInfo info{"position_derivative_probe", "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true, .depth = true, .varyings = 3},
+                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true, .varyings = 3},
                                      {"shaders/sphere_spots.vert"}, {"shaders/position_derivative_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
     template <class F>
@@ -50,7 +50,7 @@ struct PositionDerivativeProbe {
 
 struct SmoothstepProbe {
     static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -63,7 +63,7 @@ struct SmoothstepProbe {
 
 struct ArithmeticProbe {
     static constexpr ShaderInfo info{"arithmetic_probe", "probe: a / b, mod(a, 289), mod(a, b), a / 7 of run-time values",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/arithmetic_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -76,7 +76,7 @@ struct ArithmeticProbe {
 
 struct FloatEnvironmentProbe {
     static constexpr ShaderInfo info{"float_env_probe", "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/float_env_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>

@@ -21,12 +21,12 @@ inline void plane_st_vertex(const VertexIn& in, const Uniforms& u, VertexOut& ou
     out.clip = transform_point(u.model_view_projection, in.position);
 }
 
-inline constexpr Needs kPlaneNeeds{.derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 2};
-inline constexpr Needs kPlaneDerivativeNeeds{.derivatives = true, .texture = false, .time = false, .depth = false, .varyings = 2};
+inline constexpr Needs kPlaneNeeds{.derivatives = false, .texture = false, .time = false, .varyings = 2};
+inline constexpr Needs kPlaneDerivativeNeeds{.derivatives = true, .texture = false, .time = false, .varyings = 2};
 
 struct ConstantColor {
     static constexpr ShaderInfo info{"constant_color", "Table 1.1: constant colour",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .depth = false, .varyings = 0},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .varyings = 0},
                                      {"shaders/plane_st.vert"}, {"shaders/constant_color.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -35,7 +35,7 @@ struct ConstantColor {
 
 struct SingleTexture {
     static constexpr ShaderInfo info{"single_texture", "Table 1.1: one bilinear texture lookup (clamp, no mipmaps)",
-                                     Needs{.derivatives = false, .texture = true, .time = false, .depth = false, .varyings = 2},
+                                     Needs{.derivatives = false, .texture = true, .time = false, .varyings = 2},
                                      {"shaders/plane_st.vert"}, {"shaders/single_texture.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
@@ -123,7 +123,7 @@ template <AAWidth W = AAWidth::Length>
 struct Halftone {
     static constexpr ShaderInfo info{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
                                      "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
-                                     Needs{.derivatives = true, .texture = true, .time = false, .depth = false, .varyings = 4},
+                                     Needs{.derivatives = true, .texture = true, .time = false, .varyings = 4},
                                      {"shaders/halftone.vert"},
                                      {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"},
                                      aa_variant_defines(W)};

@@ -19,7 +19,7 @@ inline void pass_through_vertex(const VertexIn& in, const Uniforms& u, VertexOut
 
 // Writes (1, 1, 1, 1): coverage.
 struct Flat {
-    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::None, .derivatives = false, .depth = false, .varyings = 0}, {}, {}};
+    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::None, .derivatives = false, .varyings = 0}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>&, const Uniforms&) { return vec4<F>(1.0f); }
@@ -27,7 +27,7 @@ struct Flat {
 
 // Writes the first three varyings (the object position): interpolation.
 struct Position {
-    static constexpr ShaderInfo info{"test_position", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .depth = true, .varyings = 5}, {}, {}};
+    static constexpr ShaderInfo info{"test_position", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 5}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -37,7 +37,7 @@ struct Position {
 
 // Writes varying 0 flat (the provoking vertex's) and varying 1 smooth.
 struct FlatX {
-    static constexpr ShaderInfo info{"test_flat_x", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .depth = false, .varyings = 5, .flat_varyings = 1u}, {}, {}};
+    static constexpr ShaderInfo info{"test_flat_x", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 5, .flat_varyings = 1u}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -47,7 +47,7 @@ struct FlatX {
 
 // Writes dFdx and dFdy of varying 0 and the varying itself.
 struct Slopes {
-    static constexpr ShaderInfo info{"test_slopes", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .depth = false, .varyings = 5}, {}, {}};
+    static constexpr ShaderInfo info{"test_slopes", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .varyings = 5}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {

@@ -22,7 +22,7 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .depth = false, .varyings = 0, .frag_coord = true}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .varyings = 0, .frag_coord = true}, {}, {}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
@@ -34,7 +34,7 @@ const ProgramOf<SquareY> kSquareY;
 
 // The same shader not saying that it reads gl_FragCoord.
 struct UndeclaredSquareY : SquareY {
-    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .depth = false, .varyings = 0}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .varyings = 0}, {}, {}};
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
@@ -230,11 +230,13 @@ TEST_CASE("odd image sizes: quads pair rows from the top (OSMesa) or from the bo
 
 TEST_CASE("a shader that reads gl_FragCoord without declaring it reads NaN, never another draw's numbers",
           "[raster][specialisation]") {
-    // Two draws over the same pixels: the first interpolates gl_FragCoord, the second leaves it out.
+    // Two draws over the same pixels: the first interpolates gl_FragCoord, the second, nearer (it
+    // passes the depth test), leaves it out.
     constexpr int W = 8, H = 8;
     const std::vector<VertexIn> verts = {{{0, 0, 0}, {}}, {{W, 0, 0}, {}}, {{W, H, 0}, {}}, {{0, H, 0}, {}}};
+    const std::vector<VertexIn> nearer = {{{0, 0, -0.5f}, {}}, {{W, 0, -0.5f}, {}}, {{W, H, -0.5f}, {}}, {{0, H, -0.5f}, {}}};
     const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
-    DrawCall declared{verts, idx, &kSquareY, {}}, undeclared{verts, idx, &kUndeclaredSquareY, {}};
+    DrawCall declared{verts, idx, &kSquareY, {}}, undeclared{nearer, idx, &kUndeclaredSquareY, {}};
     declared.uniforms.model_view_projection = undeclared.uniforms.model_view_projection = window_to_clip(W, H);
     const DrawCall both[] = {declared, undeclared};
     const Framebuffer fb = rasterize(W, H, glm::vec4(0.0f), both, {});
@@ -293,7 +295,7 @@ TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "
         CHECK(!fb.depth.empty());
         CHECK(fb.pixel(20, 31 - 5)[2] == -0.5f);  // covered by both: the near one's z
     }
-    CHECK(draw(8, 8, near_tri, kFlat).depth.empty());  // no draw needs depth: no depth buffer
+    CHECK(draw(8, 8, near_tri, kFlat).depth.empty());  // one triangle occludes nothing: no depth buffer
 }
 
 TEST_CASE("derivative-free shaders run per pixel with no helper lanes; derivative shaders in quads", "[raster][specialisation]") {

@@ -51,8 +51,19 @@ void write_text(const std::filesystem::path& p, const std::string& text) { std::
 TEST_CASE("the shipped scenes are exactly what the generator makes", "[scenes]") {
     const auto dir = temp_dir("assets");
     REQUIRE(std::system(((kBin / "quadshade-make-scenes").string() + " " + dir.string()).c_str()) == 0);
-    for (const char* f : {"figure-1.1.gltf", "figure-1.1.bin", "table-1.1-plane.gltf", "table-1.1-plane.bin",
-                          "textures/halftone-source.png"}) {
+    // Every file it makes is committed unchanged, and every committed file is one it makes.
+    const auto files = [](const std::filesystem::path& root) {
+        std::set<std::string> all;
+        for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
+            if (e.is_regular_file()) all.insert(std::filesystem::relative(e.path(), root).string());
+        }
+        return all;
+    };
+    const std::set<std::string> made = files(dir);
+    CHECK(made == files(kSource / "scenes/assets"));
+    CHECK(made.count("figure-1.1.gltf"));
+    CHECK(made.count("conformance/torus-rolled.gltf"));
+    for (const std::string& f : made) {
         INFO(f);
         CHECK(slurp(dir / f) == slurp(kSource / "scenes/assets" / f));
     }
@@ -139,6 +150,35 @@ TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[sc
         for (std::size_t i = 3; i < fb.rgba.size(); i += 4) drawn += fb.rgba[i] > 0.5f;
         INFO(p->info().name);
         CHECK(drawn > 150);  // the framed triangle covers about a fifth of the view (200 pixels)
+    }
+}
+
+TEST_CASE("node hierarchies compose as glTF says: parent matrix times the child's T R S", "[scenes]") {
+    // A root with a matrix (90 degrees about z, then moved by (1, 2, 3)), its child by TRS:
+    // moved by (0.5, 0, 0), turned 90 degrees about x, scaled (2, 3, 4). The mesh is the child's.
+    const auto dir = temp_dir("hierarchy");
+    write_text(dir / "h.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"matrix": [0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1], "children": [1]},
+                  {"translation": [0.5, 0, 0], "rotation": [0.70710678, 0, 0, 0.70710678], "scale": [2, 3, 4], "mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [-1, -1, 0], "max": [1, 1, 0]}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]})");
+    const Scene s = load_scene(dir / "h.gltf");
+    REQUIRE(s.objects.size() == 1);
+    const glm::mat4& m = s.objects[0].world_from_object;
+    // Worked by hand: S, then R (x, y, z) -> (x, -z, y), then T, then the root's (x, y, z) ->
+    // (1 - y, 2 + x, 3 + z).
+    const std::pair<glm::vec3, glm::vec3> cases[] = {{{0, 0, 0}, {1, 2.5f, 3}}, {{1, 0, 0}, {1, 4.5f, 3}},
+                                                     {{1, 1, 1}, {5, 4.5f, 6}}, {{0, 0, 1}, {5, 2.5f, 3}}};
+    for (const auto& [object, world] : cases) {
+        const glm::vec4 w = m * glm::vec4(object, 1.0f);
+        INFO(object.x << " " << object.y << " " << object.z << " -> " << w.x << " " << w.y << " " << w.z);
+        CHECK(w.x == Approx(world.x).margin(1e-6));
+        CHECK(w.y == Approx(world.y).margin(1e-6));
+        CHECK(w.z == Approx(world.z).margin(1e-6));
+        CHECK(w.w == 1.0f);
     }
 }
 

@@ -1,0 +1,51 @@
+#pragma once
+// The depth buffer: what it holds, and whether a frame needs one, decided from the set-up
+// triangles, not the shaders.
+//
+// GL tests every fragment against the depth buffer (LESS, cleared to 1; quadshade's reference
+// always does). That test can only leave the image as it would be without it when every
+// fragment passes, and a fragment passes for sure only where nothing was drawn before it and its
+// depth is below the clear value. So the depth buffer may be left out when
+//  - no pixel centre is covered by two triangles (of any draws), and
+//  - no fragment's window depth can reach 1 (LESS against the cleared 1 drops it).
+// Both are tested exactly or conservatively on the numbers the rasterizer uses; anything not
+// proven keeps the depth buffer. The ray caster needs none: it shades the closest hit.
+
+#include <cmath>
+#include <span>
+
+#include "raster/triangle_setup.h"
+
+namespace qs {
+
+// A window depth as the reference's 24-bit depth buffer stores it (OSMesa, 24 depth bits, as
+// llvmpipe converts: lp_build_clamped_float_to_unsigned_norm): clamped to [0, 1] (NaN to 0, as
+// llvmpipe's max and min drop it), scaled by 2^24 - 1 in float and rounded to nearest even. The
+// integer is exact in a float. Depths closer than 2^-24 compare equal, so the first drawn stays.
+inline constexpr float kDepthCleared = 16777215.0f;  // the clear value 1
+inline float depth24(float z) { return std::nearbyint(std::fmin(std::fmax(z, 0.0f), 1.0f) * kDepthCleared); }
+
+// Whether the open interiors of two set-up triangles intersect, exactly, on their snapped
+// fixed-point vertices. When they do not, no pixel centre is covered by both, under either fill
+// rule: coverage is E + bias > 0 per edge (edge_function.h), which is the same as the pixel
+// centre moved by an infinitesimal (e, -e^2) (left-bottom; (-e, e^2) for right-top) lying
+// strictly inside, so a centre covered by both would be a point inside both. Shared edges,
+// shared vertices and T-junctions therefore never count as overlap. Two convex polygons have
+// disjoint interiors exactly when an edge line of one has every vertex of the other on or
+// outside it (the edges of their Minkowski difference are theirs).
+bool interiors_overlap(const TriangleSetup& a, const TriangleSetup& b);
+
+// Whether a fragment of t may have window depth >= 1: its depth plane's largest value over its
+// pixel bounding box, with a margin for the float evaluation, is not below 1.
+bool may_reach_depth_one(const TriangleSetup& t);
+
+// Whether a depth buffer could change the frame these triangles draw. False only when proven
+// (above); true as well when the proof would cost too much: more than kMaxTrianglesTested
+// triangles, or more candidate pairs than a budget linear in their number. Pairs are only those
+// whose pixel bounding boxes meet: all of them for a handful of triangles, otherwise found
+// through a grid of 64-pixel cells, each pair tested once.
+bool depth_buffer_matters(std::span<const TriangleSetup> triangles, int width, int height);
+
+inline constexpr std::size_t kMaxTrianglesTested = std::size_t(1) << 16;
+
+}  // namespace qs

@@ -1,0 +1,192 @@
+// The depth buffer: what it stores (24-bit, as the reference's), and leaving it out only where it
+// provably changes nothing (no two triangles share a pixel, no depth reaches 1).
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "raster/depth_buffer.h"
+#include "tests/raster/test_program.h"
+
+namespace qs::test {
+
+namespace {
+
+const ProgramOf<Flat> kFlat;
+const ProgramOf<Position> kPosition;
+
+// A triangle given in framebuffer pixels (x right, y down) and window depth, set up for a
+// width x height image.
+std::optional<TriangleSetup> setup_pixels(int width, int height, const std::array<glm::vec3, 3>& p, FillRule rule) {
+    std::array<ClipVertex, 3> tri;
+    for (std::size_t i = 0; i < 3; ++i) {
+        tri[i].window = {p[i], 1.0f};
+        tri[i].clip = {p[i].x * 2.0f / float(width) - 1.0f, 1.0f - p[i].y * 2.0f / float(height), p[i].z * 2.0f - 1.0f, 1.0f};
+        tri[i].varyings = {};
+    }
+    return setup_triangle(tri, 0, width, height, rule, 0, tri[2]);
+}
+
+// The pixel centres t covers, as its rasterizer coverage test sees them.
+std::vector<bool> coverage(const TriangleSetup& t, int width, int height) {
+    std::vector<bool> c(std::size_t(width) * std::size_t(height), false);
+    for (int y = t.min_y; y <= t.max_y; ++y) {
+        for (int x = t.min_x; x <= t.max_x; ++x) {
+            c[std::size_t(y * width + x)] = t.edges[0].inside(x, y) && t.edges[1].inside(x, y) && t.edges[2].inside(x, y);
+        }
+    }
+    return c;
+}
+
+// Two pixel-space triangles: whether their interiors overlap (checked symmetric), and whether a
+// pixel centre is covered by both under `rule`.
+struct Pair {
+    bool overlap, shared_pixel;
+};
+Pair compare(const std::array<glm::vec3, 3>& a, const std::array<glm::vec3, 3>& b, FillRule rule) {
+    constexpr int W = 32, H = 32;
+    const auto ta = setup_pixels(W, H, a, rule), tb = setup_pixels(W, H, b, rule);
+    REQUIRE(ta);
+    REQUIRE(tb);
+    const bool overlap = interiors_overlap(*ta, *tb);
+    CHECK(overlap == interiors_overlap(*tb, *ta));
+    const std::vector<bool> ca = coverage(*ta, W, H), cb = coverage(*tb, W, H);
+    bool shared = false;
+    for (std::size_t i = 0; i < ca.size(); ++i) shared |= ca[i] && cb[i];
+    return {overlap, shared};
+}
+
+}  // namespace
+
+TEST_CASE("interiors_overlap: shared edges, shared vertices and T-junctions are not overlaps; overlaps are",
+          "[raster][depth]") {
+    for (FillRule rule : {FillRule::LeftBottom, FillRule::RightTop}) {
+        // Two halves of a square through pixel centres: a shared diagonal.
+        const Pair diagonal = compare({{{2.5f, 2.5f, 0}, {20.5f, 2.5f, 0}, {20.5f, 20.5f, 0}}},
+                                      {{{2.5f, 2.5f, 0}, {20.5f, 20.5f, 0}, {2.5f, 20.5f, 0}}}, rule);
+        CHECK_FALSE(diagonal.overlap);
+        // A vertex of one in the middle of the other's edge (a T-junction), on a pixel centre.
+        const Pair t_junction = compare({{{2.5f, 2.5f, 0}, {20.5f, 2.5f, 0}, {11.5f, 12.5f, 0}}},
+                                        {{{8.5f, 2.5f, 0}, {14.5f, 2.5f, 0}, {11.5f, -6.5f, 0}}}, rule);
+        CHECK_FALSE(t_junction.overlap);
+        // Touching at one vertex only (an hourglass), the vertex on a pixel centre.
+        const Pair hourglass = compare({{{4.5f, 4.5f, 0}, {12.5f, 4.5f, 0}, {8.5f, 10.5f, 0}}},
+                                       {{{8.5f, 10.5f, 0}, {4.5f, 16.5f, 0}, {12.5f, 16.5f, 0}}}, rule);
+        CHECK_FALSE(hourglass.overlap);
+        // Crossing, nested and identical triangles overlap and do share pixels.
+        for (const Pair& p : {compare({{{2, 2, 0}, {20, 3, 0}, {5, 20, 0}}}, {{{18, 18, 0}, {3, 10, 0}, {19, 4, 0}}}, rule),
+                              compare({{{2, 2, 0}, {30, 3, 0}, {5, 30, 0}}}, {{{6, 6, 0}, {9, 6.5f, 0}, {7, 10, 0}}}, rule),
+                              compare({{{2, 2, 0}, {30, 3, 0}, {5, 30, 0}}}, {{{2, 2, 0}, {30, 3, 0}, {5, 30, 0}}}, rule)}) {
+            CHECK(p.overlap);
+            CHECK(p.shared_pixel);
+        }
+    }
+}
+
+TEST_CASE("interiors_overlap is sound: triangles it calls disjoint never share a pixel centre, under either fill rule",
+          "[raster][depth]") {
+    // Vertices on a coarse grid of quarter pixels, many on pixel centres, so that shared edges,
+    // collinear edges, T-junctions and vertices on edges are common.
+    std::mt19937 rng(2024);
+    std::uniform_int_distribution<int> coord(0, 16 * 4);
+    auto vertex = [&] { return glm::vec3(float(coord(rng)) / 4.0f + 0.5f, float(coord(rng)) / 4.0f + 0.5f, 0.0f); };
+    std::size_t disjoint = 0, touching = 0;
+    for (int n = 0; n < 20000; ++n) {
+        std::array<glm::vec3, 3> a = {vertex(), vertex(), vertex()}, b = {vertex(), vertex(), vertex()};
+        if (n % 2) b[0] = a[1], b[1] = a[0];  // share an edge (either side of it)
+        if (n % 5 == 0) b[2] = 0.5f * (a[0] + a[1]);  // a vertex on an edge's line
+        const FillRule rule = n % 3 ? FillRule::LeftBottom : FillRule::RightTop;
+        constexpr int W = 32, H = 32;
+        const auto ta = setup_pixels(W, H, a, rule), tb = setup_pixels(W, H, b, rule);
+        if (!ta || !tb) continue;  // zero area
+        if (interiors_overlap(*ta, *tb)) continue;
+        ++disjoint;
+        const std::vector<bool> ca = coverage(*ta, W, H), cb = coverage(*tb, W, H);
+        bool a_any = false, b_any = false;
+        for (std::size_t i = 0; i < ca.size(); ++i) {
+            INFO("case " << n << " pixel " << i % W << ", " << i / W);
+            REQUIRE_FALSE((ca[i] && cb[i]));
+            a_any |= ca[i], b_any |= cb[i];
+        }
+        touching += a_any && b_any && n % 2;
+    }
+    CHECK(disjoint > 5000);
+    CHECK(touching > 1000);  // many of them did cover pixels on both sides of a shared edge
+}
+
+TEST_CASE("the depth buffer is left out only when no two triangles overlap and no depth reaches 1", "[raster][depth]") {
+    constexpr int W = 64, H = 64;
+    auto tri = [&](std::array<glm::vec3, 3> p) { return *setup_pixels(W, H, p, FillRule::LeftBottom); };
+    const TriangleSetup lower = tri({{{1, 1, 0.5f}, {60, 1, 0.5f}, {60, 60, 0.5f}}});
+    const TriangleSetup upper = tri({{{1, 1, 0.5f}, {60, 60, 0.5f}, {1, 60, 0.5f}}});
+    const TriangleSetup across = tri({{{30, 2, 0.2f}, {40, 2, 0.2f}, {35, 50, 0.2f}}});
+    const TriangleSetup far = tri({{{1.5f, 1.5f, 1.0f}, {60, 1, 0.9f}, {60, 60, 0.9f}}});  // depth 1 on a pixel centre
+    const TriangleSetup nearly_far = tri({{{1, 1, 1.0f}, {60, 1, 0.9f}, {60, 60, 0.9f}}});  // below 1 at every centre
+    CHECK_FALSE(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper}, W, H));
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, across}, W, H));
+    CHECK_FALSE(depth_buffer_matters(std::vector<TriangleSetup>{across}, W, H));
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{far}, W, H));  // LESS against 1 drops a corner
+    CHECK(may_reach_depth_one(far));
+    CHECK_FALSE(may_reach_depth_one(lower));
+    CHECK_FALSE(may_reach_depth_one(nearly_far));
+}
+
+TEST_CASE("depth is stored in 24 bits as the reference's buffer: nearer by less than a step does not pass LESS",
+          "[raster][depth]") {
+    CHECK(depth24(0.0f) == 0.0f);
+    CHECK(depth24(1.0f) == kDepthCleared);
+    CHECK(depth24(2.0f) == kDepthCleared);
+    CHECK(depth24(std::nextafter(1.0f, 0.0f)) < kDepthCleared);  // every depth below 1 passes the clear
+    CHECK(depth24(std::numeric_limits<float>::quiet_NaN()) == 0.0f);
+    // Two triangles over the same pixels, the second nearer by a hair: its window depth is the
+    // next float below the first's, which a float comparison would let through, but both are
+    // 5439172 in 24 bits and LESS keeps the first. Nearer by 2^-12, the second wins. The colour's
+    // blue is the NDC z.
+    const float z1 = -0x1.6809d8p-2f;
+    for (const float z2 : {-0x1.6809dcp-2f, z1 - 0x1p-12f}) {
+        const std::vector<VertexIn> v = {{{0, 0, z1}, {}}, {{16, 0, z1}, {}}, {{0, 16, z1}, {}},
+                                         {{0, 0, z2}, {}}, {{16, 0, z2}, {}}, {{0, 16, z2}, {}}};
+        const std::vector<std::uint32_t> idx = {0, 1, 2, 3, 4, 5};
+        DrawCall d{v, idx, &kPosition, {}};
+        d.uniforms.model_view_projection = window_to_clip(16, 16);
+        const Framebuffer fb = rasterize(16, 16, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), {});
+        REQUIRE(!fb.depth.empty());
+        const bool hair = z2 == -0x1.6809dcp-2f;
+        CHECK(z2 * 0.5f + 0.5f < z1 * 0.5f + 0.5f);
+        CHECK((depth24(z2 * 0.5f + 0.5f) == depth24(z1 * 0.5f + 0.5f)) == hair);
+        CHECK(fb.pixel(2, 13)[2] == (hair ? z1 : z2));
+    }
+}
+
+TEST_CASE("leaving the depth buffer out changes no pixel of a non-overlapping mesh with T-junctions", "[raster][depth]") {
+    // A strip of squares, each split into two triangles, next to one long triangle whose edge
+    // carries the strip's vertices: T-junctions along it. Drawn with and without a forced depth
+    // buffer, both fill rules.
+    std::vector<VertexIn> v;
+    std::vector<std::uint32_t> idx;
+    auto add = [&](glm::vec3 p) {
+        v.push_back({p, {}});
+        return std::uint32_t(v.size() - 1);
+    };
+    for (int i = 0; i < 6; ++i) {
+        const float x0 = 3.25f + 9.5f * float(i), x1 = x0 + 9.5f;
+        const std::uint32_t a = add({x0, 20.5f, 0}), b = add({x1, 20.5f, 0}), c = add({x1, 40.5f, 0}), d = add({x0, 40.5f, 0});
+        idx.insert(idx.end(), {a, b, c, a, c, d});
+    }
+    const std::uint32_t l = add({3.25f, 20.5f, 0}), r = add({60.25f, 20.5f, 0}), bottom = add({31.0f, 1.5f, 0});
+    idx.insert(idx.end(), {l, bottom, r});
+    for (FillRule rule : {FillRule::LeftBottom, FillRule::RightTop}) {
+        DrawCall d{v, idx, &kPosition, {}};
+        d.uniforms.model_view_projection = window_to_clip(64, 64);
+        RasterOptions lean, depth;
+        lean.fill_rule = depth.fill_rule = rule;
+        depth.force_general_path = true;
+        RasterStats stats;
+        const Framebuffer a = rasterize(64, 64, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), lean, &stats);
+        const Framebuffer b = rasterize(64, 64, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), depth);
+        CHECK_FALSE(stats.depth_buffer);
+        CHECK(a.depth.empty());
+        CHECK(a.rgba == b.rgba);
+    }
+}
+
+}  // namespace qs::test
