@@ -1,6 +1,6 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture, and the conformance scenes (geometry_scenes.h). The outputs are
-// committed; a test regenerates them and compares.
+// plane and its texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
+// outputs are committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
 
@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "apps/geometry_scenes.h"
+#include "apps/texture_scenes.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/scene.h"
@@ -95,7 +96,11 @@ qs::Scene table_1_1_plane(const std::filesystem::path& dir) {
     s.camera.view = glm::translate(glm::mat4(1), {0, 0, -1});
     s.clear_color = {0, 0, 0, 1};
     s.width = 500, s.height = 500;
-    s.textures.push_back({dir / "textures" / "halftone-source.png", {}, false});
+    // The texture of the Table 1.1 benchmark: bilinear, clamped, no mipmaps.
+    qs::Texture texture;
+    texture.image.file = dir / "textures" / "halftone-source.png";
+    texture.sampler = {qs::Filter::Linear, qs::Filter::Linear, qs::Wrap::ClampToEdge, qs::Wrap::ClampToEdge};
+    s.textures.push_back(texture);
     qs::Object o = object("plane", 0, glm::mat4(1), "perlin");
     o.texture = 0;
     s.objects.push_back(o);
@@ -103,17 +108,19 @@ qs::Scene table_1_1_plane(const std::filesystem::path& dir) {
 }
 
 // A 256x256 colour image for the texture shaders: smooth hues, a grey ramp and a few discs, so
-// that the halftone screens show every ink.
+// that the halftone screens show every ink. The plane's st has t = 0 at the bottom of the window
+// (the book's gl_MultiTexCoord0), and glTF puts t = 0 at an image's first row: so the picture is
+// stored bottom row first, and shows upright on the plane (the grey ramp along its bottom edge).
 qs::Image test_image() {
     constexpr int n = 256;
     qs::Image img{n, n, std::vector<float>(std::size_t(n) * n * 4)};
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
-            const double u = (x + 0.5) / n, v = (y + 0.5) / n;
+            const double u = (x + 0.5) / n, v = (n - 1 - y + 0.5) / n;  // v down the picture as shown
             double r = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (u + 0.0));
             double g = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (u + v * 0.5 + 0.33));
             double b = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (v + 0.66));
-            if (v > 0.85) r = g = b = u;  // grey ramp along the top
+            if (v > 0.85) r = g = b = u;  // grey ramp
             const double cx[3] = {0.3, 0.65, 0.5}, cy[3] = {0.35, 0.5, 0.7}, rad[3] = {0.12, 0.09, 0.06};
             for (int i = 0; i < 3; ++i) {
                 if (std::hypot(u - cx[i], v - cy[i]) < rad[i]) r = (i == 0), g = (i == 1), b = (i == 2) ? 0.2 : 0.9;
@@ -140,6 +147,7 @@ int main(int argc, char** argv) {
         qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
         qs::write_geometry_scenes(dir);
+        qs::write_texture_scenes(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
         return 1;

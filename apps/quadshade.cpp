@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "shading/catalogue.h"
+#include "shading/glsl_export.h"
+#include "render/plugins.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "render/scene_render.h"
@@ -35,7 +37,7 @@ const char* kHelp =
     "\n"
     "usage:\n"
     "  quadshade render SCENE.gltf -o OUT.png [options]   render a glTF scene\n"
-    "  quadshade shaders                                  list the shader catalogue\n"
+    "  quadshade shaders [--export-glsl DIR]              list the shader catalogue (or write its GLSL)\n"
     "  quadshade compare A B [options]                    compare two images\n"
     "  quadshade COMMAND --help                           help on one command\n";
 
@@ -165,6 +167,8 @@ int cmd_render(int argc, char** argv) {
             if (fps <= 0.0f) throw UsageError("--fps must be positive");
         } else if (a == "--shader") {
             req.shader_override = need_value(i, argc, argv);
+        } else if (a == "--plugin") {
+            load_plugin(need_value(i, argc, argv));
         } else if (a == "--backend") {
             const std::string v = need_value(i, argc, argv);
             if (v == "raster") req.backend = Backend::Rasterizer;
@@ -294,12 +298,27 @@ int cmd_render(int argc, char** argv) {
 }
 
 int cmd_shaders(int argc, char** argv) {
+    std::optional<std::string> export_dir;
     for (int i = 2; i < argc; ++i) {
-        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-            std::puts("usage: quadshade shaders\nLists every catalogue shader and what it needs.");
+        const std::string a = argv[i];
+        if (a == "--help" || a == "-h") {
+            std::puts("usage: quadshade shaders [--export-glsl DIR]\n"
+                      "Lists every catalogue shader and what it needs; with --export-glsl, writes each shader's\n"
+                      "complete GLSL (DIR/NAME.vert, DIR/NAME.frag) as an OpenGL program compiles it\n"
+                      "(quadshade-reference --glsl DIR renders scenes from it).");
             return 0;
+        } else if (a == "--export-glsl") {
+            export_dir = need_value(i, argc, argv);
+        } else if (a == "--plugin") {
+            load_plugin(need_value(i, argc, argv));
+        } else {
+            throw UsageError("shaders: unexpected argument " + a);
         }
-        throw UsageError(std::string("shaders: unexpected argument ") + argv[i]);
+    }
+    if (export_dir) {
+        const int n = export_glsl(*export_dir);
+        std::printf("wrote the GLSL of %d shaders to %s\n", n, export_dir->c_str());
+        return 0;
     }
     auto coordinates = [](Coordinates c) {
         switch (c) {

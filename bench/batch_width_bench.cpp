@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 #include <string>
 #include <vector>
 
@@ -61,9 +62,9 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    glsl::sampler2D texture;
-    texture.width = texture.height = 64;
-    for (int t = 0; t < texture.width * texture.height * 4; ++t) texture.rgba.push_back(float(t % 13) / 13.0f);
+    std::vector<std::uint8_t> texels;
+    for (int t = 0; t < 64 * 64 * 4; ++t) texels.push_back(std::uint8_t(t % 13 * 19));
+    const glsl::sampler2D texture(64, 64, texels.data(), {});
     Uniforms u;
     u.time = 0.5f;
     u.teximage = &texture;

@@ -25,6 +25,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shading/catalogue.h"
+#include "shading/glsl_export.h"
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
@@ -47,7 +48,7 @@ struct View {
 
 void scale_texcoords(Scene& s, float k) {
     for (Mesh& m : s.meshes) {
-        for (VertexIn& v : m.vertices) v.texcoord *= k;
+        for (Vertex& v : m.vertices) v.texcoord *= k;
     }
 }
 
@@ -165,6 +166,7 @@ public:
         std::size_t total = 0, done = 0;
         for (const Family& f : families) total += f.views.size() * (modes_of(f).size() + 2);
         fs::create_directories(o_.out / "images");
+        export_glsl(o_.out / "glsl");  // what the reference compiles: the catalogue's GLSL text
         std::ofstream csv(o_.out / "study.csv");
         csv << "shader,view,mode,group,variant,ms,rms_vs_llvmpipe,max_vs_llvmpipe,rms_vs_truth,max_vs_truth,"
                "width,height,image,llvmpipe_image,truth_image,heat_image\n";
@@ -247,7 +249,7 @@ private:
     Image reference(Scene& scene, const Mode& m) {
         const int k = m.supersample;
         auto context = create_osmesa_context(scene.width * k, scene.height * k, GlDriver::Llvmpipe, o_.threads);
-        const Image gl = render_gl(scene, {scene.width * k, scene.height * k, {}, m.shader}, *context, kSource / "shading");
+        const Image gl = GlSceneRenderer(scene, {scene.width * k, scene.height * k, {}, m.shader}, *context, o_.out / "glsl").render();
         return k > 1 ? downsample(gl.rgba, gl.width, gl.height, k) : gl;
     }
 

@@ -4,7 +4,7 @@
 // compilation are reported separately); llvmpipe frames end with glFinish. Both render into a
 // float RGBA target, as the reference comparisons do.
 //
-//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--out DIR]
+//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--shaders a,b] [--out DIR]
 // Writes DIR/throughput.csv and DIR/throughput.md and prints the Markdown table.
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shading/catalogue.h"
+#include "shading/glsl_export.h"
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
@@ -75,7 +76,7 @@ std::string needs_of(const char* shader, const qs::RasterStats& frame) {
 
 // Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
 // differentials) next to llvmpipe, with the ray caster's one-off BVH build apart.
-std::string figure_frames(int threads, int repeat, const std::filesystem::path& shading) {
+std::string figure_frames(int threads, int repeat, const std::filesystem::path& glsl) {
     const std::filesystem::path file = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/figure-1.1.gltf";
     qs::Scene scene = qs::load_scene(file);
     std::ostringstream md;
@@ -107,7 +108,7 @@ std::string figure_frames(int threads, int repeat, const std::filesystem::path& 
     }
     auto context = qs::create_osmesa_context(scene.width, scene.height, qs::GlDriver::Llvmpipe, threads);
     const auto s0 = Clock::now();
-    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, ""}, *context, shading);
+    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, ""}, *context, glsl);
     gl.draw();
     const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
     const Stats l = time_frames(repeat, [&] { gl.draw(); });
@@ -123,25 +124,32 @@ int main(int argc, char** argv) {
     int threads = 2, repeat = 15;
     std::vector<int> sizes = {1024, 500};
     std::string out = "bench-results";
+    std::vector<std::string> only;  // --shaders: these rows only, and no Figure 1.1 frame
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto value = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
         if (a == "--threads") threads = std::max(1, std::atoi(value().c_str()));
         else if (a == "--repeat") repeat = std::max(3, std::atoi(value().c_str()));
         else if (a == "--out") out = value();
+        else if (a == "--shaders") {
+            std::stringstream ss(value());
+            for (std::string sh; std::getline(ss, sh, ',');) only.push_back(sh);
+        }
         else if (a == "--sizes") {
             sizes.clear();
             std::stringstream ss(value());
             for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::atoi(s.c_str()));
         } else {
-            std::fprintf(stderr, "usage: quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--out DIR]\n");
+            std::fprintf(stderr, "usage: quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] "
+                                 "[--shaders a,b] [--out DIR]\n");
             return a == "--help" ? 0 : 2;
         }
     }
     try {
         const std::filesystem::path plane = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/table-1.1-plane.gltf";
-        const std::filesystem::path shading = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "shading";
         std::filesystem::create_directories(out);
+        const std::filesystem::path glsl = std::filesystem::path(out) / "glsl";  // what llvmpipe compiles
+        qs::export_glsl(glsl);
         std::ofstream csv(std::filesystem::path(out) / "throughput.csv");
         csv << "shader,size,threads,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max,llvmpipe_ms_median,"
                "llvmpipe_ms_min,llvmpipe_ms_max,llvmpipe_setup_ms,quadshade_mfrags,llvmpipe_mfrags,speedup\n";
@@ -154,6 +162,7 @@ int main(int argc, char** argv) {
         for (int size : sizes) {
             auto context = qs::create_osmesa_context(size, size, qs::GlDriver::Llvmpipe, threads);
             for (const Row& row : kRows) {
+                if (!only.empty() && std::find(only.begin(), only.end(), row.shader) == only.end()) continue;
                 std::fprintf(stderr, "\r%-16s %4dx%-4d ...", row.shader, size, size);
                 qs::Scene scene = qs::load_scene(plane);
                 qs::FrameRequest req;
@@ -176,7 +185,7 @@ int main(int argc, char** argv) {
                               needs_of(row.shader, frame).c_str(), q.median, g.median, 100.0 * (1.0 - q.median / g.median));
                 special << saving;
                 const auto s0 = Clock::now();
-                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, shading);
+                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, glsl);
                 gl.draw();  // the first frame compiles llvmpipe's code
                 const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
                 const Stats l = time_frames(repeat, [&] { gl.draw(); });
@@ -200,7 +209,8 @@ int main(int argc, char** argv) {
         std::printf("\nLeaving out what a shader does not need (median ms per frame, %d threads): the specialised "
                     "pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
                     threads, special.str().c_str());
-        const std::string figure = figure_frames(threads, repeat, shading);
+        if (!only.empty()) return 0;
+        const std::string figure = figure_frames(threads, repeat, glsl);
         std::ofstream(std::filesystem::path(out) / "figure-1.1-frame.md") << figure;
         std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", threads, repeat,
                     figure.c_str());

@@ -13,6 +13,9 @@ struct DrawCall {
     std::span<const std::uint32_t> indices;  // three per triangle
     const Program* program = nullptr;
     Uniforms uniforms;
+    // The bound texture picks a mipmap level or a filter from the level of detail: shade in quads
+    // even if the shader takes no derivatives of its own, as a GL driver does for texture2D.
+    bool texture_lod = false;
 };
 
 }  // namespace qs

@@ -512,12 +512,14 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
                        needs.varyings,
                        needs.flat_varyings,
                        options.fused_interpolation};
-        if (!needs.derivatives && !options.force_general_path) {
+        // Derivatives: the shader's own, or a texture's level of detail.
+        const bool derivatives = needs.derivatives || call.texture_lod;
+        if (!derivatives && !options.force_general_path) {
             d.mode.derivatives = Derivatives::None;  // per pixel, no helper lanes
             d.quads = false;
         } else if (d.mode.derivatives == Derivatives::None) {
-            d.mode.derivatives = needs.derivatives ? Derivatives::Fine : Derivatives::None;
-            d.quads = needs.derivatives;
+            d.mode.derivatives = derivatives ? Derivatives::Fine : Derivatives::None;
+            d.quads = derivatives;
         } else if (d.mode.derivatives == Derivatives::Analytic) {
             d.quads = false;  // Dual2 carries derivatives: no neighbours needed
         }

@@ -399,9 +399,11 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
         const Needs& needs = draws[i].program->info().needs;
         PreparedDraw d{&draws[i], &im.meshes[i], {options.derivatives, options.precision, options.check_undefined}, true, needs.varyings,
                        needs.flat_varyings};
-        if (!needs.derivatives || d.mode.derivatives == Derivatives::None) {
-            d.mode.derivatives = needs.derivatives ? Derivatives::Fine : Derivatives::None;
-            d.quads = needs.derivatives;
+        // Derivatives: the shader's own, or a texture's level of detail.
+        const bool derivatives = needs.derivatives || draws[i].texture_lod;
+        if (!derivatives || d.mode.derivatives == Derivatives::None) {
+            d.mode.derivatives = derivatives ? Derivatives::Fine : Derivatives::None;
+            d.quads = derivatives;
         } else if (d.mode.derivatives == Derivatives::Analytic) {
             d.quads = false;  // ray differentials: no neighbours needed
         }

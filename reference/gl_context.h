@@ -23,6 +23,8 @@ public:
     virtual std::vector<float> read_rgba() const = 0;
     virtual int width() const = 0;
     virtual int height() const = 0;
+    // Makes this context the current one (a new context is current once created).
+    virtual void make_current() = 0;
 };
 
 // Creates and makes current an OSMesa context of width x height with a 24-bit depth buffer.

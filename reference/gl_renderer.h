@@ -1,12 +1,18 @@
 #pragma once
-// Renders a scene through OpenGL with the original GLSL of each object's shader (the files
-// listed in its ShaderInfo, under shading/), with the same meshes, matrices, uniforms and
-// textures quadshade uses. Fixed-function state as the chapter's demo: depth test LESS against
-// a depth buffer cleared to 1 for every object, no culling, no blending.
+// Renders a scene as any OpenGL application would, from the glTF alone: each object's shader is
+// the GLSL pair NAME.vert / NAME.frag in a folder (`quadshade shaders --export-glsl DIR` writes
+// it), its uniforms are bound by name (`time`, `teximage`, `dims`), its texture is decoded here
+// (texture_image.h) and uploaded in glTF's orientation (the image's first row at t = 0) with the
+// glTF sampler's wraps and filters, and glGenerateMipmap when the minification filter reads
+// mipmaps. Fixed-function state: depth test LESS against a buffer cleared to 1, no culling, no
+// blending. Shared with the renderer: the scene model and the GLSL text, nothing else.
 
+#include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "reference/gl_context.h"
 #include "scenes/image_io.h"
@@ -17,40 +23,62 @@ namespace qs {
 struct GlFrameRequest {
     int width = 0, height = 0;
     std::optional<float> time;
-    std::string shader_override;
+    std::string shader_override;  // draw every object with this shader's GLSL
 };
 
-// The GLSL text of one stage: the #version line of ShaderInfo::glsl_version, the shader's
-// defines, then its files in order.
-std::string glsl_source(const ShaderInfo& info, bool vertex_stage, const std::filesystem::path& shading_dir);
+// The programs of one context, each linked once from a folder of exported GLSL (NAME.vert,
+// NAME.frag) and deleted with it: renderers drawing into the same context share them.
+class GlPrograms {
+public:
+    explicit GlPrograms(std::filesystem::path glsl_dir) : glsl_dir_(std::move(glsl_dir)) {}
+    ~GlPrograms();
+    GlPrograms(const GlPrograms&) = delete;
+    GlPrograms& operator=(const GlPrograms&) = delete;
+    // Throws std::runtime_error with the compiler's log when the GLSL fails, or naming a
+    // uniform the reference does not bind.
+    unsigned program(const std::string& shader);
+
+private:
+    std::filesystem::path glsl_dir_;
+    std::vector<std::pair<std::string, unsigned>> linked_;
+};
 
 // Renders a scene's frames into the current context: GLSL compiled and textures uploaded once,
-// at construction. Throws std::runtime_error with the compiler's log when GLSL fails.
+// at construction. Throws std::runtime_error with the compiler's log when GLSL fails, naming the
+// file and field of a texture that cannot be read, and naming a uniform it cannot bind.
 class GlSceneRenderer {
 public:
-    GlSceneRenderer(Scene& scene, const GlFrameRequest& request, GlContext& context,
-                    const std::filesystem::path& shading_dir);
+    GlSceneRenderer(const Scene& scene, const GlFrameRequest& request, GlContext& context,
+                    const std::filesystem::path& glsl_dir);
+    // With the context's programs, linked by an earlier renderer or kept for a later one.
+    GlSceneRenderer(const Scene& scene, const GlFrameRequest& request, GlContext& context, GlPrograms& programs);
     ~GlSceneRenderer();
     GlSceneRenderer(const GlSceneRenderer&) = delete;
     GlSceneRenderer& operator=(const GlSceneRenderer&) = delete;
 
     // Draws the frame and waits for it (glFinish), without reading it back.
     void draw();
-    // draw(), then the colour buffer.
+    // draw(), then the colour buffer as floats, rows top-down.
     Image render();
+    // The last frame drawn as GL converts it to 8-bit unorm (glReadPixels of GL_UNSIGNED_BYTE),
+    // rows top-down.
+    Image8 read_unorm8() const;
 
 private:
-    Scene& scene_;
+    struct Texture {
+        unsigned id = 0;
+        int width = 0, height = 0;
+    };
+    void prepare(GlPrograms& programs);
+    const Texture& texture_of(const Object& o, const std::string& shader);
+
+    const Scene& scene_;
     GlFrameRequest request_;
     GlContext& context_;
-    std::vector<const ShaderInfo*> infos_;      // per object
-    std::vector<unsigned> programs_;            // per object
-    std::vector<unsigned> textures_;            // per object, 0 for none
-    std::vector<const glsl::sampler2D*> texels_;  // per object, nullptr for none
+    std::unique_ptr<GlPrograms> own_programs_;  // when constructed from a GLSL folder
+    std::vector<unsigned> programs_;       // per object
+    std::vector<const Texture*> bound_;    // per object, nullptr for none
+    std::vector<Texture> textures_;        // per scene texture, id 0 until uploaded
 };
-
-// One frame: GlSceneRenderer(...).render().
-Image render_gl(Scene& scene, const GlFrameRequest& request, GlContext& context,
-                const std::filesystem::path& shading_dir);
 
 }  // namespace qs

@@ -18,8 +18,16 @@ public:
                                OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
         ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
         if (!ctx_) throw std::runtime_error("OSMesaCreateContextAttribs failed");
-        if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_FLOAT, w, h)) {
+        try {
+            make_current();
+        } catch (...) {
             OSMesaDestroyContext(ctx_);
+            throw;
+        }
+    }
+    void make_current() override {
+        if (OSMesaGetCurrentContext() == ctx_) return;
+        if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_FLOAT, width_, height_)) {
             throw std::runtime_error("OSMesaMakeCurrent with a float buffer failed");
         }
         // Rows in `buffer_` top-down, like image files.

@@ -1,113 +1,105 @@
-// quadshade-reference: renders a scene's original GLSL through OSMesa (Mesa llvmpipe or
-// softpipe) into a float image, the reference quadshade's images are compared with.
+// quadshade-reference: renders a scene through OSMesa (Mesa llvmpipe or softpipe) from the glTF
+// alone and the shaders' GLSL (written by `quadshade shaders --export-glsl DIR`), the reference
+// quadshade's images are compared with.
 //
-//   quadshade-reference SCENE.gltf -o OUT.exr [-o OUT.png ...] [--driver llvmpipe|softpipe] [--size WxH]
-//                       [--time T] [--shader NAME] [--threads N] [--repeat N]
 // Exit codes: 0 success, 1 bad input or GL failure, 2 bad usage.
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
 
 namespace {
 
-const char* kUsage =
-    "usage: quadshade-reference SCENE.gltf -o OUT.exr [-o OUT.png ...] [options]\n"
-    "  -o FILE          an output; .exr/.tif keep float, .png is GL's 8-bit conversion (repeatable)\n"
-    "  --driver D       llvmpipe (default) or softpipe\n"
-    "  --size WxH       image size (default: the scene's)\n"
-    "  --time T         the `time` uniform (default: the scene's)\n"
-    "  --shader NAME    draw every object with this catalogue shader's GLSL\n"
-    "  --threads N      LP_NUM_THREADS for llvmpipe\n"
-    "  --repeat N       render N times and report the median frame time (glFinish per frame)\n"
-    "The output records the driver, renderer string and Mesa version in its metadata.\n";
+struct Options {
+    std::string scene, shader, glsl, size;
+    std::vector<std::string> outputs;
+    qs::GlDriver driver = qs::GlDriver::Llvmpipe;
+    std::optional<float> time;
+    int threads = 0, repeat = 1;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string scene_path, shader;
-    std::vector<std::string> outputs;
-    qs::GlDriver driver = qs::GlDriver::Llvmpipe;
-    int width = 0, height = 0, threads = 0, repeat = 1;
-    std::optional<float> time;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) {
-                std::fprintf(stderr, "quadshade-reference: %s needs a value\n%s", a.c_str(), kUsage);
-                std::exit(2);
-            }
-            return argv[++i];
-        };
-        if (a == "--help" || a == "-h") {
-            std::fputs(kUsage, stdout);
-            return 0;
-        } else if (a == "-o") {
-            outputs.push_back(value());
-        } else if (a == "--driver") {
-            const std::string d = value();
-            if (d == "llvmpipe") driver = qs::GlDriver::Llvmpipe;
-            else if (d == "softpipe") driver = qs::GlDriver::Softpipe;
-            else { std::fprintf(stderr, "quadshade-reference: unknown driver '%s'\n", d.c_str()); return 2; }
-        } else if (a == "--size") {
-            if (std::sscanf(value().c_str(), "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0 ||
-                width > 16384 || height > 16384) {
-                std::fprintf(stderr, "quadshade-reference: --size expects WxH within 1..16384\n");
-                return 2;
-            }
-        } else if (a == "--time") {
-            time = std::strtof(value().c_str(), nullptr);
-        } else if (a == "--shader") {
-            shader = value();
-        } else if (a == "--threads") {
-            threads = std::atoi(value().c_str());
-        } else if (a == "--repeat") {
-            repeat = std::max(1, std::atoi(value().c_str()));
-        } else if (scene_path.empty() && a[0] != '-') {
-            scene_path = a;
-        } else {
-            std::fprintf(stderr, "quadshade-reference: unexpected argument '%s'\n%s", a.c_str(), kUsage);
+    Options o;
+    CLI::App app("quadshade-reference: renders a glTF scene through OSMesa from the shaders' original GLSL, as any "
+                 "OpenGL application would. The outputs record the driver, renderer string and Mesa version in their "
+                 "metadata.",
+                 "quadshade-reference");
+    app.add_option("scene", o.scene, "the glTF scene (.gltf or .glb)")->required();
+    app.add_option("-o,--output", o.outputs,
+                   "an image to write: .exr/.tif keep float, .png is GL's 8-bit conversion (glReadPixels); repeatable")
+        ->required();
+    app.add_option("--glsl", o.glsl, "folder of NAME.vert / NAME.frag (quadshade shaders --export-glsl DIR)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    std::string driver = "llvmpipe";
+    app.add_option("--driver", driver, "llvmpipe (default) or softpipe")->check(CLI::IsMember({"llvmpipe", "softpipe"}));
+    app.add_option("--size", o.size, "image size WxH (default: the scene's)");
+    app.add_option("--time", o.time, "the `time` uniform (default: the scene's)");
+    app.add_option("--shader", o.shader, "draw every object with this shader's GLSL");
+    app.add_option("--threads", o.threads, "LP_NUM_THREADS for llvmpipe")->check(CLI::Range(0, 1024));
+    app.add_option("--repeat", o.repeat, "render N times and report the median frame time (glFinish per frame)")
+        ->check(CLI::Range(1, 100000));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    o.driver = driver == "softpipe" ? qs::GlDriver::Softpipe : qs::GlDriver::Llvmpipe;
+    int width = 0, height = 0;
+    if (!o.size.empty()) {
+        std::size_t x = o.size.find('x');
+        try {
+            if (x == std::string::npos) throw std::invalid_argument("no x");
+            std::size_t used = 0;
+            width = std::stoi(o.size.substr(0, x), &used);
+            if (used != x) throw std::invalid_argument("trailing");
+            height = std::stoi(o.size.substr(x + 1), &used);
+            if (used != o.size.size() - x - 1) throw std::invalid_argument("trailing");
+        } catch (const std::exception&) {
+            width = 0;
+        }
+        if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+            std::fprintf(stderr, "quadshade-reference: --size expects WxH within 1..16384, got '%s'\n", o.size.c_str());
             return 2;
         }
     }
-    if (scene_path.empty() || outputs.empty()) {
-        std::fputs(kUsage, stderr);
-        return 2;
-    }
     try {
-        qs::Scene scene = qs::load_scene(scene_path);
+        const qs::Scene scene = qs::load_scene(o.scene);
         if (width == 0) width = scene.width, height = scene.height;
         const auto t0 = std::chrono::steady_clock::now();
-        auto context = qs::create_osmesa_context(width, height, driver, threads);
+        auto context = qs::create_osmesa_context(width, height, o.driver, o.threads);
         const qs::GlContextInfo info = context->info();
-        const std::filesystem::path shading_dir = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "shading";
-        qs::GlFrameRequest req{width, height, time, shader};
         // The first frame includes GLSL compilation (and llvmpipe's JIT): timed separately.
-        qs::GlSceneRenderer gl(scene, req, *context, shading_dir);
-        qs::Image img = gl.render();
+        qs::GlSceneRenderer gl(scene, {width, height, o.time, o.shader}, *context, o.glsl);
+        const qs::Image img = gl.render();
         const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const qs::Metadata metadata = {
+            {"quadshade:reference_driver", o.driver == qs::GlDriver::Softpipe ? "softpipe" : "llvmpipe"},
+            {"quadshade:gl_renderer", info.renderer},
+            {"quadshade:gl_version", info.version},
+            {"quadshade:scene", o.scene}};
+        for (const std::string& output : o.outputs) {
+            if (qs::is_float_format(output)) qs::write_image(output, img, metadata, true);
+            else qs::write_image(output, gl.read_unorm8(), metadata, true);
+        }
         std::vector<double> frames;
-        for (int r = 1; r < repeat; ++r) {
+        for (int r = 1; r < o.repeat; ++r) {
             const auto f0 = std::chrono::steady_clock::now();
             gl.draw();
             frames.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - f0).count());
         }
-        for (const std::string& output : outputs) {
-            qs::write_image(output, img,
-                            {{"quadshade:reference_driver", driver == qs::GlDriver::Softpipe ? "softpipe" : "llvmpipe"},
-                             {"quadshade:gl_renderer", info.renderer},
-                             {"quadshade:gl_version", info.version},
-                             {"quadshade:scene", scene_path}},
-                            true);
-        }
-        std::fprintf(stderr, "quadshade-reference: %s | %s | first frame (context, compile, render) %.1f ms", info.renderer.c_str(),
-                     info.version.c_str(), first * 1e3);
+        std::fprintf(stderr, "quadshade-reference: %s | %s | first frame (context, compile, render) %.1f ms",
+                     info.renderer.c_str(), info.version.c_str(), first * 1e3);
         if (!frames.empty()) {
             std::sort(frames.begin(), frames.end());
             std::fprintf(stderr, " | median frame %.3f ms over %zu", frames[frames.size() / 2] * 1e3, frames.size());

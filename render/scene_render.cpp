@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "shading/catalogue.h"
-#include "scenes/image_io.h"
+#include "render/textures.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/ray_caster.h"
 #endif
@@ -26,21 +26,16 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
-const glsl::sampler2D& texture_for(Scene& scene, const Object& o, const Program& program) {
+const glsl::sampler2D& SceneRenderer::texture_for(const Object& o, const Program& program) {
     if (o.texture < 0) {
-        throw SceneError(scene.file.string() + ": material '" + o.material + "': shader '" +
-                         std::string(program.info().name) + "' samples a texture but extras.teximage is missing");
+        throw SceneError(scene_.file.string() + ": material '" + o.material + "': shader '" +
+                         std::string(program.info().name) +
+                         "' samples a texture (teximage) but the material has no "
+                         "pbrMetallicRoughness.baseColorTexture or extras.teximage");
     }
-    Texture& t = scene.textures[std::size_t(o.texture)];
-    if (!t.loaded) {
-        try {
-            t.texels = load_texture(t.path);
-        } catch (const ImageError& e) {
-            throw SceneError(scene.file.string() + ": material '" + o.material + "' extras.teximage: " + e.what());
-        }
-        t.loaded = true;
-    }
-    return t.texels;
+    std::unique_ptr<glsl::sampler2D>& t = textures_[std::size_t(o.texture)];
+    if (!t) t = std::make_unique<glsl::sampler2D>(load_texture(scene_, scene_.textures[std::size_t(o.texture)]));
+    return *t;
 }
 
 #if defined(QUADSHADE_HAS_RAYCAST)
@@ -58,17 +53,27 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
       width_(request.width > 0 ? request.width : scene.width),
       height_(request.height > 0 ? request.height : scene.height) {
     const float aspect = float(width_) / float(height_);
+    vertices_.resize(scene.meshes.size());
+    textures_.resize(scene.textures.size());
     draws_.reserve(scene.objects.size());
     for (const Object& o : scene.objects) {
         const Program& program = program_for(scene, o, request.shader_override);
         DrawCall d;
         const Mesh& mesh = scene.meshes[o.mesh];
-        d.vertices = mesh.vertices;
+        std::vector<VertexIn>& vertices = vertices_[o.mesh];
+        if (vertices.empty()) {
+            vertices.reserve(mesh.vertices.size());
+            for (const Vertex& v : mesh.vertices) vertices.push_back({v.position, v.texcoord});
+        }
+        d.vertices = vertices;
         d.indices = mesh.indices;
         d.program = &program;
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = float(request.time.value_or(double(scene.time)));
-        if (program.info().needs.texture) d.uniforms.teximage = &texture_for(scene, o, program);
+        if (program.info().needs.texture) {
+            d.uniforms.teximage = &texture_for(o, program);
+            d.texture_lod = d.uniforms.teximage->needs_lod();
+        }
         draws_.push_back(d);
     }
     if (request.backend == Backend::RayCaster) {

@@ -30,8 +30,9 @@ struct FrameRequest {
 
 // A scene made ready for frames: shaders resolved, textures loaded, draw calls built and, for the
 // ray caster, the BVH built; each frame then only changes the time. Throws SceneError for an
-// unknown or missing shader (naming the scene file and material) or a texture that cannot be
-// read, std::runtime_error when the ray caster was not built in.
+// unknown or missing shader (naming the scene file and material), a shader that samples a
+// texture its material lacks, or a texture that cannot be read (naming the file and the field),
+// std::runtime_error when the ray caster was not built in.
 class SceneRenderer {
 public:
     SceneRenderer(Scene& scene, const FrameRequest& request);
@@ -45,9 +46,14 @@ public:
     double bvh_build_seconds() const;  // 0 for the rasterizer
 
 private:
+    // The texture an object's program samples, loaded on first use.
+    const glsl::sampler2D& texture_for(const Object& object, const Program& program);
+
     Scene& scene_;
     FrameRequest request_;
     int width_, height_;
+    std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
+    std::vector<std::unique_ptr<glsl::sampler2D>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> draws_;
     struct Caster;
     std::unique_ptr<Caster> caster_;
@@ -56,10 +62,6 @@ private:
 // One frame, for callers that render a scene once.
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
 void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
-
-// The texture an object's program samples, loaded on first use. Throws SceneError naming the
-// material when extras.teximage is missing or unreadable.
-const glsl::sampler2D& texture_for(Scene& scene, const Object& object, const Program& program);
 
 // The shader each object is drawn with under `shader_override`, checked against the catalogue.
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override);

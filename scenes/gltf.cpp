@@ -2,6 +2,7 @@
 #include "scenes/gltf.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -133,12 +134,175 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
 
 double number_of(const tinygltf::Value& v) { return v.IsInt() ? double(v.Get<int>()) : v.Get<double>(); }
 
+// tinygltf's image callback: keep the encoded bytes of a data: URI (the only place they are
+// kept), decode nothing. Files are read, and bufferViews sliced, when a texture is first used.
+bool keep_embedded_image(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                         int size, void*) {
+    if (image->uri.empty() && image->bufferView < 0) image->image.assign(bytes, bytes + size);
+    image->as_is = true;
+    return true;
+}
+
+// RFC 4648 base64, for data: URIs.
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+        std::uint32_t v = std::uint32_t(bytes[i]) << 16;
+        if (n > 1) v |= std::uint32_t(bytes[i + 1]) << 8;
+        if (n > 2) v |= bytes[i + 2];
+        for (std::size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63] : '=';
+    }
+    return out;
+}
+
+// tinygltf's image writer: write no file, keep each image's URI (or bufferView) as it is.
+bool keep_image_uri(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) { return false; }
+
+// The file a glTF URI names: percent-decoded (RFC 3986, as glTF requires), relative to the
+// scene's folder; an absolute path or another scheme is refused. (Whether a relative URI may
+// leave the folder is the input hardening's decision; this is the one place to make it.)
+std::filesystem::path resolve_uri(const std::filesystem::path& scene_file, const std::string& uri, const std::string& field) {
+    std::string decoded;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            decoded += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            decoded += uri[i];
+        }
+    }
+    const std::filesystem::path rel(decoded);
+    if (decoded.empty() || decoded.find('\0') != std::string::npos || rel.is_absolute() || decoded.find(':') != std::string::npos) {
+        fail(scene_file, field, "'" + uri + "' is not a relative path");
+    }
+    return scene_file.parent_path() / rel;
+}
+
+// The textures the objects' materials bind to `teximage`, each made once.
+class TextureReader {
+public:
+    TextureReader(const tinygltf::Model& m, const std::filesystem::path& file, Scene& scene)
+        : m_(m), file_(file), scene_(scene) {}
+
+    // Material `mi`'s texture: extras.teximage if it names a file (with the baseColorTexture's
+    // sampler, if any), else pbrMetallicRoughness.baseColorTexture; -1 for neither.
+    int of_material(int mi) {
+        const tinygltf::Material& mat = m_.materials[std::size_t(mi)];
+        const std::string mf = "materials[" + std::to_string(mi) + "]";
+        const tinygltf::TextureInfo& base = mat.pbrMetallicRoughness.baseColorTexture;
+        const std::string base_field = mf + ".pbrMetallicRoughness.baseColorTexture";
+        if (base.index >= 0 && base.texCoord != 0) {
+            fail(file_, base_field + ".texCoord", "only TEXCOORD_0 is supported, found " + std::to_string(base.texCoord));
+        }
+        if (mat.extras.IsObject() && mat.extras.Has("teximage")) {
+            const tinygltf::Value& v = mat.extras.Get("teximage");
+            if (!v.IsString()) fail(file_, mf + ".extras.teximage", "expected a file name");
+            Texture t;
+            t.field = mf + ".extras.teximage";
+            t.image.file = resolve_uri(file_, v.Get<std::string>(), t.field);
+            if (base.index >= 0) t.sampler = sampler_of(texture_at(base.index, base_field), base_field);
+            for (std::size_t i = 0; i < scene_.textures.size(); ++i) {  // the same file and sampler: one texture
+                const Texture& o = scene_.textures[i];
+                if (o.image.kind == ImageSource::Kind::File && o.image.file == t.image.file && o.sampler == t.sampler) return int(i);
+            }
+            return add(std::move(t));
+        }
+        if (base.index < 0) return -1;
+        const auto [it, fresh] = gltf_textures_.try_emplace(base.index, -1);
+        if (fresh) it->second = add(read_texture(base.index, base_field));
+        return it->second;
+    }
+
+private:
+    const tinygltf::Texture& texture_at(int index, const std::string& field) const {
+        if (std::size_t(index) >= m_.textures.size()) fail(file_, field + ".index", "texture index out of range");
+        return m_.textures[std::size_t(index)];
+    }
+
+    Texture read_texture(int index, const std::string& field) const {
+        const tinygltf::Texture& gt = texture_at(index, field);
+        const std::string tf = "textures[" + std::to_string(index) + "]";
+        if (gt.source < 0 || std::size_t(gt.source) >= m_.images.size()) {
+            fail(file_, tf + ".source", gt.source < 0 ? "no image (only PNG/JPEG sources are supported)" : "image index out of range");
+        }
+        const tinygltf::Image& image = m_.images[std::size_t(gt.source)];
+        Texture t;
+        t.field = field + " (" + tf + ", images[" + std::to_string(gt.source) + "])";
+        t.sampler = sampler_of(gt, field);
+        t.image.mime_type = image.mimeType;
+        if (image.bufferView >= 0) {
+            t.image.kind = ImageSource::Kind::BufferView;
+            const std::string vf = "images[" + std::to_string(gt.source) + "].bufferView";
+            if (std::size_t(image.bufferView) >= m_.bufferViews.size()) fail(file_, vf, "index out of range");
+            const tinygltf::BufferView& v = m_.bufferViews[std::size_t(image.bufferView)];
+            if (v.buffer < 0 || std::size_t(v.buffer) >= m_.buffers.size()) fail(file_, vf, "buffer view has no buffer");
+            const std::vector<unsigned char>& b = m_.buffers[std::size_t(v.buffer)].data;
+            if (v.byteOffset > b.size() || v.byteLength > b.size() - v.byteOffset) {
+                fail(file_, vf, "reaches past the end of its buffer");
+            }
+            t.image.bytes.assign(b.begin() + std::ptrdiff_t(v.byteOffset), b.begin() + std::ptrdiff_t(v.byteOffset + v.byteLength));
+        } else if (image.uri.empty()) {
+            t.image.kind = ImageSource::Kind::DataUri;
+            t.image.bytes.assign(image.image.begin(), image.image.end());
+            if (t.image.bytes.empty()) fail(file_, "images[" + std::to_string(gt.source) + "].uri", "empty data: URI");
+        } else {
+            t.image.file = resolve_uri(file_, image.uri, "images[" + std::to_string(gt.source) + "].uri");
+        }
+        return t;
+    }
+
+    // The texture's sampler, glTF's defaults where it gives none, its values checked.
+    Sampler sampler_of(const tinygltf::Texture& gt, const std::string& field) const {
+        Sampler s;
+        if (gt.sampler < 0) return s;
+        const std::string sf = "samplers[" + std::to_string(gt.sampler) + "]";
+        if (std::size_t(gt.sampler) >= m_.samplers.size()) fail(file_, field + " sampler", sf + " is out of range");
+        const tinygltf::Sampler& g = m_.samplers[std::size_t(gt.sampler)];
+        auto wrap = [&](int v, const char* name) {
+            if (v != int(Wrap::Repeat) && v != int(Wrap::MirroredRepeat) && v != int(Wrap::ClampToEdge)) {
+                fail(file_, sf + "." + name, "unknown wrap mode " + std::to_string(v) + " (10497, 33648 or 33071)");
+            }
+            return Wrap(v);
+        };
+        s.wrap_s = wrap(g.wrapS, "wrapS");
+        s.wrap_t = wrap(g.wrapT, "wrapT");
+        if (g.magFilter != -1) {
+            if (g.magFilter != int(Filter::Nearest) && g.magFilter != int(Filter::Linear)) {
+                fail(file_, sf + ".magFilter", "unknown filter " + std::to_string(g.magFilter) + " (9728 or 9729)");
+            }
+            s.mag_filter = Filter(g.magFilter);
+        }
+        if (g.minFilter != -1) {
+            if (g.minFilter != int(Filter::Nearest) && g.minFilter != int(Filter::Linear) &&
+                (g.minFilter < int(Filter::NearestMipmapNearest) || g.minFilter > int(Filter::LinearMipmapLinear))) {
+                fail(file_, sf + ".minFilter", "unknown filter " + std::to_string(g.minFilter) + " (9728, 9729 or 9984-9987)");
+            }
+            s.min_filter = Filter(g.minFilter);
+        }
+        return s;
+    }
+
+    int add(Texture t) {
+        scene_.textures.push_back(std::move(t));
+        return int(scene_.textures.size() - 1);
+    }
+
+    const tinygltf::Model& m_;
+    const std::filesystem::path& file_;
+    Scene& scene_;
+    std::map<int, int> gltf_textures_;  // glTF texture index -> Scene::textures
+};
+
 // For a file without a camera: glTF's front view (looking down -Z, +Y up) at the bounding
 // sphere of everything in the scene, with a 45 degree vertical field of view.
 Camera framing_camera(const Scene& scene) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const Object& o : scene.objects) {
-        for (const VertexIn& v : scene.meshes[o.mesh].vertices) {
+        for (const Vertex& v : scene.meshes[o.mesh].vertices) {
             const glm::vec3 p = glm::vec3(o.world_from_object * glm::vec4(v.position, 1.0f));
             lo = glm::min(lo, p), hi = glm::max(hi, p);
         }
@@ -160,15 +324,20 @@ Scene load_scene(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path)) throw SceneError(path.string() + ": no such file");
     tinygltf::Model m;
     tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(keep_embedded_image, nullptr);
     std::string err, warn;
     const bool binary = path.extension() == ".glb";
     const bool ok = binary ? loader.LoadBinaryFromFile(&m, &err, &warn, path.string())
                            : loader.LoadASCIIFromFile(&m, &err, &warn, path.string());
     if (!ok) throw SceneError(path.string() + ": not a valid glTF file: " + (err.empty() ? warn : err));
 
+    // glTF: a loader must refuse a file that requires an extension it does not implement.
+    for (std::size_t i = 0; i < m.extensionsRequired.size(); ++i) {
+        fail(path, "extensionsRequired[" + std::to_string(i) + "]",
+             "'" + m.extensionsRequired[i] + "' is required but not supported (quadshade implements no extension)");
+    }
     Scene scene;
     scene.file = path;
-    const std::filesystem::path dir = path.parent_path();
     const int scene_index = m.defaultScene >= 0 ? m.defaultScene : 0;
     if (m.scenes.empty() || std::size_t(scene_index) >= m.scenes.size()) fail(path, "scenes", "no scene to render");
     const tinygltf::Scene& gs = m.scenes[std::size_t(scene_index)];
@@ -195,7 +364,7 @@ Scene load_scene(const std::filesystem::path& path) {
     }
 
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> mesh_of;  // (mesh, primitive) -> Scene::meshes
-    std::map<std::string, int> texture_of;
+    TextureReader textures(m, path, scene);
     bool have_camera = false;
     std::function<void(int, const glm::mat4&)> visit = [&](int ni, const glm::mat4& parent) {
         if (ni < 0 || std::size_t(ni) >= m.nodes.size()) fail(path, "nodes", "node index " + std::to_string(ni) + " out of range");
@@ -249,15 +418,7 @@ Scene load_scene(const std::filesystem::path& path) {
                         if (!gmat.extras.Get("shader").IsString()) fail(path, mf + ".shader", "expected a shader name");
                         o.shader = gmat.extras.Get("shader").Get<std::string>();
                     }
-                    if (gmat.extras.IsObject() && gmat.extras.Has("teximage")) {
-                        if (!gmat.extras.Get("teximage").IsString()) fail(path, mf + ".teximage", "expected a file name");
-                        const std::string rel = gmat.extras.Get("teximage").Get<std::string>();
-                        if (!texture_of.count(rel)) {
-                            texture_of[rel] = int(scene.textures.size());
-                            scene.textures.push_back({dir / rel, {}, false});
-                        }
-                        o.texture = texture_of[rel];
-                    }
+                    o.texture = textures.of_material(mat);
                 }
                 scene.objects.push_back(o);
             }
@@ -296,7 +457,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
     for (const Mesh& mesh : scene.meshes) {
         std::vector<float> pos, st;
         std::vector<double> mn(3, 1e30), mx(3, -1e30);
-        for (const VertexIn& v : mesh.vertices) {
+        for (const Vertex& v : mesh.vertices) {
             for (int i = 0; i < 3; ++i) {
                 pos.push_back(v.position[i]);
                 mn[std::size_t(i)] = std::min(mn[std::size_t(i)], double(v.position[i]));
@@ -317,20 +478,43 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
         gm.primitives.push_back(p);
         m.meshes.push_back(gm);
     }
-    buffer.uri = path.stem().string() + ".bin";
-    m.buffers.push_back(buffer);
+    const bool binary = path.extension() == ".glb";
+    if (!binary) buffer.uri = path.stem().string() + ".bin";
 
     tinygltf::Scene gs;
+    // Textures as glTF writes them: an image (a file beside the scene, a data: URI or a bufferView),
+    // a sampler, and the texture pairing them; materials bind theirs as baseColorTexture.
+    for (const Texture& t : scene.textures) {
+        tinygltf::Image image;
+        image.mimeType = t.image.mime_type;
+        switch (t.image.kind) {
+            case ImageSource::Kind::File:
+                image.uri = std::filesystem::relative(t.image.file, path.parent_path()).generic_string();
+                image.mimeType.clear();
+                break;
+            case ImageSource::Kind::DataUri:
+                image.uri = "data:" + t.image.mime_type + ";base64," + base64(t.image.bytes);
+                image.mimeType.clear();
+                break;
+            case ImageSource::Kind::BufferView:
+                image.bufferView = append(t.image.bytes.data(), t.image.bytes.size());
+                break;
+        }
+        m.images.push_back(image);
+        tinygltf::Sampler sampler;
+        sampler.magFilter = int(t.sampler.mag_filter), sampler.minFilter = int(t.sampler.min_filter);
+        sampler.wrapS = int(t.sampler.wrap_s), sampler.wrapT = int(t.sampler.wrap_t);
+        m.samplers.push_back(sampler);
+        tinygltf::Texture texture;
+        texture.source = texture.sampler = int(m.images.size() - 1);
+        m.textures.push_back(texture);
+    }
     std::vector<int> mesh_of_object;
     for (const Object& o : scene.objects) {
         tinygltf::Material mat;
         mat.name = o.name;
-        tinygltf::Value::Object extras{{"shader", tinygltf::Value(o.shader)}};
-        if (o.texture >= 0) {
-            extras["teximage"] = tinygltf::Value(
-                std::filesystem::relative(scene.textures[std::size_t(o.texture)].path, path.parent_path()).string());
-        }
-        mat.extras = tinygltf::Value(extras);
+        mat.extras = tinygltf::Value(tinygltf::Value::Object{{"shader", tinygltf::Value(o.shader)}});
+        mat.pbrMetallicRoughness.baseColorTexture.index = o.texture;
         m.materials.push_back(mat);
         // A mesh per object, since glTF puts the material on the primitive.
         tinygltf::Mesh gm = m.meshes[o.mesh];
@@ -407,8 +591,10 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
     m.scenes.push_back(gs);
     m.defaultScene = 0;
 
+    m.buffers.push_back(buffer);  // last: textures above may append to it
     tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToFile(&m, path.string(), false, false, true, false)) {
+    writer.SetImageWriter(keep_image_uri, nullptr);
+    if (!writer.WriteGltfSceneToFile(&m, path.string(), false, binary, !binary, binary)) {
         throw SceneError(path.string() + ": cannot write glTF");
     }
 }

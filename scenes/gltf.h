@@ -3,8 +3,10 @@
 //
 // quadshade's conventions, all inside standard glTF:
 //  - each mesh primitive (TRIANGLES, POSITION required, TEXCOORD_0 optional) is drawn with the
-//    shader its material names: materials[i].extras = { "shader": "flow_noise",
-//    "teximage": "textures/image.png" (optional, relative to the .gltf) };
+//    shader its material names: materials[i].extras = { "shader": "flow_noise" };
+//  - the shaders' `teximage` is the material's pbrMetallicRoughness.baseColorTexture (an image
+//    file, a data: URI or a bufferView, with its sampler), or the file extras.teximage names
+//    (relative to the .gltf; it keeps the baseColorTexture's sampler, if any);
 //  - the camera is the first node with a camera, in the default scene's node order; a file
 //    without one is seen from the front (down -Z, +Y up), framing its bounding sphere;
 //  - scenes[i].extras = { "clear_color": [r, g, b, a], "time": t, "size": [w, h] } (all optional).
@@ -37,7 +39,9 @@ struct SavedNode {
     int object = -1;
 };
 
-// Writes `scene` as .gltf with its buffer in a .bin beside it (used by the scene generator).
+// Writes `scene` as .gltf with its buffer in a .bin beside it, or as one .glb (used by the scene
+// generator). Textures become images (a URI relative to the file, a data: URI or a bufferView, as
+// their ImageSource says), samplers and baseColorTextures.
 // Without `nodes` each object is a root node with its world matrix; with them, the objects sit
 // where the nodes put them (each object on exactly one node; its world_from_object is not
 // written, the loader composes it from the hierarchy). Throws SceneError otherwise.

@@ -2,10 +2,12 @@
 #include "scenes/image_io.h"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <system_error>
 #include <unistd.h>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -50,16 +52,47 @@ Image read_image(const std::filesystem::path& path) {
     return img;
 }
 
-glsl::sampler2D load_texture(const std::filesystem::path& path) {
-    Image img = read_image(path);
-    glsl::sampler2D tex;
-    tex.width = img.width, tex.height = img.height;
-    tex.rgba.resize(img.rgba.size());
-    const std::size_t row = std::size_t(img.width) * 4;
-    for (int y = 0; y < img.height; ++y) {  // flip: texel row 0 is t = 0, the image's bottom
-        std::copy_n(&img.rgba[std::size_t(img.height - 1 - y) * row], row, &tex.rgba[std::size_t(y) * row]);
+Image8 read_texture_image(const ImageSource& source) {
+    std::string name = source.file.string();
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+    if (source.kind != ImageSource::Kind::File) {
+        // OpenImageIO picks the format by the name's extension first, then tries every reader.
+        const std::string& mime = source.mime_type;
+        const char* ext = mime == "image/png" ? ".png" : mime == "image/jpeg" ? ".jpg" : "";
+        name = std::string(source.kind == ImageSource::Kind::DataUri ? "data: URI image" : "bufferView image") + ext;
+        memory = std::make_unique<OIIO::Filesystem::IOMemReader>(source.bytes.data(), source.bytes.size());
     }
-    return tex;
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);  // PNG alpha stays as stored, as GL uploads it
+    if (memory) {
+        // OpenImageIO 2.4 reads from memory through this hint (its open()'s proxy argument alone
+        // still looks for a file).
+        void* proxy = memory.get();
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    }
+    auto in = OIIO::ImageInput::open(name, &config, memory.get());
+    if (!in) throw ImageError(name + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > (1 << 15) || spec.height > (1 << 15) ||
+        std::int64_t(spec.width) * spec.height > (std::int64_t(1) << 28)) {
+        throw ImageError(name + ": unsupported image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+    }
+    const int nc = spec.nchannels;
+    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<std::uint8_t> data(pixels * std::size_t(nc));
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, data.data())) {
+        throw ImageError(name + ": cannot decode image: " + in->geterror());
+    }
+    Image8 img{spec.width, spec.height, std::vector<std::uint8_t>(pixels * 4)};
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const std::uint8_t* s = &data[p * std::size_t(nc)];
+        std::uint8_t* d = &img.rgba[p * 4];
+        d[0] = s[0];
+        d[1] = nc >= 3 ? s[1] : s[0];
+        d[2] = nc >= 3 ? s[2] : s[0];
+        d[3] = nc >= 4 ? s[3] : (nc == 2 ? s[1] : 255);
+    }
+    return img;
 }
 
 bool is_float_format(const std::filesystem::path& path) {
@@ -68,8 +101,12 @@ bool is_float_format(const std::filesystem::path& path) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
 }
 
-void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
-    const bool is_float = is_float_format(path);
+namespace {
+
+// Writes interleaved pixels of `channels` channels to a temporary name beside `path`, then
+// renames it into place: a failed write leaves no partial file.
+void write_pixels(const std::filesystem::path& path, int width, int height, int channels, OIIO::TypeDesc format,
+                  const void* pixels, const Metadata& metadata) {
     const std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
     if (!std::filesystem::is_directory(folder)) {
         throw ImageError(path.string() + ": cannot write image: no folder " + folder.string());
@@ -79,29 +116,9 @@ void write_image(const std::filesystem::path& path, const Image& image, const Me
     tmp += ".tmp-" + std::to_string(::getpid()) + path.extension().string();
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) throw ImageError(path.string() + ": no image format for this file name: " + OIIO::geterror());
-    const int channels = alpha ? 4 : 3;
-    OIIO::ImageSpec spec(image.width, image.height, channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(width, height, channels, is_float_format(path) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     for (const auto& [key, value] : metadata) spec.attribute(key, value);
     spec.attribute("Software", "quadshade");
-    const std::size_t npixels = std::size_t(image.width) * std::size_t(image.height);
-    std::vector<float> floats(npixels * std::size_t(channels));
-    for (std::size_t p = 0; p < npixels; ++p) {
-        for (int c = 0; c < channels; ++c) floats[p * std::size_t(channels) + std::size_t(c)] = image.rgba[p * 4 + std::size_t(c)];
-    }
-    std::vector<std::uint8_t> bytes;
-    const void* pixels = floats.data();
-    OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT;
-    if (!is_float) {
-        // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
-        bytes.resize(floats.size());
-        for (std::size_t i = 0; i < bytes.size(); ++i) {
-            float c = floats[i];
-            c = std::isnan(c) ? 0.0f : std::min(std::max(c, 0.0f), 1.0f);
-            bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
-        }
-        pixels = bytes.data();
-        format = OIIO::TypeDesc::UINT8;
-    }
     bool ok = out->open(tmp.string(), spec) && out->write_image(format, pixels) && out->close();
     if (!ok) {
         std::error_code ec;
@@ -114,6 +131,39 @@ void write_image(const std::filesystem::path& path, const Image& image, const Me
         std::filesystem::remove(tmp, ec);
         throw ImageError(path.string() + ": cannot move the finished image into place: " + ec.message());
     }
+}
+
+}  // namespace
+
+void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
+    const int channels = alpha ? 4 : 3;
+    const std::size_t npixels = std::size_t(image.width) * std::size_t(image.height);
+    std::vector<float> floats(npixels * std::size_t(channels));
+    for (std::size_t p = 0; p < npixels; ++p) {
+        for (int c = 0; c < channels; ++c) floats[p * std::size_t(channels) + std::size_t(c)] = image.rgba[p * 4 + std::size_t(c)];
+    }
+    if (is_float_format(path)) {
+        write_pixels(path, image.width, image.height, channels, OIIO::TypeDesc::FLOAT, floats.data(), metadata);
+        return;
+    }
+    // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
+    std::vector<std::uint8_t> bytes(floats.size());
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        float c = floats[i];
+        c = std::isnan(c) ? 0.0f : std::min(std::max(c, 0.0f), 1.0f);
+        bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
+    }
+    write_pixels(path, image.width, image.height, channels, OIIO::TypeDesc::UINT8, bytes.data(), metadata);
+}
+
+void write_image(const std::filesystem::path& path, const Image8& image, const Metadata& metadata, bool alpha) {
+    const int channels = alpha ? 4 : 3;
+    const std::size_t npixels = std::size_t(image.width) * std::size_t(image.height);
+    std::vector<std::uint8_t> bytes(npixels * std::size_t(channels));
+    for (std::size_t p = 0; p < npixels; ++p) {
+        for (int c = 0; c < channels; ++c) bytes[p * std::size_t(channels) + std::size_t(c)] = image.rgba[p * 4 + std::size_t(c)];
+    }
+    write_pixels(path, image.width, image.height, channels, OIIO::TypeDesc::UINT8, bytes.data(), metadata);
 }
 
 Comparison compare_images(const Image& a, const Image& b, float fail_threshold, float warn_threshold) {

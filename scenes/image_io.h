@@ -1,5 +1,5 @@
 #pragma once
-// Image files through OpenImageIO (the only file that includes it is image_io.cpp): reading
+// Image files through OpenImageIO (the only file that includes it is image_io.cpp): decoding
 // textures, writing renders atomically (a temporary file renamed into place, so a failed write
 // leaves no partial file), and comparing two images.
 
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "shading/glsl/texture.h"
+#include "scenes/scene.h"
 
 namespace qs {
 
@@ -29,12 +29,25 @@ using Metadata = std::vector<std::pair<std::string, std::string>>;
 // Reads any format OpenImageIO knows; grey/RGB are expanded to RGBA (alpha 1).
 Image read_image(const std::filesystem::path& path);
 
-// A texture for texture2D: GL's first row is the image's bottom row.
-glsl::sampler2D load_texture(const std::filesystem::path& path);
+// An RGBA image of 8-bit unorm channels, rows top-down: what a GL_RGBA8 texture holds.
+struct Image8 {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;
+};
+
+// A texture's image decoded as a GL application uploads it: rows in the file's order (glTF puts
+// UV (0, 0) at the first row), alpha as stored (never premultiplied), grey and RGB expanded to
+// RGBA (alpha 255), deeper channels rounded to 8 bits. Throws ImageError naming the file (or
+// the embedded image's kind) when it cannot be read.
+Image8 read_texture_image(const ImageSource& source);
 
 // Writes RGB, or RGBA with `alpha`: 8-bit unorm for formats without float (PNG, ...), float for
 // EXR/TIFF/HDR/PFM. `metadata` becomes string attributes (PNG text chunks, EXR headers).
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata = {},
+                 bool alpha = false);
+
+// Writes 8-bit RGB, or RGBA with `alpha`, as they are (for formats without float).
+void write_image(const std::filesystem::path& path, const Image8& image, const Metadata& metadata = {},
                  bool alpha = false);
 
 // Whether a file name's format stores float.

@@ -18,4 +18,8 @@ glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(yfov, aspect, znear, zfar);
 }
 
+glm::mat4 Scene::model_view_projection(const Object& o, float aspect) const {
+    return camera.projection(aspect) * camera.view * o.world_from_object;
+}
+
 }  // namespace qs

@@ -1,6 +1,8 @@
 #pragma once
 // The scene model: meshes in object space, objects placing them with a shader each, a camera,
-// and the frame's settings. Loaded from glTF (gltf.h); nothing here renders.
+// textures (where each image comes from, and how it is sampled), and the frame's settings.
+// Loaded from glTF (gltf.h). Pure data: nothing here renders or decodes, and it depends on no
+// renderer, so that the OSMesa reference can share it and nothing else.
 
 #include <cstdint>
 #include <filesystem>
@@ -9,10 +11,9 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-
-#include "shading/glsl/texture.h"
-#include "shading/program.h"
 
 namespace qs {
 
@@ -22,9 +23,14 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+struct Vertex {
+    glm::vec3 position;  // object space: POSITION, the shaders' gl_Vertex.xyz
+    glm::vec2 texcoord;  // TEXCOORD_0, the shaders' gl_MultiTexCoord0.st; (0, 0) is the image's top-left
+};
+
 struct Mesh {
     std::string name;
-    std::vector<VertexIn> vertices;
+    std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangles
 };
 
@@ -40,19 +46,54 @@ struct Camera {
     glm::mat4 projection(float aspect) const;
 };
 
+// A glTF sampler, with glTF's (and GL's) enum values.
+enum class Wrap : int { Repeat = 10497, MirroredRepeat = 33648, ClampToEdge = 33071 };
+enum class Filter : int {
+    Nearest = 9728,
+    Linear = 9729,
+    NearestMipmapNearest = 9984,  // minification only
+    LinearMipmapNearest = 9985,
+    NearestMipmapLinear = 9986,
+    LinearMipmapLinear = 9987,
+};
+// Whether a minification filter reads mipmaps.
+constexpr bool uses_mipmaps(Filter f) { return int(f) >= int(Filter::NearestMipmapNearest); }
+
+// glTF leaves the filters to the client when a sampler omits them ("auto filtering"); these are
+// the usual choice of glTF viewers (trilinear), and the wraps are glTF's defaults.
+struct Sampler {
+    Filter mag_filter = Filter::Linear;
+    Filter min_filter = Filter::LinearMipmapLinear;
+    Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+    bool operator==(const Sampler&) const = default;
+};
+
+// Where a texture's image comes from: a file, or encoded bytes held in the scene (a data: URI,
+// or a bufferView of a .glb). Decoding is the renderer's (and the reference's) business.
+struct ImageSource {
+    std::filesystem::path file;       // an external file; empty when embedded
+    std::vector<std::uint8_t> bytes;  // the encoded image (PNG, JPEG, ...) when embedded
+    std::string mime_type;            // as the file gives it, possibly empty
+    enum class Kind { File, DataUri, BufferView } kind = Kind::File;
+};
+
+struct Texture {
+    ImageSource image;
+    Sampler sampler;
+    // What names it, for messages: "materials[0].pbrMetallicRoughness.baseColorTexture (images[1])"
+    // or "materials[0].extras.teximage".
+    std::string field;
+};
+
 struct Object {
     std::string name;
     std::size_t mesh = 0;
     glm::mat4 world_from_object{1.0f};
     std::string shader;   // catalogue name; empty when the file names none
-    int texture = -1;     // index into Scene::textures, -1 for none
+    // The texture bound to the shaders' `teximage`: the material's baseColorTexture, or the file
+    // its extras.teximage names. Index into Scene::textures, -1 for none.
+    int texture = -1;
     std::string material; // for messages: which glTF material named the shader
-};
-
-struct Texture {
-    std::filesystem::path path;
-    glsl::sampler2D texels;  // loaded only when a shader that samples it is drawn
-    bool loaded = false;
 };
 
 struct Scene {
@@ -65,10 +106,9 @@ struct Scene {
     int width = 512, height = 512;            // default render size
     std::vector<Texture> textures;
 
-    // MVP of an object for a render of the given aspect ratio.
-    glm::mat4 model_view_projection(const Object& o, float aspect) const {
-        return camera.projection(aspect) * camera.view * o.world_from_object;
-    }
+    // MVP of an object for a render of the given aspect ratio (one compiled copy, so that the
+    // renderer and the reference get the same bits).
+    glm::mat4 model_view_projection(const Object& o, float aspect) const;
 };
 
 }  // namespace qs

@@ -1,27 +1,112 @@
 #include "shading/catalogue.h"
 
+#include <stdexcept>
+
 namespace qs {
 
+namespace {
+
+struct Entry {
+    const Program* program;
+    std::filesystem::path plugin;  // empty: built in
+};
+
+// Filled by static constructors (the built-in shaders' before main, a plugin's inside dlopen),
+// so it lives in a function: it must exist before the first of them runs.
+struct Registry {
+    std::vector<Entry> entries;
+    ProgramList programs;
+    std::filesystem::path loading;       // the plugin whose constructors are running
+    std::vector<std::string> problems;  // the loading plugin's
+    std::vector<std::string> builtin_problems;
+    int added = 0;
+};
+
+Registry& registry() {
+    static Registry r;
+    return r;
+}
+
+std::string origin_name(const std::filesystem::path& plugin) {
+    return plugin.empty() ? std::string("quadshade") : plugin.string();
+}
+
+// The built-in shaders' GLSL: share/quadshade/shading beside the executable's bin/ folder.
+std::filesystem::path builtin_glsl_folder() {
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) throw std::runtime_error("cannot find the quadshade executable (/proc/self/exe): " + ec.message());
+    return exe.parent_path().parent_path() / "share" / "quadshade" / "shading";
+}
+
+const Entry& entry_of(const Program& program) {
+    for (const Entry& e : registry().entries) {
+        if (e.program == &program) return e;
+    }
+    throw std::logic_error(std::string(program.info().name) + ": not in the catalogue");
+}
+
+}  // namespace
+
+namespace registration {
+
+void add(const Program& program, const ShaderAbi& abi) {
+    Registry& r = registry();
+    std::vector<std::string>& problems = r.loading.empty() ? r.builtin_problems : r.problems;
+    const std::string name(program.info().name);
+    if (!(abi == ShaderAbi{})) {
+        problems.push_back("shader '" + name + "' was built against other quadshade headers (batch of " +
+                             std::to_string(abi.batch_lanes) + " lanes, " + std::to_string(abi.fragment_batch) +
+                             "-byte fragment batches; this quadshade: " + std::to_string(kBatchLanes) + ", " +
+                             std::to_string(sizeof(FragmentBatch)) + "): rebuild it against this installation");
+        return;
+    }
+    if (const Program* taken = find_program(name)) {
+        problems.push_back("shader '" + name + "' is already defined by " + origin_name(entry_of(*taken).plugin));
+        return;
+    }
+    r.entries.push_back({&program, r.loading});
+    r.programs.push_back(&program);
+    ++r.added;
+}
+
+void begin_plugin(const std::filesystem::path& plugin) {
+    Registry& r = registry();
+    r.loading = plugin;
+    r.problems.clear();
+    r.added = 0;
+}
+
+PluginResult end_plugin() {
+    Registry& r = registry();
+    PluginResult result{r.added, std::move(r.problems)};
+    r.loading.clear();
+    r.problems.clear();
+    r.added = 0;
+    return result;
+}
+
+}  // namespace registration
+
 const ProgramList& catalogue() {
-    static const ProgramList list = [] {
-        ProgramList l;
-        register_figure_1_1(l);
-        register_table_1_1(l);
-        register_patterns(l);
-        register_aa_variants(l);
-        register_seed_patterns(l);
-        register_probes(l);
-        register_vocabulary_probes(l);
-        return l;
-    }();
-    return list;
+    Registry& r = registry();
+    // Two built-in shaders of one name are a bug of this build, found by its first test.
+    if (!r.builtin_problems.empty()) throw std::logic_error(r.builtin_problems.front());
+    return r.programs;
 }
 
 const Program* find_program(std::string_view name) {
-    for (const Program* p : catalogue()) {
+    for (const Program* p : registry().programs) {
         if (p->info().name == name) return p;
     }
     return nullptr;
+}
+
+const std::filesystem::path& plugin_of(const Program& program) { return entry_of(program).plugin; }
+
+std::filesystem::path glsl_folder(const Program& program) {
+    const std::filesystem::path& plugin = plugin_of(program);
+    return plugin.empty() ? builtin_glsl_folder() : plugin.parent_path();
 }
 
 }  // namespace qs

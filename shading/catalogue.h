@@ -1,6 +1,17 @@
 #pragma once
-// The shader catalogue: every translated shader, looked up by the name scenes use.
+// The shader catalogue: every shader this process knows, built in or from a plugin, looked up by
+// the name scenes use. Shaders register themselves where they are defined, one line per file
+// (shading/shaders/*.cpp, or a user's plugin):
+//
+//     QUADSHADE_SHADERS(shaders::Dots, shaders::Perlin);
+//
+// Each shader's GLSL files (ShaderInfo::glsl_vertex / glsl_fragment) are found under its origin's
+// GLSL folder: for the built-in shaders `share/quadshade/shading` beside the executable's `bin/`
+// (the build tree has the same layout), for a plugin the plugin's own folder.
 
+#include <cstddef>
+#include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -10,19 +21,58 @@ namespace qs {
 
 using ProgramList = std::vector<const Program*>;
 
-// All programs, in a stable order: Figure 1.1, Table 1.1, the other chapter patterns, the seeds'
-// shaders, probes.
+// All programs: the built-in ones in the order their files are linked (Figure 1.1, Table 1.1,
+// the other chapter patterns, probes, ...), then each plugin's in the order it was loaded.
 const ProgramList& catalogue();
 // nullptr when no shader has that name.
 const Program* find_program(std::string_view name);
+// The folder `program`'s GLSL file names are relative to.
+std::filesystem::path glsl_folder(const Program& program);
+// The plugin `program` came from; empty for a built-in shader.
+const std::filesystem::path& plugin_of(const Program& program);
 
-// Registration, one function per translation unit of shaders.
-void register_figure_1_1(ProgramList& list);
-void register_table_1_1(ProgramList& list);
-void register_patterns(ProgramList& list);
-void register_probes(ProgramList& list);
-void register_aa_variants(ProgramList& list);
-void register_seed_patterns(ProgramList& list);
-void register_vocabulary_probes(ProgramList& list);
+// What crosses between quadshade and a plugin's shaders, as the plugin's headers laid it out: a
+// plugin built against other headers is refused, not run.
+struct ShaderAbi {
+    int version = 1;  // raised when program.h's contract changes in a way sizes do not show
+    int batch_lanes = kBatchLanes;
+    int max_varyings = kMaxVaryings;
+    std::size_t fragment_batch = sizeof(FragmentBatch);
+    std::size_t color_batch = sizeof(ColorBatch);
+    std::size_t uniforms = sizeof(Uniforms);
+    std::size_t sampler2d = sizeof(glsl::sampler2D);
+    std::size_t shader_info = sizeof(ShaderInfo);
+    bool operator==(const ShaderAbi&) const = default;
+};
 
+namespace registration {
+
+// Adds `program` to the catalogue, from the plugin being loaded if any (render/plugins.h). A
+// name already taken, or an `abi` other than this build's, is recorded and reported by the loader
+// (or, for a built-in shader, by the first call to catalogue()).
+void add(const Program& program, const ShaderAbi& abi);
+
+// Where registrations come from while a plugin's static constructors run; empty when built in.
+void begin_plugin(const std::filesystem::path& plugin);
+// The problems recorded since begin_plugin, and how many shaders it added; ends the plugin.
+struct PluginResult {
+    int added = 0;
+    std::vector<std::string> problems;
+};
+PluginResult end_plugin();
+
+// One object per file of shaders: its constructor registers a ProgramOf<S> for each S.
+template <class... Shaders>
+struct Registrar {
+    Registrar() { (add(program<Shaders>(), ShaderAbi{}), ...); }
+    template <class S>
+    static const Program& program();  // defined by program_of.h
+};
+
+}  // namespace registration
 }  // namespace qs
+
+// Registers the shader structs it names (see program_of.h for what a shader struct holds). Once
+// per source file, at namespace scope, in a file that includes shading/program_of.h.
+#define QUADSHADE_SHADERS(...) \
+    namespace { const ::qs::registration::Registrar<__VA_ARGS__> quadshade_registered_shaders; }

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "shading/catalogue.h"
 #include "shading/glsl.h"
 #include "shading/program.h"
 
@@ -253,5 +254,13 @@ private:
         return Shader::template fragment<F>(f, u);
     }
 };
+
+// A registered shader's Program (catalogue.h's QUADSHADE_SHADERS): one per shader struct.
+template <class... Shaders>
+template <class S>
+const Program& registration::Registrar<Shaders...>::program() {
+    static const ProgramOf<S> program;
+    return program;
+}
 
 }  // namespace qs

@@ -3,12 +3,14 @@
 // derivative rule. Coverage must be identical; colour differences are counted in 8-bit steps.
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -89,7 +91,8 @@ Image reference(const Case& c, const std::string& driver, int width, int height)
     const auto out = work_dir() / (c.name + "." + driver + "." + std::to_string(width) + "x" + std::to_string(height) + ".exr");
     if (!std::filesystem::exists(out)) {
         std::string cmd = (kBin / "quadshade-reference").string() + " " + c.scene.string() + " -o " + out.string() +
-                          " --driver " + driver + " --size " + std::to_string(width) + "x" + std::to_string(height);
+                          " --glsl " + QUADSHADE_GLSL_DIR + " --driver " + driver + " --size " + std::to_string(width) +
+                          "x" + std::to_string(height);
         if (!c.shader.empty()) cmd += " --shader " + c.shader;
         cmd += " 2> /dev/null";
         if (std::system(cmd.c_str()) != 0) throw std::runtime_error("reference render failed: " + cmd);
@@ -207,9 +210,6 @@ TEST_CASE("smoothstep with equal edges matches llvmpipe's run-time result", "[re
     CHECK(q.pixel(2, 0)[1] == 1.0f);  // while step(e, x) is 1 on the edge
 }
 
-}  // namespace qs
-
-namespace qs {
 
 TEST_CASE("float environment: GLSL's undefined cases and denormals as llvmpipe", "[reference][undefined][stability]") {
     const Case probe{"float_env_probe", kPlane, "float_env_probe", 8, 1};
@@ -229,9 +229,6 @@ TEST_CASE("float environment: GLSL's undefined cases and denormals as llvmpipe",
     CHECK(std::isinf(q.pixel(1, 0)[0]));
 }
 
-}  // namespace qs
-
-namespace qs {
 
 TEST_CASE("helper lanes at silhouettes: derivatives of the position match llvmpipe's, the largest reported",
           "[reference][derivatives][stability]") {
@@ -277,9 +274,6 @@ TEST_CASE("helper lanes at silhouettes: derivatives of the position match llvmpi
     CHECK(largest > 10.0 * interior_median_scale);  // the rims do stretch the derivatives
 }
 
-}  // namespace qs
-
-namespace qs {
 
 TEST_CASE("stiff geometry: slivers, sub-pixel triangles, the near plane, vertices a million units out: as llvmpipe",
           "[reference][stability][geometry]") {
@@ -351,9 +345,6 @@ TEST_CASE("stiff geometry: slivers, sub-pixel triangles, the near plane, vertice
     CHECK(n.max_steps <= 1);
 }
 
-}  // namespace qs
-
-namespace qs {
 
 TEST_CASE("the spots' anti-aliasing variants match llvmpipe on Figure 1.1", "[reference][derivatives]") {
     for (const char* shader : {"spots_length", "spots_step"}) {
@@ -365,6 +356,29 @@ TEST_CASE("the spots' anti-aliasing variants match llvmpipe on Figure 1.1", "[re
         CHECK(n.coverage_mismatch == 0);
         CHECK(double(n.over_1) <= kMaxFractionOver1 * double(n.pixels));
     }
+}
+
+
+TEST_CASE("quadshade-reference: bad usage exits 2, bad input 1, naming what is wrong", "[reference][cli]") {
+    const auto dir = temp_dir("reference-cli");
+    auto run = [&](const std::string& args) {
+        const std::string cmd = (kBin / "quadshade-reference").string() + " " + args + " > '" + (dir / "err.txt").string() + "' 2>&1";
+        const int status = std::system(cmd.c_str());
+        std::ifstream in(dir / "err.txt");
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        return std::pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1, text);
+    };
+    const std::string scene = kPlane.string(), out = " -o " + (dir / "x.exr").string();
+    const std::string glsl = std::string(" --glsl ") + QUADSHADE_GLSL_DIR;
+    CHECK(run(scene + out).first == 2);  // no --glsl
+    CHECK(run(scene + out + glsl + " --driver swiftshader").first == 2);
+    CHECK(run(scene + out + glsl + " --size 10y3").first == 2);
+    const auto [code, text] = run(scene + out + glsl + " --shader no_such_shader");
+    CHECK(code == 1);
+    CHECK(text.find("no_such_shader.vert") != std::string::npos);
+    CHECK(!std::filesystem::exists(dir / "x.exr"));
+    CHECK(run(scene + out + glsl + " --size 8x8").first == 0);
+    CHECK(std::filesystem::exists(dir / "x.exr"));
 }
 
 }  // namespace qs

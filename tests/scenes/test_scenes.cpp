@@ -110,17 +110,103 @@ TEST_CASE("bad scene input is refused naming the file and the field", "[scenes][
                                                         Catch::Contains("no_such_shader"));
     }
     SECTION("missing texture") {
-        s.textures[0].path = dir / "textures" / "gone.png";
+        s.textures[0].image.file = dir / "textures" / "gone.png";
         s.objects[0].shader = "halftone";
         save_scene(s, dir / "tex.gltf");
         Scene loaded = load_scene(dir / "tex.gltf");
-        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("extras.teximage") && Catch::Contains("gone.png"));
+        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("tex.gltf") &&
+                                                        Catch::Contains("materials[0].pbrMetallicRoughness.baseColorTexture") &&
+                                                        Catch::Contains("gone.png"));
+    }
+    SECTION("a texture that is not an image") {
+        s.textures[0].image = {{}, {'n', 'o', 't', ' ', 'a', 'n', ' ', 'i', 'm', 'a', 'g', 'e'}, "image/png",
+                               ImageSource::Kind::DataUri};
+        s.objects[0].shader = "single_texture";
+        save_scene(s, dir / "garbage.gltf");
+        Scene loaded = load_scene(dir / "garbage.gltf");
+        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("garbage.gltf") && Catch::Contains("baseColorTexture") &&
+                                                        Catch::Contains("data: URI image"));
+    }
+    SECTION("a shader that samples a texture the material lacks") {
+        s.objects[0].texture = -1;
+        s.objects[0].shader = "halftone";
+        save_scene(s, dir / "untextured.gltf");
+        Scene loaded = load_scene(dir / "untextured.gltf");
+        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("untextured.gltf") && Catch::Contains("halftone") &&
+                                                        Catch::Contains("baseColorTexture"));
     }
     SECTION("a texture is not read when no drawn shader samples it") {
-        s.textures[0].path = dir / "textures" / "gone.png";
+        s.textures[0].image.file = dir / "textures" / "gone.png";
         save_scene(s, dir / "unused.gltf");
         Scene loaded = load_scene(dir / "unused.gltf");
         CHECK_NOTHROW(render_frame(loaded, {}));
+    }
+}
+
+TEST_CASE("textures: baseColorTexture, extras.teximage, glTF's sampler defaults, bad samplers and URIs", "[scenes][textures]") {
+    const auto dir = temp_dir("sampler");
+    std::filesystem::create_directories(dir / "images");
+    write_image(dir / "images" / "a b.png", Image{2, 2, std::vector<float>(16, 0.5f)});
+    // One triangle; its material's baseColorTexture has a sampler giving only magFilter.
+    auto gltf = [&](const std::string& material, const std::string& sampler, const std::string& image_uri) {
+        return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+            "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+            "materials": [)" + material + R"(],
+            "textures": [{"source": 0, "sampler": 0}], "samplers": [)" + sampler + R"(],
+            "images": [{"uri": ")" + image_uri + R"("}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [-1, -1, 0], "max": [1, 1, 0]}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]})";
+    };
+    const std::string base = R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}, "extras": {"shader": "single_texture"}})";
+    SECTION("baseColorTexture, its URI percent-decoded, glTF's defaults where the sampler is silent") {
+        write_text(dir / "a.gltf", gltf(base, R"({"magFilter": 9728})", "images/a%20b.png"));
+        const Scene s = load_scene(dir / "a.gltf");
+        REQUIRE(s.objects[0].texture == 0);
+        const Texture& t = s.textures[0];
+        CHECK(t.image.file == dir / "images" / "a b.png");
+        CHECK(t.sampler.mag_filter == Filter::Nearest);
+        CHECK(t.sampler.min_filter == Filter::LinearMipmapLinear);  // no glTF default: the usual auto filtering
+        CHECK(t.sampler.wrap_s == Wrap::Repeat);                     // glTF's default
+        CHECK(t.sampler.wrap_t == Wrap::Repeat);
+        Scene r = s;
+        CHECK_NOTHROW(render_frame(r, {}));
+    }
+    SECTION("extras.teximage names another file, with baseColorTexture's sampler") {
+        const std::string m = R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+                                  "extras": {"shader": "single_texture", "teximage": "images/other.png"}})";
+        write_text(dir / "b.gltf", gltf(m, R"({"wrapS": 33071})", "images/a%20b.png"));
+        const Scene s = load_scene(dir / "b.gltf");
+        REQUIRE(s.textures.size() == 1);
+        CHECK(s.textures[0].image.file == dir / "images" / "other.png");
+        CHECK(s.textures[0].sampler.wrap_s == Wrap::ClampToEdge);
+    }
+    SECTION("an unknown wrap mode") {
+        write_text(dir / "c.gltf", gltf(base, R"({"wrapT": 1234})", "images/a%20b.png"));
+        CHECK_THROWS_WITH(load_scene(dir / "c.gltf"), Catch::Contains("c.gltf") && Catch::Contains("samplers[0].wrapT") &&
+                                                          Catch::Contains("1234"));
+    }
+    SECTION("an unknown filter") {
+        write_text(dir / "d.gltf", gltf(base, R"({"minFilter": 9999})", "images/a%20b.png"));
+        CHECK_THROWS_WITH(load_scene(dir / "d.gltf"), Catch::Contains("samplers[0].minFilter") && Catch::Contains("9999"));
+    }
+    SECTION("an absolute URI") {
+        write_text(dir / "e.gltf", gltf(base, "{}", "/etc/outside.png"));
+        CHECK_THROWS_WITH(load_scene(dir / "e.gltf"), Catch::Contains("e.gltf") && Catch::Contains("images[0].uri") &&
+                                                          Catch::Contains("/etc/outside.png"));
+    }
+    SECTION("a required extension") {
+        std::string text = gltf(base, "{}", "images/a%20b.png");
+        text.insert(1, R"("extensionsUsed": ["KHR_texture_transform"], "extensionsRequired": ["KHR_texture_transform"],)");
+        write_text(dir / "g.gltf", text);
+        CHECK_THROWS_WITH(load_scene(dir / "g.gltf"), Catch::Contains("extensionsRequired[0]") &&
+                                                          Catch::Contains("KHR_texture_transform"));
+    }
+    SECTION("a second texture coordinate set") {
+        const std::string m = R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1}}})";
+        write_text(dir / "f.gltf", gltf(m, "{}", "images/a%20b.png"));
+        CHECK_THROWS_WITH(load_scene(dir / "f.gltf"), Catch::Contains("baseColorTexture.texCoord"));
     }
 }
 
@@ -357,7 +443,7 @@ TEST_CASE("the ground plane at the horizon: derivatives of 1e4 texels per pixel,
     // The Table 1.1 plane made 2000 units wide, st scaled with it, seen from 0.5 above: towards
     // the horizon one pixel spans thousands of pattern cells.
     Scene s = load_scene(kPlane);
-    for (VertexIn& v : s.meshes[0].vertices) v.texcoord *= 1000.0f;
+    for (Vertex& v : s.meshes[0].vertices) v.texcoord *= 1000.0f;
     s.objects[0].world_from_object = glm::scale(glm::mat4(1.0f), glm::vec3(1000.0f, 1000.0f, 1.0f));
     s.camera.kind = Camera::Kind::Perspective;
     s.camera.yfov = glm::radians(40.0f);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "shading/catalogue.h"
 
@@ -35,9 +36,9 @@ bool same_bits(const ColorBatch& a, const ColorBatch& b) { return std::memcmp(a.
 }  // namespace
 
 TEST_CASE("shading two batches as a pair gives the bits of shading each alone, every shader and mode", "[program]") {
-    glsl::sampler2D texture;
-    texture.width = 5, texture.height = 3;
-    for (int t = 0; t < texture.width * texture.height * 4; ++t) texture.rgba.push_back(float(t % 7) / 7.0f);
+    std::vector<std::uint8_t> texels;
+    for (int t = 0; t < 5 * 3 * 4; ++t) texels.push_back(std::uint8_t(t % 7 * 36));
+    const glsl::sampler2D texture(5, 3, texels.data(), {});
     Uniforms u;
     u.time = 1.75f;
     u.teximage = &texture;

@@ -1,0 +1,17 @@
+#pragma once
+// Users' shaders from outside this repository: a plugin is a shared library built with the
+// installed package's quadshade_add_shader_plugin (cmake/quadshadeConfig.cmake.in) whose
+// QUADSHADE_SHADERS lines add its shaders to the catalogue when it is loaded. Its GLSL files sit
+// beside it.
+
+#include <filesystem>
+
+namespace qs {
+
+// Loads the plugin and adds its shaders to the catalogue. Throws std::runtime_error naming the
+// file when it cannot be found or loaded, adds no shader, names a shader that is already in the
+// catalogue or was built against other quadshade headers. The library stays loaded for the
+// process's life (the catalogue points into it).
+void load_plugin(const std::filesystem::path& plugin);
+
+}  // namespace qs

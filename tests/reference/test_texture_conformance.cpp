@@ -1,0 +1,254 @@
+// The texture conformance scenes (apps/texture_scenes.h): glTF's orientation, the sampler's
+// wraps and filters, mipmaps under minification, non-square and odd images, and where the image
+// comes from (a file, a data: URI, a .glb's bufferView). Every catalogue shader that samples a
+// texture on every scene, against OSMesa decoding and uploading the texture itself, with the bar
+// of tests/reference. Built once per driver, as test_conformance.cpp (OSMesa picks its driver
+// once per process). Writes build/conformance/textures-DRIVER.csv and, for every case that
+// differs at all, a quadshade | OSMesa | difference image.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "reference/gl_renderer.h"
+#include "render/scene_render.h"
+#include "scenes/gltf.h"
+#include "shading/catalogue.h"
+#include "tests/reference/comparison.h"
+#include "tests/test_paths.h"
+
+namespace qs {
+
+namespace {
+
+using namespace test;
+
+const std::string kDriverName = QUADSHADE_CONFORMANCE_DRIVER;
+const GlDriver kDriver = kDriverName == "softpipe" ? GlDriver::Softpipe : GlDriver::Llvmpipe;
+
+std::filesystem::path scene_file(const std::string& name) { return kSource / "scenes/assets/conformance" / ("texture-" + name); }
+
+const char* const kWrapScenes[] = {"wrap-repeat-npot.gltf", "wrap-repeat-pot.gltf", "wrap-mirrored.gltf",
+                                   "wrap-clamp.gltf", "wrap-mixed.gltf"};
+const char* const kFilterScenes[] = {"min-nearest.gltf",
+                                     "min-linear.gltf",
+                                     "min-nearest-mipmap-nearest.gltf",
+                                     "min-linear-mipmap-nearest.gltf",
+                                     "min-nearest-mipmap-linear.gltf",
+                                     "min-linear-mipmap-linear.gltf",
+                                     "mag-nearest.gltf",
+                                     "npot-mipmaps.gltf",
+                                     "mirrored-mipmaps.gltf"};
+const char* const kSourceScenes[] = {"source-file.gltf", "source-data-uri.gltf", "source-buffer-view.glb"};
+
+std::vector<std::string> texture_shaders() {
+    std::vector<std::string> r;
+    for (const Program* p : catalogue()) {
+        if (p->info().needs.texture) r.emplace_back(p->info().name);
+    }
+    return r;
+}
+
+// OSMesa, in this process: a context per image size, each shader compiled once per context. Made
+// per test case and dropped at its end, while Mesa is still whole (not at the process's exit).
+class References {
+public:
+    Image render(const Scene& scene, const std::string& shader) {
+        Context& c = contexts_[{scene.width, scene.height}];
+        if (!c.gl) {
+            c.gl = create_osmesa_context(scene.width, scene.height, kDriver, 2);
+            c.programs = std::make_unique<GlPrograms>(QUADSHADE_GLSL_DIR);
+            REQUIRE(c.gl->info().renderer.find(kDriverName) != std::string::npos);
+        }
+        return GlSceneRenderer(scene, {scene.width, scene.height, {}, shader}, *c.gl, *c.programs).render();
+    }
+
+private:
+    struct Context {
+        std::unique_ptr<GlContext> gl;
+        std::unique_ptr<GlPrograms> programs;
+        ~Context() {
+            if (!gl) return;
+            gl->make_current();
+            programs.reset();
+        }
+    };
+    std::map<std::pair<int, int>, Context> contexts_;
+};
+
+Framebuffer ours(Scene& scene, const std::string& shader) {
+    FrameRequest r;
+    r.shader_override = shader;
+    r.raster = raster_options_as(kDriver);
+    return render_frame(scene, r);
+}
+
+struct Counts {
+    std::size_t covered = 0, coverage_mismatch = 0, over_1 = 0, over_2 = 0;
+    std::size_t not_bit_exact = 0;  // pixels whose float RGBA is not the reference's to the bit
+    int max_steps = 0;
+};
+
+// As comparison.h's count, over RGBA: single_texture writes the texture's alpha, sampled like its
+// colour (the images' alpha lies in [0.6, 1], so alpha > 1/2 still marks coverage).
+Counts count_rgba(const Framebuffer& a, const Image& b) {
+    Counts c;
+    const std::size_t pixels = std::size_t(a.width) * std::size_t(a.height);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const bool ca = a.rgba[p * 4 + 3] > 0.5f, cb = b.rgba[p * 4 + 3] > 0.5f;
+        c.covered += cb;
+        c.coverage_mismatch += ca != cb;
+        int worst = 0;
+        for (std::size_t ch = 0; ch < 4; ++ch) {
+            worst = std::max(worst, std::abs(int(unorm8(a.rgba[p * 4 + ch])) - int(unorm8(b.rgba[p * 4 + ch]))));
+        }
+        c.not_bit_exact += !std::equal(&a.rgba[p * 4], &a.rgba[p * 4 + 4], &b.rgba[p * 4]);
+        c.over_1 += worst > 1;
+        c.over_2 += worst > 2;
+        c.max_steps = std::max(c.max_steps, worst);
+    }
+    return c;
+}
+
+// Documented causes of differences beyond the bar, counted and bounded (measured on Mesa 22.3.6,
+// Debian 12, with some room), by "scene shader driver"; "halftone" stands for its three variants,
+// whose texture lookups are the same.
+struct Bound {
+    std::size_t over_1 = 0, over_2 = 0;
+    const char* cause = "none: measured within the bar";
+};
+constexpr const char* kSoftpipeMirror =
+    "softpipe's MIRRORED_REPEAT (wrap_linear_mirror_repeat in sp_tex_sample.c) weighs the second texel by "
+    "frac(1 - u), which is 0 where it should be 1 when u is a texel centre of a mirrored period: the halftone's "
+    "texel-centre lookups get the neighbouring texel along every mirrored period (measured: 625 and 1350 pixels; "
+    "llvmpipe and quadshade agree bit for bit there)";
+const std::map<std::string, Bound> kBounds = {
+    {"wrap-mirrored.gltf halftone softpipe", {690, 690, kSoftpipeMirror}},
+    {"wrap-mixed.gltf halftone softpipe", {1490, 1490, kSoftpipeMirror}},
+};
+
+// softpipe selects the level of detail its own way (rho = the larger of W max(|ds/dx|, |ds/dy|) and
+// H max(|dt/dx|, |dt/dy|) rather than llvmpipe's larger sum of squares, log2 from a table, levels
+// by truncation, blends in float) and makes its own mipmaps (its float blit rounds differently
+// from llvmpipe's 8-bit one). quadshade follows llvmpipe; so where a lookup depends on the level
+// of detail (mipmaps, or different min and mag filters), softpipe's colours are counted (the CSV)
+// but not held to the bar: its coverage is.
+bool softpipe_own_lod(const Scene& s) {
+    const Sampler& t = s.textures.at(0).sampler;
+    const bool min_linear = t.min_filter == Filter::Linear || t.min_filter == Filter::LinearMipmapNearest ||
+                            t.min_filter == Filter::LinearMipmapLinear;
+    return uses_mipmaps(t.min_filter) || min_linear != (t.mag_filter == Filter::Linear);
+}
+
+std::ofstream& csv() {
+    static std::ofstream f = [] {
+        const auto dir = std::filesystem::path(QUADSHADE_BIN_DIR) / ".." / "conformance";
+        std::filesystem::create_directories(dir);
+        std::ofstream out(dir / ("textures-" + kDriverName + ".csv"));
+        out << "scene,shader,driver,covered,coverage_mismatch,over_1,over_2,max_steps,not_bit_exact\n";
+        return out;
+    }();
+    return f;
+}
+
+template <std::size_t N>
+void check_scenes(const char* const (&scenes)[N]) {
+    References references;
+    for (const char* name : scenes) {
+        for (const std::string& shader : texture_shaders()) {
+            Scene scene = load_scene(scene_file(name));
+            const Framebuffer q = ours(scene, shader);
+            const Image ref = references.render(scene, shader);
+            const Counts n = count_rgba(q, ref);
+            csv() << name << "," << shader << "," << kDriverName << "," << n.covered << "," << n.coverage_mismatch << ","
+                  << n.over_1 << "," << n.over_2 << "," << n.max_steps << "," << n.not_bit_exact << "\n"
+                  << std::flush;
+            if (n.coverage_mismatch || n.max_steps) {
+                const std::string stem = std::filesystem::path(name).stem().string();
+                write_comparison(q, ref, std::filesystem::path(QUADSHADE_BIN_DIR) / ".." / "conformance" /
+                                             ("texture-" + stem + "-" + shader + "-" + kDriverName + ".png"));
+            }
+            INFO(name << " / " << shader << " vs " << kDriverName << ": " << n.covered << " covered pixels, "
+                      << n.over_1 << " over 1/255, " << n.over_2 << " over 2/255, max " << n.max_steps
+                      << "/255, coverage mismatches " << n.coverage_mismatch << ", not bit-exact " << n.not_bit_exact);
+            const std::string group = shader.rfind("halftone", 0) == 0 ? "halftone" : shader;
+            const auto it = kBounds.find(std::string(name) + " " + group + " " + kDriverName);
+            const Bound bound = it == kBounds.end() ? Bound{} : it->second;
+            INFO("bound: " << bound.cause);
+            CHECK(n.covered > 0);
+            CHECK(n.coverage_mismatch == 0);
+            // One lookup, where the varyings are llvmpipe's to the bit (every scene's st is: the
+            // geometry conformance tests): the sampler's arithmetic is llvmpipe's to the bit. (One
+            // pixel of mirrored-mipmaps is not: llvmpipe's float path decides per 8-lane vector
+            // whether to filter linearly, and quadshade batches a triangle-edge quad there with
+            // quads of another block; its float bits differ, its 8 bits do not.)
+            if (kDriver == GlDriver::Llvmpipe && shader == "single_texture") CHECK(n.not_bit_exact <= n.covered / 1000);
+            if (kDriver == GlDriver::Llvmpipe || !softpipe_own_lod(scene)) {
+                CHECK(double(n.over_1) <= 0.001 * double(n.covered) + double(bound.over_1));
+                CHECK(n.over_2 <= bound.over_2);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": wraps, st far outside [0, 1]", "[conformance][textures]") {
+    check_scenes(kWrapScenes);
+}
+
+TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": filters and mipmaps on a receding plane",
+          "[conformance][textures]") {
+    check_scenes(kFilterScenes);
+}
+
+TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": the image from a file, a data: URI, a bufferView",
+          "[conformance][textures]") {
+    check_scenes(kSourceScenes);
+}
+
+#if defined(QUADSHADE_CONFORMANCE_LLVMPIPE)
+TEST_CASE("orientation: glTF's UV (0, 0) is the image's top-left: t = 0.01 samples the top row",
+          "[conformance][textures]") {
+    // A 4x4 image whose rows differ: red, green, blue, white from the top.
+    const float rows[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+    Image img{4, 4, std::vector<float>(64)};
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            for (int c = 0; c < 3; ++c) img.rgba[std::size_t((y * 4 + x) * 4 + c)] = rows[y][c];
+            img.rgba[std::size_t((y * 4 + x) * 4 + 3)] = 1.0f;
+        }
+    }
+    const auto dir = temp_dir("orientation");
+    write_image(dir / "rows.png", img);
+    Scene s = load_scene(kPlane);
+    s.width = s.height = 16;
+    s.objects[0].shader = "single_texture";
+    Texture t;
+    t.image.file = dir / "rows.png";
+    t.sampler = {Filter::Linear, Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge};
+    s.textures = {t};
+    s.objects[0].texture = 0;
+    for (Vertex& v : s.meshes[0].vertices) v.texcoord.y = 0.01f;  // every pixel at t = 0.01
+    save_scene(s, dir / "orientation.gltf");
+
+    Scene loaded = load_scene(dir / "orientation.gltf");
+    const Framebuffer q = render_frame(loaded, {});
+    const Image lp = References().render(loaded, "");
+    // t = 0.01 is within the first row's upper half: clamped bilinear filtering returns that
+    // row exactly, red (upside down it would be the last row, white).
+    for (int p = 0; p < 16 * 16; ++p) {
+        INFO("pixel " << p);
+        CHECK(q.rgba[std::size_t(p) * 4 + 0] == 1.0f);
+        CHECK(q.rgba[std::size_t(p) * 4 + 1] == 0.0f);
+        CHECK(q.rgba[std::size_t(p) * 4 + 2] == 0.0f);
+    }
+    CHECK(q.rgba == lp.rgba);
+}
+#endif
+
+}  // namespace qs
