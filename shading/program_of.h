@@ -20,8 +20,9 @@
 // type, as a GPU compiler would make it, instead of calls passing vectors through memory (it
 // doubled the noise shaders' throughput). Only where a batch is one native register (AVX-512):
 // with narrower vectors a batch is a tuple of registers and flattening it makes compile times
-// explode (minutes per shader group) for little gain.
-#if defined(__AVX512F__)
+// explode (minutes per shader group) for little gain. A group of small shaders whose compile
+// time it barely touches defines QS_FLATTEN_ON_EVERY_TARGET before including this header.
+#if defined(__AVX512F__) || defined(QS_FLATTEN_ON_EVERY_TARGET)
 #define QS_FLATTEN [[gnu::flatten]]
 #else
 #define QS_FLATTEN

@@ -21,7 +21,8 @@
 //    uint(x) is llvmpipe's sequence on AVX2 hosts: int(x) | (int(x - 2^31) & sign mask of int(x)),
 //    which is exact on [0, 2^32) and uint(int(x)) for negative x.
 // Nothing here traps or is undefined in C++: division goes through double (exact for 32-bit
-// operands) with the divisor replaced where it is 0; out-of-range conversions are selected away.
+// operands) with the divisor replaced where it is 0; conversions use x86's, which are defined out
+// of range, or check the range.
 
 #include <bit>
 #include <concepts>
@@ -29,6 +30,10 @@
 #include <cstdint>
 #include <experimental/simd>
 #include <type_traits>
+
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include "shading/number/checked.h"
 #include "shading/number/dual2.h"
@@ -48,6 +53,36 @@ template <class T, class S, int N, class L>
 struct abi_of<T, Lanes<S, N, L>> {
     using type = stdx::simd_abi::deduce_t<T, N>;
 };
+
+// int(x) of N floats or doubles: truncated, INT_MIN out of range (after truncation) and for
+// NaN. That is the x86 conversions' answer (cvttps2dq, cvttpd2dq and their wider forms), which
+// they give with no masks; elsewhere it is stated lane by lane.
+template <class S, int N>
+void truncate(const S (&in)[N], std::int32_t (&out)[N]) {
+    int k = 0;
+#if defined(__AVX512F__)
+    if constexpr (std::is_same_v<S, float>) {
+        for (; k + 16 <= N; k += 16) _mm512_storeu_si512(out + k, _mm512_cvttps_epi32(_mm512_loadu_ps(in + k)));
+    } else {
+        for (; k + 8 <= N; k += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm512_cvttpd_epi32(_mm512_loadu_pd(in + k)));
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (std::is_same_v<S, float>) {
+        for (; k + 8 <= N; k += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm256_cvttps_epi32(_mm256_loadu_ps(in + k)));
+    } else {
+        for (; k + 4 <= N; k += 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm256_cvttpd_epi32(_mm256_loadu_pd(in + k)));
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<S, float>) {
+        for (; k + 4 <= N; k += 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm_cvttps_epi32(_mm_loadu_ps(in + k)));
+    }
+#endif
+    for (; k < N; ++k) {
+        out[k] = (in[k] > S(-2147483649.0) && in[k] < S(2147483648.0)) ? std::int32_t(in[k]) : std::int32_t(INT32_MIN);
+    }
+}
 
 // Casts between masks of the same lanes and different value types or ABIs (bool for one lane).
 template <class To, class From>
@@ -216,7 +251,7 @@ private:
         using W = stdx::simd<std::int64_t, stdx::simd_abi::deduce_t<std::int64_t, size>>;
         const D q = stdx::trunc(stdx::static_simd_cast<D>(a.v) / stdx::static_simd_cast<D>(b));
         const W w = stdx::static_simd_cast<W>(q);  // |q| <= 2^32: in range
-        return IntLanes(stdx::static_simd_cast<Simd>(stdx::static_simd_cast<stdx::simd<std::uint32_t, typename W::abi_type>>(w)));
+        return wrap(stdx::static_simd_cast<Bits>(w));  // the low 32 bits
     }
 
     // int(x), uint(x) of F's lanes.
@@ -227,12 +262,12 @@ private:
             using S = typename F::value_type;
             using I = stdx::simd<std::int32_t, typename Simd::abi_type>;
             auto to_int = [](const typename F::Simd& f) {
-                // cvttps2dq's answer, stated: INT_MIN out of range (after truncation) and for NaN.
-                const auto in = f > S(-2147483649.0) && f < S(2147483648.0);
-                typename F::Simd safe(S(0));
-                stdx::where(in, safe) = f;
-                I r = stdx::static_simd_cast<I>(safe);
-                stdx::where(integer_detail::mask_cast<typename I::mask_type>(!in), r) = std::int32_t(INT32_MIN);
+                alignas(64) S in[size];
+                alignas(64) std::int32_t out[size];
+                f.copy_to(in, stdx::element_aligned);
+                integer_detail::truncate(in, out);
+                I r;
+                r.copy_from(out, stdx::element_aligned);
                 return r;
             };
             const I i = to_int(x.v);

@@ -55,7 +55,7 @@ struct PcgValueNoise {
 struct Mandelbrot {
     static constexpr ShaderInfo info{"mandelbrot", "Lawlor, Procedural Solid Texturing: the Mandelbrot set in window coordinates, up to 100 iterations with break",
                                      Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                           .depth = false, .varyings = 0, .frag_coord = true},
+                                           .varyings = 0, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/mandelbrot.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>

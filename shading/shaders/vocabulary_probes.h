@@ -13,7 +13,7 @@ namespace qs::shaders {
 using namespace qs::glsl;
 
 inline constexpr Needs kWindowProbeNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                         .depth = false, .varyings = 0, .frag_coord = true};
+                                         .varyings = 0, .frag_coord = true};
 
 struct IntegerProbe {
     static constexpr ShaderInfo info = with_glsl_version(
@@ -171,7 +171,7 @@ struct LoopProbe {
 struct DiscardProbe {
     static constexpr ShaderInfo info{"discard_probe", "probe: discard on a pattern, before a value and inside a loop; derivatives after it",
                                      Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false,
-                                           .depth = true, .varyings = 0, .frag_coord = true},
+                                           .varyings = 0, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/discard_probe.frag"}};
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
     template <class F>
