@@ -147,8 +147,11 @@ public:
         end();
         return false;
     }
-    // A condition the same for every lane (a loop counter); false ends the loop for all.
-    bool operator()(bool uniform) {
+    // A condition the same for every lane (a loop counter); false ends the loop for all. (Per
+    // pixel, where a mask is one bool, the overload above is this one.)
+    bool operator()(bool uniform)
+        requires(!std::is_same_v<M, bool>)
+    {
         next();
         if (uniform && any(this->active_)) return true;
         end();
