@@ -51,6 +51,9 @@ const char* kRenderHelp =
     "  --frames A:B            render frames A..B (inclusive) at time = frame / fps\n"
     "  --fps N                 frames per second for --frames (default 30)\n"
     "  --shader NAME           draw every object with this catalogue shader\n"
+    "  --uniform NAME=VALUE    a shader's own uniform, for every object whose shader declares it\n"
+    "                          (replaces the material's extras.uniforms): 4.0, 1,0.5,0.2 or [1,0.5,0.2];\n"
+    "                          matrices column by column; repeatable\n"
     "  --backend B             raster (default) | raycast (Embree, 2x2 ray quads)\n"
     "  --derivatives RULE      fine (llvmpipe, default) | coarse-lower (softpipe) |\n"
     "                          coarse-upper (first pixel of a top-down quad) | analytic (Dual2;\n"
@@ -169,6 +172,12 @@ int cmd_render(int argc, char** argv) {
             req.shader_override = need_value(i, argc, argv);
         } else if (a == "--plugin") {
             load_plugin(need_value(i, argc, argv));
+        } else if (a == "--uniform") {
+            try {
+                req.uniforms.push_back(parse_uniform_option(need_value(i, argc, argv)));
+            } catch (const UniformOptionError& e) {
+                throw UsageError(e.what());
+            }
         } else if (a == "--backend") {
             const std::string v = need_value(i, argc, argv);
             if (v == "raster") req.backend = Backend::Rasterizer;
@@ -395,6 +404,9 @@ int main(int argc, char** argv) {
         throw UsageError(cmd.empty() ? "no command given" : "unknown command '" + cmd + "'");
     } catch (const UsageError& e) {
         std::fprintf(stderr, "quadshade: %s\n\n%s", e.what(), kHelp);
+        return kExitUsage;
+    } catch (const UniformOptionError& e) {  // a --uniform no drawn shader takes
+        std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade: %s\n", e.what());

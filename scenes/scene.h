@@ -15,6 +15,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "scenes/uniforms.h"
+
 namespace qs {
 
 // Bad input: the message names the file and the field at fault.
@@ -94,6 +96,8 @@ struct Object {
     // its extras.teximage names. Index into Scene::textures, -1 for none.
     int texture = -1;
     std::string material; // for messages: which glTF material named the shader
+    // Values for the shader's own uniforms: the material's extras.uniforms, by name.
+    std::vector<UniformSetting> uniforms;
 };
 
 struct Scene {

@@ -7,5 +7,6 @@
 #include "shading/glsl/mat.h"
 #include "shading/glsl/table.h"
 #include "shading/glsl/texture.h"
+#include "shading/glsl/uniform.h"
 #include "shading/glsl/vec.h"
 #include "shading/number/number.h"

@@ -132,11 +132,14 @@ class ProgramOf final : public Program {
 public:
     const ShaderInfo& info() const override { return Shader::info; }
 
-    void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const override {
-        Shader::vertex(in, u, out);
+    void vertex(const VertexIn& in, const Uniforms& given, VertexOut& out) const override {
+        Uniforms scratch;
+        Shader::vertex(in, with_user_uniforms(given, scratch), out);
     }
 
-    void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const override {
+    void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& given, ColorBatch& out) const override {
+        Uniforms scratch;
+        const Uniforms& u = with_user_uniforms(given, scratch);
         if (mode.check_undefined) return shade_checked(mode, in, u, out);
         const bool dbl = mode.precision == Precision::Double;
         switch (mode.derivatives) {
@@ -161,8 +164,10 @@ public:
         }
     }
 
-    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
+    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& given,
                     ColorBatch& out_a, ColorBatch& out_b) const override {
+        Uniforms scratch;
+        const Uniforms& u = with_user_uniforms(given, scratch);
         static_assert(!Shader::info.wide_batches || !Shader::info.needs.derivatives,
                       "wide batches are per pixel: quads on two registers shuffle slower than they gain");
         if constexpr (kWidePairs && Shader::info.wide_batches) {
@@ -175,6 +180,18 @@ public:
     }
 
 private:
+    // The shader's own uniforms at their initial values, for callers that set none (tests and
+    // benchmarks drawing without a scene).
+    static constexpr std::size_t kUserUniforms = Shader::info.uniforms.size();
+    static constexpr std::array<std::uint32_t, kUserUniforms * kUniformWords> kInitialUniforms =
+        initial_uniform_words(std::span<const UniformDecl, kUserUniforms>(Shader::info.uniforms.data(), kUserUniforms));
+    static const Uniforms& with_user_uniforms(const Uniforms& given, Uniforms& scratch) {
+        if (kUserUniforms == 0 || given.user) return given;
+        scratch = given;
+        scratch.user = kInitialUniforms.data();
+        return scratch;
+    }
+
     // The same shader over Checked numbers: colours as above, and each lane's undefined cases.
     static void shade_checked(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         if (mode.precision == Precision::Double || mode.derivatives == Derivatives::Analytic) {

@@ -4,6 +4,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS(IntegerProbe, IntegerUndefinedProbe, BoolProbe, LoopProbe, DiscardProbe, MatrixProbe, BuiltinsProbe)
+QUADSHADE_SHADERS(IntegerProbe, IntegerUndefinedProbe, BoolProbe, LoopProbe, DiscardProbe, MatrixProbe, BuiltinsProbe,
+                  UniformProbe)
 
 }  // namespace qs::shaders

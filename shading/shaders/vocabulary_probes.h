@@ -257,4 +257,39 @@ struct BuiltinsProbe {
     }
 };
 
+struct UniformProbe {
+    static constexpr UniformDecl kUniforms[] = {
+        {"uScale", UniformType::Float, {4.0f}},
+        {"uTint", UniformType::Vec3, {1.0f, 0.5f, 0.2f}},
+        {"uBands", UniformType::Int, {3.0f}},
+        {"uCells", UniformType::IVec2, {2.0f, 5.0f}},
+        {"uSeed", UniformType::Uint, {7.0f}},
+        {"uRotate", UniformType::Mat2, {1.0f, 0.0f, 0.0f, 1.0f}},
+        {"uWarp", UniformType::Mat3, {1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f}},
+        // Always the frame's size in both renderers; this is only for a draw without a scene
+        // (tests of every shader on bare batches), where 0 would make every pixel alike.
+        {"uResolution", UniformType::Vec2, {64.0f, 64.0f}},
+    };
+    enum : int { uScale, uTint, uBands, uCells, uSeed, uRotate, uWarp, uResolution };
+    static_assert(kUniforms[uResolution].name == "uResolution" && kUniforms[uWarp].name == "uWarp");
+    static constexpr ShaderInfo info = with_uniforms(
+        with_glsl_version(ShaderInfo{"uniform_probe", "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
+                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
+                          130),
+        kUniforms);
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        using Int = int_t<F>;
+        using Uint = uint_t<F>;
+        vec2<F> p = in.gl_FragCoord.xy() / uniform<vec2<F>>(u, uResolution) - 0.5f;
+        vec2<F> q = uniform<mat2<F>>(u, uRotate) * p * uniform<F>(u, uScale);
+        vec3<F> w = uniform<mat3<F>>(u, uWarp) * vec3<F>(q, 1.0f);
+        ivec2<F> cell = ivec2<F>(floor(abs(w.xy()))) * uniform<ivec2<F>>(u, uCells);
+        Int bands = max(uniform<Int>(u, uBands), Int(1));
+        Int band = Int((Uint(cell.x + cell.y) * uniform<Uint>(u, uSeed)) % Uint(bands));
+        return vec4<F>(uniform<vec3<F>>(u, uTint) * (F(band + 1) / F(bands)), fract(w.z));
+    }
+};
+
 }  // namespace qs::shaders

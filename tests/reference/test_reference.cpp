@@ -87,12 +87,14 @@ std::filesystem::path work_dir() {
     return dir;
 }
 
-Image reference(const Case& c, const std::string& driver, int width, int height) {
+// `options`: more of quadshade-reference's options (--uniform ...); the case's name must tell
+// renders with different options apart.
+Image reference(const Case& c, const std::string& driver, int width, int height, const std::string& options = "") {
     const auto out = work_dir() / (c.name + "." + driver + "." + std::to_string(width) + "x" + std::to_string(height) + ".exr");
     if (!std::filesystem::exists(out)) {
         std::string cmd = (kBin / "quadshade-reference").string() + " " + c.scene.string() + " -o " + out.string() +
                           " --glsl " + QUADSHADE_GLSL_DIR + " --driver " + driver + " --size " + std::to_string(width) +
-                          "x" + std::to_string(height);
+                          "x" + std::to_string(height) + " " + options;
         if (!c.shader.empty()) cmd += " --shader " + c.shader;
         cmd += " 2> /dev/null";
         if (std::system(cmd.c_str()) != 0) throw std::runtime_error("reference render failed: " + cmd);
@@ -101,10 +103,11 @@ Image reference(const Case& c, const std::string& driver, int width, int height)
 }
 
 // quadshade set up as the driver whose rule this is (comparison.h).
-Framebuffer ours(const Case& c, Derivatives rule, int width, int height) {
+Framebuffer ours(const Case& c, Derivatives rule, int width, int height, std::vector<UniformSetting> uniforms = {}) {
     Scene scene = load_scene(c.scene);
     FrameRequest r;
     r.width = width, r.height = height;
+    r.uniforms = std::move(uniforms);
     r.shader_override = c.shader;
     r.raster = raster_options_as(rule == Derivatives::CoarseLower ? GlDriver::Softpipe : GlDriver::Llvmpipe);
     return render_frame(scene, r);
@@ -544,6 +547,63 @@ TEST_CASE("discard under depth testing: discarded fragments write no depth, in e
         CHECK(differing_values(q, lp, 0x3) == 0);
         CHECK(differing_values(q, lp, 0xC) == 0);
     }
+}
+
+TEST_CASE("uniforms: initializers, the material's extras.uniforms and --uniform bind the same values as in llvmpipe, bit for bit",
+          "[reference][uniforms]") {
+    // 61x37: uResolution is not a power of two, and quads stick out of the image.
+    constexpr int w = 61, h = 37;
+    const Case initial{"uniform-initial", kPlane, "uniform_probe", w, h};
+    Scene s = load_scene(kPlane);
+    for (Object& o : s.objects) {
+        o.shader = "uniform_probe";
+        o.uniforms = {{"uScale", {6.5}, ""},           {"uTint", {0.25, 1.0, 0.75}, ""},
+                      {"uBands", {5}, ""},             {"uCells", {3, -2}, ""},
+                      {"uSeed", {4000000000.0}, ""},   {"uRotate", {0.8, 0.6, -0.6, 0.8}, ""},
+                      {"uWarp", {1.0, 0.25, 0.0, -0.5, 1.0, 0.0, 0.125, 0.5, 1.0}, ""}};
+    }
+    const auto file = work_dir() / "uniforms.gltf";
+    save_scene(s, file);
+    const Case material{"uniform-material", file, "", w, h};
+    const Case option{"uniform-option", file, "", w, h};
+    const std::string options = "--uniform uScale=3 --uniform 'uTint=[1,0,0.5]' --uniform uWarp=1,0,0,0,1,0,0.3,0.1,1 --uniform uBands=-4";
+    const std::vector<UniformSetting> settings = {parse_uniform_option("uScale=3"), parse_uniform_option("uTint=[1,0,0.5]"),
+                                                  parse_uniform_option("uWarp=1,0,0,0,1,0,0.3,0.1,1"), parse_uniform_option("uBands=-4")};
+    const Framebuffer q0 = ours(initial, Derivatives::Fine, w, h), q1 = ours(material, Derivatives::Fine, w, h),
+                      q2 = ours(option, Derivatives::Fine, w, h, settings);
+    CHECK(differing_values(q0, reference(initial, "llvmpipe", w, h)) == 0);
+    CHECK(differing_values(q1, reference(material, "llvmpipe", w, h)) == 0);
+    CHECK(differing_values(q2, reference(option, "llvmpipe", w, h, options)) == 0);
+    CHECK(differing_values(q1, reference(material, "softpipe", w, h)) == 0);
+    // Each source of values changed the image.
+    Image i0{w, h, q0.rgba}, i1{w, h, q1.rgba};
+    CHECK(differing_values(q1, i0) > std::size_t(w * h / 4));
+    CHECK(differing_values(q2, i1) > std::size_t(w * h / 4));
+}
+
+TEST_CASE("uniforms: quadshade-reference refuses an unknown --uniform (exit 2) and a material's unknown or mistyped one (exit 1)",
+          "[reference][uniforms]") {
+    Scene s = load_scene(kPlane);
+    for (Object& o : s.objects) o.shader = "uniform_probe", o.uniforms = {{"uNope", {1.0}, ""}};
+    const auto unknown = work_dir() / "uniforms-unknown.gltf";
+    save_scene(s, unknown);
+    for (Object& o : s.objects) o.uniforms = {{"uBands", {0.5}, ""}};
+    const auto mistyped = work_dir() / "uniforms-mistyped.gltf";
+    save_scene(s, mistyped);
+    auto exit_code = [](const std::filesystem::path& scene, const std::string& options) {
+        const std::string cmd = (kBin / "quadshade-reference").string() + " " + scene.string() + " --glsl " + QUADSHADE_GLSL_DIR +
+                                " --size 8x8 -o " + (work_dir() / "refused.exr").string() + " " + options + " 2> /dev/null";
+        const int status = std::system(cmd.c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uBands=2") == 0);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uNope=1") == 2);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uScale") == 2);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uBands=1.5") == 2);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uTint=1,2") == 2);
+    CHECK(exit_code(unknown, "") == 1);
+    CHECK(exit_code(mistyped, "") == 1);
+    CHECK(exit_code(unknown, "--shader uniform_probe") == 0);  // under --shader, only the names it declares apply
 }
 
 }  // namespace qs
