@@ -343,7 +343,7 @@ int cmd_shaders(int argc, char** argv) {
     for (const Program* p : catalogue()) {
         const ShaderInfo& s = p->info();
         std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
-                    s.needs.derivatives ? "yes" : "-", s.needs.texture ? "yes" : "-", s.needs.time ? "yes" : "-",
+                    s.needs.derivatives ? "yes" : "-", samples_textures(s.needs) ? "yes" : "-", s.needs.time ? "yes" : "-",
                     std::string(s.description).c_str());
     }
     return 0;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shading/catalogue.h"
+#include "shading/shade_choice.h"
 
 namespace {
 
@@ -65,9 +66,11 @@ int main(int argc, char** argv) {
     std::vector<std::uint8_t> texels;
     for (int t = 0; t < 64 * 64 * 4; ++t) texels.push_back(std::uint8_t(t % 13 * 19));
     const glsl::sampler2D texture(64, 64, texels.data(), {});
+    const glsl::sampler3D volume(16, 16, 16, texels.data(), {glsl::Wrap::Repeat, glsl::Wrap::Repeat, glsl::Wrap::Repeat});
     Uniforms u;
     u.time = 0.5f;
     u.teximage = &texture;
+    u.samplers[0] = &volume;  // the named-sampler shaders' one sampler3D
     const FragmentBatch a = batch_at(0.0f);
     const FragmentBatch b = batch_at(4.0f);
     ColorBatch out_a, out_b;
@@ -76,8 +79,8 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---|---|---|---|\n");
     for (const Program* program : catalogue()) {
         const ShaderInfo& info = program->info();
-        ShadeMode mode;
-        mode.derivatives = info.needs.derivatives ? Derivatives::Fine : Derivatives::None;
+        const DrawShading shading = choose_shading(info.needs, false, ShadeRequest{});
+        const ShadeMode mode = shading.mode;
         // Independent calls, as the rasterizer's blocks are: the CPU may overlap them.
         const double two = time_ns(repeat, [&] {
             program->shade(mode, a, u, out_a);
@@ -86,7 +89,7 @@ int main(int argc, char** argv) {
         const double pair = time_ns(repeat, [&] { program->shade_pair(mode, a, b, u, out_a, out_b); });
         sink = out_a.rgba[0][0] + out_b.rgba[0][0];
         std::printf("| %s | %s | %s | %.1f | %.1f | %.2f |\n", std::string(info.name).c_str(),
-                    info.needs.derivatives ? "fine quads" : "pixels", info.wide_batches ? "yes" : "no", two, pair,
+                    shading.quads ? "fine quads" : "pixels", info.wide_batches ? "yes" : "no", two, pair,
                     pair / two);
     }
     return 0;

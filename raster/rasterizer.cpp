@@ -24,6 +24,7 @@
 #include "raster/float_environment.h"
 #include "raster/lanes16.h"
 #include "raster/triangle_setup.h"
+#include "shading/shade_choice.h"
 
 namespace qs {
 
@@ -473,16 +474,6 @@ void check_image_size(int width, int height) {
     }
 }
 
-void check_undefined_mode(bool check_undefined, Derivatives derivatives, Precision precision) {
-    if (!check_undefined) return;
-    if (derivatives == Derivatives::Analytic) {
-        throw std::invalid_argument("checking for undefined GLSL cases needs quad or per-pixel derivatives, not analytic");
-    }
-    if (precision == Precision::Double) {
-        throw std::invalid_argument("checking for undefined GLSL cases shades in float, not double");
-    }
-}
-
 int quad_row_offset(int height, QuadPairing pairing) {
     // Top-down pairing: framebuffer rows (2k, 2k+1), offset 0. Bottom-up: GL rows (2k, 2k+1) are
     // framebuffer rows (H-2-2k, H-1-2k), so at an odd height the grid starts at row -1.
@@ -499,30 +490,22 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                     const RasterOptions& options, RasterStats* stats_out) {
     check_image_size(width, height);
-    check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
+    const ShadeRequest request{options.derivatives, options.precision, options.check_undefined,
+                               options.force_general_path};
+    check_supported(request);
     std::vector<PreparedDraw> prepared;
     for (const DrawCall& call : draws) {
         if (!call.program) throw std::invalid_argument("draw call without a program");
         const Needs& needs = call.program->info().needs;
+        const DrawShading shading = choose_shading(needs, call.texture_lod, request);
         PreparedDraw d{&call,
-                       {options.derivatives, options.precision, options.check_undefined},
-                       true,
+                       shading.mode,
+                       shading.quads,
                        false,  // decided below, for the whole frame
                        needs.frag_coord || options.force_general_path,
                        needs.varyings,
                        needs.flat_varyings,
                        options.fused_interpolation};
-        // Derivatives: the shader's own, or a texture's level of detail.
-        const bool derivatives = needs.derivatives || call.texture_lod;
-        if (!derivatives && !options.force_general_path) {
-            d.mode.derivatives = Derivatives::None;  // per pixel, no helper lanes
-            d.quads = false;
-        } else if (d.mode.derivatives == Derivatives::None) {
-            d.mode.derivatives = derivatives ? Derivatives::Fine : Derivatives::None;
-            d.quads = derivatives;
-        } else if (d.mode.derivatives == Derivatives::Analytic) {
-            d.quads = false;  // Dual2 carries derivatives: no neighbours needed
-        }
         prepared.push_back(d);
     }
 

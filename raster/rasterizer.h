@@ -43,7 +43,7 @@ struct RasterOptions {
     // changes nothing.
     bool force_general_path = false;
     // Fill Framebuffer::undefined: shade with Checked numbers (float only; not with Analytic
-    // derivatives or Double precision: std::invalid_argument). Same colours, slower.
+    // derivatives or Double precision: shade_choice.h). Same colours, slower.
     bool check_undefined = false;
     int threads = 0;  // 0: all cores
 };
@@ -57,7 +57,8 @@ struct RasterStats {
 };
 
 // Renders draws into a width x height framebuffer cleared to `clear`.
-// Throws std::invalid_argument for absurd sizes or a draw without a program.
+// Throws std::invalid_argument for absurd sizes or a draw without a program, UnsupportedRequest
+// (shade_choice.h) for options no shader instantiation honours.
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                       const RasterOptions& options, RasterStats* stats = nullptr);
 // The same into `fb`, reusing its memory (animation loops, benchmarks): every pixel is written.
@@ -73,9 +74,5 @@ int quad_row_offset(int height, QuadPairing pairing);
 // naming the size otherwise.
 inline constexpr int kMaxDimension = 1 << 15;
 void check_image_size(int width, int height);
-
-// Undefined-case checking shades Checked float pixels or quads: throws std::invalid_argument
-// for Analytic derivatives or Double precision when `check_undefined` is on.
-void check_undefined_mode(bool check_undefined, Derivatives derivatives, Precision precision);
 
 }  // namespace qs

@@ -22,6 +22,7 @@
 
 #include "raster/block_layout.h"
 #include "raycast/embree_scene.h"
+#include "shading/shade_choice.h"
 #include "raster/float_environment.h"
 
 namespace qs {
@@ -378,7 +379,8 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
                             const RayCastOptions& options, RasterStats* stats_out) {
     Impl& im = *impl_;
     check_image_size(width, height);
-    check_undefined_mode(options.check_undefined, options.derivatives, options.precision);
+    const ShadeRequest request{options.derivatives, options.precision, options.check_undefined};
+    check_supported(request);
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
     for (std::size_t i = 0; i < draws.size(); ++i) {
         if (draws[i].vertices.size() != im.meshes[i].out.size()) {
@@ -397,16 +399,8 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     std::vector<PreparedDraw> prepared;
     for (std::size_t i = 0; i < draws.size(); ++i) {
         const Needs& needs = draws[i].program->info().needs;
-        PreparedDraw d{&draws[i], &im.meshes[i], {options.derivatives, options.precision, options.check_undefined}, true, needs.varyings,
-                       needs.flat_varyings};
-        // Derivatives: the shader's own, or a texture's level of detail.
-        const bool derivatives = needs.derivatives || draws[i].texture_lod;
-        if (!derivatives || d.mode.derivatives == Derivatives::None) {
-            d.mode.derivatives = derivatives ? Derivatives::Fine : Derivatives::None;
-            d.quads = derivatives;
-        } else if (d.mode.derivatives == Derivatives::Analytic) {
-            d.quads = false;  // ray differentials: no neighbours needed
-        }
+        const DrawShading shading = choose_shading(needs, draws[i].texture_lod, request);
+        PreparedDraw d{&draws[i], &im.meshes[i], shading.mode, shading.quads, needs.varyings, needs.flat_varyings};
         prepared.push_back(d);
         stats.triangles_in += draws[i].indices.size() / 3;
         stats.triangles_setup += im.meshes[i].triangles.size();

@@ -53,9 +53,33 @@ GLuint compile(GLenum stage, const std::filesystem::path& file) {
     return s;
 }
 
-// The uniforms bound by name as the chapter's demo binds them; any other is the shader's own
-// (set from the scene or --uniform, else its initializer), or uResolution.
-const std::set<std::string> kKnownUniforms = {"time", "teximage", "dims"};
+// The uniforms bound by name as the chapter's demo binds them, besides the samplers; any other is
+// the shader's own (set from the scene or --uniform, else its initializer), or uResolution.
+const std::set<std::string> kKnownUniforms = {"time", "dims"};
+
+// A linked program's active uniforms, as (name, GL type).
+std::vector<std::pair<std::string, GLenum>> active_uniforms(GLuint p) {
+    std::vector<std::pair<std::string, GLenum>> r;
+    GLint count = 0;
+    glGetProgramiv(p, GL_ACTIVE_UNIFORMS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char uniform[256] = {};
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(p, GLuint(i), GLsizei(sizeof uniform), nullptr, &size, &type, uniform);
+        r.emplace_back(uniform, type);
+    }
+    return r;
+}
+
+// Its sampler uniforms, bound per object by name, as (name, dimensions).
+std::vector<std::pair<std::string, int>> samplers_of(GLuint p) {
+    std::vector<std::pair<std::string, int>> r;
+    for (const auto& [name, type] : active_uniforms(p)) {
+        if (type == GL_SAMPLER_2D || type == GL_SAMPLER_3D) r.emplace_back(name, type == GL_SAMPLER_3D ? 3 : 2);
+    }
+    return r;
+}
 
 // A uniform type's number of components and whether they are integers; 0 for a type the
 // reference cannot set from numbers (samplers, bools).
@@ -79,25 +103,6 @@ GlUniformType gl_uniform_type(GLenum type) {
         case GL_FLOAT_MAT4: return {16};
         default: return {};
     }
-}
-
-struct ActiveUniform {
-    std::string name;
-    GLenum type = 0;
-    GLint size = 0;  // array length
-};
-std::vector<ActiveUniform> active_uniforms(GLuint program) {
-    GLint count = 0;
-    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
-    std::vector<ActiveUniform> all;
-    for (GLint i = 0; i < count; ++i) {
-        char name[256] = {};
-        ActiveUniform u;
-        glGetActiveUniform(program, GLuint(i), GLsizei(sizeof name), nullptr, &u.size, &u.type, name);
-        u.name = name;
-        all.push_back(std::move(u));
-    }
-    return all;
 }
 
 // Whether the GLSL text declares `uniform TYPE name` (a uniform the compiler dropped as unused
@@ -136,11 +141,12 @@ GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& na
     glDeleteShader(vs);
     glDeleteShader(fs);
     // A uniform the reference cannot set: refuse it rather than render something else.
-    for (const ActiveUniform& u : active_uniforms(p)) {
-        if (u.name.rfind("gl_", 0) != 0 && !kKnownUniforms.count(u.name) && (gl_uniform_type(u.type).components == 0 || u.size != 1)) {
+    for (const auto& [u, type] : active_uniforms(p)) {
+        const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;  // bound per object, by name
+        if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u) && gl_uniform_type(type).components == 0) {
             glDeleteProgram(p);
-            throw std::runtime_error(name + ": uniform '" + u.name + "' is none the reference binds (time, teximage, dims, " +
-                                     "or a float, vec, int, ivec, uint or mat of the shader's own)");
+            throw std::runtime_error(name + ": uniform '" + u + "' is none the reference binds (time, dims, " +
+                                     "sampler2D/sampler3D uniforms, or a float, vec, int, ivec, uint or mat of the shader's own)");
         }
     }
     return p;
@@ -216,7 +222,12 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
         }
         const GLuint p = programs.program(name);
         programs_.push_back(p);
-        bound_.push_back(glGetUniformLocation(p, "teximage") >= 0 ? &texture_of(o, name) : nullptr);
+        std::vector<Binding> bindings;
+        for (const auto& [uniform, dims] : samplers_of(p)) {
+            const int unit = int(bindings.size());
+            bindings.push_back({glGetUniformLocation(p, uniform.c_str()), unit, &texture_of(o, name, uniform, dims)});
+        }
+        bound_.push_back(std::move(bindings));
         // Under --shader a material's uniforms were written for its own shader: only the ones the
         // drawn program has apply.
         std::vector<UniformSetting> settings = merge_uniforms(o.uniforms, request_.uniforms);
@@ -258,8 +269,8 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
             refuse("shader '" + shader + "' has no uniform '" + s.name + "'");
         }
         GLenum type = 0;
-        for (const ActiveUniform& u : active_uniforms(program)) {
-            if (u.name == s.name) type = u.type;
+        for (const auto& [name, t] : active_uniforms(program)) {
+            if (name == s.name) type = t;
         }
         const GlUniformType g = gl_uniform_type(type);
         if (g.components == 0) refuse("uniform '" + s.name + "' of shader '" + shader + "' is of a type the reference cannot set");
@@ -278,34 +289,52 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
     return out;
 }
 
-const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader) {
-    if (o.texture < 0) {
-        throw std::runtime_error(scene_.file.string() + ": material '" + o.material + "': shader '" + shader +
-                                 "' samples teximage but the material has no pbrMetallicRoughness.baseColorTexture "
-                                 "or extras.teximage");
+const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
+                                                            const std::string& uniform, int dims) {
+    const int index = o.texture_for(uniform);
+    const std::string what = scene_.file.string() + ": material '" + o.material + "': shader '" + shader + "' samples " +
+                             (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + uniform + "'";
+    if (index < 0) {
+        throw std::runtime_error(what + (uniform == "teximage" ? " but the material has no pbrMetallicRoughness.baseColorTexture, "
+                                                                 "extras.teximage or extras.textures.teximage"
+                                                               : " but the material's extras.textures binds no texture to it"));
     }
-    Texture& t = textures_[std::size_t(o.texture)];
+    const qs::Texture& source = scene_.textures[std::size_t(index)];
+    if (source.dims != dims) throw std::runtime_error(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture");
+    Texture& t = textures_[std::size_t(index)];
     if (t.id) return t;
-    const qs::Texture& source = scene_.textures[std::size_t(o.texture)];
     DecodedImage image;
     try {
         image = decode_texture_image(source.image);
     } catch (const std::exception& e) {
         throw std::runtime_error(scene_.file.string() + ": " + source.field + ": " + e.what());
     }
+    const GLenum type = image.sixteen_bits ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE;
+    t.target = dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
     t.width = image.width, t.height = image.height;
     glGenTextures(1, &t.id);
-    glBindTexture(GL_TEXTURE_2D, t.id);
+    glBindTexture(t.target, t.id);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    // The first row of the image goes first: glTF's UV (0, 0) is the image's top-left corner.
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA,
-                 image.sixteen_bits ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE, image.bytes.data());
+    // The first row of the image goes first: glTF's UV (0, 0) is the image's top-left corner. A
+    // 3D texture's slices follow one another in the image's rows, as glTexImage3D reads them.
+    if (dims == 3) {
+        if (image.height % source.depth != 0) {
+            throw std::runtime_error(scene_.file.string() + ": " + source.field + ": a " + std::to_string(image.width) + "x" +
+                                     std::to_string(image.height) + " image does not stack " + std::to_string(source.depth) +
+                                     " slices of equal height");
+        }
+        t.height = image.height / source.depth;
+        glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, image.width, t.height, source.depth, 0, GL_RGBA, type, image.bytes.data());
+    } else {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, type, image.bytes.data());
+    }
     const Sampler& s = source.sampler;
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_enum(s.min_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_enum(s.mag_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_enum(s.wrap_s));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_enum(s.wrap_t));
-    if (uses_mipmaps(s.min_filter)) glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(t.target, GL_TEXTURE_MIN_FILTER, gl_enum(s.min_filter));
+    glTexParameteri(t.target, GL_TEXTURE_MAG_FILTER, gl_enum(s.mag_filter));
+    glTexParameteri(t.target, GL_TEXTURE_WRAP_S, gl_enum(s.wrap_s));
+    glTexParameteri(t.target, GL_TEXTURE_WRAP_T, gl_enum(s.wrap_t));
+    if (dims == 3) glTexParameteri(t.target, GL_TEXTURE_WRAP_R, gl_enum(s.wrap_r));
+    if (uses_mipmaps(s.min_filter)) glGenerateMipmap(t.target);
     if (GLenum e = glGetError(); e != GL_NO_ERROR) {
         throw std::runtime_error(scene_.file.string() + ": " + source.field + ": OpenGL error " + std::to_string(e) +
                                  " uploading the texture");
@@ -347,11 +376,16 @@ void GlSceneRenderer::draw() {
             glUniform2f(loc, float(width), float(height));
         }
         for (const UniformValue& u : uniforms_[i]) set_uniform(u.location, u.type, u.values);
-        if (const Texture* t = bound_[i]) {
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, t->id);
-            glUniform1i(glGetUniformLocation(p, "teximage"), 0);
-            if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) glUniform2f(loc, float(t->width), float(t->height));
+        for (const Binding& b : bound_[i]) {
+            glActiveTexture(GLenum(GL_TEXTURE0 + b.unit));
+            glBindTexture(b.texture->target, b.texture->id);
+            glUniform1i(b.location, b.unit);
+        }
+        if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) {
+            const int teximage = o.texture_for("teximage");
+            if (teximage < 0 || !textures_[std::size_t(teximage)].id) throw std::runtime_error(o.material + ": dims without teximage");
+            const Texture& t = textures_[std::size_t(teximage)];
+            glUniform2f(loc, float(t.width), float(t.height));
         }
         const Mesh& mesh = scene_.meshes[o.mesh];
         glEnableClientState(GL_VERTEX_ARRAY);

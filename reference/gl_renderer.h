@@ -1,10 +1,11 @@
 #pragma once
 // Renders a scene as any OpenGL application would, from the glTF alone: each object's shader is
 // the GLSL pair NAME.vert / NAME.frag in a folder (`quadshade shaders --export-glsl DIR` writes
-// it), its uniforms are bound by name (`time`, `teximage`, `dims`), its texture is decoded here
-// (texture_image.h) and uploaded in glTF's orientation (the image's first row at t = 0) with the
-// glTF sampler's wraps and filters, and glGenerateMipmap when the minification filter reads
-// mipmaps. Fixed-function state: depth test LESS against a buffer cleared to 1, no culling, no
+// it), its uniforms are bound by name (`time`, `dims`, and each sampler the program declares to
+// the texture the object's material binds to that name: teximage, extras.textures), its textures
+// are decoded here (texture_image.h) and uploaded in glTF's orientation (the image's first row at
+// t = 0; a 3D texture's slices are the image's bands of rows, glTexImage3D's own order) with the
+// sampler's wraps and filters, and glGenerateMipmap when the minification filter reads mipmaps. Fixed-function state: depth test LESS against a buffer cleared to 1, no culling, no
 // blending. Shared with the renderer: the scene model and the GLSL text, nothing else.
 
 #include <cstdint>
@@ -71,7 +72,14 @@ public:
 private:
     struct Texture {
         unsigned id = 0;
+        unsigned target = 0;  // GL_TEXTURE_2D or GL_TEXTURE_3D
         int width = 0, height = 0;
+    };
+    // A sampler uniform of an object's program and the texture unit it reads.
+    struct Binding {
+        int location = -1;
+        int unit = 0;
+        const Texture* texture = nullptr;
     };
     // A value for one of a program's own uniforms, as glUniform takes it.
     struct UniformValue {
@@ -82,14 +90,14 @@ private:
     void prepare(GlPrograms& programs);
     std::vector<UniformValue> uniform_values(unsigned program, const std::string& shader,
                                              const std::vector<UniformSetting>& settings, const std::filesystem::path& glsl_dir) const;
-    const Texture& texture_of(const Object& o, const std::string& shader);
+    const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims);
 
     const Scene& scene_;
     GlFrameRequest request_;
     GlContext& context_;
     std::unique_ptr<GlPrograms> own_programs_;  // when constructed from a GLSL folder
     std::vector<unsigned> programs_;       // per object
-    std::vector<const Texture*> bound_;    // per object, nullptr for none
+    std::vector<std::vector<Binding>> bound_;  // per object, its program's samplers
     std::vector<std::vector<UniformValue>> uniforms_;  // per object
     std::vector<Texture> textures_;        // per scene texture, id 0 until uploaded
 };

@@ -27,15 +27,23 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
-const glsl::sampler2D& SceneRenderer::texture_for(const Object& o, const Program& program) {
-    if (o.texture < 0) {
-        throw SceneError(scene_.file.string() + ": material '" + o.material + "': shader '" +
-                         std::string(program.info().name) +
-                         "' samples a texture (teximage) but the material has no "
-                         "pbrMetallicRoughness.baseColorTexture or extras.teximage");
+const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& program, std::string_view uniform, int dims) {
+    const std::string what = scene_.file.string() + ": material '" + o.material + "': shader '" +
+                             std::string(program.info().name) + "' samples " + (dims == 3 ? "a sampler3D" : "a sampler2D") +
+                             " '" + std::string(uniform) + "'";
+    const int index = o.texture_for(uniform);
+    if (index < 0) {
+        throw SceneError(what + (uniform == "teximage" ? " but the material has no pbrMetallicRoughness.baseColorTexture, "
+                                                         "extras.teximage or extras.textures.teximage"
+                                                       : " but the material's extras.textures binds no texture to it"));
     }
-    std::unique_ptr<glsl::sampler2D>& t = textures_[std::size_t(o.texture)];
-    if (!t) t = std::make_unique<glsl::sampler2D>(load_texture(scene_, scene_.textures[std::size_t(o.texture)]));
+    const Texture& source = scene_.textures[std::size_t(index)];
+    if (source.dims != dims) {
+        throw SceneError(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture" +
+                         (dims == 3 ? " (a 3D texture's binding gives its depth)" : ""));
+    }
+    std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
+    if (!t) t = load_texture(scene_, source);
     return *t;
 }
 
@@ -71,9 +79,15 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.program = &program;
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = float(request.time.value_or(double(scene.time)));
-        if (program.info().needs.texture) {
-            d.uniforms.teximage = &texture_for(o, program);
+        const Needs& needs = program.info().needs;
+        if (needs.texture) {
+            d.uniforms.teximage = static_cast<const glsl::sampler2D*>(&texture_for(o, program, "teximage", 2));
             d.texture_lod = d.uniforms.teximage->needs_lod();
+        }
+        for (std::size_t i = 0; i < needs.samplers.size() && !needs.samplers[i].name.empty(); ++i) {
+            const glsl::Texture& t = texture_for(o, program, needs.samplers[i].name, needs.samplers[i].dims);
+            d.uniforms.samplers[i] = &t;
+            d.texture_lod = d.texture_lod || t.needs_lod();
         }
         uniform_words_.push_back(bind_uniforms(program.info(), merge_uniforms(o.uniforms, request.uniforms), width_,
                                                height_, !request.shader_override.empty()));

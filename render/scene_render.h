@@ -50,14 +50,15 @@ public:
     double bvh_build_seconds() const;  // 0 for the rasterizer
 
 private:
-    // The texture an object's program samples, loaded on first use.
-    const glsl::sampler2D& texture_for(const Object& object, const Program& program);
+    // The texture an object binds to `uniform` (teximage or one of the program's Needs::samplers),
+    // of the kind the program declares, loaded on first use.
+    const glsl::Texture& texture_for(const Object& object, const Program& program, std::string_view uniform, int dims);
 
     Scene& scene_;
     FrameRequest request_;
     int width_, height_;
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
-    std::vector<std::unique_ptr<glsl::sampler2D>> textures_;  // per scene texture, null until sampled
+    std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> draws_;
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user
     struct Caster;

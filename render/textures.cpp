@@ -19,7 +19,7 @@ glsl::SamplerState sampler_state(const Sampler& s) {
                    : glsl::Filter::Nearest;
     };
     glsl::SamplerState r;
-    r.wrap_s = wrap(s.wrap_s), r.wrap_t = wrap(s.wrap_t);
+    r.wrap_s = wrap(s.wrap_s), r.wrap_t = wrap(s.wrap_t), r.wrap_r = wrap(s.wrap_r);
     r.mag = linear(s.mag_filter), r.min = linear(s.min_filter);
     r.mip = s.min_filter == Filter::NearestMipmapNearest || s.min_filter == Filter::LinearMipmapNearest ? glsl::MipFilter::Nearest
             : uses_mipmaps(s.min_filter)                                                                  ? glsl::MipFilter::Linear
@@ -27,12 +27,23 @@ glsl::SamplerState sampler_state(const Sampler& s) {
     return r;
 }
 
-glsl::sampler2D load_texture(const Scene& scene, const Texture& texture) {
+std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture) {
+    const std::string where = scene.file.string() + ": " + texture.field + ": ";
     try {
         const Image8 image = read_texture_image(texture.image);
-        return glsl::sampler2D(image.width, image.height, image.rgba.data(), sampler_state(texture.sampler));
+        if (texture.dims == 2) {
+            return std::make_unique<glsl::sampler2D>(image.width, image.height, image.rgba.data(), sampler_state(texture.sampler));
+        }
+        if (image.height % texture.depth != 0) {
+            throw SceneError(where + "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                             " image does not stack " + std::to_string(texture.depth) + " slices of equal height");
+        }
+        return std::make_unique<glsl::sampler3D>(image.width, image.height / texture.depth, texture.depth, image.rgba.data(),
+                                                 sampler_state(texture.sampler));
     } catch (const ImageError& e) {
-        throw SceneError(scene.file.string() + ": " + texture.field + ": " + e.what());
+        throw SceneError(where + e.what());
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(where + e.what());
     }
 }
 

@@ -1,8 +1,11 @@
 #pragma once
 // A scene's textures as the renderer samples them: the image decoded (scenes/image_io.h) and
-// uploaded in glTF's orientation (UV (0, 0) is the image's first row, so rows are not flipped),
-// the glTF sampler in the texture unit's terms, and mipmaps when its minification filter reads
-// them, made as llvmpipe's glGenerateMipmap makes them (shading/glsl/texture.h).
+// uploaded in glTF's orientation (UV (0, 0) is the image's first row, so rows are not flipped; a
+// 3D texture's slices are the image's bands of rows, top first), the glTF sampler in the texture
+// unit's terms, and mipmaps when its minification filter reads them, made as llvmpipe's
+// glGenerateMipmap makes them (shading/glsl/texture.h).
+
+#include <memory>
 
 #include "scenes/scene.h"
 #include "shading/glsl/texture.h"
@@ -11,7 +14,9 @@ namespace qs {
 
 glsl::SamplerState sampler_state(const Sampler& sampler);
 
-// Throws SceneError naming the scene file and the texture's field when the image cannot be read.
-glsl::sampler2D load_texture(const Scene& scene, const Texture& texture);
+// A glsl::sampler2D or, for a texture with dims 3, a glsl::sampler3D. Throws SceneError naming
+// the scene file and the texture's field when the image cannot be read, or its rows do not
+// divide into the texture's depth.
+std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture);
 
 }  // namespace qs

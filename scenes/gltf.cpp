@@ -245,7 +245,101 @@ public:
         return it->second;
     }
 
+    // Material `mi`'s extras.textures (gltf.h): each uniform's texture. One named `teximage`
+    // replaces `teximage` (the material's baseColorTexture) as extras.teximage does, which it
+    // may not accompany.
+    void named_of_material(int mi, Object& o) {
+        const tinygltf::Material& mat = m_.materials[std::size_t(mi)];
+        if (!mat.extras.IsObject() || !mat.extras.Has("textures")) return;
+        const std::string mf = "materials[" + std::to_string(mi) + "].extras";
+        const tinygltf::Value& all = mat.extras.Get("textures");
+        if (!all.IsObject()) fail(file_, mf + ".textures", "expected an object of sampler names");
+        for (const std::string& name : all.Keys()) {
+            const std::string field = mf + ".textures." + name;
+            if (name.empty() || name.rfind("gl_", 0) == 0 ||
+                !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }) ||
+                std::isdigit(static_cast<unsigned char>(name[0]))) {
+                fail(file_, mf + ".textures", "'" + name + "' is not a GLSL identifier");
+            }
+            const int t = binding(all.Get(name), field);
+            if (name == "teximage") {
+                if (mat.extras.Has("teximage")) fail(file_, field, "teximage is bound twice (extras.teximage too)");
+                if (scene_.textures[std::size_t(t)].dims != 2) fail(file_, field, "teximage is a sampler2D: no depth");
+                o.texture = t;
+            } else {
+                o.samplers.push_back({name, t});
+            }
+        }
+    }
+
 private:
+    // One binding of extras.textures: a glTF texture index, an image file, or an object of them
+    // with a sampler, a depth and wrapR.
+    int binding(const tinygltf::Value& v, const std::string& field) {
+        if (v.IsInt() || v.IsNumber()) return texture_index(v, field, Sampler{}, false, 2, 1);
+        if (v.IsString()) return file_texture(v.Get<std::string>(), field, Sampler{}, 2, 1);
+        if (!v.IsObject()) fail(file_, field, "expected a textures[] index, an image file name or an object");
+        for (const std::string& key : v.Keys()) {
+            if (key != "texture" && key != "image" && key != "sampler" && key != "depth" && key != "wrapR") {
+                fail(file_, field + "." + key, "unknown key (texture, image, sampler, depth, wrapR)");
+            }
+        }
+        if (v.Has("texture") == v.Has("image")) fail(file_, field, "needs exactly one of texture (an index) and image (a file)");
+        int dims = 2, depth = 1;
+        if (v.Has("depth")) {
+            const tinygltf::Value& d = v.Get("depth");
+            if (!d.IsInt() || d.Get<int>() < 1 || d.Get<int>() > 2048) fail(file_, field + ".depth", "expected a slice count in 1..2048");
+            dims = 3, depth = d.Get<int>();
+        }
+        Sampler sampler;
+        const bool own_sampler = v.Has("sampler");
+        if (own_sampler) {
+            const tinygltf::Value& si = v.Get("sampler");
+            if (!si.IsInt()) fail(file_, field + ".sampler", "expected a samplers[] index");
+            sampler = sampler_at(si.Get<int>(), field + ".sampler");
+        }
+        if (v.Has("wrapR")) {
+            if (dims != 3) fail(file_, field + ".wrapR", "only a 3D texture (with a depth) has an r axis");
+            const tinygltf::Value& w = v.Get("wrapR");
+            sampler.wrap_r = wrap_of(w.IsInt() ? w.Get<int>() : -1, field + ".wrapR");
+        }
+        if (v.Has("image")) {
+            if (!v.Get("image").IsString()) fail(file_, field + ".image", "expected a file name");
+            return file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims, depth);
+        }
+        return texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth);
+    }
+
+    int texture_index(const tinygltf::Value& v, const std::string& field, const Sampler& sampler, bool own_sampler, int dims,
+                      int depth) {
+        if (!v.IsInt()) fail(file_, field, "expected a textures[] index");
+        Texture t = read_texture(v.Get<int>(), field);
+        const Wrap wrap_r = sampler.wrap_r;
+        if (own_sampler) t.sampler = sampler;
+        t.sampler.wrap_r = wrap_r;
+        t.dims = dims, t.depth = depth;
+        return add_once(std::move(t));
+    }
+
+    int file_texture(const std::string& uri, const std::string& field, const Sampler& sampler, int dims, int depth) {
+        Texture t;
+        t.field = field;
+        t.image.file = resolve_uri(file_, uri, field);
+        t.sampler = sampler;
+        t.dims = dims, t.depth = depth;
+        return add_once(std::move(t));
+    }
+
+    // The same image, sampler and shape: one texture (its first field names it).
+    int add_once(Texture t) {
+        for (std::size_t i = 0; i < scene_.textures.size(); ++i) {
+            Texture o = scene_.textures[i];
+            o.field = t.field;
+            if (o == t) return int(i);
+        }
+        return add(std::move(t));
+    }
+
     const tinygltf::Texture& texture_at(int index, const std::string& field) const {
         if (std::size_t(index) >= m_.textures.size()) fail(file_, field + ".index", "texture index out of range");
         return m_.textures[std::size_t(index)];
@@ -285,19 +379,25 @@ private:
 
     // The texture's sampler, glTF's defaults where it gives none, its values checked.
     Sampler sampler_of(const tinygltf::Texture& gt, const std::string& field) const {
+        if (gt.sampler < 0) return Sampler{};
+        return sampler_at(gt.sampler, field + " sampler");
+    }
+
+    Wrap wrap_of(int v, const std::string& field) const {
+        if (v != int(Wrap::Repeat) && v != int(Wrap::MirroredRepeat) && v != int(Wrap::ClampToEdge)) {
+            fail(file_, field, "unknown wrap mode " + std::to_string(v) + " (10497, 33648 or 33071)");
+        }
+        return Wrap(v);
+    }
+
+    // samplers[index], `field` naming where the index came from.
+    Sampler sampler_at(int index, const std::string& field) const {
         Sampler s;
-        if (gt.sampler < 0) return s;
-        const std::string sf = "samplers[" + std::to_string(gt.sampler) + "]";
-        if (std::size_t(gt.sampler) >= m_.samplers.size()) fail(file_, field + " sampler", sf + " is out of range");
-        const tinygltf::Sampler& g = m_.samplers[std::size_t(gt.sampler)];
-        auto wrap = [&](int v, const char* name) {
-            if (v != int(Wrap::Repeat) && v != int(Wrap::MirroredRepeat) && v != int(Wrap::ClampToEdge)) {
-                fail(file_, sf + "." + name, "unknown wrap mode " + std::to_string(v) + " (10497, 33648 or 33071)");
-            }
-            return Wrap(v);
-        };
-        s.wrap_s = wrap(g.wrapS, "wrapS");
-        s.wrap_t = wrap(g.wrapT, "wrapT");
+        const std::string sf = "samplers[" + std::to_string(index) + "]";
+        if (index < 0 || std::size_t(index) >= m_.samplers.size()) fail(file_, field, sf + " is out of range");
+        const tinygltf::Sampler& g = m_.samplers[std::size_t(index)];
+        s.wrap_s = wrap_of(g.wrapS, sf + ".wrapS");
+        s.wrap_t = wrap_of(g.wrapT, sf + ".wrapT");
         if (g.magFilter != -1) {
             if (g.magFilter != int(Filter::Nearest) && g.magFilter != int(Filter::Linear)) {
                 fail(file_, sf + ".magFilter", "unknown filter " + std::to_string(g.magFilter) + " (9728 or 9729)");
@@ -447,6 +547,7 @@ Scene load_scene(const std::filesystem::path& path) {
                         o.shader = gmat.extras.Get("shader").Get<std::string>();
                     }
                     o.texture = textures.of_material(mat);
+                    textures.named_of_material(mat, o);
                     if (gmat.extras.IsObject() && gmat.extras.Has("uniforms")) {
                         o.uniforms = read_uniforms(gmat.extras.Get("uniforms"), path, mf + ".uniforms");
                     }
@@ -560,6 +661,22 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
         }
         mat.extras = tinygltf::Value(std::move(extras));
         mat.pbrMetallicRoughness.baseColorTexture.index = o.texture;
+        if (!o.samplers.empty()) {
+            tinygltf::Value::Object named;
+            for (const SamplerBinding& b : o.samplers) {
+                const Texture& t = scene.textures[std::size_t(b.texture)];
+                if (t.dims == 2) {
+                    named[b.uniform] = tinygltf::Value(b.texture);
+                } else {
+                    named[b.uniform] = tinygltf::Value(tinygltf::Value::Object{{"texture", tinygltf::Value(b.texture)},
+                                                                              {"depth", tinygltf::Value(t.depth)},
+                                                                              {"wrapR", tinygltf::Value(int(t.sampler.wrap_r))}});
+                }
+            }
+            tinygltf::Value::Object extras = mat.extras.Get<tinygltf::Value::Object>();
+            extras["textures"] = tinygltf::Value(named);
+            mat.extras = tinygltf::Value(extras);
+        }
         m.materials.push_back(mat);
         // A mesh per object, since glTF puts the material on the primitive.
         tinygltf::Mesh gm = m.meshes[o.mesh];

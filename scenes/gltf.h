@@ -7,6 +7,19 @@
 //  - the shaders' `teximage` is the material's pbrMetallicRoughness.baseColorTexture (an image
 //    file, a data: URI or a bufferView, with its sampler), or the file extras.teximage names
 //    (relative to the .gltf; it keeps the baseColorTexture's sampler, if any);
+//  - a shader's other samplers (sampler2D or sampler3D uniforms) are bound by their GLSL name in
+//    materials[i].extras.textures = { "NAME": BINDING, ... }, where BINDING is
+//      3                         glTF textures[3] (its image and sampler), a sampler2D;
+//      "images/wood.png"         an image file relative to the .gltf, glTF's default sampler;
+//      { "texture": 3 | "image": "noise3d.png",   exactly one of the two
+//        "sampler": 1,           glTF samplers[1] instead of the texture's own (or the default)
+//        "depth": 32,            a sampler3D of 32 slices (1..2048), stacked in the image from
+//                                top to bottom: slice z (r = (z + 0.5) / 32) is rows
+//                                [z H, (z + 1) H) of an image of 32 H rows, each slice's first
+//                                row at t = 0 (a 32^3 volume is a 32x1024 image)
+//        "wrapR": 33071 }        the r axis's wrap (3D only; glTF has none): REPEAT by default;
+//    "teximage" may be bound this way too (instead of baseColorTexture; not with extras.teximage).
+//    Volumes are 8-bit images (PNG), as a GL_RGBA8 3D texture holds them;
 //  - the camera is the first node with a camera, in the default scene's node order; a file
 //    without one is seen from the front (down -Z, +Y up), framing its bounding sphere;
 //  - scenes[i].extras = { "clear_color": [r, g, b, a], "time": t, "size": [w, h] } (all optional).

@@ -18,6 +18,14 @@ glm::mat4 Camera::projection(float aspect) const {
     return glm::perspective(yfov, aspect, znear, zfar);
 }
 
+int Object::texture_for(std::string_view uniform) const {
+    if (uniform == "teximage") return texture;
+    for (const SamplerBinding& b : samplers) {
+        if (b.uniform == uniform) return b.texture;
+    }
+    return -1;
+}
+
 glm::mat4 Scene::model_view_projection(const Object& o, float aspect) const {
     return camera.projection(aspect) * camera.view * o.world_from_object;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -62,11 +63,12 @@ enum class Filter : int {
 constexpr bool uses_mipmaps(Filter f) { return int(f) >= int(Filter::NearestMipmapNearest); }
 
 // glTF leaves the filters to the client when a sampler omits them ("auto filtering"); these are
-// the usual choice of glTF viewers (trilinear), and the wraps are glTF's defaults.
+// the usual choice of glTF viewers (trilinear), and the wraps are glTF's defaults. wrap_r, for 3D
+// textures, is no glTF field: the material's extras give it (gltf.h), REPEAT like the others.
 struct Sampler {
     Filter mag_filter = Filter::Linear;
     Filter min_filter = Filter::LinearMipmapLinear;
-    Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+    Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat, wrap_r = Wrap::Repeat;
     bool operator==(const Sampler&) const = default;
 };
 
@@ -77,14 +79,27 @@ struct ImageSource {
     std::vector<std::uint8_t> bytes;  // the encoded image (PNG, JPEG, ...) when embedded
     std::string mime_type;            // as the file gives it, possibly empty
     enum class Kind { File, DataUri, BufferView } kind = Kind::File;
+    bool operator==(const ImageSource&) const = default;
 };
 
 struct Texture {
     ImageSource image;
     Sampler sampler;
+    // 2: a sampler2D. 3: a sampler3D of `depth` slices, stacked in the image from top to bottom:
+    // slice z (r = (z + 0.5) / depth) is rows [z H, (z + 1) H) of an image of depth * H rows,
+    // each slice's first row at t = 0, as a 2D texture's.
+    int dims = 2;
+    int depth = 1;
     // What names it, for messages: "materials[0].pbrMetallicRoughness.baseColorTexture (images[1])"
     // or "materials[0].extras.teximage".
     std::string field;
+    bool operator==(const Texture&) const = default;
+};
+
+// A texture bound to a shader's sampler uniform by its GLSL name (the material's extras.textures).
+struct SamplerBinding {
+    std::string uniform;
+    int texture = -1;  // index into Scene::textures
 };
 
 struct Object {
@@ -95,9 +110,14 @@ struct Object {
     // The texture bound to the shaders' `teximage`: the material's baseColorTexture, or the file
     // its extras.teximage names. Index into Scene::textures, -1 for none.
     int texture = -1;
+    // The other samplers' textures, by uniform name (a name at most once, never "teximage").
+    std::vector<SamplerBinding> samplers;
     std::string material; // for messages: which glTF material named the shader
     // Values for the shader's own uniforms: the material's extras.uniforms, by name.
     std::vector<UniformSetting> uniforms;
+
+    // The texture bound to sampler `uniform`, `teximage` included; -1 for none.
+    int texture_for(std::string_view uniform) const;
 };
 
 struct Scene {

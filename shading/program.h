@@ -51,6 +51,16 @@ enum class Coordinates {
     Object3D,    // the object-space position (a solid texture)
 };
 
+inline constexpr int kMaxSamplers = 4;
+
+// A sampler uniform a shader declares besides `teximage`: its GLSL name, and whether it is a
+// sampler2D or a sampler3D. Scenes bind a texture to it by name (scenes/gltf.h: a material's
+// extras.textures).
+struct SamplerUse {
+    std::string_view name;  // empty: none
+    int dims = 2;
+};
+
 // What a shader uses, so that the renderer leaves out everything else.
 struct Needs {
     Coordinates coordinates = Coordinates::Texcoord2D;
@@ -63,6 +73,8 @@ struct Needs {
     // and it reads as NaN; the reference tests against OSMesa would catch a shader that reads it
     // without saying so.
     bool frag_coord = false;
+    // Its other samplers, Uniforms::samplers in this order.
+    std::array<SamplerUse, kMaxSamplers> samplers{};
 };
 
 // A shader's own uniform: `uniform vec3 uTint = vec3(1.0, 0.5, 0.2);` is
@@ -104,6 +116,8 @@ constexpr std::array<std::uint32_t, N * kUniformWords> initial_uniform_words(std
     }
     return w;
 }
+// Whether a shader samples any texture: `teximage` or a named sampler.
+constexpr bool samples_textures(const Needs& n) { return n.texture || !n.samplers[0].name.empty(); }
 
 struct ShaderInfo {
     std::string_view name;
@@ -157,6 +171,11 @@ struct Uniforms {
     // ShaderInfo::uniforms' values, kUniformWords 32-bit words each in their order: floats' bits
     // or 32-bit integers. Read through glsl::uniform (glsl/uniform.h).
     const std::uint32_t* user = nullptr;
+    // Needs::samplers' textures, in their order, each of the kind the shader declares.
+    std::array<const glsl::Texture*, kMaxSamplers> samplers{};
+
+    const glsl::sampler2D& sampler2D(int i) const { return static_cast<const glsl::sampler2D&>(*samplers[std::size_t(i)]); }
+    const glsl::sampler3D& sampler3D(int i) const { return static_cast<const glsl::sampler3D&>(*samplers[std::size_t(i)]); }
 };
 
 struct VertexIn {

@@ -1,5 +1,6 @@
-// texture2D's lanes, as Mesa 22.3's llvmpipe samples GL_RGBA8 (lp_bld_sample_aos.c,
-// lp_bld_sample_soa.c, lp_bld_sample.c), and glGenerateMipmap as llvmpipe makes the levels.
+// The lookups' lanes, as Mesa 22.3's llvmpipe samples GL_RGBA8 2D and 3D textures
+// (lp_bld_sample_aos.c, lp_bld_sample_soa.c, lp_bld_sample.c), and glGenerateMipmap as llvmpipe
+// makes the levels (util_gen_mipmap, u_blitter.c).
 // Every rule here was checked bit for bit against OSMesa (docs/design.md, "Textures").
 //
 // Sixteen lanes at a time as GCC/Clang generic vectors; the conversions, rounding and gathers
@@ -234,27 +235,41 @@ struct LevelChoice {
     Ints linear;          // lanes filtered linearly (-1), the others nearest (0)
 };
 
-LevelChoice choose_levels(const sampler2D& tex, const float* rho2_lanes) {
+// lp_build_lod_selector and lp_build_{nearest,linear}_mip_levels with the default sampler state
+// (no LOD clamps or sampler bias). `rho2`: the implicit level's squared scale factor; `bias`:
+// added to its level; `lod`: an explicit level (rho2 and bias unused). An implicit level takes
+// the fast paths (no fraction at all for NEAREST: the exponent trick); a bias or an explicit
+// level the general one, which rounds NEAREST's level to even.
+LevelChoice choose_levels(const Texture& tex, const float* rho2_lanes, const float* bias_lanes, const float* lod_lanes) {
     const SamplerState& st = tex.sampler;
     LevelChoice c{};
     const int last = int(tex.levels.size()) - 1;
-    if (!rho2_lanes) {  // needs_lod() is false: min == mag, no mipmaps
+    if (!rho2_lanes && !lod_lanes) {  // min == mag and no mipmaps: no level of detail at all
         c.linear = splat(st.min == Filter::Linear ? -1 : 0);
         return c;
     }
-    Floats rho2;
-    std::memcpy(&rho2, rho2_lanes, sizeof rho2);
+    auto load = [](const float* p) {
+        Floats v;
+        std::memcpy(&v, p, sizeof v);
+        return v;
+    };
     Ints positive, ipart{};
     Floats fpart{};
-    if (st.mip != MipFilter::Linear) {
+    if (!lod_lanes && !bias_lanes && st.mip != MipFilter::Linear) {
+        const Floats rho2 = load(rho2_lanes);
         ipart = exponent(rho2, 1) >> 1;  // lp_build_ilog2_sqrt: level k from rho >= sqrt(2) 2^(k-1)
         positive = rho2 > 1.0f;
     } else {
-        const Floats lod = fast_log2(rho2) * 0.5f;
+        Floats lod = lod_lanes ? load(lod_lanes) : fast_log2(load(rho2_lanes)) * 0.5f;
+        if (bias_lanes && !lod_lanes) lod = lod + load(bias_lanes);
         positive = lod > 0.0f;
-        const Floats fl = floor(lod);
-        ipart = cvt_trunc(fl);
-        fpart = lod - fl;
+        if (st.mip == MipFilter::Nearest) {
+            ipart = cvt_rne(lod);  // the general path rounds to even, 0.5 to level 0
+        } else {
+            const Floats fl = floor(lod);
+            ipart = cvt_trunc(fl);
+            fpart = lod - fl;
+        }
     }
     if (st.mip == MipFilter::Nearest) {
         c.level0 = c.level1 = imin(imax(ipart, splat(0)), splat(last));
@@ -276,18 +291,20 @@ LevelChoice choose_levels(const sampler2D& tex, const float* rho2_lanes) {
 
 // Per lane, a level's size and where its texels start.
 struct LevelLanes {
-    Ints width, height, offset;
+    Ints width, height, depth, offset;
 };
-LevelLanes level_lanes(const sampler2D& tex, const Ints& level) {
+LevelLanes level_lanes(const Texture& tex, const Ints& level) {
     LevelLanes r;
     if (tex.levels.size() == 1) {
-        r.width = splat(tex.levels[0].width), r.height = splat(tex.levels[0].height), r.offset = Ints{};
+        const Texture::Level& l = tex.levels[0];
+        r.width = splat(l.width), r.height = splat(l.height), r.depth = splat(l.depth), r.offset = Ints{};
         return r;
     }
     r.width = imax(splat(tex.width) >> level, splat(1));  // lp_build_minify
     r.height = imax(splat(tex.height) >> level, splat(1));
-    static_assert(sizeof(sampler2D::Level) == 3 * sizeof(std::int32_t) && offsetof(sampler2D::Level, offset) == 8);
-    r.offset = Ints(gather(reinterpret_cast<const std::uint32_t*>(tex.levels.data()), level * 3 + 2));
+    r.depth = imax(splat(tex.depth) >> level, splat(1));
+    static_assert(sizeof(Texture::Level) == 4 * sizeof(std::int32_t) && offsetof(Texture::Level, offset) == 12);
+    r.offset = Ints(gather(reinterpret_cast<const std::uint32_t*>(tex.levels.data()), level * 4 + 3));
     return r;
 }
 
@@ -298,7 +315,7 @@ struct Axis {
 };
 
 // lp_bld_sample_aos.c: the 8-bit fixed-point path, REPEAT and CLAMP_TO_EDGE. Linear filtering
-// along one axis (lp_build_sample_wrap_linear_int).
+// along one axis (lp_build_sample_wrap_linear_int); the same for s, t and r.
 Axis aos_linear(const Floats& s, const Ints& size, Wrap wrap, bool pot) {
     Axis a{};
     const Ints last = size - 1;
@@ -378,9 +395,12 @@ Axis soa_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints
                 l0 = i & last;
                 l1 = wrapping_add(i, splat(1)) & last;
             } else {
+                // lp_build_coord_repeat_npot_linear: an unordered c < 0, so NaN (from a NaN or
+                // infinite s) takes the last texel too, as its weight NaN (its colour is NaN).
                 c = (s - floor(s)) * fsize - 0.5f;
                 fl = floor(c);
-                l0 = c < 0.0f ? last : cvt_trunc(fl);
+                const Ints ordered_nonnegative = c >= 0.0f;
+                l0 = ordered_nonnegative ? cvt_trunc(fl) : last;
                 l1 = l0 != last ? l0 + 1 : Ints{};
             }
             break;
@@ -421,69 +441,149 @@ Axis soa_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints
     return a;
 }
 
-struct Texels {
-    Uints t00, t10, t01, t11;  // t<dx><dy>
+// The coordinates of a lookup's lanes, and the texture's sizes that are powers of two (llvmpipe
+// decides that on the base level: a non-power-of-two base takes the npot code on every level).
+template <int Dims>
+struct Coords {
+    Floats c[Dims];
 };
-Texels fetch(const sampler2D& tex, const LevelLanes& level, const Axis& x, const Axis& y) {
-    const Ints row0 = level.offset + y.i0 * level.width, row1 = level.offset + y.i1 * level.width;
+template <int Dims>
+struct Axes {
+    Axis a[Dims];
+};
+
+template <int Dims>
+std::array<bool, 3> pot_sizes(const Texture& tex) {
+    return {std::has_single_bit(unsigned(tex.width)), std::has_single_bit(unsigned(tex.height)),
+            Dims == 3 && std::has_single_bit(unsigned(tex.depth))};
+}
+inline Wrap wrap_of(const SamplerState& st, int axis) { return axis == 0 ? st.wrap_s : axis == 1 ? st.wrap_t : st.wrap_r; }
+inline const Ints& size_of(const LevelLanes& lv, int axis) { return axis == 0 ? lv.width : axis == 1 ? lv.height : lv.depth; }
+
+// The 2^Dims texels of a lookup, k[z][y][x] (one slice in 2D).
+template <int Dims>
+struct Texels {
+    Uints k[Dims == 3 ? 2 : 1][2][2];
+};
+template <int Dims>
+Texels<Dims> fetch_texels(const Texture& tex, const LevelLanes& level, const Axes<Dims>& ax) {
+    Texels<Dims> r;
     const std::uint32_t* t = tex.texels.data();
-    return {gather(t, row0 + x.i0), gather(t, row0 + x.i1), gather(t, row1 + x.i0), gather(t, row1 + x.i1)};
+    for (int z = 0; z < (Dims == 3 ? 2 : 1); ++z) {
+        Ints slice{};
+        if constexpr (Dims == 3) slice = (z ? ax.a[2].i1 : ax.a[2].i0) * level.height;
+        const Ints row0 = level.offset + (slice + ax.a[1].i0) * level.width;
+        const Ints row1 = level.offset + (slice + ax.a[1].i1) * level.width;
+        r.k[z][0][0] = gather(t, row0 + ax.a[0].i0), r.k[z][0][1] = gather(t, row0 + ax.a[0].i1);
+        r.k[z][1][0] = gather(t, row1 + ax.a[0].i0), r.k[z][1][1] = gather(t, row1 + ax.a[0].i1);
+    }
+    return r;
 }
 
 // Channel c (0: red) of packed RGBA8 texels.
 Ints channel(const Uints& texels, int c) { return Ints((texels >> (8 * c)) & 255u); }
 
-// d(colour)/ds and /dt of the bilinear interpolant (texels as floats), for Dual2.
-void bilinear_gradient(const Texels& k, const Axis& x, const Axis& y, const LevelLanes& level, int c, Floats& ds,
-                       Floats& dt) {
-    const Floats t00 = unorm(channel(k.t00, c)), t10 = unorm(channel(k.t10, c)), t01 = unorm(channel(k.t01, c)),
-                 t11 = unorm(channel(k.t11, c));
-    const Ints linear_x = x.i0 != x.i1, linear_y = y.i0 != y.i1;
-    const Floats gx = ((1.0f - y.w) * (t10 - t00) + y.w * (t11 - t01)) * to_float(level.width);
-    const Floats gy = ((1.0f - x.w) * (t01 - t00) + x.w * (t11 - t10)) * to_float(level.height);
-    ds = from_bits(bits(gx) & linear_x);
-    dt = from_bits(bits(gy) & linear_y);
+// d(colour)/ds, /dt (and /dr) of the (bi/tri)linear interpolant (texels as floats), for Dual2:
+// along each axis, the difference of the two texel planes, weighted by the other axes' weights,
+// times the level's size; zero along an axis filtered nearest.
+template <int Dims>
+void interpolant_gradient(const Texels<Dims>& k, const Axes<Dims>& ax, const LevelLanes& level, int c, Floats (&d)[Dims]) {
+    Floats v[2][2][2];
+    for (int z = 0; z < (Dims == 3 ? 2 : 1); ++z) {
+        for (int y = 0; y < 2; ++y) {
+            for (int x = 0; x < 2; ++x) v[z][y][x] = unorm(channel(k.k[z][y][x], c));
+        }
+    }
+    auto weight = [&](int axis, int side) { return side ? ax.a[axis].w : 1.0f - ax.a[axis].w; };
+    for (int axis = 0; axis < Dims; ++axis) {
+        Floats g{};
+        for (int z = 0; z < (Dims == 3 ? 2 : 1); ++z) {
+            for (int y = 0; y < 2; ++y) {
+                for (int x = 0; x < 2; ++x) {
+                    const int side = axis == 0 ? x : axis == 1 ? y : z;
+                    if (side == 0) continue;  // each pair once: (side 1) - (side 0)
+                    const Floats diff = v[z][y][x] - v[axis == 2 ? 0 : z][axis == 1 ? 0 : y][axis == 0 ? 0 : x];
+                    Floats w = splat(1.0f);
+                    if (axis != 0) w = w * weight(0, x);
+                    if (axis != 1) w = w * weight(1, y);
+                    if constexpr (Dims == 3) {
+                        if (axis != 2) w = w * weight(2, z);
+                    }
+                    g = g + w * diff;
+                }
+            }
+        }
+        const Ints filtered = ax.a[axis].i0 != ax.a[axis].i1;
+        d[axis] = from_bits(bits(g * to_float(size_of(level, axis))) & filtered);
+    }
 }
 
 struct Sample {
     Floats rgba[4];
-    Floats ds[4], dt[4];
+    Floats d[3][4];  // d(colour channel)/d(coordinate)
 };
 
-// One level, 8-bit path: the filtered texel's channels in (red, blue) and (green, alpha) pairs.
-Pairs aos_level(const sampler2D& tex, const Floats& s, const Floats& t, const Ints& level, const Ints& linear,
-                bool gradient, Floats (&ds)[4], Floats (&dt)[4]) {
-    const SamplerState& st = tex.sampler;
+// One level, 8-bit path: the filtered texel's channels in (red, blue) and (green, alpha) pairs;
+// lp_build_lerp_3d: two bilinear slices, then along r.
+template <int Dims>
+Pairs aos_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, const Ints& linear, bool gradient,
+                Floats (&d)[3][4]) {
     const LevelLanes lv = level_lanes(tex, level);
-    const bool pot_w = std::has_single_bit(unsigned(tex.width)), pot_h = std::has_single_bit(unsigned(tex.height));
-    const Axis x = aos_axis(s, lv.width, st.wrap_s, pot_w, linear), y = aos_axis(t, lv.height, st.wrap_t, pot_h, linear);
-    const Texels k = fetch(tex, lv, x, y);
+    const std::array<bool, 3> pot = pot_sizes<Dims>(tex);
+    Axes<Dims> ax;
+    for (int i = 0; i < Dims; ++i) ax.a[i] = aos_axis(co.c[i], size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear);
+    const Texels<Dims> k = fetch_texels(tex, lv, ax);
     if (gradient) {
-        for (int c = 0; c < 4; ++c) bilinear_gradient(k, x, y, lv, c, ds[c], dt[c]);
+        for (int c = 0; c < 4; ++c) {
+            Floats g[Dims];
+            interpolant_gradient(k, ax, lv, c, g);
+            for (int i = 0; i < Dims; ++i) d[i][c] = g[i];
+        }
     }
-    return lerp8(y.w8, lerp8(x.w8, split(k.t00), split(k.t10)), lerp8(x.w8, split(k.t01), split(k.t11)));
+    auto slice = [&](int z) {
+        return lerp8(ax.a[1].w8, lerp8(ax.a[0].w8, split(k.k[z][0][0]), split(k.k[z][0][1])),
+                     lerp8(ax.a[0].w8, split(k.k[z][1][0]), split(k.k[z][1][1])));
+    };
+    if constexpr (Dims == 3) {
+        return lerp8(ax.a[2].w8, slice(0), slice(1));
+    } else {
+        return slice(0);
+    }
 }
 
 // One level, float path.
-void soa_level(const sampler2D& tex, const Floats& s, const Floats& t, const Ints& level, const Ints& linear,
-               const Ints& weights_only, bool gradient, Floats (&out)[4], Floats (&ds)[4], Floats (&dt)[4]) {
-    const SamplerState& st = tex.sampler;
+template <int Dims>
+void soa_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, const Ints& linear,
+               const Ints& weights_only, bool gradient, Floats (&out)[4], Floats (&d)[3][4]) {
     const LevelLanes lv = level_lanes(tex, level);
-    const bool pot_w = std::has_single_bit(unsigned(tex.width)), pot_h = std::has_single_bit(unsigned(tex.height));
-    const Axis x = soa_axis(s, lv.width, st.wrap_s, pot_w, linear, weights_only);
-    const Axis y = soa_axis(t, lv.height, st.wrap_t, pot_h, linear, weights_only);
-    const Texels k = fetch(tex, lv, x, y);
+    const std::array<bool, 3> pot = pot_sizes<Dims>(tex);
+    Axes<Dims> ax;
+    for (int i = 0; i < Dims; ++i) {
+        ax.a[i] = soa_axis(co.c[i], size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, weights_only);
+    }
+    const Texels<Dims> k = fetch_texels(tex, lv, ax);
     for (int c = 0; c < 4; ++c) {
-        const Floats r0 = lerp(x.w, unorm(channel(k.t00, c)), unorm(channel(k.t10, c)));
-        const Floats r1 = lerp(x.w, unorm(channel(k.t01, c)), unorm(channel(k.t11, c)));
-        out[c] = lerp(y.w, r0, r1);
-        if (gradient) bilinear_gradient(k, x, y, lv, c, ds[c], dt[c]);
+        auto slice = [&](int z) {
+            const Floats r0 = lerp(ax.a[0].w, unorm(channel(k.k[z][0][0], c)), unorm(channel(k.k[z][0][1], c)));
+            const Floats r1 = lerp(ax.a[0].w, unorm(channel(k.k[z][1][0], c)), unorm(channel(k.k[z][1][1], c)));
+            return lerp(ax.a[1].w, r0, r1);
+        };
+        if constexpr (Dims == 3) {
+            out[c] = lerp(ax.a[2].w, slice(0), slice(1));
+        } else {
+            out[c] = slice(0);
+        }
+        if (gradient) {
+            Floats g[Dims];
+            interpolant_gradient(k, ax, lv, c, g);
+            for (int i = 0; i < Dims; ++i) d[i][c] = g[i];
+        }
     }
 }
 
-// llvmpipe decides per 8-lane vector whether a MIRRORED_REPEAT lookup with different min and mag
-// filters runs its linear code: every lane of a vector where one lane filters linearly. An OR
-// across each half of the batch, in three shuffles.
+// llvmpipe decides per 8-lane vector whether a lookup on the float path with different min and
+// mag filters runs its linear code: every lane of a vector where one lane filters linearly. An
+// OR across each half of the batch, in three shuffles.
 Ints any_per_vector(const Ints& linear, bool quad_vectors) {
     static_assert(L == 16);
     if (!quad_vectors) return linear;
@@ -492,38 +592,55 @@ Ints any_per_vector(const Ints& linear, bool quad_vectors) {
     return r | __builtin_shufflevector(r, r, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11);
 }
 
-Sample sample_lanes(const sampler2D& tex, const Floats& s, const Floats& t, const float* rho2, bool quad_vectors,
-                    bool gradient) {
+// The 8-bit path (lp_bld_sample_aos.c) when llvmpipe takes it (lp_build_sample_soa_code): every
+// wrap REPEAT or CLAMP_TO_EDGE, and min == mag or one level of detail per quad (a bias or an
+// explicit level is one per pixel).
+template <int Dims>
+bool takes_8bit_path(const Texture& tex, bool per_pixel_lod) {
     const SamplerState& st = tex.sampler;
-    const LevelChoice lc = choose_levels(tex, rho2);
+    for (int i = 0; i < Dims; ++i) {
+        if (wrap_of(st, i) == Wrap::MirroredRepeat) return false;
+    }
+    return st.min == st.mag || !per_pixel_lod;
+}
+
+template <int Dims>
+Sample sample_lanes(const Texture& tex, const Coords<Dims>& co, const float* rho2, const float* bias, const float* lod,
+                    bool quad_vectors, bool gradient) {
+    const SamplerState& st = tex.sampler;
+    const LevelChoice lc = choose_levels(tex, rho2, bias, lod);
     const bool blend = st.mip == MipFilter::Linear && any(bits(lc.blend) != 0);
     Sample out{};
-    if (st.wrap_s != Wrap::MirroredRepeat && st.wrap_t != Wrap::MirroredRepeat) {
-        // The 8-bit path; the second level blends in with an 8-bit weight truncated from the
-        // fraction (lp_build_sample_mipmap).
-        Pairs q = aos_level(tex, s, t, lc.level0, lc.linear, gradient, out.ds, out.dt);
+    if (takes_8bit_path<Dims>(tex, bias || lod)) {
+        // The second level blends in with an 8-bit weight truncated from the fraction
+        // (lp_build_sample_mipmap).
+        Pairs q = aos_level(tex, co, lc.level0, lc.linear, gradient, out.d);
         if (blend) {
-            Floats ds1[4], dt1[4];
-            const Pairs q1 = aos_level(tex, s, t, lc.level1, lc.linear, gradient, ds1, dt1);
+            Floats d1[3][4];
+            const Pairs q1 = aos_level(tex, co, lc.level1, lc.linear, gradient, d1);
             q = lerp8(imax(cvt_trunc(lc.blend * 256.0f), Ints{}), q, q1);
             if (gradient) {
-                for (int c = 0; c < 4; ++c) out.ds[c] += lc.blend * (ds1[c] - out.ds[c]), out.dt[c] += lc.blend * (dt1[c] - out.dt[c]);
+                for (int i = 0; i < Dims; ++i) {
+                    for (int c = 0; c < 4; ++c) out.d[i][c] += lc.blend * (d1[i][c] - out.d[i][c]);
+                }
             }
         }
         for (int c = 0; c < 4; ++c) out.rgba[c] = unorm(channel(q, c));
         return out;
     }
-    // The float path (a mirrored axis); lp_build_sample_mipmap, or lp_build_sample_mipmap_both
-    // when min and mag filters differ.
+    // The float path: lp_build_sample_mipmap, or lp_build_sample_mipmap_both when min and mag
+    // filters differ.
     const Ints weights_only = st.min != st.mag ? any_per_vector(lc.linear, quad_vectors) & ~lc.linear : Ints{};
-    soa_level(tex, s, t, lc.level0, lc.linear, weights_only, gradient, out.rgba, out.ds, out.dt);
+    soa_level(tex, co, lc.level0, lc.linear, weights_only, gradient, out.rgba, out.d);
     if (blend) {
-        Floats c1[4], ds1[4], dt1[4];
-        soa_level(tex, s, t, lc.level1, lc.linear, weights_only, gradient, c1, ds1, dt1);
+        Floats c1[4], d1[3][4];
+        soa_level(tex, co, lc.level1, lc.linear, weights_only, gradient, c1, d1);
         const Floats f = maxps(lc.blend, Floats{});
         for (int c = 0; c < 4; ++c) {
             out.rgba[c] = lerp(f, out.rgba[c], c1[c]);
-            if (gradient) out.ds[c] += f * (ds1[c] - out.ds[c]), out.dt[c] += f * (dt1[c] - out.dt[c]);
+            if (gradient) {
+                for (int i = 0; i < Dims; ++i) out.d[i][c] += f * (d1[i][c] - out.d[i][c]);
+            }
         }
     }
     return out;
@@ -534,95 +651,166 @@ Sample sample_lanes(const sampler2D& tex, const Floats& s, const Floats& t, cons
 // one above (util_gen_mipmap) through a quad that samples it with LINEAR, CLAMP_TO_EDGE at the
 // destination texel's centre, on the 8-bit path above. For even sizes that is
 // avg(avg(a, b), avg(c, d)) rounded half up, not a box filter; for odd sizes the weights are
-// not one half (37 -> 18 samples at 37 (x + 0.5) / 18).
-void next_level(const std::uint32_t* src, int sw, int sh, std::uint32_t* dst, int dw, int dh) {
-    struct Tap {
-        int i0, i1, w;
-    };
-    auto taps = [](int src_size, int dst_size) {
-        std::vector<Tap> r{std::size_t(dst_size)};
-        for (int x = 0; x < dst_size; ++x) {
-            const float s = (float(x) + 0.5f) / float(dst_size);
-            const int u = int(std::nearbyint(s * float(src_size << 8))) - 128;  // rounds to even, as cvtps2dq
-            const int i0 = u >> 8;
-            const int l0 = std::clamp(i0, 0, src_size - 1);
-            r[std::size_t(x)] = {l0, (i0 >= 0 && i0 < src_size - 1) ? l0 + 1 : l0, u & 255};
-        }
-        return r;
-    };
-    const std::vector<Tap> xs = taps(sw, dw), ys = taps(sh, dh);
+// not one half (37 -> 18 samples at 37 (x + 0.5) / 18). A 3D level is drawn slice by slice, each
+// sampling the level above trilinearly at r = (z Ds/Dd + 0.5 Ds/Dd) / Ds (u_blitter.c's
+// src_z_step and depth_center_offset, the latter computed in double), then along r as the 8-bit
+// path's lerp_3d.
+struct Tap {
+    int i0, i1, w;
+};
+// The 8-bit path's linear taps, CLAMP_TO_EDGE, of a source axis of `size` at coordinate s.
+Tap clamp_tap(float s, int size) {
+    const int u = int(std::nearbyint(s * float(size << 8))) - 128;  // rounds to even, as cvtps2dq
+    const int i0 = u >> 8;
+    const int l0 = std::clamp(i0, 0, size - 1);
+    return {l0, (i0 >= 0 && i0 < size - 1) ? l0 + 1 : l0, u & 255};
+}
+std::vector<Tap> taps(int src_size, int dst_size) {
+    std::vector<Tap> r{std::size_t(dst_size)};
+    for (int x = 0; x < dst_size; ++x) r[std::size_t(x)] = clamp_tap((float(x) + 0.5f) / float(dst_size), src_size);
+    return r;
+}
+std::vector<Tap> depth_taps(int src_size, int dst_size) {
+    std::vector<Tap> r{std::size_t(dst_size)};
+    const float step = float(src_size) / float(dst_size);
+    const float center = float(0.5 / dst_size * src_size);
+    for (int z = 0; z < dst_size; ++z) {
+        const float layer = float(z) * step + center;
+        r[std::size_t(z)] = clamp_tap(layer / float(src_size), src_size);
+    }
+    return r;
+}
+
+void next_level(const std::uint32_t* src, const Texture::Level& s, std::uint32_t* dst, const Texture::Level& d, int dims) {
+    const std::vector<Tap> xs = taps(s.width, d.width), ys = taps(s.height, d.height);
+    const std::vector<Tap> zs = dims == 3 ? depth_taps(s.depth, d.depth) : std::vector<Tap>{Tap{0, 0, 0}};
     auto lerp = [](int w, int a, int b) { return a + ((w * (b - a) + 128) >> 8); };
-    for (int y = 0; y < dh; ++y) {
-        const Tap ty = ys[std::size_t(y)];
-        for (int x = 0; x < dw; ++x) {
-            const Tap tx = xs[std::size_t(x)];
-            const std::uint32_t k00 = src[std::size_t(ty.i0) * std::size_t(sw) + std::size_t(tx.i0)],
-                                k10 = src[std::size_t(ty.i0) * std::size_t(sw) + std::size_t(tx.i1)],
-                                k01 = src[std::size_t(ty.i1) * std::size_t(sw) + std::size_t(tx.i0)],
-                                k11 = src[std::size_t(ty.i1) * std::size_t(sw) + std::size_t(tx.i1)];
-            std::uint32_t out = 0;
-            for (int c = 0; c < 4; ++c) {
-                const auto ch = [c](std::uint32_t k) { return int((k >> (8 * c)) & 255u); };
-                const int r0 = lerp(tx.w, ch(k00), ch(k10)), r1 = lerp(tx.w, ch(k01), ch(k11));
-                out |= std::uint32_t(lerp(ty.w, r0, r1)) << (8 * c);
+    auto at = [&](int x, int y, int z) {
+        return src[(std::size_t(z) * std::size_t(s.height) + std::size_t(y)) * std::size_t(s.width) + std::size_t(x)];
+    };
+    std::size_t out_index = 0;
+    for (const Tap& tz : zs) {
+        for (const Tap& ty : ys) {
+            for (const Tap& tx : xs) {
+                std::uint32_t out = 0;
+                for (int c = 0; c < 4; ++c) {
+                    const auto ch = [c](std::uint32_t k) { return int((k >> (8 * c)) & 255u); };
+                    auto slice = [&](int z) {
+                        const int r0 = lerp(tx.w, ch(at(tx.i0, ty.i0, z)), ch(at(tx.i1, ty.i0, z)));
+                        const int r1 = lerp(tx.w, ch(at(tx.i0, ty.i1, z)), ch(at(tx.i1, ty.i1, z)));
+                        return lerp(ty.w, r0, r1);
+                    };
+                    const int v = dims == 3 ? lerp(tz.w, slice(tz.i0), slice(tz.i1)) : slice(0);
+                    out |= std::uint32_t(v) << (8 * c);
+                }
+                dst[out_index++] = out;
             }
-            dst[std::size_t(y) * std::size_t(dw) + std::size_t(x)] = out;
         }
     }
 }
 
 }  // namespace
 
-sampler2D::sampler2D(int w, int h, const std::uint8_t* rgba, SamplerState s) : width(w), height(h), sampler(s) {
-    if (w < 1 || h < 1 || w > (1 << 15) || h > (1 << 15)) {
+Texture::Texture(int n, int w, int h, int d, const std::uint8_t* rgba, SamplerState s)
+    : dims(n), width(w), height(h), depth(d), sampler(s) {
+    const int max_size = n == 3 ? 2048 : (1 << 15);
+    if (w < 1 || h < 1 || d < 1 || w > max_size || h > max_size || d > max_size || (n == 2 && d != 1)) {
         throw std::invalid_argument("texture size " + std::to_string(w) + "x" + std::to_string(h) +
-                                    " is outside 1..32768");
+                                    (n == 3 ? "x" + std::to_string(d) : std::string()) + " is outside 1.." +
+                                    std::to_string(max_size));
     }
-    std::int64_t total = 0;  // at most 4/3 of 2^30 texels: an int32 index
-    for (int lw = w, lh = h;; lw = std::max(1, lw / 2), lh = std::max(1, lh / 2)) {
-        levels.push_back({lw, lh, std::int32_t(total)});
-        total += std::int64_t(lw) * lh;
-        if (sampler.mip == MipFilter::None || (lw == 1 && lh == 1)) break;
+    std::int64_t total = 0;
+    for (int lw = w, lh = h, ld = d;; lw = std::max(1, lw / 2), lh = std::max(1, lh / 2), ld = std::max(1, ld / 2)) {
+        levels.push_back({lw, lh, ld, std::int32_t(total)});
+        total += std::int64_t(lw) * lh * ld;
+        if (sampler.mip == MipFilter::None || (lw == 1 && lh == 1 && ld == 1)) break;
+    }
+    // Texel indices are int32 lanes.
+    if (total > std::int64_t(1) << 30) {
+        throw std::invalid_argument("texture of " + std::to_string(total) + " texels with its mipmaps: more than 2^30");
     }
     // A single level makes a mipmap filter a plain one (llvmpipe: level_zero_only).
     if (levels.size() == 1) sampler.mip = MipFilter::None;
     texels.resize(std::size_t(total));
-    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i) {
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h) * std::size_t(d); ++i) {
         texels[i] = std::uint32_t(rgba[4 * i]) | std::uint32_t(rgba[4 * i + 1]) << 8 |
                     std::uint32_t(rgba[4 * i + 2]) << 16 | std::uint32_t(rgba[4 * i + 3]) << 24;
     }
     for (std::size_t l = 1; l < levels.size(); ++l) {
         const Level& a = levels[l - 1];
         const Level& b = levels[l];
-        next_level(&texels[std::size_t(a.offset)], a.width, a.height, &texels[std::size_t(b.offset)], b.width, b.height);
+        next_level(&texels[std::size_t(a.offset)], a, &texels[std::size_t(b.offset)], b, dims);
     }
+}
+
+std::array<int, 3> Texture::size(int lod) const {
+    // lp_build_size_query with is_sviewinfo (NIR's txs): a level outside the texture's gives 0.
+    if (lod < 0 || lod >= int(levels.size())) return {0, 0, 0};
+    return {std::max(width >> lod, 1), std::max(height >> lod, 1), dims == 3 ? std::max(depth >> lod, 1) : 0};
 }
 
 namespace texture_detail {
 
 void throw_lod_without_quads() {
-    throw std::logic_error("texture2D: this texture's sampler needs a level of detail, i.e. the quad's derivatives, "
-                           "but the shader was run on independent pixels");
+    throw std::logic_error("texture lookup: this texture's sampler needs a level of detail, i.e. the quad's "
+                           "derivatives, but the shader was run on independent pixels");
 }
 
-// Flattened: the helpers above become one straight body (called as functions, their 64-byte
-// vectors would travel through memory on targets without AVX-512).
-[[gnu::flatten]] void sample(const sampler2D& tex, const Lookup& l) {
-    alignas(64) float s[L] = {}, t[L] = {}, rho2[L] = {};
-    std::copy_n(l.s, l.lanes, s);
-    std::copy_n(l.t, l.lanes, t);
+namespace {
+template <int Dims>
+[[gnu::always_inline]] inline void sample_dims(const Texture& tex, const Lookup& l) {
+    auto lanes = [&](const float* in) {
+        alignas(64) float v[L] = {};
+        std::copy_n(in, l.lanes, v);
+        Floats r;
+        std::memcpy(&r, v, sizeof r);
+        return r;
+    };
+    alignas(64) float rho2[L] = {}, bias[L] = {}, lod[L] = {};
     if (l.rho2) std::copy_n(l.rho2, l.lanes, rho2);
-    Floats sv, tv;
-    std::memcpy(&sv, s, sizeof sv);
-    std::memcpy(&tv, t, sizeof tv);
+    if (l.bias) std::copy_n(l.bias, l.lanes, bias);
+    if (l.lod) std::copy_n(l.lod, l.lanes, lod);
+    Coords<Dims> co;
+    co.c[0] = lanes(l.s), co.c[1] = lanes(l.t);
+    if constexpr (Dims == 3) co.c[2] = lanes(l.r);
     const bool gradient = l.d_ds[0] != nullptr;
-    const Sample r = sample_lanes(tex, sv, tv, l.rho2 ? rho2 : nullptr, l.quad_vectors, gradient);
+    const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? rho2 : nullptr, l.bias ? bias : nullptr, l.lod ? lod : nullptr,
+                                        l.quad_vectors, gradient);
+    const std::array<float*, 4>* d_out[3] = {&l.d_ds, &l.d_dt, &l.d_dr};
     for (int c = 0; c < 4; ++c) {
         std::memcpy(l.rgba[std::size_t(c)], &r.rgba[c], sizeof(float) * std::size_t(l.lanes));
         if (gradient) {
-            std::memcpy(l.d_ds[std::size_t(c)], &r.ds[c], sizeof(float) * std::size_t(l.lanes));
-            std::memcpy(l.d_dt[std::size_t(c)], &r.dt[c], sizeof(float) * std::size_t(l.lanes));
+            for (int i = 0; i < Dims; ++i) std::memcpy((*d_out[i])[std::size_t(c)], &r.d[i][c], sizeof(float) * std::size_t(l.lanes));
         }
+    }
+}
+}  // namespace
+
+// Flattened: the helpers above become one straight body (called as functions, their 64-byte
+// vectors would travel through memory on targets without AVX-512).
+[[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
+    if (tex.dims == 3) {
+        sample_dims<3>(tex, l);
+    } else {
+        sample_dims<2>(tex, l);
+    }
+}
+
+// lp_build_fetch_texel: the level is lod + first level (0); a lane outside the level's size or
+// a level outside the texture's reads zero, alpha included.
+void fetch(const Texture& tex, const Fetch& f) {
+    const int last = int(tex.levels.size()) - 1;
+    for (int i = 0; i < f.lanes; ++i) {
+        const int level = f.level[i];
+        std::uint32_t texel = 0;
+        if (level >= 0 && level <= last) {
+            const Texture::Level& lv = tex.levels[std::size_t(level)];
+            const int x = f.x[i], y = f.y[i], z = f.z ? f.z[i] : 0;
+            if (x >= 0 && x < lv.width && y >= 0 && y < lv.height && z >= 0 && z < lv.depth) {
+                texel = tex.texels[std::size_t(lv.offset) + (std::size_t(z) * std::size_t(lv.height) + std::size_t(y)) * std::size_t(lv.width) + std::size_t(x)];
+            }
+        }
+        for (int c = 0; c < 4; ++c) f.rgba[std::size_t(c)][i] = float((texel >> (8 * c)) & 255u) * float(1.0 / 255.0);
     }
 }
 

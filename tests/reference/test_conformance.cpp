@@ -100,7 +100,7 @@ std::vector<std::string> shaders() {
     std::vector<std::string> all;
     for (const Program* p : catalogue()) {
         const ShaderInfo& info = p->info();
-        if (info.needs.texture || info.name.find("probe") != std::string_view::npos) continue;
+        if (samples_textures(info.needs) || info.name.find("probe") != std::string_view::npos) continue;
         all.emplace_back(info.name);
     }
     return all;

@@ -210,6 +210,96 @@ TEST_CASE("textures: baseColorTexture, extras.teximage, glTF's sampler defaults,
     }
 }
 
+TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices, files, 3D volumes", "[scenes][textures]") {
+    const auto dir = temp_dir("named-textures");
+    std::filesystem::create_directories(dir / "images");
+    write_image(dir / "images" / "flat.png", Image{4, 2, std::vector<float>(32, 0.5f)});
+    write_image(dir / "images" / "volume.png", Image{4, 12, std::vector<float>(4 * 12 * 4, 0.25f)});  // 3 slices of 4x4
+    auto gltf = [&](const std::string& extras) {
+        return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+            "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+            "materials": [{"extras": )" + extras + R"(}],
+            "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 33071}, {"minFilter": 9728, "wrapT": 33648}],
+            "images": [{"uri": "images/volume.png"}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [-1, -1, 0], "max": [1, 1, 0]}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]})";
+    };
+    SECTION("an index, a file and a volume with its depth, sampler and wrapR; saved and loaded the same") {
+        write_text(dir / "a.gltf", gltf(R"({"shader": "fast_noise", "textures": {
+            "uIndexed": 0, "uFile": "images/flat.png",
+            "noise3dSampler": {"image": "images/volume.png", "depth": 3, "sampler": 1, "wrapR": 33071}}})"));
+        Scene s = load_scene(dir / "a.gltf");
+        const Object& o = s.objects[0];
+        REQUIRE(o.samplers.size() == 3);
+        const Texture& indexed = s.textures[std::size_t(o.texture_for("uIndexed"))];
+        CHECK(indexed.dims == 2);
+        CHECK(indexed.sampler.wrap_s == Wrap::ClampToEdge);  // textures[0]'s sampler
+        const Texture& file = s.textures[std::size_t(o.texture_for("uFile"))];
+        CHECK(file.image.file == dir / "images" / "flat.png");
+        CHECK(file.sampler == Sampler{});  // glTF's defaults
+        const Texture& volume = s.textures[std::size_t(o.texture_for("noise3dSampler"))];
+        CHECK(volume.dims == 3);
+        CHECK(volume.depth == 3);
+        CHECK(volume.sampler.min_filter == Filter::Nearest);  // samplers[1]
+        CHECK(volume.sampler.wrap_t == Wrap::MirroredRepeat);
+        CHECK(volume.sampler.wrap_r == Wrap::ClampToEdge);
+        CHECK(o.texture_for("teximage") == -1);
+        CHECK(o.texture_for("nothing") == -1);
+        CHECK_NOTHROW(render_frame(s, {}));  // fast_noise samples noise3dSampler as a 4x4x3 volume
+
+        save_scene(s, dir / "saved.gltf");
+        const Scene again = load_scene(dir / "saved.gltf");
+        const Texture& v2 = again.textures[std::size_t(again.objects[0].texture_for("noise3dSampler"))];
+        CHECK(v2.dims == 3);
+        CHECK(v2.depth == 3);
+        CHECK(v2.sampler == volume.sampler);
+        CHECK(v2.image.file == volume.image.file);
+    }
+    SECTION("teximage by name") {
+        write_text(dir / "b.gltf", gltf(R"({"shader": "single_texture", "textures": {"teximage": "images/flat.png"}})"));
+        Scene s = load_scene(dir / "b.gltf");
+        REQUIRE(s.objects[0].texture >= 0);
+        CHECK(s.textures[std::size_t(s.objects[0].texture)].image.file == dir / "images" / "flat.png");
+        CHECK(s.objects[0].samplers.empty());
+        CHECK_NOTHROW(render_frame(s, {}));
+    }
+    SECTION("bad bindings are refused, naming the field") {
+        const std::pair<const char*, const char*> bad[] = {
+            {R"({"textures": [1]})", "extras.textures"},
+            {R"({"textures": {"1bad": 0}})", "not a GLSL identifier"},
+            {R"({"textures": {"u": 7}})", "extras.textures.u"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "texture": 0}}})", "exactly one of"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "depth": 0}}})", "extras.textures.u.depth"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "wrapR": 33071}}})", "only a 3D texture"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "depth": 2, "wrapR": 1}}})", "extras.textures.u.wrapR"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "filter": 1}}})", "extras.textures.u.filter"},
+            {R"({"textures": {"u": {"image": "/etc/passwd"}}})", "extras.textures.u.image"},
+            {R"({"teximage": "images/flat.png", "textures": {"teximage": 0}})", "bound twice"},
+            {R"({"textures": {"teximage": {"texture": 0, "depth": 3}}})", "sampler2D"},
+        };
+        for (const auto& [extras, message] : bad) {
+            INFO(extras);
+            write_text(dir / "bad.gltf", gltf(extras));
+            CHECK_THROWS_WITH(load_scene(dir / "bad.gltf"), Catch::Contains("bad.gltf") && Catch::Contains(message));
+        }
+    }
+    SECTION("a shader's sampler unbound, of the other kind, or a volume whose rows do not divide into its depth") {
+        const std::pair<const char*, const char*> bad[] = {
+            {R"({"shader": "fast_noise"})", "binds no texture to it"},
+            {R"({"shader": "fast_noise", "textures": {"noise3dSampler": 0}})", "is a 2D texture"},
+            {R"({"shader": "fast_noise", "textures": {"noise3dSampler": {"texture": 0, "depth": 5}}})", "does not stack 5 slices"},
+        };
+        for (const auto& [extras, message] : bad) {
+            INFO(extras);
+            write_text(dir / "unbound.gltf", gltf(extras));
+            Scene s = load_scene(dir / "unbound.gltf");
+            CHECK_THROWS_WITH(render_frame(s, {}), Catch::Contains("unbound.gltf") && Catch::Contains(message));
+        }
+    }
+}
+
 TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[scenes]") {
     // A minimal hand-written file: one triangle, no camera, no material, buffer inline.
     const auto dir = temp_dir("user");
@@ -222,7 +312,7 @@ TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[sc
     Scene s = load_scene(dir / "tri.gltf");
     CHECK_THROWS_WITH(render_frame(s, {}), Catch::Contains("names no shader"));
     for (const Program* p : catalogue()) {
-        if (p->info().needs.texture) continue;  // no texture in this file
+        if (samples_textures(p->info().needs)) continue;  // no texture in this file
         // These write a value (a derivative, a probe's result), not coverage, to alpha.
         static const std::set<std::string_view> kValueInAlpha = {
             "st_derivative_probe", "position_derivative_probe", "integer_probe", "integer_undefined_probe",
@@ -309,7 +399,7 @@ TEST_CASE("leaving out what a shader does not use (gl_FragCoord, helper lanes, d
     // (no coverage tests in 64x64 tiles inside a triangle), which the depth-tested path never does.
     Scene plane = load_scene(kPlane);
     for (const Program* p : catalogue()) {
-        if (p->info().needs.texture) continue;  // the plane has no texture
+        if (samples_textures(p->info().needs)) continue;  // the plane has no texture
         INFO(p->info().name);
         FrameRequest r;
         r.width = 200, r.height = 136;
@@ -560,7 +650,7 @@ TEST_CASE("the undefined-case mask: aastep with a zero derivative is flagged, an
     }
     SECTION("every catalogue shader on the plane, and Figure 1.1's own, give the same colours checked") {
         for (const Program* p : catalogue()) {
-            if (p->info().needs.texture) continue;  // the plane has no texture
+            if (samples_textures(p->info().needs)) continue;  // the plane has no texture
             const std::string name(p->info().name);
             INFO(name);
             const Framebuffer plain = render_checked(plane, name, 40, 24, false);

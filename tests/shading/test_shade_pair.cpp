@@ -39,9 +39,11 @@ TEST_CASE("shading two batches as a pair gives the bits of shading each alone, e
     std::vector<std::uint8_t> texels;
     for (int t = 0; t < 5 * 3 * 4; ++t) texels.push_back(std::uint8_t(t % 7 * 36));
     const glsl::sampler2D texture(5, 3, texels.data(), {});
+    const glsl::sampler3D volume(5, 3, 1, texels.data(), {glsl::Wrap::Repeat, glsl::Wrap::Repeat, glsl::Wrap::Repeat});
     Uniforms u;
     u.time = 1.75f;
     u.teximage = &texture;
+    u.samplers[0] = &volume;  // the named-sampler shaders' one sampler3D
     const FragmentBatch a = batch_at(0.0f), b = batch_at(5.3f);
     int uniform = 0;  // shaders whose two batches came out the same: there a swap would not show
     for (const Program* program : catalogue()) {

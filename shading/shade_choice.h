@@ -1,0 +1,40 @@
+#pragma once
+// Which of a shader's instantiations (program_of.h) shades a draw: decided here, once, for both
+// renderers, from what the shader needs and what was asked. A request no instantiation honours
+// is refused before anything renders, never quietly shaded another way.
+
+#include <stdexcept>
+
+#include "shading/program.h"
+
+namespace qs {
+
+struct ShadeRequest {
+    Derivatives derivatives = Derivatives::Fine;  // the rule for shaders that take derivatives
+    Precision precision = Precision::Float;
+    bool check_undefined = false;  // Checked numbers (number/checked.h)
+    bool general_path = false;     // quads with helper lanes even for shaders that take no derivatives
+};
+
+// A request that no instantiation can honour; the message names the options.
+struct UnsupportedRequest : std::invalid_argument {
+    using std::invalid_argument::invalid_argument;
+};
+
+// Throws UnsupportedRequest for: double precision with a coarse rule (quads in double are
+// instantiated for the fine rule only: they serve the error study, against llvmpipe's rule);
+// undefined-case checking with analytic derivatives or double precision (Checked wraps float
+// pixels and quads).
+void check_supported(const ShadeRequest& request);
+
+struct DrawShading {
+    ShadeMode mode;
+    bool quads;  // 2x2 quads with helper lanes; false: independent pixels or Dual2
+};
+
+// The shading of one draw: per pixel when neither the shader nor its texture's level of detail
+// takes derivatives (unless the general path is asked for), else quads under the requested rule,
+// or Dual2 for analytic derivatives. Checks the request first.
+DrawShading choose_shading(const Needs& needs, bool texture_lod, const ShadeRequest& request);
+
+}  // namespace qs

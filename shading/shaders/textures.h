@@ -1,0 +1,92 @@
+#pragma once
+// Shaders that sample named textures: seed 001's fast noise from a 3D volume, and the probes that
+// compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod) with llvmpipe
+// (tests/reference/test_texture_conformance.cpp). Translated from the .frag files beside this
+// header.
+
+#include "shading/glsl.h"
+#include "shading/program.h"
+#include "shading/program_of.h"
+#include "shading/shaders/table_1_1.h"
+
+namespace qs::shaders {
+using namespace qs::glsl;
+
+inline constexpr Needs kTeximageProbeNeeds{.derivatives = false, .texture = true, .time = false, .varyings = 2};
+inline constexpr Needs kVolumeProbeNeeds{.derivatives = false, .texture = false, .time = false, .varyings = 2,
+                                         .samplers = {SamplerUse{"volume", 3}}};
+
+struct TextureLodProbe {
+    static constexpr ShaderInfo info{"texture_lod_probe", "probe: texture2DLod at a level from -1.5 to 8.375 in eighths",
+                                     kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_lod_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        vec2<F> st = in.vec2_at(0);
+        return texture2DLod(*u.teximage, st, floor(fract(st.x + st.y) * 80.0f) * 0.125f - 1.5f);
+    }
+};
+
+struct TextureBiasProbe {
+    static constexpr ShaderInfo info{"texture_bias_probe", "probe: texture2D with a bias from -1 to 2 per pixel",
+                                     kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_bias_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        vec2<F> st = in.vec2_at(0);
+        return texture2D(*u.teximage, st, fract(st.y * 2.0f) * 3.0f - 1.0f);
+    }
+};
+
+struct Texture3dProbe {
+    static constexpr ShaderInfo info{"texture3d_probe", "probe: texture3D of the sampler3D `volume` at (st, 0.75 s - 0.5 t)",
+                                     kVolumeProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture3d_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        const sampler3D& volume = u.sampler3D(0);
+        vec2<F> st = in.vec2_at(0);
+        return texture3D(volume, vec3<F>(st, st.x * 0.75f - st.y * 0.5f));
+    }
+};
+
+struct Texture3dLodProbe {
+    static constexpr ShaderInfo info{"texture3d_lod_probe", "probe: texture3DLod of `volume` at a level from -1 to 4.875 in eighths",
+                                     kVolumeProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture3d_lod_probe.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        const sampler3D& volume = u.sampler3D(0);
+        vec2<F> st = in.vec2_at(0);
+        return texture3DLod(volume, vec3<F>(st, st.x * 0.75f - st.y * 0.5f), floor(fract(st.x + st.y) * 48.0f) * 0.125f - 1.0f);
+    }
+};
+
+// Seed 001's noiseFast on the object position (as improved noise, which it approximates).
+struct FastNoise {
+    static constexpr ShaderInfo info{
+        "fast_noise", "seed 001: noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false, .varyings = 3,
+              .samplers = {SamplerUse{"noise3dSampler", 3}}},
+        {"shaders/object_position.vert"}, {"shaders/fast_noise.frag"}};
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
+        const glm::vec3 P = in.position * 4.0f;
+        out.varyings = {P.x, P.y, P.z};
+        out.clip = transform_point(u.model_view_projection, in.position);
+    }
+    static constexpr float PI = 3.14159265358979f;
+    template <class F>
+    static F noiseFast(const sampler3D& noise3dSampler, vec3<F> p) {
+        p = p / 8.0f;
+        vec2<F> hi = texture3D(noise3dSampler, p).xy() * 2.0f - 1.0f;  // .rg
+        F lo = texture3D(noise3dSampler, p / 9.0f).x * 2.0f - 1.0f;  // .r
+        F angle = lo * 2.0f * PI;
+        return hi.x * cos(angle) + hi.y * sin(angle);
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        return vec4<F>(vec3<F>(0.5f + 0.5f * noiseFast(u.sampler3D(0), in.vec3_at(0))), 1.0f);
+    }
+};
+
+}  // namespace qs::shaders
