@@ -24,6 +24,7 @@
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/temporary_file.h"
+#include "scenes/uniforms.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 
@@ -107,6 +108,7 @@ struct RenderArgs {
     SceneLoadOptions load;
     std::string memory_limit;  // empty: what the system has available
     std::vector<std::string> plugins;
+    std::vector<std::string> uniforms;  // --uniform NAME=VALUE, read by parse_uniform_option
     bool animated() const { return frames.first >= 0; }
 };
 
@@ -128,6 +130,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
     add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--uniform", a.uniforms,
+                   "a shader's own uniform, for every object whose shader declares it\n"
+                   "(replaces the material's extras.uniforms): 4.0, 1,0.5,0.2 or [1,0.5,0.2];\n"
+                   "matrices column by column; repeatable")
+        ->option_text("NAME=VALUE")->allow_extra_args(false);
     add_choice<Backend>(cmd, "--backend", r.backend, {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}}, "B",
                         "raster (default) | raycast (Embree, 2x2 ray quads)");
     add_choice<Derivatives>(cmd, "--derivatives", r.raster.derivatives,
@@ -303,6 +310,7 @@ int cmd_render(RenderArgs& a) {
         if (req.raster.precision == Precision::Double) throw UsageError("--undefined-mask: not with --precision double");
         if (resolved(a.mask_output) == resolved(a.output)) throw UsageError("--undefined-mask: the same file as -o");
     }
+    for (const std::string& u : a.uniforms) req.uniforms.push_back(parse_uniform_option(u));
     const std::uint64_t limit = memory_limit(a.memory_limit);
     const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
     auto path_of = [&](const std::string& pattern, int f) {
@@ -453,6 +461,9 @@ int main(int argc, char** argv) {
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {
+        std::fprintf(stderr, "quadshade: %s\n", e.what());
+        return kExitUsage;
+    } catch (const UniformOptionError& e) {  // a bad --uniform, or one no drawn shader takes
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const std::exception& e) {

@@ -3,6 +3,8 @@
 // width, and the same noise rasterized as a full-screen quad. One run, so the ratios are fair:
 //   wide lane type / plain loop       goal >= 0.80 (the abstraction costs nothing)
 //   rasterized / plain loop, 1 thread goal >= 0.70 (rasterization keeps the throughput)
+// The same for an integer-hash shader (PCG value noise) and a loop that breaks per pixel (the
+// Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop.
 // Usage: quadshade-bench-core [Google Benchmark flags]
 
 #include <benchmark/benchmark.h>
@@ -15,6 +17,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl.h"
 #include "shading/noise/simplex2d.h"
+#include "shading/shaders/seed_patterns.h"
 #include "raster/rasterizer.h"
 
 namespace {
@@ -107,6 +110,104 @@ void BM_plain_stdx_loop(benchmark::State& state) {
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// ---- the integer hash and the loop with break (shading/shaders/seed_patterns.h) ---------------
+// A shader's fragment function over the grid on number type F, as BM_simplex2d does.
+template <class F, class Fragment>
+void run_grid(benchmark::State& state, Fragment fragment) {
+    constexpr int n = lanes_of<F>();
+    double sink = 0.0;
+    for (auto _ : state) {
+        F acc(0.0f);
+        for (int y = 0; y < kSide; ++y) {
+            const F t((float(y) + 0.5f) / kSide);
+            for (int x = 0; x < kSide; x += n) acc += fragment(vec2<F>(lane_ramp<F>((float(x) + 0.5f) / kSide, 1.0f / kSide), t));
+        }
+        sink += double(lane(acc, 0));
+        benchmark::DoNotOptimize(sink);
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+template <class F>
+void BM_pcg_value_noise(benchmark::State& state) {
+    run_grid<F>(state, [](const vec2<F>& st) {
+        const vec2<F> p = st * 16.0f;
+        return 0.5f * shaders::value_noise(p) + 0.25f * shaders::value_noise(p * 2.0f + 17.0f) +
+               0.125f * shaders::value_noise(p * 4.0f + 31.0f) + 0.0625f * shaders::value_noise(p * 8.0f + 47.0f);
+    });
+}
+
+template <class F>
+void BM_mandelbrot(benchmark::State& state) {
+    run_grid<F>(state, [](const vec2<F>& st) {
+        FragmentIn<F> in;
+        in.gl_FragCoord = vec4<F>(st * float(kSide), 0.0f, 1.0f);  // the pixel centres
+        const vec4<F> c = shaders::Mandelbrot::fragment<F>(in, Uniforms{});
+        return c.x + c.y + c.z;
+    });
+}
+
+// The same two functions written straight on std::experimental::simd, at native width.
+using U = stdx::rebind_simd_t<std::uint32_t, V>;
+using I = stdx::rebind_simd_t<std::int32_t, V>;
+inline U plain_pcg_hash(U v) {
+    const U state = v * 747796405u + 2891336453u;
+    const U word = ((state >> ((state >> 28) + 4u)) ^ state) * 277803737u;
+    return (word >> 22) ^ word;
+}
+inline V plain_cellnoise(V x, V y) {
+    const U ux = stdx::static_simd_cast<U>(stdx::static_simd_cast<I>(x) & 0x7FFFFFFF);
+    const U uy = stdx::static_simd_cast<U>(stdx::static_simd_cast<I>(y) & 0x7FFFFFFF);
+    return stdx::static_simd_cast<V>(plain_pcg_hash(ux + plain_pcg_hash(uy)) & 0xFFFFu) / 65536.0f;
+}
+inline V plain_mix(V a, V b, V t) { return a * (1.0f - t) + b * t; }
+inline V plain_value_noise(V x, V y) {
+    const V ix = stdx::floor(x), iy = stdx::floor(y), fx = x - ix, fy = y - iy;
+    const V ux = fx * fx * (3.0f - 2.0f * fx), uy = fy * fy * (3.0f - 2.0f * fy);
+    const V a = plain_cellnoise(ix, iy), b = plain_cellnoise(ix + 1.0f, iy);
+    const V c = plain_cellnoise(ix, iy + 1.0f), d = plain_cellnoise(ix + 1.0f, iy + 1.0f);
+    return plain_mix(plain_mix(a, b, ux), plain_mix(c, d, ux), uy);
+}
+inline V plain_pcg(V s, V t) {
+    const V px = s * 16.0f, py = t * 16.0f;
+    return 0.5f * plain_value_noise(px, py) + 0.25f * plain_value_noise(px * 2.0f + 17.0f, py * 2.0f + 17.0f) +
+           0.125f * plain_value_noise(px * 4.0f + 31.0f, py * 4.0f + 31.0f) +
+           0.0625f * plain_value_noise(px * 8.0f + 47.0f, py * 8.0f + 47.0f);
+}
+// Each lane iterates until it escapes: the lanes still inside are a mask, the loop ends when it
+// is empty.
+inline V plain_mandelbrot(V s, V t) {
+    const V cx = (s * float(kSide)) * (3.0f / 1024.0f) - 2.0f, cy = (t * float(kSide)) * (3.0f / 1024.0f) - 1.5f;
+    V x = cx, y = cy, r(0.0f);
+    V::mask_type inside(true);
+    for (int i = 0; i < 100; ++i) {
+        const V nx = x * x + cx - y * y, ny = 2.0f * x * y + cy;
+        stdx::where(inside, x) = nx;
+        stdx::where(inside, y) = ny;
+        stdx::where(inside, r) = nx * nx + ny * ny;
+        inside = inside && !(r > 4.0f);
+        if (stdx::none_of(inside)) break;
+    }
+    return x + r * 0.1f + y;
+}
+
+template <V (*Function)(V, V)>
+void BM_plain(benchmark::State& state) {
+    constexpr int n = int(V::size());
+    double sink = 0.0;
+    for (auto _ : state) {
+        V acc(0.0f);
+        const V ramp([](auto i) { return float(i) / kSide; });
+        for (int y = 0; y < kSide; ++y) {
+            const V t((float(y) + 0.5f) / kSide);
+            for (int x = 0; x < kSide; x += n) acc += Function(V((float(x) + 0.5f) / kSide) + ramp, t);
+        }
+        sink += double(acc[0]);
+        benchmark::DoNotOptimize(sink);
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 // A full-window square through the whole pipeline: vertex stage, setup, tiles, quads/pixels.
 void BM_raster(benchmark::State& state, const char* shader, int threads) {
     const Program* program = find_program(shader);
@@ -149,6 +250,13 @@ BENCHMARK_CAPTURE(BM_raster, constant_color_1thread, "constant_color", 1)->Unit(
 BENCHMARK_CAPTURE(BM_raster, simplex2d_1thread, "simplex2d", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_raster, constant_color_all_threads, "constant_color", 0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_raster, simplex2d_all_threads, "simplex2d", 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Wall-clock time like the rasterized runs, so that their ratios hold on a host shared with others.
+BENCHMARK_TEMPLATE(BM_pcg_value_noise, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_plain, plain_pcg)->Name("BM_plain_stdx_pcg")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster, pcg_value_noise_1thread, "pcg_value_noise", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_mandelbrot, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_plain, plain_mandelbrot)->Name("BM_plain_stdx_mandelbrot")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster, mandelbrot_1thread, "mandelbrot", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
@@ -170,6 +278,17 @@ int main(int argc, char** argv) {
     if (plain > 0 && raster1 > 0) {
         std::printf("rasterized simplex2d (1 thread) / plain loop: %.2f (goal >= 0.70) %s\n", raster1 / plain,
                     raster1 / plain >= 0.70 ? "MET" : "NOT MET");
+    }
+    for (const std::string shader : {"pcg", "mandelbrot"}) {
+        const std::string name = shader == "pcg" ? "pcg_value_noise" : shader;
+        const double loop = rate("BM_plain_stdx_" + shader);
+        const double lanes = rate("BM_" + name + "<Pixels<float, 16>>");
+        const double raster = rate("BM_raster/" + name + "_1thread");
+        if (loop > 0 && lanes > 0) std::printf("%s: Pixels<float,16> / plain loop: %.2f\n", name.c_str(), lanes / loop);
+        if (loop > 0 && raster > 0) {
+            std::printf("%s: rasterized (1 thread) / plain loop: %.2f (goal >= 0.70) %s\n", name.c_str(), raster / loop,
+                        raster / loop >= 0.70 ? "MET" : "NOT MET");
+        }
     }
     benchmark::Shutdown();
     return 0;

@@ -249,7 +249,7 @@ private:
     Image reference(Scene& scene, const Mode& m) {
         const int k = m.supersample;
         auto context = create_osmesa_context(scene.width * k, scene.height * k, GlDriver::Llvmpipe, o_.threads);
-        const Image gl = GlSceneRenderer(scene, {scene.width * k, scene.height * k, {}, m.shader}, *context, o_.out / "glsl").render();
+        const Image gl = GlSceneRenderer(scene, {scene.width * k, scene.height * k, {}, m.shader, {}}, *context, o_.out / "glsl").render();
         return k > 1 ? downsample(gl.rgba, gl.width, gl.height, k) : gl;
     }
 

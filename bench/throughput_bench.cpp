@@ -108,7 +108,7 @@ std::string figure_frames(int threads, int repeat, const std::filesystem::path& 
     }
     auto context = qs::create_osmesa_context(scene.width, scene.height, qs::GlDriver::Llvmpipe, threads);
     const auto s0 = Clock::now();
-    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, ""}, *context, glsl);
+    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, "", {}}, *context, glsl);
     gl.draw();
     const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
     const Stats l = time_frames(repeat, [&] { gl.draw(); });
@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
                               needs_of(row.shader, frame).c_str(), q.median, g.median, 100.0 * (1.0 - q.median / g.median));
                 special << saving;
                 const auto s0 = Clock::now();
-                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader}, *context, glsl);
+                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader, {}}, *context, glsl);
                 gl.draw();  // the first frame compiles llvmpipe's code
                 const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
                 const Stats l = time_frames(repeat, [&] { gl.draw(); });

@@ -7,6 +7,10 @@
 #include <cstdint>
 #include <utility>
 
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
+
 #include "raster/lanes16.h"
 #include "shading/program.h"
 
@@ -54,6 +58,28 @@ void row(const Floats& rg, const Floats& ba, Floats& out, std::integer_sequence<
 // (0..3, r) of the block, y down. Eight two-source shuffles: rows 0 and 1 hold lanes 0..7 (the
 // upper quads), rows 2 and 3 lanes 8..15.
 inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kBlock]) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+    // Two registers per channel: the generic shuffles below would be split into scalar moves.
+    // Per half h (lanes 8h .. 8h + 7, block rows 2h and 2h + 1): interleave red with green and
+    // blue with alpha, gather each pixel's four components, then pair the 128-bit halves into
+    // rows. Row 2h holds lanes 8h + {2, 3, 6, 7}, row 2h + 1 lanes 8h + {0, 1, 4, 5} (kLaneAt).
+    static_assert(kLaneAt[0][0] == 2 && kLaneAt[0][2] == 6 && kLaneAt[1][0] == 0 && kLaneAt[1][2] == 4 &&
+                  kLaneAt[2][0] == 10 && kLaneAt[3][0] == 8);
+    for (int h = 0; h < 2; ++h) {
+        const __m256 r = _mm256_loadu_ps(rgba[0] + 8 * h), g = _mm256_loadu_ps(rgba[1] + 8 * h);
+        const __m256 b = _mm256_loadu_ps(rgba[2] + 8 * h), a = _mm256_loadu_ps(rgba[3] + 8 * h);
+        const __m256 rg_low = _mm256_unpacklo_ps(r, g), rg_high = _mm256_unpackhi_ps(r, g);  // r0 g0 r1 g1 | r4 ..
+        const __m256 ba_low = _mm256_unpacklo_ps(b, a), ba_high = _mm256_unpackhi_ps(b, a);
+        auto store_row = [](float* row, __m256 rg, __m256 ba) {
+            const __m256 first = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(1, 0, 1, 0));   // pixel k, k + 4
+            const __m256 second = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(3, 2, 3, 2));  // pixel k + 1, k + 5
+            _mm256_storeu_ps(row, _mm256_permute2f128_ps(first, second, 0x20));
+            _mm256_storeu_ps(row + 8, _mm256_permute2f128_ps(first, second, 0x31));
+        };
+        store_row(rows[2 * h], rg_high, ba_high);
+        store_row(rows[2 * h + 1], rg_low, ba_low);
+    }
+#else
     using namespace block_detail;
     static_assert(kLaneAt[0][0] < 8 && kLaneAt[1][3] < 8 && kLaneAt[2][0] >= 8 && kLaneAt[3][0] >= 8);
     constexpr auto sixteen = std::make_integer_sequence<int, 16>();
@@ -70,6 +96,7 @@ inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kB
     row<2>(rg_high, ba_high, out[2], sixteen);
     row<3>(rg_high, ba_high, out[3], sixteen);
     for (int i = 0; i < kBlock; ++i) lanes16::store(rows[i], out[i]);
+#endif
 }
 
 }  // namespace qs

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <cstring>
 
-#if defined(__AVX512F__)
+#if defined(__AVX__)
 #include <immintrin.h>
 #endif
 
@@ -20,7 +20,18 @@ namespace qs::lanes16 {
 typedef float Floats __attribute__((vector_size(kBatchLanes * sizeof(float))));
 typedef std::int32_t Ints __attribute__((vector_size(kBatchLanes * sizeof(std::int32_t))));
 
-inline Floats broadcast(float v) { return Floats{} + v; }
+inline Floats broadcast(float v) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+    // Two registers of eight (`Floats{} + v` compiled to sixteen scalar stores).
+    const __m256 half = _mm256_set1_ps(v);
+    const __m256 both[2] = {half, half};
+    Floats r;
+    std::memcpy(&r, both, sizeof r);
+    return r;
+#else
+    return Floats{} + v;
+#endif
+}
 
 inline Floats load(const float* p) {
     Floats v;
@@ -32,7 +43,17 @@ inline Ints load(const int* p) {
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline void store(float* p, const Floats& v) { std::memcpy(p, &v, sizeof v); }
+inline void store(float* p, const Floats& v) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+    // Two registers of eight, stored as such (a copy of the whole went through general registers).
+    __m256 halves[2];
+    std::memcpy(halves, &v, sizeof halves);
+    _mm256_storeu_ps(p, halves[0]);
+    _mm256_storeu_ps(p + 8, halves[1]);
+#else
+    std::memcpy(p, &v, sizeof v);
+#endif
+}
 
 inline Floats to_float(const Ints& v) { return __builtin_convertvector(v, Floats); }
 
@@ -41,6 +62,14 @@ inline Floats fma(const Floats& a, const Floats& b, const Floats& c) {
 #if defined(__AVX512F__)
     static_assert(sizeof(Floats) == sizeof(__m512));
     return Floats(_mm512_fmadd_ps(__m512(a), __m512(b), __m512(c)));
+#elif defined(__FMA__)
+    // Two registers of eight (a loop of std::fma compiled to sixteen scalar instructions).
+    __m256 x[2], y[2], z[2];
+    std::memcpy(x, &a, sizeof x), std::memcpy(y, &b, sizeof y), std::memcpy(z, &c, sizeof z);
+    for (int h = 0; h < 2; ++h) x[h] = _mm256_fmadd_ps(x[h], y[h], z[h]);
+    Floats r;
+    std::memcpy(&r, x, sizeof r);
+    return r;
 #else
     Floats r;
     for (int i = 0; i < kBatchLanes; ++i) r[i] = std::fma(a[i], b[i], c[i]);

@@ -117,7 +117,7 @@ public:
                 shade_tile<false>(x0, y0);
             }
             if (d.quads) quads_ += std::uint64_t(kTileBlocks * kBatchQuads);
-            lanes_ += std::uint64_t(kTilePixels), written_ += std::uint64_t(kTilePixels);
+            lanes_ += std::uint64_t(kTilePixels);
             return;
         }
         // Each edge function at the blocks' top-left pixels, stepped block to block, and its
@@ -205,9 +205,9 @@ private:
     }
 
     // Shades the tile at (x0, y0), which lies inside the triangle and the image, block pair by
-    // block pair: no coverage to test, no early depth (the caller checks), nothing to count per
-    // block. The loop is the same work as shade_block's, with the per-draw choices inside
-    // interpolate made once per tile rather than per block (about a tenth of the simplex square).
+    // block pair: no coverage to test, no early depth (the caller checks). The loop is the same
+    // work as shade_block's, with the per-draw choices inside interpolate made once per tile
+    // rather than per block (about a tenth of the simplex square).
     template <bool Fused>
     void shade_tile(int x0, int y0) {
         static_assert(kTileSize % (2 * kBlock) == 0);
@@ -218,11 +218,23 @@ private:
                 interpolate<Fused>(in_[0], lanes_x(bx), y);
                 interpolate<Fused>(in_[1], lanes_x(bx + kBlock), y);
                 program.shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
-                store_block(out_[0], bx, by);
-                store_block(out_[1], bx + kBlock, by);
+                tile_block(0, bx, by);
+                tile_block(1, bx + kBlock, by);
             }
         }
-        touched_.set();
+    }
+    // Writes batch h of a whole tile, the block at (bx, by): whole, or its lanes that did not
+    // discard.
+    void tile_block(int h, int bx, int by) {
+        if (out_[h].discarded == 0) {
+            store_block(out_[h], bx, by);
+            touched_[std::size_t(block_base(bx, by) / kBatchLanes)] = true;
+            written_ += kBatchLanes;
+            return;
+        }
+        for (int i = 0; i < kBatchLanes; ++i) {
+            if (!(out_[h].discarded >> i & 1)) write_lane(h, i, bx + kLaneDx[i], by + kLaneDy[i]);
+        }
     }
 
     // The framebuffer x and y of the lanes of the block whose top-left pixel is (bx, by).
@@ -264,6 +276,7 @@ private:
     void write_block(int h, int bx, int by, std::uint32_t mask) {
         const ColorBatch& out = out_[h];
         lanes_ += kBatchLanes;
+        mask &= ~out.discarded;  // GLSL discard: no colour, no depth
         if (mask != kAllLanes) {
             for (int i = 0; i < kBatchLanes; ++i) {
                 if (mask >> i & 1) write_lane(h, i, bx + kLaneDx[i], by + kLaneDy[i]);
@@ -376,8 +389,9 @@ private:
         interpolate(in_[0], lanes16::to_float(lanes16::load(b.x)), lanes16::to_float(lanes16::load(b.y)));
         draw_->call->program->shade(draw_->mode, in_[0], draw_->call->uniforms, out_[0]);
         lanes_ += std::uint64_t(b.count);
+        const std::uint32_t write = b.write & ~out_[0].discarded;  // GLSL discard: no colour, no depth
         for (int i = 0; i < b.count; ++i) {
-            if (b.write >> i & 1) write_lane(0, i, b.x[i], b.y[i]);
+            if (write >> i & 1) write_lane(0, i, b.x[i], b.y[i]);
         }
     }
 

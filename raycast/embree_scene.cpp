@@ -109,7 +109,8 @@ void EmbreeScene::intersect(const RayPacket& rays, RayHits& hits) const {
         r.ray.org_z[i] = active ? rays.origin[2][i] : 0.0f;
         r.ray.dir_x[i] = active ? rays.direction[0][i] : 0.0f, r.ray.dir_y[i] = active ? rays.direction[1][i] : 0.0f;
         r.ray.dir_z[i] = active ? rays.direction[2][i] : 1.0f;
-        r.ray.tnear[i] = 0.0f, r.ray.tfar[i] = active ? 1.0f : -INFINITY, r.ray.time[i] = 0.0f;
+        r.ray.tnear[i] = active ? rays.tnear[i] : 0.0f, r.ray.tfar[i] = active ? 1.0f : -INFINITY;
+        r.ray.time[i] = 0.0f;
         r.ray.mask[i] = 0xFFFFFFFFu, r.ray.id[i] = unsigned(i), r.ray.flags[i] = 0;
         r.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID, r.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
         r.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
@@ -124,6 +125,7 @@ void EmbreeScene::intersect(const RayPacket& rays, RayHits& hits) const {
         const bool hit = (rays.active >> i & 1) && r.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
         hits.geometry[i] = hit ? r.hit.geomID[i] : kNoHit;
         hits.primitive[i] = hit ? r.hit.primID[i] : kNoHit;
+        hits.t[i] = hit ? r.ray.tfar[i] : 1.0f;
     }
 }
 

@@ -22,18 +22,20 @@ public:
 
 inline constexpr std::uint32_t kNoHit = 0xFFFFFFFFu;  // RTC_INVALID_GEOMETRY_ID
 
-// Rays origin + t direction for t in [0, 1]; lanes whose bit in `active` is clear are not cast.
+// Rays origin + t direction for t in [tnear, 1]; lanes whose bit in `active` is clear are not cast.
 struct RayPacket {
     alignas(64) float origin[3][kBatchLanes];
     alignas(64) float direction[3][kBatchLanes];
+    alignas(64) float tnear[kBatchLanes] = {};
     std::uint32_t active = 0;
 };
 
 // The closest hit of each ray: geometry (mesh) and primitive (triangle) ids, kNoHit for a miss
-// or an inactive lane.
+// or an inactive lane, and the hit's t.
 struct RayHits {
     alignas(64) std::uint32_t geometry[kBatchLanes];
     alignas(64) std::uint32_t primitive[kBatchLanes];
+    alignas(64) float t[kBatchLanes];
 };
 
 class EmbreeScene {

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -114,10 +115,13 @@ struct PreparedDraw {
 };
 
 // Fragments waiting to be shaded with one draw's program: pixel positions (framebuffer
-// coordinates), the primitive each lane is evaluated on, and which lanes write.
+// coordinates), their lanes in their blocks, the primitive each lane is evaluated on and where
+// its ray met it, and which lanes write.
 struct Batch {
     int x[kBatchLanes], y[kBatchLanes];
+    std::uint8_t lane[kBatchLanes];
     std::uint32_t primitive[kBatchLanes];
+    float t[kBatchLanes];
     std::uint32_t write = 0;
     int count = 0;
 };
@@ -128,13 +132,15 @@ public:
         : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), pending_(draws.size()) {}
 
     // Casts, shades and writes the 4x4 block whose top-left pixel is (bx, by) in framebuffer
-    // coordinates; pixels outside the framebuffer only ever serve as helpers.
-    void block(int bx, int by, glm::vec4 clear) {
+    // coordinates; pixels outside the framebuffer only ever serve as helpers. Only the lanes in
+    // `lanes` are cast, from tnear[i] on when given.
+    void block(int bx, int by, glm::vec4 clear, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
         for (int i = 0; i < kBatchLanes; ++i) {
             const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) continue;
+            if (!(lanes >> i & 1) || x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) continue;
             rays.active |= 1u << i;
+            if (tnear) rays.tnear[i] = tnear[i];
             const Eye::Ray r = eye_.ray(x + 0.5, fb_.height - (y + 0.5));
             for (int c = 0; c < 3; ++c) {
                 rays.origin[c][i] = float(r.origin[c]), rays.direction[c][i] = float(r.direction[c]);
@@ -160,14 +166,11 @@ public:
                     if (hits.geometry[4 * q + k] == g && hits.primitive[4 * q + k] == p) owned |= 1u << k, done[k] = true;
                 }
                 const PreparedDraw& d = draws_[g];
-                if (d.quads) {
-                    ++quads_;
-                    for (int k = 0; k < 4; ++k) append(g, bx + kLaneDx[4 * q + k], by + kLaneDy[4 * q + k], p, owned >> k & 1);
-                } else {
-                    for (int k = 0; k < 4; ++k) {
-                        if (owned >> k & 1) append(g, bx + kLaneDx[4 * q + k], by + kLaneDy[4 * q + k], p, true);
-                    }
+                for (int k = 0; k < 4; ++k) {
+                    const int at = 4 * q + k;
+                    if (d.quads || (owned >> k & 1)) append(g, at, bx + kLaneDx[at], by + kLaneDy[at], p, hits.t[at], owned >> k & 1);
                 }
+                quads_ += d.quads;
             }
         }
     }
@@ -176,15 +179,41 @@ public:
         for (std::size_t g = 0; g < pending_.size(); ++g) flush(g);
     }
 
+    // GLSL discard leaves the pixel to whatever lies behind: the rays of discarded fragments
+    // are cast again from just past their hit, block by block, until they meet a fragment that
+    // is kept or nothing (the clear colour), as depth testing would have it.
+    void cast_past_discards(glm::vec4 clear) {
+        while (!discarded_.empty()) {
+            std::vector<Discarded> now;
+            now.swap(discarded_);
+            std::sort(now.begin(), now.end(), [](const Discarded& a, const Discarded& b) {
+                return std::tie(a.by, a.bx) < std::tie(b.by, b.bx);
+            });
+            for (std::size_t i = 0; i < now.size();) {
+                float tnear[kBatchLanes] = {};
+                std::uint32_t lanes = 0;
+                std::size_t j = i;
+                for (; j < now.size() && now[j].bx == now[i].bx && now[j].by == now[i].by; ++j) {
+                    lanes |= 1u << now[j].lane;
+                    tnear[now[j].lane] = std::nextafter(now[j].t, 2.0f);
+                }
+                block(now[i].bx, now[i].by, clear, lanes, tnear);
+                i = j;
+            }
+            finish();
+        }
+    }
+
     std::uint64_t quads() const { return quads_; }
     std::uint64_t lanes() const { return lanes_; }
     std::uint64_t written() const { return written_; }
 
 private:
     // Quads are appended four lanes at a time and batches hold whole quads, so they stay aligned.
-    void append(std::uint32_t g, int x, int y, std::uint32_t primitive, bool write) {
+    void append(std::uint32_t g, int lane, int x, int y, std::uint32_t primitive, float t, bool write) {
         Batch& b = pending_[g];
         b.x[b.count] = x, b.y[b.count] = y, b.primitive[b.count] = primitive;
+        b.lane[b.count] = std::uint8_t(lane), b.t[b.count] = t;
         b.write |= std::uint32_t(write) << b.count;
         if (++b.count == kBatchLanes) flush(g);
     }
@@ -254,6 +283,10 @@ private:
         lanes_ += std::uint64_t(b.count);
         for (int i = 0; i < b.count; ++i) {
             if (!(b.write >> i & 1)) continue;
+            if (out_.discarded >> i & 1) {
+                discarded_.push_back({b.x[i] - kLaneDx[b.lane[i]], b.y[i] - kLaneDy[b.lane[i]], b.lane[i], b.t[i]});
+                continue;
+            }
             float* p = fb_.pixel(b.x[i], b.y[i]);
             for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
             if (d.mode.check_undefined) *undefined_at(b.x[i], b.y[i]) = out_.undefined[i];
@@ -269,6 +302,12 @@ private:
     const Eye& eye_;
     const std::vector<PreparedDraw>& draws_;
     std::vector<Batch> pending_;  // per draw
+    // Fragments that discarded: their block, lane and where their ray met the surface.
+    struct Discarded {
+        int bx, by, lane;
+        float t;
+    };
+    std::vector<Discarded> discarded_;
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     FragmentBatch in_;
     ColorBatch out_;
@@ -419,6 +458,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
                 for (int bx = x0; bx < std::min(x0 + kTileSize, width); bx += kBlock) caster.block(bx, by, clear);
             }
             caster.finish();
+            caster.cast_past_discards(clear);
             quads += caster.quads(), lanes += caster.lanes(), written += caster.written();
         }
     });

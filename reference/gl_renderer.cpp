@@ -6,6 +6,8 @@
 #include "reference/gl_renderer.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -51,8 +53,8 @@ GLuint compile(GLenum stage, const std::filesystem::path& file) {
     return s;
 }
 
-// The uniforms a program may declare besides its samplers, each bound by name as the chapter's
-// demo binds them.
+// The uniforms bound by name as the chapter's demo binds them, besides the samplers; any other is
+// the shader's own (set from the scene or --uniform, else its initializer), or uResolution.
 const std::set<std::string> kKnownUniforms = {"time", "dims"};
 
 // A linked program's active uniforms, as (name, GL type).
@@ -79,6 +81,55 @@ std::vector<std::pair<std::string, int>> samplers_of(GLuint p) {
     return r;
 }
 
+// A uniform type's number of components and whether they are integers; 0 for a type the
+// reference cannot set from numbers (samplers, bools).
+struct GlUniformType {
+    int components = 0;
+    bool integer = false, unsigned_integer = false;
+};
+GlUniformType gl_uniform_type(GLenum type) {
+    switch (type) {
+        case GL_FLOAT: return {1};
+        case GL_FLOAT_VEC2: return {2};
+        case GL_FLOAT_VEC3: return {3};
+        case GL_FLOAT_VEC4: return {4};
+        case GL_INT: return {1, true};
+        case GL_INT_VEC2: return {2, true};
+        case GL_INT_VEC3: return {3, true};
+        case GL_INT_VEC4: return {4, true};
+        case GL_UNSIGNED_INT: return {1, true, true};
+        case GL_FLOAT_MAT2: return {4};
+        case GL_FLOAT_MAT3: return {9};
+        case GL_FLOAT_MAT4: return {16};
+        default: return {};
+    }
+}
+
+// Whether the GLSL text declares `uniform TYPE name` (a uniform the compiler dropped as unused
+// is in no list GL gives).
+bool declares_uniform(const std::string& glsl, const std::string& name) {
+    for (std::size_t at = glsl.find("uniform"); at != std::string::npos; at = glsl.find("uniform", at + 1)) {
+        std::size_t i = at + 7;
+        auto skip_space = [&] { while (i < glsl.size() && std::isspace(static_cast<unsigned char>(glsl[i]))) ++i; };
+        auto word = [&] {
+            const std::size_t b = i;
+            while (i < glsl.size() && (std::isalnum(static_cast<unsigned char>(glsl[i])) || glsl[i] == '_')) ++i;
+            return glsl.substr(b, i - b);
+        };
+        skip_space();
+        word();  // the type
+        skip_space();
+        if (word() == name) return true;
+    }
+    return false;
+}
+
+// Whether either stage of `shader` declares a uniform of that name.
+bool glsl_declares(const std::filesystem::path& glsl_dir, const std::string& shader, const std::string& uniform) {
+    return declares_uniform(read_glsl(glsl_dir / (shader + ".frag")), uniform) ||
+           declares_uniform(read_glsl(glsl_dir / (shader + ".vert")), uniform);
+}
+
 GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& name) {
     GLuint vs = compile(GL_VERTEX_SHADER, glsl_dir / (name + ".vert"));
     GLuint fs = compile(GL_FRAGMENT_SHADER, glsl_dir / (name + ".frag"));
@@ -89,16 +140,43 @@ GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& na
     check(p, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, name + ": GLSL does not link");
     glDeleteShader(vs);
     glDeleteShader(fs);
-    // A uniform nothing binds would read 0: refuse it rather than render something else.
+    // A uniform the reference cannot set: refuse it rather than render something else.
     for (const auto& [u, type] : active_uniforms(p)) {
         const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;  // bound per object, by name
-        if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u)) {
+        if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u) && gl_uniform_type(type).components == 0) {
             glDeleteProgram(p);
-            throw std::runtime_error(name + ": uniform '" + u +
-                                     "' is none the reference binds (time, dims, and sampler2D/sampler3D uniforms)");
+            throw std::runtime_error(name + ": uniform '" + u + "' is none the reference binds (time, dims, " +
+                                     "sampler2D/sampler3D uniforms, or a float, vec, int, ivec, uint or mat of the shader's own)");
         }
     }
     return p;
+}
+
+// glUniform* of the numbers a setting gives, as the type takes them.
+void set_uniform(GLint location, GLenum type, const std::vector<double>& values) {
+    float f[16] = {};
+    GLint i[4] = {};
+    GLuint u[1] = {};
+    for (std::size_t k = 0; k < values.size() && k < 16; ++k) {
+        f[k] = float(values[k]);
+        if (k < 4) i[k] = GLint(std::int64_t(values[k]));
+        if (k < 1) u[k] = GLuint(std::int64_t(values[k]));
+    }
+    switch (type) {
+        case GL_FLOAT: glUniform1fv(location, 1, f); break;
+        case GL_FLOAT_VEC2: glUniform2fv(location, 1, f); break;
+        case GL_FLOAT_VEC3: glUniform3fv(location, 1, f); break;
+        case GL_FLOAT_VEC4: glUniform4fv(location, 1, f); break;
+        case GL_INT: glUniform1iv(location, 1, i); break;
+        case GL_INT_VEC2: glUniform2iv(location, 1, i); break;
+        case GL_INT_VEC3: glUniform3iv(location, 1, i); break;
+        case GL_INT_VEC4: glUniform4iv(location, 1, i); break;
+        case GL_UNSIGNED_INT: glUniform1uiv(location, 1, u); break;
+        case GL_FLOAT_MAT2: glUniformMatrix2fv(location, 1, GL_FALSE, f); break;
+        case GL_FLOAT_MAT3: glUniformMatrix3fv(location, 1, GL_FALSE, f); break;
+        case GL_FLOAT_MAT4: glUniformMatrix4fv(location, 1, GL_FALSE, f); break;
+        default: throw std::logic_error("set_uniform: a type uniform_values refused");
+    }
 }
 
 GLint gl_enum(Wrap w) { return GLint(w); }      // glTF keeps GL's values
@@ -150,7 +228,65 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
             bindings.push_back({glGetUniformLocation(p, uniform.c_str()), unit, &texture_of(o, name, uniform, dims)});
         }
         bound_.push_back(std::move(bindings));
+        // Under --shader a material's uniforms were written for its own shader: only the ones the
+        // drawn program has apply.
+        std::vector<UniformSetting> settings = merge_uniforms(o.uniforms, request_.uniforms);
+        if (!request_.shader_override.empty()) {
+            std::erase_if(settings, [&](const UniformSetting& s) {
+                return !s.origin.starts_with("--uniform") && glGetUniformLocation(p, s.name.c_str()) < 0;
+            });
+        }
+        uniforms_.push_back(uniform_values(p, name, settings, programs.glsl_dir()));
     }
+    for (const UniformSetting& s : request_.uniforms) {
+        bool found = false;
+        for (std::size_t i = 0; i < programs_.size(); ++i) {
+            const std::string& name = request_.shader_override.empty() ? scene_.objects[i].shader : request_.shader_override;
+            found = found || glGetUniformLocation(programs_[i], s.name.c_str()) >= 0 ||
+                    glsl_declares(programs.glsl_dir(), name, s.name);
+        }
+        if (!found) throw UniformOptionError(s.origin + ": no shader in this scene declares a uniform '" + s.name + "'");
+    }
+}
+
+std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsigned program, const std::string& shader,
+                                                                           const std::vector<UniformSetting>& settings,
+                                                                           const std::filesystem::path& glsl_dir) const {
+    std::vector<UniformValue> out;
+    for (const UniformSetting& s : settings) {
+        const bool from_option = s.origin.starts_with("--uniform");
+        auto refuse = [&](const std::string& what) {
+            if (from_option) throw UniformOptionError(s.origin + ": " + what);
+            throw std::runtime_error(s.origin + ": " + what);
+        };
+        if (s.name == kResolutionUniform) refuse("uResolution is the frame's size, set by the renderer");
+        const GLint location = glGetUniformLocation(program, s.name.c_str());
+        if (location < 0) {
+            // Declared but compiled away: nothing to set. A command line's may be another program's.
+            if (from_option || glsl_declares(glsl_dir, shader, s.name)) {
+                continue;
+            }
+            refuse("shader '" + shader + "' has no uniform '" + s.name + "'");
+        }
+        GLenum type = 0;
+        for (const auto& [name, t] : active_uniforms(program)) {
+            if (name == s.name) type = t;
+        }
+        const GlUniformType g = gl_uniform_type(type);
+        if (g.components == 0) refuse("uniform '" + s.name + "' of shader '" + shader + "' is of a type the reference cannot set");
+        if (int(s.values.size()) != g.components) {
+            refuse("uniform '" + s.name + "' of shader '" + shader + "' takes " + std::to_string(g.components) +
+                   " number(s), got " + std::to_string(s.values.size()));
+        }
+        for (double v : s.values) {
+            const double lo = g.unsigned_integer ? 0.0 : -2147483648.0, hi = g.unsigned_integer ? 4294967295.0 : 2147483647.0;
+            if (g.integer && (v != std::trunc(v) || v < lo || v > hi)) {
+                refuse("uniform '" + s.name + "' of shader '" + shader + "' is an integer type: " + std::to_string(v) + " is not one");
+            }
+        }
+        out.push_back({location, type, s.values});
+    }
+    return out;
 }
 
 const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
@@ -236,6 +372,10 @@ void GlSceneRenderer::draw() {
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
         if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
+        if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
+            glUniform2f(loc, float(width), float(height));
+        }
+        for (const UniformValue& u : uniforms_[i]) set_uniform(u.location, u.type, u.values);
         for (const Binding& b : bound_[i]) {
             glActiveTexture(GLenum(GL_TEXTURE0 + b.unit));
             glBindTexture(b.texture->target, b.texture->id);

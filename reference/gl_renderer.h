@@ -25,6 +25,9 @@ struct GlFrameRequest {
     int width = 0, height = 0;
     std::optional<float> time;
     std::string shader_override;  // draw every object with this shader's GLSL
+    // --uniform values, replacing the materials' of the same name for every program that has
+    // that uniform; one no program has is refused (UniformOptionError).
+    std::vector<UniformSetting> uniforms;
 };
 
 // The programs of one context, each linked once from a folder of exported GLSL (NAME.vert,
@@ -38,6 +41,7 @@ public:
     // Throws std::runtime_error with the compiler's log when the GLSL fails, or naming a
     // uniform the reference does not bind.
     unsigned program(const std::string& shader);
+    const std::filesystem::path& glsl_dir() const { return glsl_dir_; }
 
 private:
     std::filesystem::path glsl_dir_;
@@ -77,7 +81,15 @@ private:
         int unit = 0;
         const Texture* texture = nullptr;
     };
+    // A value for one of a program's own uniforms, as glUniform takes it.
+    struct UniformValue {
+        int location = -1;
+        unsigned type = 0;  // GL_FLOAT_VEC3, GL_INT, GL_FLOAT_MAT2, ...
+        std::vector<double> values;
+    };
     void prepare(GlPrograms& programs);
+    std::vector<UniformValue> uniform_values(unsigned program, const std::string& shader,
+                                             const std::vector<UniformSetting>& settings, const std::filesystem::path& glsl_dir) const;
     const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims);
 
     const Scene& scene_;
@@ -86,6 +98,7 @@ private:
     std::unique_ptr<GlPrograms> own_programs_;  // when constructed from a GLSL folder
     std::vector<unsigned> programs_;       // per object
     std::vector<std::vector<Binding>> bound_;  // per object, its program's samplers
+    std::vector<std::vector<UniformValue>> uniforms_;  // per object
     std::vector<Texture> textures_;        // per scene texture, id 0 until uploaded
 };
 

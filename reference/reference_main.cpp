@@ -20,7 +20,7 @@ namespace {
 
 struct Options {
     std::string scene, shader, glsl, size;
-    std::vector<std::string> outputs;
+    std::vector<std::string> outputs, uniforms;
     qs::GlDriver driver = qs::GlDriver::Llvmpipe;
     std::optional<float> time;
     int threads = 0, repeat = 1;
@@ -46,6 +46,11 @@ int main(int argc, char** argv) {
     app.add_option("--size", o.size, "image size WxH (default: the scene's)");
     app.add_option("--time", o.time, "the `time` uniform (default: the scene's)");
     app.add_option("--shader", o.shader, "draw every object with this shader's GLSL");
+    app.add_option("--uniform", o.uniforms,
+                   "NAME=VALUE: a shader's own uniform for every program that has it, replacing the material's "
+                   "extras.uniforms (4.0, 1,0.5,0.2 or [1,0.5,0.2]; matrices column by column); repeatable")
+        ->take_all()
+        ->allow_extra_args(false);
     app.add_option("--threads", o.threads, "LP_NUM_THREADS for llvmpipe")->check(CLI::Range(0, 1024));
     app.add_option("--repeat", o.repeat, "render N times and report the median frame time (glFinish per frame)")
         ->check(CLI::Range(1, 100000));
@@ -55,6 +60,13 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? 0 : 2;
     }
     o.driver = driver == "softpipe" ? qs::GlDriver::Softpipe : qs::GlDriver::Llvmpipe;
+    std::vector<qs::UniformSetting> uniforms;
+    try {
+        for (const std::string& u : o.uniforms) uniforms.push_back(qs::parse_uniform_option(u));
+    } catch (const qs::UniformOptionError& e) {
+        std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
+        return 2;
+    }
     int width = 0, height = 0;
     if (!o.size.empty()) {
         std::size_t x = o.size.find('x');
@@ -80,7 +92,7 @@ int main(int argc, char** argv) {
         auto context = qs::create_osmesa_context(width, height, o.driver, o.threads);
         const qs::GlContextInfo info = context->info();
         // The first frame includes GLSL compilation (and llvmpipe's JIT): timed separately.
-        qs::GlSceneRenderer gl(scene, {width, height, o.time, o.shader}, *context, o.glsl);
+        qs::GlSceneRenderer gl(scene, {width, height, o.time, o.shader, uniforms}, *context, o.glsl);
         const qs::Image img = gl.render();
         const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const qs::Metadata metadata = {
@@ -105,6 +117,9 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, " | median frame %.3f ms over %zu", frames[frames.size() / 2] * 1e3, frames.size());
         }
         std::fputc('\n', stderr);
+    } catch (const qs::UniformOptionError& e) {  // a --uniform no program has
+        std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
         return 1;

@@ -5,6 +5,7 @@
 #include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
 #include "render/textures.h"
+#include "render/uniform_binding.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
@@ -90,7 +91,15 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
             d.uniforms.samplers[i] = &t;
             d.texture_lod = d.texture_lod || t.needs_lod();
         }
+        uniform_words_.push_back(bind_uniforms(program.info(), merge_uniforms(o.uniforms, request.uniforms), width_,
+                                               height_, !request.shader_override.empty()));
+        d.uniforms.user = uniform_words_.back().data();  // its buffer stays put as the outer vector grows
         draws_.push_back(d);
+    }
+    for (const UniformSetting& s : request.uniforms) {
+        bool declared = false;
+        for (const DrawCall& d : draws_) declared = declared || declares_uniform(d.program->info(), s.name);
+        if (!declared) throw UniformOptionError(s.origin + ": no shader in this scene declares a uniform '" + s.name + "'");
     }
     if (request.backend == Backend::RayCaster) {
 #if defined(QUADSHADE_HAS_RAYCAST)

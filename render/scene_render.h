@@ -23,6 +23,10 @@ struct FrameRequest {
     // animations keep their frame spacing. Off: time goes to the shader as float, as GL would.
     bool stable_time = false;
     std::string shader_override;         // draw every object with this shader
+    // --uniform values: they replace the materials' of the same name, for every object whose
+    // shader declares it (render/uniform_binding.h); a name no drawn shader declares throws
+    // UniformOptionError.
+    std::vector<UniformSetting> uniforms;
     Backend backend = Backend::Rasterizer;
     // Derivative rule, precision, quad pairing and threads apply to both backends; fill rule,
     // interpolation and the general path to the rasterizer only.
@@ -63,6 +67,7 @@ private:
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> draws_;
+    std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user
     struct Caster;
     std::unique_ptr<Caster> caster_;
 };

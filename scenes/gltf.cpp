@@ -395,6 +395,34 @@ std::string base64(const std::vector<std::uint8_t>& bytes) {
 // tinygltf's image writer: write no file, keep each image's URI (or bufferView) as it is.
 bool keep_image_uri(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) { return false; }
 
+// A material's extras.uniforms: {"uScale": 4.0, "uTint": [1, 0.5, 0.2], ...}, each a number or
+// an array of 2 to 16 numbers (matrices column by column).
+std::vector<UniformSetting> read_uniforms(const tinygltf::Value& v, const std::filesystem::path& file, const std::string& field) {
+    if (!v.IsObject()) fail(file, field, "expected an object of uniform names and values");
+    std::vector<UniformSetting> out;
+    for (const std::string& name : v.Keys()) {
+        const std::string f = field + "." + name;
+        if (!is_uniform_name(name)) fail(file, f, "'" + name + "' is not a GLSL uniform name");
+        if (name == kResolutionUniform) fail(file, f, "uResolution is the frame's size, set by the renderer (scenes[].extras.size, --size)");
+        UniformSetting s{name, {}, file.string() + ": " + f};
+        const tinygltf::Value& x = v.Get(name);
+        auto number = [&](const tinygltf::Value& n, const std::string& where) {
+            if (!n.IsNumber()) fail(file, where, "expected a number");
+            const double d = n.GetNumberAsDouble();
+            if (!std::isfinite(d)) fail(file, where, "not a finite number");
+            s.values.push_back(d);
+        };
+        if (x.IsArray()) {
+            if (x.ArrayLen() < 1 || x.ArrayLen() > 16) fail(file, f, "expected 1 to 16 numbers");
+            for (std::size_t i = 0; i < x.ArrayLen(); ++i) number(x.Get(int(i)), f + "[" + std::to_string(i) + "]");
+        } else {
+            number(x, f);
+        }
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
 // The file an image URI names: percent-decoded (RFC 3986, as glTF requires) and resolved by
 // resolve_scene_uri (check_uris has already refused what it refuses, naming the field).
 std::filesystem::path resolve_image_uri(const std::filesystem::path& scene_file, const std::string& uri,
@@ -797,6 +825,9 @@ Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::p
                     }
                     o.texture = textures.of_material(mat);
                     textures.named_of_material(mat, o);
+                    if (gmat.extras.IsObject() && gmat.extras.Has("uniforms")) {
+                        o.uniforms = read_uniforms(gmat.extras.Get("uniforms"), path, mf + ".uniforms");
+                    }
                 }
                 scene.objects.push_back(o);
             }
@@ -896,7 +927,21 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
     for (const Object& o : scene.objects) {
         tinygltf::Material mat;
         mat.name = o.name;
-        mat.extras = tinygltf::Value(tinygltf::Value::Object{{"shader", tinygltf::Value(o.shader)}});
+        tinygltf::Value::Object extras{{"shader", tinygltf::Value(o.shader)}};
+        if (!o.uniforms.empty()) {
+            tinygltf::Value::Object uniforms;
+            for (const UniformSetting& u : o.uniforms) {
+                if (u.values.size() == 1) {
+                    uniforms[u.name] = tinygltf::Value(u.values[0]);
+                } else {
+                    tinygltf::Value::Array a;
+                    for (double x : u.values) a.emplace_back(x);
+                    uniforms[u.name] = tinygltf::Value(std::move(a));
+                }
+            }
+            extras["uniforms"] = tinygltf::Value(std::move(uniforms));
+        }
+        mat.extras = tinygltf::Value(std::move(extras));
         mat.pbrMetallicRoughness.baseColorTexture.index = o.texture;
         if (!o.samplers.empty()) {
             tinygltf::Value::Object named;

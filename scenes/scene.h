@@ -16,6 +16,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "scenes/uniforms.h"
+
 namespace qs {
 
 // Bad input: the message names the file and the field at fault.
@@ -111,6 +113,8 @@ struct Object {
     // The other samplers' textures, by uniform name (a name at most once, never "teximage").
     std::vector<SamplerBinding> samplers;
     std::string material; // for messages: which glTF material named the shader
+    // Values for the shader's own uniforms: the material's extras.uniforms, by name.
+    std::vector<UniformSetting> uniforms;
 
     // The texture bound to sampler `uniform`, `teximage` included; -1 for none.
     int texture_for(std::string_view uniform) const;

@@ -34,7 +34,7 @@ const std::filesystem::path& plugin_of(const Program& program);
 // What crosses between quadshade and a plugin's shaders, as the plugin's headers laid it out: a
 // plugin built against other headers is refused, not run.
 struct ShaderAbi {
-    int version = 1;  // raised when program.h's contract changes in a way sizes do not show
+    int version = 2;  // raised when program.h's contract changes in a way sizes do not show
     int batch_lanes = kBatchLanes;
     int max_varyings = kMaxVaryings;
     std::size_t fragment_batch = sizeof(FragmentBatch);

@@ -10,9 +10,9 @@
 
 namespace qs {
 
-// One stage's source: "#version 120", the shader's defines, then its files (in its GLSL folder,
-// catalogue.h) in order, each after a "#line 1". Throws std::runtime_error naming a file that
-// cannot be read.
+// One stage's source: the #version line of ShaderInfo::glsl_version, the shader's defines, then
+// its files (in its GLSL folder, catalogue.h) in order, each after a "#line 1". Throws
+// std::runtime_error naming a file that cannot be read.
 std::string glsl_source(const Program& program, bool vertex_stage);
 
 // Writes DIR/NAME.vert and DIR/NAME.frag for every catalogue shader, plugins' included (DIR is created); returns

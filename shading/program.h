@@ -6,7 +6,9 @@
 // kBatchLanes fragments' inputs, laid out as 4 quads when a quad mode is used.
 
 #include <array>
+#include <bit>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 #include <glm/mat4x4.hpp>
@@ -75,6 +77,45 @@ struct Needs {
     std::array<SamplerUse, kMaxSamplers> samplers{};
 };
 
+// A shader's own uniform: `uniform vec3 uTint = vec3(1.0, 0.5, 0.2);` is
+// {"uTint", UniformType::Vec3, {1.0f, 0.5f, 0.2f}}. The initial value is the GLSL initializer's
+// (0 where it has none), used where neither the scene nor the command line sets the uniform.
+// A uniform named uResolution (scenes/uniforms.h) is the frame's size in pixels, set by the
+// renderer. Matrices are column by column.
+enum class UniformType : std::uint8_t { Float, Vec2, Vec3, Vec4, Int, IVec2, IVec3, IVec4, Uint, Mat2, Mat3, Mat4 };
+struct UniformDecl {
+    std::string_view name;
+    UniformType type;
+    std::array<float, 16> initial{};
+};
+constexpr int components(UniformType t) {
+    constexpr int n[] = {1, 2, 3, 4, 1, 2, 3, 4, 1, 4, 9, 16};
+    return n[int(t)];
+}
+constexpr bool is_integer(UniformType t) { return t >= UniformType::Int && t <= UniformType::Uint; }
+// GLSL's name of the type, for messages.
+constexpr std::string_view glsl_name(UniformType t) {
+    constexpr std::string_view n[] = {"float", "vec2", "vec3", "vec4", "int", "ivec2", "ivec3", "ivec4", "uint", "mat2", "mat3", "mat4"};
+    return n[int(t)];
+}
+// Each uniform's value takes this many 32-bit words in Uniforms::user (a mat4's).
+inline constexpr int kUniformWords = 16;
+// Word i of a value: a float's bits, or a 32-bit integer (wrapping, as GLSL's uint(int)).
+constexpr std::uint32_t uniform_word(UniformType t, double value) {
+    if (is_integer(t)) return std::uint32_t(std::int64_t(value));
+    return std::bit_cast<std::uint32_t>(float(value));
+}
+// The words of a shader's uniforms at their initial values.
+template <std::size_t N>
+constexpr std::array<std::uint32_t, N * kUniformWords> initial_uniform_words(std::span<const UniformDecl, N> decls) {
+    std::array<std::uint32_t, N * kUniformWords> w{};
+    for (std::size_t u = 0; u < N; ++u) {
+        for (int i = 0; i < components(decls[u].type); ++i) {
+            w[u * kUniformWords + std::size_t(i)] = uniform_word(decls[u].type, double(decls[u].initial[std::size_t(i)]));
+        }
+    }
+    return w;
+}
 // Whether a shader samples any texture: `teximage` or a named sampler.
 constexpr bool samples_textures(const Needs& n) { return n.texture || !n.samplers[0].name.empty(); }
 
@@ -97,6 +138,14 @@ struct ShaderInfo {
     // only: quad derivatives on two registers shuffle far slower than they gain. Set from
     // quadshade-bench-batch-width, which times both for every shader.
     bool wide_batches = false;
+    // The GLSL version its sources are compiled as (the #version line the reference writes):
+    // 120, or 130 and later for integers, bit operations and the like; from 150 on the
+    // compatibility profile, which keeps gl_Vertex, gl_FragColor and the matrix uniforms.
+    // OSMesa's llvmpipe compiles up to 450, softpipe up to 330.
+    int glsl_version = 120;
+    // The uniforms the GLSL declares beyond the chapter's (time, teximage), in the order of
+    // Uniforms::user (with_uniforms).
+    std::span<const UniformDecl> uniforms = {};
 };
 
 // `info` with wide_batches set.
@@ -104,11 +153,24 @@ constexpr ShaderInfo with_wide_batches(ShaderInfo info) {
     info.wide_batches = true;
     return info;
 }
+// `info` with its own uniforms.
+constexpr ShaderInfo with_uniforms(ShaderInfo info, std::span<const UniformDecl> uniforms) {
+    info.uniforms = uniforms;
+    return info;
+}
+// `info` compiled as GLSL `version`.
+constexpr ShaderInfo with_glsl_version(ShaderInfo info, int version) {
+    info.glsl_version = version;
+    return info;
+}
 
 struct Uniforms {
     glm::mat4 model_view_projection{1.0f};
     float time = 0.0f;
     const glsl::sampler2D* teximage = nullptr;  // set when Needs::texture
+    // ShaderInfo::uniforms' values, kUniformWords 32-bit words each in their order: floats' bits
+    // or 32-bit integers. Read through glsl::uniform (glsl/uniform.h).
+    const std::uint32_t* user = nullptr;
     // Needs::samplers' textures, in their order, each of the kind the shader declares.
     std::array<const glsl::Texture*, kMaxSamplers> samplers{};
 
@@ -141,6 +203,9 @@ struct FragmentBatch {
 
 struct ColorBatch {
     alignas(64) float rgba[4][kBatchLanes];
+    // Bit i: lane i executed GLSL's discard. Its fragment writes neither colour nor depth; it
+    // was shaded to the end all the same, as a helper for its quad's derivatives. Always written.
+    std::uint32_t discarded = 0;
     // Per lane, the Undefined bits (number/checked.h) of its colour; written only when
     // ShadeMode::check_undefined.
     std::uint8_t undefined[kBatchLanes];

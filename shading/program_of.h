@@ -20,8 +20,9 @@
 // type, as a GPU compiler would make it, instead of calls passing vectors through memory (it
 // doubled the noise shaders' throughput). Only where a batch is one native register (AVX-512):
 // with narrower vectors a batch is a tuple of registers and flattening it makes compile times
-// explode (minutes per shader group) for little gain.
-#if defined(__AVX512F__)
+// explode (minutes per shader group) for little gain. A group of small shaders whose compile
+// time it barely touches defines QS_FLATTEN_ON_EVERY_TARGET before including this header.
+#if defined(__AVX512F__) || defined(QS_FLATTEN_ON_EVERY_TARGET)
 #define QS_FLATTEN [[gnu::flatten]]
 #else
 #define QS_FLATTEN
@@ -45,6 +46,18 @@ struct FragmentIn {
     F varying[kMaxVaryings];
     glsl::vec2<F> vec2_at(int i) const { return {varying[i], varying[i + 1]}; }
     glsl::vec3<F> vec3_at(int i) const { return {varying[i], varying[i + 1], varying[i + 2]}; }
+};
+
+// What a fragment stage that may discard returns (one that never does returns its colour).
+template <class F>
+struct FragmentOut {
+    glsl::vec4<F> gl_FragColor;
+    Bool<F> discarded = Bool<F>(false);
+
+    // if (c) discard;  The lanes of c write nothing. As in GL they keep running, as helpers for
+    // their neighbours' derivatives (in a loop, discard through the loop: Loop::discard_if), and
+    // the values they compute are those llvmpipe's derivatives see (discard_probe).
+    void discard_if(const Bool<F>& c) { discarded = discarded || c; }
 };
 
 namespace program_detail {
@@ -85,6 +98,22 @@ void store_pair(const F& v, float* a, float* b) {
     std::memcpy(b, both + kBatchLanes, kBatchLanes * sizeof(float));
 }
 
+// A fragment stage's colour and discarded lanes (bit i: lane i), whichever it returns.
+template <class F>
+const glsl::vec4<F>& color_of(const glsl::vec4<F>& c) { return c; }
+template <class F>
+const glsl::vec4<F>& color_of(const FragmentOut<F>& out) { return out.gl_FragColor; }
+template <class F>
+std::uint32_t discarded_of(const glsl::vec4<F>&) { return 0; }
+template <class F>
+std::uint32_t discarded_of(const FragmentOut<F>& out) {
+    if constexpr (is_checked_mask<Bool<F>>::value) {
+        return lane_bits(out.discarded.m);
+    } else {
+        return lane_bits(out.discarded);
+    }
+}
+
 template <class F>
 void store(const F& v, float* out) {
     if constexpr (is_dual2<F>::value) {
@@ -103,11 +132,14 @@ class ProgramOf final : public Program {
 public:
     const ShaderInfo& info() const override { return Shader::info; }
 
-    void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const override {
-        Shader::vertex(in, u, out);
+    void vertex(const VertexIn& in, const Uniforms& given, VertexOut& out) const override {
+        Uniforms scratch;
+        Shader::vertex(in, with_user_uniforms(given, scratch), out);
     }
 
-    void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const override {
+    void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& given, ColorBatch& out) const override {
+        Uniforms scratch;
+        const Uniforms& u = with_user_uniforms(given, scratch);
         if (mode.check_undefined) return shade_checked(mode, in, u, out);
         const bool dbl = mode.precision == Precision::Double;
         switch (mode.derivatives) {
@@ -132,8 +164,10 @@ public:
         }
     }
 
-    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
+    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& given,
                     ColorBatch& out_a, ColorBatch& out_b) const override {
+        Uniforms scratch;
+        const Uniforms& u = with_user_uniforms(given, scratch);
         static_assert(!Shader::info.wide_batches || !Shader::info.needs.derivatives,
                       "wide batches are per pixel: quads on two registers shuffle slower than they gain");
         if constexpr (kWidePairs && Shader::info.wide_batches) {
@@ -146,6 +180,18 @@ public:
     }
 
 private:
+    // The shader's own uniforms at their initial values, for callers that set none (tests and
+    // benchmarks drawing without a scene).
+    static constexpr std::size_t kUserUniforms = Shader::info.uniforms.size();
+    static constexpr std::array<std::uint32_t, kUserUniforms * kUniformWords> kInitialUniforms =
+        initial_uniform_words(std::span<const UniformDecl, kUserUniforms>(Shader::info.uniforms.data(), kUserUniforms));
+    static const Uniforms& with_user_uniforms(const Uniforms& given, Uniforms& scratch) {
+        if (kUserUniforms == 0 || given.user) return given;
+        scratch = given;
+        scratch.user = kInitialUniforms.data();
+        return scratch;
+    }
+
     // The same shader over Checked numbers: colours as above, and each lane's undefined cases.
     static void shade_checked(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         if (mode.precision == Precision::Double || mode.derivatives == Derivatives::Analytic) {
@@ -172,8 +218,10 @@ private:
 
     template <class F>
     QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
-        const glsl::vec4<F> c = fragment<F>(in, u);
+        const auto result = fragment<F>(in, u);
+        const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
+        out.discarded = program_detail::discarded_of(result);
     }
 
     template <class F>
@@ -183,22 +231,28 @@ private:
         FragmentIn<F> f;
         for (int k = 0; k < 4; ++k) f.gl_FragCoord[k] = load_pair<F>(a.frag_coord[k], b.frag_coord[k]);
         for (int v = 0; v < Shader::info.needs.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
-        const glsl::vec4<F> c = Shader::template fragment<F>(f, u);
+        const auto result = Shader::template fragment<F>(f, u);
+        const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) program_detail::store_pair(c[k], out_a.rgba[k], out_b.rgba[k]);
+        const std::uint64_t discarded = program_detail::discarded_of(result);
+        out_a.discarded = std::uint32_t(discarded & 0xFFFFu);
+        out_b.discarded = std::uint32_t(discarded >> kBatchLanes);
     }
 
     // Not flattened: a debugging mode, and flattening the checks would multiply compile time.
     template <class F>
     static void run_checked(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
-        const glsl::vec4<F> c = fragment<F>(in, u);
+        const auto result = fragment<F>(in, u);
+        const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) c[k].store(out.rgba[k]);
+        out.discarded = program_detail::discarded_of(result);
         const LaneCases cases = c[0].cases | c[1].cases | c[2].cases | c[3].cases;
         for (int i = 0; i < kBatchLanes; ++i) out.undefined[i] = cases.at(i);
     }
 
-    // The shader's inputs in number type F, and its output colour.
+    // The shader's inputs in number type F, and its output: a colour or a FragmentOut.
     template <class F>
-    static glsl::vec4<F> fragment(const FragmentBatch& in, const Uniforms& u) {
+    static auto fragment(const FragmentBatch& in, const Uniforms& u) {
         using program_detail::load;
         FragmentIn<F> f;
         if constexpr (is_dual2<F>::value) {

@@ -1,14 +1,18 @@
 #pragma once
-// Checked<L>: a lane type L (Pixels or Quads of float) whose values also carry, per lane, the
-// GLSL cases with undefined results that they depend on. It is the number type of the
+// Checked<L>: a lane type L (Pixels or Quads of float, or their integers, number/integer.h) whose
+// values also carry, per lane, the GLSL cases with undefined results that they depend on. It is the number type of the
 // undefined-case mask (`quadshade render --undefined-mask`). The cases:
 //   NaN             an operation returned NaN from operands that were not NaN (0 / 0, inf - inf,
 //                   0 * inf, sqrt(-1), a derivative across a helper lane's inf, ...), or a NaN
 //                   came in from outside the fragment shader (a varying, a texel);
-//   DivisionByZero  x / 0, and so mod(x, 0), which GLSL defines through x / y;
+//   DivisionByZero  x / 0, and so mod(x, 0), which GLSL defines through x / y; integer x / 0
+//                   and x % 0;
 //   Argument        a built-in outside the domain where GLSL defines it: smoothstep(e0, e1, x)
 //                   with e0 >= e1, clamp(x, lo, hi) with lo > hi, sqrt(x < 0), inversesqrt(x <= 0),
-//                   log and log2 (x <= 0), pow(x < 0, y) and pow(0, y <= 0), atan(0, 0).
+//                   log and log2 (x <= 0), pow(x < 0, y) and pow(0, y <= 0), atan(0, 0),
+//                   asin and acos (|x| > 1); and integer operations GLSL leaves undefined: int(x)
+//                   and uint(x) of a float outside the integer's range, NaN or (uint) negative,
+//                   shifts by a count < 0 or >= 32, % with a negative operand.
 //
 // Every operation computes exactly what L computes, so a checked render has the unchecked
 // colours bit for bit. The cases flow with the data, not with control: a result carries the
@@ -84,26 +88,50 @@ std::uint32_t lane_bits(const M& m) {
     return bits;
 }
 
-// A comparison's mask with the cases of the values compared.
-template <class L>
+// A comparison's mask with the cases of the values compared. M is the unchecked mask, the same
+// for float and integer lanes of the same fragments.
+template <class M>
 struct CheckedMask {
-    typename L::Mask m;
+    M m;
     LaneCases cases;
+
+    CheckedMask() = default;
+    CheckedMask(const M& mask, LaneCases c) : m(mask), cases(c) {}
+    CheckedMask(bool b) : m(b) {}  // NOLINT: GLSL's true and false
 
     friend CheckedMask operator&&(const CheckedMask& a, const CheckedMask& b) { return {a.m && b.m, a.cases | b.cases}; }
     friend CheckedMask operator||(const CheckedMask& a, const CheckedMask& b) { return {a.m || b.m, a.cases | b.cases}; }
     friend CheckedMask operator!(const CheckedMask& a) { return {!a.m, a.cases}; }
+    // GLSL's == and != of bools; a ^^ b is a != b.
+    friend CheckedMask operator==(const CheckedMask& a, const CheckedMask& b) { return {a.m == b.m, a.cases | b.cases}; }
+    friend CheckedMask operator!=(const CheckedMask& a, const CheckedMask& b) { return {a.m != b.m, a.cases | b.cases}; }
+    friend CheckedMask select(const CheckedMask& s, const CheckedMask& a, const CheckedMask& b) {
+        return (s && a) || (!s && b);
+    }
     friend bool any(const CheckedMask& a) { return any(a.m); }
     friend bool all(const CheckedMask& a) { return all(a.m); }
     friend bool lane(const CheckedMask& a, int i) { return a.m[i]; }
 };
 
+namespace checked_detail {
+template <class L>
+struct layout_of {
+    using type = void;  // integer lanes: no derivatives
+};
+template <class L>
+    requires requires { typename L::layout; }
+struct layout_of<L> {
+    using type = typename L::layout;
+};
+}  // namespace checked_detail
+
 template <class L>
 class Checked {
 public:
     using value_type = typename L::value_type;
-    using layout = typename L::layout;
-    using Mask = CheckedMask<L>;
+    using layout = typename checked_detail::layout_of<L>::type;
+    using Mask = CheckedMask<typename L::Mask>;
+    static constexpr bool is_integer = std::is_integral_v<value_type>;
     static constexpr int size = L::size;
     static_assert(size <= LaneCases::kMaxLanes, "LaneCases holds 16 lanes");
 
@@ -116,11 +144,23 @@ public:
         requires(std::is_arithmetic_v<S> && !std::is_same_v<S, value_type>)
     Checked(S x) : v(x) {}  // NOLINT
     Checked(const L& value, LaneCases c) : v(value), cases(c) {}
+    // GLSL's conversions between float and integer lanes (int(x), uint(x), float(i), int(u)):
+    // the value as L converts it, with the cases carried, and a float GLSL cannot convert (out
+    // of the integer's range after truncation, NaN, negative for uint) flagged as Argument.
+    template <class L2>
+        requires(!std::is_same_v<L2, L> && std::is_constructible_v<L, const L2&>)
+    explicit Checked(const Checked<L2>& o) : v(o.v), cases(o.cases | unconvertible(o.v)) {}
+    // float(b), int(b): 1 or 0.
+    explicit Checked(const Mask& m) : v(m.m), cases(m.cases) {}
 
     // Values from outside the shader (varyings, texels): a NaN among them is flagged on entry.
     static Checked load(const value_type* p) {
         const L x = L::load(p);
-        return {x, LaneCases::on(lane_bits(isnan(x)), Undefined::NaN)};
+        if constexpr (is_integer) {
+            return {x, LaneCases()};
+        } else {
+            return {x, LaneCases::on(lane_bits(isnan(x)), Undefined::NaN)};
+        }
     }
     void store(value_type* p) const { v.store(p); }
     value_type operator[](int i) const { return v[i]; }
@@ -135,8 +175,10 @@ public:
     template <class... Operands>
     static Checked result(const L& r, LaneCases hit, const Operands&... operands) {
         LaneCases c = (hit | ... | operands.cases);
-        const auto nan = isnan(r);
-        if (any(nan)) c |= LaneCases::on(lane_bits((nan && ... && !isnan(operands.v))), Undefined::NaN);
+        if constexpr (!is_integer) {
+            const auto nan = isnan(r);
+            if (any(nan)) c |= LaneCases::on(lane_bits((nan && ... && !isnan(operands.v))), Undefined::NaN);
+        }
         return {r, c};
     }
     // A built-in GLSL leaves undefined where `outside` holds, r computed as L computes it.
@@ -150,8 +192,37 @@ public:
     friend Checked operator-(const Checked& a, const Checked& b) { return result(a.v - b.v, {}, a, b); }
     friend Checked operator*(const Checked& a, const Checked& b) { return result(a.v * b.v, {}, a, b); }
     friend Checked operator/(const Checked& a, const Checked& b) {
-        return result(a.v / b.v, LaneCases::on(lane_bits(b.v == L(0.0f)), Undefined::DivisionByZero), a, b);
+        return result(a.v / b.v, LaneCases::on(lane_bits(b.v == L(0)), Undefined::DivisionByZero), a, b);
     }
+    // Integer lanes only. GLSL: x % 0 undefined (as x / 0), % undefined for negative operands,
+    // shifts undefined by counts < 0 or >= 32.
+    friend Checked operator%(const Checked& a, const Checked& b)
+        requires is_integer
+    {
+        LaneCases hit = LaneCases::on(lane_bits(b.v == L(0)), Undefined::DivisionByZero);
+        if constexpr (std::is_signed_v<value_type>) hit |= LaneCases::on(lane_bits(a.v < L(0) || b.v < L(0)), Undefined::Argument);
+        return result(a.v % b.v, hit, a, b);
+    }
+    friend Checked operator&(const Checked& a, const Checked& b) requires is_integer { return result(a.v & b.v, {}, a, b); }
+    friend Checked operator|(const Checked& a, const Checked& b) requires is_integer { return result(a.v | b.v, {}, a, b); }
+    friend Checked operator^(const Checked& a, const Checked& b) requires is_integer { return result(a.v ^ b.v, {}, a, b); }
+    friend Checked operator~(const Checked& a) requires is_integer { return {~a.v, a.cases}; }
+    template <class L2>
+    friend Checked operator<<(const Checked& a, const Checked<L2>& n) requires is_integer {
+        return result(a.v << n.v, bad_count(n.v), a, n);
+    }
+    template <class L2>
+    friend Checked operator>>(const Checked& a, const Checked<L2>& n) requires is_integer {
+        return result(a.v >> n.v, bad_count(n.v), a, n);
+    }
+    friend Checked operator<<(const Checked& a, int n) requires is_integer { return a << Checked(n); }
+    friend Checked operator>>(const Checked& a, int n) requires is_integer { return a >> Checked(n); }
+    Checked& operator%=(const Checked& b) requires is_integer { return *this = *this % b; }
+    Checked& operator&=(const Checked& b) requires is_integer { return *this = *this & b; }
+    Checked& operator|=(const Checked& b) requires is_integer { return *this = *this | b; }
+    Checked& operator^=(const Checked& b) requires is_integer { return *this = *this ^ b; }
+    Checked& operator<<=(int n) requires is_integer { return *this = *this << n; }
+    Checked& operator>>=(int n) requires is_integer { return *this = *this >> n; }
     Checked& operator+=(const Checked& b) { return *this = *this + b; }
     Checked& operator-=(const Checked& b) { return *this = *this - b; }
     Checked& operator*=(const Checked& b) { return *this = *this * b; }
@@ -180,6 +251,7 @@ public:
     friend Checked floor(const Checked& a) { return result(floor(a.v), {}, a); }
     friend Checked ceil(const Checked& a) { return result(ceil(a.v), {}, a); }
     friend Checked trunc(const Checked& a) { return result(trunc(a.v), {}, a); }
+    friend Checked roundEven(const Checked& a) { return result(roundEven(a.v), {}, a); }
     friend Checked abs(const Checked& a) { return result(abs(a.v), {}, a); }
     friend Checked sin(const Checked& a) { return result(sin(a.v), {}, a); }
     friend Checked cos(const Checked& a) { return result(cos(a.v), {}, a); }
@@ -190,6 +262,9 @@ public:
     // GLSL: undefined if x < 0 (sqrt), x <= 0 (log, log2), x < 0 or x = 0 and y <= 0 (pow),
     // x = y = 0 (atan(y, x)).
     friend Checked sqrt(const Checked& a) { return builtin(sqrt(a.v), a < Checked(0.0f), a); }
+    // GLSL: asin and acos undefined for |x| > 1.
+    friend Checked asin(const Checked& a) { return builtin(asin(a.v), abs(a) > Checked(1.0f), a); }
+    friend Checked acos(const Checked& a) { return builtin(acos(a.v), abs(a) > Checked(1.0f), a); }
     friend Checked log(const Checked& a) { return builtin(log(a.v), a <= Checked(0.0f), a); }
     friend Checked log2(const Checked& a) { return builtin(log2(a.v), a <= Checked(0.0f), a); }
     friend Checked pow(const Checked& a, const Checked& b) {
@@ -201,6 +276,26 @@ public:
 
     friend constexpr int lane_count(const Checked&) { return size; }
     friend value_type lane(const Checked& a, int i) { return a.v[i]; }
+
+private:
+    // The lanes of a shift count GLSL leaves undefined.
+    template <class N>
+    static LaneCases bad_count(const N& n) {
+        const auto bad = std::is_signed_v<typename N::value_type> ? (n < N(0) || n > N(31)) : n > N(31);
+        return LaneCases::on(lane_bits(bad), Undefined::Argument);
+    }
+    // The lanes of x that int(x) or uint(x) (L's type) leaves undefined; none for other conversions.
+    template <class L2>
+    static LaneCases unconvertible(const L2& x) {
+        if constexpr (is_integer && std::is_floating_point_v<typename L2::value_type>) {
+            using S = typename L2::value_type;
+            const auto defined = std::is_signed_v<value_type> ? (x > L2(S(-2147483649.0)) && x < L2(S(2147483648.0)))
+                                                              : (x >= L2(S(0.0)) && x < L2(S(4294967296.0)));
+            return LaneCases::on(lane_bits(!defined), Undefined::Argument);
+        } else {
+            return {};
+        }
+    }
 };
 
 }  // namespace qs

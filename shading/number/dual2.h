@@ -23,6 +23,13 @@ struct Dual2 {
         requires(std::is_arithmetic_v<S> && !std::is_same_v<S, T>)
     Dual2(S v) : Dual2(T(v)) {}  // NOLINT
     Dual2(T v, T ddx, T ddy) : val(v), dx(ddx), dy(ddy) {}
+    // float(i) and float(b) (integers, number/integer.h, and masks of T): constants.
+    template <class I>
+        requires std::is_same_v<typename I::float_type, T>
+    explicit Dual2(const I& i) : Dual2(T(i)) {}
+    template <class M>
+        requires(std::is_same_v<M, decltype(T() < T())> && !std::is_arithmetic_v<M>)
+    explicit Dual2(const M& m) : Dual2(T(m)) {}
 
     // d(-u) = -du
     friend Dual2 operator-(const Dual2& a) { return {-a.val, -a.dx, -a.dy}; }
@@ -76,6 +83,7 @@ struct Dual2 {
     friend Dual2 floor(const Dual2& a) { return Dual2(floor(a.val)); }
     friend Dual2 ceil(const Dual2& a) { return Dual2(ceil(a.val)); }
     friend Dual2 trunc(const Dual2& a) { return Dual2(trunc(a.val)); }
+    friend Dual2 roundEven(const Dual2& a) { return Dual2(roundEven(a.val)); }
     // d|u| = sign(u) du (zero derivative at u = 0, the subgradient's midpoint)
     friend Dual2 abs(const Dual2& a) {
         T s = select(a.val > T(0.0f), T(1.0f), select(a.val < T(0.0f), T(-1.0f), T(0.0f)));
@@ -94,8 +102,16 @@ struct Dual2 {
         T t = tan(a.val);
         return chain(t, T(1.0f) + t * t, a);
     }
+    // d asin(u) = du / sqrt(1 - u^2), d acos(u) = -du / sqrt(1 - u^2)
+    friend Dual2 asin(const Dual2& a) { return chain(asin(a.val), T(1.0f) / sqrt(T(1.0f) - a.val * a.val), a); }
+    friend Dual2 acos(const Dual2& a) { return chain(acos(a.val), T(-1.0f) / sqrt(T(1.0f) - a.val * a.val), a); }
     // d atan(u) = du / (1 + u^2)
     friend Dual2 atan(const Dual2& a) { return chain(atan(a.val), T(1.0f) / (T(1.0f) + a.val * a.val), a); }
+    // d atan(y, x) = (x dy - y dx) / (x^2 + y^2)
+    friend Dual2 atan(const Dual2& y, const Dual2& x) {
+        const T q = x.val * x.val + y.val * y.val;
+        return {atan(y.val, x.val), (x.val * y.dx - y.val * x.dx) / q, (x.val * y.dy - y.val * x.dy) / q};
+    }
     // d exp(u) = exp(u) du, d exp2(u) = ln2 exp2(u) du
     friend Dual2 exp(const Dual2& a) {
         T e = exp(a.val);

@@ -57,6 +57,12 @@ public:
         requires(std::is_arithmetic_v<S> && !std::is_same_v<S, T>)
     Lanes(S x) : v(static_cast<T>(x)) {}  // NOLINT
     explicit Lanes(const Simd& s) : v(s) {}
+    // GLSL float(i) of the integers of these lanes (number/integer.h), rounded to nearest.
+    template <class I>
+        requires std::is_same_v<typename I::float_type, Lanes>
+    explicit Lanes(const I& i) : v(i.template to_simd<T>()) {}
+    // GLSL float(b): 1 or 0.
+    explicit Lanes(const Mask& m) : v(T(0)) { stdx::where(m, v) = T(1); }
 
     static Lanes load(const T* p) {
         Lanes r;
@@ -115,11 +121,15 @@ public:
     friend Lanes floor(const Lanes& a) { return Lanes(stdx::floor(a.v)); }
     friend Lanes ceil(const Lanes& a) { return Lanes(stdx::ceil(a.v)); }
     friend Lanes trunc(const Lanes& a) { return Lanes(stdx::trunc(a.v)); }
+    // To nearest, halves to even: the rounding mode shading threads never change.
+    friend Lanes roundEven(const Lanes& a) { return Lanes(stdx::nearbyint(a.v)); }
     friend Lanes abs(const Lanes& a) { return Lanes(stdx::abs(a.v)); }
     friend Lanes sqrt(const Lanes& a) { return Lanes(stdx::sqrt(a.v)); }
     friend Lanes sin(const Lanes& a) { return Lanes(stdx::sin(a.v)); }
     friend Lanes cos(const Lanes& a) { return Lanes(stdx::cos(a.v)); }
     friend Lanes tan(const Lanes& a) { return Lanes(stdx::tan(a.v)); }
+    friend Lanes asin(const Lanes& a) { return Lanes(stdx::asin(a.v)); }
+    friend Lanes acos(const Lanes& a) { return Lanes(stdx::acos(a.v)); }
     friend Lanes atan(const Lanes& a) { return Lanes(stdx::atan(a.v)); }
     friend Lanes atan(const Lanes& y, const Lanes& x) { return Lanes(stdx::atan2(y.v, x.v)); }
     friend Lanes exp(const Lanes& a) { return Lanes(stdx::exp(a.v)); }
@@ -134,6 +144,12 @@ public:
 
 template <class T, class Abi>
 bool lane(const stdx::simd_mask<T, Abi>& m, int i) { return m[i]; }
+// GLSL bools are masks: selecting between two of them.
+template <class T, class Abi>
+stdx::simd_mask<T, Abi> select(const stdx::simd_mask<T, Abi>& m, const stdx::simd_mask<T, Abi>& a,
+                               const stdx::simd_mask<T, Abi>& b) {
+    return (m && a) || (!m && b);
+}
 template <class T, class Abi>
 bool any(const stdx::simd_mask<T, Abi>& m) { return stdx::any_of(m); }
 template <class T, class Abi>

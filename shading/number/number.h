@@ -6,6 +6,7 @@
 
 #include "shading/number/checked.h"
 #include "shading/number/dual2.h"
+#include "shading/number/integer.h"
 #include "shading/number/lanes.h"
 #include "shading/number/scalar.h"
 
@@ -28,13 +29,14 @@ inline constexpr bool is_checked_v = is_checked<F>::value;
 
 // A Number stands where GLSL has `float`.
 template <class F>
-concept Number = std::is_floating_point_v<F> || is_lanes<F>::value || is_dual2<F>::value || is_checked_v<F>;
+concept Number = std::is_floating_point_v<F> || is_lanes<F>::value || is_dual2<F>::value ||
+                 (is_checked_v<F> && std::is_floating_point_v<typename F::value_type>);
 
 // How many values one F holds (1 for float, double and Dual2 of them).
 template <class F>
 constexpr int lanes_of() {
     if constexpr (is_dual2<F>::value) return lanes_of<typename F::value_type>();
-    else if constexpr (is_lanes<F>::value || is_checked_v<F>) return F::size;
+    else if constexpr (is_lanes<F>::value || is_checked_v<F> || is_integer_lanes<F>::value) return F::size;
     else return 1;
 }
 
@@ -45,6 +47,17 @@ concept QuadNumber = requires { F::layout::rule; };
 // The mask a comparison of two F yields.
 template <Number F>
 using mask_t = decltype(F() < F());
+// GLSL's bool where F (a Number or an IntegerNumber) stands for float or int: a mask of lanes.
+template <class F>
+using Bool = decltype(F() < F());
+
+template <class M>
+struct is_checked_mask : std::false_type {};
+template <class M>
+struct is_checked_mask<CheckedMask<M>> : std::true_type {};
+// A Boolean stands where GLSL has bool: a mask of lanes (bool for one lane).
+template <class M>
+concept Boolean = std::is_same_v<M, bool> || stdx::is_simd_mask_v<M> || is_checked_mask<M>::value;
 
 // Whether dFdx/dFdy exist on F: quads (lane differences) and Dual2 (carried partials).
 template <class F>

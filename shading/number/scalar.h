@@ -24,6 +24,8 @@ std::common_type_t<A, B> pow(A a, B b) { return std::pow(std::common_type_t<A, B
 template <std::floating_point A, std::floating_point B>
 std::common_type_t<A, B> atan(A y, B x) { return std::atan2(std::common_type_t<A, B>(y), std::common_type_t<A, B>(x)); }
 
+inline bool select(bool m, bool a, bool b) { return m ? a : b; }
+
 inline bool isnan(float a) { return std::isnan(a); }
 inline bool isnan(double a) { return std::isnan(a); }
 inline bool isinf(float a) { return std::isinf(a); }
@@ -36,11 +38,14 @@ inline bool isinf(double a) { return std::isinf(a); }
 QS_SCALAR_UNARY(floor, std::floor)
 QS_SCALAR_UNARY(ceil, std::ceil)
 QS_SCALAR_UNARY(trunc, std::trunc)
+QS_SCALAR_UNARY(roundEven, std::nearbyint)  // to nearest, halves to even (the default mode)
 QS_SCALAR_UNARY(abs, std::fabs)
 QS_SCALAR_UNARY(sqrt, std::sqrt)
 QS_SCALAR_UNARY(sin, std::sin)
 QS_SCALAR_UNARY(cos, std::cos)
 QS_SCALAR_UNARY(tan, std::tan)
+QS_SCALAR_UNARY(asin, std::asin)
+QS_SCALAR_UNARY(acos, std::acos)
 QS_SCALAR_UNARY(atan, std::atan)
 QS_SCALAR_UNARY(exp, std::exp)
 QS_SCALAR_UNARY(log, std::log)

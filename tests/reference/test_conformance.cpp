@@ -120,7 +120,7 @@ void check_scene(const SceneCase& sc) {
     csv << "scene,shader,driver,width,height,covered,coverage_mismatch,over_1,over_2,max_steps\n";
     Counts total;
     for (const std::string& shader : shaders()) {
-        const Image ref = GlSceneRenderer(reference_scene, {width, height, {}, shader}, *context, QUADSHADE_GLSL_DIR).render();
+        const Image ref = GlSceneRenderer(reference_scene, {width, height, {}, shader, {}}, *context, QUADSHADE_GLSL_DIR).render();
         Scene scene = load_scene(file);
         FrameRequest r;
         r.width = width, r.height = height;
@@ -165,7 +165,7 @@ TEST_CASE("every conformance scene's st is llvmpipe's bit for bit: clipped, back
         Scene reference_scene = load_scene(file), scene = load_scene(file);
         auto context = create_osmesa_context(scene.width, scene.height, kDriver, 0);
         const Image ref =
-            GlSceneRenderer(reference_scene, {scene.width, scene.height, {}, "pattern_s"}, *context, QUADSHADE_GLSL_DIR).render();
+            GlSceneRenderer(reference_scene, {scene.width, scene.height, {}, "pattern_s", {}}, *context, QUADSHADE_GLSL_DIR).render();
         FrameRequest r;
         r.shader_override = "pattern_s";
         r.raster = raster_options_as(kDriver);

@@ -87,12 +87,14 @@ std::filesystem::path work_dir() {
     return dir;
 }
 
-Image reference(const Case& c, const std::string& driver, int width, int height) {
+// `options`: more of quadshade-reference's options (--uniform ...); the case's name must tell
+// renders with different options apart.
+Image reference(const Case& c, const std::string& driver, int width, int height, const std::string& options = "") {
     const auto out = work_dir() / (c.name + "." + driver + "." + std::to_string(width) + "x" + std::to_string(height) + ".exr");
     if (!std::filesystem::exists(out)) {
         std::string cmd = (kBin / "quadshade-reference").string() + " " + c.scene.string() + " -o " + out.string() +
                           " --glsl " + QUADSHADE_GLSL_DIR + " --driver " + driver + " --size " + std::to_string(width) +
-                          "x" + std::to_string(height);
+                          "x" + std::to_string(height) + " " + options;
         if (!c.shader.empty()) cmd += " --shader " + c.shader;
         cmd += " 2> /dev/null";
         if (std::system(cmd.c_str()) != 0) throw std::runtime_error("reference render failed: " + cmd);
@@ -101,10 +103,11 @@ Image reference(const Case& c, const std::string& driver, int width, int height)
 }
 
 // quadshade set up as the driver whose rule this is (comparison.h).
-Framebuffer ours(const Case& c, Derivatives rule, int width, int height) {
+Framebuffer ours(const Case& c, Derivatives rule, int width, int height, std::vector<UniformSetting> uniforms = {}) {
     Scene scene = load_scene(c.scene);
     FrameRequest r;
     r.width = width, r.height = height;
+    r.uniforms = std::move(uniforms);
     r.shader_override = c.shader;
     r.raster = raster_options_as(rule == Derivatives::CoarseLower ? GlDriver::Softpipe : GlDriver::Llvmpipe);
     return render_frame(scene, r);
@@ -381,6 +384,231 @@ TEST_CASE("quadshade-reference: bad usage exits 2, bad input 1, naming what is w
     CHECK(!std::filesystem::exists(dir / "x.exr"));
     CHECK(run(scene + out + glsl + " --size 8x8").first == 0);
     CHECK(std::filesystem::exists(dir / "x.exr"));
+}
+
+}  // namespace qs
+
+// ---- the GLSL vocabulary beyond the chapter (shading/shaders/vocabulary_probes.h) --------------
+#include <bit>
+#include <cstdint>
+
+#include "tests/discard_scene.h"
+
+namespace qs {
+
+namespace {
+
+// A probe's integer result from its two 16-bit halves (channels `first`, `first + 1`).
+std::uint32_t halves(const float* px, int first) {
+    return std::uint32_t(px[first]) << 16 | std::uint32_t(px[first + 1]);
+}
+
+// Bit-exact comparison of quadshade with a driver over a probe, channel by channel, printing the
+// first difference.
+std::size_t differing_values(const Framebuffer& q, const Image& ref, int channel_mask = 0xF) {
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < q.rgba.size(); ++i) {
+        if (!(channel_mask >> (i % 4) & 1)) continue;
+        const float a = q.rgba[i], b = ref.rgba[i];
+        if (std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b) || (std::isnan(a) && std::isnan(b)) || a == b) continue;
+        if (differ++ == 0) {
+            const std::size_t p = i / 4;
+            std::printf("  first difference at pixel (%zu, %zu) channel %zu: quadshade %.9g, driver %.9g\n",
+                        p % std::size_t(q.width), p / std::size_t(q.width), i % 4, double(a), double(b));
+        }
+    }
+    return differ;
+}
+
+}  // namespace
+
+TEST_CASE("integer probe: int and uint arithmetic, bit operations, shifts, conversions bit for bit as Mesa", "[reference][integers]") {
+    const Case probe{"integer_probe", kPlane, "integer_probe", 64, 32};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 64, 32);
+    CHECK(differing_values(q, reference(probe, "llvmpipe", 64, 32)) == 0);
+    CHECK(differing_values(q, reference(probe, "softpipe", 64, 32)) == 0);
+}
+
+TEST_CASE("integer cases GLSL leaves undefined: division by zero, shifts by >= 32, conversions out of range as llvmpipe",
+          "[reference][integers][undefined]") {
+    const Case probe{"integer_undefined_probe", kPlane, "integer_undefined_probe", 14, 1};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 14, 1);
+    const Image lp = reference(probe, "llvmpipe", 14, 1);
+    const char* names[14][2] = {{"7 / 0", "7u / 0u"},           {"7 % 0", "7u % 0u"},
+                                {"-7 % 3", "7 % -3"},           {"INT_MIN / -1", "INT_MIN % -1"},
+                                {"5 << 33", "5u >> 33u"},       {"-5 >> 32", "5u << 32u"},
+                                {"5 << -1", "5u >> 0xFFFFFFFFu"}, {"int(-1.5)", "uint(-1.0)"},
+                                {"int(3e9)", "uint(5e9)"},      {"int(-3e9)", "uint(-3e9)"},
+                                {"int(NaN)", "uint(NaN)"},      {"int(+inf)", "uint(+inf)"},
+                                {"int(-inf)", "uint(-inf)"},    {"int(2147483520.0)", "uint(4294967040.0)"}};
+    // llvmpipe's float-to-uint conversion is the host's: on AVX2 hosts (measured here) LLVM's
+    // two-conversion sequence, which quadshade reproduces; AVX-512 has vcvttps2udq, which answers
+    // 0xFFFFFFFF out of range. There only the in-range columns are compared.
+    const bool avx512 = __builtin_cpu_supports("avx512f");
+    for (int x = 0; x < 14; ++x) {
+        const float* a = q.pixel(x, 0);
+        const float* b = &lp.rgba[std::size_t(x) * 4];
+        const std::uint32_t qr = halves(a, 0), qs = halves(a, 2), lr = halves(b, 0), ls = halves(b, 2);
+        std::printf("undefined integers: %-18s quadshade 0x%08x llvmpipe 0x%08x | %-20s quadshade 0x%08x llvmpipe 0x%08x\n",
+                    names[x][0], qr, lr, names[x][1], qs, ls);
+        INFO(names[x][0] << ", " << names[x][1]);
+        CHECK(qr == lr);
+        if (!avx512 || x < 7 || x == 13) CHECK(qs == ls);
+    }
+}
+
+TEST_CASE("bool probe: && || ^^ ! of bools, bvec comparisons, any, all, not, mix as Mesa", "[reference][booleans]") {
+    const Case probe{"bool_probe", kPlane, "bool_probe", 32, 24};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 32, 24);
+    CHECK(differing_values(q, reference(probe, "llvmpipe", 32, 24)) == 0);
+    CHECK(differing_values(q, reference(probe, "softpipe", 32, 24)) == 0);
+}
+
+TEST_CASE("loop probe: break, continue, return from a loop, while, nested loops bit for bit as Mesa", "[reference][loops]") {
+    const Case probe{"loop_probe", kPlane, "loop_probe", 64, 32};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 64, 32);
+    CHECK(differing_values(q, reference(probe, "llvmpipe", 64, 32)) == 0);
+    CHECK(differing_values(q, reference(probe, "softpipe", 64, 32)) == 0);
+}
+
+TEST_CASE("matrix probe: constructors, products of every shape, transpose, inverse, determinant bit for bit as Mesa",
+          "[reference][matrices]") {
+    const Case probe{"matrix_probe", kPlane, "matrix_probe", 64, 16};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 64, 16);
+    CHECK(differing_values(q, reference(probe, "llvmpipe", 64, 16)) == 0);
+    CHECK(differing_values(q, reference(probe, "softpipe", 64, 16)) == 0);
+}
+
+TEST_CASE("built-ins probe: exact built-ins bit for bit as llvmpipe, rounded and approximated ones within bounds",
+          "[reference][builtins]") {
+    const Case probe{"builtins_probe", kPlane, "builtins_probe", 64, 16};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 64, 16);
+    const Image lp = reference(probe, "llvmpipe", 64, 16);
+    std::size_t exact_differ = 0;
+    double refract_worst = 0.0, worst[4] = {};
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const float* a = q.pixel(x, y);
+            const float* b = &lp.rgba[(std::size_t(y) * 64 + std::size_t(x)) * 4];
+            for (int c = 0; c < 4; ++c) {
+                const double d = std::abs(double(a[c]) - double(b[c])) / std::max(1.0, std::abs(double(b[c])));
+                if (x == 31 && y == 8 && c == 3) {  // atan(0, 0): GLSL leaves it undefined
+                    std::printf("built-ins: atan(0, 0) quadshade %g, llvmpipe %g\n", double(a[c]), double(b[c]));
+                } else if (x % 8 == 7) {  // asin, acos, tan, atan: Mesa evaluates polynomials
+                    worst[c] = std::max(worst[c], d);
+                } else if (x % 8 == 3 && c < 3) {  // refract: a square root and three roundings after it
+                    refract_worst = std::max(refract_worst, d);
+                } else if (!(a[c] == b[c] || (std::isnan(a[c]) && std::isnan(b[c])))) {
+                    if (exact_differ++ == 0) std::printf("  first difference at (%d, %d) channel %d: %.9g vs %.9g\n", x, y, c, double(a[c]), double(b[c]));
+                }
+            }
+        }
+    }
+    std::printf("built-ins vs llvmpipe: refract %.3g; asin %.3g, acos %.3g, tan %.3g, atan %.3g (largest difference, relative above 1)\n",
+                refract_worst, worst[0], worst[1], worst[2], worst[3]);
+    CHECK(exact_differ == 0);
+    CHECK(refract_worst < 1e-6);
+    // Mesa evaluates asin and acos as polynomials (builtin_functions.cpp, asin_expr), tan as
+    // sin / cos and atan with its own approximations. Bounds from what was measured on Mesa
+    // 22.3.6, with room for another host's llvmpipe: see the README.
+    CHECK(worst[0] < 4e-4);
+    CHECK(worst[1] < 2e-4);
+    CHECK(worst[2] < 1e-5);
+    CHECK(worst[3] < 1e-5);
+}
+
+TEST_CASE("discard probe: discarded fragments write nothing; derivatives after discard as llvmpipe", "[reference][discard]") {
+    // 17x15: quads stick out of the image, so helper lanes discard too.
+    const Case probe{"discard_probe", kPlane, "discard_probe", 17, 15};
+    const Framebuffer q = ours(probe, Derivatives::Fine, 17, 15);
+    const Image lp = reference(probe, "llvmpipe", 17, 15);
+    std::size_t cleared = 0;
+    for (std::size_t p = 0; p < q.rgba.size(); p += 4) cleared += lp.rgba[p + 3] == 1.0f && lp.rgba[p] == 0.0f && lp.rgba[p + 1] == 0.0f;
+    std::printf("discard probe: %zu of %d pixels discarded by llvmpipe\n", cleared, 17 * 15);
+    CHECK(cleared > 17 * 15 / 5);
+    // Red and green: derivatives of a value computed after an earlier discard, for which the
+    // discarded fragments ran on as helpers. Exact.
+    CHECK(differing_values(q, lp, 0x3) == 0);
+    // Blue and alpha: derivatives of a loop variable that some fragments of the quad left by
+    // discarding inside the loop (GLSL: undefined, derivatives in non-uniform control flow).
+    const std::size_t loop_differ = differing_values(q, lp, 0xC);
+    std::printf("discard probe: %zu values differ from llvmpipe after a discard inside a loop\n", loop_differ);
+    CHECK(loop_differ == 0);
+}
+
+TEST_CASE("discard under depth testing: discarded fragments write no depth, in either drawing order, as llvmpipe",
+          "[reference][discard][depth]") {
+    for (bool front_first : {true, false}) {
+        Scene s = test::discard_scene(front_first, 63, 47);
+        const auto file = work_dir() / (front_first ? "discard-front-first.gltf" : "discard-back-first.gltf");
+        test::copy_textures_into(s, work_dir());
+        save_scene(s, file);
+        const Case c{front_first ? "discard-front-first" : "discard-back-first", file, "", 63, 47};
+        const Framebuffer q = ours(c, Derivatives::Fine, 63, 47);
+        const Image lp = reference(c, "llvmpipe", 63, 47);
+        INFO((front_first ? "front first" : "back first"));
+        CHECK(differing_values(q, lp, 0x3) == 0);
+        CHECK(differing_values(q, lp, 0xC) == 0);
+    }
+}
+
+TEST_CASE("uniforms: initializers, the material's extras.uniforms and --uniform bind the same values as in llvmpipe, bit for bit",
+          "[reference][uniforms]") {
+    // 61x37: uResolution is not a power of two, and quads stick out of the image.
+    constexpr int w = 61, h = 37;
+    const Case initial{"uniform-initial", kPlane, "uniform_probe", w, h};
+    Scene s = load_scene(kPlane);
+    for (Object& o : s.objects) {
+        o.shader = "uniform_probe";
+        o.uniforms = {{"uScale", {6.5}, ""},           {"uTint", {0.25, 1.0, 0.75}, ""},
+                      {"uBands", {5}, ""},             {"uCells", {3, -2}, ""},
+                      {"uSeed", {4000000000.0}, ""},   {"uRotate", {0.8, 0.6, -0.6, 0.8}, ""},
+                      {"uWarp", {1.0, 0.25, 0.0, -0.5, 1.0, 0.0, 0.125, 0.5, 1.0}, ""}};
+    }
+    const auto file = work_dir() / "uniforms.gltf";
+    test::copy_textures_into(s, work_dir());
+    save_scene(s, file);
+    const Case material{"uniform-material", file, "", w, h};
+    const Case option{"uniform-option", file, "", w, h};
+    const std::string options = "--uniform uScale=3 --uniform 'uTint=[1,0,0.5]' --uniform uWarp=1,0,0,0,1,0,0.3,0.1,1 --uniform uBands=-4";
+    const std::vector<UniformSetting> settings = {parse_uniform_option("uScale=3"), parse_uniform_option("uTint=[1,0,0.5]"),
+                                                  parse_uniform_option("uWarp=1,0,0,0,1,0,0.3,0.1,1"), parse_uniform_option("uBands=-4")};
+    const Framebuffer q0 = ours(initial, Derivatives::Fine, w, h), q1 = ours(material, Derivatives::Fine, w, h),
+                      q2 = ours(option, Derivatives::Fine, w, h, settings);
+    CHECK(differing_values(q0, reference(initial, "llvmpipe", w, h)) == 0);
+    CHECK(differing_values(q1, reference(material, "llvmpipe", w, h)) == 0);
+    CHECK(differing_values(q2, reference(option, "llvmpipe", w, h, options)) == 0);
+    CHECK(differing_values(q1, reference(material, "softpipe", w, h)) == 0);
+    // Each source of values changed the image.
+    Image i0{w, h, q0.rgba}, i1{w, h, q1.rgba};
+    CHECK(differing_values(q1, i0) > std::size_t(w * h / 4));
+    CHECK(differing_values(q2, i1) > std::size_t(w * h / 4));
+}
+
+TEST_CASE("uniforms: quadshade-reference refuses an unknown --uniform (exit 2) and a material's unknown or mistyped one (exit 1)",
+          "[reference][uniforms]") {
+    Scene s = load_scene(kPlane);
+    for (Object& o : s.objects) o.shader = "uniform_probe", o.uniforms = {{"uNope", {1.0}, ""}};
+    test::copy_textures_into(s, work_dir());
+    const auto unknown = work_dir() / "uniforms-unknown.gltf";
+    save_scene(s, unknown);
+    for (Object& o : s.objects) o.uniforms = {{"uBands", {0.5}, ""}};
+    const auto mistyped = work_dir() / "uniforms-mistyped.gltf";
+    save_scene(s, mistyped);
+    auto exit_code = [](const std::filesystem::path& scene, const std::string& options) {
+        const std::string cmd = (kBin / "quadshade-reference").string() + " " + scene.string() + " --glsl " + QUADSHADE_GLSL_DIR +
+                                " --size 8x8 -o " + (work_dir() / "refused.exr").string() + " " + options + " 2> /dev/null";
+        const int status = std::system(cmd.c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uBands=2") == 0);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uNope=1") == 2);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uScale") == 2);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uBands=1.5") == 2);
+    CHECK(exit_code(kPlane, "--shader uniform_probe --uniform uTint=1,2") == 2);
+    CHECK(exit_code(unknown, "") == 1);
+    CHECK(exit_code(mistyped, "") == 1);
+    CHECK(exit_code(unknown, "--shader uniform_probe") == 0);  // under --shader, only the names it declares apply
 }
 
 }  // namespace qs

@@ -67,7 +67,7 @@ public:
             c.programs = std::make_unique<GlPrograms>(QUADSHADE_GLSL_DIR);
             REQUIRE(c.gl->info().renderer.find(kDriverName) != std::string::npos);
         }
-        return GlSceneRenderer(scene, {scene.width, scene.height, {}, shader}, *c.gl, *c.programs).render();
+        return GlSceneRenderer(scene, {scene.width, scene.height, {}, shader, {}}, *c.gl, *c.programs).render();
     }
 
 private:

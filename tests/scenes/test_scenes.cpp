@@ -314,8 +314,11 @@ TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[sc
     CHECK_THROWS_WITH(render_frame(s, {}), Catch::Contains("names no shader"));
     for (const Program* p : catalogue()) {
         if (samples_textures(p->info().needs)) continue;  // no texture in this file
-        // These two write a derivative, not coverage, to alpha.
-        if (p->info().name == "st_derivative_probe" || p->info().name == "position_derivative_probe") continue;
+        // These write a value (a derivative, a probe's result), not coverage, to alpha.
+        static const std::set<std::string_view> kValueInAlpha = {
+            "st_derivative_probe", "position_derivative_probe", "integer_probe", "integer_undefined_probe",
+            "bool_probe", "loop_probe", "discard_probe", "matrix_probe", "builtins_probe", "uniform_probe"};
+        if (kValueInAlpha.count(p->info().name)) continue;
         FrameRequest r;
         r.width = r.height = 32;
         r.shader_override = std::string(p->info().name);
@@ -716,6 +719,122 @@ TEST_CASE("the command line writes the undefined-case mask and counts it", "[und
         CHECK_FALSE(std::filesystem::exists(dir / "out.png"));
         CHECK_FALSE(std::filesystem::exists(dir / "mask.png"));
     }
+}
+
+namespace {
+
+// The Table 1.1 plane drawn with uniform_probe, its material setting `uniforms`.
+std::filesystem::path uniform_scene(const std::filesystem::path& dir, const std::string& name, std::vector<UniformSetting> uniforms) {
+    Scene s = load_scene(kPlane);
+    for (Object& o : s.objects) o.shader = "uniform_probe", o.uniforms = uniforms;
+    test::copy_textures_into(s, dir);
+    const auto file = dir / name;
+    save_scene(s, file);
+    return file;
+}
+
+}  // namespace
+
+TEST_CASE("uniforms: the material's extras.uniforms round-trip through glTF; bad ones name the file and field", "[scenes][uniforms]") {
+    const auto dir = temp_dir("uniforms-gltf");
+    const auto file = uniform_scene(dir, "set.gltf", {{"uScale", {6.5}, ""}, {"uTint", {0.25, 1.0, 0.75}, ""}});
+    const Scene s = load_scene(file);
+    REQUIRE(s.objects.at(0).uniforms.size() == 2);
+    const UniformSetting& tint = s.objects[0].uniforms[1];  // by name: uScale, uTint
+    CHECK(tint.name == "uTint");
+    CHECK(tint.values == std::vector<double>{0.25, 1.0, 0.75});
+    CHECK(tint.origin == file.string() + ": materials[0].extras.uniforms.uTint");
+    // Malformed values are refused by the loader.
+    auto refused = [&](const std::string& extras_json, const std::string& field) {
+        std::string text = slurp(file);
+        const std::size_t at = text.find("\"uniforms\"");
+        REQUIRE(at != std::string::npos);
+        const std::size_t end = text.find('}', at);
+        text.replace(at, end + 1 - at, "\"uniforms\": " + extras_json);
+        const auto bad = dir / "bad.gltf";
+        write_text(bad, text);
+        INFO(extras_json);
+        try {
+            load_scene(bad);
+            FAIL("loaded");
+        } catch (const SceneError& e) {
+            CHECK(std::string(e.what()).find(field) != std::string::npos);
+        }
+    };
+    refused("[1, 2]", "materials[0].extras.uniforms: expected an object");
+    refused("{\"uScale\": \"big\"}", "materials[0].extras.uniforms.uScale: expected a number");
+    refused("{\"uTint\": [1, \"x\", 2]}", "materials[0].extras.uniforms.uTint[1]: expected a number");
+    refused("{\"uResolution\": [1, 2]}", "materials[0].extras.uniforms.uResolution");
+    refused("{\"2x\": 1}", "is not a GLSL uniform name");
+}
+
+TEST_CASE("uniforms: --uniform parsing, and the renderer's checks of names and types", "[scenes][uniforms]") {
+    const UniformSetting a = parse_uniform_option("uTint=[1, 0.5,0.2]");
+    CHECK(a.name == "uTint");
+    CHECK(a.values == std::vector<double>{1.0, 0.5, 0.2});
+    CHECK(parse_uniform_option("uScale=-4e-1").values == std::vector<double>{-0.4});
+    for (const char* bad : {"uScale", "uScale=", "uScale=abc", "uScale=1,,2", "=1", "gl_Foo=1", "uScale=inf", "uResolution=1,2",
+                            "uM=1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17"}) {
+        INFO(bad);
+        CHECK_THROWS_AS(parse_uniform_option(bad), UniformOptionError);
+    }
+    const auto dir = temp_dir("uniforms-render");
+    FrameRequest r;
+    r.width = r.height = 8;
+    auto render_with = [&](std::vector<UniformSetting> material, std::vector<UniformSetting> options) {
+        Scene s = load_scene(uniform_scene(dir, "u.gltf", std::move(material)));
+        r.uniforms = std::move(options);
+        return render_frame(s, r);
+    };
+    auto message = [&](auto&& f) -> std::string {
+        try {
+            f();
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    };
+    // A material's unknown name or wrong type: bad input, naming the field.
+    CHECK_THROWS_AS(render_with({{"uNope", {1.0}, "u.gltf: materials[0].extras.uniforms.uNope"}}, {}), SceneError);
+    CHECK(message([&] { render_with({{"uNope", {1.0}, ""}}, {}); })
+              .find((dir / "u.gltf").string() + ": materials[0].extras.uniforms.uNope: shader 'uniform_probe' declares no uniform "
+                    "'uNope' (it declares: float uScale, vec3 uTint, int uBands, ivec2 uCells, uint uSeed, mat2 uRotate, mat3 uWarp)") !=
+          std::string::npos);
+    CHECK(message([&] { render_with({{"uBands", {2.5}, "F: f"}}, {}); }).find("uniform 'uBands' of shader 'uniform_probe' is int: 2.5") != std::string::npos);
+    CHECK_THROWS_AS(render_with({{"uTint", {1.0, 2.0}, "F: f"}}, {}), SceneError);
+    CHECK_THROWS_AS(render_with({{"uSeed", {-1.0}, "F: f"}}, {}), SceneError);
+    // The command line's: bad usage.
+    CHECK_THROWS_AS(render_with({}, {parse_uniform_option("uNope=1")}), UniformOptionError);
+    CHECK_THROWS_AS(render_with({}, {parse_uniform_option("uCells=1,2,3")}), UniformOptionError);
+    // --uniform replaces the material's value; the values change the image.
+    const Framebuffer initial = render_with({}, {});
+    const Framebuffer material = render_with({{"uTint", {0.0, 0.0, 1.0}, "F: f"}}, {});
+    const Framebuffer option = render_with({{"uTint", {0.0, 0.0, 1.0}, "F: f"}}, {parse_uniform_option("uTint=0,0,1")});
+    const Framebuffer other = render_with({{"uTint", {0.0, 0.0, 1.0}, "F: f"}}, {parse_uniform_option("uTint=1,0,0")});
+    CHECK(initial.rgba != material.rgba);
+    CHECK(material.rgba == option.rgba);
+    CHECK(other.rgba != material.rgba);
+    CHECK(material.pixel(3, 3)[0] == 0.0f);
+    CHECK(other.pixel(3, 3)[0] > 0.0f);
+}
+
+TEST_CASE("uniforms: quadshade render --uniform, exit 2 for a bad option, exit 1 for a bad material", "[cli][uniforms]") {
+    const auto dir = temp_dir("uniforms-cli");
+    const std::string qs = (kBin / "quadshade").string();
+    const std::string out = (dir / "out.png").string();
+    const auto good = uniform_scene(dir, "good.gltf", {{"uScale", {2.0}, ""}});
+    CHECK(run(qs + " render " + good.string() + " --size 16x16 -o " + out + " --uniform uTint=0,1,0 --uniform 'uWarp=[1,0,0, 0,1,0, 0.5,0,1]'", dir).first == 0);
+    auto [code, err] = run(qs + " render " + good.string() + " --size 16x16 -o " + out + " --uniform uNope=1", dir);
+    CHECK(code == 2);
+    CHECK(err.find("--uniform uNope=1: no shader in this scene declares a uniform 'uNope'") != std::string::npos);
+    CHECK(run(qs + " render " + good.string() + " -o " + out + " --uniform uBands=1.5", dir).first == 2);
+    CHECK(run(qs + " render " + good.string() + " -o " + out + " --uniform uBands", dir).first == 2);
+    CHECK(run(qs + " render " + good.string() + " -o " + out + " --uniform", dir).first == 2);
+    const auto bad = uniform_scene(dir, "bad.gltf", {{"uScale", {1.0, 2.0}, ""}});
+    auto [code2, err2] = run(qs + " render " + bad.string() + " -o " + (dir / "bad.png").string(), dir);
+    CHECK(code2 == 1);
+    CHECK(err2.find("materials[0].extras.uniforms.uScale: uniform 'uScale' of shader 'uniform_probe' is float: expected 1 number(s), got 2") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "bad.png"));
 }
 
 }  // namespace qs

@@ -1,0 +1,242 @@
+#pragma once
+// Control flow that depends on the fragment, under SIMD: each GLSL bool is a mask of lanes.
+//
+// `if`: both sides are computed for every lane and select keeps each lane's side:
+//
+//     if (d < 0.3) c = a; else c = b;        c = select(d < 0.3f, a, b);
+//
+// Loops: a Loop holds the variables its body assigns and the lanes still running. The body runs
+// for every lane while any lane is running; each lane's variables keep the values they had when
+// it left (break, return, or its condition failing), and a lane that continues resumes at the
+// next iteration with the values it had at the continue. A lane that discards runs on (GLSL's
+// discard makes it a helper, not a lane that stops).
+//
+//     float x = cx, y = cy, r = 0.0;         F x = cx, y = cy, r = 0.0f;
+//                                            Loop loop(x, y, r);  // what the body assigns
+//     for (int i = 0; i < 100; i++) {        for (int i = 0; loop(i < 100); i++) {
+//         float nx = x * x - y * y + cx;         F nx = x * x - y * y + cx;
+//         y = 2.0 * x * y + cy;                  y = 2.0f * x * y + cy;
+//         x = nx;                                x = nx;
+//         r = x * x + y * y;                     r = x * x + y * y;
+//         if (r > 4.0) break;                    loop.break_if(r > 4.0f);
+//     }                                      }
+//     while (v < 1.0) { ... }                while (loop(v < 1.0f)) { ... }
+//     if (c) continue;                       loop.continue_if(c);
+//     if (c) return v;   (in f)              loop.return_if(ret, c, v);  ... return ret.value_or(w);
+//     if (c) discard;    (in main)           loop.discard_if(out, c);
+//
+// Rules: register every variable the body assigns and code after the loop reads (the body also
+// runs for lanes that have left, on values that are then thrown away; every operation in this
+// vocabulary is defined for any value, so nothing traps). A loop counter the same for every lane
+// stays a plain C++ int, and loop(i < 100) checks it; a C++ `break` is right only when every
+// lane breaks. Statements after a break_if or continue_if in the same iteration run for the
+// lanes that left too and are thrown away for them, as GLSL wants. Inside a loop, conditions of
+// side effects go through the loop (return_if, discard_if), so that lanes that have left do not
+// act. A loop inside a varying `if` starts with `Loop loop(inside(c), ...)`, a nested loop with
+// `Loop inner(outer, ...)`: return leaves the enclosing loops as well.
+//
+// A for loop with continue_if and an increment of a registered variable writes the increment
+// after loop.next() (`for (...; loop(c); loop.next(), t += 0.1f)`), so that lanes that continued
+// rejoin before it.
+
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "shading/glsl/builtins.h"
+
+namespace qs::glsl {
+
+// The mask type of a variable's lanes; none for anything else.
+template <class V>
+struct mask_of {};
+template <class V>
+    requires(Number<V> || IntegerNumber<V>)
+struct mask_of<V> {
+    using type = Bool<V>;
+};
+template <class V>
+    requires requires { typename V::value_type; V::N; }
+struct mask_of<V> : mask_of<typename V::value_type> {};  // vectors
+template <class V>
+    requires requires { typename V::column_type; }
+struct mask_of<V> : mask_of<typename V::value_type> {};  // matrices
+template <Boolean M>
+struct mask_of<M> {
+    using type = M;  // bools
+};
+template <class V>
+using mask_of_t = typename mask_of<V>::type;
+
+// The lanes a loop inside a varying `if` starts with.
+template <class M>
+struct Inside {
+    M lanes;
+};
+template <class M>
+Inside<M> inside(const M& lanes) { return {lanes}; }
+
+// A GLSL function's value per lane once its lanes return, before they reach the end.
+template <class T>
+class Return {
+public:
+    using Mask = mask_of_t<T>;
+
+    // `if (c) return v;`: the lanes of c that have not returned yet return v.
+    void return_if(const Mask& c, const T& v) {
+        const Mask now = c && !returned_;
+        value_ = select(now, v, value_);
+        returned_ = returned_ || now;
+    }
+    // The function's value: what each lane returned, or `otherwise` for the lanes that reach
+    // the end.
+    T value_or(const T& otherwise) const { return select(returned_, value_, otherwise); }
+    const Mask& returned() const { return returned_; }
+
+private:
+    T value_{};
+    Mask returned_ = Mask(false);
+};
+
+struct LoopTag {};
+
+// The lanes of a loop: running, gone (break, return, condition failed) and paused (continue).
+// Nested loops reach their parents through this.
+template <class M>
+class LoopLanes : public LoopTag {
+public:
+    // Lanes running the current iteration: what side effects in the body are masked with.
+    const M& active() const { return active_; }
+
+protected:
+    LoopLanes(const M& entry, LoopLanes* parent) : active_(entry), left_(!entry), parent_(parent) {}
+    LoopLanes(const LoopLanes&) = delete;
+    LoopLanes& operator=(const LoopLanes&) = delete;
+
+    // `lanes` leave this loop and every enclosing one (return). Their variables are left as the
+    // loops find them: the function's value for them is in its Return.
+    void leave_all(const M& lanes) {
+        for (LoopLanes* l = this; l; l = l->parent_) {
+            l->left_ = l->left_ || lanes;
+            l->active_ = l->active_ && !lanes;
+            l->paused_ = l->paused_ && !lanes;
+        }
+    }
+
+    M active_, left_;
+    M paused_ = M(false);
+    bool any_paused_ = false;
+    LoopLanes* parent_;
+};
+
+template <class M, class... Vars>
+class Loop final : public LoopLanes<M> {
+public:
+    explicit Loop(Vars&... vars) : Loop(M(true), nullptr, vars...) {}
+    Loop(Inside<M> entry, Vars&... vars) : Loop(entry.lanes, nullptr, vars...) {}
+    Loop(LoopLanes<M>& parent, Vars&... vars) : Loop(parent.active(), &parent, vars...) {}
+    ~Loop() { end(); }
+
+    // The loop's head: the lanes that continued rejoin, the lanes whose condition fails leave.
+    // False, with every variable restored, once no lane runs.
+    bool operator()(const M& condition) {
+        next();
+        const M failing = this->active_ && !condition;
+        if (any(failing)) leave(failing);
+        if (any(this->active_)) return true;
+        end();
+        return false;
+    }
+    // A condition the same for every lane (a loop counter); false ends the loop for all. (Per
+    // pixel, where a mask is one bool, the overload above is this one.)
+    bool operator()(bool uniform)
+        requires(!std::is_same_v<M, bool>)
+    {
+        next();
+        if (uniform && any(this->active_)) return true;
+        end();
+        return false;
+    }
+    bool operator()(bool uniform, const M& condition) { return uniform ? (*this)(condition) : (*this)(false); }
+    bool operator()() { return (*this)(true); }
+
+    // if (c) break;
+    void break_if(const M& c) {
+        const M going = this->active_ && c;
+        if (any(going)) leave(going);
+    }
+    // if (c) continue;
+    void continue_if(const M& c) {
+        const M pausing = this->active_ && c;
+        if (!any(pausing)) return;
+        save(pausing);
+        this->paused_ = this->paused_ || pausing;
+        this->active_ = this->active_ && !pausing;
+        this->any_paused_ = true;
+    }
+    // if (c) return v;  (`ret` is the function's Return; the lanes leave the enclosing loops too)
+    template <class T>
+    void return_if(Return<T>& ret, const M& c, const T& v) {
+        const M going = this->active_ && c;
+        if (!any(going)) return;
+        ret.return_if(going, v);
+        this->leave_all(going);
+    }
+    // if (c) discard;  (`out` is the fragment's output, shading/program_of.h.) The lanes that
+    // discard run on to the loop's end and beyond, as helpers for their quad's derivatives:
+    // llvmpipe's values for them, measured by discard_probe, are those of a lane that went on.
+    template <class Out>
+    void discard_if(Out& out, const M& c) {
+        out.discard_if(this->active_ && c);
+    }
+
+    // The lanes that continued rejoin, with the values they had at the continue.
+    void next() {
+        if (!this->any_paused_) return;
+        restore(this->paused_);
+        this->active_ = this->active_ || this->paused_;
+        this->paused_ = M(false);
+        this->any_paused_ = false;
+    }
+    // Every lane's variables as it left them. Called by the head that ends the loop and by the
+    // destructor; call it after a C++ break.
+    void end() {
+        if (ended_) return;
+        ended_ = true;
+        const M kept = this->left_ || this->paused_;
+        if (any(kept)) restore(kept);
+    }
+
+private:
+    Loop(const M& entry, LoopLanes<M>* parent, Vars&... vars)
+        : LoopLanes<M>(entry, parent), vars_(vars...), saved_(vars...) {}
+
+    void leave(const M& lanes) {
+        save(lanes);
+        this->left_ = this->left_ || lanes;
+        this->active_ = this->active_ && !lanes;
+    }
+    void save(const M& lanes) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((std::get<I>(saved_) = select(lanes, std::get<I>(vars_), std::get<I>(saved_))), ...);
+        }(std::index_sequence_for<Vars...>());
+    }
+    void restore(const M& lanes) {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((std::get<I>(vars_) = select(lanes, std::get<I>(saved_), std::get<I>(vars_))), ...);
+        }(std::index_sequence_for<Vars...>());
+    }
+
+    std::tuple<Vars&...> vars_;
+    std::tuple<Vars...> saved_;  // per lane: the value it left or paused with
+    bool ended_ = false;
+};
+
+template <class V, class... Vs>
+Loop(V&, Vs&...) -> Loop<mask_of_t<V>, V, Vs...>;
+template <class M, class... Vs>
+Loop(Inside<M>, Vs&...) -> Loop<M, Vs...>;
+template <class M, class... Vs>
+Loop(LoopLanes<M>&, Vs&...) -> Loop<M, Vs...>;
+
+}  // namespace qs::glsl

@@ -1,0 +1,91 @@
+#pragma once
+// Constant tables indexed per lane: GLSL's `const int perm[256] = int[](...)` read as perm[i]
+// with i an int or uint of the fragment (a permutation table, a gradient table).
+//
+//     const int perm[256] = int[](151, 160, ...);     static constexpr table<int, 256> perm{{151, 160, ...}};
+//     int h = perm[i & 255];                           int_t<F> h = perm[i & 255];
+//
+// A table holds 32-bit int, uint or float; perm[i] is an int_t<F>, uint_t<F> or F, the type of
+// the index's fragments. Each lane reads its own element with one gather instruction per
+// register on AVX2 and AVX-512, element by element elsewhere. An index outside the table reads
+// 0 (GLSL leaves it undefined; Checked numbers flag it as Argument).
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
+#include "shading/number/number.h"
+
+namespace qs::glsl {
+
+template <class T, std::size_t N>
+struct table {
+    static_assert(sizeof(T) == 4 && (std::is_same_v<T, int> || std::is_same_v<T, unsigned> || std::is_same_v<T, float>),
+                  "a table holds 32-bit ints, uints or floats");
+    static_assert(N > 0 && N <= 0x7FFFFFFF);
+
+    T values[N];
+
+    // An index the same for every lane.
+    constexpr const T& operator[](std::size_t i) const { return values[i]; }
+
+    // Each lane's element.
+    template <class U, class F>
+    auto operator[](const IntLanes<U, F>& index) const {
+        using Bits = IntLanes<std::uint32_t, F>;
+        const Bits raw = gather(Bits(index));
+        if constexpr (std::is_same_v<T, float>) {
+            return bits_float(raw);
+        } else {
+            return IntLanes<std::conditional_t<std::is_same_v<T, int>, std::int32_t, std::uint32_t>, F>(raw);
+        }
+    }
+    template <class L>
+    auto operator[](const Checked<L>& index) const {
+        using R = decltype((*this)[index.v]);
+        const auto outside = !(index.v < L(std::int32_t(N)) && index.v >= L(0));
+        return Checked<R>((*this)[index.v], index.cases | LaneCases::on(lane_bits(outside), Undefined::Argument));
+    }
+
+private:
+    // The elements at the lanes' indices (taken as unsigned, so negative ones are outside), 0
+    // outside the table.
+    template <class F>
+    IntLanes<std::uint32_t, F> gather(const IntLanes<std::uint32_t, F>& index) const {
+        using Bits = IntLanes<std::uint32_t, F>;
+        constexpr int n = Bits::size;
+        const auto inside = index < Bits(std::uint32_t(N));
+        const Bits safe = select(inside, index, Bits(0u));
+        alignas(64) std::uint32_t at[n];
+        alignas(64) std::uint32_t out[n];
+        safe.store(at);
+#if defined(__AVX512F__)
+        if constexpr (n % 16 == 0) {
+            for (int k = 0; k < n; k += 16) {
+                const __m512i i = _mm512_load_si512(at + k);
+                _mm512_store_si512(out + k, _mm512_i32gather_epi32(i, values, 4));
+            }
+            return select(inside, Bits::load(out), Bits(0u));
+        }
+#endif
+#if defined(__AVX2__)
+        if constexpr (n % 8 == 0) {
+            for (int k = 0; k < n; k += 8) {
+                const __m256i i = _mm256_load_si256(reinterpret_cast<const __m256i*>(at + k));
+                _mm256_store_si256(reinterpret_cast<__m256i*>(out + k),
+                                   _mm256_i32gather_epi32(reinterpret_cast<const int*>(values), i, 4));
+            }
+            return select(inside, Bits::load(out), Bits(0u));
+        }
+#endif
+        for (int k = 0; k < n; ++k) std::memcpy(&out[k], &values[at[k]], sizeof out[k]);
+        return select(inside, Bits::load(out), Bits(0u));
+    }
+};
+
+}  // namespace qs::glsl

@@ -1,0 +1,377 @@
+#pragma once
+// GLSL `int` and `uint` over the lanes of a float number type.
+//
+// `IntLanes<T, F>` holds one 32-bit integer (T: std::int32_t or std::uint32_t) for each fragment
+// of a float number type F: a plain integer for float and double (the per-pixel instantiations),
+// SIMD lanes for Pixels and Quads. It compares into F's own mask type, so a GLSL `bool` is one
+// type whether it came from floats or integers, and converts to and from F. Shaders name these
+// types through int_t<F> / uint_t<F> (below): Dual2 shaders use the integers of their value type,
+// Checked shaders Checked integers.
+//
+// Semantics, GLSL's where it defines them and llvmpipe's (Mesa 22.3, measured by the probes in
+// shading/shaders/vocabulary_probes.h) where it does not:
+//  - + - * and unary - wrap modulo 2^32, for int and uint alike;
+//  - a / b truncates; x / 0 is 0 for int and 0xFFFFFFFF for uint; INT_MIN / -1 wraps to INT_MIN;
+//  - a % b is the remainder of the operands' bits taken as unsigned, for int too (Mesa compiles
+//    GLSL's `%` to an unsigned remainder; GLSL leaves negative operands undefined); x % 0 is
+//    0xFFFFFFFF;
+//  - << and >> use the count's low five bits (x << 33 is x << 1), as NIR defines them; >> on int
+//    shifts in the sign;
+//  - int(x) truncates; out of range or NaN gives INT_MIN (x86's cvttps2dq, what llvmpipe shows);
+//    uint(x) is llvmpipe's sequence on AVX2 hosts: int(x) | (int(x - 2^31) & sign mask of int(x)),
+//    which is exact on [0, 2^32) and uint(int(x)) for negative x.
+// Nothing here traps or is undefined in C++: division goes through double (exact for 32-bit
+// operands) with the divisor replaced where it is 0; conversions use x86's, which are defined out
+// of range, or check the range.
+
+#include <bit>
+#include <concepts>
+#include <cstring>
+#include <cstdint>
+#include <experimental/simd>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
+#include "shading/number/checked.h"
+#include "shading/number/dual2.h"
+#include "shading/number/lanes.h"
+#include "shading/number/scalar.h"
+
+namespace qs {
+
+namespace integer_detail {
+
+// The SIMD ABI that holds one T per fragment of F.
+template <class T, class F>
+struct abi_of {
+    using type = stdx::simd_abi::scalar;  // float, double: one fragment
+};
+template <class T, class S, int N, class L>
+struct abi_of<T, Lanes<S, N, L>> {
+    using type = stdx::simd_abi::deduce_t<T, N>;
+};
+
+// int(x) of N floats or doubles: truncated, INT_MIN out of range (after truncation) and for
+// NaN. That is the x86 conversions' answer (cvttps2dq, cvttpd2dq and their wider forms), which
+// they give with no masks; elsewhere it is stated lane by lane.
+template <class S, int N>
+void truncate(const S (&in)[N], std::int32_t (&out)[N]) {
+    int k = 0;
+#if defined(__AVX512F__)
+    if constexpr (std::is_same_v<S, float>) {
+        for (; k + 16 <= N; k += 16) _mm512_storeu_si512(out + k, _mm512_cvttps_epi32(_mm512_loadu_ps(in + k)));
+    } else {
+        for (; k + 8 <= N; k += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm512_cvttpd_epi32(_mm512_loadu_pd(in + k)));
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (std::is_same_v<S, float>) {
+        for (; k + 8 <= N; k += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm256_cvttps_epi32(_mm256_loadu_ps(in + k)));
+    } else {
+        for (; k + 4 <= N; k += 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm256_cvttpd_epi32(_mm256_loadu_pd(in + k)));
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<S, float>) {
+        for (; k + 4 <= N; k += 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm_cvttps_epi32(_mm_loadu_ps(in + k)));
+    }
+#endif
+    for (; k < N; ++k) {
+        out[k] = (in[k] > S(-2147483649.0) && in[k] < S(2147483648.0)) ? std::int32_t(in[k]) : std::int32_t(INT32_MIN);
+    }
+}
+
+// Casts between masks of the same lanes and different value types or ABIs (bool for one lane).
+template <class To, class From>
+To mask_cast(const From& m) {
+    if constexpr (std::is_same_v<To, From>) {
+        return m;
+    } else if constexpr (std::is_same_v<To, bool>) {
+        return bool(m[0]);
+    } else if constexpr (std::is_same_v<From, bool>) {
+        return To(m);
+    } else {
+        // libstdc++'s mask conversion (the Parallelism TS v2 has none): a no-op between
+        // bitmask ABIs, a widening or narrowing between vector masks.
+        return stdx::__proposed::static_simd_cast<To>(m);
+    }
+}
+
+}  // namespace integer_detail
+
+template <class T, class F>
+class IntLanes {
+    static_assert(std::is_same_v<T, std::int32_t> || std::is_same_v<T, std::uint32_t>, "GLSL integers are 32-bit");
+
+public:
+    using value_type = T;
+    using float_type = F;  // the float number type whose fragments these are
+    using Simd = stdx::simd<T, typename integer_detail::abi_of<T, F>::type>;
+    using Mask = decltype(F() < F());  // F's own mask: GLSL's bool in this instantiation
+    static constexpr int size = int(Simd::size());
+    static constexpr bool is_signed = std::is_signed_v<T>;
+
+    Simd v;
+
+    IntLanes() = default;
+    IntLanes(T x) : v(x) {}  // NOLINT: broadcast, as GLSL promotes a literal
+    template <std::integral S>
+        requires(!std::is_same_v<S, T> && !std::is_same_v<S, bool>)
+    IntLanes(S x) : v(T(x)) {}  // NOLINT: an integer literal of either signedness
+    explicit IntLanes(const Simd& s) : v(s) {}
+
+    // GLSL int(x), uint(x) of a float: truncation, out-of-range results as stated above.
+    explicit IntLanes(const F& x) : v(from_float(x)) {}
+    explicit IntLanes(const Dual2<F>& x) : IntLanes(x.val) {}
+    template <std::floating_point S>
+        requires(!std::is_same_v<S, F>)
+    explicit IntLanes(S x) : IntLanes(F(x)) {}
+    // int(u), uint(i): the same bits.
+    template <class U>
+        requires(!std::is_same_v<U, T>)
+    explicit IntLanes(const IntLanes<U, F>& o) : v(stdx::static_simd_cast<Simd>(o.v)) {}
+    // int(b): 1 or 0.
+    explicit IntLanes(const Mask& m) : IntLanes(select(m, IntLanes(1), IntLanes(0))) {}
+
+    // float(i), double(i) where F is float or double.
+    explicit operator float() const requires std::is_floating_point_v<F> { return float(T(v[0])); }
+    explicit operator double() const requires std::is_floating_point_v<F> { return double(T(v[0])); }
+    // The lanes as float lanes (F's value type), rounded to nearest.
+    template <class S>
+    stdx::simd<S, stdx::simd_abi::deduce_t<S, size>> to_simd() const {
+        return stdx::static_simd_cast<stdx::simd<S, stdx::simd_abi::deduce_t<S, size>>>(v);
+    }
+
+    static IntLanes load(const T* p) {
+        IntLanes r;
+        r.v.copy_from(p, stdx::element_aligned);
+        return r;
+    }
+    void store(T* p) const { v.copy_to(p, stdx::element_aligned); }
+    T operator[](int i) const { return v[i]; }
+
+    // ---- arithmetic, wrapping: computed on the unsigned bits ----
+    friend IntLanes operator-(const IntLanes& a) { return wrap(bits(0u) - bits(a)); }
+    friend IntLanes operator~(const IntLanes& a) { return IntLanes(~a.v); }
+    friend IntLanes operator+(const IntLanes& a, const IntLanes& b) { return wrap(bits(a) + bits(b)); }
+    friend IntLanes operator-(const IntLanes& a, const IntLanes& b) { return wrap(bits(a) - bits(b)); }
+    friend IntLanes operator*(const IntLanes& a, const IntLanes& b) { return wrap(bits(a) * bits(b)); }
+    friend IntLanes operator/(const IntLanes& a, const IntLanes& b) {
+        const auto zero = b.v == Simd(T(0));
+        if constexpr (is_signed) {
+            // x / 0 = 0; INT_MIN / -1 = INT_MIN, the quotient 2^31 wrapped.
+            IntLanes q = quotient(a, select_simd(zero, Simd(T(1)), b.v));
+            stdx::where(zero, q.v) = T(0);
+            return q;
+        } else {
+            IntLanes q = quotient(a, select_simd(zero, Simd(T(1)), b.v));
+            stdx::where(zero, q.v) = T(0xFFFFFFFFu);
+            return q;
+        }
+    }
+    friend IntLanes operator%(const IntLanes& a, const IntLanes& b) {
+        using U = IntLanes<std::uint32_t, F>;
+        const U ua(a), ub(b);
+        const U r = ua - (ua / ub) * ub;  // x % 0: x - 0xFFFFFFFF * 0 = x, fixed below
+        IntLanes out(r);
+        stdx::where(b.v == Simd(T(0)), out.v) = T(0xFFFFFFFFu);
+        return out;
+    }
+    friend IntLanes operator&(const IntLanes& a, const IntLanes& b) { return IntLanes(a.v & b.v); }
+    friend IntLanes operator|(const IntLanes& a, const IntLanes& b) { return IntLanes(a.v | b.v); }
+    friend IntLanes operator^(const IntLanes& a, const IntLanes& b) { return IntLanes(a.v ^ b.v); }
+    // Shifts by the count's low five bits; the count may be int or uint, lanes or one number.
+    template <class C>
+    friend IntLanes operator<<(const IntLanes& a, const IntLanes<C, F>& n) {
+        return wrap(bits(a) << count(n));
+    }
+    template <class C>
+    friend IntLanes operator>>(const IntLanes& a, const IntLanes<C, F>& n) {
+        return IntLanes(a.v >> stdx::static_simd_cast<Simd>(count(n)));
+    }
+    friend IntLanes operator<<(const IntLanes& a, int n) { return wrap(bits(a) << (n & 31)); }
+    friend IntLanes operator>>(const IntLanes& a, int n) { return IntLanes(a.v >> (n & 31)); }
+
+    IntLanes& operator+=(const IntLanes& b) & { return *this = *this + b; }
+    IntLanes& operator-=(const IntLanes& b) & { return *this = *this - b; }
+    IntLanes& operator*=(const IntLanes& b) & { return *this = *this * b; }
+    IntLanes& operator/=(const IntLanes& b) & { return *this = *this / b; }
+    IntLanes& operator%=(const IntLanes& b) & { return *this = *this % b; }
+    IntLanes& operator&=(const IntLanes& b) & { return *this = *this & b; }
+    IntLanes& operator|=(const IntLanes& b) & { return *this = *this | b; }
+    IntLanes& operator^=(const IntLanes& b) & { return *this = *this ^ b; }
+    IntLanes& operator<<=(int n) & { return *this = *this << n; }
+    IntLanes& operator>>=(int n) & { return *this = *this >> n; }
+    IntLanes& operator++() & { return *this = *this + IntLanes(1); }
+    IntLanes& operator--() & { return *this = *this - IntLanes(1); }
+
+    friend Mask operator<(const IntLanes& a, const IntLanes& b) { return mask(a.v < b.v); }
+    friend Mask operator<=(const IntLanes& a, const IntLanes& b) { return mask(a.v <= b.v); }
+    friend Mask operator>(const IntLanes& a, const IntLanes& b) { return mask(a.v > b.v); }
+    friend Mask operator>=(const IntLanes& a, const IntLanes& b) { return mask(a.v >= b.v); }
+    friend Mask operator==(const IntLanes& a, const IntLanes& b) { return mask(a.v == b.v); }
+    friend Mask operator!=(const IntLanes& a, const IntLanes& b) { return mask(a.v != b.v); }
+
+    friend IntLanes select(const Mask& m, const IntLanes& a, const IntLanes& b) {
+        return IntLanes(select_simd(integer_detail::mask_cast<typename Simd::mask_type>(m), a.v, b.v));
+    }
+    // GLSL's integer min, max, abs (abs(INT_MIN) wraps to INT_MIN, as it does on GPUs).
+    friend IntLanes min(const IntLanes& a, const IntLanes& b) { return IntLanes(stdx::min(a.v, b.v)); }
+    friend IntLanes max(const IntLanes& a, const IntLanes& b) { return IntLanes(stdx::max(a.v, b.v)); }
+    friend IntLanes abs(const IntLanes& a) requires is_signed { return select(a < IntLanes(0), -a, a); }
+
+    friend constexpr int lane_count(const IntLanes&) { return size; }
+    friend T lane(const IntLanes& a, int i) { return a.v[i]; }
+
+    // The lanes' bits as uint (for wrapping arithmetic), and back.
+    using Bits = stdx::simd<std::uint32_t, typename Simd::abi_type>;
+    static Bits bits(const IntLanes& a) { return stdx::static_simd_cast<Bits>(a.v); }
+    static Bits bits(std::uint32_t x) { return Bits(x); }
+    static IntLanes wrap(const Bits& b) { return IntLanes(stdx::static_simd_cast<Simd>(b)); }
+
+private:
+    static Mask mask(const typename Simd::mask_type& m) { return integer_detail::mask_cast<Mask>(m); }
+    static Simd select_simd(const typename Simd::mask_type& m, const Simd& a, Simd b) {
+        stdx::where(m, b) = a;
+        return b;
+    }
+    template <class C>
+    static Bits count(const IntLanes<C, F>& n) {
+        return IntLanes<C, F>::bits(n) & Bits(31u);
+    }
+
+    // a / b for b != 0, truncated: in double, exact for 32-bit operands (a quotient's distance to
+    // the next integer is at least 1/|b| > 2^-32, far above double's rounding error), then
+    // brought into range, which only INT_MIN / -1 leaves.
+    static IntLanes quotient(const IntLanes& a, const Simd& b) {
+        using D = stdx::simd<double, stdx::simd_abi::deduce_t<double, size>>;
+        using W = stdx::simd<std::int64_t, stdx::simd_abi::deduce_t<std::int64_t, size>>;
+        const D q = stdx::trunc(stdx::static_simd_cast<D>(a.v) / stdx::static_simd_cast<D>(b));
+        const W w = stdx::static_simd_cast<W>(q);  // |q| <= 2^32: in range
+        return wrap(stdx::static_simd_cast<Bits>(w));  // the low 32 bits
+    }
+
+    // int(x), uint(x) of F's lanes.
+    static Simd from_float(const F& x) {
+        if constexpr (std::is_floating_point_v<F>) {
+            return Simd(convert_one(x));
+        } else {
+            using S = typename F::value_type;
+            using I = stdx::simd<std::int32_t, typename Simd::abi_type>;
+            auto to_int = [](const typename F::Simd& f) {
+                alignas(64) S in[size];
+                alignas(64) std::int32_t out[size];
+                f.copy_to(in, stdx::element_aligned);
+                integer_detail::truncate(in, out);
+                I r;
+                r.copy_from(out, stdx::element_aligned);
+                return r;
+            };
+            const I i = to_int(x.v);
+            if constexpr (is_signed) {
+                return i;
+            } else {
+                const I high = to_int(x.v - S(2147483648.0));
+                return stdx::static_simd_cast<Simd>(i | (high & (i >> 31)));
+            }
+        }
+    }
+    static T convert_one(F x) {
+        auto to_int = [](F f) -> std::int32_t {
+            return (f > F(-2147483649.0) && f < F(2147483648.0)) ? std::int32_t(f) : std::int32_t(INT32_MIN);
+        };
+        const std::int32_t i = to_int(x);
+        if constexpr (is_signed) {
+            return i;
+        } else {
+            const std::int32_t high = to_int(x - F(2147483648.0));
+            return std::uint32_t(i) | (std::uint32_t(high) & std::uint32_t(i >> 31));
+        }
+    }
+};
+
+// ---- the integers of a number type --------------------------------------------------------
+template <class T, class F>
+struct integer_of {
+    using type = IntLanes<T, F>;  // float, double, Pixels, Quads
+};
+template <class T, class G>
+struct integer_of<T, Dual2<G>> : integer_of<T, G> {};  // integers carry no derivatives
+template <class T, class L>
+struct integer_of<T, Checked<L>> {
+    using type = Checked<typename integer_of<T, L>::type>;
+};
+template <class T, class U, class F>
+struct integer_of<T, IntLanes<U, F>> : integer_of<T, F> {};
+
+// GLSL int and uint where F stands for float.
+template <class F>
+using int_t = typename integer_of<std::int32_t, F>::type;
+template <class F>
+using uint_t = typename integer_of<std::uint32_t, F>::type;
+
+template <class I>
+struct is_integer_lanes : std::false_type {};
+template <class T, class F>
+struct is_integer_lanes<IntLanes<T, F>> : std::true_type {};
+template <class L>
+struct is_integer_lanes<Checked<L>> : is_integer_lanes<L> {};
+// An IntegerNumber stands where GLSL has int or uint.
+template <class I>
+concept IntegerNumber = is_integer_lanes<I>::value;
+
+// ---- bits of floats (GLSL floatBitsToInt, intBitsToFloat and their uint forms) -------------
+// Through memory, which the compiler turns into register moves. In a double instantiation the
+// bits are those of the value rounded to float: GLSL's float is 32-bit.
+template <class T, class F>
+IntLanes<T, F> float_bits(const F& x) {
+    using I = IntLanes<T, F>;
+    if constexpr (std::is_floating_point_v<F>) {
+        return I(std::bit_cast<T>(float(x)));
+    } else {
+        float f[I::size];
+        if constexpr (std::is_same_v<typename F::value_type, float>) {
+            x.store(f);
+        } else {
+            for (int i = 0; i < I::size; ++i) f[i] = float(x[i]);
+        }
+        T bits[I::size];
+        std::memcpy(bits, f, sizeof bits);
+        return I::load(bits);
+    }
+}
+template <class T, class G>
+IntLanes<T, G> float_bits(const Dual2<G>& x) { return float_bits<T>(x.val); }
+template <class T, class L>
+Checked<typename integer_of<T, L>::type> float_bits(const Checked<L>& x) { return {float_bits<T>(x.v), x.cases}; }
+
+template <class T, class F>
+F bits_float(const IntLanes<T, F>& i) {
+    if constexpr (std::is_floating_point_v<F>) {
+        return F(std::bit_cast<float>(T(i.v[0])));
+    } else {
+        using S = typename F::value_type;
+        T bits[IntLanes<T, F>::size];
+        i.store(bits);
+        float f[IntLanes<T, F>::size];
+        std::memcpy(f, bits, sizeof f);
+        if constexpr (std::is_same_v<S, float>) {
+            return F::load(f);
+        } else {
+            S wide[IntLanes<T, F>::size];
+            for (int k = 0; k < IntLanes<T, F>::size; ++k) wide[k] = S(f[k]);
+            return F::load(wide);
+        }
+    }
+}
+// GLSL: the float of a NaN's bits is unspecified; flagged as a NaN made here.
+template <class L>
+auto bits_float(const Checked<L>& i) -> Checked<typename L::float_type> {
+    const typename L::float_type f = bits_float(i.v);
+    return {f, i.cases | LaneCases::on(lane_bits(isnan(f)), Undefined::NaN)};
+}
+
+}  // namespace qs
