@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "raster/block_layout.h"
+#include "core/block_layout.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"
@@ -40,7 +40,7 @@ const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
 // Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
 Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
-                 RasterOptions options = {}, RasterStats* stats = nullptr) {
+                 RasterOptions options = {}, RenderStats* stats = nullptr) {
     std::vector<VertexIn> verts;
     std::vector<std::uint32_t> idx;
     for (const glm::vec3& c : corners) {
@@ -193,7 +193,7 @@ TEST_CASE("dFdx of an interpolated varying on helper lanes equals the interior v
     for (const glm::vec3& c : sliver) verts.push_back({c, {}});
     // varying 0 is position.x; scale it by 1/4 through the object position itself.
     for (VertexIn& v : verts) v.position.x *= 1.0f, v.texcoord = {0, 0};
-    RasterStats stats;
+    RenderStats stats;
     const Framebuffer fb = draw(64, 16, sliver, kSlopes, {}, &stats);
     int written = 0;
     for (int row = 0; row < 16; ++row) {
@@ -247,7 +247,7 @@ TEST_CASE("a shader that reads gl_FragCoord without declaring it reads NaN, neve
 
 TEST_CASE("degenerate, sliver and non-finite triangles are dropped without harm", "[raster][robustness]") {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    RasterStats stats;
+    RenderStats stats;
     const Framebuffer fb = draw(32, 32,
                                 {{1, 1, 0}, {20, 20, 0}, {10, 10, 0},       // collinear
                                  {5, 5, 0}, {5, 5, 0}, {5, 5, 0},          // a point
@@ -300,7 +300,7 @@ TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "
 
 TEST_CASE("derivative-free shaders run per pixel with no helper lanes; derivative shaders in quads", "[raster][specialisation]") {
     const std::vector<glm::vec3> tri = {{0.5f, 0.5f, 0}, {30.2f, 3.1f, 0}, {7.7f, 29.9f, 0}};
-    RasterStats flat, slopes, general;
+    RenderStats flat, slopes, general;
     draw(32, 32, tri, kFlat, {}, &flat);
     draw(32, 32, tri, kSlopes, {}, &slopes);
     RasterOptions force;
