@@ -510,7 +510,7 @@ TEST_CASE("built-ins probe: exact built-ins bit for bit as llvmpipe, rounded and
     CHECK(refract_worst < 1e-6);
     // Mesa evaluates asin and acos as polynomials (builtin_functions.cpp, asin_expr), tan as
     // sin / cos and atan with its own approximations. Bounds from what was measured on Mesa
-    // 22.3.6, with room for another host's llvmpipe: see the README.
+    // 22.3.6, with room for another host's llvmpipe: see docs/results.md.
     CHECK(worst[0] < 4e-4);
     CHECK(worst[1] < 2e-4);
     CHECK(worst[2] < 1e-5);
