@@ -38,6 +38,12 @@ struct UndeclaredSquareY : SquareY {
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
+// The position shader declaring two of the five varyings its vertex stage writes, and reading three.
+struct UndeclaredVarying : Position {
+    static constexpr ShaderInfo info{"test_position_undeclared", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 2}, {}, {}};
+};
+const ProgramOf<UndeclaredVarying> kUndeclaredVarying;
+
 // Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
 Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
                  RasterOptions options = {}, RenderStats* stats = nullptr) {
@@ -243,6 +249,37 @@ TEST_CASE("a shader that reads gl_FragCoord without declaring it reads NaN, neve
     for (int i = 0; i < W * H; ++i) CHECK(std::isnan(fb.rgba[std::size_t(i) * 4 + 2]));  // blue: gl_FragCoord.y
     const Framebuffer first = rasterize(W, H, glm::vec4(0.0f), std::span(both, 1), {});
     CHECK(first.pixel(3, H - 1 - 5)[2] == 5.5f);
+}
+
+TEST_CASE("a shader that reads a varying past its Needs::varyings reads NaN, never another draw's numbers",
+          "[raster][specialisation]") {
+    // The first draw interpolates varying 2 (object z = 0.25) over the pixels the second, nearer,
+    // draws without declaring it: the second's blue is NaN in every mode, its red and green are
+    // its declared varyings.
+    constexpr int W = 8, H = 8;
+    const std::vector<VertexIn> verts = {{{0, 0, 0.25f}, {}}, {{W, 0, 0.25f}, {}}, {{W, H, 0.25f}, {}}, {{0, H, 0.25f}, {}}};
+    const std::vector<VertexIn> nearer = {{{0, 0, -0.5f}, {}}, {{W, 0, -0.5f}, {}}, {{W, H, -0.5f}, {}}, {{0, H, -0.5f}, {}}};
+    const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall declared{verts, idx, &kPosition, {}}, undeclared{nearer, idx, &kUndeclaredVarying, {}};
+    declared.uniforms.model_view_projection = undeclared.uniforms.model_view_projection = window_to_clip(W, H);
+    const DrawCall both[] = {declared, undeclared};
+    for (Derivatives rule : {Derivatives::Fine, Derivatives::Analytic}) {
+        for (bool general : {false, true}) {
+            RasterOptions options;
+            options.derivatives = rule, options.force_general_path = general;
+            const Framebuffer fb = rasterize(W, H, glm::vec4(0.0f), both, options);
+            for (int y = 0; y < H; ++y) {
+                for (int x = 0; x < W; ++x) {
+                    INFO("rule " << int(rule) << " general " << general << " pixel " << x << ", " << y);
+                    const float* p = fb.pixel(x, H - 1 - y);
+                    CHECK(p[0] == float(x) + 0.5f);
+                    CHECK(p[1] == float(y) + 0.5f);
+                    CHECK(std::isnan(p[2]));
+                }
+            }
+            CHECK(rasterize(W, H, glm::vec4(0.0f), std::span(both, 1), options).pixel(3, 3)[2] == 0.25f);
+        }
+    }
 }
 
 TEST_CASE("degenerate, sliver and non-finite triangles are dropped without harm", "[raster][robustness]") {
