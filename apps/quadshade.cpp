@@ -110,8 +110,13 @@ struct RenderArgs {
     std::string memory_limit;  // empty: what the system has available
     std::vector<std::string> plugins;
     std::vector<std::string> uniforms;  // --uniform NAME=VALUE, read by parse_uniform_option
+    std::vector<std::string> raster_only;  // the rasterizer's own options given (kRasterOnly)
     bool animated() const { return frames.first >= 0; }
 };
+
+// Options only the rasterizer has: the ray caster refuses them, even at their default values,
+// rather than render something the command line did not describe.
+const char* const kRasterOnly[] = {"--fill-rule", "--interpolation", "--general-path"};
 
 void add_render_options(CLI::App& cmd, RenderArgs& a) {
     FrameRequest& r = a.request;
@@ -243,6 +248,8 @@ void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
 
 // ---- render ---------------------------------------------------------------------------------
 
+const char* precision_name(Precision p) { return p == Precision::Double ? "double" : "float"; }
+
 const char* rule_name(Derivatives d) {
     switch (d) {
         case Derivatives::None: return "none";
@@ -252,6 +259,49 @@ const char* rule_name(Derivatives d) {
         case Derivatives::Analytic: return "analytic";
     }
     return "?";
+}
+
+// Refuses (UsageError) what no backend honours as asked, before anything is read or written:
+// the rasterizer's own options with the ray caster, a shading request no instantiation honours.
+void refuse_unsupported(const RenderArgs& a) {
+    const FrameRequest& req = a.request;
+    if (req.backend == Backend::RayCaster && !a.raster_only.empty()) {
+        throw UsageError(a.raster_only.front() + ": a rasterizer option; the ray caster (--backend raycast) has no fill "
+                         "rule, plane interpolation or general path");
+    }
+    try {
+        check_supported(req);
+    } catch (const UnsupportedRequest& e) {
+        throw UsageError("--derivatives " + std::string(rule_name(req.raster.derivatives)) + " --precision " +
+                         precision_name(req.raster.precision) + (a.mask_output.empty() ? "" : " --undefined-mask") +
+                         ": " + e.what());
+    }
+}
+
+// The settings that decide the image's pixels beside the scene, as image metadata, so that an
+// image says how it was made (the undefined-case mask, threads and bands change no pixel).
+Metadata render_metadata(const RenderArgs& a, double time) {
+    const FrameRequest& req = a.request;
+    const RasterOptions& r = req.raster;
+    const bool raster = req.backend == Backend::Rasterizer;
+    Metadata m = {{"quadshade:scene", a.scene},
+                  {"quadshade:time", std::to_string(time)},
+                  {"quadshade:stable_time", req.stable_time ? "on" : "off"},
+                  {"quadshade:backend", raster ? "raster" : "raycast"},
+                  {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override},
+                  {"quadshade:derivatives", rule_name(r.derivatives)},
+                  {"quadshade:precision", precision_name(r.precision)},
+                  {"quadshade:quad_pairing", r.pairing == QuadPairing::BottomUp ? "bottom-up" : "top-down"}};
+    if (raster) {
+        m.emplace_back("quadshade:fill_rule", r.fill_rule == FillRule::RightTop ? "right-top" : "left-bottom");
+        m.emplace_back("quadshade:interpolation", r.fused_interpolation ? "fused" : "separate");
+    }
+    std::string uniforms, plugins;
+    for (const std::string& u : a.uniforms) uniforms += (uniforms.empty() ? "" : " ") + u;
+    for (const std::string& p : a.plugins) plugins += (plugins.empty() ? "" : " ") + p;
+    if (!uniforms.empty()) m.emplace_back("quadshade:uniforms", uniforms);
+    if (!plugins.empty()) m.emplace_back("quadshade:plugins", plugins);
+    return m;
 }
 
 bool writes_in_bands(const fs::path& file) {
@@ -281,7 +331,7 @@ std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs
 
 struct FrameTotals {
     double render_seconds = 0.0;
-    RasterStats stats;  // of the last frame
+    RenderStats stats;  // of the last frame
     UndefinedCounts undefined;
 };
 
@@ -292,23 +342,17 @@ struct FrameTotals {
 // once complete.
 void write_frame(SceneRenderer& renderer, const std::vector<RowBand>& bands, double time, const RenderArgs& a,
                  const std::string& output, const std::string& mask_output, Framebuffer& fb, FrameTotals& totals) {
-    const FrameRequest& req = a.request;
     std::optional<ImageWriter> image, mask;
     totals.stats = {};
     for (const RowBand& band : bands) {
-        RasterStats band_stats;
+        RenderStats band_stats;
         const auto t0 = std::chrono::steady_clock::now();
         renderer.render_into(fb, time, &band_stats, band);
         totals.render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         totals.stats.triangles_setup = band_stats.triangles_setup, totals.stats.lanes_shaded += band_stats.lanes_shaded;
         totals.stats.depth_buffer = band_stats.depth_buffer;  // decided for the whole frame, the same in every band
         if (!image) {
-            Metadata metadata = {{"quadshade:scene", a.scene},
-                                 {"quadshade:time", std::to_string(time)},
-                                 {"quadshade:stable_time", req.stable_time ? "on" : "off"},
-                                 {"quadshade:derivatives", rule_name(req.raster.derivatives)},
-                                 {"quadshade:backend", req.backend == Backend::RayCaster ? "raycast" : "raster"},
-                                 {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override}};
+            Metadata metadata = render_metadata(a, time);
             image.emplace(output, fb.width, fb.height, a.alpha, metadata);
             if (!mask_output.empty()) {
                 metadata.emplace_back("quadshade:undefined_mask",
@@ -338,11 +382,11 @@ void print_progress(int done, int total) {
 int cmd_render(RenderArgs& a) {
     FrameRequest& req = a.request;
     if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
-    if (req.raster.check_undefined = !a.mask_output.empty(); req.raster.check_undefined) {
-        if (req.raster.derivatives == Derivatives::Analytic) throw UsageError("--undefined-mask: not with --derivatives analytic");
-        if (req.raster.precision == Precision::Double) throw UsageError("--undefined-mask: not with --precision double");
-        if (resolved(a.mask_output) == resolved(a.output)) throw UsageError("--undefined-mask: the same file as -o");
+    req.raster.check_undefined = !a.mask_output.empty();
+    if (req.raster.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
+        throw UsageError("--undefined-mask: the same file as -o");
     }
+    refuse_unsupported(a);
     for (const std::string& u : a.uniforms) req.uniforms.push_back(parse_uniform_option(u));
     const std::uint64_t limit = memory_limit(a.memory_limit);
     const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
@@ -356,6 +400,7 @@ int cmd_render(RenderArgs& a) {
     path_of(a.output, first);  // a bad pattern is refused before anything is read
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
 
+    for (const std::string& plugin : a.plugins) load_plugin(plugin);
     Scene scene = load_scene(a.scene, a.load);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {
@@ -378,7 +423,7 @@ int cmd_render(RenderArgs& a) {
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const int nframes = last - first + 1, w = renderer.width(), h = renderer.height();
     const double render_seconds = totals.render_seconds;
-    const RasterStats& stats = totals.stats;
+    const RenderStats& stats = totals.stats;
     const UndefinedCounts& undefined = totals.undefined;
     std::fprintf(stderr, "quadshade: %d frame%s %dx%d in %.3f s (render %.1f ms/frame, %.1f Mpixel/s), %llu triangles, %llu lanes shaded",
                  nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / nframes,
@@ -523,13 +568,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade: %s\n\n%s", e.what(), app.help().c_str());
         return kExitUsage;
     }
+    for (const char* option : kRasterOnly) {
+        if (render_cmd->count(option) > 0) render.raster_only.emplace_back(option);
+    }
     try {
-        for (const std::string& plugin : render_cmd->parsed()   ? render.plugins
-                                         : volume_cmd->parsed() ? volume.plugins
-                                                                : shader_plugins) {
-            load_plugin(plugin);
-        }
-        if (render_cmd->parsed()) return cmd_render(render);
+        if (render_cmd->parsed()) return cmd_render(render);  // loads its plugins once its options are checked
+        for (const std::string& plugin : volume_cmd->parsed() ? volume.plugins : shader_plugins) load_plugin(plugin);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
@@ -539,6 +583,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const UniformOptionError& e) {  // a bad --uniform, or one no drawn shader takes
+        std::fprintf(stderr, "quadshade: %s\n", e.what());
+        return kExitUsage;
+    } catch (const UnsupportedRequest& e) {  // options no backend honours together
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const std::exception& e) {

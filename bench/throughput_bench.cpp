@@ -64,7 +64,7 @@ Stats time_frames(int repeat, F&& frame) {
 
 // What the specialised pipeline keeps for a shader, in words; the depth buffer is the frame's
 // (the plane's two triangles do not overlap: none).
-std::string needs_of(const char* shader, const qs::RasterStats& frame) {
+std::string needs_of(const char* shader, const qs::RenderStats& frame) {
     const qs::Program* p = qs::find_program(shader);
     if (!p) return "?";
     const qs::Needs& n = p->info().needs;
@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
                 qs::Framebuffer fb;
                 qs::SceneRenderer renderer(scene, req);
                 const Stats q = time_frames(repeat, [&] { renderer.render_into(fb, std::nullopt); });
-                qs::RasterStats frame;
+                qs::RenderStats frame;
                 renderer.render_into(fb, std::nullopt, &frame);
                 // The same frame through the general path: quads with helper lanes and a depth
                 // buffer whatever the shader needs.

@@ -13,42 +13,20 @@
 #include <string>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/global_control.h>
-
-#include "raster/block_layout.h"
+#include "core/block_layout.h"
+#include "core/float_environment.h"
+#include "core/lane_batch.h"
+#include "core/lanes16.h"
+#include "core/parallel.h"
+#include "core/prepared_draw.h"
+#include "core/tile_loop.h"
 #include "raster/clipper.h"
 #include "raster/depth_buffer.h"
-#include "raster/float_environment.h"
-#include "raster/lanes16.h"
-#include "raster/parallel.h"
 #include "raster/triangle_setup.h"
-#include "shading/shade_choice.h"
 
 namespace qs {
 
 namespace {
-
-// A draw's vertex stage output and the mode its fragments are shaded in.
-struct PreparedDraw {
-    const DrawCall* call;
-    ShadeMode mode;
-    bool quads;       // shade 2x2 quads with helper lanes
-    bool depth_test;  // LESS test and depth write (the same for every draw of a frame)
-    bool frag_coord;  // interpolate gl_FragCoord
-    int varyings;
-    unsigned flat;    // flat varyings
-    bool fused;       // fused plane evaluation
-};
-
-// Fragments waiting to be shaded: kBatchLanes pixel positions (framebuffer coordinates) and which
-// lanes write (bit i for lane i).
-struct Batch {
-    alignas(64) int x[kBatchLanes];
-    alignas(64) int y[kBatchLanes];
-    std::uint32_t write = 0;
-    int count = 0;
-};
 
 // Renders the triangles of one tile, in submission order, straight into the tile's part of the
 // framebuffer (no thread else writes there, so the result is the same for any thread count).
@@ -59,8 +37,10 @@ struct Batch {
 // reference's depth buffer holds (depth_buffer.h), and is stored once at the end.
 class TileRenderer {
 public:
-    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear)
-        : fb_(fb), draws_(draws), clear_(clear) {}
+    // `depth_test`: LESS test and depth write, for every draw of the frame or none; `fused`: fused
+    // plane evaluation.
+    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear, bool depth_test, bool fused)
+        : fb_(fb), draws_(draws), clear_(clear), depth_test_(depth_test), fused_(fused) {}
 
     // Starts the tile whose top-left pixel is (x0, y0); one renderer per thread renders its tiles
     // one after the other.
@@ -99,19 +79,19 @@ public:
         // plane) shares one reciprocal, the same number each lane would compute.
         affine_ = t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f;
         affine_rcp_ = 1.0f / t.inv_w.a0;
-        pending_.count = 0, pending_.write = 0;
+        pending_.clear();
         if (!d.frag_coord && frag_coord_set_) {
             // A shader that reads gl_FragCoord without saying so reads NaN, not the last draw's.
             for (FragmentBatch& in : in_) {
                 std::fill_n(&in.frag_coord[0][0], 4 * kBatchLanes, std::numeric_limits<float>::quiet_NaN());
             }
         }
-        frag_coord_set_ = d.frag_coord || d.depth_test;
+        frag_coord_set_ = d.frag_coord || depth_test_;
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y) return;
-        if (!d.depth_test && covers_tile(t, x0, y0)) {
-            if (d.fused) {
+        if (!depth_test_ && covers_tile(t, x0, y0)) {
+            if (fused_) {
                 shade_tile<true>(x0, y0);
             } else {
                 shade_tile<false>(x0, y0);
@@ -179,7 +159,7 @@ private:
                 mask |= std::uint32_t(in) << i;
             }
         }
-        if (draw_->depth_test) mask &= depth_mask(bx, by, mask);
+        if (depth_test_) mask &= depth_mask(bx, by, mask);
         if (mask == 0) return;
         if (draw_->quads) {
             // A quad runs when any of its lanes writes; its other lanes are helpers. Blocks whose
@@ -286,7 +266,7 @@ private:
         store_block(out, bx, by);
         const int block = block_base(bx, by) / kBatchLanes;
         touched_[std::size_t(block)] = true;
-        if (draw_->depth_test) {
+        if (depth_test_) {
             for (int i = 0; i < kBatchLanes; ++i) depth_[block * kBatchLanes + i] = depth24(in_[h].frag_coord[2][i]);
         }
         written_ += kBatchLanes;
@@ -307,11 +287,9 @@ private:
     // Adds one lane to the gathered batch; quads are appended four lanes at a time, so they stay
     // whole and aligned within it.
     void append(int x, int y, bool write) {
-        pending_.x[pending_.count] = x, pending_.y[pending_.count] = y;
-        pending_.write |= std::uint32_t(write) << pending_.count;
-        if (++pending_.count == kBatchLanes) {
+        if (pending_.add(x, y, write)) {
             flush(pending_);
-            pending_.count = 0, pending_.write = 0;
+            pending_.clear();
         }
     }
 
@@ -320,7 +298,7 @@ private:
         for (int i = 0; i < kBatchLanes; ++i) {
             if (!(mask >> i & 1)) continue;
             const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            const float z = tri_->z.at(float(x), float(y), draw_->fused);
+            const float z = tri_->z.at(float(x), float(y), fused_);
             pass |= std::uint32_t(depth24(z) < depth_[tile_index(x, y)]) << i;
         }
         return pass;
@@ -329,7 +307,7 @@ private:
     // The shader inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) from the
     // current triangle's planes; each lane computes exactly what PlaneEquation::at does.
     void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
-        if (draw_->fused) {
+        if (fused_) {
             interpolate<true>(in, x, y);
         } else {
             interpolate<false>(in, x, y);
@@ -353,7 +331,7 @@ private:
             store(in.frag_coord[1], float(fb_.height) - (y + 0.5f));  // GL window y points up
             store(in.frag_coord[2], at(t.z));
             store(in.frag_coord[3], at(t.inv_w));
-        } else if (d.depth_test) {
+        } else if (depth_test_) {
             store(in.frag_coord[2], at(t.z));  // the depth written
         }
         const bool analytic = d.mode.derivatives == Derivatives::Analytic;
@@ -382,10 +360,9 @@ private:
     }
 
     // Interpolates, shades and writes the gathered batch.
-    void flush(Batch& b) {
+    void flush(LaneBatch& b) {
         if (b.count == 0) return;
-        // Unused lanes repeat lane 0 (a valid position) and write nothing.
-        for (int i = b.count; i < kBatchLanes; ++i) b.x[i] = b.x[0], b.y[i] = b.y[0];
+        b.pad();
         interpolate(in_[0], lanes16::to_float(lanes16::load(b.x)), lanes16::to_float(lanes16::load(b.y)));
         draw_->call->program->shade(draw_->mode, in_[0], draw_->call->uniforms, out_[0]);
         lanes_ += std::uint64_t(b.count);
@@ -405,7 +382,7 @@ private:
         float* p = fb_.pixel(x, y);
         for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i];
         if (draw_->mode.check_undefined) *undefined_at(x, y) = out_[h].undefined[i];
-        if (draw_->depth_test) depth_[t] = depth24(in_[h].frag_coord[2][i]);
+        if (depth_test_) depth_[t] = depth24(in_[h].frag_coord[2][i]);
         ++written_;
     }
 
@@ -442,6 +419,7 @@ private:
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
     glm::vec4 clear_;
+    bool depth_test_, fused_;
     int x0_ = 0, y0_ = 0;
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];  // 24-bit depths (depth24), exact in float
@@ -450,7 +428,7 @@ private:
     const PreparedDraw* draw_ = nullptr;
     bool affine_ = false;      // tri_'s 1/w is constant
     float affine_rcp_ = 0.0f;  // and this its reciprocal
-    Batch pending_;
+    LaneBatch pending_;
     bool frag_coord_set_ = true;  // in_[].frag_coord may hold numbers (it starts uninitialised)
     struct WaitingBlock {
         int bx, by;
@@ -464,81 +442,22 @@ private:
 
 }  // namespace
 
-void check_image_size(int width, int height) {
-    if (width <= 0 || height <= 0 || width > kMaxDimension || height > kMaxDimension) {
-        throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
-                                    " is outside 1.." + std::to_string(kMaxDimension));
-    }
-}
-
-int quad_row_offset(int height, QuadPairing pairing) {
-    // Top-down pairing: framebuffer rows (2k, 2k+1), offset 0. Bottom-up: GL rows (2k, 2k+1) are
-    // framebuffer rows (H-2-2k, H-1-2k), so at an odd height the grid starts at row -1.
-    return (pairing == QuadPairing::BottomUp && (height & 1)) ? -1 : 0;
-}
-
-std::vector<RowBand> image_bands(int height, QuadPairing pairing, int max_rows) {
-    const int row0 = quad_row_offset(height, pairing);
-    const int tile_rows = std::max(1, max_rows / kTileSize);
-    std::vector<RowBand> bands;
-    for (int begin = 0; begin < height;) {
-        // The first band starts at row 0 inside the tile that begins at row0 (-1 or 0).
-        const int end = std::min(height, row0 + ((begin - row0) / kTileSize + tile_rows) * kTileSize);
-        bands.push_back({begin, end});
-        begin = end;
-    }
-    return bands;
-}
-
-RowBand checked_band(RowBand band, int height, QuadPairing pairing) {
-    if (band.begin == 0 && band.end == 0) return {0, height};
-    const int row0 = quad_row_offset(height, pairing);
-    auto on_grid = [&](int row, int edge) { return row == edge || (row - row0) % kTileSize == 0; };
-    if (band.begin < 0 || band.end > height || band.begin >= band.end || !on_grid(band.begin, 0) ||
-        !on_grid(band.end, height)) {
-        throw std::invalid_argument("row band " + std::to_string(band.begin) + ".." + std::to_string(band.end) +
-                                    " does not lie on the tile grid of an image " + std::to_string(height) + " rows high");
-    }
-    return band;
-}
-
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                      const RasterOptions& options, RasterStats* stats) {
+                      const RasterOptions& options, RenderStats* stats) {
     Framebuffer fb;
     rasterize_into(fb, width, height, clear, draws, options, stats);
     return fb;
 }
 
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RasterStats* stats_out, RowBand band) {
+                    const RasterOptions& options, RenderStats* stats_out, RowBand band) {
     check_image_size(width, height);
     band = checked_band(band, height, options.pairing);
-    const ShadeRequest request{options.derivatives, options.precision, options.check_undefined,
-                               options.force_general_path};
-    check_supported(request);
-    std::vector<PreparedDraw> prepared;
-    for (const DrawCall& call : draws) {
-        if (!call.program) throw std::invalid_argument("draw call without a program");
-        const Needs& needs = call.program->info().needs;
-        const DrawShading shading = choose_shading(needs, call.texture_lod, request);
-        PreparedDraw d{&call,
-                       shading.mode,
-                       shading.quads,
-                       false,  // decided below, for the whole frame
-                       needs.frag_coord || options.force_general_path,
-                       needs.varyings,
-                       needs.flat_varyings,
-                       options.fused_interpolation};
-        prepared.push_back(d);
-    }
+    const std::vector<PreparedDraw> prepared = prepare_draws(
+        draws, {options.derivatives, options.precision, options.check_undefined, options.force_general_path});
+    const ThreadLimit limit(options.threads);
 
-    std::unique_ptr<tbb::global_control> limit;
-    if (options.threads > 0) {
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      std::size_t(options.threads));
-    }
-
-    RasterStats stats;
+    RenderStats stats;
     // Vertex stage, clipping and setup, per draw, triangles kept in submission order; with
     // denormals flushed, as Mesa's draw module runs them.
     const Viewport viewport(width, height);
@@ -579,51 +498,33 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     // Depth is tested for every draw or none: GL tests it always, and leaving it out is only
     // allowed where it provably changes nothing (depth_buffer.h).
     const bool depth = options.force_general_path || depth_buffer_matters(triangles, width, height);
-    for (PreparedDraw& d : prepared) d.depth_test = depth;
     stats.depth_buffer = depth;
 
-    // Binning: tile rows follow the quad grid so that no quad straddles two tiles.
-    const int row0 = quad_row_offset(height, options.pairing);
-    // A band's tiles are the whole frame's tile rows band_ty0.. (bins[0] is the band's first).
-    const int tiles_x = (width + kTileSize - 1) / kTileSize;
-    const int band_ty0 = (band.begin - row0) / kTileSize;
-    const int tiles_y = (band.end - row0 + kTileSize - 1) / kTileSize - band_ty0;
-    std::vector<std::vector<std::uint32_t>> bins(std::size_t(tiles_x) * std::size_t(tiles_y));
+    // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order.
+    const TileGrid grid(width, height, options.pairing, band);
+    std::vector<std::vector<std::uint32_t>> bins(std::size_t(grid.count()));
     for (std::uint32_t i = 0; i < triangles.size(); ++i) {
         const TriangleSetup& t = triangles[i];
         const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
-        const int ty0 = std::max((t.min_y - row0) / kTileSize - band_ty0, 0);
-        const int ty1 = std::min((t.max_y - row0) / kTileSize - band_ty0, tiles_y - 1);
+        const int ty0 = std::max(grid.row_of(t.min_y), 0), ty1 = std::min(grid.row_of(t.max_y), grid.rows - 1);
         for (int ty = ty0; ty <= ty1; ++ty) {
-            for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty) * std::size_t(tiles_x) + std::size_t(tx)].push_back(i);
+            for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty * grid.columns + tx)].push_back(i);
         }
     }
 
     // Every pixel is stored by its tile: reuse the caller's memory, no clearing pass.
-    fb.width = width, fb.height = height;
-    fb.first_row = band.begin, fb.rows = band.end - band.begin;
-    const std::size_t pixels = std::size_t(width) * std::size_t(fb.rows);
-    fb.rgba.resize(pixels * 4);
-    fb.depth.resize(depth ? pixels : 0);
-    fb.undefined.resize(options.check_undefined ? pixels : 0);
-    // One renderer per thread, made once per frame rather than once per tile: it holds a tile's
-    // depth.
-    tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers;
-    parallel_chunks<std::size_t>(0, bins.size(), 1, [&](const auto& r) {
-        const FlushDenormals ftz;
-        std::unique_ptr<TileRenderer>& tile = renderers.local();
-        if (!tile) tile = std::make_unique<TileRenderer>(fb, prepared, clear);
-        for (std::size_t b = r.begin(); b != r.end(); ++b) {
-            const int tx = int(b % std::size_t(tiles_x)), ty = int(b / std::size_t(tiles_x));
-            const int x0 = tx * kTileSize, y0 = row0 + (band_ty0 + ty) * kTileSize;
-            tile->start(x0, y0);
-            for (std::uint32_t i : bins[b]) tile->render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
-            tile->finish();
-        }
-    });
-    for (const auto& tile : renderers) {
-        stats.quads += tile->quads(), stats.lanes_shaded += tile->lanes(), stats.pixels_written += tile->written();
-    }
+    fb.hold(width, height, band, depth, options.check_undefined);
+    const auto tiles = for_each_tile<TileRenderer>(
+        grid, [&] { return std::make_unique<TileRenderer>(fb, prepared, clear, depth, options.fused_interpolation); },
+        [&](TileRenderer& tile, int b) {
+            const int x0 = grid.x0(b), y0 = grid.y0(b);
+            tile.start(x0, y0);
+            for (std::uint32_t i : bins[std::size_t(b)]) {
+                tile.render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
+            }
+            tile.finish();
+        });
+    for (const auto& tile : tiles) stats.add_work(tile->quads(), tile->lanes(), tile->written());
     if (stats_out) *stats_out = stats;
 }
 

@@ -1,10 +1,10 @@
 #pragma once
 // The 2x2-quad rasterizer: draw calls in, a framebuffer out, as a GL driver would produce it.
 //
-// Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping (clipper.h) -> triangle setup ->
-// binning into 64x64 tiles -> tiles in parallel (oneTBB), each tile's triangles in submission
-// order -> quads (or single pixels for derivative-free shaders) batched kBatchLanes lanes at a
-// time -> early depth test (unless no two triangles overlap: depth_buffer.h) -> shading -> colour
+// Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping (clipper.h) -> triangle
+// setup -> binning into 64x64 tiles (core/tile_grid.h) -> tiles in parallel (core/tile_loop.h),
+// each tile's triangles in submission order -> quads (or single pixels for derivative-free
+// shaders) batched kBatchLanes lanes at a time -> early depth test (unless no two triangles overlap: depth_buffer.h) -> shading -> colour
 // and depth writes for covered lanes only.
 // The output is bit-identical for any thread count.
 
@@ -14,18 +14,15 @@
 
 #include <glm/vec4.hpp>
 
-#include "raster/draw_call.h"
+#include "core/draw_call.h"
+#include "core/framebuffer.h"
+#include "core/render_stats.h"
+#include "core/tile_grid.h"
 #include "raster/edge_function.h"
 #include "raster/plane_equation.h"
-#include "raster/framebuffer.h"
 #include "shading/program.h"
 
 namespace qs {
-
-// Which rows form a quad. OSMesa's default buffer is stored top-down and pairs rows counting
-// from the top, so at an odd height GL window row 0 pairs with a helper row below the image;
-// an FBO pairs GL rows (2k, 2k+1) from the bottom.
-enum class QuadPairing { TopDown, BottomUp };
 
 struct RasterOptions {
     Derivatives derivatives = Derivatives::Fine;  // for shaders that take derivatives
@@ -49,46 +46,14 @@ struct RasterOptions {
     int threads = 0;  // 0: all cores
 };
 
-struct RasterStats {
-    std::uint64_t triangles_in = 0, triangles_setup = 0;
-    std::uint64_t quads = 0;          // quads shaded (quad path)
-    std::uint64_t lanes_shaded = 0;   // lanes run through a shader, helpers included
-    std::uint64_t pixels_written = 0;
-    bool depth_buffer = false;        // the frame was depth tested (depth_buffer.h)
-};
-
-// Rows [begin, end) of an image, top-down: a render of a band holds and renders those rows
-// only, each pixel exactly as a render of the whole image gives it. {0, 0}: the whole image.
-struct RowBand {
-    int begin = 0, end = 0;
-};
-
 // Renders draws into a width x height framebuffer cleared to `clear`.
 // Throws std::invalid_argument for absurd sizes or a draw without a program, UnsupportedRequest
 // (shade_choice.h) for options no shader instantiation honours.
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                      const RasterOptions& options, RasterStats* stats = nullptr);
+                      const RasterOptions& options, RenderStats* stats = nullptr);
 // The same into `fb`, reusing its memory (animation loops, benchmarks): every pixel is written;
-// with a band (from image_bands), only its rows.
+// with a band (image_bands, core/tile_grid.h), only its rows.
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RasterStats* stats = nullptr, RowBand band = {});
-
-// The number of tiles' rows and columns, and the quad grid's row offset, for a framebuffer.
-inline constexpr int kTileSize = 64;
-int quad_row_offset(int height, QuadPairing pairing);
-
-// An image's rows in bands of at most `max_rows` (at least one tile row), split on the tile
-// grid: a tile, and so every quad, lies in one band, and a band renders exactly its part of the
-// whole frame. The same split serves both backends.
-std::vector<RowBand> image_bands(int height, QuadPairing pairing, int max_rows);
-// `band` resolved ({0, 0}: the whole image) and checked to be one image_bands could give;
-// throws std::invalid_argument otherwise.
-RowBand checked_band(RowBand band, int height, QuadPairing pairing);
-
-// Framebuffer sizes both renderers accept: 1..kMaxDimension on each side (clipped vertices lie
-// in the viewport, so edge-function products stay below 2^52). Throws std::invalid_argument
-// naming the size otherwise.
-inline constexpr int kMaxDimension = 1 << 15;
-void check_image_size(int width, int height);
+                    const RasterOptions& options, RenderStats* stats = nullptr, RowBand band = {});
 
 }  // namespace qs

@@ -1,7 +1,6 @@
 #include "raycast/ray_caster.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -16,13 +15,12 @@
 #include <glm/matrix.hpp>
 #include <glm/vec3.hpp>
 
-#include <tbb/global_control.h>
-
-#include "raster/block_layout.h"
+#include "core/block_layout.h"
+#include "core/lane_batch.h"
+#include "core/parallel.h"
+#include "core/prepared_draw.h"
+#include "core/tile_loop.h"
 #include "raycast/embree_scene.h"
-#include "shading/shade_choice.h"
-#include "raster/float_environment.h"
-#include "raster/parallel.h"
 
 namespace qs {
 
@@ -104,33 +102,36 @@ void check_rays(const Eye& eye, int width, int height) {
     }
 }
 
-// How one draw's fragments are produced.
-struct PreparedDraw {
-    const DrawCall* call;
-    const Mesh* mesh;
-    ShadeMode mode;
-    bool quads;
-    int varyings;
-    unsigned flat;
-};
-
-// Fragments waiting to be shaded with one draw's program: pixel positions (framebuffer
-// coordinates), their lanes in their blocks, the primitive each lane is evaluated on and where
-// its ray met it, and which lanes write.
-struct Batch {
-    int x[kBatchLanes], y[kBatchLanes];
+// Fragments waiting to be shaded with one draw's program: their pixels and which write, and for
+// each lane its place in its block, the primitive it is evaluated on and where its ray met it.
+struct HitBatch {
+    LaneBatch lanes;
     std::uint8_t lane[kBatchLanes];
     std::uint32_t primitive[kBatchLanes];
     float t[kBatchLanes];
-    std::uint32_t write = 0;
-    int count = 0;
 };
 
+// Casts and shades the tiles of one thread, one after the other (tile_loop.h).
 class TileCaster {
 public:
-    TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws)
-        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), pending_(draws.size()) {}
+    TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws,
+               const std::vector<Mesh>& meshes)
+        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), pending_(draws.size()) {}
 
+    // Casts, shades and writes the tile whose top-left pixel is (x0, y0).
+    void tile(int x0, int y0, glm::vec4 clear) {
+        for (int by = y0; by < std::min(y0 + kTileSize, fb_.height); by += kBlock) {
+            for (int bx = x0; bx < std::min(x0 + kTileSize, fb_.width); bx += kBlock) block(bx, by, clear);
+        }
+        finish();
+        cast_past_discards(clear);
+    }
+
+    std::uint64_t quads() const { return quads_; }
+    std::uint64_t lanes() const { return lanes_; }
+    std::uint64_t written() const { return written_; }
+
+private:
     // Casts, shades and writes the 4x4 block whose top-left pixel is (bx, by) in framebuffer
     // coordinates; pixels outside the framebuffer only ever serve as helpers. Only the lanes in
     // `lanes` are cast, from tnear[i] on when given.
@@ -204,26 +205,20 @@ public:
         }
     }
 
-    std::uint64_t quads() const { return quads_; }
-    std::uint64_t lanes() const { return lanes_; }
-    std::uint64_t written() const { return written_; }
-
-private:
     // Quads are appended four lanes at a time and batches hold whole quads, so they stay aligned.
     void append(std::uint32_t g, int lane, int x, int y, std::uint32_t primitive, float t, bool write) {
-        Batch& b = pending_[g];
-        b.x[b.count] = x, b.y[b.count] = y, b.primitive[b.count] = primitive;
-        b.lane[b.count] = std::uint8_t(lane), b.t[b.count] = t;
-        b.write |= std::uint32_t(write) << b.count;
-        if (++b.count == kBatchLanes) flush(g);
+        HitBatch& b = pending_[g];
+        const int i = b.lanes.count;
+        b.primitive[i] = primitive, b.lane[i] = std::uint8_t(lane), b.t[i] = t;
+        if (b.lanes.add(x, y, write)) flush(g);
     }
 
     // Lane `lane` of in_: the pixel's ray meets triangle `primitive`'s plane at P; the attributes
     // there are the vertices' weighted by P's barycentric coordinates, which is perspective-
     // correct interpolation (a GPU's a/w over 1/w is the same point seen from the screen). For a
     // helper lane P lies outside the triangle and the weights extrapolate.
-    void fragment(const PreparedDraw& d, int lane, int x, int y, std::uint32_t primitive, bool differentials) {
-        const Mesh& m = *d.mesh;
+    void fragment(const PreparedDraw& d, const Mesh& m, int lane, int x, int y, std::uint32_t primitive,
+                  bool differentials) {
         const Triangle& tri = m.triangles[primitive];
         const glm::dvec3 p0 = m.world[tri[0]], e1 = m.world[tri[1]] - p0, e2 = m.world[tri[2]] - p0;
         const glm::dvec3 n = glm::cross(e1, e2);
@@ -271,28 +266,29 @@ private:
     }
 
     void flush(std::size_t g) {
-        Batch& b = pending_[g];
-        if (b.count == 0) return;
+        HitBatch& b = pending_[g];
+        LaneBatch& at = b.lanes;
+        if (at.count == 0) return;
         const PreparedDraw& d = draws_[g];
         const bool differentials = d.mode.derivatives == Derivatives::Analytic;
         for (int i = 0; i < kBatchLanes; ++i) {
-            const int k = i < b.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
-            fragment(d, i, b.x[k], b.y[k], b.primitive[k], differentials);
+            const int k = i < at.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
+            fragment(d, meshes_[g], i, at.x[k], at.y[k], b.primitive[k], differentials);
         }
         d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
-        lanes_ += std::uint64_t(b.count);
-        for (int i = 0; i < b.count; ++i) {
-            if (!(b.write >> i & 1)) continue;
+        lanes_ += std::uint64_t(at.count);
+        for (int i = 0; i < at.count; ++i) {
+            if (!(at.write >> i & 1)) continue;
             if (out_.discarded >> i & 1) {
-                discarded_.push_back({b.x[i] - kLaneDx[b.lane[i]], b.y[i] - kLaneDy[b.lane[i]], b.lane[i], b.t[i]});
+                discarded_.push_back({at.x[i] - kLaneDx[b.lane[i]], at.y[i] - kLaneDy[b.lane[i]], b.lane[i], b.t[i]});
                 continue;
             }
-            float* p = fb_.pixel(b.x[i], b.y[i]);
+            float* p = fb_.pixel(at.x[i], at.y[i]);
             for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
-            if (d.mode.check_undefined) *undefined_at(b.x[i], b.y[i]) = out_.undefined[i];
+            if (d.mode.check_undefined) *undefined_at(at.x[i], at.y[i]) = out_.undefined[i];
             ++written_;
         }
-        b.count = 0, b.write = 0;
+        at.clear();
     }
 
     std::uint8_t* undefined_at(int x, int y) { return &fb_.undefined[fb_.index(x, y)]; }
@@ -301,7 +297,8 @@ private:
     const EmbreeScene& bvh_;
     const Eye& eye_;
     const std::vector<PreparedDraw>& draws_;
-    std::vector<Batch> pending_;  // per draw
+    const std::vector<Mesh>& meshes_;  // per draw
+    std::vector<HitBatch> pending_;    // per draw
     // Fragments that discarded: their block, lane and where their ray met the surface.
     struct Discarded {
         int bx, by, lane;
@@ -333,7 +330,6 @@ struct RayCaster::Impl {
     std::vector<Mesh> meshes;
     std::unique_ptr<EmbreeScene> bvh;
     double build_seconds = 0.0;
-    int builds = 0;
 
     // World positions from this frame's gl_Position; true when they differ from the BVH's.
     bool update_positions() {
@@ -384,7 +380,6 @@ struct RayCaster::Impl {
         }
         scene->commit();
         bvh = std::move(scene);
-        ++builds;
         build_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 };
@@ -401,68 +396,38 @@ RayCaster::RayCaster(std::span<const DrawCall> draws, const glm::mat4& clip_from
 RayCaster::~RayCaster() = default;
 
 double RayCaster::build_seconds() const { return impl_->build_seconds; }
-int RayCaster::builds() const { return impl_->builds; }
 
 void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                            const RayCastOptions& options, RasterStats* stats_out, RowBand band) {
+                            const RayCastOptions& options, RenderStats* stats_out, RowBand band) {
     Impl& im = *impl_;
     check_image_size(width, height);
     band = checked_band(band, height, options.pairing);
-    const ShadeRequest request{options.derivatives, options.precision, options.check_undefined};
-    check_supported(request);
+    const std::vector<PreparedDraw> prepared =
+        prepare_draws(draws, {options.derivatives, options.precision, options.check_undefined});
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
     for (std::size_t i = 0; i < draws.size(); ++i) {
         if (draws[i].vertices.size() != im.meshes[i].out.size()) {
             throw std::invalid_argument("ray caster: draw " + std::to_string(i) + " has other vertices than its BVH");
         }
     }
-    std::unique_ptr<tbb::global_control> limit;
-    if (options.threads > 0) {
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      std::size_t(options.threads));
-    }
+    const ThreadLimit limit(options.threads);
     run_vertex_stages(draws, im.meshes);
     if (im.update_positions()) im.build(draws);
 
-    RasterStats stats;
-    std::vector<PreparedDraw> prepared;
+    RenderStats stats;
     for (std::size_t i = 0; i < draws.size(); ++i) {
-        const Needs& needs = draws[i].program->info().needs;
-        const DrawShading shading = choose_shading(needs, draws[i].texture_lod, request);
-        PreparedDraw d{&draws[i], &im.meshes[i], shading.mode, shading.quads, needs.varyings, needs.flat_varyings};
-        prepared.push_back(d);
         stats.triangles_in += draws[i].indices.size() / 3;
         stats.triangles_setup += im.meshes[i].triangles.size();
     }
     im.eye.ndc_per_x = 2.0 / width, im.eye.ndc_per_y = 2.0 / height;
     check_rays(im.eye, width, height);
 
-    fb.width = width, fb.height = height;
-    fb.first_row = band.begin, fb.rows = band.end - band.begin;
-    const std::size_t pixels = std::size_t(width) * std::size_t(fb.rows);
-    fb.rgba.resize(pixels * 4);
-    fb.depth.clear();
-    fb.undefined.resize(options.check_undefined ? pixels : 0);
-    // The band's tiles: the whole frame's tile rows band_ty0.., each cast whole.
-    const int row0 = quad_row_offset(height, options.pairing);
-    const int tiles_x = (width + kTileSize - 1) / kTileSize;
-    const int band_ty0 = (band.begin - row0) / kTileSize;
-    const int tiles_y = (band.end - row0 + kTileSize - 1) / kTileSize - band_ty0;
-    std::atomic<std::uint64_t> quads{0}, lanes{0}, written{0};
-    parallel_chunks<int>(0, tiles_x * tiles_y, 1, [&](const auto& r) {
-        const FlushDenormals ftz;
-        for (int tile = r.begin(); tile != r.end(); ++tile) {
-            const int x0 = (tile % tiles_x) * kTileSize, y0 = row0 + (band_ty0 + tile / tiles_x) * kTileSize;
-            TileCaster caster(fb, *im.bvh, im.eye, prepared);
-            for (int by = y0; by < std::min(y0 + kTileSize, height); by += kBlock) {
-                for (int bx = x0; bx < std::min(x0 + kTileSize, width); bx += kBlock) caster.block(bx, by, clear);
-            }
-            caster.finish();
-            caster.cast_past_discards(clear);
-            quads += caster.quads(), lanes += caster.lanes(), written += caster.written();
-        }
-    });
-    stats.quads = quads, stats.lanes_shaded = lanes, stats.pixels_written = written;
+    fb.hold(width, height, band, false, options.check_undefined);
+    const TileGrid grid(width, height, options.pairing, band);
+    const auto casters = for_each_tile<TileCaster>(
+        grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes); },
+        [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i), clear); });
+    for (const auto& caster : casters) stats.add_work(caster->quads(), caster->lanes(), caster->written());
     if (stats_out) *stats_out = stats;
 }
 

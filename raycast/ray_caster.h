@@ -1,7 +1,8 @@
 #pragma once
-// The ray caster: the rasterizer's second way to produce fragments, from the same draw calls,
-// through the same programs, into the same framebuffer. Primary rays go from the near plane to
-// the far plane through pixel centres, cast 16 at a time (one 4x4 block, four quads) with Embree.
+// The ray caster: the second way to produce fragments, from the same draw calls, through the same
+// programs, into the same framebuffer, in the same tile loop (core/). Primary rays go from the
+// near plane to the far plane through pixel centres, cast 16 at a time (one 4x4 block, four
+// quads) with Embree.
 //
 // Quad derivatives: a 2x2 quad runs once for every primitive its covered pixels hit, as the
 // rasterizer runs it once per triangle covering it. In each run all four rays are intersected with
@@ -21,9 +22,10 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
-#include "raster/draw_call.h"
-#include "raster/framebuffer.h"
-#include "raster/rasterizer.h"
+#include "core/draw_call.h"
+#include "core/framebuffer.h"
+#include "core/render_stats.h"
+#include "core/tile_grid.h"
 
 namespace qs {
 
@@ -31,7 +33,7 @@ struct RayCastOptions {
     Derivatives derivatives = Derivatives::Fine;  // a quad rule, or Analytic: ray differentials
     Precision precision = Precision::Float;
     QuadPairing pairing = QuadPairing::TopDown;
-    bool check_undefined = false;  // fill Framebuffer::undefined, as RasterOptions::check_undefined
+    bool check_undefined = false;  // fill Framebuffer::undefined, as the rasterizer's
     int threads = 0;  // 0: all cores
 };
 
@@ -47,12 +49,11 @@ public:
 
     // Renders `draws` (the construction's meshes in the same order; uniforms may change, e.g.
     // time) into a width x height framebuffer cleared to `clear`, or only the rows of `band`
-    // (rasterizer.h). Writes colour only: visibility is the closest hit, no depth buffer.
+    // (core/tile_grid.h). Writes colour only: visibility is the closest hit, no depth buffer.
     void render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                     const RayCastOptions& options, RasterStats* stats = nullptr, RowBand band = {});
+                     const RayCastOptions& options, RenderStats* stats = nullptr, RowBand band = {});
 
     double build_seconds() const;  // time spent building BVHs, in total
-    int builds() const;            // BVHs built: 1 unless a vertex stage moved vertices
 
 private:
     struct Impl;

@@ -29,6 +29,20 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
+void check_supported(const FrameRequest& request) {
+    const RasterOptions& r = request.raster;
+    check_supported(ShadeRequest{r.derivatives, r.precision, r.check_undefined, r.force_general_path});
+    if (request.backend != Backend::RayCaster) return;
+    // The ray caster's rays meet the surface in double: it has no fill rule, no plane
+    // interpolation to fuse, and shades every draw as its needs say.
+    const RasterOptions defaults;
+    if (r.fill_rule != defaults.fill_rule || r.fused_interpolation != defaults.fused_interpolation ||
+        r.force_general_path) {
+        throw UnsupportedRequest("the ray caster has no fill rule, plane interpolation or general path: those are the "
+                                 "rasterizer's settings");
+    }
+}
+
 const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& program, std::string_view uniform, int dims) {
     const std::string what = scene_.file.string() + ": material '" + o.material + "': shader '" +
                              std::string(program.info().name) + "' samples " + (dims == 3 ? "a sampler3D" : "a sampler2D") +
@@ -63,6 +77,7 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
       request_(request),
       width_(request.width > 0 ? request.width : scene.width),
       height_(request.height > 0 ? request.height : scene.height) {
+    check_supported(request);
     const float aspect = float(width_) / float(height_);
     vertices_.resize(scene.meshes.size());
     textures_.resize(scene.textures.size());
@@ -140,7 +155,7 @@ std::uint64_t SceneRenderer::frame_bytes(int rows) const {
     return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
 }
 
-void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats, RowBand band) {
+void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RenderStats* stats, RowBand band) {
     const double t = time.value_or(request_.time.value_or(double(scene_.time)));
     for (DrawCall& d : draws_) {
         const double period = d.program->info().time_period;
@@ -161,13 +176,13 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ras
     rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster, stats, band);
 }
 
-Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats) {
+Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats) {
     Framebuffer fb;
     render_frame_into(fb, scene, request, stats);
     return fb;
 }
 
-void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats) {
+void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RenderStats* stats) {
     SceneRenderer(scene, request).render_into(fb, std::nullopt, stats);
 }
 

@@ -11,6 +11,7 @@
 
 #include "raster/rasterizer.h"
 #include "scenes/scene.h"
+#include "shading/shade_choice.h"
 
 namespace qs {
 
@@ -33,8 +34,14 @@ struct FrameRequest {
     RasterOptions raster;
 };
 
+// Throws UnsupportedRequest (shading/shade_choice.h) for a request no backend honours as asked:
+// a shading request no instantiation honours, or rasterizer settings (fill rule, interpolation,
+// the general path) other than their defaults given to the ray caster, which has none of them.
+void check_supported(const FrameRequest& request);
+
 // A scene made ready for frames: shaders resolved, textures loaded, draw calls built and, for the
-// ray caster, the BVH built; each frame then only changes the time. Throws SceneError for an
+// ray caster, the BVH built; each frame then only changes the time. Throws UnsupportedRequest as
+// check_supported does, before anything is loaded; SceneError for an
 // unknown or missing shader (naming the scene file and material), a shader that samples a
 // texture its material lacks, or a texture that cannot be read (naming the file and the field),
 // std::runtime_error when the ray caster was not built in.
@@ -46,7 +53,7 @@ public:
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
     // A frame at `time`, or the rows of `band` only (image_bands, rasterizer.h): the same pixels.
-    void render_into(Framebuffer& fb, std::optional<double> time, RasterStats* stats = nullptr, RowBand band = {});
+    void render_into(Framebuffer& fb, std::optional<double> time, RenderStats* stats = nullptr, RowBand band = {});
     int width() const { return width_; }
     int height() const { return height_; }
     double bvh_build_seconds() const;  // 0 for the rasterizer
@@ -73,8 +80,8 @@ private:
 };
 
 // One frame, for callers that render a scene once.
-Framebuffer render_frame(Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
-void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RasterStats* stats = nullptr);
+Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);
+void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);
 
 // The shader each object is drawn with under `shader_override`, checked against the catalogue.
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override);

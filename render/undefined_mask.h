@@ -11,7 +11,7 @@
 #include <array>
 #include <cstdint>
 
-#include "raster/framebuffer.h"
+#include "core/framebuffer.h"
 #include "scenes/image_io.h"
 #include "shading/number/checked.h"
 

@@ -9,6 +9,7 @@
 // float pixels two batches wide (shade_pair).
 
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -39,7 +40,9 @@ inline constexpr bool kWidePairs = true;
 inline constexpr bool kWidePairs = false;
 #endif
 
-// A shader's view of its inputs, in number type F.
+// A shader's view of its inputs, in number type F. Varyings past the shader's Needs::varyings
+// read as NaN (as gl_FragCoord does without Needs::frag_coord): a shader that reads a varying it
+// did not declare gets no other draw's or batch's values, and the reference comparisons fail on it.
 template <class F>
 struct FragmentIn {
     glsl::vec4<F> gl_FragCoord;
@@ -129,6 +132,12 @@ void store(const F& v, float* out) {
 
 template <class Shader>
 class ProgramOf final : public Program {
+    static constexpr Needs kNeeds = Shader::info.needs;
+    static_assert(kNeeds.varyings >= 0 && kNeeds.varyings <= kMaxVaryings,
+                  "Needs::varyings: a vertex stage writes at most kMaxVaryings floats");
+    static_assert((kNeeds.flat_varyings >> kNeeds.varyings) == 0,
+                  "Needs::flat_varyings names a varying past Needs::varyings");
+
 public:
     const ShaderInfo& info() const override { return Shader::info; }
 
@@ -230,7 +239,8 @@ private:
         using program_detail::load_pair;
         FragmentIn<F> f;
         for (int k = 0; k < 4; ++k) f.gl_FragCoord[k] = load_pair<F>(a.frag_coord[k], b.frag_coord[k]);
-        for (int v = 0; v < Shader::info.needs.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
+        for (int v = 0; v < kNeeds.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
+        for (int v = kNeeds.varyings; v < kMaxVaryings; ++v) f.varying[v] = F(std::numeric_limits<float>::quiet_NaN());
         const auto result = Shader::template fragment<F>(f, u);
         const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) program_detail::store_pair(c[k], out_a.rgba[k], out_b.rgba[k]);
@@ -266,9 +276,8 @@ private:
             f.gl_FragCoord = {load<F>(in.frag_coord[0], nullptr, nullptr), load<F>(in.frag_coord[1], nullptr, nullptr),
                               load<F>(in.frag_coord[2], nullptr, nullptr), load<F>(in.frag_coord[3], nullptr, nullptr)};
         }
-        for (int v = 0; v < Shader::info.needs.varyings; ++v) {
-            f.varying[v] = load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]);
-        }
+        for (int v = 0; v < kNeeds.varyings; ++v) f.varying[v] = load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]);
+        for (int v = kNeeds.varyings; v < kMaxVaryings; ++v) f.varying[v] = F(std::numeric_limits<float>::quiet_NaN());
         return Shader::template fragment<F>(f, u);
     }
 };

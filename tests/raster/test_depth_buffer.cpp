@@ -180,7 +180,7 @@ TEST_CASE("leaving the depth buffer out changes no pixel of a non-overlapping me
         RasterOptions lean, depth;
         lean.fill_rule = depth.fill_rule = rule;
         depth.force_general_path = true;
-        RasterStats stats;
+        RenderStats stats;
         const Framebuffer a = rasterize(64, 64, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), lean, &stats);
         const Framebuffer b = rasterize(64, 64, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), depth);
         CHECK_FALSE(stats.depth_buffer);

@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "raster/block_layout.h"
+#include "core/block_layout.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"
@@ -38,9 +38,15 @@ struct UndeclaredSquareY : SquareY {
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
+// The position shader declaring two of the five varyings its vertex stage writes, and reading three.
+struct UndeclaredVarying : Position {
+    static constexpr ShaderInfo info{"test_position_undeclared", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 2}, {}, {}};
+};
+const ProgramOf<UndeclaredVarying> kUndeclaredVarying;
+
 // Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
 Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
-                 RasterOptions options = {}, RasterStats* stats = nullptr) {
+                 RasterOptions options = {}, RenderStats* stats = nullptr) {
     std::vector<VertexIn> verts;
     std::vector<std::uint32_t> idx;
     for (const glm::vec3& c : corners) {
@@ -193,7 +199,7 @@ TEST_CASE("dFdx of an interpolated varying on helper lanes equals the interior v
     for (const glm::vec3& c : sliver) verts.push_back({c, {}});
     // varying 0 is position.x; scale it by 1/4 through the object position itself.
     for (VertexIn& v : verts) v.position.x *= 1.0f, v.texcoord = {0, 0};
-    RasterStats stats;
+    RenderStats stats;
     const Framebuffer fb = draw(64, 16, sliver, kSlopes, {}, &stats);
     int written = 0;
     for (int row = 0; row < 16; ++row) {
@@ -245,9 +251,40 @@ TEST_CASE("a shader that reads gl_FragCoord without declaring it reads NaN, neve
     CHECK(first.pixel(3, H - 1 - 5)[2] == 5.5f);
 }
 
+TEST_CASE("a shader that reads a varying past its Needs::varyings reads NaN, never another draw's numbers",
+          "[raster][specialisation]") {
+    // The first draw interpolates varying 2 (object z = 0.25) over the pixels the second, nearer,
+    // draws without declaring it: the second's blue is NaN in every mode, its red and green are
+    // its declared varyings.
+    constexpr int W = 8, H = 8;
+    const std::vector<VertexIn> verts = {{{0, 0, 0.25f}, {}}, {{W, 0, 0.25f}, {}}, {{W, H, 0.25f}, {}}, {{0, H, 0.25f}, {}}};
+    const std::vector<VertexIn> nearer = {{{0, 0, -0.5f}, {}}, {{W, 0, -0.5f}, {}}, {{W, H, -0.5f}, {}}, {{0, H, -0.5f}, {}}};
+    const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall declared{verts, idx, &kPosition, {}}, undeclared{nearer, idx, &kUndeclaredVarying, {}};
+    declared.uniforms.model_view_projection = undeclared.uniforms.model_view_projection = window_to_clip(W, H);
+    const DrawCall both[] = {declared, undeclared};
+    for (Derivatives rule : {Derivatives::Fine, Derivatives::Analytic}) {
+        for (bool general : {false, true}) {
+            RasterOptions options;
+            options.derivatives = rule, options.force_general_path = general;
+            const Framebuffer fb = rasterize(W, H, glm::vec4(0.0f), both, options);
+            for (int y = 0; y < H; ++y) {
+                for (int x = 0; x < W; ++x) {
+                    INFO("rule " << int(rule) << " general " << general << " pixel " << x << ", " << y);
+                    const float* p = fb.pixel(x, H - 1 - y);
+                    CHECK(p[0] == float(x) + 0.5f);
+                    CHECK(p[1] == float(y) + 0.5f);
+                    CHECK(std::isnan(p[2]));
+                }
+            }
+            CHECK(rasterize(W, H, glm::vec4(0.0f), std::span(both, 1), options).pixel(3, 3)[2] == 0.25f);
+        }
+    }
+}
+
 TEST_CASE("degenerate, sliver and non-finite triangles are dropped without harm", "[raster][robustness]") {
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    RasterStats stats;
+    RenderStats stats;
     const Framebuffer fb = draw(32, 32,
                                 {{1, 1, 0}, {20, 20, 0}, {10, 10, 0},       // collinear
                                  {5, 5, 0}, {5, 5, 0}, {5, 5, 0},          // a point
@@ -300,7 +337,7 @@ TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "
 
 TEST_CASE("derivative-free shaders run per pixel with no helper lanes; derivative shaders in quads", "[raster][specialisation]") {
     const std::vector<glm::vec3> tri = {{0.5f, 0.5f, 0}, {30.2f, 3.1f, 0}, {7.7f, 29.9f, 0}};
-    RasterStats flat, slopes, general;
+    RenderStats flat, slopes, general;
     draw(32, 32, tri, kFlat, {}, &flat);
     draw(32, 32, tri, kSlopes, {}, &slopes);
     RasterOptions force;

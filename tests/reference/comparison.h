@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "raster/framebuffer.h"
+#include "core/framebuffer.h"
 #include "raster/rasterizer.h"
 #include "reference/gl_context.h"
 #include "scenes/image_io.h"

@@ -16,7 +16,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shading/catalogue.h"
-#include "raster/framebuffer.h"
+#include "core/framebuffer.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "render/scene_render.h"

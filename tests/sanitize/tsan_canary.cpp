@@ -1,12 +1,12 @@
 // The ThreadSanitizer build's canary (ctest expects TSan's report): two chunks of parallel_chunks
 // write the same variable without synchronisation. If TSan stopped seeing the renderers' threads
-// (raster/parallel.h), test_threads would pass without checking anything; this would then fail.
+// (core/parallel.h), test_threads would pass without checking anything; this would then fail.
 #include <tbb/global_control.h>
 
 #include <atomic>
 #include <cstdio>
 
-#include "raster/parallel.h"
+#include "core/parallel.h"
 
 int main() {
     const tbb::global_control two(tbb::global_control::max_allowed_parallelism, 2);

@@ -18,6 +18,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
+#include <OpenImageIO/imageio.h>
 
 #include "shading/catalogue.h"
 #include "scenes/gltf.h"
@@ -45,6 +46,12 @@ std::pair<int, std::string> run(const std::string& cmd, const std::filesystem::p
 }
 
 void write_text(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// A string attribute of an image file's metadata, as OpenImageIO reads it ("" when absent).
+std::string image_attribute(const std::filesystem::path& file, const std::string& name) {
+    auto in = OIIO::ImageInput::open(file.string());
+    return in ? in->spec().get_string_attribute(name) : "(unreadable)";
+}
 
 }  // namespace
 
@@ -443,6 +450,57 @@ TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") 
         CHECK(code3 == 1);
         CHECK(err3.find("no folder") != std::string::npos);
         CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);  // just stderr.txt
+    }
+    SECTION("options no backend honours together are exit 2, named, before anything is read or written") {
+        // The scene does not exist: reading it would be exit 1 naming it.
+        const std::string missing = (dir / "missing.gltf").string(), mask = (dir / "mask.png").string();
+        const auto refused = [&](const std::string& options, const std::string& message) {
+            auto [code, err] = run(qs + " render " + missing + " -o " + out + " " + options, dir);
+            INFO(options << " -> " << err);
+            CHECK(code == 2);
+            CHECK(err.find(message) != std::string::npos);
+            CHECK(err.find("missing.gltf") == std::string::npos);
+            CHECK_FALSE(std::filesystem::exists(out));
+            CHECK_FALSE(std::filesystem::exists(mask));
+        };
+        refused("--precision double --derivatives coarse-lower",
+                "--derivatives coarse-lower --precision double: double precision is shaded with the fine");
+        refused("--derivatives coarse-upper --precision double", "not with a coarse rule");
+        refused("--derivatives analytic --undefined-mask " + mask,
+                "--derivatives analytic --precision float --undefined-mask: checking for undefined GLSL cases");
+        refused("--precision double --undefined-mask " + mask, "checking for undefined GLSL cases shades in float");
+        // The rasterizer's own options, even at their defaults: the ray caster has none of them.
+        for (const char* option : {"--fill-rule right-top", "--fill-rule left-bottom", "--interpolation separate",
+                                   "--interpolation fused", "--general-path"}) {
+            const std::string name = std::string(option).substr(0, std::string(option).find(' '));
+            refused(std::string("--backend raycast ") + option, name + ": a rasterizer option");
+        }
+        // The same options are the rasterizer's to take, and --quad-pairing is both backends'.
+        CHECK(run(qs + " render " + kPlane.string() + " --size 8x8 --precision double --general-path -o " + out, dir).first == 0);
+#if defined(QUADSHADE_HAS_RAYCAST)
+        CHECK(run(qs + " render " + kPlane.string() + " --size 8x8 --backend raycast --quad-pairing bottom-up -o " + out,
+                  dir).first == 0);
+#endif
+    }
+    SECTION("the image's metadata records every setting that decides its pixels") {
+        auto [code, err] = run(qs + " render " + kPlane.string() + " --size 16x16 --shader halftone --precision double "
+                                   "--quad-pairing bottom-up --fill-rule right-top --interpolation separate --time 2 -o " + out,
+                               dir);
+        REQUIRE(code == 0);
+        CHECK(image_attribute(out, "quadshade:precision") == "double");
+        CHECK(image_attribute(out, "quadshade:derivatives") == "fine");
+        CHECK(image_attribute(out, "quadshade:quad_pairing") == "bottom-up");
+        CHECK(image_attribute(out, "quadshade:fill_rule") == "right-top");
+        CHECK(image_attribute(out, "quadshade:interpolation") == "separate");
+        CHECK(image_attribute(out, "quadshade:backend") == "raster");
+        CHECK(image_attribute(out, "quadshade:shader") == "halftone");
+        CHECK(image_attribute(out, "quadshade:time") == "2.000000");
+        const std::string floats = (dir / "float.png").string();
+        REQUIRE(run(qs + " render " + kPlane.string() + " --size 16x16 --shader uniform_probe --uniform uScale=2.5 -o " +
+                        floats, dir).first == 0);
+        CHECK(image_attribute(floats, "quadshade:precision") == "float");
+        CHECK(image_attribute(floats, "quadshade:uniforms") == "uScale=2.5");
+        CHECK(image_attribute(floats, "quadshade:interpolation") != "");
     }
     SECTION("an animation writes numbered frames") {
         auto [code, err] = run(qs + " render " + kFigure.string() + " --size 64x20 --frames 3:5 --fps 10 -o " +

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "raster/framebuffer.h"
+#include "core/framebuffer.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "tests/test_paths.h"
@@ -86,7 +86,7 @@ TEST_CASE("the ray caster shades a texture that needs a level of detail in quads
 TEST_CASE("a texture that needs a level of detail turns a derivative-free shader's draw into quads", "[textures]") {
     // single_texture takes no derivatives; with mipmaps its lookups need the quad's.
     Scene s = conformance_scene("min-linear-mipmap-linear.gltf");
-    RasterStats with_mipmaps, without;
+    RenderStats with_mipmaps, without;
     render_frame(s, {}, &with_mipmaps);
     s.textures[0].sampler.min_filter = Filter::Linear;
     render_frame(s, {}, &without);

@@ -7,12 +7,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/tile_grid.h"
+
 namespace qs {
 
 struct Framebuffer {
     int width = 0, height = 0;  // the image's size
     // The rows held: [first_row, first_row + rows) of the image. The whole image, unless it was
-    // rendered band by band (RowBand, rasterizer.h); the vectors below hold these rows only.
+    // rendered band by band (RowBand, tile_grid.h); the vectors below hold these rows only.
     int first_row = 0, rows = 0;
     std::vector<float> rgba;   // 4 per pixel, top-down
     // Empty when the frame needed no depth buffer; else 1 per pixel, cleared to 1: window depth
@@ -21,6 +23,17 @@ struct Framebuffer {
     // Empty unless the render checked for undefined GLSL cases; else 1 per pixel, top-down: the
     // Undefined bits (number/checked.h) of the fragment that wrote the pixel, 0 where cleared.
     std::vector<std::uint8_t> undefined;
+
+    // Made to hold `band` (resolved: checked_band) of a width x height image, with a depth and an
+    // undefined-case buffer or without; keeps the vectors' memory, not their contents.
+    void hold(int image_width, int image_height, RowBand band, bool with_depth, bool with_undefined) {
+        width = image_width, height = image_height;
+        first_row = band.begin, rows = band.end - band.begin;
+        const std::size_t pixels = std::size_t(width) * std::size_t(rows);
+        rgba.resize(pixels * 4);
+        depth.resize(with_depth ? pixels : 0);
+        undefined.resize(with_undefined ? pixels : 0);
+    }
 
     // Index of image pixel (x, row), which must lie in the rows held.
     std::size_t index(int x, int row) const {

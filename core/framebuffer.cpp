@@ -1,4 +1,4 @@
-#include "raster/framebuffer.h"
+#include "core/framebuffer.h"
 
 #include <cmath>
 

@@ -11,7 +11,7 @@
 #include <immintrin.h>
 #endif
 
-#include "raster/lanes16.h"
+#include "core/lanes16.h"
 #include "shading/program.h"
 
 namespace qs {

@@ -1,5 +1,5 @@
 #pragma once
-// The one place the renderers hand work to threads: parallel_chunks(begin, end, grain, body) runs
+// The one place the renderers hand work to threads (their tile loop is core/tile_loop.h): parallel_chunks(begin, end, grain, body) runs
 // body(tbb::blocked_range<Index>) over [begin, end) in pieces of at most `grain`, concurrently, as
 // tbb::parallel_for does, on as many threads as tbb::global_control allows.
 //
@@ -10,7 +10,11 @@
 // is quadshade's code: the chunk bodies, run concurrently, sharing what they share under TBB.
 // tests/sanitize/tsan_canary.cpp checks that a race between two chunks is reported.
 
+#include <cstddef>
+#include <optional>
+
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #if defined(__SANITIZE_THREAD__)  // GCC
@@ -28,11 +32,20 @@
 #include <mutex>
 #include <thread>
 #include <vector>
-
-#include <tbb/global_control.h>
 #endif
 
 namespace qs {
+
+// parallel_chunks runs on at most `threads` threads (0: as many as there are cores) while this lives.
+class ThreadLimit {
+public:
+    explicit ThreadLimit(int threads) {
+        if (threads > 0) limit_.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    }
+
+private:
+    std::optional<tbb::global_control> limit_;
+};
 
 template <class Index, class Body>
 void parallel_chunks(Index begin, Index end, Index grain, const Body& body) {
