@@ -50,13 +50,14 @@ RasterOptions raster_options_for(CheckRule rule) {
 }
 
 // The bar, as fractions of the covered pixels (coverage: of all pixels). Against llvmpipe, the
-// project's. Against softpipe, what its own arithmetic moves on shaders that translate their
-// GLSL exactly (measured on the default scene set with the catalogue, Mesa 22.3.6): it sets up
-// edges in floating point without sub-pixel snapping, so a pixel whose centre lies within 1/256
-// pixel of an edge may be covered by one and not the other (at most 2 of 12288 on the slivers),
-// and it interpolates varyings with its own rounding, which moves pixels of discontinuous
-// patterns and anti-aliased edges (at most 0.47% over 1/255 and 0.35% over 2/255: the spots on
-// the grazing plane). A translation error moves far more.
+// project's. Against softpipe, room for what its own arithmetic does to shaders that translate
+// their GLSL exactly (design.md, "Not reproduced exactly"; the conformance tests' softpipe bounds):
+// it sets up edges in floating point without sub-pixel snapping, so a pixel whose centre lies
+// within 1/256 pixel of an edge may be covered by one and not the other (2 of 12288 pixels on the
+// slivers at 128x96), and it interpolates varyings with its own rounding, which moves pixels of
+// discontinuous patterns and of anti-aliased edges (the most: the spots on the grazing plane, 117
+// pixels over 1/255 and 87 over 2/255 at 259x143). A translation error moves far more (the test's
+// mistranslated stripes: 8% to 90% of the covered pixels).
 struct Fractions {
     double over_1, over_2, coverage;
 };
@@ -76,6 +77,10 @@ Bar bar_for(const ShaderInfo& info, const std::string& scene, CheckRule rule, co
     }
     const Fractions f = rule == CheckRule::Fine ? kFineBar : kCoarseLowerBar;
     auto of = [](double fraction, std::size_t total) { return std::size_t(std::floor(fraction * double(total))); };
+    if (rule == CheckRule::CoarseLower && samples_textures(info.needs)) {
+        return {n.pixels, n.pixels, of(f.coverage, n.pixels),
+                "softpipe's level of detail and mipmaps are its own (design.md): colours counted, coverage held"};
+    }
     return {of(f.over_1, n.covered), of(f.over_2, n.covered), of(f.coverage, n.pixels), {}};
 }
 
