@@ -1,7 +1,8 @@
 // quadshade: the command line. Parses arguments (CLI11) and calls the libraries; nothing else.
 //
 // Exit codes: 0 success, 1 bad input or failed render (message on stderr), 2 bad usage,
-// 3 `compare` found differences over its thresholds.
+// 3 `compare` found differences over its thresholds, a `check` case missed its bar, or a `test`
+// case failed.
 
 #include <unistd.h>
 
@@ -16,7 +17,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "apps/check.h"
 #include "apps/frame_pattern.h"
+#include "apps/golden_suite.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/scene_render.h"
@@ -203,6 +206,52 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
     cmd.add_option("--side-by-side", a.side, "write A | B | heat map")->option_text("FILE");
     cmd.add_option("--memory-limit", a.memory_limit, "memory the comparison may use (default: what is available)")
         ->option_text("SIZE");
+}
+
+struct CheckArgs {
+    std::vector<std::string> shaders, rules{"fine"}, plugins;
+    bool all = false;
+    std::string scenes, output = "quadshade-check";
+    int jobs = 0;
+};
+
+void add_check_options(CLI::App& cmd, CheckArgs& a) {
+    cmd.add_option("shaders", a.shaders, "the shaders to check (catalogue names)")->option_text("SHADER...");
+    cmd.add_flag("--all", a.all, "check every shader of the catalogue, plugins' included (not the\nbuilt-in probes)");
+    cmd.add_option("--scenes", a.scenes,
+                   "check on every .gltf/.glb scene in DIR (default: the conformance\n"
+                   "scenes and the Table 1.1 plane)")
+        ->option_text("DIR");
+    cmd.add_option("--rules", a.rules,
+                   "derivative rules, each against its OSMesa driver: fine (llvmpipe,\n"
+                   "default), coarse-lower (softpipe)")
+        ->delimiter(',')->option_text("R,...");
+    cmd.add_option("-o,--output", a.output,
+                   "folder for the exported GLSL, report.csv and the heat maps\n(default quadshade-check)")
+        ->option_text("DIR");
+    cmd.add_option("--jobs", a.jobs, "cases checked at once, each a reference process and a render\n(default: one per core)")
+        ->check(CLI::Range(1, 1024))->option_text("N");
+    add_plugin_option(cmd, a.plugins);
+}
+
+struct TestArgs {
+    std::vector<std::string> inputs, plugins;
+    bool update = false, merge = false;
+    int jobs = 0;
+    std::string junit, html, shard, report;
+};
+
+void add_test_options(CLI::App& cmd, TestArgs& a) {
+    cmd.add_option("inputs", a.inputs, "the suite file (JSON: docs/golden-suites.md); with --merge, report fragments")
+        ->required()->option_text("SUITE | FRAGMENT...");
+    cmd.add_flag("--update", a.update, "re-bless: write each case's image as its expected image");
+    cmd.add_option("--jobs", a.jobs, "cases rendered at once (default: one per core)")->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_option("--shard", a.shard, "run case i when i mod N = K - 1 (cases counted from 0)")->option_text("K/N");
+    cmd.add_option("--report", a.report, "write this run's report fragment (JSON), for --merge")->option_text("FILE");
+    cmd.add_flag("--merge", a.merge, "merge the report fragments of every shard (1..N, each once) instead of running");
+    cmd.add_option("--junit", a.junit, "write a JUnit XML report")->option_text("FILE");
+    cmd.add_option("--html", a.html, "write an HTML report, images side by side, to DIR/index.html")->option_text("DIR");
+    add_plugin_option(cmd, a.plugins);
 }
 
 std::uint64_t memory_limit(const std::string& option) {
@@ -533,6 +582,49 @@ int cmd_compare(const CompareArgs& a) {
     return (long long)c.pixels_over_fail > a.max_failing ? kExitDifferent : 0;
 }
 
+int cmd_check(const CheckArgs& a) {
+    if (a.all == !a.shaders.empty()) throw UsageError("check: name the shaders to check, or --all (not both)");
+    CheckRequest request;
+    request.shaders = a.shaders;
+    request.scenes = a.scenes;
+    request.output = a.output;
+    request.jobs = a.jobs;
+    request.rules.clear();
+    for (const std::string& rule : a.rules) {
+        if (rule == "fine") request.rules.push_back(CheckRule::Fine);
+        else if (rule == "coarse-lower" || rule == "coarse") request.rules.push_back(CheckRule::CoarseLower);
+        else throw UsageError("--rules: '" + rule + "' has no OSMesa reference (fine: llvmpipe, coarse-lower: softpipe)");
+    }
+    return run_check(request);
+}
+
+int cmd_test(const TestArgs& a) {
+    SuiteRun run;
+    if (a.merge) {
+        if (a.update || !a.shard.empty() || !a.report.empty() || a.jobs) throw UsageError("--merge: only with --junit and --html");
+        run = merge_fragments({a.inputs.begin(), a.inputs.end()});
+    } else {
+        if (a.inputs.size() != 1) throw UsageError("test: one suite file (or --merge FRAGMENT...)");
+        SuiteRequest request;
+        request.suite = a.inputs[0];
+        request.update = a.update;
+        request.jobs = a.jobs;
+        if (!a.shard.empty()) {
+            int k = 0, n = 0;
+            char slash = 0, rest = 0;
+            if (std::sscanf(a.shard.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' || n < 1 || k < 1 || k > n || n > 100000) {
+                throw UsageError("--shard: expected K/N with 1 <= K <= N, got '" + a.shard + "'");
+            }
+            request.shard = k, request.shards = n;
+        }
+        run = run_suite(request);
+        if (!a.report.empty()) write_fragment(run, a.report);
+    }
+    if (!a.junit.empty()) write_junit(run, a.junit);
+    if (!a.html.empty()) write_html(run, a.html);
+    return summarize(run);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -555,6 +647,16 @@ int main(int argc, char** argv) {
     CLI::App* compare_cmd = app.add_subcommand(
         "compare", "compare two images' RGB with OpenImageIO: mean, RMS, PSNR and the largest error");
     add_compare_options(*compare_cmd, compare);
+    CheckArgs check;
+    CLI::App* check_cmd = app.add_subcommand(
+        "check", "render shaders with quadshade and their GLSL with OSMesa (quadshade-reference) on a\n"
+                 "set of scenes and compare: exit 0 when every case meets the bar, 3 otherwise");
+    add_check_options(*check_cmd, check);
+    TestArgs test;
+    CLI::App* test_cmd = app.add_subcommand(
+        "test", "run a golden-image suite: render its cases, compare with the expected images, report\n"
+                "(exit 3 when a case fails)");
+    add_test_options(*test_cmd, test);
     VolumeArgs volume;
     CLI::App* volume_cmd = app.add_subcommand(
         "bake-volume", "evaluate a shader on an N^3 grid of object positions into a 3D texture (a sampler3D)");
@@ -573,9 +675,15 @@ int main(int argc, char** argv) {
     }
     try {
         if (render_cmd->parsed()) return cmd_render(render);  // loads its plugins once its options are checked
-        for (const std::string& plugin : volume_cmd->parsed() ? volume.plugins : shader_plugins) load_plugin(plugin);
+        const std::vector<std::string>& plugins = check_cmd->parsed()    ? check.plugins
+                                                  : test_cmd->parsed()   ? test.plugins
+                                                  : volume_cmd->parsed() ? volume.plugins
+                                                                         : shader_plugins;
+        for (const std::string& plugin : plugins) load_plugin(plugin);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
+        if (check_cmd->parsed()) return cmd_check(check);
+        if (test_cmd->parsed()) return cmd_test(test);
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;

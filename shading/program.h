@@ -7,6 +7,7 @@
 
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -116,6 +117,18 @@ constexpr std::array<std::uint32_t, N * kUniformWords> initial_uniform_words(std
     }
     return w;
 }
+// A documented departure from the bar `quadshade check` holds a shader to (apps/check.h): on the
+// scene whose file is named `scene` without its extension (empty: every scene), under the
+// derivative rule `rule` ("fine" or "coarse-lower"; empty: both), at most `over_1` pixels more
+// than 1/255 off OSMesa's, `over_2` more than 2/255 off, and `coverage` pixels covered by one and
+// not the other, because of `cause` (which the report prints).
+struct CheckBound {
+    std::string_view scene;
+    std::string_view rule;
+    std::size_t over_1 = 0, over_2 = 0, coverage = 0;
+    std::string_view cause;
+};
+
 // Whether a shader samples any texture: `teximage` or a named sampler.
 constexpr bool samples_textures(const Needs& n) { return n.texture || !n.samplers[0].name.empty(); }
 
@@ -146,6 +159,8 @@ struct ShaderInfo {
     // The uniforms the GLSL declares beyond the chapter's (time, teximage), in the order of
     // Uniforms::user (with_uniforms).
     std::span<const UniformDecl> uniforms = {};
+    // Where `quadshade check` should not hold it to the bar, and why.
+    std::span<const CheckBound> check_bounds = {};
 };
 
 // `info` with wide_batches set.
@@ -161,6 +176,11 @@ constexpr ShaderInfo with_uniforms(ShaderInfo info, std::span<const UniformDecl>
 // `info` compiled as GLSL `version`.
 constexpr ShaderInfo with_glsl_version(ShaderInfo info, int version) {
     info.glsl_version = version;
+    return info;
+}
+// `info` with documented departures from `quadshade check`'s bar.
+constexpr ShaderInfo with_check_bounds(ShaderInfo info, std::span<const CheckBound> bounds) {
+    info.check_bounds = bounds;
     return info;
 }
 

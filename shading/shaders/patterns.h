@@ -161,14 +161,22 @@ inline void plane_st10_vertex(const VertexIn& in, const Uniforms& u, VertexOut& 
     out.varyings[1] = in.texcoord.y * 10.0f;
 }
 
+// The typo makes the noise jump across simplex edges (tests/shading); Mesa's reassociated dot
+// products put one pixel of the grazing plane on the jump's other side (measured: 1 pixel, 83/255).
+inline constexpr CheckBound kSeedTypoCheckBounds[] = {
+    {"grazing-plane", "fine", 3, 3, 0,
+     "the typo's jumps along simplex edges, where Mesa's reassociated dot products move a pixel across (measured 1)"}};
+
 template <noise::Simplex2dCorner corner>
 struct Simplex2d {
     static constexpr bool typo = corner == noise::Simplex2dCorner::SeedTypo;
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
-        typo ? "simplex2d_seed_typo" : "simplex2d",
-        typo ? "Listing 1.3 with the seed's C.xxxx typo (breaks along simplex edges)" : "Listing 1.3: 2D simplex noise",
-        false, {"noise/simplex2d.glsl", "shaders/simplex2d.frag"}, typo ? "#define SIMPLEX2D_SEED_TYPO\n" : "",
-        "shaders/plane_st10.vert"));
+    static constexpr ShaderInfo info = with_check_bounds(
+        with_wide_batches(plane_pattern(
+            typo ? "simplex2d_seed_typo" : "simplex2d",
+            typo ? "Listing 1.3 with the seed's C.xxxx typo (breaks along simplex edges)" : "Listing 1.3: 2D simplex noise",
+            false, {"noise/simplex2d.glsl", "shaders/simplex2d.frag"}, typo ? "#define SIMPLEX2D_SEED_TYPO\n" : "",
+            "shaders/plane_st10.vert")),
+        typo ? std::span<const CheckBound>(kSeedTypoCheckBounds) : std::span<const CheckBound>());
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st10_vertex(in, u, out); }
     template <class F>
     static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {

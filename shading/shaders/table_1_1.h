@@ -118,15 +118,24 @@ struct WorleyTiles {
     }
 };
 
+// The un-anti-aliased variant: a plain step turns the last-ulp difference of a value lying on its
+// threshold into a full flip, which aastep's ramp absorbs (tests/reference/test_reference.cpp).
+inline constexpr CheckBound kHalftoneStepCheckBounds[] = {
+    {"table-1.1-plane", "", 6, 6, 0,
+     "a plain step flips fully where the last ulp of a value on its threshold differs (measured: 1 pixel against "
+     "llvmpipe, 3 against softpipe)"}};
+
 // The blend to plain RGB takes derivatives in every variant, the step one included.
 template <AAWidth W = AAWidth::Length>
 struct Halftone {
-    static constexpr ShaderInfo info{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
-                                     "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
-                                     Needs{.derivatives = true, .texture = true, .time = false, .varyings = 4},
-                                     {"shaders/halftone.vert"},
-                                     {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"},
-                                     aa_variant_defines(W)};
+    static constexpr ShaderInfo info = with_check_bounds(
+        ShaderInfo{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
+                   "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
+                   Needs{.derivatives = true, .texture = true, .time = false, .varyings = 4},
+                   {"shaders/halftone.vert"},
+                   {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"},
+                   aa_variant_defines(W)},
+        W == AAWidth::Step ? std::span<const CheckBound>(kHalftoneStepCheckBounds) : std::span<const CheckBound>());
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
         plane_st_vertex(in, u, out);
         const float dims[2] = {float(u.teximage->width), float(u.teximage->height)};

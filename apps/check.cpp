@@ -1,0 +1,386 @@
+#include "apps/check.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <mutex>
+#include <thread>
+#include <cstring>
+
+#include "core/framebuffer.h"
+#include "render/scene_render.h"
+#include "scenes/gltf.h"
+#include "shading/catalogue.h"
+#include "shading/glsl_export.h"
+
+extern char** environ;
+
+namespace qs {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// ---- the rules and their references --------------------------------------------------------
+
+const char* rule_name(CheckRule r) { return r == CheckRule::Fine ? "fine" : "coarse-lower"; }
+const char* driver_of(CheckRule r) { return r == CheckRule::Fine ? "llvmpipe" : "softpipe"; }
+
+// quadshade set up as the driver: llvmpipe's fine derivatives, left-bottom fill rule and (on FMA
+// hosts) fused interpolation; softpipe's coarse-lower derivatives, right-top fill rule and
+// separately rounded interpolation.
+RasterOptions raster_options_for(CheckRule rule) {
+    RasterOptions r;
+    const bool softpipe = rule == CheckRule::CoarseLower;
+    r.derivatives = softpipe ? Derivatives::CoarseLower : Derivatives::Fine;
+    r.fill_rule = softpipe ? FillRule::RightTop : FillRule::LeftBottom;
+    r.fused_interpolation = softpipe ? false : fused_interpolation_default();
+    return r;
+}
+
+// The bar, as fractions of the covered pixels (coverage: of all pixels). Against llvmpipe, the
+// project's. Against softpipe, room for what its own arithmetic does to shaders that translate
+// their GLSL exactly (design.md, "Not reproduced exactly"; the conformance tests' softpipe bounds):
+// it sets up edges in floating point without sub-pixel snapping, so a pixel whose centre lies
+// within 1/256 pixel of an edge may be covered by one and not the other (2 of 12288 pixels on the
+// slivers at 128x96), and it interpolates varyings with its own rounding, which moves pixels of
+// discontinuous patterns and of anti-aliased edges (the most: the spots on the grazing plane, 117
+// pixels over 1/255 and 87 over 2/255 at 259x143). A translation error moves far more (the test's
+// mistranslated stripes: 8% to 90% of the covered pixels).
+struct Fractions {
+    double over_1, over_2, coverage;
+};
+constexpr Fractions kFineBar{0.001, 0.0, 0.0};
+constexpr Fractions kCoarseLowerBar{0.006, 0.005, 0.0002};
+
+struct Bar {
+    std::size_t over_1 = 0, over_2 = 0, coverage = 0;
+    std::string cause;  // empty: the default bar
+};
+
+Bar bar_for(const ShaderInfo& info, const std::string& scene, CheckRule rule, const CaseCounts& n) {
+    for (const CheckBound& b : info.check_bounds) {
+        if ((b.scene.empty() || b.scene == scene) && (b.rule.empty() || b.rule == rule_name(rule))) {
+            return {b.over_1, b.over_2, b.coverage, std::string(b.cause)};
+        }
+    }
+    const Fractions f = rule == CheckRule::Fine ? kFineBar : kCoarseLowerBar;
+    auto of = [](double fraction, std::size_t total) { return std::size_t(std::floor(fraction * double(total))); };
+    if (rule == CheckRule::CoarseLower && samples_textures(info.needs)) {
+        return {n.pixels, n.pixels, of(f.coverage, n.pixels),
+                "softpipe's level of detail and mipmaps are its own (design.md): colours counted, coverage held"};
+    }
+    return {of(f.over_1, n.covered), of(f.over_2, n.covered), of(f.coverage, n.pixels), {}};
+}
+
+bool meets(const CaseCounts& n, const Bar& bar) {
+    return n.coverage <= bar.coverage && n.over_1 <= bar.over_1 && n.over_2 <= bar.over_2;
+}
+
+// ---- where things are ------------------------------------------------------------------------
+
+fs::path executable_folder() {
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) throw std::runtime_error("cannot find the quadshade executable (/proc/self/exe): " + ec.message());
+    return exe.parent_path();
+}
+
+bool is_scene_file(const fs::path& p) {
+    std::string ext = p.extension().string();
+    for (char& c : ext) c = char(std::tolower((unsigned char)c));
+    return ext == ".gltf" || ext == ".glb";
+}
+
+// The scene files of `folder`, by name.
+std::vector<fs::path> scenes_in(const fs::path& folder) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) throw std::runtime_error("--scenes " + folder.string() + ": not a folder");
+    std::vector<fs::path> files;
+    for (const fs::directory_entry& e : fs::directory_iterator(folder)) {
+        if (e.is_regular_file() && is_scene_file(e.path())) files.push_back(e.path());
+    }
+    if (files.empty()) throw std::runtime_error("--scenes " + folder.string() + ": no .gltf or .glb scene in it");
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::vector<fs::path> default_scenes() {
+    const fs::path folder = executable_folder().parent_path() / "share" / "quadshade" / "scenes";
+    std::vector<fs::path> files = scenes_in(folder / "conformance");
+    const fs::path plane = folder / "table-1.1-plane.gltf";
+    if (!fs::exists(plane)) throw std::runtime_error(plane.string() + ": the Table 1.1 plane is missing (an incomplete installation?)");
+    files.push_back(plane);
+    return files;
+}
+
+// ---- the reference, a separate process -------------------------------------------------------
+
+// Runs `argv` with its output going to `log`; returns its exit status (or 128 + the signal).
+int run_process(const std::vector<std::string>& argv, const fs::path& log) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    pid_t pid = 0;
+    const int err = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (err != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(err));
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) throw std::runtime_error("waiting for " + argv[0] + ": " + std::strerror(errno));
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::string read_text(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    std::string text = s.str();
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+    return text;
+}
+
+// ---- cases -----------------------------------------------------------------------------------
+
+// Whether every object of `scene` binds the textures `info` samples (a check runs a shader on
+// the scenes that can feed it).
+bool can_draw(const Scene& scene, const ShaderInfo& info) {
+    for (const Object& o : scene.objects) {
+        if (info.needs.texture && o.texture < 0) return false;
+        for (const SamplerUse& s : info.needs.samplers) {
+            if (!s.name.empty() && o.texture_for(s.name) < 0) return false;
+        }
+    }
+    return !scene.objects.empty();
+}
+
+// The named shaders; by default the catalogue's but its probes (built-ins' tests of their own,
+// drawn for one window and reading undefined GLSL cases elsewhere, as the conformance tests
+// leave them out), plugins' included.
+std::vector<const Program*> shaders_of(const CheckRequest& request) {
+    if (request.shaders.empty()) {
+        std::vector<const Program*> all;
+        for (const Program* p : catalogue()) {
+            const bool probe = plugin_of(*p).empty() && p->info().name.ends_with("_probe");
+            if (!probe) all.push_back(p);
+        }
+        return all;
+    }
+    std::vector<const Program*> programs;
+    for (const std::string& name : request.shaders) {
+        const Program* p = find_program(name);
+        if (!p) throw std::runtime_error("unknown shader '" + name + "' (quadshade shaders lists the catalogue; --plugin LIB adds a plugin's)");
+        programs.push_back(p);
+    }
+    return programs;
+}
+
+std::string percent(std::size_t n, std::size_t of) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.3f%%", of ? 100.0 * double(n) / double(of) : 0.0);
+    return s;
+}
+
+}  // namespace
+
+CaseCounts count_differences(const Image& ours, const Image& reference) {
+    if (ours.width != reference.width || ours.height != reference.height) {
+        throw std::runtime_error("the images differ in size: " + std::to_string(ours.width) + "x" + std::to_string(ours.height) +
+                                 " and " + std::to_string(reference.width) + "x" + std::to_string(reference.height));
+    }
+    CaseCounts c;
+    c.pixels = std::size_t(ours.width) * std::size_t(ours.height);
+    for (std::size_t p = 0; p < c.pixels; ++p) {
+        const float* a = &ours.rgba[p * 4];
+        const float* b = &reference.rgba[p * 4];
+        c.covered += b[3] > 0.5f;
+        // A shader that writes its own alpha may put it at 1/2, where one 8-bit step is no coverage.
+        c.coverage += (a[3] > 0.5f) != (b[3] > 0.5f) && std::abs(int(unorm8(a[3])) - int(unorm8(b[3]))) > 1;
+        int worst = 0;
+        for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(int(unorm8(a[ch])) - int(unorm8(b[ch]))));
+        c.over_1 += worst > 1;
+        c.over_2 += worst > 2;
+        if (worst > c.max_steps) {
+            c.max_steps = worst;
+            c.max_x = int(p % std::size_t(ours.width)), c.max_y = int(p / std::size_t(ours.width));
+        }
+    }
+    return c;
+}
+
+namespace {
+
+struct Case {
+    std::size_t scene;  // index into the scene files
+    const Program* program;
+    CheckRule rule;
+};
+
+struct CaseReport {
+    bool done = false, ok = false;
+    CaseCounts counts;
+    Bar bar;
+    int width = 0, height = 0;
+    std::string heat_map, error;
+};
+
+struct Checker {
+    const CheckRequest& request;
+    fs::path reference, glsl;
+    std::vector<fs::path> files;
+    std::vector<Scene> scenes;
+    int threads = 1;  // per render
+
+    // One case, its reference rendered by a quadshade-reference process writing `image`.
+    CaseReport run(const Case& c, const fs::path& image, const fs::path& log) const {
+        CaseReport report;
+        const ShaderInfo& info = c.program->info();
+        const std::string shader(info.name), scene_name = files[c.scene].stem().string();
+        const std::vector<std::string> argv = {reference.string(), files[c.scene].string(), "-o", image.string(), "--glsl",
+                                               glsl.string(), "--driver", driver_of(c.rule), "--shader", shader};
+        if (const int status = run_process(argv, log); status != 0) {
+            throw std::runtime_error("quadshade-reference failed on " + files[c.scene].string() + " with " + shader + " (" +
+                                     driver_of(c.rule) + ", exit " + std::to_string(status) + "): " + read_text(log));
+        }
+        const Image theirs = read_image(image);
+        Scene scene = scenes[c.scene];
+        FrameRequest r;
+        r.shader_override = shader;
+        r.raster = raster_options_for(c.rule);
+        r.raster.threads = threads;
+        const Framebuffer fb = render_frame(scene, r);
+        const Image ours{fb.width, fb.height, fb.rgba};
+        report.width = fb.width, report.height = fb.height;
+        report.counts = count_differences(ours, theirs);
+        report.bar = bar_for(info, scene_name, c.rule, report.counts);
+        report.ok = meets(report.counts, report.bar);
+        if (report.counts.coverage || report.counts.max_steps) {
+            const fs::path f = request.output / (scene_name + "-" + shader + "-" + rule_name(c.rule) + ".png");
+            const Image diff = difference_heat_map(ours, theirs, 8.0f / 255.0f);
+            write_image(f, side_by_side({&ours, &theirs, &diff}));
+            report.heat_map = f.string();
+        }
+        return report;
+    }
+
+    void print(const Case& c, const CaseReport& r, std::ostream& csv) const {
+        const std::string shader(c.program->info().name), scene_name = files[c.scene].stem().string();
+        const CaseCounts& n = r.counts;
+        std::printf("%s %-34s %-22s %-12s %7zu covered  coverage %zu  over 1/255 %zu (%s)  over 2/255 %zu  max %d/255",
+                    r.ok ? "ok  " : "FAIL", scene_name.c_str(), shader.c_str(), rule_name(c.rule), n.covered, n.coverage, n.over_1,
+                    percent(n.over_1, n.covered).c_str(), n.over_2, n.max_steps);
+        if (n.max_steps) std::printf(" at (%d, %d)", n.max_x, n.max_y);
+        if (!r.ok) std::printf("\n     bar: coverage %zu, over 1/255 %zu, over 2/255 %zu", r.bar.coverage, r.bar.over_1, r.bar.over_2);
+        if (!r.bar.cause.empty()) std::printf("\n     the shader's bound: %s", r.bar.cause.c_str());
+        if (!r.heat_map.empty()) std::printf("\n     quadshade | OSMesa | heat map (full scale 8/255): %s", r.heat_map.c_str());
+        std::printf("\n");
+        std::fflush(stdout);
+        csv << scene_name << "," << shader << "," << rule_name(c.rule) << "," << driver_of(c.rule) << "," << r.width << "," << r.height
+            << "," << n.covered << "," << n.coverage << "," << n.over_1 << "," << n.over_2 << "," << n.max_steps << "," << n.max_x
+            << "," << n.max_y << "," << r.bar.over_1 << "," << r.bar.over_2 << "," << r.bar.coverage << "," << (r.ok ? "ok" : "fail")
+            << "\n";
+    }
+};
+
+}  // namespace
+
+int run_check(const CheckRequest& request) {
+    Checker checker{request, executable_folder() / "quadshade-reference", request.output / "glsl", {}, {}, 1};
+    if (::access(checker.reference.c_str(), X_OK) != 0) {
+        throw std::runtime_error(checker.reference.string() + ": quadshade-reference is not beside quadshade (built with "
+                                 "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); check needs it");
+    }
+    const std::vector<const Program*> programs = shaders_of(request);
+    checker.files = request.scenes.empty() ? default_scenes() : scenes_in(request.scenes);
+    std::vector<Case> cases;
+    std::size_t skipped_pairs = 0;
+    for (std::size_t s = 0; s < checker.files.size(); ++s) {
+        checker.scenes.push_back(load_scene(checker.files[s]));
+        for (const Program* program : programs) {
+            // The default set's texture scenes (apps/texture_scenes.h) test sampling: they are for
+            // the shaders that sample a texture; the others are checked on the geometry scenes.
+            const bool texture_scene = request.scenes.empty() && checker.files[s].stem().string().starts_with("texture-");
+            if (!can_draw(checker.scenes.back(), program->info()) ||
+                (texture_scene && !samples_textures(program->info().needs))) {
+                ++skipped_pairs;
+                continue;
+            }
+            for (const CheckRule rule : request.rules) cases.push_back({s, program, rule});
+        }
+    }
+    if (cases.empty()) throw std::runtime_error("no case to check: no scene binds the textures the shaders sample");
+    fs::create_directories(request.output);
+    export_glsl(checker.glsl);  // the reference sees the GLSL as any GL application would: the text only
+    std::ofstream csv(request.output / "report.csv");
+    csv << "scene,shader,rule,driver,width,height,covered,coverage_mismatch,over_1,over_2,max_steps,max_x,max_y,"
+           "bar_over_1,bar_over_2,bar_coverage,result\n";
+
+    // Workers take cases in order; the reports are printed in case order as they complete.
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = std::clamp(request.jobs > 0 ? request.jobs : cores, 1, int(cases.size()));
+    checker.threads = std::max(1, cores / jobs);
+    std::vector<CaseReport> reports(cases.size());
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    std::mutex lock;
+    std::size_t printed = 0, failed = 0;
+    const auto start = std::chrono::steady_clock::now();
+    auto worker = [&](int id) {
+        const fs::path image = request.output / ("reference-" + std::to_string(id) + ".exr");
+        const fs::path log = request.output / ("reference-" + std::to_string(id) + ".log");
+        for (std::size_t k = next++; k < cases.size() && !stop; k = next++) {
+            CaseReport r;
+            try {
+                r = checker.run(cases[k], image, log);
+            } catch (const std::exception& e) {
+                r.error = e.what();
+                stop = true;
+            }
+            r.done = true;
+            const std::lock_guard<std::mutex> guard(lock);
+            reports[k] = std::move(r);
+            for (; printed < cases.size() && reports[printed].done && reports[printed].error.empty(); ++printed) {
+                checker.print(cases[printed], reports[printed], csv);
+                failed += !reports[printed].ok;
+            }
+        }
+        std::error_code ec;
+        fs::remove(image, ec);
+        fs::remove(log, ec);
+    };
+    std::vector<std::thread> pool;
+    for (int j = 1; j < jobs; ++j) pool.emplace_back(worker, j);
+    worker(0);
+    for (std::thread& t : pool) t.join();
+    for (const CaseReport& r : reports) {
+        if (!r.error.empty()) throw std::runtime_error(r.error);
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("quadshade check: %zu cases (%zu shaders, %zu scenes, %zu rule%s) in %.1f s: %zu passed, %zu failed", cases.size(),
+                programs.size(), checker.files.size(), request.rules.size(), request.rules.size() == 1 ? "" : "s", seconds,
+                cases.size() - failed, failed);
+    if (skipped_pairs) {
+        std::printf("; %zu shader-scene pairs left out (the scene binds no texture the shader samples%s)", skipped_pairs,
+                    request.scenes.empty() ? ", or the shader samples none on a texture scene" : "");
+    }
+    std::printf("\nquadshade check: report %s\n", (request.output / "report.csv").string().c_str());
+    return failed ? 3 : 0;
+}
+
+}  // namespace qs
