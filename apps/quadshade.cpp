@@ -21,6 +21,7 @@
 #include "render/plugins.h"
 #include "render/scene_render.h"
 #include "render/undefined_mask.h"
+#include "render/volume_bake.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/temporary_file.h"
@@ -206,6 +207,38 @@ std::uint64_t memory_limit(const std::string& option) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--memory-limit: ") + e.what());
     }
+}
+
+struct VolumeArgs {
+    std::string shader, output, scene;
+    int size = 32;
+    std::optional<double> time;
+    std::vector<std::string> uniforms, plugins;
+    Derivatives derivatives = Derivatives::Fine;
+    int threads = 0;
+    bool allow_outside = false;
+};
+
+void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
+    cmd.add_option("--shader", a.shader, "the catalogue shader to evaluate (its object-space position is the grid's)")
+        ->required()->option_text("NAME");
+    cmd.add_option("-o,--output", a.output,
+                   "the volume as a 3D texture: N x N^2 pixels, slice k in rows [kN, (k+1)N)\n"
+                   "(.png: 8-bit, loadable as a sampler3D; .exr/.tif: float)")
+        ->required()->option_text("FILE");
+    cmd.add_option("--size", a.size, "texels per side, N (default 32)")->check(CLI::Range(1, kMaxVolumeSide))->option_text("N");
+    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 0)")->check(kFinite)->option_text("T");
+    cmd.add_option("--scene", a.scene, "take the shader's textures and uniforms from this scene's first object")
+        ->option_text("SCENE.gltf");
+    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
+        ->option_text("NAME=VALUE")->allow_extra_args(false);
+    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
+                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
+                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
+                            "RULE", "for shaders that take derivatives: per texel along x and y (default fine)");
+    add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let --scene read files outside its own folder");
 }
 
 // ---- render ---------------------------------------------------------------------------------
@@ -394,6 +427,39 @@ int cmd_shaders(const std::string& export_dir) {
     return 0;
 }
 
+int cmd_bake_volume(const VolumeArgs& a) {
+    VolumeRequest req;
+    req.shader = a.shader, req.size = a.size;
+    req.frame.time = a.time.value_or(0.0);
+    req.frame.raster.derivatives = a.derivatives;
+    req.frame.raster.threads = a.threads;
+    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
+    std::optional<Scene> scene;
+    if (!a.scene.empty()) {
+        SceneLoadOptions load;
+        load.paths.allow_outside = a.allow_outside;
+        scene = load_scene(a.scene, load);
+        if (scene->objects.empty()) throw UsageError("--scene " + a.scene + ": has no object to take a material from");
+        req.material_scene = &*scene;
+    }
+    check_output(a.output, scene ? scene->inputs : std::vector<fs::path>{}, "-o");
+    const Program* program = find_program(a.shader);
+    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+    const auto t0 = std::chrono::steady_clock::now();
+    const Image volume = bake_volume(req);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_image(a.output, volume,
+                {{"quadshade:shader", a.shader},
+                 {"quadshade:volume", std::to_string(a.size) + "^3: slice k is rows [k N, (k + 1) N); texel centres at "
+                                                               "object positions -1 + 2 (i + 0.5) / N"},
+                 {"quadshade:time", std::to_string(*req.frame.time)},
+                 {"quadshade:derivatives", rule_name(a.derivatives)}},
+                true);
+    std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
+                 a.size, a.shader.c_str(), seconds * 1e3, a.size);
+    return 0;
+}
+
 int cmd_compare(const CompareArgs& a) {
     std::vector<fs::path> inputs;  // each image's entry and, if it is a link, what it points to
     for (const std::string& image : a.images) {
@@ -444,6 +510,10 @@ int main(int argc, char** argv) {
     CLI::App* compare_cmd = app.add_subcommand(
         "compare", "compare two images' RGB with OpenImageIO: mean, RMS, PSNR and the largest error");
     add_compare_options(*compare_cmd, compare);
+    VolumeArgs volume;
+    CLI::App* volume_cmd = app.add_subcommand(
+        "bake-volume", "evaluate a shader on an N^3 grid of object positions into a 3D texture (a sampler3D)");
+    add_volume_options(*volume_cmd, volume);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -454,10 +524,15 @@ int main(int argc, char** argv) {
         return kExitUsage;
     }
     try {
-        for (const std::string& plugin : render_cmd->parsed() ? render.plugins : shader_plugins) load_plugin(plugin);
+        for (const std::string& plugin : render_cmd->parsed()   ? render.plugins
+                                         : volume_cmd->parsed() ? volume.plugins
+                                                                : shader_plugins) {
+            load_plugin(plugin);
+        }
         if (render_cmd->parsed()) return cmd_render(render);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
+        if (volume_cmd->parsed()) return cmd_bake_volume(volume);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

@@ -97,7 +97,7 @@ def stability_section(root):
     with open(path) as f:
         lines = [l.rstrip() for l in f if l.strip() and not l.startswith(("Filters:", "~", "="))]
     parts = ["<h2>Numerical stability</h2><p>Printed by the tests tagged [stability] in this run; each "
-             "also asserts the documented behaviour (see the README).</p><pre>",
+             "also asserts the documented behaviour (see docs/results.md).</p><pre>",
              html.escape("\n".join(lines)), "</pre>"]
     masks = [s for s in ("float_env_probe", "bricks_aa")
              if os.path.exists(os.path.join(root, f"undefined-{s}-mask.png"))]

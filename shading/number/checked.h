@@ -274,7 +274,6 @@ public:
         return builtin(atan(y.v, x.v), y == Checked(0.0f) && x == Checked(0.0f), y, x);
     }
 
-    friend constexpr int lane_count(const Checked&) { return size; }
     friend value_type lane(const Checked& a, int i) { return a.v[i]; }
 
 private:

@@ -134,7 +134,6 @@ struct Dual2 {
         return {p, du * a.dx + dv * b.dx, du * a.dy + dv * b.dy};
     }
 
-    friend int lane_count(const Dual2& a) { return lane_count(a.val); }
     friend auto lane(const Dual2& a, int i) { return lane(a.val, i); }
 };
 

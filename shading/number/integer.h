@@ -223,7 +223,6 @@ public:
     friend IntLanes max(const IntLanes& a, const IntLanes& b) { return IntLanes(stdx::max(a.v, b.v)); }
     friend IntLanes abs(const IntLanes& a) requires is_signed { return select(a < IntLanes(0), -a, a); }
 
-    friend constexpr int lane_count(const IntLanes&) { return size; }
     friend T lane(const IntLanes& a, int i) { return a.v[i]; }
 
     // The lanes' bits as uint (for wrapping arithmetic), and back.

@@ -138,7 +138,6 @@ public:
     friend Lanes log2(const Lanes& a) { return Lanes(stdx::log2(a.v)); }
     friend Lanes pow(const Lanes& a, const Lanes& b) { return Lanes(stdx::pow(a.v, b.v)); }
 
-    friend constexpr int lane_count(const Lanes&) { return N; }
     friend T lane(const Lanes& a, int i) { return a.v[i]; }
 };
 

@@ -4,7 +4,7 @@
 // GLSL semantics that C++ does not give for free are stated here once:
 //  - min/max return the non-NaN operand (as llvmpipe does: NIR fmin/fmax with NaN-return-other);
 //  - a comparison yields `bool`, the scalar mask type; selection is `select(mask, a, b)`.
-// Scalars carry no neighbours, so dFdx/dFdy on them are a compile-time error (see derivatives.h).
+// Scalars carry no neighbours, so dFdx/dFdy on them are a compile-time error (number.h: has_derivatives).
 
 #include <cmath>
 #include <concepts>
@@ -55,8 +55,6 @@ QS_SCALAR_UNARY(log2, std::log2)
 
 
 // Lane access, so that code written over any number type can look at single values.
-inline constexpr int lane_count(float) { return 1; }
-inline constexpr int lane_count(double) { return 1; }
 inline float lane(float a, int) { return a; }
 inline double lane(double a, int) { return a; }
 inline bool lane(bool m, int) { return m; }

@@ -20,6 +20,7 @@
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "render/scene_render.h"
+#include "render/volume_bake.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_paths.h"
 
@@ -558,7 +559,7 @@ TEST_CASE("built-ins probe: exact built-ins bit for bit as llvmpipe, rounded and
     CHECK(refract_worst < 1e-6);
     // Mesa evaluates asin and acos as polynomials (builtin_functions.cpp, asin_expr), tan as
     // sin / cos and atan with its own approximations. Bounds from what was measured on Mesa
-    // 22.3.6, with room for another host's llvmpipe: see the README.
+    // 22.3.6, with room for another host's llvmpipe: see docs/results.md.
     CHECK(worst[0] < 4e-4);
     CHECK(worst[1] < 2e-4);
     CHECK(worst[2] < 1e-5);
@@ -657,6 +658,85 @@ TEST_CASE("uniforms: quadshade-reference refuses an unknown --uniform (exit 2) a
     CHECK(exit_code(unknown, "") == 1);
     CHECK(exit_code(mistyped, "") == 1);
     CHECK(exit_code(unknown, "--shader uniform_probe") == 0);  // under --shader, only the names it declares apply
+}
+
+TEST_CASE("bake-volume: every slice of a baked volume is OSMesa's render of that slice's square", "[reference][volume]") {
+    // 13^3: odd, so each slice's quads stick out of its frame. A solid texture without
+    // derivatives and one with them (per texel along x and y, from quads of texels).
+    std::vector<std::string> shaders;
+    for (const Program* p : catalogue()) {
+        const ShaderInfo& info = p->info();
+        if (info.needs.coordinates != Coordinates::Object3D || samples_textures(info.needs) || !info.uniforms.empty()) continue;
+        if (info.name.find("probe") != std::string_view::npos) continue;
+        const bool with = info.needs.derivatives;
+        if (std::none_of(shaders.begin(), shaders.end(), [&](const std::string& s) { return find_program(s)->info().needs.derivatives == with; })) {
+            shaders.emplace_back(info.name);
+        }
+    }
+    REQUIRE(shaders.size() == 2);
+    constexpr int n = 13;
+    for (const std::string& shader : shaders) {
+        VolumeRequest req;
+        req.shader = shader, req.size = n;
+        req.frame.time = 0.5;
+        req.frame.raster = raster_options_as(GlDriver::Llvmpipe);
+        const Image volume = bake_volume(req);
+        REQUIRE(volume.width == n);
+        REQUIRE(volume.height == n * n);
+        std::size_t over_1 = 0, coverage = 0;
+        for (int k = 0; k < n; ++k) {
+            const auto file = work_dir() / ("volume-" + shader + "-" + std::to_string(k) + ".gltf");
+            save_scene(volume_slice_scene(req, k), file);
+            const Case c{"volume-" + shader + "-" + std::to_string(k), file, "", n, n};
+            const Image ref = reference(c, "llvmpipe", n, n, "--time 0.5");
+            // The frame's row r is the slice's texel row n - 1 - r (y = +1 at the top).
+            Framebuffer slice;
+            slice.width = slice.height = slice.rows = n;
+            for (int r = 0; r < n; ++r) {
+                const float* row = volume.rgba.data() + (std::size_t(k) * n + std::size_t(n - 1 - r)) * n * 4;
+                slice.rgba.insert(slice.rgba.end(), row, row + n * 4);
+            }
+            const Counts counts = count(slice, ref);
+            over_1 += counts.over_1, coverage += counts.coverage_mismatch;
+        }
+        INFO(shader << ": " << over_1 << " texels over 1/255, coverage " << coverage);
+        CHECK(coverage == 0);  // the square covers every texel centre
+        CHECK(over_1 == 0);
+    }
+}
+
+TEST_CASE("bake-volume: the command writes a volume that loads as a sampler3D, and refuses what it cannot do", "[reference][volume]") {
+    const auto dir = work_dir();
+    const std::string qs = (kBin / "quadshade").string();
+    const auto out = dir / "noise3d.png";
+    auto run = [](const std::string& cmd) {
+        const int status = std::system((cmd + " 2> /dev/null").c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    REQUIRE(run(qs + " bake-volume --shader simplex3d --size 8 -o " + out.string()) == 0);
+    const Image png = read_image(out);
+    CHECK(png.width == 8);
+    CHECK(png.height == 64);
+    // The volume bound to fast_noise's sampler3D, as a scene names it.
+    Scene s = load_scene(kPlane);
+    s.objects.resize(1);
+    s.objects[0].shader = "fast_noise";
+    Texture t;
+    t.image.file = out;
+    t.dims = 3, t.depth = 8;
+    t.field = "test volume";
+    s.textures = {t};
+    s.objects[0].texture = -1;
+    s.objects[0].samplers = {{"noise3dSampler", 0}};
+    FrameRequest r;
+    r.width = r.height = 32;
+    CHECK_NOTHROW(render_frame(s, r));
+    CHECK(run(qs + " bake-volume --shader simplex3d --size 129 -o " + (dir / "big.png").string()) == 2);
+    CHECK(run(qs + " bake-volume --shader no_such_shader --size 4 -o " + (dir / "none.png").string()) == 2);
+    CHECK(run(qs + " bake-volume --shader single_texture --size 4 -o " + (dir / "tex.png").string()) == 1);
+    CHECK_FALSE(std::filesystem::exists(dir / "big.png"));
+    CHECK_FALSE(std::filesystem::exists(dir / "none.png"));
+    CHECK_FALSE(std::filesystem::exists(dir / "tex.png"));
 }
 
 }  // namespace qs

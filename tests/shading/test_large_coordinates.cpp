@@ -1,6 +1,6 @@
 // Noise at large coordinates: float against a double evaluation of the same code, with and
 // without reducing the coordinates by the noise period first (noise/noise_period.h). Prints
-// the table the README quotes.
+// the table docs/results.md quotes.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,0 +1,193 @@
+#!/usr/bin/python3
+"""Rewrites the measured tables of docs/results.md from the files a test run and a study run write.
+
+usage: bench/results.py BUILD_DIR STUDY_DIR RESULTS_MD
+
+docs/results.md is prose around tables; each table sits between `<!-- results:NAME -->` and
+`<!-- /results -->` and is replaced by what this script makes from:
+  mesa         BUILD_DIR/reference-comparison-{llvmpipe,softpipe}.csv   (ctest: test_reference)
+  conformance  BUILD_DIR/conformance/SCENE-{llvmpipe,softpipe}.csv      (ctest: test_conformance_*)
+  throughput, specialisation, frame
+               STUDY_DIR/{throughput,specialisation,figure-1.1-frame}.md (quadshade-bench-throughput)
+  error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
+  host         this machine and the date
+A block whose input is missing is left as it was, and said so on stderr, so a partial run never
+blanks a table; the prose is written by hand and should be reread when the numbers move.
+"""
+import csv
+import datetime
+import glob
+import os
+import platform
+import re
+import sys
+from collections import OrderedDict
+
+SCENES = OrderedDict([
+    ("torus-rolled", "torus under a camera rolled 28° (self-occluding)"),
+    ("overlap", "overlapping objects: squares at three depths, a box and a torus crossing one, mixed order"),
+    ("overlap-reversed", "the same drawn in reverse order"),
+    ("hierarchy", "node hierarchy: matrix, TRS with non-uniform scale, a sheared grandchild"),
+    ("grazing-plane", "200x200 plane seen from 0.3 above, crossing the near plane and the screen's sides"),
+    ("sliver-fan", "fan of 240 slivers and a strip of long thin triangles"),
+])
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def counts(r):
+    return f"{r['over_1']} · {r['over_2']} · {r['max_steps']}/255"
+
+
+def mesa_table(build):
+    paths = [os.path.join(build, f"reference-comparison-{d}.csv") for d in ("llvmpipe", "softpipe")]
+    if not all(os.path.exists(p) for p in paths):
+        return None
+    lp = OrderedDict((r["case"], r) for r in read_csv(paths[0]))
+    sp = {r["case"]: r for r in read_csv(paths[1])}
+    out = ["| case | pixels | vs llvmpipe, `fine`: >1/255 · >2/255 · max · coverage | "
+           "vs softpipe, `coarse-lower` + `right-top` + `separate`: >1/255 · >2/255 · max · coverage |",
+           "|---|---|---|---|"]
+    for case, r in lp.items():
+        s = sp.get(case)
+        soft = f"{counts(s)} · {s['coverage_mismatch']}" if s else "-"
+        out.append(f"| {case} | {r['pixels']} | {counts(r)} · {r['coverage_mismatch']} | {soft} |")
+    return out
+
+
+def scene_sums(rows):
+    """Sums over a scene's shaders, the largest difference, and the shaders over 1/255."""
+    over = [r for r in rows if int(r["over_1"]) > 0]
+    return {
+        "size": f"{rows[0]['width']}x{rows[0]['height']}",
+        "covered": sum(int(r["covered"]) for r in rows),
+        "over_1": sum(int(r["over_1"]) for r in rows),
+        "over_2": sum(int(r["over_2"]) for r in rows),
+        "max": max(int(r["max_steps"]) for r in rows),
+        "coverage": sum(int(r["coverage_mismatch"]) for r in rows),
+        "shaders": len(rows),
+        "which": ", ".join(f"{r['shader']} {r['over_1']}" for r in sorted(over, key=lambda r: -int(r["over_1"]))),
+    }
+
+
+def conformance_table(build):
+    found = OrderedDict()
+    for path in sorted(glob.glob(os.path.join(build, "conformance", "*-llvmpipe.csv"))):
+        scene = os.path.basename(path)[:-len("-llvmpipe.csv")]
+        soft = os.path.join(build, "conformance", f"{scene}-softpipe.csv")
+        if scene.startswith("textures") or not os.path.exists(soft):
+            continue
+        found[scene] = (read_csv(path), read_csv(soft))
+    if not found:
+        return None
+    order = [s for s in SCENES if s in found] + [s for s in found if s not in SCENES]
+    out = ["| scene | llvmpipe size · softpipe size | shaders | covered pixels (llvmpipe) | "
+           "vs llvmpipe, `fine`: >1/255 · >2/255 · max · coverage | "
+           "vs softpipe, `coarse-lower` + `right-top` + `separate`: >1/255 · >2/255 · max · coverage |",
+           "|---|---|---|---|---|---|"]
+    for scene in order:
+        lp, sp = (scene_sums(rows) for rows in found[scene])
+        which = f" ({lp['which']})" if lp["which"] and lp["over_1"] < 1000 else ""
+        out.append(f"| {SCENES.get(scene, scene)} | {lp['size']} · {sp['size']} | {lp['shaders']} | {lp['covered']} | "
+                   f"{lp['over_1']} · {lp['over_2']} · {lp['max']}/255 · {lp['coverage']}{which} | "
+                   f"{sp['over_1']} · {sp['over_2']} · {sp['max']}/255 · {sp['coverage']} |")
+    return out
+
+
+def markdown_file(study, name):
+    path = os.path.join(study, name)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return [l.rstrip() for l in f if l.strip().startswith("|")]
+
+
+def pareto_front(rows):
+    front = []
+    for r in sorted(rows, key=lambda r: (r["ms"], r["rms_vs_truth"])):
+        if not front or r["rms_vs_truth"] < 0.99 * front[-1]["rms_vs_truth"]:
+            front.append(r)
+    return front
+
+
+def error_table(study):
+    path = os.path.join(study, "study.csv")
+    if not os.path.exists(path):
+        return None
+    rows = read_csv(path)
+    for r in rows:
+        r["ms"], r["rms_vs_truth"] = float(r["ms"]), float(r["rms_vs_truth"])
+    cases = OrderedDict()
+    for r in rows:
+        cases.setdefault(f"{r['shader']} {r['view']}", []).append(r)
+    modes = list(OrderedDict.fromkeys(r["mode"] for r in rows))
+    out = ["| case | " + " | ".join(modes) + " | Pareto front |", "|---|" + "---|" * (len(modes) + 1)]
+    for case, rs in cases.items():
+        by_mode = {r["mode"]: r for r in rs}
+        cells = [f"{by_mode[m]['rms_vs_truth']:.3f} · {by_mode[m]['ms']:.2f}" if m in by_mode else "-" for m in modes]
+        front = ", ".join(r["mode"] for r in pareto_front(rs))
+        out.append(f"| {case} | " + " | ".join(cells) + f" | {front} |")
+    return out
+
+
+def host_line():
+    model = "unknown CPU"
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    flags = ""
+    try:
+        with open("/proc/cpuinfo") as f:
+            text = f.read()
+        flags = "AVX-512" if "avx512f" in text else "AVX2" if "avx2" in text else "no AVX2"
+    except OSError:
+        pass
+    return [f"Measured on {model} ({os.cpu_count()} cores, {flags}), {platform.system()} "
+            f"{platform.release()}, {datetime.date.today().isoformat()}."]
+
+
+def main():
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    build, study, doc = sys.argv[1:]
+    makers = {
+        "host": host_line,
+        "mesa": lambda: mesa_table(build),
+        "conformance": lambda: conformance_table(build),
+        "throughput": lambda: markdown_file(study, "throughput.md"),
+        "specialisation": lambda: markdown_file(study, "specialisation.md"),
+        "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
+        "error": lambda: error_table(study),
+    }
+    with open(doc) as f:
+        text = f.read()
+    block = re.compile(r"(<!-- results:(\w[\w-]*) -->\n)(.*?)(<!-- /results -->)", re.S)
+
+    def replace(m):
+        name = m.group(2)
+        if name not in makers:
+            sys.exit(f"results.py: {doc}: unknown block '{name}'")
+        lines = makers[name]()
+        if not lines:
+            print(f"results.py: {name}: no input in this run, kept as it was", file=sys.stderr)
+            return m.group(0)
+        return m.group(1) + "\n".join(lines) + "\n" + m.group(4)
+
+    new, n = block.subn(replace, text)
+    tmp = doc + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(new)
+    os.replace(tmp, doc)
+    print(f"results.py: {n} blocks in {doc}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
