@@ -1,10 +1,11 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
+// plane and its texture, seed 004's plane and its noise texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
 // outputs are committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
@@ -132,12 +133,51 @@ qs::Image test_image() {
     return img;
 }
 
+// Seed 004's tex4, which its text leaves to NetRun ("this looks better with a noisy repeating
+// image"): 32x32 white noise, each of red, green and blue a byte of the PCG hash of the texel and
+// channel, opaque (so that every pixel of a shader that returns the texture counts as covered).
+qs::Image8 white_noise_image() {
+    constexpr int n = 32;
+    auto pcg_hash = [](std::uint32_t v) {
+        const std::uint32_t state = v * 747796405u + 2891336453u;
+        const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+        return (word >> 22u) ^ word;
+    };
+    qs::Image8 img{n, n, std::vector<std::uint8_t>(std::size_t(n) * n * 4)};
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            std::uint8_t* p = &img.rgba[(std::size_t(y) * n + std::size_t(x)) * 4];
+            for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(pcg_hash(std::uint32_t((c * n + y) * n + x)) >> 24);
+            p[3] = 255;
+        }
+    }
+    return img;
+}
+
+// Seed 004's plane: the Table 1.1 plane, its texture coordinates NetRun's `texcoords`, with the
+// two textures the snippets read: tex1 the Table 1.1 picture (smooth colours) and tex4 the white
+// noise, both repeating (the snippets read them far outside [0, 1]), bilinear, no mipmaps.
+qs::Scene seed_004_plane(const std::filesystem::path& dir) {
+    qs::Scene s = table_1_1_plane(dir);
+    const qs::Sampler repeat{qs::Filter::Linear, qs::Filter::Linear, qs::Wrap::Repeat, qs::Wrap::Repeat};
+    s.textures[0].sampler = repeat;
+    qs::Texture noise;
+    noise.image.file = dir / "textures" / "seed-004-noise.png";
+    noise.sampler = repeat;
+    s.textures.push_back(noise);
+    qs::Object& o = s.objects[0];
+    o.shader = "lawlor_voronoi_f1";
+    o.texture = -1;
+    o.samplers = {{"tex1", 0}, {"tex4", 1}};
+    return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, table-1.1-plane.gltf (+ .bin), textures/ and conformance/.\n");
+                             "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-004-plane.gltf (+ .bin), textures/ and conformance/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -146,6 +186,8 @@ int main(int argc, char** argv) {
         qs::write_image(dir / "textures" / "halftone-source.png", test_image());
         qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
+        qs::write_image(dir / "textures" / "seed-004-noise.png", white_noise_image());
+        qs::save_scene(seed_004_plane(dir), dir / "seed-004-plane.gltf");
         qs::write_geometry_scenes(dir);
         qs::write_texture_scenes(dir);
     } catch (const std::exception& e) {

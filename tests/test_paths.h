@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "scenes/scene.h"
 
@@ -14,6 +15,13 @@ inline const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
 inline const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
 inline const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
 inline const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
+// The Table 1.1 plane binding the two textures seed 004's snippets read (tex1, tex4).
+inline const std::filesystem::path kSeed004Plane = kSource / "scenes/assets/seed-004-plane.gltf";
+
+// The plane a shader of the plane is shown on: its seed's where the seed reads textures of its own.
+inline const std::filesystem::path& plane_for(std::string_view shader) {
+    return shader.starts_with("lawlor_") ? kSeed004Plane : kPlane;
+}
 
 // A fresh, empty folder under the system's temporary directory, unique to this process.
 inline std::filesystem::path temp_dir(const std::string& name) {

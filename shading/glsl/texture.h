@@ -59,8 +59,9 @@ public:
     // does only when shaded in quads: the renderer shades such a texture in quads either way.)
     bool needs_lod() const { return sampler.mip != MipFilter::None || sampler.min != sampler.mag; }
 
-    // The size of level `lod` (0: the base), as GLSL's textureSize; llvmpipe's answer outside
-    // the levels (lp_build_size_query: minified all the same, at least 1).
+    // The size of level `lod` (0: the base), as GLSL's textureSize; (0, 0, 0) outside the
+    // levels, as llvmpipe answers (texel_fetch_probe). A texture whose sampler reads no mipmaps
+    // has one level, as GL's texture view of it has.
     std::array<int, 3> size(int lod) const;
 
 protected:
@@ -266,6 +267,89 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, Lod kind, c
     return out;
 }
 
+// GLSL ints of the lanes of an integer number type, lane by lane, and back.
+template <class I>
+void to_ints(const I& x, std::int32_t* out) {
+    if constexpr (is_checked_v<I>) {
+        x.v.store(out);
+    } else {
+        x.store(out);
+    }
+}
+template <class I>
+I from_ints(const std::int32_t* in, LaneCases cases = {}) {
+    if constexpr (is_checked_v<I>) {
+        return I(decltype(I::v)::load(in), cases);
+    } else {
+        return I::load(in);
+    }
+}
+template <class I>
+LaneCases cases_of([[maybe_unused]] const I& x) {
+    if constexpr (is_checked_v<I>) {
+        return x.cases;
+    } else {
+        return {};
+    }
+}
+
+// textureSize of every lane's level. GLSL leaves a level outside the texture's undefined:
+// Checked numbers flag it as Argument.
+template <Number F, std::size_t Dims>
+std::array<int_t<F>, Dims> size_query(const Texture& tex, const int_t<F>& lod) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) std::int32_t level[N], size[3][N];
+    to_ints(lod, level);
+    std::uint32_t outside = 0;
+    for (int i = 0; i < N; ++i) {
+        const std::array<int, 3> s = tex.size(level[i]);
+        for (std::size_t k = 0; k < Dims; ++k) size[k][i] = s[k];
+        if (level[i] < 0 || level[i] >= int(tex.levels.size())) outside |= 1u << i;
+    }
+    const LaneCases cases = cases_of(lod) | LaneCases::on(outside, Undefined::Argument);
+    std::array<int_t<F>, Dims> out;
+    for (std::size_t k = 0; k < Dims; ++k) out[k] = from_ints<int_t<F>>(size[k], cases);
+    return out;
+}
+
+// texelFetch of every lane's texel: (0, 0, 0, 0) outside the level or the levels, which GLSL
+// leaves undefined and Checked numbers flag as Argument. The texels are constants: under Dual2
+// their derivatives are 0.
+template <Number F, std::size_t Dims>
+vec4<F> texel_fetch(const Texture& tex, const std::array<int_t<F>, Dims>& p, const int_t<F>& lod) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) std::int32_t c[3][N], level[N];
+    alignas(64) float rgba[4][N];
+    for (std::size_t k = 0; k < Dims; ++k) to_ints(p[k], c[k]);
+    to_ints(lod, level);
+    Fetch f;
+    f.lanes = N;
+    f.x = c[0], f.y = c[1], f.z = Dims == 3 ? c[2] : nullptr, f.level = level;
+    for (std::size_t ch = 0; ch < 4; ++ch) f.rgba[ch] = rgba[ch];
+    fetch(tex, f);
+    vec4<F> out;
+    for (int ch = 0; ch < 4; ++ch) {
+        if constexpr (is_dual2<F>::value) {
+            using T = typename F::value_type;
+            out[ch] = F(from_floats<T>(rgba[ch]), T(0.0f), T(0.0f));
+        } else if constexpr (is_checked_v<F>) {
+            std::uint32_t outside = 0;
+            for (int i = 0; i < N; ++i) {
+                const std::array<int, 3> s = tex.size(level[i]);
+                bool in = s[0] > 0;
+                for (std::size_t k = 0; k < Dims; ++k) in = in && c[k][i] >= 0 && c[k][i] < s[k];
+                if (!in) outside |= 1u << i;
+            }
+            LaneCases cases = cases_of(lod) | LaneCases::on(outside, Undefined::Argument);
+            for (std::size_t k = 0; k < Dims; ++k) cases = cases | cases_of(p[k]);
+            out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
+        } else {
+            out[ch] = from_floats<F>(rgba[ch]);
+        }
+    }
+    return out;
+}
+
 }  // namespace texture_detail
 
 // GLSL 1.20's lookups with the level of detail from the quad (implicit), and with a bias added
@@ -304,6 +388,28 @@ vec4<F> textureLod(const sampler3D& tex, const vec3<F>& str, const F& lod) {
 }
 template <Number F>
 vec4<F> texture2DLod(const sampler2D& tex, const vec2<F>& st, const F& lod) { return textureLod(tex, st, lod); }
+
+// GLSL 1.30's size query and unfiltered fetch, with the integer level per fragment. Their
+// arguments are integers, so the float type is named: textureSize<F>(teximage, 0),
+// texelFetch<F>(teximage, ivec2<F>(p), level).
+template <Number F>
+ivec2<F> textureSize(const sampler2D& tex, const int_t<F>& lod) {
+    const auto s = texture_detail::size_query<F, 2>(tex, lod);
+    return ivec2<F>(s[0], s[1]);
+}
+template <Number F>
+ivec3<F> textureSize(const sampler3D& tex, const int_t<F>& lod) {
+    const auto s = texture_detail::size_query<F, 3>(tex, lod);
+    return ivec3<F>(s[0], s[1], s[2]);
+}
+template <Number F>
+vec4<F> texelFetch(const sampler2D& tex, const ivec2<F>& p, const int_t<F>& lod) {
+    return texture_detail::texel_fetch<F, 2>(tex, {p.x, p.y}, lod);
+}
+template <Number F>
+vec4<F> texelFetch(const sampler3D& tex, const ivec3<F>& p, const int_t<F>& lod) {
+    return texture_detail::texel_fetch<F, 3>(tex, {p.x, p.y, p.z}, lod);
+}
 template <Number F>
 vec4<F> texture3DLod(const sampler3D& tex, const vec3<F>& str, const F& lod) { return textureLod(tex, str, lod); }
 

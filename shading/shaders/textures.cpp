@@ -3,6 +3,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS(TextureLodProbe, TextureBiasProbe, Texture3dProbe, Texture3dLodProbe, FastNoise)
+QUADSHADE_SHADERS(TextureLodProbe, TextureBiasProbe, Texture3dProbe, Texture3dLodProbe, TexelFetchProbe, TexelFetch3dProbe,
+                  FastNoise)
 
 }  // namespace qs::shaders

@@ -1,6 +1,7 @@
 #pragma once
 // Shaders that sample named textures: seed 001's fast noise from a 3D volume, and the probes that
-// compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod) with llvmpipe
+// compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod, textureSize
+// and texelFetch) with llvmpipe
 // (tests/reference/test_texture_conformance.cpp). Translated from the .frag files beside this
 // header.
 
@@ -59,6 +60,49 @@ struct Texture3dLodProbe {
         const sampler3D& volume = u.sampler3D(0);
         vec2<F> st = in.vec2_at(0);
         return texture3DLod(volume, vec3<F>(st, st.x * 0.75f - st.y * 0.5f), floor(fract(st.x + st.y) * 48.0f) * 0.125f - 1.0f);
+    }
+};
+
+inline constexpr Needs kTexelFetchNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = true,
+                                        .time = false, .varyings = 0, .frag_coord = true};
+
+struct TexelFetchProbe {
+    static constexpr ShaderInfo info = with_glsl_version(
+        ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
+                   kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
+        130);
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        using Int = int_t<F>;
+        ivec2<F> pixel = ivec2<F>(in.gl_FragCoord.xy());
+        Int level = (pixel.x / 4) % 6 - 1;
+        ivec2<F> size = textureSize<F>(*u.teximage, level);
+        ivec2<F> texel = (pixel * ivec2<F>(3, 5)) % (size + 5) - 2;
+        vec4<F> c = texelFetch<F>(*u.teximage, texel, (pixel.x + pixel.y) % 4 - 1);
+        return select(pixel.x % 2 == 0, vec4<F>(c.xyz(), 0.75f + 0.25f * c.w),
+                      vec4<F>(vec2<F>(size) / 1024.0f, F(level + 1) / 8.0f, 1.0f));
+    }
+};
+
+struct TexelFetch3dProbe {
+    static constexpr ShaderInfo info = with_glsl_version(
+        ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
+                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
+                         .varyings = 0, .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
+                   {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
+        130);
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+        using Int = int_t<F>;
+        const sampler3D& volume = u.sampler3D(0);
+        ivec2<F> pixel = ivec2<F>(in.gl_FragCoord.xy());
+        Int level = (pixel.x / 4) % 6 - 1;
+        ivec3<F> size = textureSize<F>(volume, level);
+        ivec3<F> texel = (ivec3<F>(pixel, pixel.x + pixel.y) * ivec3<F>(3, 5, 7)) % (size + 5) - 2;
+        vec4<F> c = texelFetch<F>(volume, texel, (pixel.x + pixel.y) % 4 - 1);
+        return select(pixel.x % 2 == 0, vec4<F>(c.xyz(), 0.75f + 0.25f * c.w), vec4<F>(vec3<F>(size) / 1024.0f, 1.0f));
     }
 };
 

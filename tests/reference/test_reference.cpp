@@ -61,6 +61,26 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "the un-anti-aliased variant: a plain step turns the last-ulp difference of a value lying on its "
       "threshold into a full flip, which aastep's ramp absorbs (measured: 1 pixel, 178/255)"}},
     {{"halftone_step", "softpipe"}, {6, 6, 0, "as against llvmpipe (measured: 3 pixels)"}},
+    {{"lawlor_texture_two_octaves", "softpipe"},
+     {8, 0, 0,
+      "softpipe filters with float weights where llvmpipe (and quadshade) round them to 1/256 and lerp in 8 bits "
+      "(docs/design.md, Textures): within a step per lookup, and the two octaves' sum rounds to 2 steps on a few "
+      "pixels (measured: 4)"}},
+};
+// Shaders whose softpipe colours and coverage are counted (the CSV) but not held to the bar, and
+// why (measured on Mesa 22.3.6 at 500x500). quadshade follows llvmpipe, which they match.
+const std::map<std::string, const char*> kSoftpipeCountedOnly = {
+    {"hash_pcg",
+     "a hash of floor(st * 32): softpipe's st differs from llvmpipe's by an ulp (see perlin5), and with 31 cell "
+     "borders each way an ulp picks the neighbouring cell's hash on 1495 pixels (0.6%)"},
+    {"hash_perm289", "as hash_pcg (measured: 1495 pixels over 1/255)"},
+    {"lawlor_dots_moved",
+     "dot centres read from tex1: softpipe filters with float weights where llvmpipe (and quadshade) round them "
+     "to 1/256 and lerp in 8 bits (docs/design.md, Textures), so its dots move and their rims flip (1186 pixels)"},
+    {"lawlor_dots_search", "as lawlor_dots_moved, with tex4 (3506 pixels, and 1096 in alpha, which is colour here)"},
+    {"lawlor_voronoi_f1", "as lawlor_dots_moved: the feature points move (515 pixels over 1/255; alpha is F1)"},
+    {"lawlor_voronoi_f2", "as lawlor_voronoi_f1 (alpha is F2: 914 pixels cross 1/2)"},
+    {"lawlor_stained_glass", "as lawlor_voronoi_f1 (43996 pixels over 1/255, none over 5/255)"},
 };
 constexpr double kMaxFractionOver1 = 0.001;  // the bar itself, never loosened by a bound
 
@@ -71,6 +91,12 @@ struct Case {
     int width, height;
 };
 
+// Seed 003's shaders discard what lies above a square viewport as wide as the window: they are
+// compared in a window taller than wide (the tutorial's iPhone 5 screen, 320x568 points), where
+// the 248 rows above the square are discarded.
+bool portrait(std::string_view shader) { return shader.starts_with("es_"); }
+constexpr int kPortraitWidth = 320, kPortraitHeight = 568;
+
 std::vector<Case> cases() {
     std::vector<Case> all = {{"figure-1.1", kFigure, "", 1264, 400}};
     for (const Program* p : catalogue()) {
@@ -78,7 +104,9 @@ std::vector<Case> cases() {
         // Figure 1.1's shaders (object-space patterns) are compared on Figure 1.1, probes apart.
         const bool object_space = info.needs.coordinates == Coordinates::Object2D || info.needs.coordinates == Coordinates::Object3D;
         if (object_space || info.name.find("probe") != std::string_view::npos) continue;
-        all.push_back({std::string(info.name), kPlane, std::string(info.name), kPlaneSize, kPlaneSize});
+        const bool tall = portrait(info.name);
+        all.push_back({std::string(info.name), plane_for(info.name), std::string(info.name), tall ? kPortraitWidth : kPlaneSize,
+                       tall ? kPortraitHeight : kPlaneSize});
     }
     return all;
 }
@@ -136,6 +164,7 @@ void check_against(const std::string& driver, Derivatives rule, const char* rule
                    std::to_string(n.over_2) + "," + std::to_string(n.max_steps));
             INFO(c.name << " vs " << driver << ": " << n.over_1 << " pixels over 1/255, " << n.over_2
                         << " over 2/255, max " << n.max_steps << "/255, coverage mismatches " << n.coverage_mismatch);
+            if (driver == "softpipe" && kSoftpipeCountedOnly.count(c.name)) continue;
             const auto it = kBounds.find({c.name, driver});
             const Bound bound = it == kBounds.end() ? Bound{} : it->second;
             INFO("bound: " << bound.cause);
@@ -155,6 +184,25 @@ TEST_CASE("every shader matches OSMesa llvmpipe under the fine rule", "[referenc
 
 TEST_CASE("every shader matches OSMesa softpipe under the coarse-lower rule", "[reference][softpipe]") {
     check_against("softpipe", Derivatives::CoarseLower, "coarse-lower");
+}
+
+TEST_CASE("seed 003's square viewport: what lies above it in a portrait window is discarded, as by llvmpipe", "[reference][discard]") {
+    // The plane's clear colour is black, and so is es_tiles2's tile at the origin (sin(0) = 0):
+    // the other three tiles are drawn, nothing above the square (the image's first rows).
+    const Case c{"es_tiles2", kPlane, "es_tiles2", kPortraitWidth, kPortraitHeight};
+    const Framebuffer q = ours(c, Derivatives::Fine, c.width, c.height);
+    const Image ref = reference(c, "llvmpipe", c.width, c.height);
+    auto drawn = [](const std::vector<float>& rgba, std::size_t first_row, std::size_t rows) {
+        std::size_t n = 0;
+        for (std::size_t p = first_row * kPortraitWidth * 4; p < (first_row + rows) * kPortraitWidth * 4; p += 4) {
+            n += rgba[p] != 0.0f || rgba[p + 1] != 0.0f || rgba[p + 2] != 0.0f;
+        }
+        return n;
+    };
+    constexpr std::size_t above = kPortraitHeight - kPortraitWidth;
+    CHECK(drawn(ref.rgba, 0, above) == 0);
+    CHECK(drawn(ref.rgba, above, kPortraitWidth) == 3 * std::size_t(kPortraitWidth) * kPortraitWidth / 4);
+    CHECK(std::equal(q.rgba.begin(), q.rgba.end(), ref.rgba.begin()));
 }
 
 TEST_CASE("derivative probe: fine equals llvmpipe and coarse-lower equals softpipe, bit for bit", "[reference][derivatives]") {

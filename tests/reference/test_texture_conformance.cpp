@@ -159,6 +159,15 @@ bool min_mag_differ(const Sampler& t) {
                             t.min_filter == Filter::LinearMipmapLinear;
     return min_linear != (t.mag_filter == Filter::Linear);
 }
+// The cases of textureSize and texelFetch GLSL leaves undefined, softpipe answers its own way
+// (measured, Mesa 22.3.6): textureSize of a level the texture lacks is not 0, as llvmpipe's and
+// quadshade's (levels -1, 1, 2, 3, 4 of a texture without mipmaps: 1, 2, 3, 4, 5 on each axis),
+// and texelFetch outside the level or the levels reads a texel where llvmpipe reads (0, 0, 0, 0).
+// The probes mix those cases into every block, so softpipe's colours are counted (the CSV) but
+// not held to the bar: its coverage is.
+bool softpipe_own_undefined(const std::string& shader) {
+    return shader == "texel_fetch_probe" || shader == "texel_fetch_3d_probe";
+}
 bool per_pixel_lod(const std::string& shader) {
     return shader == "texture_lod_probe" || shader == "texture_bias_probe" || shader == "texture3d_lod_probe";
 }
@@ -220,7 +229,10 @@ void check_scenes(const char* const (&scenes)[N]) {
             if (kDriver == GlDriver::Llvmpipe && per_pixel_lod(shader)) {
                 check_bit_exact(shader, scene.textures[0].sampler, n.covered, n.not_bit_exact, n.over_1);
             }
-            if (kDriver == GlDriver::Llvmpipe || !softpipe_own_lod(scene)) {
+            // textureSize and texelFetch filter nothing: llvmpipe's answers, in range and out of
+            // it (0), are quadshade's to the bit (texel_fetch_probe.frag).
+            if (kDriver == GlDriver::Llvmpipe && shader == "texel_fetch_probe") CHECK(n.not_bit_exact == 0);
+            if (kDriver == GlDriver::Llvmpipe || (!softpipe_own_lod(scene) && !softpipe_own_undefined(shader))) {
                 CHECK(double(n.over_1) <= 0.001 * double(n.covered) + double(bound.over_1));
                 CHECK(n.over_2 <= bound.over_2);
             }
@@ -332,7 +344,7 @@ TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": 3D textures 
     };
     References references;
     for (const VolumeCase& c : cases) {
-        for (const char* shader : {"texture3d_probe", "texture3d_lod_probe"}) {
+        for (const char* shader : {"texture3d_probe", "texture3d_lod_probe", "texel_fetch_3d_probe"}) {
             // Receding: st from (0, 0) to (2, 20) along the ground; flat: st far outside [0, 1].
             Scene scene = volume_scene(c.power_of_two ? pot : npot, c.power_of_two ? 4 : 6, c.sampler,
                                        c.receding ? glm::vec2(0.0f) : glm::vec2(-1.5f, -1.2f),
@@ -353,7 +365,9 @@ TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": 3D textures 
                       << n.coverage_mismatch << ", not bit-exact " << n.not_bit_exact);
             CHECK(n.covered > 0);
             CHECK(n.coverage_mismatch == 0);
-            if (kDriver == GlDriver::Llvmpipe) {
+            if (kDriver == GlDriver::Llvmpipe && softpipe_own_undefined(shader)) {
+                CHECK(n.not_bit_exact == 0);
+            } else if (kDriver == GlDriver::Llvmpipe) {
                 check_bit_exact(shader, c.sampler, n.covered, n.not_bit_exact, n.over_1);
             } else if (!softpipe_own_lod(scene) && std::string(shader) == "texture3d_probe") {
                 CHECK(double(n.over_1) <= 0.001 * double(n.covered));

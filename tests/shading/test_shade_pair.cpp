@@ -43,11 +43,17 @@ TEST_CASE("shading two batches as a pair gives the bits of shading each alone, e
     Uniforms u;
     u.time = 1.75f;
     u.teximage = &texture;
-    u.samplers[0] = &volume;  // the named-sampler shaders' one sampler3D
     const FragmentBatch a = batch_at(0.0f), b = batch_at(5.3f);
     int uniform = 0;  // shaders whose two batches came out the same: there a swap would not show
     for (const Program* program : catalogue()) {
         const bool derivatives = program->info().needs.derivatives;
+        // Each named sampler gets a texture of the kind it declares.
+        const auto& samplers = program->info().needs.samplers;
+        for (std::size_t i = 0; i < samplers.size(); ++i) {
+            u.samplers[i] = samplers[i].name.empty() ? nullptr
+                            : samplers[i].dims == 3  ? static_cast<const glsl::Texture*>(&volume)
+                                                     : &texture;
+        }
         for (Derivatives d : {Derivatives::None, Derivatives::Fine, Derivatives::CoarseLower, Derivatives::CoarseUpper,
                               Derivatives::Analytic}) {
             if (d == Derivatives::None && derivatives) continue;

@@ -401,4 +401,101 @@ TEST_CASE("textureSize and texelFetch: the level's size, zero outside; texels as
     }
 }
 
+namespace {
+
+// GLSL's textureSize and texelFetch over every number type: each lane is what the core gives
+// (Texture::size, texture_detail::fetch) for that lane's level and texel, and a Checked number
+// flags exactly the lanes GLSL leaves undefined (a level or a texel outside the texture's).
+template <class I>
+I int_lanes(const std::int32_t* v) {
+    if constexpr (is_checked_v<I>) {
+        return I(decltype(I::v)::load(v), {});
+    } else {
+        return I::load(v);
+    }
+}
+template <class I>
+std::int32_t int_lane(const I& x, int k) {
+    if constexpr (is_checked_v<I>) {
+        return lane(x.v, k);
+    } else {
+        return lane(x, k);
+    }
+}
+template <class F>
+float float_lane(const F& x, int k) {
+    if constexpr (is_dual2<F>::value) {
+        CHECK(float(lane(x.dx, k)) == 0.0f);  // texels are constants
+        CHECK(float(lane(x.dy, k)) == 0.0f);
+        return float(lane(x.val, k));
+    } else if constexpr (is_checked_v<F>) {
+        return float(lane(x.v, k));
+    } else {
+        return float(lane(x, k));
+    }
+}
+
+}  // namespace
+
+#define FETCH_NUMBER_TYPES float, double, (Pixels<float, 16>), (Quads<float, 4>), (Pixels<double, 8>), Dual2<float>, \
+                           (Dual2<Pixels<float, 16>>), (Checked<Pixels<float, 16>>), (Checked<Quads<float, 4>>)
+
+TEMPLATE_TEST_CASE("textureSize and texelFetch of every number type: each lane as the core, undefined lanes flagged",
+                   "[textures]", FETCH_NUMBER_TYPES) {
+    using F = TestType;
+    using I = int_t<F>;
+    constexpr int n = lanes_of<F>();
+    std::mt19937 rng(11);
+    const auto texels = random_texels(rng, 10 * 6 * 3);
+    SamplerState mipmapped;
+    mipmapped.mip = MipFilter::Nearest;
+    const sampler3D volume(10, 6, 3, texels.data(), mipmapped);  // levels 10x6x3, 5x3x1, 2x1x1, 1x1x1
+    const sampler2D image(10, 6, texels.data(), mipmapped);      // 10x6, 5x3, 2x1, 1x1
+    // Lanes through levels -1..4 and texels from 2 before each axis to 2 past it.
+    for (int start = 0; start < 96; start += n) {
+        std::int32_t level[16], x[16], y[16], z[16];
+        for (int k = 0; k < n; ++k) {
+            const int i = start + k;
+            level[k] = i % 6 - 1, x[k] = (i * 7) % 15 - 2, y[k] = (i * 5) % 11 - 2, z[k] = (i * 3) % 7 - 2;
+        }
+        const I lod = int_lanes<I>(level);
+        const ivec2<F> size2 = textureSize<F>(image, lod);
+        const ivec3<F> size3 = textureSize<F>(volume, lod);
+        const vec4<F> c2 = texelFetch<F>(image, ivec2<F>(int_lanes<I>(x), int_lanes<I>(y)), lod);
+        const vec4<F> c3 = texelFetch<F>(volume, ivec3<F>(int_lanes<I>(x), int_lanes<I>(y), int_lanes<I>(z)), lod);
+        for (int k = 0; k < n; ++k) {
+            INFO("level " << level[k] << ", texel " << x[k] << ", " << y[k] << ", " << z[k]);
+            const auto s2 = image.size(level[k]), s3 = volume.size(level[k]);
+            CHECK(int_lane(size2.x, k) == s2[0]);
+            CHECK(int_lane(size2.y, k) == s2[1]);
+            CHECK(int_lane(size3.x, k) == s3[0]);
+            CHECK(int_lane(size3.y, k) == s3[1]);
+            CHECK(int_lane(size3.z, k) == s3[2]);
+            float want2[4], want3[4];
+            texture_detail::Fetch f;
+            f.lanes = 1, f.x = &x[k], f.y = &y[k], f.level = &level[k];
+            for (std::size_t c = 0; c < 4; ++c) f.rgba[c] = &want2[c];
+            texture_detail::fetch(image, f);
+            f.z = &z[k];
+            for (std::size_t c = 0; c < 4; ++c) f.rgba[c] = &want3[c];
+            texture_detail::fetch(volume, f);
+            for (int c = 0; c < 4; ++c) {
+                CHECK(float_lane(c2[c], k) == want2[c]);
+                CHECK(float_lane(c3[c], k) == want3[c]);
+            }
+            const bool level_outside = level[k] < 0 || level[k] > 3;
+            const bool in2 = !level_outside && x[k] >= 0 && x[k] < s2[0] && y[k] >= 0 && y[k] < s2[1];
+            const bool in3 = !level_outside && x[k] >= 0 && x[k] < s3[0] && y[k] >= 0 && y[k] < s3[1] && z[k] >= 0 && z[k] < s3[2];
+            if (!in2) CHECK(want2[3] == 0.0f);  // llvmpipe's answer outside: (0, 0, 0, 0)
+            if constexpr (is_checked_v<F>) {
+                const auto argument = std::uint8_t(Undefined::Argument);
+                CHECK(size2.x.cases.at(k) == (level_outside ? argument : 0));
+                CHECK(size3.z.cases.at(k) == (level_outside ? argument : 0));
+                CHECK(c2[0].cases.at(k) == (in2 ? 0 : argument));
+                CHECK(c3[3].cases.at(k) == (in3 ? 0 : argument));
+            }
+        }
+    }
+}
+
 }  // namespace qs
