@@ -1,6 +1,7 @@
 #include "scenes/temporary_file.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,14 +12,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 namespace qs {
 
 namespace {
 
-// Live temporaries, for the signal handler: fixed storage (a handler may not allocate), each
-// slot claimed, filled, then marked live; the handler removes only live ones.
+// Live temporaries, for the thread that handles the signals: fixed storage, each slot claimed,
+// filled, then marked live; only live ones are removed.
 constexpr int kSlots = 16;
 constexpr std::size_t kPathBytes = 4096;
 enum SlotState : int { kFree, kClaimed, kLive };
@@ -27,6 +30,10 @@ struct Slot {
     char path[kPathBytes];
 };
 std::array<Slot, kSlots> g_slots;
+// Held from a temporary's creation until it is registered, and by the signal thread from the
+// signal to the end of the process: a temporary is either created and registered before a
+// signal is handled (and removed) or never created.
+std::mutex g_creating;
 
 int register_temporary(const std::string& path) {
     if (path.size() >= kPathBytes) return -1;
@@ -45,12 +52,26 @@ void unregister_temporary(int slot) {
     if (slot >= 0) g_slots[std::size_t(slot)].state.store(kFree);
 }
 
-extern "C" void remove_temporaries_and_reraise(int sig) {
+sigset_t ending_signals() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, sig);
+    return set;
+}
+
+// The signal thread: waits for an ending signal, removes the live temporaries, then ends the
+// process as the signal would have (its default action, raised again with it unblocked).
+void handle_ending_signals() {
+    const sigset_t set = ending_signals();
+    int sig = 0;
+    if (::sigwait(&set, &sig) != 0) return;
+    g_creating.lock();  // never unlocked: no temporary is created from here to the end
     for (Slot& s : g_slots) {
         if (s.state.load() == kLive) ::unlink(s.path);
     }
     std::signal(sig, SIG_DFL);
-    std::raise(sig);
+    ::pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+    ::raise(sig);
 }
 
 // Six random letters and digits: the temporary's name cannot be guessed in advance.
@@ -83,6 +104,7 @@ TemporaryFile::TemporaryFile(const std::filesystem::path& target) : target_(targ
     const std::string extension = target.extension().string();
     // O_EXCL: a file or symlink already there is never opened; the mode is 0666 less the umask,
     // what any new file gets.
+    const std::lock_guard creating(g_creating);
     for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
         std::string name = stem + random_suffix() + extension;
         fd_ = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
@@ -134,11 +156,16 @@ void TemporaryFile::commit() {
 }
 
 void remove_temporaries_on_signals() {
-    struct sigaction action {};
-    action.sa_handler = &remove_temporaries_and_reraise;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESETHAND;
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &action, nullptr);
+    // Blocked here, before any other thread exists, the signals stay blocked in every thread
+    // started later (threads inherit the mask) and reach only the signal thread's sigwait. A
+    // handler instead runs on whichever thread the signal lands, possibly while another thread
+    // is between creating a temporary and registering it, which then stays behind.
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const sigset_t set = ending_signals();
+        ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
+        std::thread(handle_ending_signals).detach();
+    });
 }
 
 }  // namespace qs

@@ -4,7 +4,7 @@
 // The temporary is created exclusively (a fresh, unpredictable name opened with O_EXCL, so a
 // planted file or symlink is never followed), every write to it is checked, and it is flushed
 // to the disk (fsync) before the rename. It is removed when anything fails, when its owner is
-// destroyed without commit(), and on SIGINT/SIGTERM once remove_temporaries_on_signals() ran.
+// destroyed without commit(), and on SIGINT/SIGTERM/SIGHUP once remove_temporaries_on_signals() ran.
 
 #include <filesystem>
 #include <string>
@@ -40,9 +40,10 @@ private:
     int write_error_ = 0;
 };
 
-// Installs SIGINT and SIGTERM handlers that remove every live temporary, then end the process
-// as the signal would have (the default action, re-raised). Call once, early, from a program
-// that writes outputs.
+// On SIGINT, SIGTERM or SIGHUP, removes every live temporary, then ends the process as the
+// signal would have (the default action, raised again). The signals are blocked in the calling
+// thread and handled by a thread of their own: call it first thing in main(), before any other
+// thread starts, from a program that writes outputs.
 void remove_temporaries_on_signals();
 
 }  // namespace qs
