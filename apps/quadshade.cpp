@@ -380,6 +380,7 @@ std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs
 
 struct FrameTotals {
     double render_seconds = 0.0;
+    int renders = 0;  // frames rendered, not reused
     RenderStats stats;  // of the last frame
     UndefinedCounts undefined;
 };
@@ -389,17 +390,23 @@ struct FrameTotals {
 // keeps every string attribute, the frame's time among them, for the process's lifetime: made
 // after the frame's working memory is freed, it does not pin the heap) and renamed into place
 // once complete.
+// `rendered`: `fb` already holds this frame's image (one band, a frame that does not depend on
+// its time), which is written again without rendering.
 void write_frame(SceneRenderer& renderer, const std::vector<RowBand>& bands, double time, const RenderArgs& a,
-                 const std::string& output, const std::string& mask_output, Framebuffer& fb, FrameTotals& totals) {
+                 const std::string& output, const std::string& mask_output, Framebuffer& fb, FrameTotals& totals,
+                 bool rendered) {
     std::optional<ImageWriter> image, mask;
-    totals.stats = {};
+    if (!rendered) totals.stats = {};
     for (const RowBand& band : bands) {
-        RenderStats band_stats;
-        const auto t0 = std::chrono::steady_clock::now();
-        renderer.render_into(fb, time, &band_stats, band);
-        totals.render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        totals.stats.triangles_setup = band_stats.triangles_setup, totals.stats.lanes_shaded += band_stats.lanes_shaded;
-        totals.stats.depth_buffer = band_stats.depth_buffer;  // decided for the whole frame, the same in every band
+        if (!rendered) {
+            RenderStats band_stats;
+            const auto t0 = std::chrono::steady_clock::now();
+            renderer.render_into(fb, time, &band_stats, band);
+            totals.render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            totals.stats.triangles_setup = band_stats.triangles_setup, totals.stats.lanes_shaded += band_stats.lanes_shaded;
+            totals.stats.depth_buffer = band_stats.depth_buffer;  // decided for the whole frame, the same in every band
+            ++totals.renders;
+        }
         if (!image) {
             Metadata metadata = render_metadata(a, time);
             image.emplace(output, fb.width, fb.height, a.alpha, metadata);
@@ -463,21 +470,26 @@ int cmd_render(RenderArgs& a) {
     const auto start = std::chrono::steady_clock::now();
     FrameTotals totals;
     Framebuffer fb;
+    // Frames that cannot differ (no drawn shader reads time) are rendered once, when one band
+    // holds the whole frame.
+    const bool render_once = !renderer.depends_on_time() && bands.size() == 1;
     for (int f = first; f <= last; ++f) {
         const double time = a.animated() ? double(f) / double(a.fps) : req.time.value_or(double(scene.time));
         const std::string mask = a.mask_output.empty() ? "" : path_of(a.mask_output, f);
-        write_frame(renderer, bands, time, a, path_of(a.output, f), mask, fb, totals);
+        write_frame(renderer, bands, time, a, path_of(a.output, f), mask, fb, totals, render_once && f > first);
         if (progress) print_progress(f - first + 1, last - first + 1);
     }
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const int nframes = last - first + 1, w = renderer.width(), h = renderer.height();
     const double render_seconds = totals.render_seconds;
+    const int renders = totals.renders;
     const RenderStats& stats = totals.stats;
     const UndefinedCounts& undefined = totals.undefined;
     std::fprintf(stderr, "quadshade: %d frame%s %dx%d in %.3f s (render %.1f ms/frame, %.1f Mpixel/s), %llu triangles, %llu lanes shaded",
-                 nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / nframes,
-                 double(w) * h * nframes / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
+                 nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / renders,
+                 double(w) * h * renders / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
                  (unsigned long long)stats.lanes_shaded);
+    if (renders < nframes) std::fputs(", rendered once (no drawn shader reads time)", stderr);
     if (bands.size() > 1) std::fprintf(stderr, ", in %zu bands of rows", bands.size());
     if (req.backend == Backend::RayCaster) {
         std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());

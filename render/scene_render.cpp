@@ -132,6 +132,13 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
 
 SceneRenderer::~SceneRenderer() = default;
 
+bool SceneRenderer::depends_on_time() const {
+    for (const DrawCall& d : draws_) {
+        if (d.program->info().needs.time) return true;
+    }
+    return false;
+}
+
 double SceneRenderer::bvh_build_seconds() const {
 #if defined(QUADSHADE_HAS_RAYCAST)
     if (caster_) return caster_->caster.build_seconds();

@@ -57,6 +57,9 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     double bvh_build_seconds() const;  // 0 for the rasterizer
+    // Whether a frame's image depends on its time: some drawn shader declares Needs::time. An
+    // animation of a scene that does not is one image, rendered once.
+    bool depends_on_time() const;
 
     // Bytes a render of `rows` rows holds while it runs: the framebuffer's colour, depth (where
     // a draw tests it) and undefined-case mask, and the vertex stage's and triangle setup's

@@ -18,6 +18,7 @@
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "shading/catalogue.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -210,6 +211,51 @@ TEST_CASE("a 2000-frame animation holds its resident memory flat", "[render][soa
     REQUIRE(late_samples > 10);
     REQUIRE(early > 0);
     CHECK(late - early <= 1024);  // a leak of 1 kB per frame would show as 1000 kB
+}
+
+TEST_CASE("a shader that declares no time draws the same image at every time, so an animation of such shaders renders once", "[render][time]") {
+    // The declaration is what lets the renderer reuse a frame: held for every catalogue shader
+    // this build has, on its plane (shaders whose samplers the plane does not bind are left out).
+    int checked = 0;
+    for (const Program* p : catalogue()) {
+        const ShaderInfo& info = p->info();
+        if (info.needs.time) continue;
+        Scene scene = load_scene(plane_for(info.name));
+        FrameRequest r;
+        r.width = r.height = 40;
+        r.shader_override = std::string(info.name);
+        std::vector<Framebuffer> frames;
+        try {
+            for (const double t : {0.0, 3.7, 1234.5}) {
+                r.time = t;
+                frames.push_back(render_frame(scene, r));
+            }
+        } catch (const SceneError&) {
+            continue;  // a sampler the plane does not bind
+        }
+        INFO(info.name);  // bits: the probes' NaN are no equal floats
+        const std::size_t bytes = frames[0].rgba.size() * sizeof(float);
+        CHECK(same_bits(frames[0].rgba.data(), frames[1].rgba.data(), bytes));
+        CHECK(same_bits(frames[0].rgba.data(), frames[2].rgba.data(), bytes));
+        ++checked;
+    }
+    CHECK(checked >= 3);
+
+    const auto dir = temp_dir("render-once");
+    auto run = [&](const std::string& shader, const std::string& pattern) {
+        const std::string cmd = (kBin / "quadshade").string() + " render " + kPlane.string() + " --shader " + shader +
+                                " --size 48x32 --frames 0:3 -o " + (dir / pattern).string() + " 2> " + (dir / "err.txt").string();
+        REQUIRE(std::system(cmd.c_str()) == 0);
+        std::ifstream in(dir / "err.txt");
+        return std::string((std::istreambuf_iterator<char>(in)), {});
+    };
+    CHECK(run("constant_color", "still_%d.png").find("4 frames 48x32") != std::string::npos);
+    CHECK(run("constant_color", "still_%d.png").find("rendered once") != std::string::npos);
+    for (int f = 1; f <= 3; ++f) {
+        CHECK(read_image(dir / ("still_" + std::to_string(f) + ".png")).rgba == read_image(dir / "still_0.png").rgba);
+    }
+    // flow_noise reads time: every frame is rendered.
+    if (find_program("flow_noise")) CHECK(run("flow_noise", "moving_%d.png").find("rendered once") == std::string::npos);
 }
 
 }  // namespace qs
