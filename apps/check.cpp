@@ -19,6 +19,7 @@
 #include <cstring>
 
 #include "core/framebuffer.h"
+#include "raster/driver_settings.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "shading/catalogue.h"
@@ -36,18 +37,6 @@ namespace {
 
 const char* rule_name(CheckRule r) { return r == CheckRule::Fine ? "fine" : "coarse-lower"; }
 const char* driver_of(CheckRule r) { return r == CheckRule::Fine ? "llvmpipe" : "softpipe"; }
-
-// quadshade set up as the driver: llvmpipe's fine derivatives, left-bottom fill rule and (on FMA
-// hosts) fused interpolation; softpipe's coarse-lower derivatives, right-top fill rule and
-// separately rounded interpolation.
-RasterOptions raster_options_for(CheckRule rule) {
-    RasterOptions r;
-    const bool softpipe = rule == CheckRule::CoarseLower;
-    r.derivatives = softpipe ? Derivatives::CoarseLower : Derivatives::Fine;
-    r.fill_rule = softpipe ? FillRule::RightTop : FillRule::LeftBottom;
-    r.fused_interpolation = softpipe ? false : fused_interpolation_default();
-    return r;
-}
 
 // The bar, as fractions of the covered pixels (coverage: of all pixels). Against llvmpipe, the
 // project's. Against softpipe, room for what its own arithmetic does to shaders that translate
@@ -262,7 +251,7 @@ struct Checker {
         Scene scene = scenes[c.scene];
         FrameRequest r;
         r.shader_override = shader;
-        r.raster = raster_options_for(c.rule);
+        r.raster = raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe);
         r.raster.threads = threads;
         const Framebuffer fb = render_frame(scene, r);
         const Image ours{fb.width, fb.height, fb.rgba};

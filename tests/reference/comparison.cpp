@@ -6,12 +6,7 @@
 namespace qs::test {
 
 RasterOptions raster_options_as(GlDriver driver) {
-    RasterOptions r;
-    const bool softpipe = driver == GlDriver::Softpipe;
-    r.derivatives = softpipe ? Derivatives::CoarseLower : Derivatives::Fine;
-    r.fill_rule = softpipe ? FillRule::RightTop : FillRule::LeftBottom;
-    r.fused_interpolation = softpipe ? false : fused_interpolation_default();
-    return r;
+    return qs::raster_options_as(driver == GlDriver::Softpipe ? MesaDriver::Softpipe : MesaDriver::Llvmpipe);
 }
 
 Counts count(const Framebuffer& a, const Image& b) {

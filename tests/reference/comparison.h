@@ -6,15 +6,13 @@
 #include <filesystem>
 
 #include "core/framebuffer.h"
-#include "raster/rasterizer.h"
+#include "raster/driver_settings.h"
 #include "reference/gl_context.h"
 #include "scenes/image_io.h"
 
 namespace qs::test {
 
-// quadshade's rasterizer set up as the driver: llvmpipe's fine derivatives, left-bottom fill rule
-// and (on FMA hosts) fused interpolation, or softpipe's coarse-lower derivatives, right-top fill
-// rule and separately rounded interpolation.
+// quadshade's rasterizer set up as the reference's driver renders (raster/driver_settings.h).
 RasterOptions raster_options_as(GlDriver driver);
 
 struct Counts {
