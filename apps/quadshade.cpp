@@ -611,6 +611,13 @@ int cmd_check(const CheckArgs& a) {
 }
 
 int cmd_test(const TestArgs& a) {
+    std::vector<fs::path> inputs;  // the suite or the fragments, and what a link among them points to
+    for (const std::string& input : a.inputs) {
+        std::error_code ec;
+        inputs.insert(inputs.end(), {resolved(input), fs::weakly_canonical(input, ec)});
+    }
+    if (!a.junit.empty()) check_output(a.junit, inputs, "--junit");
+    if (!a.report.empty()) check_output(a.report, inputs, "--report");
     SuiteRun run;
     if (a.merge) {
         if (a.update || !a.shard.empty() || !a.report.empty() || a.jobs) throw UsageError("--merge: only with --junit and --html");

@@ -27,6 +27,12 @@ grep -q "5 cases, 0 passed, 0 warned, 0 failed, 5 updated" out.txt || fail "--up
 expect 0 "$quadshade" test suite.json --junit pass.xml --html pass-html
 grep -q "5 cases, 5 passed" out.txt || fail "the blessed suite does not pass"
 grep -Eq '^\[ ?[0-9]/5\] PASS' out.txt || fail "no progress lines"
+# A report written over the suite itself is refused, and the suite is left as it was.
+cp suite.json suite.before
+expect 2 "$quadshade" test suite.json --junit suite.json
+grep -q "is an input of this command" out.txt && cmp -s suite.json suite.before || fail "--junit over the suite file"
+expect 2 "$quadshade" test suite.json --report ./suite.json
+cmp -s suite.json suite.before || fail "--report over the suite file"
 
 # A regression: dots' expected image is perlin's.
 cp expected/perlin.png expected/dots.png
