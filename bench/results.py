@@ -7,8 +7,8 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
 `<!-- /results -->` and is replaced by what this script makes from:
   mesa         BUILD_DIR/reference-comparison-{llvmpipe,softpipe}.csv   (ctest: test_reference)
   conformance  BUILD_DIR/conformance/SCENE-{llvmpipe,softpipe}.csv      (ctest: test_conformance_*)
-  throughput, specialisation, frame
-               STUDY_DIR/{throughput,specialisation,figure-1.1-frame}.md (quadshade-bench-throughput)
+  throughput, frame
+               STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
   host         this machine and the date
 A block whose input is missing is left as it was, and said so on stderr, so a partial run never
@@ -163,7 +163,6 @@ def main():
         "mesa": lambda: mesa_table(build),
         "conformance": lambda: conformance_table(build),
         "throughput": lambda: markdown_file(study, "throughput.md"),
-        "specialisation": lambda: markdown_file(study, "specialisation.md"),
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
         "error": lambda: error_table(study),
     }
