@@ -105,8 +105,14 @@ std::vector<fs::path> scenes_in(const fs::path& folder) {
     return files;
 }
 
+}  // namespace
+
+fs::path installed_scenes_folder() { return executable_folder().parent_path() / "share" / "quadshade" / "scenes"; }
+
+namespace {
+
 std::vector<fs::path> default_scenes() {
-    const fs::path folder = executable_folder().parent_path() / "share" / "quadshade" / "scenes";
+    const fs::path folder = installed_scenes_folder();
     std::vector<fs::path> files = scenes_in(folder / "conformance");
     const fs::path plane = folder / "table-1.1-plane.gltf";
     if (!fs::exists(plane)) throw std::runtime_error(plane.string() + ": the Table 1.1 plane is missing (an incomplete installation?)");
@@ -146,18 +152,6 @@ std::string read_text(const fs::path& file) {
 }
 
 // ---- cases -----------------------------------------------------------------------------------
-
-// Whether every object of `scene` binds the textures `info` samples (a check runs a shader on
-// the scenes that can feed it).
-bool can_draw(const Scene& scene, const ShaderInfo& info) {
-    for (const Object& o : scene.objects) {
-        if (info.needs.texture && o.texture < 0) return false;
-        for (const SamplerUse& s : info.needs.samplers) {
-            if (!s.name.empty() && o.texture_for(s.name) < 0) return false;
-        }
-    }
-    return !scene.objects.empty();
-}
 
 // The named shaders; by default the catalogue's but its probes (built-ins' tests of their own,
 // drawn for one window and reading undefined GLSL cases elsewhere, as the conformance tests
@@ -305,7 +299,7 @@ int run_check(const CheckRequest& request) {
             // The default set's texture scenes (apps/texture_scenes.h) test sampling: they are for
             // the shaders that sample a texture; the others are checked on the geometry scenes.
             const bool texture_scene = request.scenes.empty() && checker.files[s].stem().string().starts_with("texture-");
-            if (!can_draw(checker.scenes.back(), program->info()) ||
+            if (!binds_samplers(checker.scenes.back(), program->info()) ||
                 (texture_scene && !samples_textures(program->info().needs))) {
                 ++skipped_pairs;
                 continue;

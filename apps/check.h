@@ -55,4 +55,8 @@ CaseCounts count_differences(const Image& ours, const Image& reference);
 // scenes, quadshade-reference missing or failing: its message is in the exception).
 int run_check(const CheckRequest& request);
 
+// The scenes installed beside the executable (share/quadshade/scenes beside its bin/): those
+// `check` runs on by default, the seeds' planes and the solid textures' scene.
+std::filesystem::path installed_scenes_folder();
+
 }  // namespace qs

@@ -13,11 +13,9 @@
 namespace qs {
 
 namespace {
-
 constexpr double kPi = std::numbers::pi;
+}  // namespace
 
-// A torus around the y axis: major radius R in the xz plane, minor radius r; st = (s_repeats u,
-// t_repeats v) over the seams (duplicated vertices), u around the major circle, v the minor.
 Mesh torus_mesh(float R, float r, int steps_u, int steps_v, float s_repeats, float t_repeats) {
     Mesh m;
     m.name = "torus";
@@ -38,6 +36,8 @@ Mesh torus_mesh(float R, float r, int steps_u, int steps_v, float s_repeats, flo
     }
     return m;
 }
+
+namespace {
 
 // A cube [-1, 1]^3, four vertices per face with st (0, 0)..(1, 1) on each.
 Mesh box_mesh() {

@@ -7,7 +7,13 @@
 
 #include <filesystem>
 
+#include "scenes/scene.h"
+
 namespace qs {
+
+// A torus around the y axis: major radius R in the xz plane, minor radius r; st = (s_repeats u,
+// t_repeats v) over the seams (duplicated vertices), u around the major circle, v the minor.
+Mesh torus_mesh(float R, float r, int steps_u, int steps_v, float s_repeats, float t_repeats);
 
 // Writes DIR/conformance/<name>.gltf and .bin for each scene.
 void write_geometry_scenes(const std::filesystem::path& dir);

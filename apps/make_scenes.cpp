@@ -154,6 +154,26 @@ qs::Image8 white_noise_image() {
     return img;
 }
 
+// The solid textures' scene: the chapter's sphere beside a torus (non-convex, its far side
+// occluded by its near side through the hole), both within [-1, 1]^3 in object space as the
+// solid textures' vertex stages expect, under a perspective camera; square (512x512), as the
+// gallery draws it.
+qs::Scene solids() {
+    qs::Scene s;
+    s.meshes = {sphere_mesh(), qs::torus_mesh(0.68f, 0.3f, 72, 28, 6.0f, 2.0f)};
+    s.camera.yfov = glm::radians(48.0f);
+    s.camera.znear = 1.0f, s.camera.zfar = 20.0f;
+    s.camera.view = glm::lookAt(glm::vec3(0, -5.2f, 1.6f), glm::vec3(0, 0, 0), glm::vec3(0, 0, 1));
+    s.clear_color = {0.0f, 0.3f, 0.5f, 0.0f};
+    s.time = 1.0f;
+    s.width = 512, s.height = 512;
+    const glm::mat4 I(1.0f);
+    s.objects.push_back(object("sphere", 0, glm::translate(I, {-1.15f, 0, 0}), "simplex3d"));
+    // The torus lies around y: tilted towards the camera so that its hole shows.
+    s.objects.push_back(object("torus", 1, glm::rotate(glm::translate(I, {1.15f, 0, 0}), glm::radians(-60.0f), {1, 0, 0}), "spots"));
+    return s;
+}
+
 // Seed 004's plane: the Table 1.1 plane, its texture coordinates NetRun's `texcoords`, with the
 // two textures the snippets read: tex1 the Table 1.1 picture (smooth colours) and tex4 the white
 // noise, both repeating (the snippets read them far outside [0, 1]), bilinear, no mipmaps.
@@ -177,7 +197,7 @@ qs::Scene seed_004_plane(const std::filesystem::path& dir) {
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-004-plane.gltf (+ .bin), textures/ and conformance/.\n");
+                             "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-004-plane.gltf, solids.gltf (+ .bin), textures/ and conformance/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -188,6 +208,7 @@ int main(int argc, char** argv) {
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
         qs::write_image(dir / "textures" / "seed-004-noise.png", white_noise_image());
         qs::save_scene(seed_004_plane(dir), dir / "seed-004-plane.gltf");
+        qs::save_scene(solids(), dir / "solids.gltf");
         qs::write_geometry_scenes(dir);
         qs::write_texture_scenes(dir);
     } catch (const std::exception& e) {

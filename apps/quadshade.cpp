@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include "apps/check.h"
 #include "apps/frame_pattern.h"
 #include "apps/golden_suite.h"
+#include "render/gallery.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/scene_render.h"
@@ -295,6 +297,27 @@ void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
     cmd.add_flag("--allow-outside-paths", a.allow_outside, "let --scene read files outside its own folder");
 }
 
+struct GalleryArgs {
+    std::string output;
+    std::vector<std::string> scenes, plugins;
+    int size = 160, columns = 6, threads = 0;
+    double time = 1.0;
+};
+
+void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
+    cmd.add_option("output", a.output, "the folder for the sheets, one PNG per collection (made if missing)")
+        ->required()->option_text("OUT_DIR");
+    cmd.add_option("--size", a.size, "each shader's square in pixels (default 160)")->check(CLI::Range(16, 1024))->option_text("N");
+    cmd.add_option("--columns", a.columns, "squares per row, at most (default 6)")->check(CLI::Range(1, 64))->option_text("N");
+    cmd.add_option("--scenes", a.scenes,
+                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, seed 004's\n"
+                   "plane, the solids and the conformance scenes); a shader goes on the first that binds its textures")
+        ->option_text("SCENE...");
+    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
+    add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+}
+
 // ---- render ---------------------------------------------------------------------------------
 
 const char* precision_name(Precision p) { return p == Precision::Double ? "double" : "float"; }
@@ -523,13 +546,17 @@ int cmd_shaders(const std::string& export_dir) {
         }
         return "?";
     };
-    std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", "name", "coordinates", "derivatives", "texture", "time",
+    std::printf("%-26s %-11s %-11s %-7s %-4s %s\n", "name", "coordinates", "derivatives", "texture", "time",
                 "description");
-    for (const Program* p : catalogue()) {
-        const ShaderInfo& s = p->info();
-        std::printf("%-20s %-11s %-11s %-7s %-4s %s\n", std::string(s.name).c_str(), coordinates(s.needs.coordinates),
-                    s.needs.derivatives ? "yes" : "-", samples_textures(s.needs) ? "yes" : "-", s.needs.time ? "yes" : "-",
-                    std::string(s.description).c_str());
+    for (const auto& [collection, programs] : catalogue_by_collection()) {
+        std::printf("\n%s\n", collection.c_str());
+        for (const Program* p : programs) {
+            const ShaderInfo& s = p->info();
+            std::printf("  %-24s %-11s %-11s %-7s %-4s %s\n", std::string(s.name).c_str(),
+                        coordinates(s.needs.coordinates), s.needs.derivatives ? "yes" : "-",
+                        samples_textures(s.needs) ? "yes" : "-", s.needs.time ? "yes" : "-",
+                        std::string(s.description).c_str());
+        }
     }
     return 0;
 }
@@ -564,6 +591,47 @@ int cmd_bake_volume(const VolumeArgs& a) {
                 true);
     std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
                  a.size, a.shader.c_str(), seconds * 1e3, a.size);
+    return 0;
+}
+
+int cmd_gallery(const GalleryArgs& a) {
+    GalleryRequest request;
+    request.tile = a.size, request.columns = a.columns;
+    request.frame.time = a.time;
+    request.frame.shading.threads = a.threads;
+    if (a.scenes.empty()) {
+        const fs::path folder = installed_scenes_folder();
+        for (const char* name : {"table-1.1-plane.gltf", "seed-004-plane.gltf", "solids.gltf"}) {
+            if (!fs::exists(folder / name)) throw std::runtime_error((folder / name).string() + ": missing (an incomplete installation?)");
+            request.scenes.push_back(folder / name);
+        }
+        std::vector<fs::path> conformance;
+        for (const fs::directory_entry& e : fs::directory_iterator(folder / "conformance")) {
+            if (e.path().extension() == ".gltf" || e.path().extension() == ".glb") conformance.push_back(e.path());
+        }
+        std::sort(conformance.begin(), conformance.end());
+        request.scenes.insert(request.scenes.end(), conformance.begin(), conformance.end());
+    } else {
+        request.scenes.assign(a.scenes.begin(), a.scenes.end());
+    }
+    const fs::path out = a.output;
+    std::error_code ec;
+    if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw UsageError(a.output + ": not a folder");
+    const std::vector<GallerySheet> sheets = render_gallery(request);
+    fs::create_directories(out);
+    std::vector<std::string> stems;
+    for (const GallerySheet& sheet : sheets) {
+        std::string stem = gallery_file_stem(sheet.collection);
+        const std::string base = stem;
+        for (int k = 2; std::find(stems.begin(), stems.end(), stem) != stems.end(); ++k) stem = base + "-" + std::to_string(k);
+        stems.push_back(stem);
+        const fs::path file = out / (stem + ".png");
+        write_image(file, sheet.image, {{"quadshade:gallery", sheet.collection}});
+        std::size_t undrawn = 0;
+        for (const auto& [name, scene] : sheet.drawn) undrawn += scene.empty();
+        std::printf("%s: %s, %zu shaders%s\n", file.c_str(), sheet.collection.c_str(), sheet.drawn.size(),
+                    undrawn ? (" (" + std::to_string(undrawn) + " without a scene that binds their textures)").c_str() : "");
+    }
     return 0;
 }
 
@@ -681,6 +749,10 @@ int main(int argc, char** argv) {
     CLI::App* volume_cmd = app.add_subcommand(
         "bake-volume", "evaluate a shader on an N^3 grid of object positions into a 3D texture (a sampler3D)");
     add_volume_options(*volume_cmd, volume);
+    GalleryArgs gallery;
+    CLI::App* gallery_cmd = app.add_subcommand(
+        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (seed)");
+    add_gallery_options(*gallery_cmd, gallery);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -698,6 +770,7 @@ int main(int argc, char** argv) {
         const std::vector<std::string>& plugins = check_cmd->parsed()    ? check.plugins
                                                   : test_cmd->parsed()   ? test.plugins
                                                   : volume_cmd->parsed() ? volume.plugins
+                                                  : gallery_cmd->parsed() ? gallery.plugins
                                                                          : shader_plugins;
         for (const std::string& plugin : plugins) load_plugin(plugin);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
@@ -705,6 +778,7 @@ int main(int argc, char** argv) {
         if (check_cmd->parsed()) return cmd_check(check);
         if (test_cmd->parsed()) return cmd_test(test);
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
+        if (gallery_cmd->parsed()) return cmd_gallery(gallery);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

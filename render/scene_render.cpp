@@ -30,6 +30,16 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
+bool binds_samplers(const Scene& scene, const ShaderInfo& info) {
+    for (const Object& o : scene.objects) {
+        if (info.needs.texture && o.texture < 0) return false;
+        for (const SamplerUse& s : info.needs.samplers) {
+            if (!s.name.empty() && o.texture_for(s.name) < 0) return false;
+        }
+    }
+    return !scene.objects.empty();
+}
+
 void check_supported(const FrameRequest& request) {
     const ShadingSettings& s = request.shading;
     check_supported(ShadeRequest{s.derivatives, s.precision, s.check_undefined, request.raster.force_general_path});

@@ -39,6 +39,10 @@ struct FrameRequest {
     }
 };
 
+// Whether every object of `scene` binds the textures `info` samples: the scenes a shader can be
+// drawn on with its materials (quadshade check and gallery pick scenes so).
+bool binds_samplers(const Scene& scene, const ShaderInfo& info);
+
 // Throws UnsupportedRequest (shading/shade_choice.h) for a request no backend honours as asked:
 // a shading request no instantiation honours, or rasterizer settings (fill rule, interpolation,
 // the general path) other than their defaults given to the ray caster, which has none of them.

@@ -354,6 +354,15 @@ Image difference_heat_map(const Image& a, const Image& b, float full_scale) {
     return heat;
 }
 
+void draw_text(Image& image, int x, int y, std::string_view text, int size) {
+    OIIO::ImageBuf buf(OIIO::ImageSpec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT), image.rgba.data());
+    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, size, "DejaVuSans", OIIO::cspan<float>(white, 4))) {
+        throw ImageError("cannot draw text: " + buf.geterror() + " (the gallery's labels need the DejaVu Sans font: "
+                         "Debian's fonts-dejavu-core)");
+    }
+}
+
 Image side_by_side(const std::vector<const Image*>& images) {
     Image out;
     for (const Image* i : images) out.width += i->width, out.height = std::max(out.height, i->height);

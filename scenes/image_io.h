@@ -10,6 +10,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -112,5 +113,10 @@ Comparison compare_images(const Image& a, const Image& b, float fail_threshold, 
 // |a - b| per pixel (max over RGB) as a heat map, and a side-by-side strip a | b | heat map.
 Image difference_heat_map(const Image& a, const Image& b, float full_scale);
 Image side_by_side(const std::vector<const Image*>& images);
+
+// Draws `text` into `image` in white, its baseline's left end at pixel (x, y) (y down), `size`
+// pixels high, in the DejaVu Sans font (Debian's fonts-dejavu-core). Throws ImageError when no
+// such font is installed. The text is drawn as given: nothing in it is a format.
+void draw_text(Image& image, int x, int y, std::string_view text, int size);
 
 }  // namespace qs

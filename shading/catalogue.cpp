@@ -1,5 +1,6 @@
 #include "shading/catalogue.h"
 
+#include <map>
 #include <stdexcept>
 
 namespace qs {
@@ -9,6 +10,7 @@ namespace {
 struct Entry {
     const Program* program;
     std::filesystem::path plugin;  // empty: built in
+    std::string collection;        // empty: none
 };
 
 // Filled by static constructors (the built-in shaders' before main, a plugin's inside dlopen),
@@ -50,7 +52,7 @@ const Entry& entry_of(const Program& program) {
 
 namespace registration {
 
-void add(const Program& program, const ShaderAbi& abi) {
+void add(const Program& program, const ShaderAbi& abi, std::string_view collection) {
     Registry& r = registry();
     std::vector<std::string>& problems = r.loading.empty() ? r.builtin_problems : r.problems;
     const std::string name(program.info().name);
@@ -65,7 +67,7 @@ void add(const Program& program, const ShaderAbi& abi) {
         problems.push_back("shader '" + name + "' is already defined by " + origin_name(entry_of(*taken).plugin));
         return;
     }
-    r.entries.push_back({&program, r.loading});
+    r.entries.push_back({&program, r.loading, std::string(collection)});
     r.programs.push_back(&program);
     ++r.added;
 }
@@ -103,6 +105,18 @@ const Program* find_program(std::string_view name) {
 }
 
 const std::filesystem::path& plugin_of(const Program& program) { return entry_of(program).plugin; }
+
+std::string collection_of(const Program& program) {
+    const Entry& e = entry_of(program);
+    if (!e.collection.empty()) return e.collection;
+    return e.plugin.empty() ? std::string("other") : e.plugin.filename().string();
+}
+
+std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection() {
+    std::map<std::string, ProgramList> groups;
+    for (const Program* p : catalogue()) groups[collection_of(*p)].push_back(p);
+    return {groups.begin(), groups.end()};
+}
 
 std::filesystem::path glsl_folder(const Program& program) {
     const std::filesystem::path& plugin = plugin_of(program);

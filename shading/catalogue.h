@@ -4,6 +4,10 @@
 // (shading/shaders/*.cpp, or a user's plugin):
 //
 //     QUADSHADE_SHADERS(shaders::Dots, shaders::Perlin);
+//     QUADSHADE_SHADERS_IN("seed 002: Noise is Beautiful", shaders::HashPcg);  // in a collection
+//
+// A collection groups shaders for listings and the gallery (the built-in ones by the text they
+// come from); a plugin's shaders outside one are grouped under the plugin's file name.
 //
 // Each shader's GLSL files (ShaderInfo::glsl_vertex / glsl_fragment) are found under its origin's
 // GLSL folder: for the built-in shaders `share/quadshade/shading` beside the executable's `bin/`
@@ -13,6 +17,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "shading/program.h"
@@ -30,11 +35,17 @@ const Program* find_program(std::string_view name);
 std::filesystem::path glsl_folder(const Program& program);
 // The plugin `program` came from; empty for a built-in shader.
 const std::filesystem::path& plugin_of(const Program& program);
+// The collection `program` was registered in (QUADSHADE_SHADERS_IN), else its plugin's file name,
+// else "other".
+std::string collection_of(const Program& program);
+// The catalogue grouped by collection, collections in order of their names, each in catalogue
+// order.
+std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection();
 
 // What crosses between quadshade and a plugin's shaders, as the plugin's headers laid it out: a
 // plugin built against other headers is refused, not run.
 struct ShaderAbi {
-    int version = 2;  // raised when program.h's contract changes in a way sizes do not show
+    int version = 3;  // raised when program.h's contract changes in a way sizes do not show
     int batch_lanes = kBatchLanes;
     int max_varyings = kMaxVaryings;
     std::size_t fragment_batch = sizeof(FragmentBatch);
@@ -47,10 +58,10 @@ struct ShaderAbi {
 
 namespace registration {
 
-// Adds `program` to the catalogue, from the plugin being loaded if any (render/plugins.h). A
-// name already taken, or an `abi` other than this build's, is recorded and reported by the loader
-// (or, for a built-in shader, by the first call to catalogue()).
-void add(const Program& program, const ShaderAbi& abi);
+// Adds `program` to the catalogue, in `collection` (empty: none), from the plugin being loaded if
+// any (render/plugins.h). A name already taken, or an `abi` other than this build's, is recorded
+// and reported by the loader (or, for a built-in shader, by the first call to catalogue()).
+void add(const Program& program, const ShaderAbi& abi, std::string_view collection);
 
 // Where registrations come from while a plugin's static constructors run; empty when built in.
 void begin_plugin(const std::filesystem::path& plugin);
@@ -61,10 +72,10 @@ struct PluginResult {
 };
 PluginResult end_plugin();
 
-// One object per file of shaders: its constructor registers a ProgramOf<S> for each S.
+// One object per registration line: its constructor registers a ProgramOf<S> for each S.
 template <class... Shaders>
 struct Registrar {
-    Registrar() { (add(program<Shaders>(), ShaderAbi{}), ...); }
+    explicit Registrar(std::string_view collection) { (add(program<Shaders>(), ShaderAbi{}, collection), ...); }
     template <class S>
     static const Program& program();  // defined by program_of.h
 };
@@ -72,7 +83,12 @@ struct Registrar {
 }  // namespace registration
 }  // namespace qs
 
-// Registers the shader structs it names (see program_of.h for what a shader struct holds). Once
-// per source file, at namespace scope, in a file that includes shading/program_of.h.
-#define QUADSHADE_SHADERS(...) \
-    namespace { const ::qs::registration::Registrar<__VA_ARGS__> quadshade_registered_shaders; }
+// Registers the shader structs it names (see program_of.h for what a shader struct holds), at
+// namespace scope in a file that includes shading/program_of.h; _IN puts them in a collection.
+#define QUADSHADE_SHADERS_IN(collection, ...)                                                          \
+    namespace {                                                                                         \
+    const ::qs::registration::Registrar<__VA_ARGS__> QUADSHADE_REGISTRAR_NAME(__COUNTER__){collection}; \
+    }
+#define QUADSHADE_SHADERS(...) QUADSHADE_SHADERS_IN(::std::string_view(), __VA_ARGS__)
+#define QUADSHADE_REGISTRAR_NAME(n) QUADSHADE_REGISTRAR_NAME_(n)
+#define QUADSHADE_REGISTRAR_NAME_(n) quadshade_registered_shaders_##n

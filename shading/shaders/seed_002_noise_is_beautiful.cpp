@@ -1,8 +1,9 @@
 // Seed 002's shaders, instantiated for every number type (see program_of.h).
+#include "shading/shaders/collections.h"
 #include "shading/shaders/seed_002_noise_is_beautiful.h"
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS(HashPcg, HashPerm289, Perlin2dPerm)
+QUADSHADE_SHADERS_IN(kSeed002, HashPcg, HashPerm289, Perlin2dPerm)
 
 }  // namespace qs::shaders

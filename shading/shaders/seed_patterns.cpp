@@ -4,10 +4,12 @@
 // seconds of compile time, and on AVX2 it is what makes them fast (measured in
 // quadshade-bench-core: see the README).
 #define QS_FLATTEN_ON_EVERY_TARGET
+#include "shading/shaders/collections.h"
 #include "shading/shaders/seed_patterns.h"
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS(PcgValueNoise, Mandelbrot)
+QUADSHADE_SHADERS_IN(kSeed002, PcgValueNoise)
+QUADSHADE_SHADERS_IN(kSeed004, Mandelbrot)
 
 }  // namespace qs::shaders

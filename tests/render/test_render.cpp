@@ -14,6 +14,7 @@
 #include <iterator>
 #include <thread>
 
+#include "render/gallery.h"
 #include "render/memory_plan.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
@@ -293,6 +294,65 @@ TEST_CASE("a shader reading texture coordinates on a mesh without TEXCOORD_0 dra
     const std::string message((std::istreambuf_iterator<char>(err)), {});
     CHECK(message.find("quadshade: warning: ") != std::string::npos);
     CHECK(message.find("plane.gltf: mesh '") != std::string::npos);
+}
+
+
+TEST_CASE("the gallery draws every catalogue shader, by collection, each square the shader's own frame", "[render][gallery]") {
+    GalleryRequest request;
+    request.scenes = {kPlane, kSeed004Plane, kSource / "scenes/assets/solids.gltf"};
+    request.tile = 24, request.columns = 4;
+    const std::vector<GallerySheet> sheets = render_gallery(request);
+    const auto groups = catalogue_by_collection();
+    REQUIRE(sheets.size() == groups.size());
+    std::size_t shaders = 0;
+    for (std::size_t i = 0; i < sheets.size(); ++i) {
+        const GallerySheet& sheet = sheets[i];
+        INFO(sheet.collection);
+        CHECK(sheet.collection == groups[i].first);
+        REQUIRE(sheet.drawn.size() == groups[i].second.size());
+        shaders += sheet.drawn.size();
+        const int n = int(sheet.drawn.size()), columns = std::min(4, n), rows = (n + columns - 1) / columns;
+        CHECK(sheet.image.width == columns * 24);
+        const int strip = (sheet.image.height - 30) / rows - 24;
+        CHECK(sheet.image.height == 30 + rows * (24 + strip));
+        // The first shader drawn: its square holds its frame on its scene, pixel for pixel.
+        for (int k = 0; k < n; ++k) {
+            const auto& [name, scene_file] = sheet.drawn[std::size_t(k)];
+            if (scene_file.empty()) continue;
+            if (find_program(name)->info().needs.coordinates == Coordinates::Object3D) {
+                CHECK(scene_file.filename() == "solids.gltf");
+            }
+            Scene scene = load_scene(scene_file);
+            FrameRequest r = request.frame;
+            r.width = r.height = 24;
+            r.shader_override = name;
+            const Framebuffer fb = render_frame(scene, r);
+            const int x0 = (k % columns) * 24, y0 = 30 + (k / columns) * (24 + strip);
+            int same = 0;
+            for (int y = 0; y < 24; ++y) {
+                for (int x = 0; x < 24; ++x) {
+                    const float* a = &sheet.image.rgba[(std::size_t(y0 + y) * std::size_t(sheet.image.width) + std::size_t(x0 + x)) * 4];
+                    const float* b = &fb.rgba[(std::size_t(y) * 24 + std::size_t(x)) * 4];
+                    same += std::memcmp(a, b, 3 * sizeof(float)) == 0;
+                }
+            }
+            CHECK(same == 24 * 24);
+            break;
+        }
+    }
+    CHECK(shaders == catalogue().size());
+    CHECK(gallery_file_stem("seed 002: Noise is Beautiful") == "seed-002");
+    CHECK(gallery_file_stem("libmy_shaders.so") == "libmy-shaders-so");
+    CHECK(gallery_file_stem("../../etc/passwd") == "etc-passwd");
+
+    // The command line writes one PNG per collection into the folder, and refuses a file for it.
+    const auto dir = temp_dir("gallery");
+    const std::string cmd = (kBin / "quadshade").string() + " gallery " + (dir / "sheets").string() +
+                            " --size 16 --scenes " + kPlane.string() + " > " + (dir / "out.txt").string();
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    for (const auto& [collection, programs] : groups) CHECK(std::filesystem::exists(dir / "sheets" / (gallery_file_stem(collection) + ".png")));
+    std::ofstream(dir / "a-file") << "x";
+    CHECK(std::system(((kBin / "quadshade").string() + " gallery " + (dir / "a-file").string() + " 2>/dev/null").c_str()) != 0);
 }
 
 }  // namespace qs
