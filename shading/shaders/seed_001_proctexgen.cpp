@@ -3,6 +3,9 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS(ImprovedNoise, ImprovedNoiseLoop, FastNoiseVolume)
+QUADSHADE_SHADERS(ImprovedNoise, ImprovedNoiseLoop, FastNoiseVolume,
+                  Worley3d<WorleyShow::F1, false>, Worley3d<WorleyShow::F2, false>, Worley3d<WorleyShow::F2MinusF1, false>,
+                  Worley3d<WorleyShow::Mean, false>, Worley3d<WorleyShow::F1, true>, Worley3d<WorleyShow::F2, true>,
+                  Worley3d<WorleyShow::F2MinusF1, true>, Worley3d<WorleyShow::Mean, true>, Worley3dFbm)
 
 }  // namespace qs::shaders

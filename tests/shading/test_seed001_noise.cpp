@@ -1,12 +1,14 @@
-// Seed 001's improved noise (shading/noise/improved_noise.h): its gradient table is Perlin's
-// grad() bit logic, SIMD lanes equal scalar code, the looping variant with a period of 256 is the
-// plain noise to the bit, and with a period of 8 it loops.
+// Seed 001's noises. Improved noise (shading/noise/improved_noise.h): its gradient table is
+// Perlin's grad() bit logic, SIMD lanes equal scalar code, the looping variant with a period of
+// 256 is the plain noise to the bit, and with a period of 8 it loops. Worley (worley3d.h): F1 and
+// F2 are the distances to the feature positions it returns, in order, in either metric.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <random>
 
 #include "shading/noise/improved_noise.h"
+#include "shading/noise/worley3d.h"
 
 namespace qs::glsl {
 
@@ -69,6 +71,45 @@ TEST_CASE("texShaderNoise loops at its period, on every axis, and its base picks
         other = std::max(other, double(std::abs(noise::texShaderNoise(p, 8, 8) - n)));
     }
     CHECK(other > 0.5);
+}
+
+TEST_CASE("3D Worley: F1 <= F2 are the distances to the two feature positions, on lanes as in scalar code", "[noise][seed001]") {
+    using L = Pixels<float, 16>;
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> d(-40.0f, 40.0f);
+    for (const bool manhattan : {false, true}) {
+        for (int round = 0; round < 16; ++round) {
+            float xs[16], ys[16], zs[16];
+            for (int i = 0; i < 16; ++i) xs[i] = d(rng), ys[i] = d(rng), zs[i] = d(rng);
+            const vec3<L> P(L::load(xs), L::load(ys), L::load(zs));
+            L f1, f2;
+            vec3<L> pos1, pos2;
+            noise::voronoi(P, f1, pos1, f2, pos2, .9f, manhattan);
+            for (int i = 0; i < 16; ++i) {
+                const vec3<float> p(xs[i], ys[i], zs[i]);
+                float g1, g2;
+                vec3<float> q1, q2;
+                noise::voronoi(p, g1, q1, g2, q2, .9f, manhattan);
+                CHECK(f1[i] == g1);
+                CHECK(f2[i] == g2);
+                CHECK(pos2.z[i] == q2.z);
+                auto distance = [&](const vec3<float>& q) {
+                    const vec3<float> o = q - p;
+                    return manhattan ? std::abs(o.x) + std::abs(o.y) + std::abs(o.z) : std::sqrt(dot(o, o));
+                };
+                CHECK(g1 <= g2);
+                CHECK(g1 == Approx(distance(q1)).margin(1e-5));
+                CHECK(g2 == Approx(distance(q2)).margin(1e-5));
+                // Each feature point lies in its own cell, moved by at most jitter / 2 from its centre.
+                for (const vec3<float>& q : {q1, q2}) {
+                    const vec3<float> centre = floor(q) + 0.5f;
+                    CHECK(std::abs(q.x - centre.x) <= 0.4501f);  // 0.9 (k/255 - 0.5), k = 0 or 255: 0.45, rounded
+                    CHECK(std::abs(q.y - centre.y) <= 0.4501f);  // 0.9 (k/255 - 0.5), k = 0 or 255: 0.45, rounded
+                    CHECK(std::abs(q.z - centre.z) <= 0.4501f);  // 0.9 (k/255 - 0.5), k = 0 or 255: 0.45, rounded
+                }
+            }
+        }
+    }
 }
 
 }  // namespace qs::glsl
