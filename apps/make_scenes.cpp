@@ -1,9 +1,10 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture, seed 004's plane and its noise texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
+// plane and its texture, seed 001's spheres and the fast noise's volume, seed 004's plane and its noise texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
 // outputs are committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/scene.h"
+#include "shading/noise/improved_noise.h"
 
 namespace {
 
@@ -192,12 +194,56 @@ qs::Scene seed_004_plane(const std::filesystem::path& dir) {
     return s;
 }
 
+// Seed 001's fast noise volume (shading/shaders/fast_noise_volume.frag): 32^3 texels of 8^3-cell
+// looping improved noise, R base 0 and G base 8, stored 0.5 + 0.5 n in 8 bits, as GL stores the
+// shader's colour (clamp, scale by 255, round to nearest). Texel (i, j, k) is the noise at P = 8
+// ((i, j, k) + 0.5) / 32, exact in float: the values `quadshade bake-volume --shader
+// fast_noise_volume --size 32` renders at its texel centres (a test compares the two, and the
+// bake with OSMesa's), computed here from the noise itself so that the file does not depend on
+// the rasterizer's interpolation. Slice k is rows [32 k, 32 k + 32), row j is y texel j.
+qs::Image8 fast_noise_volume() {
+    constexpr int n = 32;
+    auto unorm8 = [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    qs::Image8 img{n, n * n, std::vector<std::uint8_t>(std::size_t(n) * n * n * 4)};
+    for (int k = 0; k < n; ++k) {
+        for (int j = 0; j < n; ++j) {
+            for (int i = 0; i < n; ++i) {
+                const qs::glsl::vec3<float> P(8.0f * (float(i) + 0.5f) / 32.0f, 8.0f * (float(j) + 0.5f) / 32.0f,
+                                              8.0f * (float(k) + 0.5f) / 32.0f);
+                std::uint8_t* p = &img.rgba[((std::size_t(k) * n + std::size_t(j)) * n + std::size_t(i)) * 4];
+                p[0] = unorm8(0.5f + 0.5f * qs::noise::texShaderNoise(P, 8, 0));
+                p[1] = unorm8(0.5f + 0.5f * qs::noise::texShaderNoise(P, 8, 8));
+                p[2] = 0, p[3] = 255;
+            }
+        }
+    }
+    return img;
+}
+
+// Seed 001's solid textures on Figure 1.1's spheres and ground plane: improved noise against the
+// fast noise (the blog's comparison, left and right), the looping noise, and the fast noise's
+// volume itself; fast_noise reads the volume above (REPEAT, trilinear, no mipmaps: the blog's
+// wrapped texcoord).
+qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
+    qs::Scene s = figure_1_1();
+    qs::Texture volume;
+    volume.image.file = dir / "textures" / "fast-noise-volume.png";
+    volume.sampler = {qs::Filter::Linear, qs::Filter::Linear, qs::Wrap::Repeat, qs::Wrap::Repeat, qs::Wrap::Repeat};
+    volume.dims = 3, volume.depth = 32;
+    s.textures.push_back(volume);
+    const char* shaders[5] = {"improved_noise_loop", "improved_noise", "fast_noise", "improved_noise_loop", "fast_noise_volume"};
+    for (std::size_t i = 0; i < s.objects.size(); ++i) s.objects[i].shader = shaders[i];
+    s.objects[2].samplers = {{"noise3dSampler", 0}};
+    return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-004-plane.gltf, solids.gltf (+ .bin), textures/ and conformance/.\n");
+                             "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf, seed-004-plane.gltf,\n"
+                             "solids.gltf (+ .bin), textures/ and conformance/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -209,6 +255,8 @@ int main(int argc, char** argv) {
         qs::write_image(dir / "textures" / "seed-004-noise.png", white_noise_image());
         qs::save_scene(seed_004_plane(dir), dir / "seed-004-plane.gltf");
         qs::save_scene(solids(), dir / "solids.gltf");
+        qs::write_image(dir / "textures" / "fast-noise-volume.png", fast_noise_volume());
+        qs::save_scene(seed_001_spheres(dir), dir / "seed-001-spheres.gltf");
         qs::write_geometry_scenes(dir);
         qs::write_texture_scenes(dir);
     } catch (const std::exception& e) {

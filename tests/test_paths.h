@@ -15,6 +15,8 @@ inline const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
 inline const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
 inline const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
 inline const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
+// Seed 001's solid textures on Figure 1.1's spheres, fast_noise reading the shipped volume.
+inline const std::filesystem::path kSeed001Spheres = kSource / "scenes/assets/seed-001-spheres.gltf";
 // The Table 1.1 plane binding the two textures seed 004's snippets read (tex1, tex4).
 inline const std::filesystem::path kSeed004Plane = kSource / "scenes/assets/seed-004-plane.gltf";
 
