@@ -311,7 +311,8 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--columns", a.columns, "squares per row, at most (default 6)")->check(CLI::Range(1, 64))->option_text("N");
     cmd.add_option("--scenes", a.scenes,
                    "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, seed 004's\n"
-                   "plane, the solids and the conformance scenes); a shader goes on the first that binds its textures")
+                   "plane, the solids, seed 001's spheres and the conformance scenes); a shader goes on the first\n"
+                   "that binds its textures")
         ->option_text("SCENE...");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
     add_plugin_option(cmd, a.plugins);
@@ -601,7 +602,7 @@ int cmd_gallery(const GalleryArgs& a) {
     request.frame.shading.threads = a.threads;
     if (a.scenes.empty()) {
         const fs::path folder = installed_scenes_folder();
-        for (const char* name : {"table-1.1-plane.gltf", "seed-004-plane.gltf", "solids.gltf"}) {
+        for (const char* name : {"table-1.1-plane.gltf", "seed-004-plane.gltf", "solids.gltf", "seed-001-spheres.gltf"}) {
             if (!fs::exists(folder / name)) throw std::runtime_error((folder / name).string() + ": missing (an incomplete installation?)");
             request.scenes.push_back(folder / name);
         }
