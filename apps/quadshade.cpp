@@ -4,11 +4,14 @@
 // 3 `compare` found differences over its thresholds, a `check` case missed its bar, or a `test`
 // case failed.
 
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -20,6 +23,7 @@
 #include "apps/check.h"
 #include "apps/frame_pattern.h"
 #include "apps/golden_suite.h"
+#include "render/atlas_bake.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/scene_render.h"
@@ -295,6 +299,45 @@ void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
     cmd.add_flag("--allow-outside-paths", a.allow_outside, "let --scene read files outside its own folder");
 }
 
+struct BakeArgs {
+    std::string mesh, shader, output;
+    int size = 1024;
+    std::vector<std::string> maps{"color"};
+    int skirt = 0;
+    std::optional<double> time;
+    std::vector<std::string> uniforms, plugins;
+    Derivatives derivatives = Derivatives::Fine;
+    int threads = 0;
+    bool allow_outside = false;
+};
+
+void add_bake_options(CLI::App& cmd, BakeArgs& a) {
+    cmd.add_option("mesh", a.mesh, "a glTF scene whose meshes have a UV atlas in TEXCOORD_0 (in [0, 1], no overlaps)")
+        ->required()->option_text("MESH.gltf");
+    cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
+        ->required()->option_text("NAME");
+    cmd.add_option("-o,--output", a.output,
+                   "the baked scene: OUT.gltf and OUT.bin, its texture beside them (OUT-color.png), drawn\n"
+                   "with a shader that samples it")
+        ->required()->option_text("OUT.gltf");
+    cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
+    cmd.add_option("--maps", a.maps, "the maps to bake (default color)")->delimiter(',')->option_text("color");
+    cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
+        ->check(CLI::Range(0, 64))->option_text("PIXELS");
+    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
+        ->option_text("NAME=VALUE")->allow_extra_args(false);
+    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
+                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
+                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
+                            "RULE",
+                            "dFdx/dFdy per atlas texel (default fine: quad differences); analytic: exact\n"
+                            "partials of the varyings (Dual2), also across chart edges");
+    add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
+}
+
 // ---- render ---------------------------------------------------------------------------------
 
 const char* precision_name(Precision p) { return p == Precision::Double ? "double" : "float"; }
@@ -566,6 +609,98 @@ int cmd_bake_volume(const VolumeArgs& a) {
     return 0;
 }
 
+// A set of output files written together: each into a fresh folder beside the targets, then all
+// renamed into place by commit(); nothing of them is left behind when anything fails first.
+class OutputSet {
+public:
+    explicit OutputSet(const fs::path& target) {
+        const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+        std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
+        if (!::mkdtemp(pattern.data())) {
+            throw std::runtime_error(target.string() + ": cannot create a temporary folder beside it: " + std::strerror(errno));
+        }
+        staging_ = pattern;
+        folder_ = folder;
+    }
+    ~OutputSet() {
+        std::error_code ec;
+        if (!staging_.empty()) fs::remove_all(staging_, ec);
+    }
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+    // Where to write the output named `name` (a file name) until commit().
+    fs::path staged(const std::string& name) const { return staging_ / name; }
+    // Renames every staged file into place, `last` last (the file that names the others).
+    void commit(const std::string& last) {
+        std::vector<fs::path> files;
+        for (const fs::directory_entry& e : fs::directory_iterator(staging_)) {
+            if (e.path().filename() != last) files.push_back(e.path());
+        }
+        files.push_back(staging_ / last);
+        for (const fs::path& f : files) fs::rename(f, folder_ / f.filename());
+    }
+
+private:
+    fs::path staging_, folder_;
+};
+
+int cmd_bake(const BakeArgs& a) {
+    const fs::path output(a.output);
+    if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
+    for (const std::string& map : a.maps) {
+        if (map != "color") throw UsageError("--maps: '" + map + "' is not bakeable (color)");
+    }
+    if (a.skirt > 0) throw UsageError("--skirt: skirts are not implemented yet");
+    SceneLoadOptions load;
+    load.paths.allow_outside = a.allow_outside;
+    Scene scene = load_scene(a.mesh, load);
+    const std::string stem = output.stem().string();
+    const std::string bin = stem + ".bin", color = stem + "-color.png";
+    check_output(output, scene.inputs, "-o");
+    check_output(output.parent_path() / bin, scene.inputs, "-o (its buffer)");
+    check_output(output.parent_path() / color, scene.inputs, "-o (its texture)");
+    const Program* program = find_program(a.shader);
+    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+
+    AtlasRequest req;
+    req.size = a.size;
+    req.frame.shader_override = a.shader;
+    if (a.time) req.frame.time = *a.time;
+    req.frame.raster.derivatives = a.derivatives;
+    req.frame.raster.threads = a.threads;
+    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
+    const auto t0 = std::chrono::steady_clock::now();
+    const Image atlas = bake_atlas(scene, req);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    OutputSet out(output);
+    write_image(out.staged(color), atlas,
+                {{"quadshade:shader", a.shader},
+                 {"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"},
+                 {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
+                 {"quadshade:derivatives", rule_name(a.derivatives)}},
+                true);
+    // The same meshes, objects and camera, each object drawn with the baked texture.
+    Scene baked = scene;
+    Texture texture;
+    texture.image.file = out.staged(color);
+    texture.image.mime_type = "image/png";
+    texture.sampler = Sampler{Filter::Linear, Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
+    texture.field = "baked " + color;
+    baked.textures = {texture};
+    for (Object& o : baked.objects) {
+        o.shader = "single_texture";
+        o.texture = 0;
+        o.samplers.clear();
+        o.uniforms.clear();
+    }
+    save_scene(baked, out.staged(output.filename().string()));
+    out.commit(output.filename().string());
+    std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)\n", a.output.c_str(), a.shader.c_str(),
+                 a.size, a.size, seconds * 1e3, color.c_str());
+    return 0;
+}
+
 int cmd_compare(const CompareArgs& a) {
     std::vector<fs::path> inputs;  // each image's entry and, if it is a link, what it points to
     for (const std::string& image : a.images) {
@@ -680,6 +815,11 @@ int main(int argc, char** argv) {
     CLI::App* volume_cmd = app.add_subcommand(
         "bake-volume", "evaluate a shader on an N^3 grid of object positions into a 3D texture (a sampler3D)");
     add_volume_options(*volume_cmd, volume);
+    BakeArgs bake;
+    CLI::App* bake_cmd = app.add_subcommand(
+        "bake", "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
+                "mesh drawn with the baked texture");
+    add_bake_options(*bake_cmd, bake);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -697,6 +837,7 @@ int main(int argc, char** argv) {
         const std::vector<std::string>& plugins = check_cmd->parsed()    ? check.plugins
                                                   : test_cmd->parsed()   ? test.plugins
                                                   : volume_cmd->parsed() ? volume.plugins
+                                                  : bake_cmd->parsed()   ? bake.plugins
                                                                          : shader_plugins;
         for (const std::string& plugin : plugins) load_plugin(plugin);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
@@ -704,6 +845,7 @@ int main(int argc, char** argv) {
         if (check_cmd->parsed()) return cmd_check(check);
         if (test_cmd->parsed()) return cmd_test(test);
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
+        if (bake_cmd->parsed()) return cmd_bake(bake);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

@@ -35,6 +35,9 @@ struct Mesh {
     std::string name;
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangles
+    // Whether the file gave TEXCOORD_0 (without it every texcoord reads (0, 0)): an atlas bake
+    // needs them.
+    bool has_texcoords = true;
 };
 
 struct Camera {

@@ -1,0 +1,51 @@
+#pragma once
+// A shader baked into a mesh's texture atlas, as seed 001's ProcTexGen does it: every triangle
+// drawn at its TEXCOORD_0 (render/atlas_program.h) while the shader's own vertex stage gives its
+// varyings, so each texel gets the colour the live render computes at the surface point that
+// texel maps to. It is a frame like any other (quads, helper lanes, the same rasterizer), so
+// the same draw through OSMesa checks it (tests/reference).
+//
+// Derivatives in an atlas: dFdx/dFdy are the change per atlas texel along s and t, the texel's
+// footprint on the surface (its object-space size is what fwidth anti-aliases over), not a
+// screen pixel's. With the quad rules, quads straddling a chart's edge take their differences
+// from helper lanes extrapolated past the chart; Derivatives::Analytic (Dual2) gives the exact
+// per-texel partials of the interpolated varyings everywhere, chart edges included.
+
+#include <string>
+
+#include "render/scene_render.h"
+#include "scenes/image_io.h"
+#include "scenes/scene.h"
+
+namespace qs {
+
+// Atlas sides (texels): what a texture may have (scenes/limits.h) so the result loads back.
+inline constexpr int kMaxAtlasSide = 1 << 14;
+
+struct AtlasRequest {
+    int size = 1024;     // the atlas is size x size texels
+    FrameRequest frame;  // shader, time, uniforms, derivative rule, threads; its size and atlas flag are set here
+};
+
+// Throws SceneError, naming the scene's file and the mesh and object, unless every drawn mesh has
+// TEXCOORD_0 within [0, 1] and no two triangles (of one mesh or of different objects) overlap
+// there with positive area: each texel must belong to one surface point.
+void check_atlas(const Scene& scene);
+
+// The scene an atlas is drawn from: `scene` with a transparent black clear colour (the gutter
+// between charts) at size x size.
+Scene atlas_scene(const Scene& scene, int size);
+
+// The atlas as its frame: rows top-down as every frame, so its last row is the atlas's first
+// (t = 0). Throws as check_atlas, std::invalid_argument for a size outside [1, kMaxAtlasSide],
+// SceneError for an unknown shader or a missing texture.
+Framebuffer render_atlas_frame(const Scene& scene, const AtlasRequest& request);
+
+// The atlas as a texture image: row j holds t in [j / size, (j + 1) / size], the first row
+// t = 0, which is glTF's top of the image (texcoord (0, 0) is the image's top-left).
+Image bake_atlas(const Scene& scene, const AtlasRequest& request);
+
+// A frame's rows in the opposite order: between a frame (top-down) and a texture (t = 0 first).
+Image flip_rows(const Framebuffer& frame);
+
+}  // namespace qs

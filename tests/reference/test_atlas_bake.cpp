@@ -1,0 +1,65 @@
+// quadshade bake's atlas draw (each triangle at its TEXCOORD_0, the shader's own varyings)
+// against the same draw through OSMesa: quadshade-reference --atlas compiles each shader's
+// vertex GLSL with gl_Position replaced by the texcoord, as a GL application baking would.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <string>
+
+#include "render/atlas_bake.h"
+#include "scenes/gltf.h"
+#include "tests/reference/comparison.h"
+#include "tests/test_paths.h"
+
+namespace qs {
+
+namespace {
+
+using namespace test;
+
+const std::filesystem::path kAtlasCube = kSource / "scenes/assets/bake/atlas-cube.gltf";
+const std::filesystem::path kAtlasSphere = kSource / "scenes/assets/bake/atlas-sphere.gltf";
+
+Image reference_atlas(const std::filesystem::path& scene_file, const std::string& shader, int size) {
+    const auto out = scene_file.parent_path() / (scene_file.stem().string() + "." + shader + ".exr");
+    const std::string cmd = (kBin / "quadshade-reference").string() + " " + scene_file.string() + " --atlas -o " +
+                            out.string() + " --glsl " + QUADSHADE_GLSL_DIR + " --driver llvmpipe --size " +
+                            std::to_string(size) + "x" + std::to_string(size) + " --time 0.5 --shader " + shader +
+                            " 2> /dev/null";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("reference render failed: " + cmd);
+    return read_image(out);
+}
+
+}  // namespace
+
+TEST_CASE("bake: the atlas of a shader is OSMesa's draw of each triangle at its texcoords", "[reference][bake]") {
+    const auto dir = temp_dir("atlas-bake");
+    // Odd sizes: quads stick out of the frame; spots takes derivatives (per texel), turbulence none.
+    for (const auto& [mesh, size] : {std::pair{kAtlasCube, 199}, std::pair{kAtlasSphere, 256}}) {
+        for (const std::string shader : {"spots", "turbulence"}) {
+            const Scene scene = load_scene(mesh);
+            // The reference draws the very scene quadshade draws: the atlas's clear colour and size.
+            const auto file = dir / (mesh.stem().string() + "-" + shader + ".gltf");
+            save_scene(atlas_scene(scene, size), file);
+            AtlasRequest req;
+            req.size = size;
+            req.frame.time = 0.5;
+            req.frame.shader_override = shader;
+            req.frame.raster = raster_options_as(GlDriver::Llvmpipe);
+            const Framebuffer ours = render_atlas_frame(scene, req);
+            const Image ref = reference_atlas(file, shader, size);
+            const Counts c = count(ours, ref);
+            INFO(mesh.filename().string() << " " << shader << " at " << size << ": covered " << c.covered << ", coverage "
+                                          << c.coverage_mismatch << ", over 1/255 " << c.over_1 << ", over 2/255 "
+                                          << c.over_2 << ", max " << c.max_steps);
+            if (c.coverage_mismatch || c.over_1) write_comparison(ours, ref, dir / (file.stem().string() + "-diff.png"));
+            CHECK(c.covered > std::size_t(size * size) / 4);  // the charts cover most of the atlas
+            CHECK(c.covered < std::size_t(size * size));      // and leave gutters
+            CHECK(c.coverage_mismatch == 0);
+            CHECK(c.over_1 * 1000 <= c.covered);
+            CHECK(c.over_2 == 0);
+        }
+    }
+}
+
+}  // namespace qs
