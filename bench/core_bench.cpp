@@ -140,7 +140,7 @@ void BM_pcg_value_noise(benchmark::State& state) {
 template <class F>
 void BM_mandelbrot(benchmark::State& state) {
     run_grid<F>(state, [](const vec2<F>& st) {
-        FragmentIn<F> in;
+        FragmentIn<F, shaders::Mandelbrot::VertexStage> in;
         in.gl_FragCoord = vec4<F>(st * float(kSide), 0.0f, 1.0f);  // the pixel centres
         const vec4<F> c = shaders::Mandelbrot::fragment<F>(in, Uniforms{});
         return c.x + c.y + c.z;

@@ -68,8 +68,11 @@ struct Needs {
     bool derivatives = false;  // dFdx/dFdy/fwidth: quads with helper lanes
     bool texture = false;      // the scene must provide `teximage`
     bool time = false;         // output changes with the `time` uniform
-    int varyings = 0;          // interpolated floats the vertex stage writes
-    unsigned flat_varyings = 0;  // bit v: varying v is `flat`, the provoking (last) vertex's value
+    // Interpolated floats the vertex stage writes, and (bit v) those that are `flat`, the
+    // provoking (last) vertex's value. Shader structs leave both unset: ProgramOf counts them
+    // from the vertex stage's Varyings (shading/varyings.h).
+    int varyings = 0;
+    unsigned flat_varyings = 0;
     // The fragment stage reads gl_FragCoord. When false the rasterizer does not interpolate it
     // and it reads as NaN; the reference tests against OSMesa would catch a shader that reads it
     // without saying so.

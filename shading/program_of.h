@@ -1,6 +1,6 @@
 #pragma once
-// ProgramOf<Shader>: a shader translation (a struct with `info`, `vertex` and a `fragment`
-// template over the number type) as a Program. Include only from the .cpp that instantiates a
+// ProgramOf<Shader>: a shader translation (a struct with `info`, its `VertexStage` (shading/
+// varyings.h) and a `fragment` template over the number type) as a Program. Include only from the .cpp that instantiates a
 // shader: this is where the number types meet the batch layout.
 //
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
@@ -16,6 +16,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl.h"
 #include "shading/program.h"
+#include "shading/varyings.h"
 
 // `flatten` inlines the whole shader into ProgramOf::run: one straight-line SIMD body per number
 // type, as a GPU compiler would make it, instead of calls passing vectors through memory (it
@@ -39,17 +40,6 @@ inline constexpr bool kWidePairs = true;
 #else
 inline constexpr bool kWidePairs = false;
 #endif
-
-// A shader's view of its inputs, in number type F. Varyings past the shader's Needs::varyings
-// read as NaN (as gl_FragCoord does without Needs::frag_coord): a shader that reads a varying it
-// did not declare gets no other draw's or batch's values, and the reference comparisons fail on it.
-template <class F>
-struct FragmentIn {
-    glsl::vec4<F> gl_FragCoord;
-    F varying[kMaxVaryings];
-    glsl::vec2<F> vec2_at(int i) const { return {varying[i], varying[i + 1]}; }
-    glsl::vec3<F> vec3_at(int i) const { return {varying[i], varying[i + 1], varying[i + 2]}; }
-};
 
 // What a fragment stage that may discard returns (one that never does returns its colour).
 template <class F>
@@ -128,22 +118,39 @@ void store(const F& v, float* out) {
     }
 }
 
+// Shader::info with the varyings its vertex stage declares.
+template <class Shader>
+constexpr ShaderInfo completed_info() {
+    static_assert(Shader::info.needs.varyings == 0 && Shader::info.needs.flat_varyings == 0,
+                  "Needs::varyings follows from the vertex stage's Varyings: leave it unset");
+    ShaderInfo info = Shader::info;
+    info.needs.varyings = varying_count<typename Shader::VertexStage>();
+    info.needs.flat_varyings = flat_varying_mask<typename Shader::VertexStage>();
+    return info;
+}
+
 }  // namespace program_detail
 
 template <class Shader>
 class ProgramOf final : public Program {
-    static constexpr Needs kNeeds = Shader::info.needs;
-    static_assert(kNeeds.varyings >= 0 && kNeeds.varyings <= kMaxVaryings,
-                  "Needs::varyings: a vertex stage writes at most kMaxVaryings floats");
-    static_assert((kNeeds.flat_varyings >> kNeeds.varyings) == 0,
-                  "Needs::flat_varyings names a varying past Needs::varyings");
+    static_assert(requires { typename Shader::VertexStage; },
+                  "a shader struct names its vertex stage: using VertexStage = ...; (shading/varyings.h)");
+    using Stage = typename Shader::VertexStage;
+
+    static constexpr ShaderInfo kInfo = program_detail::completed_info<Shader>();
+    static constexpr Needs kNeeds = kInfo.needs;
+    static_assert(kNeeds.varyings <= kMaxVaryings, "a vertex stage writes at most kMaxVaryings floats");
 
 public:
-    const ShaderInfo& info() const override { return Shader::info; }
+    const ShaderInfo& info() const override { return kInfo; }
 
     void vertex(const VertexIn& in, const Uniforms& given, VertexOut& out) const override {
         Uniforms scratch;
-        Shader::vertex(in, with_user_uniforms(given, scratch), out);
+        const Uniforms& u = with_user_uniforms(given, scratch);
+        VertexOutputs<Stage> named;
+        Stage::vertex(in, u, named);
+        out.clip = named.gl_Position;
+        varyings_detail::for_each_component(named.fields(), [&](float c, int v) { out.varyings[std::size_t(v)] = c; });
     }
 
     void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& given, ColorBatch& out) const override {
@@ -153,11 +160,11 @@ public:
         const bool dbl = mode.precision == Precision::Double;
         switch (mode.derivatives) {
             case Derivatives::None:
-                if constexpr (!Shader::info.needs.derivatives) {
+                if constexpr (!kNeeds.derivatives) {
                     return dbl ? run<Pixels<double, kBatchLanes>>(in, u, out)
                                : run<Pixels<float, kBatchLanes>>(in, u, out);
                 } else {
-                    throw std::logic_error(std::string(Shader::info.name) +
+                    throw std::logic_error(std::string(kInfo.name) +
                                            " takes derivatives: it cannot be shaded per pixel");
                 }
             case Derivatives::Fine:
@@ -177,9 +184,9 @@ public:
                     ColorBatch& out_a, ColorBatch& out_b) const override {
         Uniforms scratch;
         const Uniforms& u = with_user_uniforms(given, scratch);
-        static_assert(!Shader::info.wide_batches || !Shader::info.needs.derivatives,
+        static_assert(!kInfo.wide_batches || !kNeeds.derivatives,
                       "wide batches are per pixel: quads on two registers shuffle slower than they gain");
-        if constexpr (kWidePairs && Shader::info.wide_batches) {
+        if constexpr (kWidePairs && kInfo.wide_batches) {
             if (!mode.check_undefined && mode.precision == Precision::Float && mode.derivatives == Derivatives::None) {
                 return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
             }
@@ -191,9 +198,9 @@ public:
 private:
     // The shader's own uniforms at their initial values, for callers that set none (tests and
     // benchmarks drawing without a scene).
-    static constexpr std::size_t kUserUniforms = Shader::info.uniforms.size();
+    static constexpr std::size_t kUserUniforms = kInfo.uniforms.size();
     static constexpr std::array<std::uint32_t, kUserUniforms * kUniformWords> kInitialUniforms =
-        initial_uniform_words(std::span<const UniformDecl, kUserUniforms>(Shader::info.uniforms.data(), kUserUniforms));
+        initial_uniform_words(std::span<const UniformDecl, kUserUniforms>(kInfo.uniforms.data(), kUserUniforms));
     static const Uniforms& with_user_uniforms(const Uniforms& given, Uniforms& scratch) {
         if (kUserUniforms == 0 || given.user) return given;
         scratch = given;
@@ -208,10 +215,10 @@ private:
         }
         switch (mode.derivatives) {
             case Derivatives::None:
-                if constexpr (!Shader::info.needs.derivatives) {
+                if constexpr (!kNeeds.derivatives) {
                     return run_checked<Checked<Pixels<float, kBatchLanes>>>(in, u, out);
                 } else {
-                    throw std::logic_error(std::string(Shader::info.name) +
+                    throw std::logic_error(std::string(kInfo.name) +
                                            " takes derivatives: it cannot be shaded per pixel");
                 }
             case Derivatives::Fine:
@@ -237,10 +244,9 @@ private:
     QS_FLATTEN static void run_pair(const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
                                     ColorBatch& out_a, ColorBatch& out_b) {
         using program_detail::load_pair;
-        FragmentIn<F> f;
+        FragmentIn<F, Stage> f;
         for (int k = 0; k < 4; ++k) f.gl_FragCoord[k] = load_pair<F>(a.frag_coord[k], b.frag_coord[k]);
-        for (int v = 0; v < kNeeds.varyings; ++v) f.varying[v] = load_pair<F>(a.varying[v], b.varying[v]);
-        for (int v = kNeeds.varyings; v < kMaxVaryings; ++v) f.varying[v] = F(std::numeric_limits<float>::quiet_NaN());
+        load_varyings(f, [&](int v) { return load_pair<F>(a.varying[v], b.varying[v]); });
         const auto result = Shader::template fragment<F>(f, u);
         const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) program_detail::store_pair(c[k], out_a.rgba[k], out_b.rgba[k]);
@@ -264,7 +270,7 @@ private:
     template <class F>
     static auto fragment(const FragmentBatch& in, const Uniforms& u) {
         using program_detail::load;
-        FragmentIn<F> f;
+        FragmentIn<F, Stage> f;
         if constexpr (is_dual2<F>::value) {
             // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w come with their derivatives.
             alignas(64) float ones[kBatchLanes], zeros[kBatchLanes];
@@ -276,9 +282,14 @@ private:
             f.gl_FragCoord = {load<F>(in.frag_coord[0], nullptr, nullptr), load<F>(in.frag_coord[1], nullptr, nullptr),
                               load<F>(in.frag_coord[2], nullptr, nullptr), load<F>(in.frag_coord[3], nullptr, nullptr)};
         }
-        for (int v = 0; v < kNeeds.varyings; ++v) f.varying[v] = load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]);
-        for (int v = kNeeds.varyings; v < kMaxVaryings; ++v) f.varying[v] = F(std::numeric_limits<float>::quiet_NaN());
+        load_varyings(f, [&](int v) { return load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]); });
         return Shader::template fragment<F>(f, u);
+    }
+
+    // Each varying float v of `f` from load(v).
+    template <class F, class Load>
+    static void load_varyings(FragmentIn<F, Stage>& f, Load load) {
+        varyings_detail::for_each_component(f.fields(), [&](F& c, int v) { c = load(v); });
     }
 };
 

@@ -3,6 +3,7 @@
 // the line that registers it.
 #include "shading/glsl.h"
 #include "shading/program_of.h"
+#include "shading/varyings.h"
 #include "shading/vertex.h"
 
 namespace my_shaders {
@@ -13,20 +14,27 @@ struct MyStripes {
     static constexpr ShaderInfo info{
         .name = "my_stripes",
         .description = "diagonal stripes anti-aliased with fwidth (examples/my-shader)",
-        .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .varyings = 2},
+        .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true},
         .glsl_vertex = {"my_stripes.vert"},  // beside the plugin
         .glsl_fragment = {"my_stripes.frag"},
     };
 
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-        out.varyings[0] = in.texcoord.x;  // st = gl_MultiTexCoord0.st
-        out.varyings[1] = in.texcoord.y;
-        out.clip = transform_point(u.model_view_projection, in.position);  // as Mesa sums it
-    }
+    // my_stripes.vert: what it hands the fragment stage (its `varying`s), and its main().
+    struct VertexStage {
+        template <class T>
+        struct Varyings {
+            vec2<T> st;
+            auto fields() { return std::tie(st); }
+        };
+        static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
+            out.st = {in.texcoord.x, in.texcoord.y};  // st = gl_MultiTexCoord0.st
+            out.gl_Position = transform_point(u.model_view_projection, in.position);  // as Mesa sums it
+        }
+    };
 
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         F ramp = abs(fract(8.0f * (st.x + st.y)) * 2.0f - 1.0f);
         F w = 0.7f * fwidth(ramp);
         F stripe = smoothstep(0.5f - w, 0.5f + w, ramp);

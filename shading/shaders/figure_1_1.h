@@ -10,6 +10,7 @@
 #include "shading/program.h"
 #include "shading/program_of.h"
 #include "shading/shaders/aastep.h"
+#include "shading/shaders/vertex_stages.h"
 #include "shading/vertex.h"
 
 namespace qs::shaders {
@@ -18,20 +19,16 @@ using namespace qs::glsl;
 struct FlowNoise {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "flow_noise", "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
-        Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true, .varyings = 2},
+        Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true},
         {"shaders/object_plane.vert"}, {"noise/flow_noise.glsl", "shaders/flow_noise.frag"}, {},
         // srdnoise's rotation enters through fract(hash * K + rot): period 1 in rot, so the
         // octaves' 0.2 t, 0.51 t, 0.77 t are all whole after 100 s
         100.0});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-        out.varyings[0] = in.position.x * 8.0f;  // p = gl_Vertex.xy * 8.0
-        out.varyings[1] = in.position.y * 8.0f;
-        out.clip = transform_point(u.model_view_projection, in.position);
-    }
+    using VertexStage = ObjectPlane;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         using noise::srdnoise;
-        vec2<F> p = in.vec2_at(0);
+        vec2<F> p = in.p;
         F time = u.time;
         vec2<F> g1, g2;
         F n1 = srdnoise(p * 0.5f, 0.2f * time, g1);
@@ -42,14 +39,6 @@ struct FlowNoise {
     }
 };
 
-// Vertex stage shared by the spheres: P = gl_Vertex.xyz * scale + (0, 0, time_sign * time).
-template <int scale, int time_sign>
-inline void sphere_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-    glm::vec3 P = in.position * float(scale) + glm::vec3(0.0f, 0.0f, float(time_sign) * u.time);
-    out.varyings = {P.x, P.y, P.z};
-    out.clip = transform_point(u.model_view_projection, in.position);
-}
-
 // Time moves 3D simplex noise along z: (0, 0, 867) skews to 289 (1, 1, 4), a whole hash period on
 // every lattice axis, so 867 s is the period.
 inline constexpr double kSimplex3dTimePeriod = 867.0;
@@ -57,13 +46,13 @@ inline constexpr double kSimplex3dTimePeriod = 867.0;
 struct Simplex3d {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "simplex3d", "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
         {"shaders/sphere_simplex.vert"}, {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
         noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, 1>(in, u, out); }
+    using VertexStage = Sphere<4, 1>;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        F n = noise::snoise3<noise::Simplex3dDemo>(in.vec3_at(0));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        F n = noise::snoise3<noise::Simplex3dDemo>(in.P);
         return vec4<F>(vec3<F>(0.5f + 0.6f * n), 1.0f);
     }
 };
@@ -71,14 +60,14 @@ struct Simplex3d {
 struct Turbulence {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
         {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
         noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<2, -1>(in, u, out); }
+    using VertexStage = Sphere<2, -1>;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         using V = noise::Simplex3dDemo;
-        vec3<F> P = in.vec3_at(0);
+        vec3<F> P = in.P;
         F n = abs(noise::snoise3<V>(P));
         n += 0.5f * abs(noise::snoise3<V>(P * 2.0f));
         n += 0.25f * abs(noise::snoise3<V>(P * 4.0f));
@@ -94,14 +83,14 @@ struct Spots {
     static constexpr ShaderInfo info{
         W == AAWidth::Fwidth ? "spots" : W == AAWidth::Length ? "spots_length" : "spots_step",
         "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true, .varyings = 3},
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true},
         {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"},
         W == AAWidth::Fwidth ? "" : W == AAWidth::Length ? "#define SPOTS_LENGTH\n" : "#define SPOTS_STEP\n",
         289.0};  // P.z moves with time; cellular hashes floor(P) mod 289
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
+    using VertexStage = Sphere<4, -1>;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular2x2x2(in.vec3_at(0));  // GLSL: vec2 F
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular2x2x2(in.P);  // GLSL: vec2 F
         if constexpr (W == AAWidth::Step) {
             F n1 = step(0.4f, Fs.x);
             F n2 = step(0.5f, Fs.x);
@@ -128,23 +117,27 @@ struct Tiles3d {
     static constexpr ShaderInfo info = with_check_bounds(
         with_wide_batches(ShaderInfo{
             "tiles3d", "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
-            Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true, .varyings = 3},
+            Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
             {"noise/simplex3d.glsl", "shaders/sphere_warp.vert"}, {"noise/cellular.glsl", "shaders/tiles3d.frag"},
             noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod}),
         kTiles3dCheckBounds);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-        using V = noise::Simplex3dDemo;
-        vec3<float> o(in.position.x, in.position.y, in.position.z);
-        float t = u.time;
-        vec3<float> P = o * 4.0f + 0.2f * vec3<float>(noise::snoise3<V>(o + vec3<float>(0.0f, 0.0f, t)),
-                                                      noise::snoise3<V>(o + vec3<float>(43.0f, 17.0f, t)),
-                                                      noise::snoise3<V>(o + vec3<float>(0.0f, -43.0f, t - 17.0f)));
-        out.varyings = {P.x, P.y, P.z};
-        out.clip = transform_point(u.model_view_projection, in.position);
-    }
+    // sphere_warp.vert
+    struct VertexStage {
+        template <class T>
+        using Varyings = SolidVaryings<T>;
+        static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
+            using V = noise::Simplex3dDemo;
+            vec3<float> o(in.position.x, in.position.y, in.position.z);
+            float t = u.time;
+            out.P = o * 4.0f + 0.2f * vec3<float>(noise::snoise3<V>(o + vec3<float>(0.0f, 0.0f, t)),
+                                                  noise::snoise3<V>(o + vec3<float>(43.0f, 17.0f, t)),
+                                                  noise::snoise3<V>(o + vec3<float>(0.0f, -43.0f, t - 17.0f)));
+            out.gl_Position = transform_point(u.model_view_projection, in.position);
+        }
+    };
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular(in.vec3_at(0));  // GLSL: vec2 F
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.P);  // GLSL: vec2 F
         F n = 0.1f + Fs.y - Fs.x;
         return vec4<F>(0.6f * n, 1.1f * n, 0.5f * n, 1.0f);
     }

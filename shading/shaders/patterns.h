@@ -20,7 +20,7 @@ constexpr ShaderInfo plane_pattern(std::string_view name, std::string_view descr
                                    std::array<std::string_view, 3> fragment, std::string_view defines = {},
                                    std::string_view vertex = "shaders/plane_st.vert") {
     return ShaderInfo{name, description,
-                      Needs{.derivatives = derivatives, .texture = false, .time = false, .varyings = 2},
+                      Needs{.derivatives = derivatives, .texture = false, .time = false},
                       {vertex}, fragment, defines};
 }
 
@@ -30,43 +30,43 @@ vec4<F> grey(const F& g) { return vec4<F>(vec3<F>(g), 1.0f); }
 
 struct PatternS {
     static constexpr ShaderInfo info = plane_pattern("pattern_s", "Figure 1.2: s as a grey ramp", false, {"shaders/pattern_s.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) { return grey(in.varying[0]); }
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return grey(in.st.x); }
 };
 
 struct Lines {
     static constexpr ShaderInfo info = plane_pattern("lines", "Figure 1.2: fract(10 s)", false, {"shaders/lines.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) { return grey(fract(10.0f * in.varying[0])); }
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return grey(fract(10.0f * in.st.x)); }
 };
 
 struct Ridges {
     static constexpr ShaderInfo info = plane_pattern("ridges", "Figure 1.2: abs(fract(5 s) * 2 - 1)", false, {"shaders/ridges.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(abs(fract(5.0f * in.varying[0]) * 2.0f - 1.0f));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grey(abs(fract(5.0f * in.st.x) * 2.0f - 1.0f));
     }
 };
 
 struct Checker {
     static constexpr ShaderInfo info = plane_pattern("checker", "Figure 1.2: checkerboard", false, {"shaders/checker.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         return grey(mod(floor(10.0f * st.x) + floor(10.0f * st.y), 2.0f));
     }
 };
 
 struct Wave {
     static constexpr ShaderInfo info = plane_pattern("wave", "Figure 1.2: sine wave edge, fixed width", false, {"shaders/wave.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         return grey(smoothstep(-0.01f, 0.01f, 0.2f - 0.1f * sin(30.0f * st.x) - st.y));
     }
 };
@@ -74,10 +74,10 @@ struct Wave {
 struct WaveAA {
     static constexpr ShaderInfo info = plane_pattern("wave_aa", "Figure 1.2: sine wave edge with aastep", true,
                                                      {"shaders/aastep.glsl", "shaders/wave_aa.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         return grey(aastep(F(0.0f), 0.2f - 0.1f * sin(30.0f * st.x) - st.y));
     }
 };
@@ -90,10 +90,10 @@ F brick_distance(const vec2<F>& st) {
 
 struct Bricks {
     static constexpr ShaderInfo info = plane_pattern("bricks", "Figure 1.2: bricks, fixed width", false, {"shaders/bricks.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(smoothstep(0.4f, 0.5f, brick_distance(in.vec2_at(0))));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grey(smoothstep(0.4f, 0.5f, brick_distance(in.st)));
     }
 };
 
@@ -102,10 +102,10 @@ struct BricksAA {
     static constexpr ShaderInfo info = plane_pattern(aa_variant_name(W, "bricks_aa", "bricks_aa_fwidth", "bricks_aa_step"),
                                                      "Figure 1.2: bricks with aastep", W != AAWidth::Step,
                                                      {"shaders/aastep.glsl", "shaders/bricks_aa.frag"}, aa_variant_defines(W));
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(aastep<W>(F(0.45f), brick_distance(in.vec2_at(0))));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grey(aastep<W>(F(0.45f), brick_distance(in.st)));
     }
 };
 
@@ -114,20 +114,20 @@ struct DotsAA {
     static constexpr ShaderInfo info = plane_pattern(aa_variant_name(W, "dots_aa", "dots_aa_fwidth", "dots_aa_step"),
                                                      "Figure 1.2: dots with aastep", W != AAWidth::Step,
                                                      {"shaders/aastep.glsl", "shaders/dots_aa.frag"}, aa_variant_defines(W));
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(aastep<W>(F(0.31f), length(fract(5.0f * in.vec2_at(0)) - 0.5f)));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grey(aastep<W>(F(0.31f), length(fract(5.0f * in.st) - 0.5f)));
     }
 };
 
 struct Facets {
     static constexpr ShaderInfo info = with_wide_batches(
         plane_pattern("facets", "Figure 1.5: 0.1 + F2 - F1", false, {"noise/cellular.glsl", "shaders/facets.frag"}));
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular(in.vec2_at(0) * 10.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.st * 10.0f);
         return grey(0.1f + (Fs.y - Fs.x));
     }
 };
@@ -135,10 +135,10 @@ struct Facets {
 struct Blobs {
     static constexpr ShaderInfo info = with_wide_batches(
         plane_pattern("blobs", "Figure 1.5: 1 - F1^2", false, {"noise/cellular.glsl", "shaders/blobs.frag"}));
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular(in.vec2_at(0) * 10.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.st * 10.0f);
         return grey(1.0f - Fs.x * Fs.x);
     }
 };
@@ -146,20 +146,13 @@ struct Blobs {
 struct Rings {
     static constexpr ShaderInfo info = plane_pattern("rings", "Figure 1.5: rings, two aasteps of F1", true,
                                                      {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/rings.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular(in.vec2_at(0) * 10.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.st * 10.0f);
         return grey(1.0f - aastep(F(0.45f), Fs.x) + aastep(F(0.55f), Fs.x));
     }
 };
-
-// st * 10, for the listings that print their fragment stage only.
-inline void plane_st10_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-    plane_st_vertex(in, u, out);
-    out.varyings[0] = in.texcoord.x * 10.0f;
-    out.varyings[1] = in.texcoord.y * 10.0f;
-}
 
 // The typo makes the noise jump across simplex edges (tests/shading); Mesa's reassociated dot
 // products put one pixel of the grazing plane on the jump's other side (measured: 1 pixel, 83/255).
@@ -177,10 +170,10 @@ struct Simplex2d {
             false, {"noise/simplex2d.glsl", "shaders/simplex2d.frag"}, typo ? "#define SIMPLEX2D_SEED_TYPO\n" : "",
             "shaders/plane_st10.vert")),
         typo ? std::span<const CheckBound>(kSeedTypoCheckBounds) : std::span<const CheckBound>());
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st10_vertex(in, u, out); }
+    using VertexStage = PlaneSt10;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grey(0.5f + 0.5f * noise::snoise<F, corner>(in.vec2_at(0)));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grey(0.5f + 0.5f * noise::snoise<F, corner>(in.st));
     }
 };
 
@@ -188,7 +181,7 @@ struct Cellular2x2 {
     static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
         "cellular2x2", "Listing 1.4 as printed: squared F1, 2x2 search", false, {"shaders/cellular2x2.frag"}, {},
         "shaders/plane_st10.vert"));
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st10_vertex(in, u, out); }
+    using VertexStage = PlaneSt10;
     template <class V>
     static V permute(const V& x) { return mod((34.0f * x + 1.0f) * x, 289.0f); }
     template <class F>
@@ -213,8 +206,8 @@ struct Cellular2x2 {
         return vec2<F>(d1);                 // F1 duplicated, F2 not computed
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = cellular2x2(in.vec2_at(0));  // GLSL: vec2 F
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = cellular2x2(in.st);  // GLSL: vec2 F
         F n = 1.0f - 1.5f * Fs.x;
         return grey(n);
     }
@@ -224,10 +217,10 @@ struct GradientAA {
     static constexpr ShaderInfo info = plane_pattern(
         "gradient_aa", "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st", true,
         {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> p = in.vec2_at(0) * 10.0f;
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> p = in.st * 10.0f;
         vec2<F> G2_st;
         F n = noise::srdnoise(p, F(0.0f), G2_st);
         mat2<F> Jacobian2(dFdx(p), dFdy(p));

@@ -13,11 +13,11 @@ using namespace qs::glsl;
 
 struct DerivativeProbe {
     static constexpr ShaderInfo info{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec2<F> p = in.gl_FragCoord.xy();
         F v = p.x * p.x + 100.0f * p.y * p.y + 10.0f * p.x * p.y;
         return vec4<F>(dFdx(v), dFdy(v), v, 1.0f);
@@ -26,35 +26,35 @@ struct DerivativeProbe {
 
 struct StDerivativeProbe {
     static constexpr ShaderInfo info{"st_derivative_probe", "probe: dFdx(st) in red, green; dFdy(st) in blue, alpha",
-                                     Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = false, .time = false, .varyings = 2},
+                                     Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = false, .time = false},
                                      {"shaders/plane_st.vert"}, {"shaders/st_derivative_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         return vec4<F>(dFdx(st), dFdy(st));
     }
 };
 
 struct PositionDerivativeProbe {
     static constexpr ShaderInfo info{"position_derivative_probe", "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true, .varyings = 3},
+                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true},
                                      {"shaders/sphere_spots.vert"}, {"shaders/position_derivative_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { sphere_vertex<4, -1>(in, u, out); }
+    using VertexStage = Sphere<4, -1>;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec3<F> P = in.vec3_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec3<F> P = in.P;
         return vec4<F>(dFdx(P), length(dFdy(P)));
     }
 };
 
 struct SmoothstepProbe {
     static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         F e = floor(in.gl_FragCoord.x / 4.0f) * 4.0f + 2.5f;
         F w = 0.7f * length(vec2<F>(dFdx(e), dFdy(e)));
         return vec4<F>(smoothstep(e - w, e + w, in.gl_FragCoord.x), step(e, in.gl_FragCoord.x), w, 1.0f);
@@ -63,11 +63,11 @@ struct SmoothstepProbe {
 
 struct ArithmeticProbe {
     static constexpr ShaderInfo info{"arithmetic_probe", "probe: a / b, mod(a, 289), mod(a, b), a / 7 of run-time values",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/arithmetic_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         F a = in.gl_FragCoord.x * 7.13f + in.gl_FragCoord.y * 289.0f;
         F b = in.gl_FragCoord.y * 0.37f + 1.0f;
         return vec4<F>(a / b, mod(a, 289.0f), mod(a, b), a / 7.0f);
@@ -76,11 +76,11 @@ struct ArithmeticProbe {
 
 struct FloatEnvironmentProbe {
     static constexpr ShaderInfo info{"float_env_probe", "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .varyings = 0, .frag_coord = true},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/float_env_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         F z = floor(in.gl_FragCoord.x / 4096.0f);
         F column = floor(in.gl_FragCoord.x);
         // GLSL's if/else chain, as selects from the last case back to the first.

@@ -27,10 +27,10 @@ struct HashPcg {
                                      kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_pcg.frag"}},
                           130),
         kCellHashCheckBounds);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return vec4<F>(vec3<F>(cellnoise_pcg2(in.vec2_at(0) * 32.0f)), 1.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return vec4<F>(vec3<F>(cellnoise_pcg2(in.st * 32.0f)), 1.0f);
     }
 };
 
@@ -39,7 +39,7 @@ struct HashPerm289 {
         ShaderInfo{"hash_perm289", "seed 002: the permutation polynomial (34h + 10)h mod 289, chained over 32 cells across",
                    kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_perm289.frag"}},
         kCellHashCheckBounds);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
     static F permute(const F& x) {
         F h = mod(x, 289.0f);
@@ -52,15 +52,15 @@ struct HashPerm289 {
         return permute(permute(p.x) + p.y) / 288.0f;
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return vec4<F>(vec3<F>(cellnoise_perm(floor(in.vec2_at(0) * 32.0f))), 1.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return vec4<F>(vec3<F>(cellnoise_perm(floor(in.st * 32.0f))), 1.0f);
     }
 };
 
 struct Perlin2dPerm {
     static constexpr ShaderInfo info{"perlin2d_perm", "seed 002: Perlin noise with gradients from the permutation polynomial, quintic fade, 10 cells across",
                                      kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/perlin2d_perm.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     // Generate gradient vecors using a permutation polynomial
     // We can vary B to get different permutation outputs.
     template <class F>
@@ -106,8 +106,8 @@ struct Perlin2dPerm {
         return (n + 1.0f) / 2.0f;
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return vec4<F>(vec3<F>(noise(in.vec2_at(0) * 10.0f)), 1.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return vec4<F>(vec3<F>(noise(in.st * 10.0f)), 1.0f);
     }
 };
 

@@ -26,12 +26,12 @@ struct EsTutorial {
     };
     enum : int { uResolution };
     static constexpr Needs kNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                  .varyings = 0, .frag_coord = true};
+                                  .frag_coord = true};
     static constexpr ShaderInfo shader(std::string_view name, std::string_view description, std::string_view frag) {
         return with_uniforms(ShaderInfo{name, description, kNeeds, {"shaders/plane_st.vert"}, {"shaders/es_random_noise.glsl", frag}},
                              kUniforms);
     }
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
 
     template <class F>
     static F randomNoise(const vec2<F>& p) {
@@ -39,7 +39,7 @@ struct EsTutorial {
     }
     // The square viewport: position in [0, 1] across the window's width; the rest discarded.
     template <class F>
-    static vec2<F> square_position(const FragmentIn<F>& in, const Uniforms& u, FragmentOut<F>& out) {
+    static vec2<F> square_position(const FragmentIn<F, VertexStage>& in, const Uniforms& u, FragmentOut<F>& out) {
         vec2<F> position = in.gl_FragCoord.xy() / uniform<vec2<F>>(u, uResolution).xx();
         out.discard_if((position.x > 1.0f) || (position.y > 1.0f));
         return position;
@@ -50,7 +50,7 @@ struct EsTiles2 : EsTutorial {
     static constexpr ShaderInfo info = shader("es_tiles2", "seed 003, ES tutorial: the square viewport in 2x2 random tiles",
                                               "shaders/es_tiles2.frag");
     template <class F>
-    static FragmentOut<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
         vec2<F> position = square_position(in, u, out);
         float tiles = 2.0f;
@@ -82,7 +82,7 @@ struct EsSmooth5Tiles8 : EsTutorial {
         return sum;
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         vec2<F> position = in.gl_FragCoord.xy() / uniform<vec2<F>>(u, uResolution).xx();
         float tiles = 8.0f;
         position = floor(position * tiles);

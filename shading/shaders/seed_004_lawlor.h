@@ -15,7 +15,7 @@ using namespace qs::glsl;
 struct LawlorChecker {
     static constexpr ShaderInfo info{"lawlor_checker", "seed 004, Lawlor: a checkerboard, the xor of two comparisons",
                                      kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_checker.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> grid(const vec2<F>& loc) {
         vec2<F> gridcorner = floor(loc);
@@ -25,15 +25,15 @@ struct LawlorChecker {
                       vec4<F>(0.0f, 0.0f, 0.0f, 1.0f));           // black
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grid(in.vec2_at(0) * 10.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grid(in.texcoords * 10.0f);
     }
 };
 
 struct LawlorDots {
     static constexpr ShaderInfo info{"lawlor_dots", "seed 004, Lawlor: a grid of dots, by an if on the distance to the cell's centre",
                                      kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_dots.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> grid(const vec2<F>& loc) {
         vec2<F> gridcorner = floor(loc);
@@ -43,8 +43,8 @@ struct LawlorDots {
                       vec4<F>(0.0f, 0.0f, 0.0f, 1.0f));                 // black
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return grid(in.vec2_at(0) * 10.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return grid(in.texcoords * 10.0f);
     }
 };
 
@@ -52,21 +52,21 @@ struct LawlorDots {
 // scenes/assets/seed-004-plane.gltf binds the repository's (quadshade-make-scenes). Their lookups
 // inside a varying `if` are in non-uniform control flow, where GLSL leaves an implicit level of
 // detail undefined; these textures have none (no mipmaps, one filter), so nothing depends on it.
-inline constexpr Needs kTex1Needs{.derivatives = false, .texture = false, .time = false, .varyings = 2,
+inline constexpr Needs kTex1Needs{.derivatives = false, .texture = false, .time = false,
                                   .samplers = {SamplerUse{"tex1", 2}}};
-inline constexpr Needs kTex4Needs{.derivatives = false, .texture = false, .time = false, .varyings = 2,
+inline constexpr Needs kTex4Needs{.derivatives = false, .texture = false, .time = false,
                                   .samplers = {SamplerUse{"tex4", 2}}};
-inline constexpr Needs kTex1Tex4Needs{.derivatives = false, .texture = false, .time = false, .varyings = 2,
+inline constexpr Needs kTex1Tex4Needs{.derivatives = false, .texture = false, .time = false,
                                       .samplers = {SamplerUse{"tex1", 2}, SamplerUse{"tex4", 2}}};
 
 // main() of every textured snippet but the octaves': grid(texcoords * 10.0). GLSL's grid(loc)
 // reads the samplers and texcoords as globals; here they come in as the first two parameters.
 template <class Shader>
 struct LawlorGrid {
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneTexcoords;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
-        return Shader::grid(u, in.vec2_at(0), in.vec2_at(0) * 10.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        return Shader::grid(u, in.texcoords, in.texcoords * 10.0f);
     }
 };
 
@@ -221,7 +221,7 @@ struct LawlorTextureTwoOctaves : LawlorGrid<LawlorTextureTwoOctaves> {
 struct LawlorTextureOctaves {
     static constexpr ShaderInfo info{"lawlor_texture_octaves", "seed 004, Lawlor: six octaves of the noise texture, frequency 8 down to 0.25",
                                      kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_octaves.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> grid(const sampler2D& tex4, const vec2<F>& loc) {
         vec4<F> ret = vec4<F>(0.0f);
@@ -229,8 +229,8 @@ struct LawlorTextureOctaves {
         return (1.0f / 6.0f) * ret;
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
-        return grid(u.sampler2D(0), in.vec2_at(0));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        return grid(u.sampler2D(0), in.texcoords);
     }
 };
 

@@ -42,10 +42,10 @@ struct PcgValueNoise {
         ShaderInfo{"pcg_value_noise", "Noise is Beautiful: value noise from the PCG integer hash, four octaves (GLSL 1.30)",
                    kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/pcg_value_noise.frag"}},
         130);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> p = in.vec2_at(0) * 16.0f;
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> p = in.st * 16.0f;
         F n = 0.5f * value_noise(p) + 0.25f * value_noise(p * 2.0f + 17.0f) + 0.125f * value_noise(p * 4.0f + 31.0f) +
               0.0625f * value_noise(p * 8.0f + 47.0f);
         return vec4<F>(vec3<F>(n), 1.0f);
@@ -55,11 +55,11 @@ struct PcgValueNoise {
 struct Mandelbrot {
     static constexpr ShaderInfo info{"mandelbrot", "Lawlor, Procedural Solid Texturing: the Mandelbrot set in window coordinates, up to 100 iterations with break",
                                      Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                           .varyings = 0, .frag_coord = true},
+                                           .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/mandelbrot.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         F cx = in.gl_FragCoord.x * (3.0f / 1024.0f) - 2.0f, cy = in.gl_FragCoord.y * (3.0f / 1024.0f) - 1.5f;
         F x = cx, y = cy;  // point to iterate
         F r = 0.0f;        // radius of point (squared)

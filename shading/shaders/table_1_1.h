@@ -9,48 +9,42 @@
 #include "shading/program.h"
 #include "shading/program_of.h"
 #include "shading/shaders/aastep.h"
+#include "shading/shaders/vertex_stages.h"
 #include "shading/vertex.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
-// st = gl_MultiTexCoord0.st
-inline void plane_st_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-    out.varyings[0] = in.texcoord.x;
-    out.varyings[1] = in.texcoord.y;
-    out.clip = transform_point(u.model_view_projection, in.position);
-}
-
-inline constexpr Needs kPlaneNeeds{.derivatives = false, .texture = false, .time = false, .varyings = 2};
-inline constexpr Needs kPlaneDerivativeNeeds{.derivatives = true, .texture = false, .time = false, .varyings = 2};
+inline constexpr Needs kPlaneNeeds{.derivatives = false, .texture = false, .time = false};
+inline constexpr Needs kPlaneDerivativeNeeds{.derivatives = true, .texture = false, .time = false};
 
 struct ConstantColor {
     static constexpr ShaderInfo info{"constant_color", "Table 1.1: constant colour",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .varyings = 0},
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false},
                                      {"shaders/plane_st.vert"}, {"shaders/constant_color.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>&, const Uniforms&) { return vec4<F>(1.0f, 0.5f, 0.0f, 1.0f); }
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>&, const Uniforms&) { return vec4<F>(1.0f, 0.5f, 0.0f, 1.0f); }
 };
 
 struct SingleTexture {
     static constexpr ShaderInfo info{"single_texture", "Table 1.1: one bilinear texture lookup (clamp, no mipmaps)",
-                                     Needs{.derivatives = false, .texture = true, .time = false, .varyings = 2},
+                                     Needs{.derivatives = false, .texture = true, .time = false},
                                      {"shaders/plane_st.vert"}, {"shaders/single_texture.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
-        return texture2D(*u.teximage, in.vec2_at(0));
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        return texture2D(*u.teximage, in.st);
     }
 };
 
 struct Dots {
     static constexpr ShaderInfo info{"dots", "Table 1.1 / Figure 1.2: dots, smoothstep(0.3, 0.32, ...)",
                                      kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/dots.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         F grey = smoothstep(0.3f, 0.32f, length(fract(5.0f * st) - 0.5f));
         return vec4<F>(vec3<F>(grey), 1.0f);
     }
@@ -61,10 +55,10 @@ struct Perlin {
         "perlin", "Table 1.1 / Figure 1.4: 3D simplex noise (benchmark variant 0.51/93)", kPlaneNeeds,
         {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin.frag"},
         noise::Simplex3dBenchmark::glsl_defines});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         F n = noise::snoise3<noise::Simplex3dBenchmark>(vec3<F>(10.0f * st, 60.0f));
         return vec4<F>(vec3<F>(0.5f * n + 0.5f), 1.0f);
     }
@@ -74,11 +68,11 @@ struct Perlin5 {
     static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         "perlin5", "Table 1.1 / Figure 1.4: five octaves of 3D simplex noise", kPlaneNeeds, {"shaders/plane_st.vert"},
         {"noise/simplex3d.glsl", "shaders/perlin5.frag"}, noise::Simplex3dBenchmark::glsl_defines});
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         using V = noise::Simplex3dBenchmark;
-        vec2<F> st = in.vec2_at(0);
+        vec2<F> st = in.st;
         F n = noise::snoise3<V>(vec3<F>(5.0f * st, 50.0f));
         n += 0.5f * noise::snoise3<V>(vec3<F>(10.0f * st, 60.0f));
         n += 0.25f * noise::snoise3<V>(vec3<F>(20.0f * st, 70.0f));
@@ -91,10 +85,10 @@ struct Perlin5 {
 struct Worley {
     static constexpr ShaderInfo info{"worley", "Table 1.1 / Figure 1.5: F1 of 2D cellular noise (3x3 search)",
                                      kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/cellular.glsl", "shaders/worley.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular(in.vec2_at(0) * 10.0f);  // GLSL: vec2 F
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> Fs = noise::cellular(in.st * 10.0f);  // GLSL: vec2 F
         return vec4<F>(vec3<F>(Fs.x), 1.0f);
     }
 };
@@ -106,10 +100,10 @@ struct WorleyTiles {
                                      W == AAWidth::Step ? kPlaneNeeds : kPlaneDerivativeNeeds, {"shaders/plane_st.vert"},
                                      {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/worley_tiles.frag"},
                                      aa_variant_defines(W)};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         vec4<F> d1d2;
         vec2<F> Fs = noise::cellular_vectors(st * 8.0f, d1d2);  // GLSL: vec2 F
         F thresh = 0.05f * length(d1d2.xy() - d1d2.zw()) / (Fs.x + Fs.y);
@@ -131,17 +125,26 @@ struct Halftone {
     static constexpr ShaderInfo info = with_check_bounds(
         ShaderInfo{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
                    "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
-                   Needs{.derivatives = true, .texture = true, .time = false, .varyings = 4},
+                   Needs{.derivatives = true, .texture = true, .time = false},
                    {"shaders/halftone.vert"},
                    {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"},
                    aa_variant_defines(W)},
         W == AAWidth::Step ? std::span<const CheckBound>(kHalftoneStepCheckBounds) : std::span<const CheckBound>());
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-        plane_st_vertex(in, u, out);
-        const float dims[2] = {float(u.teximage->width), float(u.teximage->height)};
-        out.varyings[2] = 1.0f / dims[0];  // one = 1.0 / dims
-        out.varyings[3] = 1.0f / dims[1];
-    }
+    // halftone.vert; its `dims` uniform is the texture's size.
+    struct VertexStage {
+        template <class T>
+        struct Varyings {
+            vec2<T> st;
+            vec2<T> one;
+            auto fields() { return std::tie(st, one); }
+        };
+        static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
+            const vec2<float> dims(float(u.teximage->width), float(u.teximage->height));
+            out.st = {in.texcoord.x, in.texcoord.y};
+            out.one = 1.0f / dims;
+            out.gl_Position = transform_point(u.model_view_projection, in.position);
+        }
+    };
     // Explicit bilinear lookups to circumvent imprecise interpolation.
     template <class F>
     static vec4<F> texture2D_bilinear(const sampler2D& tex, const vec2<F>& st, const vec2<F>& dims, const vec2<F>& one) {
@@ -158,9 +161,9 @@ struct Halftone {
         return mix(texel0, texel1, uvlerp.x);
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         using noise::snoise;
-        vec2<F> st = in.vec2_at(0), one = in.vec2_at(2);
+        vec2<F> st = in.st, one = in.one;
         vec2<F> dims(float(u.teximage->width), float(u.teximage->height));
         vec3<F> rgb = texture2D_bilinear(*u.teximage, st, dims, one).rgb();
         F n = 0.1f * snoise(st * 200.0f);

@@ -13,17 +13,17 @@
 namespace qs::shaders {
 using namespace qs::glsl;
 
-inline constexpr Needs kTeximageProbeNeeds{.derivatives = false, .texture = true, .time = false, .varyings = 2};
-inline constexpr Needs kVolumeProbeNeeds{.derivatives = false, .texture = false, .time = false, .varyings = 2,
+inline constexpr Needs kTeximageProbeNeeds{.derivatives = false, .texture = true, .time = false};
+inline constexpr Needs kVolumeProbeNeeds{.derivatives = false, .texture = false, .time = false,
                                          .samplers = {SamplerUse{"volume", 3}}};
 
 struct TextureLodProbe {
     static constexpr ShaderInfo info{"texture_lod_probe", "probe: texture2DLod at a level from -1.5 to 8.375 in eighths",
                                      kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_lod_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        vec2<F> st = in.st;
         return texture2DLod(*u.teximage, st, floor(fract(st.x + st.y) * 80.0f) * 0.125f - 1.5f);
     }
 };
@@ -31,10 +31,10 @@ struct TextureLodProbe {
 struct TextureBiasProbe {
     static constexpr ShaderInfo info{"texture_bias_probe", "probe: texture2D with a bias from -1 to 2 per pixel",
                                      kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_bias_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        vec2<F> st = in.st;
         return texture2D(*u.teximage, st, fract(st.y * 2.0f) * 3.0f - 1.0f);
     }
 };
@@ -42,11 +42,11 @@ struct TextureBiasProbe {
 struct Texture3dProbe {
     static constexpr ShaderInfo info{"texture3d_probe", "probe: texture3D of the sampler3D `volume` at (st, 0.75 s - 0.5 t)",
                                      kVolumeProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture3d_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         const sampler3D& volume = u.sampler3D(0);
-        vec2<F> st = in.vec2_at(0);
+        vec2<F> st = in.st;
         return texture3D(volume, vec3<F>(st, st.x * 0.75f - st.y * 0.5f));
     }
 };
@@ -54,26 +54,26 @@ struct Texture3dProbe {
 struct Texture3dLodProbe {
     static constexpr ShaderInfo info{"texture3d_lod_probe", "probe: texture3DLod of `volume` at a level from -1 to 4.875 in eighths",
                                      kVolumeProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture3d_lod_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlaneSt;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         const sampler3D& volume = u.sampler3D(0);
-        vec2<F> st = in.vec2_at(0);
+        vec2<F> st = in.st;
         return texture3DLod(volume, vec3<F>(st, st.x * 0.75f - st.y * 0.5f), floor(fract(st.x + st.y) * 48.0f) * 0.125f - 1.0f);
     }
 };
 
 inline constexpr Needs kTexelFetchNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = true,
-                                        .time = false, .varyings = 0, .frag_coord = true};
+                                        .time = false, .frag_coord = true};
 
 struct TexelFetchProbe {
     static constexpr ShaderInfo info = with_glsl_version(
         ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
                    kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
         130);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         using Int = int_t<F>;
         ivec2<F> pixel = ivec2<F>(in.gl_FragCoord.xy());
         Int level = (pixel.x / 4) % 6 - 1;
@@ -89,12 +89,12 @@ struct TexelFetch3dProbe {
     static constexpr ShaderInfo info = with_glsl_version(
         ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
                    Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                         .varyings = 0, .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
+                         .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
                    {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
         130);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         using Int = int_t<F>;
         const sampler3D& volume = u.sampler3D(0);
         ivec2<F> pixel = ivec2<F>(in.gl_FragCoord.xy());
@@ -110,14 +110,10 @@ struct TexelFetch3dProbe {
 struct FastNoise {
     static constexpr ShaderInfo info{
         "fast_noise", "seed 001: noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false, .varyings = 3,
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false,
               .samplers = {SamplerUse{"noise3dSampler", 3}}},
         {"shaders/object_position.vert"}, {"shaders/fast_noise.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-        const glm::vec3 P = in.position * 4.0f;
-        out.varyings = {P.x, P.y, P.z};
-        out.clip = transform_point(u.model_view_projection, in.position);
-    }
+    using VertexStage = ObjectPosition;
     static constexpr float PI = 3.14159265358979f;
     template <class F>
     static F noiseFast(const sampler3D& noise3dSampler, vec3<F> p) {
@@ -128,8 +124,8 @@ struct FastNoise {
         return hi.x * cos(angle) + hi.y * sin(angle);
     }
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
-        return vec4<F>(vec3<F>(0.5f + 0.5f * noiseFast(u.sampler3D(0), in.vec3_at(0))), 1.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        return vec4<F>(vec3<F>(0.5f + 0.5f * noiseFast(u.sampler3D(0), in.P)), 1.0f);
     }
 };
 

@@ -13,16 +13,16 @@ namespace qs::shaders {
 using namespace qs::glsl;
 
 inline constexpr Needs kWindowProbeNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                         .varyings = 0, .frag_coord = true};
+                                         .frag_coord = true};
 
 struct IntegerProbe {
     static constexpr ShaderInfo info = with_glsl_version(
         ShaderInfo{"integer_probe", "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_probe.frag"}},
         130);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         using Int = int_t<F>;
         using Uint = uint_t<F>;
         Int x = Int(in.gl_FragCoord.x), y = Int(in.gl_FragCoord.y);
@@ -63,9 +63,9 @@ struct IntegerUndefinedProbe {
         ShaderInfo{"integer_undefined_probe", "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_undefined_probe.frag"}},
         130);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         using Int = int_t<F>;
         using Uint = uint_t<F>;
         Int column = Int(in.gl_FragCoord.x);
@@ -103,9 +103,9 @@ struct BoolProbe {
         ShaderInfo{"bool_probe", "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/bool_probe.frag"}},
         130);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec2<F> p = in.gl_FragCoord.xy();
         Bool<F> a = p.x < 9.0f, b = mod(p.y, 3.0f) < 1.5f, c = p.x + p.y > 15.0f;
         bvec3<F> v(a, b != c, !a || b);  // b ^^ c
@@ -122,7 +122,7 @@ struct BoolProbe {
 struct LoopProbe {
     static constexpr ShaderInfo info{"loop_probe", "probe: loops that exit per fragment: break, continue, return, while, nested",
                                      kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/loop_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
 
     template <class F>
     static F first_step(F start, F step) {
@@ -137,7 +137,7 @@ struct LoopProbe {
     }
 
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec2<F> p = floor(in.gl_FragCoord.xy());
         F v = p.x + 64.0f * p.y + 1.0f, steps = 0.0f, peak = v;
         Loop collatz(v, steps, peak);
@@ -171,11 +171,11 @@ struct LoopProbe {
 struct DiscardProbe {
     static constexpr ShaderInfo info{"discard_probe", "probe: discard on a pattern, before a value and inside a loop; derivatives after it",
                                      Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false,
-                                           .varyings = 0, .frag_coord = true},
+                                           .frag_coord = true},
                                      {"shaders/plane_st.vert"}, {"shaders/discard_probe.frag"}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static FragmentOut<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         FragmentOut<F> out;
         vec2<F> p = in.gl_FragCoord.xy();
         F v = p.x * p.x + 3.0f * p.y * p.y + p.x * p.y;
@@ -197,9 +197,9 @@ struct MatrixProbe {
         ShaderInfo{"matrix_probe", "probe: mat2..mat4 and non-square matrices: products, transpose, inverse, determinant (GLSL 1.50)",
                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/matrix_probe.frag"}},
         150);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec2<F> p = floor(in.gl_FragCoord.xy());
         vec4<F> q(mod(p.x, 9.0f) * 0.25f - 1.0f, mod(p.y, 7.0f) * 0.25f - 0.75f, mod(p.x + p.y, 5.0f) * 0.25f - 0.5f,
                   1.5f - mod(p.x * 3.0f + p.y, 11.0f) * 0.25f);
@@ -228,9 +228,9 @@ struct BuiltinsProbe {
         ShaderInfo{"builtins_probe", "probe: rounding, angles, reflect, refract, faceforward, isnan, isinf, modf, bits of floats, write swizzles, asin, acos (GLSL 3.30)",
                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/builtins_probe.frag"}},
         330);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec2<F> p = floor(in.gl_FragCoord.xy());
         F z = floor(p.x / 4096.0f);  // 0 at run time
         F s = (p.x - 31.0f) * 0.0625f, t = (p.y - 7.0f) * 0.5f;
@@ -277,9 +277,9 @@ struct UniformProbe {
                                      kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
                           130),
         kUniforms);
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { plane_st_vertex(in, u, out); }
+    using VertexStage = PlanePosition;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms& u) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         using Int = int_t<F>;
         using Uint = uint_t<F>;
         vec2<F> p = in.gl_FragCoord.xy() / uniform<vec2<F>>(u, uResolution) - 0.5f;

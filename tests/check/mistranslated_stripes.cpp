@@ -4,6 +4,7 @@
 // narrower wherever the ramp changes along y, which is most of them.
 #include "shading/glsl.h"
 #include "shading/program_of.h"
+#include "shading/varyings.h"
 #include "shading/vertex.h"
 
 namespace check_test {
@@ -14,20 +15,26 @@ struct MistranslatedStripes {
     static constexpr ShaderInfo info{
         .name = "mistranslated_stripes",
         .description = "my_stripes.frag translated with abs(dFdx(ramp)) for fwidth(ramp) (a test of quadshade check)",
-        .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .varyings = 2},
+        .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true},
         .glsl_vertex = {"my_stripes.vert"},
         .glsl_fragment = {"my_stripes.frag"},
     };
 
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-        out.varyings[0] = in.texcoord.x;
-        out.varyings[1] = in.texcoord.y;
-        out.clip = transform_point(u.model_view_projection, in.position);
-    }
+    struct VertexStage {
+        template <class T>
+        struct Varyings {
+            vec2<T> st;
+            auto fields() { return std::tie(st); }
+        };
+        static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
+            out.st = {in.texcoord.x, in.texcoord.y};
+            out.gl_Position = transform_point(u.model_view_projection, in.position);
+        }
+    };
 
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        vec2<F> st = in.vec2_at(0);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> st = in.st;
         F ramp = abs(fract(8.0f * (st.x + st.y)) * 2.0f - 1.0f);
         F w = 0.7f * abs(dFdx(ramp));  // the mistake: fwidth(ramp) in the GLSL
         F stripe = smoothstep(0.5f - w, 0.5f + w, ramp);

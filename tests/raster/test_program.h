@@ -2,56 +2,77 @@
 // Small programs for rasterizer tests: they expose varyings and derivatives as colours, so the
 // tests can read exactly what the rasterizer interpolated.
 
+#include <tuple>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shading/program_of.h"
 #include "raster/rasterizer.h"
+#include "shading/varyings.h"
 #include "shading/vertex.h"
 
 namespace qs::test {
 using namespace qs::glsl;
 
-// Vertex stage for all: clip = MVP * position; varyings = object position (3), texcoord (2).
-inline void pass_through_vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) {
-    out.clip = transform_point(u.model_view_projection, in.position);
-    out.varyings = {in.position.x, in.position.y, in.position.z, in.texcoord.x, in.texcoord.y};
-}
+// Vertex stage for all: gl_Position = MVP * position; P = object position, st = texcoord.
+struct PassThrough {
+    template <class T>
+    struct Varyings {
+        vec3<T> P;
+        vec2<T> st;
+        auto fields() { return std::tie(P, st); }
+    };
+    static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<PassThrough>& out) {
+        out.P = {in.position.x, in.position.y, in.position.z};
+        out.st = {in.texcoord.x, in.texcoord.y};
+        out.gl_Position = transform_point(u.model_view_projection, in.position);
+    }
+};
 
 // Writes (1, 1, 1, 1): coverage.
 struct Flat {
-    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::None, .derivatives = false, .varyings = 0}, {}, {}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::None, .derivatives = false}, {}, {}};
+    using VertexStage = PassThrough;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>&, const Uniforms&) { return vec4<F>(1.0f); }
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>&, const Uniforms&) { return vec4<F>(1.0f); }
 };
 
-// Writes the first three varyings (the object position): interpolation.
+// Writes the object position: interpolation.
 struct Position {
-    static constexpr ShaderInfo info{"test_position", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 5}, {}, {}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    static constexpr ShaderInfo info{"test_position", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    using VertexStage = PassThrough;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return vec4<F>(in.varying[0], in.varying[1], in.varying[2], 1.0f);
-    }
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return vec4<F>(in.P, 1.0f); }
 };
 
-// Writes varying 0 flat (the provoking vertex's) and varying 1 smooth.
+// Writes x flat (the provoking vertex's) and y smooth.
 struct FlatX {
-    static constexpr ShaderInfo info{"test_flat_x", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 5, .flat_varyings = 1u}, {}, {}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    static constexpr ShaderInfo info{"test_flat_x", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    struct VertexStage {
+        template <class T>
+        struct Varyings {
+            T x;  // flat varying float x;
+            T y;  // varying float y;
+            static constexpr unsigned flat_fields = 1u << 0;
+            auto fields() { return std::tie(x, y); }
+        };
+        static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
+            out.x = in.position.x;
+            out.y = in.position.y;
+            out.gl_Position = transform_point(u.model_view_projection, in.position);
+        }
+    };
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return vec4<F>(in.varying[0], in.varying[1], 0.0f, 1.0f);
-    }
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return vec4<F>(in.x, in.y, 0.0f, 1.0f); }
 };
 
-// Writes dFdx and dFdy of varying 0 and the varying itself.
+// Writes dFdx and dFdy of the object x and x itself.
 struct Slopes {
-    static constexpr ShaderInfo info{"test_slopes", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .varyings = 5}, {}, {}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    static constexpr ShaderInfo info{"test_slopes", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true}, {}, {}};
+    using VertexStage = PassThrough;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
-        return vec4<F>(dFdx(in.varying[0]), dFdy(in.varying[0]), in.varying[0], 1.0f);
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return vec4<F>(dFdx(in.P.x), dFdy(in.P.x), in.P.x, 1.0f);
     }
 };
 

@@ -22,10 +22,10 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .varyings = 0, .frag_coord = true}, {}, {}};
-    static void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) { pass_through_vertex(in, u, out); }
+    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .frag_coord = true}, {}, {}};
+    using VertexStage = PassThrough;
     template <class F>
-    static vec4<F> fragment(const FragmentIn<F>& in, const Uniforms&) {
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         F y = in.gl_FragCoord.y;
         return vec4<F>(dFdx(y * y), dFdy(y * y), y, 1.0f);
     }
@@ -34,15 +34,9 @@ const ProgramOf<SquareY> kSquareY;
 
 // The same shader not saying that it reads gl_FragCoord.
 struct UndeclaredSquareY : SquareY {
-    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .varyings = 0}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::None, .derivatives = true}, {}, {}};
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
-
-// The position shader declaring two of the five varyings its vertex stage writes, and reading three.
-struct UndeclaredVarying : Position {
-    static constexpr ShaderInfo info{"test_position_undeclared", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .varyings = 2}, {}, {}};
-};
-const ProgramOf<UndeclaredVarying> kUndeclaredVarying;
 
 // Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
 Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
@@ -251,35 +245,20 @@ TEST_CASE("a shader that reads gl_FragCoord without declaring it reads NaN, neve
     CHECK(first.pixel(3, H - 1 - 5)[2] == 5.5f);
 }
 
-TEST_CASE("a shader that reads a varying past its Needs::varyings reads NaN, never another draw's numbers",
-          "[raster][specialisation]") {
-    // The first draw interpolates varying 2 (object z = 0.25) over the pixels the second, nearer,
-    // draws without declaring it: the second's blue is NaN in every mode, its red and green are
-    // its declared varyings.
-    constexpr int W = 8, H = 8;
-    const std::vector<VertexIn> verts = {{{0, 0, 0.25f}, {}}, {{W, 0, 0.25f}, {}}, {{W, H, 0.25f}, {}}, {{0, H, 0.25f}, {}}};
-    const std::vector<VertexIn> nearer = {{{0, 0, -0.5f}, {}}, {{W, 0, -0.5f}, {}}, {{W, H, -0.5f}, {}}, {{0, H, -0.5f}, {}}};
-    const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
-    DrawCall declared{verts, idx, &kPosition, {}}, undeclared{nearer, idx, &kUndeclaredVarying, {}};
-    declared.uniforms.model_view_projection = undeclared.uniforms.model_view_projection = window_to_clip(W, H);
-    const DrawCall both[] = {declared, undeclared};
-    for (Derivatives rule : {Derivatives::Fine, Derivatives::Analytic}) {
-        for (bool general : {false, true}) {
-            RasterOptions options;
-            options.derivatives = rule, options.force_general_path = general;
-            const Framebuffer fb = rasterize(W, H, glm::vec4(0.0f), both, options);
-            for (int y = 0; y < H; ++y) {
-                for (int x = 0; x < W; ++x) {
-                    INFO("rule " << int(rule) << " general " << general << " pixel " << x << ", " << y);
-                    const float* p = fb.pixel(x, H - 1 - y);
-                    CHECK(p[0] == float(x) + 0.5f);
-                    CHECK(p[1] == float(y) + 0.5f);
-                    CHECK(std::isnan(p[2]));
-                }
-            }
-            CHECK(rasterize(W, H, glm::vec4(0.0f), std::span(both, 1), options).pixel(3, 3)[2] == 0.25f);
-        }
-    }
+TEST_CASE("varyings are counted from the vertex stage's fields, flat ones included", "[raster][specialisation]") {
+    // A fragment stage reads its vertex stage's varyings by name (shading/varyings.h), so it
+    // cannot read one the stage does not write (tests/shading/varyings_misread.cpp must not
+    // compile); the renderers interpolate exactly the floats the fields hold.
+    static_assert(varying_count<PassThrough>() == 5 && flat_varying_mask<PassThrough>() == 0u);
+    static_assert(varying_count<FlatX::VertexStage>() == 2 && flat_varying_mask<FlatX::VertexStage>() == 1u);
+    CHECK(kPosition.info().needs.varyings == 5);
+    static const ProgramOf<FlatX> flat;
+    CHECK(flat.info().needs.varyings == 2);
+    CHECK(flat.info().needs.flat_varyings == 1u);
+    // The vertex stage's fields in declaration order: P.xyz, then st.
+    VertexOut out;
+    kPosition.vertex(VertexIn{{1.0f, 2.0f, 3.0f}, {4.0f, 5.0f}}, Uniforms{}, out);
+    CHECK(std::vector<float>(out.varyings.begin(), out.varyings.begin() + 5) == std::vector<float>{1, 2, 3, 4, 5});
 }
 
 TEST_CASE("degenerate, sliver and non-finite triangles are dropped without harm", "[raster][robustness]") {
