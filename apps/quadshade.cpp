@@ -323,7 +323,7 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
     cmd.add_option("--maps", a.maps, "the maps to bake (default color)")->delimiter(',')->option_text("color");
     cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
-        ->check(CLI::Range(0, 64))->option_text("PIXELS");
+        ->check(CLI::Range(0, kMaxSkirt))->option_text("PIXELS");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
     cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
         ->option_text("NAME=VALUE")->allow_extra_args(false);
@@ -650,7 +650,6 @@ int cmd_bake(const BakeArgs& a) {
     for (const std::string& map : a.maps) {
         if (map != "color") throw UsageError("--maps: '" + map + "' is not bakeable (color)");
     }
-    if (a.skirt > 0) throw UsageError("--skirt: skirts are not implemented yet");
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
@@ -664,6 +663,7 @@ int cmd_bake(const BakeArgs& a) {
 
     AtlasRequest req;
     req.size = a.size;
+    req.skirt = a.skirt;
     req.frame.shader_override = a.shader;
     if (a.time) req.frame.time = *a.time;
     req.frame.raster.derivatives = a.derivatives;
@@ -678,6 +678,7 @@ int cmd_bake(const BakeArgs& a) {
                 {{"quadshade:shader", a.shader},
                  {"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"},
                  {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
+                 {"quadshade:skirt", std::to_string(a.skirt)},
                  {"quadshade:derivatives", rule_name(a.derivatives)}},
                 true);
     // The same meshes, objects and camera, each object drawn with the baked texture.
@@ -685,7 +686,10 @@ int cmd_bake(const BakeArgs& a) {
     Texture texture;
     texture.image.file = out.staged(color);
     texture.image.mime_type = "image/png";
-    texture.sampler = Sampler{Filter::Linear, Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
+    // Trilinear: the texture is minified wherever the mesh is smaller on screen than its atlas.
+    // Both renderers build the mip chain on load as glGenerateMipmap does (2x2 box).
+    texture.sampler = Sampler{Filter::Linear, Filter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::ClampToEdge,
+                              Wrap::ClampToEdge};
     texture.field = "baked " + color;
     baked.textures = {texture};
     for (Object& o : baked.objects) {

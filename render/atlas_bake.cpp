@@ -8,6 +8,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "render/atlas_skirts.h"
+
 namespace qs {
 
 namespace {
@@ -112,10 +114,21 @@ void check_atlas(const Scene& scene) {
     }
 }
 
-Scene atlas_scene(const Scene& scene, int size) {
+Scene atlas_scene(const Scene& scene, int size, int skirt) {
     Scene s = scene;
     s.clear_color = glm::vec4(0.0f);
     s.width = s.height = size;
+    if (skirt > 0) {
+        for (const Object& o : scene.objects) {
+            Mesh strips = skirt_mesh(scene.meshes[o.mesh], float(skirt) / float(size));
+            if (strips.indices.empty()) continue;
+            s.meshes.push_back(std::move(strips));
+            Object skirts = o;
+            skirts.name = o.name + " skirts";
+            skirts.mesh = s.meshes.size() - 1;
+            s.objects.push_back(skirts);
+        }
+    }
     return s;
 }
 
@@ -125,7 +138,11 @@ Framebuffer render_atlas_frame(const Scene& scene, const AtlasRequest& request) 
                                     std::to_string(request.size));
     }
     check_atlas(scene);
-    Scene s = atlas_scene(scene, request.size);
+    if (request.skirt < 0 || request.skirt > kMaxSkirt) {
+        throw std::invalid_argument("a skirt must be 0 to " + std::to_string(kMaxSkirt) + " texels wide, got " +
+                                    std::to_string(request.skirt));
+    }
+    Scene s = atlas_scene(scene, request.size, request.skirt);
     FrameRequest frame = request.frame;
     frame.width = frame.height = request.size;
     frame.atlas = true;

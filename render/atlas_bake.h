@@ -21,9 +21,11 @@ namespace qs {
 
 // Atlas sides (texels): what a texture may have (scenes/limits.h) so the result loads back.
 inline constexpr int kMaxAtlasSide = 1 << 14;
+inline constexpr int kMaxSkirt = 64;
 
 struct AtlasRequest {
     int size = 1024;     // the atlas is size x size texels
+    int skirt = 0;       // texels of skirt around each chart (render/atlas_skirts.h), 0 for none
     FrameRequest frame;  // shader, time, uniforms, derivative rule, threads; its size and atlas flag are set here
 };
 
@@ -33,8 +35,11 @@ struct AtlasRequest {
 void check_atlas(const Scene& scene);
 
 // The scene an atlas is drawn from: `scene` with a transparent black clear colour (the gutter
-// between charts) at size x size.
-Scene atlas_scene(const Scene& scene, int size);
+// between charts) at size x size and, with `skirt` texels, each object's skirts drawn after all
+// the charts by an object of the same material. The depth test (LESS, every triangle at depth
+// 0) keeps the first fragment drawn at a texel, so a skirt fills only gutter texels: the same
+// atlas as the blog's skirts drawn first and charts over them, without a depth order.
+Scene atlas_scene(const Scene& scene, int size, int skirt = 0);
 
 // The atlas as its frame: rows top-down as every frame, so its last row is the atlas's first
 // (t = 0). Throws as check_atlas, std::invalid_argument for a size outside [1, kMaxAtlasSide],

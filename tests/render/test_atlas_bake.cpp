@@ -4,11 +4,13 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 
 #include "render/atlas_bake.h"
+#include "render/atlas_skirts.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "tests/test_paths.h"
@@ -103,7 +105,7 @@ TEST_CASE("bake: the atlas image's first row is t = 0 (glTF's top of the image)"
     CHECK(alpha(1, 5) == 1.0f);
     CHECK(alpha(0, 15) == 0.0f);
     CHECK(alpha(15, 0) == 0.0f);
-    CHECK_THROWS_AS(bake_atlas(s, AtlasRequest{0, {}}), std::invalid_argument);
+    CHECK_THROWS_AS(bake_atlas(s, AtlasRequest{0, 0, {}}), std::invalid_argument);
 }
 
 TEST_CASE("bake: the command writes the baked scene and its texture, or nothing with a message", "[bake]") {
@@ -149,6 +151,58 @@ TEST_CASE("bake: the command writes the baked scene and its texture, or nothing 
     CHECK(baked.meshes[0].vertices.size() == load_scene(kAtlasCube).meshes[0].vertices.size());
     CHECK(run(qs + " render " + (dir / "cube.gltf").string() + " --size 32x32 -o " + (dir / "cube.png").string()) == 0);
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("bake: skirts follow the chart boundaries of vertices welded by texcoord, and fill only the gutter", "[bake]") {
+    // The cube: six square charts, four boundary edges each; every skirt vertex keeps a boundary
+    // vertex's position, and the outer ones lie `w` beyond their chart's square on both axes at
+    // its corners.
+    const Scene cube = load_scene(kAtlasCube);
+    const Mesh& m = cube.meshes[0];
+    const float w = 0.01f;
+    const Mesh skirt = skirt_mesh(m, w);
+    CHECK(skirt.indices.size() == 24 * 6);
+    REQUIRE(skirt.vertices.size() == 24 * 4);
+    for (std::size_t q = 0; q < 24; ++q) {
+        for (int k = 0; k < 4; ++k) {
+            const Vertex& v = skirt.vertices[q * 4 + std::size_t(k)];
+            CHECK(std::any_of(m.vertices.begin(), m.vertices.end(), [&](const Vertex& c) { return c.position == v.position; }));
+        }
+        const Vertex &inner = skirt.vertices[q * 4], &outer = skirt.vertices[q * 4 + 3];
+        CHECK(std::abs(std::abs(outer.texcoord.x - inner.texcoord.x) - w) < 1e-6f);
+        CHECK(std::abs(std::abs(outer.texcoord.y - inner.texcoord.y) - w) < 1e-6f);
+    }
+    // A square of two triangles whose diagonal's vertices are duplicated (equal texcoords, other
+    // indices): welded, the diagonal is inside the chart, and only the four sides are boundary.
+    Mesh square{"square", {{{0, 0, 0}, {0.2f, 0.2f}}, {{1, 0, 0}, {0.8f, 0.2f}}, {{1, 1, 0}, {0.8f, 0.8f}},
+                           {{0, 0, 0}, {0.2f, 0.2f}}, {{1, 1, 0}, {0.8f, 0.8f}}, {{0, 1, 0}, {0.2f, 0.8f}}},
+                {0, 1, 2, 3, 4, 5}};
+    CHECK(skirt_mesh(square, w).indices.size() == 4 * 6);
+    // The sphere: its seam's two columns and its poles' notches are boundaries.
+    CHECK_FALSE(skirt_mesh(load_scene(kAtlasSphere).meshes[0], w).indices.empty());
+
+    // Baked with skirts, every texel a chart covers keeps its colour; gutter texels near charts
+    // are filled.
+    AtlasRequest req;
+    req.size = 96;
+    req.frame.time = 0.5;
+    req.frame.shader_override = "spots";
+    const Image bare = bake_atlas(cube, req);
+    req.skirt = 4;
+    const Image skirted = bake_atlas(cube, req);
+    std::size_t charts = 0, filled = 0, changed = 0;
+    for (std::size_t i = 0; i < bare.rgba.size(); i += 4) {
+        if (bare.rgba[i + 3] > 0.0f) {
+            ++charts;
+            changed += !std::equal(&bare.rgba[i], &bare.rgba[i] + 4, &skirted.rgba[i]);
+        } else {
+            filled += skirted.rgba[i + 3] > 0.0f;
+        }
+    }
+    CHECK(charts > 0);
+    CHECK(changed == 0);
+    CHECK(filled > charts / 4);
+    CHECK_THROWS_AS(bake_atlas(cube, AtlasRequest{16, kMaxSkirt + 1, {}}), std::invalid_argument);
 }
 
 }  // namespace qs
