@@ -5,6 +5,9 @@
 //
 //   quadshade-bench-bake [--out DIR] [--repeat N] [--threads N]
 //
+// Prints two tables and writes them to DIR/bake.md and DIR/bake-seams.md (bench/results.py puts
+// them into docs/results.md), with every image compared in DIR.
+//
 // Seam pixels: pixels of the mesh whose texture lookups, without skirts, reach gutter texels
 // (the baked render's alpha, the atlas's coverage filtered as the colour is, is below 1 there).
 // For each skirt width: how many of them still read gutter, how many differ from the live render
@@ -13,7 +16,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -64,6 +69,23 @@ Scene baked_scene(const Scene& live, const Image& atlas, const fs::path& dir, co
     return s;
 }
 
+// printf to stdout and to a file.
+struct Table {
+    std::ofstream file;
+    explicit Table(const fs::path& path) : file(path) {
+        if (!file) throw std::runtime_error(path.string() + ": cannot write");
+    }
+    [[gnu::format(printf, 2, 3)]] void line(const char* format, ...) {
+        char buffer[1024];
+        va_list args;
+        va_start(args, format);
+        std::vsnprintf(buffer, sizeof buffer, format, args);
+        va_end(args);
+        std::fputs(buffer, stdout);
+        file << buffer;
+    }
+};
+
 float rgb_error(const Framebuffer& a, const Framebuffer& b, std::size_t i) {
     float e = 0.0f;
     for (int c = 0; c < 3; ++c) {
@@ -96,10 +118,11 @@ int main(int argc, char** argv) {
         frame.time = 0.5;
         frame.raster.threads = o.threads;
 
-        std::printf("## Baked against live: %s on %s, time 0.5, %d threads, median of %d frames\n\n", shader.c_str(),
+        Table bake_md(o.out / "bake.md");
+        bake_md.line("## Baked against live: %s on %s, time 0.5, %d threads, median of %d frames\n\n", shader.c_str(),
                     mesh.filename().c_str(), o.threads, o.repeat);
-        std::printf("| view | frame | atlas | live ms | baked ms | baked/live | mean error (8-bit steps) | pixels over 8/255 |\n");
-        std::printf("|---|---|---|---|---|---|---|---|\n");
+        bake_md.line("| view | frame | atlas | live ms | baked ms | baked/live | mean error (8-bit steps) | pixels over 8/255 |\n");
+        bake_md.line("|---|---|---|---|---|---|---|---|\n");
         struct View { const char* name; int frame, atlas; };
         for (const View v : {View{"magnified", 1024, 256}, View{"matched", 512, 1024}, View{"minified", 128, 1024}}) {
             AtlasRequest bake;
@@ -122,15 +145,16 @@ int main(int argc, char** argv) {
                 const float e = rgb_error(L, B, i);
                 sum += e, ++n, over8 += e > 8.0f;
             }
-            std::printf("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
+            bake_md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
                         v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, sum / double(n), over8, n);
             write_image(o.out / (std::string("live-") + v.name + ".png"), Image{L.width, L.height, L.rgba});
             write_image(o.out / (std::string("baked-") + v.name + ".png"), Image{B.width, B.height, B.rgba});
         }
 
-        std::printf("\n## Seams: atlas 256^2, frame 512x512, skirts of 0, 2, 4, 8 texels\n\n");
-        std::printf("| skirt | seam pixels reading gutter | seam pixels over 1/255 | over 8/255 | mean error at seams | mean error elsewhere |\n");
-        std::printf("|---|---|---|---|---|---|\n");
+        Table seams_md(o.out / "bake-seams.md");
+        seams_md.line("\n## Seams: atlas 256^2, frame 512x512, skirts of 0, 2, 4, 8 texels\n\n");
+        seams_md.line("| skirt | seam pixels reading gutter | seam pixels over 1/255 | over 8/255 | mean error at seams | mean error elsewhere |\n");
+        seams_md.line("|---|---|---|---|---|---|\n");
         FrameRequest r = frame;
         r.width = r.height = 512;
         Scene live_copy = live;
@@ -159,7 +183,7 @@ int main(int argc, char** argv) {
                     ++n_rest, sum_rest += e;
                 }
             }
-            std::printf("| %d | %zu of %zu | %zu | %zu | %.2f | %.2f |\n", skirt, gutter, n_seam, over1, over8, sum_seam / double(n_seam),
+            seams_md.line("| %d | %zu of %zu | %zu | %zu | %.2f | %.2f |\n", skirt, gutter, n_seam, over1, over8, sum_seam / double(n_seam),
                         sum_rest / double(n_rest));
             write_image(o.out / ("baked-skirt-" + std::to_string(skirt) + ".png"), Image{B.width, B.height, B.rgba});
         }

@@ -29,7 +29,7 @@ double cross(Uv a, Uv b) { return a.x * b.y - a.y * b.x; }
 // Whether two triangles' interiors overlap (separating axes: for two triangles in the plane the
 // six edge normals suffice). Triangles that only touch, along an edge or at a corner, do not:
 // `slack` (in texcoord units, scaled by the axis length) absorbs rounding where they touch.
-bool interiors_overlap(const UvTriangle& a, const UvTriangle& b, double slack) {
+bool overlap_in_uv(const UvTriangle& a, const UvTriangle& b, double slack) {
     for (const UvTriangle* t : {&a, &b}) {
         for (int e = 0; e < 3; ++e) {
             const Uv edge = (*t)[std::size_t((e + 1) % 3)] - (*t)[std::size_t(e)];
@@ -100,7 +100,7 @@ void check_atlas(const Scene& scene) {
                     const Bounds &a = bounds[bin[i]], &b = bounds[bin[j]];
                     if (x != std::max(a.x0, b.x0) || y != std::max(a.y0, b.y0)) continue;
                     const AtlasTriangle &p = triangles[bin[i]], &q = triangles[bin[j]];
-                    if (!interiors_overlap(p.uv, q.uv, kSlack)) continue;
+                    if (!overlap_in_uv(p.uv, q.uv, kSlack)) continue;
                     const Object &op = scene.objects[p.object], &oq = scene.objects[q.object];
                     const Uv c = (p.uv[0] + p.uv[1] + p.uv[2]) / 3.0;
                     throw SceneError(scene.file.string() + ": mesh '" + scene.meshes[op.mesh].name + "' (object '" + op.name +
