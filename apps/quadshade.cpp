@@ -681,23 +681,7 @@ int cmd_bake(const BakeArgs& a) {
                  {"quadshade:skirt", std::to_string(a.skirt)},
                  {"quadshade:derivatives", rule_name(a.derivatives)}},
                 true);
-    // The same meshes, objects and camera, each object drawn with the baked texture.
-    Scene baked = scene;
-    Texture texture;
-    texture.image.file = out.staged(color);
-    texture.image.mime_type = "image/png";
-    // Trilinear: the texture is minified wherever the mesh is smaller on screen than its atlas.
-    // Both renderers build the mip chain on load as glGenerateMipmap does (2x2 box).
-    texture.sampler = Sampler{Filter::Linear, Filter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::ClampToEdge,
-                              Wrap::ClampToEdge};
-    texture.field = "baked " + color;
-    baked.textures = {texture};
-    for (Object& o : baked.objects) {
-        o.shader = "single_texture";
-        o.texture = 0;
-        o.samplers.clear();
-        o.uniforms.clear();
-    }
+    const Scene baked = baked_scene(scene, out.staged(color));
     save_scene(baked, out.staged(output.filename().string()));
     out.commit(output.filename().string());
     std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)\n", a.output.c_str(), a.shader.c_str(),

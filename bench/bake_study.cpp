@@ -56,17 +56,10 @@ Framebuffer timed(Scene& scene, const FrameRequest& request, int repeat, double&
 }
 
 // The scene drawn with its baked atlas, written to `dir` (the texture is read back from there).
-Scene baked_scene(const Scene& live, const Image& atlas, const fs::path& dir, const std::string& name) {
+Scene baked_in(const Scene& live, const Image& atlas, const fs::path& dir, const std::string& name) {
     const fs::path png = dir / (name + ".png");
     write_image(png, atlas, {}, true);
-    Scene s = live;
-    Texture t;
-    t.image.file = png;
-    t.sampler = Sampler{Filter::Linear, Filter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
-    t.field = name;
-    s.textures = {t};
-    for (Object& o : s.objects) o.shader = "single_texture", o.texture = 0, o.samplers.clear(), o.uniforms.clear();
-    return s;
+    return baked_scene(live, png);
 }
 
 // printf to stdout and to a file.
@@ -131,7 +124,7 @@ int main(int argc, char** argv) {
             const auto b0 = Clock::now();
             const Image atlas = bake_atlas(live, bake);
             const double bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - b0).count();
-            Scene baked = baked_scene(live, atlas, o.out, std::string("atlas-") + v.name);
+            Scene baked = baked_in(live, atlas, o.out, std::string("atlas-") + v.name);
             Scene live_copy = live;
             FrameRequest r = frame;
             r.width = r.height = v.frame;
@@ -164,7 +157,7 @@ int main(int argc, char** argv) {
             AtlasRequest bake;
             bake.size = 256, bake.skirt = skirt, bake.frame = frame;
             bake.frame.shader_override = shader;
-            Scene baked = baked_scene(live, bake_atlas(live, bake), o.out, "atlas-skirt-" + std::to_string(skirt));
+            Scene baked = baked_in(live, bake_atlas(live, bake), o.out, "atlas-skirt-" + std::to_string(skirt));
             const Framebuffer B = render_frame(baked, r);
             const std::size_t pixels = std::size_t(512) * 512;
             if (seam.empty()) {  // without skirts: where lookups reach the gutter

@@ -149,6 +149,23 @@ Framebuffer render_atlas_frame(const Scene& scene, const AtlasRequest& request) 
     return render_frame(s, frame);
 }
 
+Scene baked_scene(const Scene& scene, const std::filesystem::path& texture) {
+    Scene s = scene;
+    Texture t;
+    t.image.file = texture;
+    t.image.mime_type = "image/png";
+    t.sampler = Sampler{Filter::Linear, Filter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
+    t.field = "the baked atlas " + texture.filename().string();
+    s.textures = {t};
+    for (Object& o : s.objects) {
+        o.shader = "single_texture";
+        o.texture = 0;
+        o.samplers.clear();
+        o.uniforms.clear();
+    }
+    return s;
+}
+
 Image flip_rows(const Framebuffer& frame) {
     Image image{frame.width, frame.height, std::vector<float>(frame.rgba.size())};
     const std::size_t row = std::size_t(frame.width) * 4;

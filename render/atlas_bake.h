@@ -11,6 +11,7 @@
 // from helper lanes extrapolated past the chart; Derivatives::Analytic (Dual2) gives the exact
 // per-texel partials of the interpolated varyings everywhere, chart edges included.
 
+#include <filesystem>
 #include <string>
 
 #include "render/scene_render.h"
@@ -49,6 +50,13 @@ Framebuffer render_atlas_frame(const Scene& scene, const AtlasRequest& request);
 // The atlas as a texture image: row j holds t in [j / size, (j + 1) / size], the first row
 // t = 0, which is glTF's top of the image (texcoord (0, 0) is the image's top-left).
 Image bake_atlas(const Scene& scene, const AtlasRequest& request);
+
+// `scene` drawn with its baked atlas, the image file `texture` (a PNG of bake_atlas's image): the
+// same meshes, objects and camera, every object drawn by `single_texture` (one texture2D of its
+// baseColorTexture, unlit as the solid textures are) with the atlas sampled trilinear (LINEAR,
+// LINEAR_MIPMAP_LINEAR: the mip chain is built on load as glGenerateMipmap builds it) and clamped
+// to its edge. Other textures, samplers and uniforms are dropped.
+Scene baked_scene(const Scene& scene, const std::filesystem::path& texture);
 
 // A frame's rows in the opposite order: between a frame (top-down) and a texture (t = 0 first).
 Image flip_rows(const Framebuffer& frame);

@@ -70,4 +70,36 @@ TEST_CASE("bake: the atlas of a shader is OSMesa's draw of each triangle at its 
     }
 }
 
+TEST_CASE("bake: the mesh drawn with its baked atlas (trilinear, mipmaps) is OSMesa's render of the baked scene", "[reference][bake]") {
+    // The baked cube as `quadshade bake` writes it, seen minified (mipmaps) and magnified.
+    const auto dir = temp_dir("atlas-baked");
+    const Scene scene = load_scene(kAtlasCube);
+    AtlasRequest req;
+    req.size = 128, req.skirt = 2;
+    req.frame.time = 0.5;
+    req.frame.shader_override = "spots";
+    write_image(dir / "baked-color.png", bake_atlas(scene, req), {}, true);
+    save_scene(baked_scene(scene, dir / "baked-color.png"), dir / "baked.gltf");
+    for (const int size : {61, 301}) {
+        Scene baked = load_scene(dir / "baked.gltf");
+        FrameRequest r;
+        r.width = r.height = size;
+        r.raster = raster_options_as(GlDriver::Llvmpipe);
+        const Framebuffer ours = render_frame(baked, r);
+        const auto out = dir / ("baked-" + std::to_string(size) + ".exr");
+        const std::string cmd = (kBin / "quadshade-reference").string() + " " + (dir / "baked.gltf").string() + " -o " +
+                                out.string() + " --glsl " + QUADSHADE_GLSL_DIR + " --driver llvmpipe --size " +
+                                std::to_string(size) + "x" + std::to_string(size) + " 2> /dev/null";
+        REQUIRE(std::system(cmd.c_str()) == 0);
+        const Image ref = read_image(out);
+        const Counts c = count(ours, ref);
+        INFO("baked cube at " << size << ": covered " << c.covered << ", coverage " << c.coverage_mismatch << ", over 1/255 "
+                              << c.over_1 << ", over 2/255 " << c.over_2);
+        CHECK(c.covered > std::size_t(size * size) / 8);
+        CHECK(c.coverage_mismatch == 0);
+        CHECK(c.over_1 * 1000 <= c.covered);
+        CHECK(c.over_2 == 0);
+    }
+}
+
 }  // namespace qs
