@@ -4,14 +4,11 @@
 // 3 `compare` found differences over its thresholds, a `check` case missed its bar, or a `test`
 // case failed.
 
-#include <stdlib.h>
 #include <unistd.h>
 
 #include <chrono>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -608,41 +605,6 @@ int cmd_bake_volume(const VolumeArgs& a) {
                  a.size, a.shader.c_str(), seconds * 1e3, a.size);
     return 0;
 }
-
-// A set of output files written together: each into a fresh folder beside the targets, then all
-// renamed into place by commit(); nothing of them is left behind when anything fails first.
-class OutputSet {
-public:
-    explicit OutputSet(const fs::path& target) {
-        const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-        std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
-        if (!::mkdtemp(pattern.data())) {
-            throw std::runtime_error(target.string() + ": cannot create a temporary folder beside it: " + std::strerror(errno));
-        }
-        staging_ = pattern;
-        folder_ = folder;
-    }
-    ~OutputSet() {
-        std::error_code ec;
-        if (!staging_.empty()) fs::remove_all(staging_, ec);
-    }
-    OutputSet(const OutputSet&) = delete;
-    OutputSet& operator=(const OutputSet&) = delete;
-    // Where to write the output named `name` (a file name) until commit().
-    fs::path staged(const std::string& name) const { return staging_ / name; }
-    // Renames every staged file into place, `last` last (the file that names the others).
-    void commit(const std::string& last) {
-        std::vector<fs::path> files;
-        for (const fs::directory_entry& e : fs::directory_iterator(staging_)) {
-            if (e.path().filename() != last) files.push_back(e.path());
-        }
-        files.push_back(staging_ / last);
-        for (const fs::path& f : files) fs::rename(f, folder_ / f.filename());
-    }
-
-private:
-    fs::path staging_, folder_;
-};
 
 int cmd_bake(const BakeArgs& a) {
     const fs::path output(a.output);
