@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "render/atlas_skirts.h"
@@ -70,8 +71,17 @@ void check_atlas(const Scene& scene) {
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
             AtlasTriangle at{{}, oi, t / 3};
             for (int k = 0; k < 3; ++k) at.uv[std::size_t(k)] = Uv(mesh.vertices[mesh.indices[t + std::size_t(k)]].texcoord);
-            // A triangle of no area in the atlas covers no texel: nothing to overlap.
-            if (cross(at.uv[1] - at.uv[0], at.uv[2] - at.uv[0]) != 0.0) triangles.push_back(at);
+            if (cross(at.uv[1] - at.uv[0], at.uv[2] - at.uv[0]) != 0.0) {
+                triangles.push_back(at);
+                continue;
+            }
+            // No area in the atlas: no texel would hold its surface, unless it has none either.
+            const glm::vec3 p0 = mesh.vertices[mesh.indices[t]].position, p1 = mesh.vertices[mesh.indices[t + 1]].position,
+                            p2 = mesh.vertices[mesh.indices[t + 2]].position;
+            if (glm::dot(glm::cross(p1 - p0, p2 - p0), glm::cross(p1 - p0, p2 - p0)) > 0.0f) {
+                throw SceneError(where + ": triangle " + std::to_string(t / 3) +
+                                 " has no area in TEXCOORD_0 but has some in POSITION: no texel of the atlas would hold it");
+            }
         }
     }
     // Triangles binned by their bounds on a grid, each pair that shares a cell tested once

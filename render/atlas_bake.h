@@ -31,8 +31,9 @@ struct AtlasRequest {
 };
 
 // Throws SceneError, naming the scene's file and the mesh and object, unless every drawn mesh has
-// TEXCOORD_0 within [0, 1] and no two triangles (of one mesh or of different objects) overlap
-// there with positive area: each texel must belong to one surface point.
+// TEXCOORD_0 within [0, 1], every triangle with an area in POSITION has one in TEXCOORD_0, and no
+// two triangles (of one mesh or of different objects) overlap there with positive area: each
+// texel must belong to one surface point, and each surface point to a texel.
 void check_atlas(const Scene& scene);
 
 // The scene an atlas is drawn from: `scene` with a transparent black clear colour (the gutter

@@ -66,6 +66,11 @@ TEST_CASE("bake: the shipped atlases pass; missing, out-of-range and overlapping
     CHECK(e2.find("overlap in TEXCOORD_0") != std::string::npos);
     CHECK(e2.find("triangle") != std::string::npos);
 
+    // A triangle collapsed to a line in the atlas: its surface would get no texel.
+    Scene collapsed = load_scene(kAtlasCube);
+    collapsed.meshes[0].vertices[2].texcoord = collapsed.meshes[0].vertices[0].texcoord;
+    CHECK(error_of(collapsed).find("triangle 0 has no area in TEXCOORD_0") != std::string::npos);
+
     // One mesh drawn twice bakes every texel twice.
     Scene twice = load_scene(kAtlasSphere);
     twice.objects.push_back(twice.objects[0]);
