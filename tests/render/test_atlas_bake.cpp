@@ -44,7 +44,7 @@ int run(const std::string& cmd, std::string* err = nullptr, const std::filesyste
 
 }  // namespace
 
-TEST_CASE("bake: the shipped atlases pass; missing, out-of-range and overlapping texcoords are refused by name", "[bake]") {
+TEST_CASE("bake: the shipped atlases pass, and missing, out-of-range, collapsed and overlapping texcoords are refused by name", "[bake]") {
     CHECK(error_of(load_scene(kAtlasCube)).empty());
     CHECK(error_of(load_scene(kAtlasSphere)).empty());
 
