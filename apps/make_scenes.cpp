@@ -1,5 +1,7 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture, seed 001's spheres and the fast noise's volume, seed 004's plane and its noise texture, and the conformance scenes (geometry_scenes.h, texture_scenes.h). The
+// plane and its texture, seed 001's spheres and the fast noise's volume, seed 004's plane and its
+// noise texture, the solids, the conformance scenes (geometry_scenes.h, texture_scenes.h) and the
+// meshes with UV atlases for `quadshade bake` (atlas_scenes.h). The
 // outputs are committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
@@ -13,6 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "apps/atlas_scenes.h"
 #include "apps/geometry_scenes.h"
 #include "apps/texture_scenes.h"
 #include "scenes/gltf.h"
@@ -243,7 +246,7 @@ int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
                              "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf, seed-004-plane.gltf,\n"
-                             "solids.gltf (+ .bin), textures/ and conformance/.\n");
+                             "solids.gltf (+ .bin), textures/, conformance/ and bake/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -259,6 +262,7 @@ int main(int argc, char** argv) {
         qs::save_scene(seed_001_spheres(dir), dir / "seed-001-spheres.gltf");
         qs::write_geometry_scenes(dir);
         qs::write_texture_scenes(dir);
+        qs::write_atlas_scenes(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
         return 1;

@@ -22,6 +22,7 @@
 #include "apps/frame_pattern.h"
 #include "apps/golden_suite.h"
 #include "render/gallery.h"
+#include "render/atlas_bake.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/scene_render.h"
@@ -317,6 +318,45 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+}
+
+struct BakeArgs {
+    std::string mesh, shader, output;
+    int size = 1024;
+    std::vector<std::string> maps{"color"};
+    int skirt = 0;
+    std::optional<double> time;
+    std::vector<std::string> uniforms, plugins;
+    Derivatives derivatives = Derivatives::Fine;
+    int threads = 0;
+    bool allow_outside = false;
+};
+
+void add_bake_options(CLI::App& cmd, BakeArgs& a) {
+    cmd.add_option("mesh", a.mesh, "a glTF scene whose meshes have a UV atlas in TEXCOORD_0 (in [0, 1], no overlaps)")
+        ->required()->option_text("MESH.gltf");
+    cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
+        ->required()->option_text("NAME");
+    cmd.add_option("-o,--output", a.output,
+                   "the baked scene: OUT.gltf and OUT.bin, its texture beside them (OUT-color.png), drawn\n"
+                   "with a shader that samples it")
+        ->required()->option_text("OUT.gltf");
+    cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
+    cmd.add_option("--maps", a.maps, "the maps to bake (default color)")->delimiter(',')->option_text("color");
+    cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
+        ->check(CLI::Range(0, kMaxSkirt))->option_text("PIXELS");
+    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
+        ->option_text("NAME=VALUE")->allow_extra_args(false);
+    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
+                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
+                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
+                            "RULE",
+                            "dFdx/dFdy per atlas texel (default fine: quad differences); analytic: exact\n"
+                            "partials of the varyings (Dual2), also across chart edges");
+    add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
 }
 
 // ---- render ---------------------------------------------------------------------------------
@@ -636,6 +676,51 @@ int cmd_gallery(const GalleryArgs& a) {
     return 0;
 }
 
+int cmd_bake(const BakeArgs& a) {
+    const fs::path output(a.output);
+    if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
+    for (const std::string& map : a.maps) {
+        if (map != "color") throw UsageError("--maps: '" + map + "' is not bakeable (color)");
+    }
+    SceneLoadOptions load;
+    load.paths.allow_outside = a.allow_outside;
+    Scene scene = load_scene(a.mesh, load);
+    const std::string stem = output.stem().string();
+    const std::string bin = stem + ".bin", color = stem + "-color.png";
+    check_output(output, scene.inputs, "-o");
+    check_output(output.parent_path() / bin, scene.inputs, "-o (its buffer)");
+    check_output(output.parent_path() / color, scene.inputs, "-o (its texture)");
+    const Program* program = find_program(a.shader);
+    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+
+    AtlasRequest req;
+    req.size = a.size;
+    req.skirt = a.skirt;
+    req.frame.shader_override = a.shader;
+    if (a.time) req.frame.time = *a.time;
+    req.frame.shading.derivatives = a.derivatives;
+    req.frame.shading.threads = a.threads;
+    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
+    const auto t0 = std::chrono::steady_clock::now();
+    const Image atlas = bake_atlas(scene, req);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    OutputSet out(output);
+    write_image(out.staged(color), atlas,
+                {{"quadshade:shader", a.shader},
+                 {"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"},
+                 {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
+                 {"quadshade:skirt", std::to_string(a.skirt)},
+                 {"quadshade:derivatives", rule_name(a.derivatives)}},
+                true);
+    const Scene baked = baked_scene(scene, out.staged(color));
+    save_scene(baked, out.staged(output.filename().string()));
+    out.commit(output.filename().string());
+    std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)\n", a.output.c_str(), a.shader.c_str(),
+                 a.size, a.size, seconds * 1e3, color.c_str());
+    return 0;
+}
+
 int cmd_compare(const CompareArgs& a) {
     std::vector<fs::path> inputs;  // each image's entry and, if it is a link, what it points to
     for (const std::string& image : a.images) {
@@ -754,6 +839,11 @@ int main(int argc, char** argv) {
     CLI::App* gallery_cmd = app.add_subcommand(
         "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (seed)");
     add_gallery_options(*gallery_cmd, gallery);
+    BakeArgs bake;
+    CLI::App* bake_cmd = app.add_subcommand(
+        "bake", "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
+                "mesh drawn with the baked texture");
+    add_bake_options(*bake_cmd, bake);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -772,6 +862,7 @@ int main(int argc, char** argv) {
                                                   : test_cmd->parsed()   ? test.plugins
                                                   : volume_cmd->parsed() ? volume.plugins
                                                   : gallery_cmd->parsed() ? gallery.plugins
+                                                  : bake_cmd->parsed()   ? bake.plugins
                                                                          : shader_plugins;
         for (const std::string& plugin : plugins) load_plugin(plugin);
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
@@ -780,6 +871,7 @@ int main(int argc, char** argv) {
         if (test_cmd->parsed()) return cmd_test(test);
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
         if (gallery_cmd->parsed()) return cmd_gallery(gallery);
+        if (bake_cmd->parsed()) return cmd_bake(bake);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

@@ -10,6 +10,8 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   throughput, frame
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
+  bake, bake-seams
+               STUDY_DIR/bake.md, bake-seams.md                         (quadshade-bench-bake)
   host         this machine and the date
 A block whose input is missing is left as it was, and said so on stderr, so a partial run never
 blanks a table; the prose is written by hand and should be reread when the numbers move.
@@ -165,6 +167,8 @@ def main():
         "throughput": lambda: markdown_file(study, "throughput.md"),
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
         "error": lambda: error_table(study),
+        "bake": lambda: markdown_file(study, "bake.md"),
+        "bake-seams": lambda: markdown_file(study, "bake-seams.md"),
     }
     with open(doc) as f:
         text = f.read()

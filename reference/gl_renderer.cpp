@@ -43,8 +43,8 @@ void check(GLuint object, GLenum status, GetStatus get_status, GetLog get_log, c
     throw std::runtime_error(what + ":\n" + log);
 }
 
-GLuint compile(GLenum stage, const std::filesystem::path& file) {
-    const std::string source = read_glsl(file);
+GLuint compile(GLenum stage, const std::filesystem::path& file, bool atlas = false) {
+    const std::string source = atlas ? atlas_vertex_source(read_glsl(file)) : read_glsl(file);
     GLuint s = glCreateShader(stage);
     const char* text = source.c_str();
     glShaderSource(s, 1, &text, nullptr);
@@ -130,8 +130,8 @@ bool glsl_declares(const std::filesystem::path& glsl_dir, const std::string& sha
            declares_uniform(read_glsl(glsl_dir / (shader + ".vert")), uniform);
 }
 
-GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& name) {
-    GLuint vs = compile(GL_VERTEX_SHADER, glsl_dir / (name + ".vert"));
+GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& name, bool atlas) {
+    GLuint vs = compile(GL_VERTEX_SHADER, glsl_dir / (name + ".vert"), atlas);
     GLuint fs = compile(GL_FRAGMENT_SHADER, glsl_dir / (name + ".frag"));
     GLuint p = glCreateProgram();
     glAttachShader(p, vs);
@@ -184,16 +184,31 @@ GLint gl_enum(Filter f) { return GLint(f); }
 
 }  // namespace
 
-GlPrograms::~GlPrograms() {
-    for (const auto& [name, id] : linked_) glDeleteProgram(id);
+std::string atlas_vertex_source(const std::string& source) {
+    // #version must stay the first line; #extension lines after it may follow the #define.
+    std::size_t body = 0;
+    if (source.starts_with("#version")) {
+        body = source.find('\n');
+        body = body == std::string::npos ? source.size() : body + 1;
+    }
+    return source.substr(0, body) + "#define main qs_user_main\n" + source.substr(body) +
+           "\n#undef main\n"
+           "void main() {\n"
+           "    qs_user_main();\n"
+           "    gl_Position = vec4(gl_MultiTexCoord0.st * 2.0 - 1.0, 0.0, 1.0);\n"
+           "}\n";
 }
 
-unsigned GlPrograms::program(const std::string& shader) {
-    for (const auto& [name, id] : linked_) {
-        if (name == shader) return id;
+GlPrograms::~GlPrograms() {
+    for (const Linked& l : linked_) glDeleteProgram(l.id);
+}
+
+unsigned GlPrograms::program(const std::string& shader, bool atlas) {
+    for (const Linked& l : linked_) {
+        if (l.shader == shader && l.atlas == atlas) return l.id;
     }
-    linked_.emplace_back(shader, link_program(glsl_dir_, shader));
-    return linked_.back().second;
+    linked_.push_back({shader, atlas, link_program(glsl_dir_, shader, atlas)});
+    return linked_.back().id;
 }
 
 GlSceneRenderer::GlSceneRenderer(const Scene& scene, const GlFrameRequest& request, GlContext& context,
@@ -220,7 +235,7 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
             throw std::runtime_error(scene_.file.string() + ": material '" + o.material + "' of '" + o.name +
                                      "' names no shader (extras.shader); pass --shader NAME");
         }
-        const GLuint p = programs.program(name);
+        const GLuint p = programs.program(name, request_.atlas);
         programs_.push_back(p);
         std::vector<Binding> bindings;
         for (const auto& [uniform, dims] : samplers_of(p)) {

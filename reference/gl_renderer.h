@@ -28,7 +28,16 @@ struct GlFrameRequest {
     // --uniform values, replacing the materials' of the same name for every program that has
     // that uniform; one no program has is refused (UniformOptionError).
     std::vector<UniformSetting> uniforms;
+    // Draw each triangle at its TEXCOORD_0 (an atlas bake, as quadshade bake draws it): every
+    // vertex shader's own main() runs, then gl_Position is replaced by the texcoord mapped to
+    // [-1, 1] (atlas_vertex_source).
+    bool atlas = false;
 };
+
+// A vertex shader's GLSL made to draw into a texture atlas: its main() renamed and called by a
+// main() that then sets gl_Position = vec4(gl_MultiTexCoord0.st * 2.0 - 1.0, 0.0, 1.0), so its
+// varyings are its own and texcoord (s, t) lands at window (s W, t H).
+std::string atlas_vertex_source(const std::string& source);
 
 // The programs of one context, each linked once from a folder of exported GLSL (NAME.vert,
 // NAME.frag) and deleted with it: renderers drawing into the same context share them.
@@ -40,12 +49,17 @@ public:
     GlPrograms& operator=(const GlPrograms&) = delete;
     // Throws std::runtime_error with the compiler's log when the GLSL fails, or naming a
     // uniform the reference does not bind.
-    unsigned program(const std::string& shader);
+    unsigned program(const std::string& shader, bool atlas = false);
     const std::filesystem::path& glsl_dir() const { return glsl_dir_; }
 
 private:
     std::filesystem::path glsl_dir_;
-    std::vector<std::pair<std::string, unsigned>> linked_;
+    struct Linked {
+        std::string shader;
+        bool atlas;
+        unsigned id;
+    };
+    std::vector<Linked> linked_;
 };
 
 // Renders a scene's frames into the current context: GLSL compiled and textures uploaded once,

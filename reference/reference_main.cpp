@@ -24,6 +24,7 @@ struct Options {
     qs::GlDriver driver = qs::GlDriver::Llvmpipe;
     std::optional<float> time;
     int threads = 0, repeat = 1;
+    bool atlas = false;
 };
 
 }  // namespace
@@ -51,6 +52,9 @@ int main(int argc, char** argv) {
                    "extras.uniforms (4.0, 1,0.5,0.2 or [1,0.5,0.2]; matrices column by column); repeatable")
         ->take_all()
         ->allow_extra_args(false);
+    app.add_flag("--atlas", o.atlas,
+                 "draw each triangle at its TEXCOORD_0, as `quadshade bake` does: each vertex shader's main() runs, "
+                 "then gl_Position = vec4(gl_MultiTexCoord0.st * 2.0 - 1.0, 0.0, 1.0)");
     app.add_option("--threads", o.threads, "LP_NUM_THREADS for llvmpipe")->check(CLI::Range(0, 1024));
     app.add_option("--repeat", o.repeat, "render N times and report the median frame time (glFinish per frame)")
         ->check(CLI::Range(1, 100000));
@@ -92,7 +96,7 @@ int main(int argc, char** argv) {
         auto context = qs::create_osmesa_context(width, height, o.driver, o.threads);
         const qs::GlContextInfo info = context->info();
         // The first frame includes GLSL compilation (and llvmpipe's JIT): timed separately.
-        qs::GlSceneRenderer gl(scene, {width, height, o.time, o.shader, uniforms}, *context, o.glsl);
+        qs::GlSceneRenderer gl(scene, {width, height, o.time, o.shader, uniforms, o.atlas}, *context, o.glsl);
         const qs::Image img = gl.render();
         const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         const qs::Metadata metadata = {

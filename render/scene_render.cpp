@@ -5,6 +5,7 @@
 
 #include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
+#include "render/atlas_program.h"
 #include "render/textures.h"
 #include "render/uniform_binding.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
@@ -44,6 +45,7 @@ void check_supported(const FrameRequest& request) {
     const ShadingSettings& s = request.shading;
     check_supported(ShadeRequest{s.derivatives, s.precision, s.check_undefined, request.raster.force_general_path});
     if (request.backend != Backend::RayCaster) return;
+    if (request.atlas) throw UnsupportedRequest("an atlas bake is drawn by the rasterizer, not the ray caster");
     // The ray caster's rays meet the surface in double: it has no fill rule, no plane
     // interpolation to fuse, and shades every draw as its needs say.
     if (request.raster != RasterSettings{}) {
@@ -103,6 +105,7 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.vertices = vertices;
         d.indices = mesh.indices;
         d.program = &program;
+        if (request.atlas) d.program = atlas_programs_.emplace_back(std::make_unique<AtlasProgram>(program)).get();
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = float(request.time.value_or(double(scene.time)));
         const Needs& needs = program.info().needs;

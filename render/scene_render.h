@@ -29,6 +29,9 @@ struct FrameRequest {
     // UniformOptionError.
     std::vector<UniformSetting> uniforms;
     Backend backend = Backend::Rasterizer;
+    // Draw each triangle at its TEXCOORD_0 in the frame instead of where the camera sees it: an
+    // atlas bake (render/atlas_program.h). The rasterizer only.
+    bool atlas = false;
     ShadingSettings shading;  // both backends
     RasterSettings raster;    // the rasterizer's only: the ray caster refuses any but the defaults
 
@@ -89,6 +92,7 @@ private:
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> draws_;
+    std::vector<std::unique_ptr<Program>> atlas_programs_;  // per draw with FrameRequest::atlas
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user
     std::vector<std::string> notes_;
     struct Caster;

@@ -884,7 +884,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
         p.mode = TINYGLTF_MODE_TRIANGLES;
         p.attributes["POSITION"] = accessor(append(pos.data(), pos.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
                                             TINYGLTF_TYPE_VEC3, mesh.vertices.size(), mn, mx);
-        p.attributes["TEXCOORD_0"] = accessor(append(st.data(), st.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
+        if (mesh.has_texcoords) p.attributes["TEXCOORD_0"] = accessor(append(st.data(), st.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
                                               TINYGLTF_TYPE_VEC2, mesh.vertices.size());
         p.indices = accessor(append(mesh.indices.data(), mesh.indices.size() * 4),
                              TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());

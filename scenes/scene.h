@@ -36,7 +36,8 @@ struct Mesh {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangles
     // Whether the file gave texture coordinates (TEXCOORD_0). Without them every vertex's are
-    // (0, 0), as GL's gl_MultiTexCoord0 reads without an array bound.
+    // (0, 0), as GL's gl_MultiTexCoord0 reads without an array bound; an atlas bake refuses the
+    // mesh, and quadshade render warns when a shader reads them.
     bool has_texcoords = true;
 };
 

@@ -15,6 +15,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 namespace qs {
 
@@ -166,6 +167,32 @@ void remove_temporaries_on_signals() {
         ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
         std::thread(handle_ending_signals).detach();
     });
+}
+
+OutputSet::OutputSet(const std::filesystem::path& target) {
+    folder_ = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+    std::string name = ".";
+    name += target.filename().string();
+    name += ".XXXXXX";
+    std::string pattern = (folder_ / name).string();
+    if (!::mkdtemp(pattern.data())) {
+        throw std::runtime_error(target.string() + ": cannot create a temporary folder beside it: " + std::strerror(errno));
+    }
+    staging_ = pattern;
+}
+
+OutputSet::~OutputSet() {
+    std::error_code ec;
+    std::filesystem::remove_all(staging_, ec);
+}
+
+void OutputSet::commit(const std::string& last) {
+    std::vector<std::filesystem::path> files;
+    for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(staging_)) {
+        if (e.path().filename() != last) files.push_back(e.path());
+    }
+    files.push_back(staging_ / last);
+    for (const std::filesystem::path& f : files) std::filesystem::rename(f, folder_ / f.filename());
 }
 
 }  // namespace qs

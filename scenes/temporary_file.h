@@ -40,6 +40,27 @@ private:
     int write_error_ = 0;
 };
 
+// A set of outputs written together (a glTF, its buffer, its textures): each is written into a
+// fresh folder beside the targets (".NAME.XXXXXX", created exclusively), and commit() renames them
+// all into place, the file that names the others last. Until then nothing of them is in the
+// targets' folder, and the folder is removed when its owner is destroyed. (A signal leaves it
+// behind: it is hidden and holds only complete or temporary files.)
+class OutputSet {
+public:
+    // Throws std::runtime_error naming `target` when its folder is missing or not writable.
+    explicit OutputSet(const std::filesystem::path& target);
+    ~OutputSet();
+    OutputSet(const OutputSet&) = delete;
+    OutputSet& operator=(const OutputSet&) = delete;
+    // Where to write the output named `name` (a file name) until commit().
+    std::filesystem::path staged(const std::string& name) const { return staging_ / name; }
+    // Renames every staged file into the targets' folder, `last` last.
+    void commit(const std::string& last);
+
+private:
+    std::filesystem::path staging_, folder_;
+};
+
 // On SIGINT, SIGTERM or SIGHUP, removes every live temporary, then ends the process as the
 // signal would have (the default action, raised again). The signals are blocked in the calling
 // thread and handled by a thread of their own: call it first thing in main(), before any other
