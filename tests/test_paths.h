@@ -14,6 +14,8 @@ namespace qs::test {
 inline const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
 inline const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
 inline const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
+// The chapter's sphere alone, in perspective: where solid textures are compared.
+inline const std::filesystem::path kSphere = kSource / "scenes/assets/sphere.gltf";
 inline const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
 // The Table 1.1 plane binding the two textures seed 004's snippets read (tex1, tex4).
 inline const std::filesystem::path kSeed004Plane = kSource / "scenes/assets/seed-004-plane.gltf";
