@@ -251,8 +251,8 @@ struct Checker {
         Scene scene = scenes[c.scene];
         FrameRequest r;
         r.shader_override = shader;
-        r.raster = raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe);
-        r.raster.threads = threads;
+        r.set(raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe));
+        r.shading.threads = threads;
         const Framebuffer fb = render_frame(scene, r);
         const Image ours{fb.width, fb.height, fb.rgba};
         report.width = fb.width, report.height = fb.height;

@@ -106,7 +106,7 @@ SuiteCase read_case(const Reader& in, const json& c, const std::string& field, c
     }
     if (c.contains("time")) r.time = in.number(c["time"], field + ".time", -1e9, 1e9);
     if (c.contains("derivatives")) {
-        r.raster.derivatives = in.choice<Derivatives>(c["derivatives"], field + ".derivatives",
+        r.shading.derivatives = in.choice<Derivatives>(c["derivatives"], field + ".derivatives",
                                                       {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
                                                        {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}});
     }
@@ -114,7 +114,7 @@ SuiteCase read_case(const Reader& in, const json& c, const std::string& field, c
         r.backend = in.choice<Backend>(c["backend"], field + ".backend", {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}});
     }
     if (c.contains("precision")) {
-        r.raster.precision = in.choice<Precision>(c["precision"], field + ".precision", {{"float", Precision::Float}, {"double", Precision::Double}});
+        r.shading.precision = in.choice<Precision>(c["precision"], field + ".precision", {{"float", Precision::Float}, {"double", Precision::Double}});
     }
     if (c.contains("uniforms")) {
         const json& u = c["uniforms"];
@@ -164,7 +164,7 @@ CaseResult run_case(const SuiteCase& c, bool update, int threads) {
     try {
         Scene scene = load_scene(c.scene);
         FrameRequest request = c.request;
-        request.raster.threads = threads;
+        request.shading.threads = threads;
         const Framebuffer fb = render_frame(scene, request);
         const Image actual{fb.width, fb.height, fb.rgba};
         r.pixels = (long long)fb.width * fb.height;

@@ -146,7 +146,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
         ->option_text("NAME=VALUE")->allow_extra_args(false);
     add_choice<Backend>(cmd, "--backend", r.backend, {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}}, "B",
                         "raster (default) | raycast (Embree, 2x2 ray quads)");
-    add_choice<Derivatives>(cmd, "--derivatives", r.raster.derivatives,
+    add_choice<Derivatives>(cmd, "--derivatives", r.shading.derivatives,
                             {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
                              {"coarse", Derivatives::CoarseLower}, {"coarse-upper", Derivatives::CoarseUpper},
                              {"analytic", Derivatives::Analytic}},
@@ -154,9 +154,9 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                             "fine (llvmpipe, default) | coarse-lower (softpipe) |\n"
                             "coarse-upper (first pixel of a top-down quad) | analytic (Dual2;\n"
                             "with raycast: ray differentials)");
-    add_choice<Precision>(cmd, "--precision", r.raster.precision, {{"float", Precision::Float}, {"double", Precision::Double}},
+    add_choice<Precision>(cmd, "--precision", r.shading.precision, {{"float", Precision::Float}, {"double", Precision::Double}},
                           "P", "float (default) | double");
-    add_choice<QuadPairing>(cmd, "--quad-pairing", r.raster.pairing,
+    add_choice<QuadPairing>(cmd, "--quad-pairing", r.shading.pairing,
                             {{"top-down", QuadPairing::TopDown}, {"bottom-up", QuadPairing::BottomUp}}, "P",
                             "top-down (OSMesa's buffer, default) | bottom-up (an FBO)");
     add_choice<FillRule>(cmd, "--fill-rule", r.raster.fill_rule,
@@ -178,7 +178,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "pow, inversesqrt, atan); shades slower, same colours; float quads or\n"
                    "pixels only (not with analytic derivatives or double precision)")
         ->option_text("FILE");
-    cmd.add_option("--threads", r.raster.threads, "worker threads (default: all cores)")
+    cmd.add_option("--threads", r.shading.threads, "worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024))->option_text("N");
     cmd.add_flag("--allow-outside-paths", a.load.paths.allow_outside,
                  "let the scene read files outside its own folder (absolute paths,\n"
@@ -321,8 +321,8 @@ void refuse_unsupported(const RenderArgs& a) {
     try {
         check_supported(req);
     } catch (const UnsupportedRequest& e) {
-        throw UsageError("--derivatives " + std::string(rule_name(req.raster.derivatives)) + " --precision " +
-                         precision_name(req.raster.precision) + (a.mask_output.empty() ? "" : " --undefined-mask") +
+        throw UsageError("--derivatives " + std::string(rule_name(req.shading.derivatives)) + " --precision " +
+                         precision_name(req.shading.precision) + (a.mask_output.empty() ? "" : " --undefined-mask") +
                          ": " + e.what());
     }
 }
@@ -331,7 +331,7 @@ void refuse_unsupported(const RenderArgs& a) {
 // image says how it was made (the undefined-case mask, threads and bands change no pixel).
 Metadata render_metadata(const RenderArgs& a, double time) {
     const FrameRequest& req = a.request;
-    const RasterOptions& r = req.raster;
+    const RasterOptions r = req.raster_options();
     const bool raster = req.backend == Backend::Rasterizer;
     Metadata m = {{"quadshade:scene", a.scene},
                   {"quadshade:time", std::to_string(time)},
@@ -364,7 +364,7 @@ std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs
     const int w = renderer.width();
     MemoryPlanInput in;
     in.height = renderer.height();
-    in.pairing = a.request.raster.pairing;
+    in.pairing = a.request.shading.pairing;
     in.limit = limit;
     in.can_band = writes_in_bands(a.output) && (a.mask_output.empty() || writes_in_bands(a.mask_output));
     in.bytes_for_rows = [&](int rows) {
@@ -438,8 +438,8 @@ void print_progress(int done, int total) {
 int cmd_render(RenderArgs& a) {
     FrameRequest& req = a.request;
     if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
-    req.raster.check_undefined = !a.mask_output.empty();
-    if (req.raster.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
+    req.shading.check_undefined = !a.mask_output.empty();
+    if (req.shading.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
         throw UsageError("--undefined-mask: the same file as -o");
     }
     refuse_unsupported(a);
@@ -464,6 +464,7 @@ int cmd_render(RenderArgs& a) {
         if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");
     }
     SceneRenderer renderer(scene, req);
+    for (const std::string& note : renderer.notes()) std::fprintf(stderr, "quadshade: warning: %s\n", note.c_str());
     const std::vector<RowBand> bands = plan_render(renderer, a, limit);
 
     const bool progress = last > first && ::isatty(STDERR_FILENO);
@@ -537,8 +538,8 @@ int cmd_bake_volume(const VolumeArgs& a) {
     VolumeRequest req;
     req.shader = a.shader, req.size = a.size;
     req.frame.time = a.time.value_or(0.0);
-    req.frame.raster.derivatives = a.derivatives;
-    req.frame.raster.threads = a.threads;
+    req.frame.shading.derivatives = a.derivatives;
+    req.frame.shading.threads = a.threads;
     for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
     std::optional<Scene> scene;
     if (!a.scene.empty()) {

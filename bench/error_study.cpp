@@ -222,9 +222,9 @@ private:
         r.width = scene.width * k, r.height = scene.height * k;
         r.shader_override = m.shader;
         r.backend = m.backend;
-        r.raster.derivatives = m.rule;
-        r.raster.precision = m.precision;
-        r.raster.threads = o_.threads;
+        r.shading.derivatives = m.rule;
+        r.shading.precision = m.precision;
+        r.shading.threads = o_.threads;
         return r;
     }
 

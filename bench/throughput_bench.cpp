@@ -94,8 +94,8 @@ std::string figure_frames(int threads, int repeat, const std::filesystem::path& 
     for (const Mode& m : modes) {
         qs::FrameRequest req;
         req.backend = m.backend;
-        req.raster.derivatives = m.rule;
-        req.raster.threads = threads;
+        req.shading.derivatives = m.rule;
+        req.shading.threads = threads;
         const auto s0 = Clock::now();
         qs::SceneRenderer renderer(scene, req);
         const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
@@ -168,7 +168,7 @@ int main(int argc, char** argv) {
                 qs::FrameRequest req;
                 req.width = req.height = size;
                 req.shader_override = row.shader;
-                req.raster.threads = threads;
+                req.shading.threads = threads;
                 qs::Framebuffer fb;
                 qs::SceneRenderer renderer(scene, req);
                 const Stats q = time_frames(repeat, [&] { renderer.render_into(fb, std::nullopt); });

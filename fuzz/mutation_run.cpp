@@ -132,11 +132,11 @@ std::vector<std::string> shaders() {
         qs::FrameRequest r;
         r.width = 24, r.height = 17;
         r.shader_override = shader;
-        r.raster.threads = 2;
+        r.shading.threads = 2;
         qs::render_frame(s, r);
 #if defined(QUADSHADE_HAS_RAYCAST)
         r.backend = qs::Backend::RayCaster;
-        r.raster.pairing = qs::QuadPairing::BottomUp;
+        r.shading.pairing = qs::QuadPairing::BottomUp;
         qs::render_frame(s, r);
 #endif
     } catch (const std::exception& e) {

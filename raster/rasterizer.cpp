@@ -14,12 +14,14 @@
 #include <vector>
 
 #include "core/block_layout.h"
+#include "raster/block_rows.h"
 #include "core/float_environment.h"
 #include "core/lane_batch.h"
 #include "core/lanes16.h"
 #include "core/parallel.h"
 #include "core/prepared_draw.h"
 #include "core/tile_loop.h"
+#include "core/vertex_stage.h"
 #include "raster/clipper.h"
 #include "raster/depth_buffer.h"
 #include "raster/triangle_setup.h"
@@ -465,15 +467,11 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     const FlushDenormals ftz;
     for (std::size_t di = 0; di < prepared.size(); ++di) {
         const DrawCall& call = *prepared[di].call;
-        std::vector<ClipVertex> verts(call.vertices.size());
-        parallel_chunks<std::size_t>(0, verts.size(), 256, [&](const auto& r) {
-            const FlushDenormals vertex_ftz;
-            for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                VertexOut out;
-                call.program->vertex(call.vertices[i], call.uniforms, out);
-                verts[i] = {out.clip, viewport.window(out.clip, options.fused_viewport), out.varyings};
-            }
-        });
+        const std::vector<VertexOut> outs = run_vertex_stage(call);
+        std::vector<ClipVertex> verts(outs.size());
+        for (std::size_t i = 0; i < outs.size(); ++i) {
+            verts[i] = {outs[i].clip, viewport.window(outs[i].clip, options.fused_viewport), outs[i].varyings};
+        }
         std::vector<std::array<ClipVertex, 3>> clipped;
         for (std::size_t i = 0; i + 2 < call.indices.size(); i += 3) {
             ++stats.triangles_in;

@@ -17,6 +17,7 @@
 #include "core/draw_call.h"
 #include "core/framebuffer.h"
 #include "core/render_stats.h"
+#include "core/shading_settings.h"
 #include "core/tile_grid.h"
 #include "raster/edge_function.h"
 #include "raster/plane_equation.h"
@@ -24,10 +25,8 @@
 
 namespace qs {
 
-struct RasterOptions {
-    Derivatives derivatives = Derivatives::Fine;  // for shaders that take derivatives
-    Precision precision = Precision::Float;
-    QuadPairing pairing = QuadPairing::TopDown;
+// The rasterizer's own settings, beside the shading ones both backends share.
+struct RasterSettings {
     FillRule fill_rule = FillRule::LeftBottom;
     // Evaluate attribute planes with fused multiply-adds (llvmpipe on FMA hosts) or separately
     // rounded ones (softpipe). See plane_equation.h.
@@ -40,11 +39,10 @@ struct RasterOptions {
     // nothing (depth_buffer.h). For measuring what specialisation saves, and for checking that it
     // changes nothing.
     bool force_general_path = false;
-    // Fill Framebuffer::undefined: shade with Checked numbers (float only; not with Analytic
-    // derivatives or Double precision: shade_choice.h). Same colours, slower.
-    bool check_undefined = false;
-    int threads = 0;  // 0: all cores
+    bool operator==(const RasterSettings&) const = default;
 };
+
+struct RasterOptions : ShadingSettings, RasterSettings {};
 
 // Renders draws into a width x height framebuffer cleared to `clear`.
 // Throws std::invalid_argument for absurd sizes or a draw without a program, UnsupportedRequest

@@ -20,6 +20,7 @@
 #include "core/parallel.h"
 #include "core/prepared_draw.h"
 #include "core/tile_loop.h"
+#include "core/vertex_stage.h"
 #include "raycast/embree_scene.h"
 
 namespace qs {
@@ -310,17 +311,9 @@ private:
     ColorBatch out_;
 };
 
-// Runs every draw's vertex stage into meshes[i].out (in parallel over vertices).
+// Runs every draw's vertex stage into meshes[i].out.
 void run_vertex_stages(std::span<const DrawCall> draws, std::vector<Mesh>& meshes) {
-    for (std::size_t i = 0; i < draws.size(); ++i) {
-        const DrawCall& call = draws[i];
-        if (!call.program) throw std::invalid_argument("draw call without a program");
-        Mesh& m = meshes[i];
-        m.out.resize(call.vertices.size());
-        parallel_chunks<std::size_t>(0, m.out.size(), 256, [&](const auto& r) {
-            for (std::size_t v = r.begin(); v != r.end(); ++v) call.program->vertex(call.vertices[v], call.uniforms, m.out[v]);
-        });
-    }
+    for (std::size_t i = 0; i < draws.size(); ++i) meshes[i].out = run_vertex_stage(draws[i]);
 }
 
 }  // namespace
@@ -398,7 +391,7 @@ RayCaster::~RayCaster() = default;
 double RayCaster::build_seconds() const { return impl_->build_seconds; }
 
 void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                            const RayCastOptions& options, RenderStats* stats_out, RowBand band) {
+                            const ShadingSettings& options, RenderStats* stats_out, RowBand band) {
     Impl& im = *impl_;
     check_image_size(width, height);
     band = checked_band(band, height, options.pairing);

@@ -25,17 +25,10 @@
 #include "core/draw_call.h"
 #include "core/framebuffer.h"
 #include "core/render_stats.h"
+#include "core/shading_settings.h"
 #include "core/tile_grid.h"
 
 namespace qs {
-
-struct RayCastOptions {
-    Derivatives derivatives = Derivatives::Fine;  // a quad rule, or Analytic: ray differentials
-    Precision precision = Precision::Float;
-    QuadPairing pairing = QuadPairing::TopDown;
-    bool check_undefined = false;  // fill Framebuffer::undefined, as the rasterizer's
-    int threads = 0;  // 0: all cores
-};
 
 class RayCaster {
 public:
@@ -51,7 +44,7 @@ public:
     // time) into a width x height framebuffer cleared to `clear`, or only the rows of `band`
     // (core/tile_grid.h). Writes colour only: visibility is the closest hit, no depth buffer.
     void render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                     const RayCastOptions& options, RenderStats* stats = nullptr, RowBand band = {});
+                     const ShadingSettings& settings, RenderStats* stats = nullptr, RowBand band = {});
 
     double build_seconds() const;  // time spent building BVHs, in total
 

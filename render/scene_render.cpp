@@ -1,5 +1,6 @@
 #include "render/scene_render.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "raster/triangle_setup.h"
@@ -30,14 +31,12 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
 }
 
 void check_supported(const FrameRequest& request) {
-    const RasterOptions& r = request.raster;
-    check_supported(ShadeRequest{r.derivatives, r.precision, r.check_undefined, r.force_general_path});
+    const ShadingSettings& s = request.shading;
+    check_supported(ShadeRequest{s.derivatives, s.precision, s.check_undefined, request.raster.force_general_path});
     if (request.backend != Backend::RayCaster) return;
     // The ray caster's rays meet the surface in double: it has no fill rule, no plane
     // interpolation to fuse, and shades every draw as its needs say.
-    const RasterOptions defaults;
-    if (r.fill_rule != defaults.fill_rule || r.fused_interpolation != defaults.fused_interpolation ||
-        r.force_general_path) {
+    if (request.raster != RasterSettings{}) {
         throw UnsupportedRequest("the ray caster has no fill rule, plane interpolation or general path: those are the "
                                  "rasterizer's settings");
     }
@@ -97,6 +96,12 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
         d.uniforms.time = float(request.time.value_or(double(scene.time)));
         const Needs& needs = program.info().needs;
+        if (needs.coordinates == Coordinates::Texcoord2D && !mesh.has_texcoords) {
+            const std::string note = scene.file.string() + ": mesh '" + mesh.name + "' has no TEXCOORD_0: shader '" +
+                                     std::string(program.info().name) +
+                                     "' reads texture coordinates, (0, 0) at every vertex (as in GL)";
+            if (std::find(notes_.begin(), notes_.end(), note) == notes_.end()) notes_.push_back(note);
+        }
         if (needs.texture) {
             d.uniforms.teximage = static_cast<const glsl::sampler2D*>(&texture_for(o, program, "teximage", 2));
             d.texture_lod = d.uniforms.teximage->needs_lod();
@@ -155,7 +160,7 @@ std::uint64_t SceneRenderer::frame_bytes(int rows) const {
         triangles += d.indices.size() / 3;
     }
     const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(rows);
-    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (request_.raster.check_undefined ? 1 : 0);
+    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (request_.shading.check_undefined ? 1 : 0);
     // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
     // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
     constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
@@ -170,17 +175,15 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ren
     }
 #if defined(QUADSHADE_HAS_RAYCAST)
     if (caster_) {
-        const RasterOptions& r = request_.raster;
         try {
-            caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_,
-                                        {r.derivatives, r.precision, r.pairing, r.check_undefined, r.threads}, stats, band);
+            caster_->caster.render_into(fb, width_, height_, scene_.clear_color, draws_, request_.shading, stats, band);
         } catch (const RayCastError& e) {
             throw SceneError(scene_.file.string() + ": " + e.what());
         }
         return;
     }
 #endif
-    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster, stats, band);
+    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster_options(), stats, band);
 }
 
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats) {

@@ -29,9 +29,14 @@ struct FrameRequest {
     // UniformOptionError.
     std::vector<UniformSetting> uniforms;
     Backend backend = Backend::Rasterizer;
-    // Derivative rule, precision, quad pairing and threads apply to both backends; fill rule,
-    // interpolation and the general path to the rasterizer only.
-    RasterOptions raster;
+    ShadingSettings shading;  // both backends
+    RasterSettings raster;    // the rasterizer's only: the ray caster refuses any but the defaults
+
+    RasterOptions raster_options() const { return {shading, raster}; }
+    void set(const RasterOptions& options) {
+        shading = options;
+        raster = options;
+    }
 };
 
 // Throws UnsupportedRequest (shading/shade_choice.h) for a request no backend honours as asked:
@@ -65,6 +70,9 @@ public:
     // a draw tests it) and undefined-case mask, and the vertex stage's and triangle setup's
     // working memory. Textures are loaded (and counted by the caller) already.
     std::uint64_t frame_bytes(int rows) const;
+    // What the scene asks that renders, but probably not as its author meant (a shader reading
+    // texture coordinates on a mesh without them), one line each, for the command line to warn.
+    const std::vector<std::string>& notes() const { return notes_; }
 
 private:
     // The texture an object binds to `uniform` (teximage or one of the program's Needs::samplers),
@@ -78,6 +86,7 @@ private:
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> draws_;
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user
+    std::vector<std::string> notes_;
     struct Caster;
     std::unique_ptr<Caster> caster_;
 };

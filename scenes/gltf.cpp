@@ -251,6 +251,7 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
         }
         mesh.vertices[i] = {{xyz[0], xyz[1], xyz[2]}, {0.0f, 0.0f}};
     }
+    mesh.has_texcoords = p.attributes.count("TEXCOORD_0") > 0;
     if (auto tc = p.attributes.find("TEXCOORD_0"); tc != p.attributes.end()) {
         const AccessorData tv = read_accessor(m, tc->second, file, field + ".attributes.TEXCOORD_0", TINYGLTF_TYPE_VEC2,
                                               {TINYGLTF_COMPONENT_TYPE_FLOAT}, limits::kVertices);

@@ -35,6 +35,9 @@ struct Mesh {
     std::string name;
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;  // triangles
+    // Whether the file gave texture coordinates (TEXCOORD_0). Without them every vertex's are
+    // (0, 0), as GL's gl_MultiTexCoord0 reads without an array bound.
+    bool has_texcoords = true;
 };
 
 struct Camera {

@@ -44,7 +44,9 @@ struct ShadeMode {
     bool check_undefined = false;
 };
 
-// The pattern's coordinate space: what the vertex stage feeds the fragment stage.
+// The pattern's coordinate space: what the vertex stage feeds the fragment stage. None exactly
+// when it hands over no varying (ProgramOf checks); `quadshade render` warns when a Texcoord2D
+// shader draws a mesh without texture coordinates, and `quadshade shaders` lists it.
 enum class Coordinates {
     None,        // window position only (gl_FragCoord)
     Texcoord2D,  // st from TEXCOORD_0

@@ -140,6 +140,8 @@ class ProgramOf final : public Program {
     static constexpr ShaderInfo kInfo = program_detail::completed_info<Shader>();
     static constexpr Needs kNeeds = kInfo.needs;
     static_assert(kNeeds.varyings <= kMaxVaryings, "a vertex stage writes at most kMaxVaryings floats");
+    static_assert((kNeeds.coordinates == Coordinates::None) == (kNeeds.varyings == 0),
+                  "Needs::coordinates: None exactly when the vertex stage hands the fragment stage no varying");
 
 public:
     const ShaderInfo& info() const override { return kInfo; }

@@ -31,7 +31,7 @@ struct PassThrough {
 
 // Writes (1, 1, 1, 1): coverage.
 struct Flat {
-    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::None, .derivatives = false}, {}, {}};
+    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>&, const Uniforms&) { return vec4<F>(1.0f); }

@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "core/block_layout.h"
+#include "raster/block_rows.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"
@@ -22,7 +22,7 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::None, .derivatives = true, .frag_coord = true}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .frag_coord = true}, {}, {}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -34,7 +34,7 @@ const ProgramOf<SquareY> kSquareY;
 
 // The same shader not saying that it reads gl_FragCoord.
 struct UndeclaredSquareY : SquareY {
-    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::None, .derivatives = true}, {}, {}};
+    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true}, {}, {}};
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
@@ -335,7 +335,7 @@ TEST_CASE("the Figure 1.1 frame is bit-identical on 1 and 2 threads", "[raster][
     Scene scene = load_scene(std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/figure-1.1.gltf");
     FrameRequest one, two;
     one.width = two.width = 316, one.height = two.height = 100;
-    one.raster.threads = 1, two.raster.threads = 2;
+    one.shading.threads = 1, two.shading.threads = 2;
     const Framebuffer a = render_frame(scene, one), b = render_frame(scene, two);
     REQUIRE(a.rgba.size() == b.rgba.size());
     CHECK(std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)) == 0);

@@ -24,8 +24,8 @@ Framebuffer render(Scene& scene, Backend backend, Derivatives rule, const std::s
     FrameRequest r;
     r.backend = backend;
     r.shader_override = shader;
-    r.raster.derivatives = rule;
-    r.raster.threads = threads;
+    r.shading.derivatives = rule;
+    r.shading.threads = threads;
     return render_frame(scene, r);
 }
 
@@ -228,11 +228,11 @@ TEST_CASE("ray caster: bit-identical for 1 and 2 threads, BVH built once for man
     FrameRequest req;
     req.backend = Backend::RayCaster;
     req.width = 317, req.height = 101;  // odd: quads stick out of the image
-    req.raster.threads = 1;
+    req.shading.threads = 1;
     Framebuffer one, two;
     SceneRenderer single(scene, req);
     single.render_into(one, 0.5f);
-    req.raster.threads = 2;
+    req.shading.threads = 2;
     SceneRenderer dual(scene, req);
     dual.render_into(two, 0.5f);
     CHECK(one.rgba == two.rgba);

@@ -125,7 +125,7 @@ void check_scene(const SceneCase& sc) {
         FrameRequest r;
         r.width = width, r.height = height;
         r.shader_override = shader;
-        r.raster = raster_options_as(kDriver);
+        r.set(raster_options_as(kDriver));
         const Framebuffer q = render_frame(scene, r);
         const Counts n = count(q, ref);
         csv << sc.name << "," << shader << "," << kDriverName << "," << width << "," << height << "," << n.covered << ","
@@ -168,7 +168,7 @@ TEST_CASE("every conformance scene's st is llvmpipe's bit for bit: clipped, back
             GlSceneRenderer(reference_scene, {scene.width, scene.height, {}, "pattern_s", {}}, *context, QUADSHADE_GLSL_DIR).render();
         FrameRequest r;
         r.shader_override = "pattern_s";
-        r.raster = raster_options_as(kDriver);
+        r.set(raster_options_as(kDriver));
         const Framebuffer q = render_frame(scene, r);
         INFO(sc.name);
         CHECK(count(q, ref).covered > q.rgba.size() / 4 / 20);

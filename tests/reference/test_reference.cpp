@@ -160,7 +160,7 @@ Framebuffer ours(const Case& c, Derivatives rule, int width, int height, std::ve
     r.width = width, r.height = height;
     r.uniforms = std::move(uniforms);
     r.shader_override = c.shader;
-    r.raster = raster_options_as(rule == Derivatives::CoarseLower ? GlDriver::Softpipe : GlDriver::Llvmpipe);
+    r.set(raster_options_as(rule == Derivatives::CoarseLower ? GlDriver::Softpipe : GlDriver::Llvmpipe));
     return render_frame(scene, r);
 }
 
@@ -701,7 +701,7 @@ TEST_CASE("bake-volume: every slice of a baked volume is OSMesa's render of that
         VolumeRequest req;
         req.shader = shader, req.size = n;
         req.frame.time = 0.5;
-        req.frame.raster = raster_options_as(GlDriver::Llvmpipe);
+        req.frame.set(raster_options_as(GlDriver::Llvmpipe));
         const Image volume = bake_volume(req);
         REQUIRE(volume.width == n);
         REQUIRE(volume.height == n * n);

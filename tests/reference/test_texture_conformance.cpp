@@ -86,7 +86,7 @@ private:
 Framebuffer ours(Scene& scene, const std::string& shader) {
     FrameRequest r;
     r.shader_override = shader;
-    r.raster = raster_options_as(kDriver);
+    r.set(raster_options_as(kDriver));
     return render_frame(scene, r);
 }
 

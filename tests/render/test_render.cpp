@@ -59,8 +59,8 @@ TEST_CASE("row bands: every band holds exactly the whole frame's pixels, on both
                 r.width = c.width, r.height = c.height;
                 r.shader_override = c.shader;
                 r.backend = backend;
-                r.raster.pairing = pairing;
-                r.raster.check_undefined = true;
+                r.shading.pairing = pairing;
+                r.shading.check_undefined = true;
                 SceneRenderer renderer(*c.scene, r);
                 Framebuffer whole, band;
                 renderer.render_into(whole, 0.25);
@@ -96,7 +96,7 @@ TEST_CASE("images are bit-identical for 1, 2 and 7 threads and across runs, on b
             r.shader_override = scene == &plane ? "worley_tiles" : "perlin";
             std::vector<Framebuffer> frames;
             for (int threads : {1, 2, 7, 7, 1}) {
-                r.raster.threads = threads;
+                r.shading.threads = threads;
                 frames.push_back(render_frame(*scene, r));
             }
             for (std::size_t i = 1; i < frames.size(); ++i) {
@@ -256,6 +256,43 @@ TEST_CASE("a shader that declares no time draws the same image at every time, so
     }
     // flow_noise reads time: every frame is rendered.
     if (find_program("flow_noise")) CHECK(run("flow_noise", "moving_%d.png").find("rendered once") == std::string::npos);
+}
+
+
+TEST_CASE("a shader reading texture coordinates on a mesh without TEXCOORD_0 draws as GL does, with a warning",
+          "[render][coordinates]") {
+    // The Table 1.1 plane without its TEXCOORD_0 attribute.
+    const auto dir = temp_dir("no-texcoords");
+    std::ifstream in(kPlane);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    const std::string attributes = "\"POSITION\": 0,\n            \"TEXCOORD_0\": 1";
+    REQUIRE(text.find(attributes) != std::string::npos);
+    text.replace(text.find(attributes), attributes.size(), "\"POSITION\": 0");
+    std::ofstream(dir / "plane.gltf") << text;
+    std::filesystem::copy_file(kPlane.parent_path() / "table-1.1-plane.bin", dir / "table-1.1-plane.bin");
+    std::filesystem::copy(kPlane.parent_path() / "textures", dir / "textures", std::filesystem::copy_options::recursive);
+
+    Scene with = load_scene(kPlane), without = load_scene(dir / "plane.gltf");
+    CHECK(with.meshes[0].has_texcoords);
+    CHECK_FALSE(without.meshes[0].has_texcoords);
+    FrameRequest r;
+    r.width = r.height = 16;
+    r.shader_override = "dots";  // reads st
+    CHECK(SceneRenderer(with, r).notes().empty());
+    const SceneRenderer dots(without, r);
+    REQUIRE(dots.notes().size() == 1);
+    CHECK(dots.notes()[0].find("has no TEXCOORD_0: shader 'dots' reads texture coordinates") != std::string::npos);
+    r.shader_override = "position_derivative_probe";  // reads the object position
+    CHECK(SceneRenderer(without, r).notes().empty());
+
+    // The command line renders it (st = (0, 0) everywhere, as in GL) and says why it looks so.
+    const std::string cmd = (kBin / "quadshade").string() + " render " + (dir / "plane.gltf").string() +
+                            " --shader dots --size 16x16 -o " + (dir / "dots.png").string() + " 2> " + (dir / "err.txt").string();
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    std::ifstream err(dir / "err.txt");
+    const std::string message((std::istreambuf_iterator<char>(err)), {});
+    CHECK(message.find("quadshade: warning: ") != std::string::npos);
+    CHECK(message.find("plane.gltf: mesh '") != std::string::npos);
 }
 
 }  // namespace qs

@@ -38,12 +38,12 @@ TEST_CASE("sanitized: every shader of this build, both backends, every rule and 
                         r.width = 37, r.height = 80;  // two bands of 64 rows
                         r.shader_override = std::string(p->info().name);
                         r.backend = backend;
-                        r.raster.derivatives = rule;
-                        r.raster.precision = precision;
-                        r.raster.pairing = rule == Derivatives::CoarseLower ? QuadPairing::BottomUp : QuadPairing::TopDown;
-                        r.raster.check_undefined = rule != Derivatives::Analytic && precision == Precision::Float;
+                        r.shading.derivatives = rule;
+                        r.shading.precision = precision;
+                        r.shading.pairing = rule == Derivatives::CoarseLower ? QuadPairing::BottomUp : QuadPairing::TopDown;
+                        r.shading.check_undefined = rule != Derivatives::Analytic && precision == Precision::Float;
                         try {  // combinations no instantiation honours are refused (tested elsewhere)
-                            check_supported({rule, precision, r.raster.check_undefined});
+                            check_supported({rule, precision, r.shading.check_undefined});
                         } catch (const UnsupportedRequest&) {
                             continue;
                         }
@@ -51,7 +51,7 @@ TEST_CASE("sanitized: every shader of this build, both backends, every rule and 
                         Framebuffer whole, band;
                         renderer.render_into(whole, 0.5);
                         if (rule != Derivatives::Fine) continue;
-                        for (const RowBand& b : image_bands(r.height, r.raster.pairing, 64)) {
+                        for (const RowBand& b : image_bands(r.height, r.shading.pairing, 64)) {
                             renderer.render_into(band, 0.5, nullptr, b);
                             CHECK(std::memcmp(band.rgba.data(), whole.pixel(0, b.begin), band.rgba.size() * sizeof(float)) == 0);
                         }

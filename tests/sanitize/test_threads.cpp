@@ -26,12 +26,12 @@ TEST_CASE("threads: renders on 1 to 7 threads are race-free and bit-identical, b
                 r.width = 150, r.height = 131;
                 r.shader_override = shader;
                 r.backend = backend;
-                r.raster.check_undefined = true;
-                r.raster.threads = 1;
+                r.shading.check_undefined = true;
+                r.shading.threads = 1;
                 Framebuffer one;
                 SceneRenderer(*scene, r).render_into(one, 0.0);
                 for (int threads : {2, 4, 7}) {
-                    r.raster.threads = threads;
+                    r.shading.threads = threads;
                     SceneRenderer renderer(*scene, r);
                     Framebuffer fb;
                     for (int frame = 0; frame < 3; ++frame) {
@@ -39,7 +39,7 @@ TEST_CASE("threads: renders on 1 to 7 threads are race-free and bit-identical, b
                         CHECK(std::memcmp(fb.rgba.data(), one.rgba.data(), fb.rgba.size() * sizeof(float)) == 0);
                         CHECK(fb.undefined == one.undefined);
                     }
-                    for (const RowBand& b : image_bands(r.height, r.raster.pairing, 64)) {
+                    for (const RowBand& b : image_bands(r.height, r.shading.pairing, 64)) {
                         renderer.render_into(fb, 0.0, nullptr, b);
                         CHECK(std::memcmp(fb.rgba.data(), one.pixel(0, b.begin), fb.rgba.size() * sizeof(float)) == 0);
                     }

@@ -670,7 +670,7 @@ Framebuffer render_checked(Scene& scene, const std::string& shader, int width, i
     r.width = width, r.height = height;
     r.shader_override = shader;
     r.backend = backend;
-    r.raster.check_undefined = check;
+    r.shading.check_undefined = check;
     return render_frame(scene, r);
 }
 }  // namespace
@@ -744,11 +744,11 @@ TEST_CASE("the undefined-case mask: aastep with a zero derivative is flagged, an
     SECTION("checking refuses analytic derivatives and double precision") {
         FrameRequest r;
         r.width = r.height = 8;
-        r.raster.check_undefined = true;
-        r.raster.derivatives = Derivatives::Analytic;
+        r.shading.check_undefined = true;
+        r.shading.derivatives = Derivatives::Analytic;
         CHECK_THROWS_WITH(render_frame(plane, r), Catch::Contains("not analytic"));
-        r.raster.derivatives = Derivatives::Fine;
-        r.raster.precision = Precision::Double;
+        r.shading.derivatives = Derivatives::Fine;
+        r.shading.precision = Precision::Double;
         CHECK_THROWS_WITH(render_frame(plane, r), Catch::Contains("not double"));
     }
 }

@@ -53,7 +53,7 @@ TEST_CASE("Dual2's level of detail from its partials: on an affine mapping, the 
     Scene s = conformance_scene("wrap-repeat-pot.gltf");
     s.textures[0].sampler.min_filter = Filter::LinearMipmapLinear;
     FrameRequest quads, dual2;
-    dual2.raster.derivatives = Derivatives::Analytic;
+    dual2.shading.derivatives = Derivatives::Analytic;
     const Framebuffer a = render_frame(s, quads), b = render_frame(s, dual2);
     const std::size_t n = over_one_step(a, b);
     std::printf("Dual2 against quads, single_texture, trilinear, minified orthographic plane: %zu of %d pixels over "
