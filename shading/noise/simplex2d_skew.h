@@ -23,7 +23,7 @@ vec2<F> xy_to_uv(const vec2<F>& xy) { return vec2<F>(xy.x + xy.y * 0.5f, xy.y); 
 template <class F>
 vec2<F> uv_to_xy(const vec2<F>& uv) { return vec2<F>(uv.x - uv.y * 0.5f, uv.y); }
 
-// In [0,1] (measured over 80x80 cells: [0.16, 0.84]).
+// In [0,1] (the seeds inventory measured [0.16, 0.84] over 80x80 cells).
 template <class F>
 F noise(const vec2<F>& p) {
     vec2<F> uv = xy_to_uv(p);

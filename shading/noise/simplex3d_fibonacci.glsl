@@ -16,7 +16,8 @@ vec3 fibonacci_sphere(float i) {
 vec3 corner_gradient(vec3 c) {
     return fibonacci_sphere(permute(permute(permute(c.x, 10.0) + c.y, 10.0) + c.z, 10.0));
 }
-// The noise in [0,1] (the seed's convention; measured over 60x60 cells: [0.117, 0.888]); grad
+// The noise in [0,1] (the seed's convention; the seeds inventory measured [0.117, 0.888] over
+// 60x60 cells); grad
 // receives its gradient in p, d/dp [t^4 (g.v)] = t^4 g - 8 t^3 (g.v) v for each corner.
 float noise3(vec3 p, out vec3 grad) {
     const float F3 = 1.0 / 3.0;

@@ -5,7 +5,7 @@
 // corners' order from each component's rank among the four (six pairwise step()s, each pair once,
 // so that ties stay consistent), the mod-289 permutation polynomial (34x + 1)x, gradients on the
 // 32 edge midpoints of the 4-cube (one component 0, three +-1), falloff (0.6 - |x|^2)^4, scale 27
-// (range over a 40-unit window about [-0.98, 0.98]).
+// (the seeds inventory measured [-0.98, 0.98] over a 40-unit window).
 vec4 mod289(vec4 x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }
 float mod289(float x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }
 vec4 permute(vec4 x) { return mod289(((x*34.0)+1.0)*x); }

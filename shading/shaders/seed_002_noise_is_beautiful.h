@@ -2,8 +2,9 @@
 // Seed 002: the "Noise is Beautiful" notes. Two of its cell hashes, each shown on 32 cells across
 // the Table 1.1 plane (the seed says how to hash, not what it drew); Perlin noise with gradients
 // from the permutation polynomial in 2D and 3D; simplex noise in 2D (on the seed's shear) and 3D
-// (Fibonacci-sphere gradients). The 3D noises are solid textures (P = 4 cells per object unit),
-// compared on a sphere. Translated from the .frag files beside this header and the noise in
+// (Fibonacci-sphere gradients), their analytic gradients (dnoise), fBm, a multifractal, domain
+// warping and the Shadertoy scattering example. The 3D noises are solid textures (P = 4 cells per
+// object unit), compared on the sphere scene. Translated from the .frag files beside this header and the noise in
 // shading/noise/ (permute_polynomial, simplex2d_skew, simplex3d_fibonacci), line for line;
 // pcg_hash and cellnoise_pcg2 are seed_patterns.h's.
 
