@@ -1,8 +1,8 @@
-// Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the Table 1.1
-// plane and its texture, seed 001's spheres and the fast noise's volume, seed 004's plane and its
-// noise texture, the solids, the conformance scenes (geometry_scenes.h, texture_scenes.h) and the
-// meshes with UV atlases for `quadshade bake` (atlas_scenes.h). The
-// outputs are committed; a test regenerates them and compares.
+// Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the solid textures'
+// sphere, the Table 1.1 plane and its texture, seed 001's spheres and the fast noise's volume,
+// seed 004's plane and its noise texture, the solids (sphere and torus), the conformance scenes
+// (geometry_scenes.h, texture_scenes.h) and the meshes with UV atlases for `quadshade bake`
+// (atlas_scenes.h). The outputs are committed; a test regenerates them and compares.
 //
 //   quadshade-make-scenes OUTPUT_DIR
 
@@ -90,6 +90,22 @@ qs::Scene figure_1_1() {
         const glm::mat4 m = glm::scale(glm::translate(glm::mat4(1), {xs[i], -2, 0}), glm::vec3(0.5f));
         s.objects.push_back(object("sphere " + std::to_string(i + 1), 1, m, shaders[i]));
     }
+    return s;
+}
+
+// The solid textures' scene: the chapter's sphere alone, seen from above its equator in
+// perspective, so that its silhouette, its poles' fans and the seam's helper lanes are all in
+// view. The OSMesa tests draw every solid texture of the catalogue on it.
+qs::Scene sphere() {
+    qs::Scene s;
+    s.meshes = {sphere_mesh()};
+    s.camera.yfov = glm::radians(34.0f);
+    s.camera.znear = 1.0f, s.camera.zfar = 10.0f;
+    s.camera.view = glm::lookAt(glm::vec3(2.2f, -2.6f, 1.6f), glm::vec3(0.0f), glm::vec3(0, 0, 1));
+    s.clear_color = {0.0f, 0.3f, 0.5f, 0.0f};
+    s.time = 1.0f;
+    s.width = 320, s.height = 320;
+    s.objects.push_back(object("sphere", 0, glm::mat4(1.0f), "simplex3d_fibonacci"));
     return s;
 }
 
@@ -245,8 +261,10 @@ qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf, seed-004-plane.gltf,\n"
-                             "solids.gltf (+ .bin), textures/, conformance/ and bake/.\n");
+                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,
+"
+                             "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/ and bake/.
+");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -254,6 +272,7 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(dir / "textures");
         qs::write_image(dir / "textures" / "halftone-source.png", test_image());
         qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
+        qs::save_scene(sphere(), dir / "sphere.gltf");
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
         qs::write_image(dir / "textures" / "seed-004-noise.png", white_noise_image());
         qs::save_scene(seed_004_plane(dir), dir / "seed-004-plane.gltf");

@@ -14,6 +14,8 @@ namespace qs::test {
 inline const std::filesystem::path kSource = QUADSHADE_SOURCE_DIR;
 inline const std::filesystem::path kBin = QUADSHADE_BIN_DIR;
 inline const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
+// The chapter's sphere alone, in perspective: where solid textures are compared.
+inline const std::filesystem::path kSphere = kSource / "scenes/assets/sphere.gltf";
 inline const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
 // Seed 001's solid textures on Figure 1.1's spheres, fast_noise reading the shipped volume.
 inline const std::filesystem::path kSeed001Spheres = kSource / "scenes/assets/seed-001-spheres.gltf";

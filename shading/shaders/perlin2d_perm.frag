@@ -2,12 +2,7 @@
 // polynomial with two parameters for the gradients and the quintic fade, unchanged (`7.f` is
 // GLSL 1.20); main() is ours (the seed: "Try running this in ShaderToy!"): noise(st * 10).
 varying vec2 st;
-// Generate gradient vecors using a permutation polynomial
-// We can vary B to get different permutation outputs.
-float permute(float x, float b) {
-    float h = mod(x, 289.0f);
-    return mod((34.0 * h + b) * h, 289.0);
-}
+// permute(x, b): noise/permute_polynomial.glsl, the seed's, shared with its other listings.
 vec2 gradient(vec2 p) {
     // Adjustable pseudo-random generator parameter
     float B1 = 7.f;

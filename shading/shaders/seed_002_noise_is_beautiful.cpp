@@ -4,6 +4,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS_IN(kSeed002, HashPcg, HashPerm289, Perlin2dPerm)
+QUADSHADE_SHADERS_IN(kSeed002, HashPcg, HashPerm289, Perlin2dPerm, Perlin3dPerm, Simplex2dSkew, Simplex3dFibonacci, Simplex2dDnoise,
+                     Simplex3dDnoise, FbmSimplex2d, MultifractalSimplex2d, WarpDnoise, Scattering3d)
 
 }  // namespace qs::shaders

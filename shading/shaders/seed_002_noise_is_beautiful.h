@@ -1,14 +1,22 @@
 #pragma once
 // Seed 002: the "Noise is Beautiful" notes. Two of its cell hashes, each shown on 32 cells across
-// the Table 1.1 plane (the seed says how to hash, not what it drew), and Perlin noise with
-// gradients from the permutation polynomial. Translated from the .frag
-// files beside this header, line for line; pcg_hash and cellnoise_pcg2 are seed_patterns.h's.
+// the Table 1.1 plane (the seed says how to hash, not what it drew); Perlin noise with gradients
+// from the permutation polynomial in 2D and 3D; simplex noise in 2D (on the seed's shear) and 3D
+// (Fibonacci-sphere gradients), their analytic gradients (dnoise), fBm, a multifractal, domain
+// warping and the Shadertoy scattering example. The 3D noises are solid textures (P = 4 cells per
+// object unit), compared on the sphere scene. Translated from the .frag files beside this header and the noise in
+// shading/noise/ (permute_polynomial, simplex2d_skew, simplex3d_fibonacci), line for line;
+// pcg_hash and cellnoise_pcg2 are seed_patterns.h's.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
+#include "shading/noise/permute_polynomial.h"
+#include "shading/noise/simplex2d_skew.h"
+#include "shading/noise/simplex3d_fibonacci.h"
 #include "shading/program_of.h"
 #include "shading/shaders/seed_patterns.h"
 #include "shading/shaders/table_1_1.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
@@ -59,17 +67,11 @@ struct HashPerm289 {
 
 struct Perlin2dPerm {
     static constexpr ShaderInfo info{"perlin2d_perm", "seed 002: Perlin noise with gradients from the permutation polynomial, quintic fade, 10 cells across",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/perlin2d_perm.frag"}};
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/perlin2d_perm.frag"}};
     using VertexStage = PlaneSt;
-    // Generate gradient vecors using a permutation polynomial
-    // We can vary B to get different permutation outputs.
-    template <class F>
-    static F permute(const F& x, float b) {
-        F h = mod(x, 289.0f);
-        return mod((34.0f * h + b) * h, 289.0f);
-    }
     template <class F>
     static vec2<F> gradient(const vec2<F>& p) {
+        using noise::seed002::permute;
         // Adjustable pseudo-random generator parameter
         float B1 = 7.f;
         float B2 = 23.f;
@@ -108,6 +110,219 @@ struct Perlin2dPerm {
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         return vec4<F>(vec3<F>(noise(in.st * 10.0f)), 1.0f);
+    }
+};
+
+// Seed 002's simplex noise jumps where luv.x == luv.y exactly (the seed's step() pair takes the far
+// corner twice and leaves one out): at the finer octaves pixel centres of the Table 1.1 plane lie
+// exactly on those lines, where softpipe's st, an ulp off llvmpipe's (and quadshade's), misses
+// them (measured: fbm 531 pixels over 1/255 at 500x500, multifractal under 600).
+inline constexpr CheckBound kOctaveCheckBounds[] = {
+    {"table-1.1-plane", "coarse-lower", 900, 700, 0,
+     "softpipe's st is an ulp off where the seed's noise jumps (luv.x == luv.y exactly, hit by pixel centres at fine "
+     "octaves)"}};
+
+// Solid textures: the object-space position.
+inline constexpr Needs kSolidNeeds{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false};
+
+struct Perlin3dPerm {
+    static constexpr ShaderInfo info{"perlin3d_perm", "seed 002: Perlin noise in 3D, the seed's 3D permutation-polynomial gradients, quintic fade; a solid texture",
+                                     kSolidNeeds, {"shaders/object_position.vert"},
+                                     {"noise/permute_polynomial.glsl", "shaders/perlin3d_perm.frag"}};
+    using VertexStage = ObjectPosition;
+    template <class F>
+    static vec3<F> fade(const vec3<F>& t) { return ((6.0f * t - 15.0f) * t + 10.0f) * t * t * t; }
+    template <class F>
+    static F noise(const vec3<F>& p) {
+        using noise::seed002::gradient;
+        vec3<F> f = fract(p);
+        vec3<F> pf = floor(p);
+        F n000 = dot(f, gradient(pf));
+        F n100 = dot(f - vec3<F>(1.f, 0.f, 0.f), gradient(pf + vec3<F>(1.f, 0.f, 0.f)));
+        F n010 = dot(f - vec3<F>(0.f, 1.f, 0.f), gradient(pf + vec3<F>(0.f, 1.f, 0.f)));
+        F n110 = dot(f - vec3<F>(1.f, 1.f, 0.f), gradient(pf + vec3<F>(1.f, 1.f, 0.f)));
+        F n001 = dot(f - vec3<F>(0.f, 0.f, 1.f), gradient(pf + vec3<F>(0.f, 0.f, 1.f)));
+        F n101 = dot(f - vec3<F>(1.f, 0.f, 1.f), gradient(pf + vec3<F>(1.f, 0.f, 1.f)));
+        F n011 = dot(f - vec3<F>(0.f, 1.f, 1.f), gradient(pf + vec3<F>(0.f, 1.f, 1.f)));
+        F n111 = dot(f - vec3<F>(1.f, 1.f, 1.f), gradient(pf + vec3<F>(1.f, 1.f, 1.f)));
+        vec3<F> faded = fade(f);
+        F n00 = (1.f - faded.x) * n000 + faded.x * n100;
+        F n10 = (1.f - faded.x) * n010 + faded.x * n110;
+        F n01 = (1.f - faded.x) * n001 + faded.x * n101;
+        F n11 = (1.f - faded.x) * n011 + faded.x * n111;
+        F n0 = (1.f - faded.y) * n00 + faded.y * n10;
+        F n1 = (1.f - faded.y) * n01 + faded.y * n11;
+        F n = (1.f - faded.z) * n0 + faded.z * n1;
+        return (n + 1.f) / 2.f;
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return vec4<F>(vec3<F>(noise(in.P)), 1.0f);
+    }
+};
+
+struct Simplex2dSkew {
+    static constexpr ShaderInfo info{"simplex2d_skew", "seed 002: simplex noise on the seed's xy_to_uv shear, permutation-polynomial gradients, 10 units across",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_skew.frag"}};
+    using VertexStage = PlaneSt;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        return vec4<F>(vec3<F>(noise::seed002::noise(in.st * 10.0f)), 1.0f);
+    }
+};
+
+struct Simplex3dFibonacci {
+    static constexpr ShaderInfo info{"simplex3d_fibonacci", "seed 002: 3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the seed's prose); a solid texture",
+                                     kSolidNeeds, {"shaders/object_position.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_fibonacci.frag"}};
+    using VertexStage = ObjectPosition;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec3<F> grad;
+        return vec4<F>(vec3<F>(noise::seed002::noise3(in.P, grad)), 1.0f);
+    }
+};
+
+struct Simplex2dDnoise {
+    static constexpr ShaderInfo info{"simplex2d_dnoise", "seed 002: the analytic gradient of its 2D simplex noise (dnoise, ours: the seed's sum was an image) as red and green, the noise as blue",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_dnoise.frag"}};
+    using VertexStage = PlaneSt;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> p = in.st * 10.0f;
+        return vec4<F>(0.5f + 0.15f * noise::seed002::dnoise(p), noise::seed002::noise(p), 1.0f);
+    }
+};
+
+struct Simplex3dDnoise {
+    static constexpr ShaderInfo info{"simplex3d_dnoise", "seed 002: the analytic gradient of its 3D simplex noise as colour; a solid texture",
+                                     kSolidNeeds, {"shaders/object_position.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_dnoise.frag"}};
+    using VertexStage = ObjectPosition;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec3<F> grad;
+        noise::seed002::noise3(in.P, grad);
+        return vec4<F>(0.5f + 0.15f * grad, 1.0f);
+    }
+};
+
+// Octave loops: a float counter to a constant bound, the same in every lane, as in the seed.
+struct FbmSimplex2d {
+    static constexpr ShaderInfo info = with_check_bounds(ShaderInfo{"fbm_simplex2d", "seed 002: fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/fbm_simplex2d.frag"}}, kOctaveCheckBounds);
+    using VertexStage = PlaneSt;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> xy = in.st * 4.0f;
+        float k = 5.f;
+        F c = 0.f;
+        for (float i = 0.f; i < k; i++) {
+            c += pow(2.f, -i) * noise::seed002::noise(pow(2.f, i) * xy);
+        }
+        c /= 2.f;
+        return vec4<F>(vec3<F>(c), 1.0f);
+    }
+};
+
+struct MultifractalSimplex2d {
+    static constexpr ShaderInfo info = with_check_bounds(ShaderInfo{"multifractal_simplex2d", "seed 002: a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the seed's formula was an image)",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/multifractal_simplex2d.frag"}}, kOctaveCheckBounds);
+    using VertexStage = PlaneSt;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> xy = in.st * 4.0f;
+        float k = 5.f;
+        F c = 0.f;
+        F previous = 1.f;
+        for (float i = 0.f; i < k; i++) {
+            F n = noise::seed002::noise(pow(2.f, i) * xy);
+            c += pow(2.f, -i) * previous * n;
+            previous = n;
+        }
+        c /= 2.f;
+        return vec4<F>(vec3<F>(c), 1.0f);
+    }
+};
+
+struct WarpDnoise {
+    static constexpr ShaderInfo info{"warp_dnoise", "seed 002: domain warping, each octave displaced by the summed dnoise gradients of the previous ones",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"},
+                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/warp_dnoise.frag"}};
+    using VertexStage = PlaneSt;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        vec2<F> xy = in.st * 4.0f;
+        float k = 3.f;
+        F c = 0.f;
+        vec2<F> disp = vec2<F>(0.f);
+        for (float i = 0.f; i < k; i++) {
+            // We displace what we're sampling from the noise function here
+            vec2<F> trans_xy = pow(2.f, i) * (xy + disp);
+            c += pow(2.f, -i) * noise::seed002::noise(trans_xy);
+            // Update our displacement based on the sampled gradient
+            disp += noise::seed002::dnoise(trans_xy);
+        }
+        c /= 2.f;
+        return vec4<F>(vec3<F>(c), 1.0f);
+    }
+};
+
+// Shadertoy's inputs: iTime is `time`, iResolution.xy the uResolution uniform (the frame's size in
+// pixels, set by both renderers), fragCoord gl_FragCoord.xy (scattering3d.frag's #defines).
+struct Scattering3d {
+    static constexpr UniformDecl kUniforms[] = {
+        // Always the frame's size in both renderers; this is only for a draw without a scene.
+        {"uResolution", UniformType::Vec2, {64.0f, 64.0f}},
+    };
+    enum : int { uResolution };
+    static constexpr ShaderInfo info = with_uniforms(
+        ShaderInfo{"scattering3d", "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
+                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = true, .frag_coord = true},
+                   {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
+                   {}, 289.0},  // time is the lattice's z, hashed mod 289
+        kUniforms);
+    using VertexStage = PlanePosition;
+    template <class F>
+    static vec4<F> mainImage(const vec2<F>& fragCoord, const Uniforms& u) {
+        vec3<F> iResolution(uniform<vec2<F>>(u, uResolution), 1.0f);
+        F iTime = u.time;
+        vec2<F> uv = fragCoord / iResolution.xy();
+        vec3<F> xyz = vec3<F>(uv * 15.f, iTime);
+        // Config
+        float jitter = 0.5f;
+        // Determine the cell we are in
+        vec3<F> cur_cell = floor(xyz);
+        F c = 0.f;
+        F d1 = 100.f;
+        // Iterate through the neighbors of the cell
+        for (int i = -1; i <= 1; i++) {
+            for (int j = -1; j <= 1; j++) {
+                for (int k = -1; k <= 1; k++) {
+                    vec3<F> cell = cur_cell + vec3<F>(float(i), float(j), float(k));
+                    // Compute the pseudorandom point from that cell
+                    vec3<F> jitter_vec = noise::seed002::gradient(cell) * jitter;
+                    vec3<F> point = cell + vec3<F>(0.5f) + jitter_vec;
+                    // Compute distance to this point
+                    F d = length(point - xyz);
+                    // Update d1, d2. D1 is distance to closest, D2
+                    // is 2nd closest
+                    d1 = select(d < d1, d, d1);
+                }
+            }
+        }
+        c = 1.f - 2.f * d1 * d1;
+        // Output to screen
+        vec3<F> color = mix(vec3<F>(0.1f), vec3<F>(0.8f, 0.1f, 0.2f), c);
+        return vec4<F>(color, 1.f);
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        return mainImage(in.gl_FragCoord.xy(), u);
     }
 };
 
