@@ -261,10 +261,8 @@ qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,
-"
-                             "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/ and bake/.
-");
+                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,\n"
+                             "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/ and bake/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {

@@ -16,7 +16,7 @@ cmake --build "$work/my-build" > "$work/build.log"
 bin=$work/prefix/bin
 plugin=$work/my-build/libmy_shaders.so
 scene=$src/scenes/assets/table-1.1-plane.gltf
-"$bin/quadshade" shaders --plugin "$plugin" | grep -q '^my_stripes'
+"$bin/quadshade" shaders --plugin "$plugin" | grep -q '^ *my_stripes '
 "$bin/quadshade" render "$scene" --plugin "$plugin" --shader my_stripes --size 160x120 -o "$work/stripes.exr"
 "$bin/quadshade" render "$scene" --plugin "$plugin" --shader my_stripes --size 160x120 -o "$work/stripes.png"
 
