@@ -5,6 +5,6 @@
 namespace qs::shaders {
 
 QUADSHADE_SHADERS(IntegerProbe, IntegerUndefinedProbe, BoolProbe, LoopProbe, DiscardProbe, MatrixProbe, BuiltinsProbe,
-                  UniformProbe)
+                  UniformProbe, SinCosProbe)
 
 }  // namespace qs::shaders

@@ -566,6 +566,34 @@ TEST_CASE("built-ins probe: exact built-ins bit for bit as llvmpipe, rounded and
     CHECK(worst[3] < 1e-5);
 }
 
+TEST_CASE("sin and cos probe: llvmpipe's polynomial bit for bit, softpipe's C library sinf within half an ulp of 1 below 2^22",
+          "[reference][builtins][sin]") {
+    const Case probe{"sin_cos_probe", kPlane, "sin_cos_probe", 256, 256};
+    // Every kind of float argument, huge, denormal, infinite and NaN ones included (the probe's
+    // GLSL), and the sine hash of each: llvmpipe's to the bit (shading/number/sin_cos.h).
+    CHECK(differing_values(ours(probe, Derivatives::Fine, 256, 256), reference(probe, "llvmpipe", 256, 256)) == 0);
+
+    // softpipe calls the C library's sinf and cosf (glibc's: within an ulp of the true value),
+    // llvmpipe's polynomial is within 2^-24 of them (half an ulp of 1) for |a| < 2^22 and has
+    // no accuracy left beyond 2^24, where its reduction by multiples of pi/4 in float runs out.
+    const Framebuffer q = ours(probe, Derivatives::CoarseLower, 256, 256);
+    const Image sp = reference(probe, "softpipe", 256, 256);
+    CHECK(differing_values(q, sp, 0x1) == 0);  // the arguments themselves
+    std::size_t differ = 0, hash_differ = 0, compared = 0;
+    double worst = 0.0;
+    for (std::size_t p = 0; p < q.rgba.size(); p += 4) {
+        const float a = q.rgba[p];
+        for (int c = 1; c <= 2; ++c) differ += std::bit_cast<std::uint32_t>(q.rgba[p + c]) != std::bit_cast<std::uint32_t>(sp.rgba[p + c]);
+        if (!(std::abs(a) < 0x1p22f)) continue;
+        ++compared;
+        hash_differ += q.rgba[p + 3] != sp.rgba[p + 3];
+        for (int c = 1; c <= 2; ++c) worst = std::max(worst, std::abs(double(q.rgba[p + c]) - double(sp.rgba[p + c])));
+    }
+    std::printf("sin and cos vs softpipe: %zu of %zu values differ; for |a| < 2^22 (%zu pixels) at most %.3g, and %zu sine "
+                "hashes differ\n", differ, q.rgba.size() / 2, compared, worst, hash_differ);
+    CHECK(worst <= 0x1p-24);
+}
+
 TEST_CASE("discard probe: discarded fragments write nothing; derivatives after discard as llvmpipe", "[reference][discard]") {
     // 17x15: quads stick out of the image, so helper lanes discard too.
     const Case probe{"discard_probe", kPlane, "discard_probe", 17, 15};
