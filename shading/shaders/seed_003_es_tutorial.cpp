@@ -3,6 +3,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS(EsTiles2, EsSmooth5Tiles8)
+QUADSHADE_SHADERS(EsRandomSquare, EsRandomSquareMinus1, EsRandomSquarePlus1, EsTiles2, EsTiles128, EsSmooth9Tiles128,
+                  EsSmooth5Tiles8)
 
 }  // namespace qs::shaders

@@ -61,6 +61,13 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "the un-anti-aliased variant: a plain step turns the last-ulp difference of a value lying on its "
       "threshold into a full flip, which aastep's ramp absorbs (measured: 1 pixel, 178/255)"}},
     {{"halftone_step", "softpipe"}, {6, 6, 0, "as against llvmpipe (measured: 3 pixels)"}},
+    // The sine hashes: softpipe calls the C library's sinf, within 2^-24 of llvmpipe's polynomial
+    // (which quadshade's sin is, to the bit: the sin_cos_probe test), and 43758.5453 sin(x) moves
+    // by under a step but crosses fract's wrap on a few pixels: a full step there.
+    {{"es_random_square", "softpipe"}, {60, 60, 0, "sinf against llvmpipe's sin across fract's wrap (measured: 29 pixels)"}},
+    {{"es_random_square_minus1", "softpipe"}, {60, 60, 0, "as es_random_square (measured: 29 pixels)"}},
+    {{"es_random_square_plus1", "softpipe"}, {50, 50, 0, "as es_random_square (measured: 24 pixels)"}},
+    {{"es_tiles128", "softpipe"}, {60, 60, 0, "as es_random_square, per tile (measured: 30 pixels)"}},
     {{"lawlor_texture_two_octaves", "softpipe"},
      {8, 0, 0,
       "softpipe filters with float weights where llvmpipe (and quadshade) round them to 1/256 and lerp in 8 bits "
@@ -74,6 +81,18 @@ const std::map<std::string, const char*> kSoftpipeCountedOnly = {
      "a hash of floor(st * 32): softpipe's st differs from llvmpipe's by an ulp (see perlin5), and with 31 cell "
      "borders each way an ulp picks the neighbouring cell's hash on 1495 pixels (0.6%)"},
     {"hash_perm289", "as hash_pcg (measured: 1495 pixels over 1/255)"},
+    {"hash_sin",
+     "as hash_pcg (1495 pixels over 1/255); elsewhere softpipe's sinf, within 2^-24 of llvmpipe's polynomial, moves the "
+     "hash by under 1/255 (39044 pixels differ in their bits)"},
+    {"hash_hoskins",
+     "as hash_pcg: 1703 pixels over 1/255 (hash_pcg's cell borders give 1495 on this plane; the other 208 not "
+     "analysed)"},
+    {"es_smooth9_tiles128",
+     "nine sine hashes per pixel (see es_random_square's bound), each able to cross fract's wrap with softpipe's sinf: "
+     "266 pixels over 1/255 (0.15%, up to 29/255)"},
+    {"lawlor_mandelbrot",
+     "softpipe's texcoords are an ulp off llvmpipe's (see perlin5) and the iteration makes an ulp a different escape "
+     "time near the set's boundary (1062 pixels over 1/255)"},
     {"lawlor_dots_moved",
      "dot centres read from tex1: softpipe filters with float weights where llvmpipe (and quadshade) round them "
      "to 1/256 and lerp in 8 bits (docs/design.md, Textures), so its dots move and their rims flip (1186 pixels)"},
