@@ -88,7 +88,16 @@ public:
         return from_vector(moved);
     }
 
-    // The lanes as a GCC vector, for code written on those (number/sin_cos.h).
+    // The lanes through a function of arrays (number/sin_cos.h).
+    template <void (*Function)(const T*, T*)>
+    Lanes through() const {
+        alignas(64) T in[N], out[N];
+        store(in);
+        Function(in, out);
+        return load(out);
+    }
+
+    // The lanes as a GCC vector, for shuffles.
     typedef T Vector __attribute__((vector_size(N * sizeof(T))));
     Vector vector() const {
         alignas(Vector) T lanes[N];
@@ -140,11 +149,11 @@ public:
     friend Lanes sqrt(const Lanes& a) { return Lanes(stdx::sqrt(a.v)); }
     // On float, llvmpipe's sin and cos to the bit (number/sin_cos.h); double keeps the library's.
     friend Lanes sin(const Lanes& a) {
-        if constexpr (std::is_same_v<T, float>) return from_vector(llvmpipe_math::sin(a.vector()));
+        if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<false, N>>();
         else return Lanes(stdx::sin(a.v));
     }
     friend Lanes cos(const Lanes& a) {
-        if constexpr (std::is_same_v<T, float>) return from_vector(llvmpipe_math::cos(a.vector()));
+        if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<true, N>>();
         else return Lanes(stdx::cos(a.v));
     }
     friend Lanes tan(const Lanes& a) { return Lanes(stdx::tan(a.v)); }
