@@ -4,7 +4,8 @@
 //   wide lane type / plain loop       goal >= 0.80 (the abstraction costs nothing)
 //   rasterized / plain loop, 1 thread goal >= 0.70 (rasterization keeps the throughput)
 // The same for an integer-hash shader (PCG value noise) and a loop that breaks per pixel (the
-// Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop.
+// Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
+// (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
 // Usage: quadshade-bench-core [Google Benchmark flags]
 
 #include <benchmark/benchmark.h>
@@ -208,6 +209,26 @@ void BM_plain(benchmark::State& state) {
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// GLSL sin on the lanes (llvmpipe's polynomial, shading/number/sin_cos.h) against the library's
+// std::experimental::sin it replaced, on the sine hash's arguments: dot(p, (12.9898, 78.233))
+// over p in [0, 128)^2, the range of seed 003's 128 tiles.
+template <class F>
+void BM_sin(benchmark::State& state) {
+    constexpr int n = lanes_of<F>();
+    double sink = 0.0;
+    for (auto _ : state) {
+        F acc(0.0f);
+        for (int y = 0; y < kSide; ++y) {
+            const F py(float(y) * (128.0f / kSide) * 78.233f);
+            for (int x = 0; x < kSide; x += n) acc += sin(lane_ramp<F>(float(x) * (128.0f / kSide), 128.0f / kSide) * 12.9898f + py);
+        }
+        sink += double(lane(acc, 0));
+        benchmark::DoNotOptimize(sink);
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+inline V plain_sin(V s, V t) { return stdx::sin(s * (128.0f * 12.9898f) + t * (128.0f * 78.233f)); }
+
 // A full-window square through the whole pipeline: vertex stage, setup, tiles, quads/pixels.
 void BM_raster(benchmark::State& state, const char* shader, int threads) {
     const Program* program = find_program(shader);
@@ -257,6 +278,9 @@ BENCHMARK_CAPTURE(BM_raster, pcg_value_noise_1thread, "pcg_value_noise", 1)->Uni
 BENCHMARK_TEMPLATE(BM_mandelbrot, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_plain, plain_mandelbrot)->Name("BM_plain_stdx_mandelbrot")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_raster, mandelbrot_1thread, "mandelbrot", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_sin, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_plain, plain_sin)->Name("BM_plain_stdx_sin")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster, es_smooth9_tiles128_1thread, "es_smooth9_tiles128", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
@@ -289,6 +313,10 @@ int main(int argc, char** argv) {
             std::printf("%s: rasterized (1 thread) / plain loop: %.2f (goal >= 0.70) %s\n", name.c_str(), raster / loop,
                         raster / loop >= 0.70 ? "MET" : "NOT MET");
         }
+    }
+    const double sin_loop = rate("BM_plain_stdx_sin"), sin_lanes = rate("BM_sin<Pixels<float, 16>>");
+    if (sin_loop > 0 && sin_lanes > 0) {
+        std::printf("sin: llvmpipe's polynomial on Pixels<float,16> / std::experimental::sin loop: %.2f\n", sin_lanes / sin_loop);
     }
     benchmark::Shutdown();
     return 0;

@@ -18,7 +18,8 @@
 //    CoarseUpper dFdx = v3-v2, dFdy = v2-v0 on all four lanes: the upper row and left column, i.e.
 //                the first pixel of a quad stored top-down (SwiftShader: lane1-lane0, lane2-lane0)
 //
-// Arithmetic is plain IEEE (no FMA contraction in the build; see CMakeLists.txt). Comparisons
+// Arithmetic is plain IEEE (no FMA contraction in the build; see CMakeLists.txt); sin and cos on
+// float are llvmpipe's polynomial (number/sin_cos.h). Comparisons
 // yield masks; `select(mask, a, b)` picks per lane. min/max return the non-NaN operand.
 
 #include <cstddef>
@@ -26,6 +27,8 @@
 #include <experimental/simd>
 #include <type_traits>
 #include <utility>
+
+#include "shading/number/sin_cos.h"
 
 namespace qs {
 
@@ -77,16 +80,35 @@ public:
     // lane by lane became sixteen scalar loads, and a function pointer a call per lane).
     template <class Index>
     Lanes permute(Index) const {
-        typedef T Vector __attribute__((vector_size(N * sizeof(T))));
-        alignas(Vector) T lanes[N];
-        v.copy_to(lanes, stdx::element_aligned);
-        Vector x;
-        std::memcpy(&x, lanes, sizeof x);
+        const Vector x = vector();
         Vector moved;
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             moved = __builtin_shufflevector(x, x, Index{}(I)...);
         }(std::make_index_sequence<std::size_t(N)>());
-        std::memcpy(lanes, &moved, sizeof moved);
+        return from_vector(moved);
+    }
+
+    // The lanes through a function of arrays (number/sin_cos.h).
+    template <void (*Function)(const T*, T*)>
+    Lanes through() const {
+        alignas(64) T in[N], out[N];
+        store(in);
+        Function(in, out);
+        return load(out);
+    }
+
+    // The lanes as a GCC vector, for shuffles.
+    typedef T Vector __attribute__((vector_size(N * sizeof(T))));
+    Vector vector() const {
+        alignas(Vector) T lanes[N];
+        v.copy_to(lanes, stdx::element_aligned);
+        Vector x;
+        std::memcpy(&x, lanes, sizeof x);
+        return x;
+    }
+    static Lanes from_vector(const Vector& x) {
+        alignas(Vector) T lanes[N];
+        std::memcpy(lanes, &x, sizeof x);
         return load(lanes);
     }
 
@@ -125,8 +147,15 @@ public:
     friend Lanes roundEven(const Lanes& a) { return Lanes(stdx::nearbyint(a.v)); }
     friend Lanes abs(const Lanes& a) { return Lanes(stdx::abs(a.v)); }
     friend Lanes sqrt(const Lanes& a) { return Lanes(stdx::sqrt(a.v)); }
-    friend Lanes sin(const Lanes& a) { return Lanes(stdx::sin(a.v)); }
-    friend Lanes cos(const Lanes& a) { return Lanes(stdx::cos(a.v)); }
+    // On float, llvmpipe's sin and cos to the bit (number/sin_cos.h); double keeps the library's.
+    friend Lanes sin(const Lanes& a) {
+        if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<false, N>>();
+        else return Lanes(stdx::sin(a.v));
+    }
+    friend Lanes cos(const Lanes& a) {
+        if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<true, N>>();
+        else return Lanes(stdx::cos(a.v));
+    }
     friend Lanes tan(const Lanes& a) { return Lanes(stdx::tan(a.v)); }
     friend Lanes asin(const Lanes& a) { return Lanes(stdx::asin(a.v)); }
     friend Lanes acos(const Lanes& a) { return Lanes(stdx::acos(a.v)); }

@@ -10,6 +10,8 @@
 #include <concepts>
 #include <type_traits>
 
+#include "shading/number/sin_cos.h"
+
 namespace qs {
 
 // Two-operand primitives take mixed float/double (a GLSL float literal in a double shader).
@@ -41,8 +43,6 @@ QS_SCALAR_UNARY(trunc, std::trunc)
 QS_SCALAR_UNARY(roundEven, std::nearbyint)  // to nearest, halves to even (the default mode)
 QS_SCALAR_UNARY(abs, std::fabs)
 QS_SCALAR_UNARY(sqrt, std::sqrt)
-QS_SCALAR_UNARY(sin, std::sin)
-QS_SCALAR_UNARY(cos, std::cos)
 QS_SCALAR_UNARY(tan, std::tan)
 QS_SCALAR_UNARY(asin, std::asin)
 QS_SCALAR_UNARY(acos, std::acos)
@@ -52,6 +52,12 @@ QS_SCALAR_UNARY(log, std::log)
 QS_SCALAR_UNARY(exp2, std::exp2)
 QS_SCALAR_UNARY(log2, std::log2)
 #undef QS_SCALAR_UNARY
+// sin and cos: float as llvmpipe evaluates them, to the bit (number/sin_cos.h); double, the
+// precision oracle, as the C library does.
+inline float sin(float a) { return llvmpipe_math::sin(a); }
+inline double sin(double a) { return std::sin(a); }
+inline float cos(float a) { return llvmpipe_math::cos(a); }
+inline double cos(double a) { return std::cos(a); }
 
 
 // Lane access, so that code written over any number type can look at single values.

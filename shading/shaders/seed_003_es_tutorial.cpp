@@ -4,6 +4,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS_IN(kSeed003, EsTiles2, EsSmooth5Tiles8)
+QUADSHADE_SHADERS_IN(kSeed003, EsRandomSquare, EsRandomSquareMinus1, EsRandomSquarePlus1, EsTiles2, EsTiles128,
+                     EsSmooth9Tiles128, EsSmooth5Tiles8)
 
 }  // namespace qs::shaders

@@ -4,11 +4,10 @@
 // width) discards what lies above it in a window taller than wide. Translated from the .frag
 // files beside this header and es_random_noise.glsl, line for line.
 //
-// randomNoise is fract(sin(x) * 43758.5453): quadshade's sin is glibc's and llvmpipe's its own
-// polynomial, an ulp apart on about 15% of arguments, which the factor makes up to 1/255 and,
-// across fract's wrap, a full step. With a few tiles (2x2, 8x8) every tile agrees with llvmpipe;
-// the tutorial's per-pixel noise and its 128 tiles do not (measured at 320x568: 77-86 and 139
-// pixels over 1/255, 23-37 of them full steps), and wait for llvmpipe's sin.
+// randomNoise is fract(sin(x) * 43758.5453), which makes the last bits of sin the noise: it is
+// llvmpipe's because quadshade's sin on float is llvmpipe's polynomial to the bit
+// (shading/number/sin_cos.h). softpipe calls the C library's sinf, half an ulp of 1 off on many
+// arguments, which the factor makes a different grey.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
@@ -58,6 +57,83 @@ struct EsTiles2 : EsTutorial {
         F n = randomNoise(position);
         out.gl_FragColor = vec4<F>(vec3<F>(n), 1.0f);
         return out;
+    }
+};
+
+// The square viewport in per-pixel noise, and the noise's input moved by -1 and by +1.
+template <int Shift>
+struct EsRandomSquareShifted : EsTutorial {
+    static constexpr ShaderInfo info =
+        Shift == 0 ? shader("es_random_square", "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded",
+                            "shaders/es_random_square.frag")
+        : Shift < 0 ? shader("es_random_square_minus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by -1",
+                             "shaders/es_random_square_minus1.frag")
+                    : shader("es_random_square_plus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
+                             "shaders/es_random_square_plus1.frag");
+    template <class F>
+    static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        FragmentOut<F> out;
+        vec2<F> position = square_position(in, u, out);
+        F n = Shift == 0 ? randomNoise(position) : randomNoise(position + float(Shift));  // position-1. or position+1.
+        out.gl_FragColor = vec4<F>(vec3<F>(n), 1.0f);
+        return out;
+    }
+};
+using EsRandomSquare = EsRandomSquareShifted<0>;
+using EsRandomSquareMinus1 = EsRandomSquareShifted<-1>;
+using EsRandomSquarePlus1 = EsRandomSquareShifted<1>;
+
+struct EsTiles128 : EsTutorial {
+    static constexpr ShaderInfo info = shader("es_tiles128", "seed 003, ES tutorial: the square viewport in 128x128 random tiles",
+                                              "shaders/es_tiles128.frag");
+    template <class F>
+    static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        FragmentOut<F> out;
+        vec2<F> position = square_position(in, u, out);
+        float tiles = 128.0f;
+        position = floor(position * tiles);
+        F n = randomNoise(position);
+        out.gl_FragColor = vec4<F>(vec3<F>(n), 1.0f);
+        return out;
+    }
+};
+
+struct EsSmooth9Tiles128 : EsTutorial {
+    static constexpr ShaderInfo info = shader("es_smooth9_tiles128", "seed 003, ES tutorial: 128 tiles, each the average of its 3x3 neighbourhood's noise (whole window)",
+                                              "shaders/es_smooth9_tiles128.frag");
+    template <class F>
+    static F smoothNoise(const vec2<F>& p) {
+        vec2<F> nn(p.x, p.y + 1.0f);
+        vec2<F> ne(p.x + 1.0f, p.y + 1.0f);
+        vec2<F> ee(p.x + 1.0f, p.y);
+        vec2<F> se(p.x + 1.0f, p.y - 1.0f);
+        vec2<F> ss(p.x, p.y - 1.0f);
+        vec2<F> sw(p.x - 1.0f, p.y - 1.0f);
+        vec2<F> ww(p.x - 1.0f, p.y);
+        vec2<F> nw(p.x - 1.0f, p.y + 1.0f);
+        vec2<F> cc(p.x, p.y);
+
+        F sum = 0.0f;
+        sum += randomNoise(nn);
+        sum += randomNoise(ne);
+        sum += randomNoise(ee);
+        sum += randomNoise(se);
+        sum += randomNoise(ss);
+        sum += randomNoise(sw);
+        sum += randomNoise(ww);
+        sum += randomNoise(nw);
+        sum += randomNoise(cc);
+        sum /= 9.0f;
+
+        return sum;
+    }
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
+        vec2<F> position = in.gl_FragCoord.xy() / uniform<vec2<F>>(u, uResolution).xx();
+        float tiles = 128.0f;
+        position = floor(position * tiles);
+        F n = smoothNoise(position);
+        return vec4<F>(vec3<F>(n), 1.0f);
     }
 };
 

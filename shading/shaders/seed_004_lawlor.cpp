@@ -6,6 +6,6 @@ namespace qs::shaders {
 
 QUADSHADE_SHADERS_IN(kSeed004, LawlorChecker, LawlorDots, LawlorDotsTexture, LawlorDotsCenterColor, LawlorDotsMoved, LawlorDotsSearch,
                      LawlorVoronoiF1, LawlorVoronoiF2, LawlorStainedGlass, LawlorTextureHigh, LawlorTextureLow,
-                     LawlorTextureTwoOctaves, LawlorTextureOctaves)
+                     LawlorTextureTwoOctaves, LawlorTextureOctaves, LawlorMandelbrot)
 
 }  // namespace qs::shaders

@@ -6,6 +6,6 @@
 namespace qs::shaders {
 
 QUADSHADE_SHADERS_IN(kProbes, IntegerProbe, IntegerUndefinedProbe, BoolProbe, LoopProbe, DiscardProbe, MatrixProbe, BuiltinsProbe,
-                     UniformProbe)
+                     UniformProbe, SinCosProbe)
 
 }  // namespace qs::shaders

@@ -257,6 +257,27 @@ struct BuiltinsProbe {
     }
 };
 
+struct SinCosProbe {
+    static constexpr ShaderInfo info = with_glsl_version(
+        ShaderInfo{"sin_cos_probe", "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
+                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/sin_cos_probe.frag"}},
+        330);
+    using VertexStage = PlanePosition;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        using Uint = uint_t<F>;
+        vec2<F> p = floor(in.gl_FragCoord.xy());
+        Uint i = Uint(p.x) + 256u * Uint(p.y);
+        Uint h = i * 2654435761u;
+        vec2<F> q = vec2<F>(p.x * 0.5f, (p.y - 192.0f) * 2.0f) + fract(vec2<F>(F(h & 1023u), F(h >> 22u)) / 1024.0f);
+        F a = select(p.y < 96.0f, uintBitsToFloat(h),
+                     select(p.y < 192.0f, uintBitsToFloat((h & 0x807FFFFFu) | ((96u + i % 64u) << 23u)),
+                            dot(q, vec2<F>(12.9898f, 78.233f))));
+        F s = sin(a);
+        return vec4<F>(a, s, cos(a), fract(s * 43758.5453f));
+    }
+};
+
 struct UniformProbe {
     static constexpr UniformDecl kUniforms[] = {
         {"uScale", UniformType::Float, {4.0f}},

@@ -78,6 +78,24 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
     {{"grazing-plane/spots", "softpipe"}, {150, 110, 0, "softpipe's interpolation (below); measured 117, 87"}},
     {{"grazing-plane/spots_length", "softpipe"}, {135, 90, 0, "softpipe's interpolation (below); measured 104, 67"}},
     {{"sliver-fan/*", "softpipe"}, {3, 3, 3, "softpipe's edges (below); measured 2, 2, 2"}},
+    // Shaders that make an ulp a whole step: the sine hashes (softpipe's sinf against llvmpipe's
+    // polynomial, across fract's wrap: tests/reference), the cell hash of floor(st * 32) and the
+    // Mandelbrot iteration (softpipe's interpolation, below, moves cell borders and escape times).
+    {{"torus-rolled/es_smooth9_tiles128", "softpipe"}, {50, 50, 2, "the sine hash; measured 37, 37, 1"}},
+    {{"torus-rolled/hash_hoskins", "softpipe"}, {50, 35, 2, "the cell hash; measured 39, 27, 1"}},
+    {{"torus-rolled/lawlor_mandelbrot", "softpipe"}, {25, 20, 2, "escape times; measured 15, 12"}},
+    {{"overlap/es_smooth9_tiles128", "softpipe"}, {25, 25, 2, "the sine hash; measured 17, 17, 1"}},
+    {{"overlap/hash_hoskins", "softpipe"}, {20, 15, 2, "the cell hash; measured 14, 10, 1"}},
+    {{"overlap/lawlor_mandelbrot", "softpipe"}, {40, 35, 2, "escape times; measured 31, 25"}},
+    {{"overlap-reversed/es_smooth9_tiles128", "softpipe"}, {10, 10, 0, "the sine hash; measured 6, 6"}},
+    {{"overlap-reversed/lawlor_mandelbrot", "softpipe"}, {30, 22, 0, "escape times; measured 21, 16"}},
+    {{"hierarchy/es_smooth9_tiles128", "softpipe"}, {22, 22, 0, "the sine hash; measured 16, 16"}},
+    {{"hierarchy/es_tiles128", "softpipe"}, {6, 6, 0, "the sine hash; measured 4, 4"}},
+    {{"hierarchy/hash_hoskins", "softpipe"}, {10, 10, 0, "the cell hash; measured 7, 7"}},
+    {{"hierarchy/lawlor_mandelbrot", "softpipe"}, {45, 38, 0, "escape times; measured 36, 29"}},
+    {{"grazing-plane/es_smooth9_tiles128", "softpipe"}, {50, 50, 0, "the sine hash; measured 36, 36"}},
+    {{"sliver-fan/hash_hoskins", "softpipe"}, {8, 8, 3, "the cell hash; measured 5, 5, 2"}},
+    {{"sliver-fan/lawlor_mandelbrot", "softpipe"}, {35, 30, 3, "escape times; measured 25, 21"}},
 };
 // Softpipe's two causes, as in tests/reference: it sets up edges in floating point without the
 // 8-bit sub-pixel snapping llvmpipe and quadshade use, so a silhouette pixel whose centre lies

@@ -80,6 +80,13 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
      {4, 4, 0,
       "the chapter's 3D noise (radius^2 0.6) jumps across simplex faces, and softpipe's P is an ulp off quadshade's "
       "(see perlin5): 2 pixels inside the sphere cross the contour line's edge (measured: 2 pixels, 42/255)"}},
+    // The sine hashes: softpipe calls the C library's sinf, within 2^-24 of llvmpipe's polynomial
+    // (which quadshade's sin is, to the bit: the sin_cos_probe test), and 43758.5453 sin(x) moves
+    // by under a step but crosses fract's wrap on a few pixels: a full step there.
+    {{"es_random_square", "softpipe"}, {60, 60, 0, "sinf against llvmpipe's sin across fract's wrap (measured: 29 pixels)"}},
+    {{"es_random_square_minus1", "softpipe"}, {60, 60, 0, "as es_random_square (measured: 29 pixels)"}},
+    {{"es_random_square_plus1", "softpipe"}, {50, 50, 0, "as es_random_square (measured: 24 pixels)"}},
+    {{"es_tiles128", "softpipe"}, {60, 60, 0, "as es_random_square, per tile (measured: 30 pixels)"}},
     {{"lawlor_texture_two_octaves", "softpipe"},
      {8, 0, 0,
       "softpipe filters with float weights where llvmpipe (and quadshade) round them to 1/256 and lerp in 8 bits "
@@ -99,6 +106,18 @@ const std::map<std::string, const char*> kSoftpipeCountedOnly = {
      "llvmpipe's to the bit and lands on them as it does, softpipe's is an ulp off (see perlin5) and misses them "
      "(measured: 706 pixels over 1/255, 539 over 2/255, along those lines)"},
     {"multifractal_simplex2d", "as fbm_simplex2d (measured: 587 pixels over 1/255, 412 over 2/255)"},
+    {"hash_sin",
+     "as hash_pcg (1495 pixels over 1/255); elsewhere softpipe's sinf, within 2^-24 of llvmpipe's polynomial, moves the "
+     "hash by under 1/255 (39044 pixels differ in their bits)"},
+    {"hash_hoskins",
+     "as hash_pcg: 1703 pixels over 1/255 (hash_pcg's cell borders give 1495 on this plane; the other 208 not "
+     "analysed)"},
+    {"es_smooth9_tiles128",
+     "nine sine hashes per pixel (see es_random_square's bound), each able to cross fract's wrap with softpipe's sinf: "
+     "266 pixels over 1/255 (0.15%, up to 29/255)"},
+    {"lawlor_mandelbrot",
+     "softpipe's texcoords are an ulp off llvmpipe's (see perlin5) and the iteration makes an ulp a different escape "
+     "time near the set's boundary (1062 pixels over 1/255)"},
     {"lawlor_dots_moved",
      "dot centres read from tex1: softpipe filters with float weights where llvmpipe (and quadshade) round them "
      "to 1/256 and lerp in 8 bits (docs/design.md, Textures), so its dots move and their rims flip (1186 pixels)"},
@@ -600,6 +619,34 @@ TEST_CASE("built-ins probe: exact built-ins bit for bit as llvmpipe, rounded and
     CHECK(worst[1] < 2e-4);
     CHECK(worst[2] < 1e-5);
     CHECK(worst[3] < 1e-5);
+}
+
+TEST_CASE("sin and cos probe: llvmpipe's polynomial bit for bit, softpipe's C library sinf within half an ulp of 1 below 2^22",
+          "[reference][builtins][sin]") {
+    const Case probe{"sin_cos_probe", kPlane, "sin_cos_probe", 256, 256};
+    // Every kind of float argument, huge, denormal, infinite and NaN ones included (the probe's
+    // GLSL), and the sine hash of each: llvmpipe's to the bit (shading/number/sin_cos.h).
+    CHECK(differing_values(ours(probe, Derivatives::Fine, 256, 256), reference(probe, "llvmpipe", 256, 256)) == 0);
+
+    // softpipe calls the C library's sinf and cosf (glibc's: within an ulp of the true value),
+    // llvmpipe's polynomial is within 2^-24 of them (half an ulp of 1) for |a| < 2^22 and has
+    // no accuracy left beyond 2^24, where its reduction by multiples of pi/4 in float runs out.
+    const Framebuffer q = ours(probe, Derivatives::CoarseLower, 256, 256);
+    const Image sp = reference(probe, "softpipe", 256, 256);
+    CHECK(differing_values(q, sp, 0x1) == 0);  // the arguments themselves
+    std::size_t differ = 0, hash_differ = 0, compared = 0;
+    double worst = 0.0;
+    for (std::size_t p = 0; p < q.rgba.size(); p += 4) {
+        const float a = q.rgba[p];
+        for (int c = 1; c <= 2; ++c) differ += std::bit_cast<std::uint32_t>(q.rgba[p + c]) != std::bit_cast<std::uint32_t>(sp.rgba[p + c]);
+        if (!(std::abs(a) < 0x1p22f)) continue;
+        ++compared;
+        hash_differ += q.rgba[p + 3] != sp.rgba[p + 3];
+        for (int c = 1; c <= 2; ++c) worst = std::max(worst, std::abs(double(q.rgba[p + c]) - double(sp.rgba[p + c])));
+    }
+    std::printf("sin and cos vs softpipe: %zu of %zu values differ; for |a| < 2^22 (%zu pixels) at most %.3g, and %zu sine "
+                "hashes differ\n", differ, q.rgba.size() / 2, compared, worst, hash_differ);
+    CHECK(worst <= 0x1p-24);
 }
 
 TEST_CASE("discard probe: discarded fragments write nothing; derivatives after discard as llvmpipe", "[reference][discard]") {

@@ -394,17 +394,13 @@ TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": seed 001's f
                           << n.over_2 << " over 2/255, max " << n.max_steps << "/255, not bit-exact " << n.not_bit_exact);
     CHECK(n.covered == 128 * 128);
     CHECK(n.coverage_mismatch == 0);
-    // The lookups are llvmpipe's to the bit (the probes above); sin and cos are glibc's, within
-    // 6e-8 of llvmpipe's: measured, 586 of 16384 pixels not bit-exact, none by a step of 1/255.
+    // The lookups are llvmpipe's to the bit (the probes above), and so are sin and cos
+    // (shading/number/sin_cos.h; with the C library's, 586 of 16384 pixels were not bit-exact).
     // softpipe filters 3D textures with float weights where llvmpipe (and quadshade) round them
     // to 1/256 and lerp in 8 bits: a texel-level difference of up to 1/255 that the noise's
     // `* 2 - 1` and rotation amplify (measured: 1337 pixels over 1/255, 131 over 2/255, max
     // 4/255); counted in the CSV, its coverage held to the bar.
-    if (kDriver == GlDriver::Llvmpipe) {
-        CHECK(n.max_steps <= 1);
-        CHECK(double(n.over_1) <= 0.001 * double(n.covered));
-        CHECK(n.over_2 == 0);
-    }
+    if (kDriver == GlDriver::Llvmpipe) CHECK(n.not_bit_exact == 0);
 }
 
 #if defined(QUADSHADE_CONFORMANCE_LLVMPIPE)

@@ -324,7 +324,7 @@ TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[sc
         // These write a value (a derivative, a probe's result), not coverage, to alpha.
         static const std::set<std::string_view> kValueInAlpha = {
             "st_derivative_probe", "position_derivative_probe", "integer_probe", "integer_undefined_probe",
-            "bool_probe", "loop_probe", "discard_probe", "matrix_probe", "builtins_probe", "uniform_probe"};
+            "bool_probe", "loop_probe", "discard_probe", "matrix_probe", "builtins_probe", "uniform_probe", "sin_cos_probe"};
         if (kValueInAlpha.count(p->info().name)) continue;
         FrameRequest r;
         r.width = r.height = 32;
