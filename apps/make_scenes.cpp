@@ -251,8 +251,12 @@ qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
     volume.dims = 3, volume.depth = 32;
     s.textures.push_back(volume);
     const char* shaders[5] = {"improved_noise_loop", "improved_noise", "fast_noise", "improved_noise_loop", "fast_noise_volume"};
-    for (std::size_t i = 0; i < s.objects.size(); ++i) s.objects[i].shader = shaders[i];
-    s.objects[2].samplers = {{"noise3dSampler", 0}};
+    // Every material binds the volume, so that any of the scene's shaders can be drawn on any
+    // object (--shader, quadshade gallery); only fast_noise samples it.
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+        s.objects[i].shader = shaders[i];
+        s.objects[i].samplers = {{"noise3dSampler", 0}};
+    }
     return s;
 }
 

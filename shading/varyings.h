@@ -74,15 +74,20 @@ constexpr unsigned flat_fields() {
 }
 
 // Calls fn(component, index) for every float component of every field, index counting from 0.
+// Components are named at compile time (get<K>, not v[k]), so that after inlining each varying
+// stays in registers: a component picked at run time made the vector live in memory (the
+// rasterized simplex 2D square was 4% slower).
 template <class Tuple, class Fn>
-void for_each_component(Tuple&& fields, Fn&& fn) {
+[[gnu::always_inline]] inline void for_each_component(Tuple&& fields, Fn&& fn) {
     int index = 0;
     std::apply(
         [&](auto&... field) {
             [[maybe_unused]] auto one = [&](auto& f) {
                 using X = std::remove_reference_t<decltype(f)>;
                 if constexpr (glsl::AnyVector<X>) {
-                    for (int k = 0; k < X::N; ++k) fn(f[k], index++);
+                    [&]<int... K>(std::integer_sequence<int, K...>) {
+                        (fn(f.template get<K>(), index++), ...);
+                    }(std::make_integer_sequence<int, X::N>());
                 } else {
                     fn(f, index++);
                 }
