@@ -10,19 +10,14 @@
 
 #include <cmath>
 
+#include "shading/number/sin_cos.h"
+
 namespace qs {
 
 // Whether interpolation should fuse its multiply-adds to match llvmpipe on this machine: LLVM
 // fuses llvm.fmuladd when the CPU has FMA, whatever quadshade itself was compiled for (std::fma is
 // exact either way; without -mfma it is a library call, slower but the same numbers).
-inline bool fused_interpolation_default() {
-#if defined(__x86_64__) || defined(__i386__)
-    static const bool fma = __builtin_cpu_supports("fma");
-    return fma;
-#else
-    return false;
-#endif
-}
+inline bool fused_interpolation_default() { return llvmpipe_math::host_fuses(); }
 
 // The triangle-wide factors every plane of one triangle shares.
 struct PlaneSetup {

@@ -8,6 +8,7 @@
 // results (cvtps2dq, cvttps2dq, roundps), written with intrinsics where the ISA has them.
 
 #include "shading/glsl/texture.h"
+#include "shading/number/sin_cos.h"
 
 #include <algorithm>
 #include <bit>
@@ -121,11 +122,9 @@ Floats round_even(const Floats& v) {
 }
 Floats abs(const Floats& v) { return from_bits(bits(v) & 0x7fffffff); }
 
-// llvmpipe's lerps are llvm.fmuladd, which its JIT fuses on CPUs with FMA; so do we there.
-[[maybe_unused]] bool host_fuses() {
-    static const bool fma = __builtin_cpu_supports("fma");
-    return fma;
-}
+// llvmpipe's lerps are llvm.fmuladd, which its JIT fuses on CPUs with FMA; so do we there
+// (llvmpipe_math::host_fuses).
+using llvmpipe_math::host_fuses;
 // w * (b - a) + a, fused where llvmpipe fuses it.
 Floats lerp(const Floats& w, const Floats& a, const Floats& b) {
     const Floats d = b - a;
