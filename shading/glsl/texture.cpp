@@ -217,7 +217,10 @@ struct LevelChoice {
 // level the general one, which rounds NEAREST's level to even.
 LevelChoice choose_levels(const Texture& tex, const Floats* rho2_lanes, const Floats* bias_lanes, const Floats* lod_lanes) {
     const SamplerState& st = tex.sampler;
-    LevelChoice c{};
+    // Each field set on its own: `c{}` compiled to a memset through the stack.
+    LevelChoice c;
+    c.level0 = c.level1 = Ints{};
+    c.blend = Floats{};
     const int last = int(tex.levels.size()) - 1;
     if (!rho2_lanes && !lod_lanes) {  // min == mag and no mipmaps: no level of detail at all
         c.linear = splat(st.min == Filter::Linear ? -1 : 0);
@@ -287,7 +290,7 @@ struct Axis {
 // lp_bld_sample_aos.c: the 8-bit fixed-point path, REPEAT and CLAMP_TO_EDGE. Linear filtering
 // along one axis (lp_build_sample_wrap_linear_int); the same for s, t and r.
 Axis aos_linear(const Floats& s, const Ints& size, Wrap wrap, bool pot) {
-    Axis a{};
+    Axis a;
     const Ints last = size - 1;
     // Linear: 8 fractional bits of s * size - 0.5, rounded to even.
     Ints u;
@@ -728,8 +731,9 @@ void throw_lod_without_quads() {
 
 namespace {
 // Lanes base..base+L-1 of a lookup's array, zero past its end; and back.
-Floats load_lanes(const float* p, int base, int n) {
-    Floats r{};
+template <class V = Floats, class T>
+V load_lanes(const T* p, int base, int n) {
+    V r{};
     if (n == L) {
         std::memcpy(&r, p + base, sizeof r);
     } else {
@@ -783,20 +787,21 @@ template <int Dims>
 }
 
 // lp_build_fetch_texel: the level is lod + first level (0); a lane outside the level's size or
-// a level outside the texture's reads zero, alpha included.
+// a level outside the texture's reads zero, alpha included. A gather per register, from texel 0
+// where the lane reads nothing.
 void fetch(const Texture& tex, const Fetch& f) {
-    const int last = int(tex.levels.size()) - 1;
-    for (int i = 0; i < f.lanes; ++i) {
-        const int level = f.level[i];
-        std::uint32_t texel = 0;
-        if (level >= 0 && level <= last) {
-            const Texture::Level& lv = tex.levels[std::size_t(level)];
-            const int x = f.x[i], y = f.y[i], z = f.z ? f.z[i] : 0;
-            if (x >= 0 && x < lv.width && y >= 0 && y < lv.height && z >= 0 && z < lv.depth) {
-                texel = tex.texels[std::size_t(lv.offset) + (std::size_t(z) * std::size_t(lv.height) + std::size_t(y)) * std::size_t(lv.width) + std::size_t(x)];
-            }
-        }
-        for (int c = 0; c < 4; ++c) f.rgba[std::size_t(c)][i] = float((texel >> (8 * c)) & 255u) * float(1.0 / 255.0);
+    const Ints last = splat(int(tex.levels.size()) - 1);
+    for (int base = 0; base < f.lanes; base += L) {
+        const int n = std::min(f.lanes - base, L);
+        const Ints level = load_lanes<Ints>(f.level, base, n);
+        const Ints x = load_lanes<Ints>(f.x, base, n), y = load_lanes<Ints>(f.y, base, n);
+        const Ints z = f.z ? load_lanes<Ints>(f.z, base, n) : Ints{};
+        const Ints in_levels = (level >= 0) & (level <= last);
+        const LevelLanes lv = level_lanes(tex, level & in_levels);
+        const Ints in = in_levels & (x >= 0) & (x < lv.width) & (y >= 0) & (y < lv.height) & (z >= 0) & (z < lv.depth);
+        const Ints index = lv.offset + ((z & in) * lv.height + (y & in)) * lv.width + (x & in);
+        const Uints texel = gather(tex.texels.data(), index & in) & Uints(in);
+        for (int c = 0; c < 4; ++c) store_lanes(f.rgba[std::size_t(c)], base, n, unorm(channel(texel, c)));
     }
 }
 
