@@ -58,8 +58,15 @@ Floats minps(const Floats& a, const Floats& b) { return a < b ? a : b; }
 Floats maxps(const Floats& a, const Floats& b) { return a > b ? a : b; }
 Ints imin(const Ints& a, const Ints& b) { return a < b ? a : b; }
 bool any(const Ints& m) {
+#if defined(__AVX__)
+    static_assert(sizeof m == sizeof(__m256i));
+    __m256i v;
+    std::memcpy(&v, &m, sizeof v);
+    return !_mm256_testz_si256(v, v);  // vptest: no trip through memory
+#else
     Ints zero{};
     return std::memcmp(&m, &zero, sizeof m) != 0;
+#endif
 }
 Ints imax(const Ints& a, const Ints& b) { return a > b ? a : b; }
 
