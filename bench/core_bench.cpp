@@ -6,6 +6,7 @@
 // The same for an integer-hash shader (PCG value noise) and a loop that breaks per pixel (the
 // Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
 // (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
+// And texture2D's lanes on three samplers (BM_texture2D), for the sampler's own speed.
 // Usage: quadshade-bench-core [Google Benchmark flags]
 
 #include <benchmark/benchmark.h>
@@ -245,6 +246,38 @@ void BM_raster(benchmark::State& state, const char* shader, int threads) {
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// ---- texture lookups (shading/glsl/texture.cpp) ------------------------------------------------
+// texture2D over the grid, st in [0,1]^2 as on Table 1.1's plane, from a 256x256 texture of random
+// texels (the plane's image size): bilinear CLAMP_TO_EDGE as single_texture (8-bit path, no level
+// of detail), trilinear REPEAT with mipmaps (one level of detail per quad, two levels), and
+// MIRRORED_REPEAT (the float path).
+enum class TextureCase { Bilinear, Trilinear, Mirrored };
+const sampler2D& bench_texture(TextureCase c) {
+    static const std::vector<std::uint8_t> rgba = [] {
+        std::vector<std::uint8_t> v(256 * 256 * 4);
+        std::uint32_t x = 12345;
+        for (auto& b : v) b = std::uint8_t((x = x * 1664525u + 1013904223u) >> 24);
+        return v;
+    }();
+    static const sampler2D bilinear(256, 256, rgba.data(), SamplerState{});
+    static const sampler2D trilinear(256, 256, rgba.data(),
+                                     SamplerState{.wrap_s = Wrap::Repeat, .wrap_t = Wrap::Repeat, .mip = MipFilter::Linear});
+    static const sampler2D mirrored(256, 256, rgba.data(),
+                                    SamplerState{.wrap_s = Wrap::MirroredRepeat, .wrap_t = Wrap::MirroredRepeat});
+    return c == TextureCase::Bilinear ? bilinear : c == TextureCase::Trilinear ? trilinear : mirrored;
+}
+template <class F, TextureCase C>
+void BM_texture2D(benchmark::State& state) {
+    const sampler2D& tex = bench_texture(C);
+    // Trilinear: st * 12 minifies the 256x256 texture, to a level between 1 and 3 (the grid's
+    // lanes are not laid out as quads, so the level is only roughly the screen's).
+    const float scale = C == TextureCase::Trilinear ? 12.0f : 1.0f;
+    run_grid<F>(state, [&](const vec2<F>& st) {
+        const vec4<F> c = texture2D(tex, st * scale);
+        return c.x + c.y + c.z + c.w;
+    });
+}
+
 // Keeps each benchmark's rate so main can print the ratios of this very run.
 class RateReporter : public benchmark::ConsoleReporter {
 public:
@@ -281,6 +314,11 @@ BENCHMARK_CAPTURE(BM_raster, mandelbrot_1thread, "mandelbrot", 1)->Unit(benchmar
 BENCHMARK_TEMPLATE(BM_sin, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_plain, plain_sin)->Name("BM_plain_stdx_sin")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_raster, es_smooth9_tiles128_1thread, "es_smooth9_tiles128", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK_TEMPLATE(BM_texture2D, Pixels<float, 16>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Trilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Mirrored)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);

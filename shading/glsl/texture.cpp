@@ -3,9 +3,12 @@
 // makes the levels (util_gen_mipmap, u_blitter.c).
 // Every rule here was checked bit for bit against OSMesa (docs/design.md, "Textures").
 //
-// Sixteen lanes at a time as GCC/Clang generic vectors; the conversions, rounding and gathers
-// llvmpipe's code compiles to are x86 instructions with the same rounding and out-of-range
-// results (cvtps2dq, cvttps2dq, roundps), written with intrinsics where the ISA has them.
+// Eight lanes at a time as GCC/Clang generic vectors of 256 bits, one AVX2 register each (wider
+// vectors, on a machine without AVX-512, live on the stack and ran at half the speed); the
+// conversions, rounding and gathers llvmpipe's code compiles to are x86 instructions with the
+// same rounding and out-of-range results (cvtps2dq, cvttps2dq, roundps, vpgatherdd), written
+// with intrinsics where the ISA has them and lane by lane where it has not (the portable build:
+// the same bits).
 
 #include "shading/glsl/texture.h"
 #include "shading/number/sin_cos.h"
@@ -20,15 +23,16 @@
 
 #include <immintrin.h>
 
-// Sixteen-lane vectors are passed between this file's functions only (all inlined or internal):
-// GCC's note that their calling convention differs with AVX-512 concerns nothing here.
+// 256-bit vectors are passed between this file's functions only (all inlined or internal): GCC's
+// note that their calling convention differs with AVX concerns nothing here.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace qs::glsl {
 
 namespace {
 
-constexpr int L = texture_detail::kMaxLanes;
+// Eight lanes: one AVX2 register of floats, llvmpipe's vector of two quads.
+constexpr int L = 8;
 typedef float Floats __attribute__((vector_size(L * sizeof(float))));
 typedef std::int32_t Ints __attribute__((vector_size(L * sizeof(std::int32_t))));
 typedef std::uint32_t Uints __attribute__((vector_size(L * sizeof(std::uint32_t))));
@@ -54,12 +58,19 @@ Floats minps(const Floats& a, const Floats& b) { return a < b ? a : b; }
 Floats maxps(const Floats& a, const Floats& b) { return a > b ? a : b; }
 Ints imin(const Ints& a, const Ints& b) { return a < b ? a : b; }
 bool any(const Ints& m) {
+#if defined(__AVX__)
+    static_assert(sizeof m == sizeof(__m256i));
+    __m256i v;
+    std::memcpy(&v, &m, sizeof v);
+    return !_mm256_testz_si256(v, v);  // vptest: no trip through memory
+#else
     Ints zero{};
     return std::memcmp(&m, &zero, sizeof m) != 0;
+#endif
 }
 Ints imax(const Ints& a, const Ints& b) { return a > b ? a : b; }
 
-// Applies a 128-, 256- or 512-bit intrinsic to every register's worth of a 16-lane vector.
+// Applies a 128- or 256-bit intrinsic to every register's worth of an 8-lane vector.
 template <class Out, class In, class Op>
 Out per_register(const In& v, Op op) {
     Out r;
@@ -73,9 +84,7 @@ Out per_register(const In& v, Op op) {
 
 // cvtps2dq: round to nearest even (the default MXCSR mode); NaN and out of range give INT_MIN.
 Ints cvt_rne(const Floats& v) {
-#if defined(__AVX512F__)
-    return per_register<Ints>(v, [](const char* p) { return _mm512_cvtps_epi32(_mm512_loadu_ps(reinterpret_cast<const float*>(p))); });
-#elif defined(__AVX__)
+#if defined(__AVX__)
     return per_register<Ints>(v, [](const char* p) { return _mm256_cvtps_epi32(_mm256_loadu_ps(reinterpret_cast<const float*>(p))); });
 #else
     return per_register<Ints>(v, [](const char* p) { return _mm_cvtps_epi32(_mm_loadu_ps(reinterpret_cast<const float*>(p))); });
@@ -83,9 +92,7 @@ Ints cvt_rne(const Floats& v) {
 }
 // cvttps2dq: toward zero; NaN and out of range give INT_MIN.
 Ints cvt_trunc(const Floats& v) {
-#if defined(__AVX512F__)
-    return per_register<Ints>(v, [](const char* p) { return _mm512_cvttps_epi32(_mm512_loadu_ps(reinterpret_cast<const float*>(p))); });
-#elif defined(__AVX__)
+#if defined(__AVX__)
     return per_register<Ints>(v, [](const char* p) { return _mm256_cvttps_epi32(_mm256_loadu_ps(reinterpret_cast<const float*>(p))); });
 #else
     return per_register<Ints>(v, [](const char* p) { return _mm_cvttps_epi32(_mm_loadu_ps(reinterpret_cast<const float*>(p))); });
@@ -93,11 +100,7 @@ Ints cvt_trunc(const Floats& v) {
 }
 // roundps toward -inf, and to nearest even.
 Floats floor(const Floats& v) {
-#if defined(__AVX512F__)
-    return per_register<Floats>(v, [](const char* p) {
-        return _mm512_roundscale_ps(_mm512_loadu_ps(reinterpret_cast<const float*>(p)), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
-    });
-#elif defined(__AVX__)
+#if defined(__AVX__)
     return per_register<Floats>(v, [](const char* p) { return _mm256_floor_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p))); });
 #else
     Floats r;
@@ -106,11 +109,7 @@ Floats floor(const Floats& v) {
 #endif
 }
 Floats round_even(const Floats& v) {
-#if defined(__AVX512F__)
-    return per_register<Floats>(v, [](const char* p) {
-        return _mm512_roundscale_ps(_mm512_loadu_ps(reinterpret_cast<const float*>(p)), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
-    });
-#elif defined(__AVX__)
+#if defined(__AVX__)
     return per_register<Floats>(v, [](const char* p) {
         return _mm256_round_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p)), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
     });
@@ -128,14 +127,7 @@ using llvmpipe_math::host_fuses;
 // w * (b - a) + a, fused where llvmpipe fuses it.
 Floats lerp(const Floats& w, const Floats& a, const Floats& b) {
     const Floats d = b - a;
-#if defined(__AVX512F__)
-    return per_register<Floats>(w, [&](const char* p) {
-        const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&w);
-        return _mm512_fmadd_ps(_mm512_loadu_ps(reinterpret_cast<const float*>(p)),
-                               _mm512_loadu_ps(reinterpret_cast<const float*>(reinterpret_cast<const char*>(&d) + i)),
-                               _mm512_loadu_ps(reinterpret_cast<const float*>(reinterpret_cast<const char*>(&a) + i)));
-    });
-#elif defined(__FMA__)
+#if defined(__FMA__)
     return per_register<Floats>(w, [&](const char* p) {
         const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&w);
         return _mm256_fmadd_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p)),
@@ -152,11 +144,7 @@ Floats lerp(const Floats& w, const Floats& a, const Floats& b) {
 
 // texels[index] for every lane: one gather instruction per register where the ISA has one.
 Uints gather(const std::uint32_t* texels, const Ints& index) {
-#if defined(__AVX512F__)
-    return per_register<Uints>(index, [&](const char* p) {
-        return _mm512_i32gather_epi32(_mm512_loadu_si512(p), texels, 4);
-    });
-#elif defined(__AVX2__)
+#if defined(__AVX2__)
     return per_register<Uints>(index, [&](const char* p) {
         return _mm256_i32gather_epi32(reinterpret_cast<const int*>(texels), _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)), 4);
     });
@@ -175,12 +163,7 @@ Uints gather(const std::uint32_t* texels, const Ints& index) {
 // (w (d << 7) + 2^14) >> 15, which is the same; the sum stays in [0, 255], so nothing carries.
 typedef std::int16_t Shorts __attribute__((vector_size(L * sizeof(std::int32_t))));
 Shorts mulhrs(const Shorts& a, const Shorts& b) {
-#if defined(__AVX512BW__)
-    return per_register<Shorts>(a, [&](const char* p) {
-        const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&a);
-        return _mm512_mulhrs_epi16(_mm512_loadu_si512(p), _mm512_loadu_si512(reinterpret_cast<const char*>(&b) + i));
-    });
-#elif defined(__AVX2__)
+#if defined(__AVX2__)
     return per_register<Shorts>(a, [&](const char* p) {
         const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&a);
         return _mm256_mulhrs_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)),
@@ -239,28 +222,26 @@ struct LevelChoice {
 // added to its level; `lod`: an explicit level (rho2 and bias unused). An implicit level takes
 // the fast paths (no fraction at all for NEAREST: the exponent trick); a bias or an explicit
 // level the general one, which rounds NEAREST's level to even.
-LevelChoice choose_levels(const Texture& tex, const float* rho2_lanes, const float* bias_lanes, const float* lod_lanes) {
+LevelChoice choose_levels(const Texture& tex, const Floats* rho2_lanes, const Floats* bias_lanes, const Floats* lod_lanes) {
     const SamplerState& st = tex.sampler;
-    LevelChoice c{};
+    // Each field set on its own: `c{}` compiled to a memset through the stack.
+    LevelChoice c;
+    c.level0 = c.level1 = Ints{};
+    c.blend = Floats{};
     const int last = int(tex.levels.size()) - 1;
     if (!rho2_lanes && !lod_lanes) {  // min == mag and no mipmaps: no level of detail at all
         c.linear = splat(st.min == Filter::Linear ? -1 : 0);
         return c;
     }
-    auto load = [](const float* p) {
-        Floats v;
-        std::memcpy(&v, p, sizeof v);
-        return v;
-    };
     Ints positive, ipart{};
     Floats fpart{};
     if (!lod_lanes && !bias_lanes && st.mip != MipFilter::Linear) {
-        const Floats rho2 = load(rho2_lanes);
+        const Floats rho2 = *rho2_lanes;
         ipart = exponent(rho2, 1) >> 1;  // lp_build_ilog2_sqrt: level k from rho >= sqrt(2) 2^(k-1)
         positive = rho2 > 1.0f;
     } else {
-        Floats lod = lod_lanes ? load(lod_lanes) : fast_log2(load(rho2_lanes)) * 0.5f;
-        if (bias_lanes && !lod_lanes) lod = lod + load(bias_lanes);
+        Floats lod = lod_lanes ? *lod_lanes : fast_log2(*rho2_lanes) * 0.5f;
+        if (bias_lanes && !lod_lanes) lod = lod + *bias_lanes;
         positive = lod > 0.0f;
         if (st.mip == MipFilter::Nearest) {
             ipart = cvt_rne(lod);  // the general path rounds to even, 0.5 to level 0
@@ -316,7 +297,7 @@ struct Axis {
 // lp_bld_sample_aos.c: the 8-bit fixed-point path, REPEAT and CLAMP_TO_EDGE. Linear filtering
 // along one axis (lp_build_sample_wrap_linear_int); the same for s, t and r.
 Axis aos_linear(const Floats& s, const Ints& size, Wrap wrap, bool pot) {
-    Axis a{};
+    Axis a;
     const Ints last = size - 1;
     // Linear: 8 fractional bits of s * size - 0.5, rounded to even.
     Ints u;
@@ -581,14 +562,14 @@ void soa_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, co
 }
 
 // llvmpipe decides per 8-lane vector whether a lookup on the float path with different min and
-// mag filters runs its linear code: every lane of a vector where one lane filters linearly. An
-// OR across each half of the batch, in three shuffles.
+// mag filters runs its linear code: every lane of a vector where one lane filters linearly. Our
+// lanes are one such vector (an OR across them, in three shuffles) when they are quads.
 Ints any_per_vector(const Ints& linear, bool quad_vectors) {
-    static_assert(L == 16);
+    static_assert(L == 8);
     if (!quad_vectors) return linear;
-    Ints r = linear | __builtin_shufflevector(linear, linear, 1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14);
-    r |= __builtin_shufflevector(r, r, 2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13);
-    return r | __builtin_shufflevector(r, r, 4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11);
+    Ints r = linear | __builtin_shufflevector(linear, linear, 1, 0, 3, 2, 5, 4, 7, 6);
+    r |= __builtin_shufflevector(r, r, 2, 3, 0, 1, 6, 7, 4, 5);
+    return r | __builtin_shufflevector(r, r, 4, 5, 6, 7, 0, 1, 2, 3);
 }
 
 // The 8-bit path (lp_bld_sample_aos.c) when llvmpipe takes it (lp_build_sample_soa_code): every
@@ -604,12 +585,12 @@ bool takes_8bit_path(const Texture& tex, bool per_pixel_lod) {
 }
 
 template <int Dims>
-Sample sample_lanes(const Texture& tex, const Coords<Dims>& co, const float* rho2, const float* bias, const float* lod,
+Sample sample_lanes(const Texture& tex, const Coords<Dims>& co, const Floats* rho2, const Floats* bias, const Floats* lod,
                     bool quad_vectors, bool gradient) {
     const SamplerState& st = tex.sampler;
     const LevelChoice lc = choose_levels(tex, rho2, bias, lod);
     const bool blend = st.mip == MipFilter::Linear && any(bits(lc.blend) != 0);
-    Sample out{};
+    Sample out;  // out.d only written (and read) with `gradient`
     if (takes_8bit_path<Dims>(tex, bias || lod)) {
         // The second level blends in with an 8-bit weight truncated from the fraction
         // (lp_build_sample_mipmap).
@@ -756,37 +737,54 @@ void throw_lod_without_quads() {
 }
 
 namespace {
+// Lanes base..base+L-1 of a lookup's array, zero past its end; and back.
+template <class V = Floats, class T>
+V load_lanes(const T* p, int base, int n) {
+    V r{};
+    if (n == L) {
+        std::memcpy(&r, p + base, sizeof r);
+    } else {
+        for (int i = 0; i < n; ++i) r[i] = p[base + i];
+    }
+    return r;
+}
+void store_lanes(float* p, int base, int n, const Floats& v) {
+    if (n == L) {
+        std::memcpy(p + base, &v, sizeof v);
+    } else {
+        for (int i = 0; i < n; ++i) p[base + i] = v[i];
+    }
+}
+
+// One register's worth of a lookup's lanes, from `base`.
 template <int Dims>
-[[gnu::always_inline]] inline void sample_dims(const Texture& tex, const Lookup& l) {
-    auto lanes = [&](const float* in) {
-        alignas(64) float v[L] = {};
-        std::copy_n(in, l.lanes, v);
-        Floats r;
-        std::memcpy(&r, v, sizeof r);
-        return r;
-    };
-    alignas(64) float rho2[L] = {}, bias[L] = {}, lod[L] = {};
-    if (l.rho2) std::copy_n(l.rho2, l.lanes, rho2);
-    if (l.bias) std::copy_n(l.bias, l.lanes, bias);
-    if (l.lod) std::copy_n(l.lod, l.lanes, lod);
+[[gnu::always_inline]] inline void sample_register(const Texture& tex, const Lookup& l, int base) {
+    const int n = std::min(l.lanes - base, L);
+    const Floats rho2 = l.rho2 ? load_lanes(l.rho2, base, n) : Floats{};
+    const Floats bias = l.bias ? load_lanes(l.bias, base, n) : Floats{};
+    const Floats lod = l.lod ? load_lanes(l.lod, base, n) : Floats{};
     Coords<Dims> co;
-    co.c[0] = lanes(l.s), co.c[1] = lanes(l.t);
-    if constexpr (Dims == 3) co.c[2] = lanes(l.r);
+    co.c[0] = load_lanes(l.s, base, n), co.c[1] = load_lanes(l.t, base, n);
+    if constexpr (Dims == 3) co.c[2] = load_lanes(l.r, base, n);
     const bool gradient = l.d_ds[0] != nullptr;
-    const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? rho2 : nullptr, l.bias ? bias : nullptr, l.lod ? lod : nullptr,
+    const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? &rho2 : nullptr, l.bias ? &bias : nullptr, l.lod ? &lod : nullptr,
                                         l.quad_vectors, gradient);
     const std::array<float*, 4>* d_out[3] = {&l.d_ds, &l.d_dt, &l.d_dr};
     for (int c = 0; c < 4; ++c) {
-        std::memcpy(l.rgba[std::size_t(c)], &r.rgba[c], sizeof(float) * std::size_t(l.lanes));
+        store_lanes(l.rgba[std::size_t(c)], base, n, r.rgba[c]);
         if (gradient) {
-            for (int i = 0; i < Dims; ++i) std::memcpy((*d_out[i])[std::size_t(c)], &r.d[i][c], sizeof(float) * std::size_t(l.lanes));
+            for (int i = 0; i < Dims; ++i) store_lanes((*d_out[i])[std::size_t(c)], base, n, r.d[i][c]);
         }
     }
 }
+template <int Dims>
+[[gnu::always_inline]] inline void sample_dims(const Texture& tex, const Lookup& l) {
+    for (int base = 0; base < l.lanes; base += L) sample_register<Dims>(tex, l, base);
+}
 }  // namespace
 
-// Flattened: the helpers above become one straight body (called as functions, their 64-byte
-// vectors would travel through memory on targets without AVX-512).
+// Flattened: the helpers above become one straight body (called as functions, their vectors
+// would travel through memory).
 [[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
     if (tex.dims == 3) {
         sample_dims<3>(tex, l);
@@ -796,20 +794,21 @@ template <int Dims>
 }
 
 // lp_build_fetch_texel: the level is lod + first level (0); a lane outside the level's size or
-// a level outside the texture's reads zero, alpha included.
+// a level outside the texture's reads zero, alpha included. A gather per register, from texel 0
+// where the lane reads nothing.
 void fetch(const Texture& tex, const Fetch& f) {
-    const int last = int(tex.levels.size()) - 1;
-    for (int i = 0; i < f.lanes; ++i) {
-        const int level = f.level[i];
-        std::uint32_t texel = 0;
-        if (level >= 0 && level <= last) {
-            const Texture::Level& lv = tex.levels[std::size_t(level)];
-            const int x = f.x[i], y = f.y[i], z = f.z ? f.z[i] : 0;
-            if (x >= 0 && x < lv.width && y >= 0 && y < lv.height && z >= 0 && z < lv.depth) {
-                texel = tex.texels[std::size_t(lv.offset) + (std::size_t(z) * std::size_t(lv.height) + std::size_t(y)) * std::size_t(lv.width) + std::size_t(x)];
-            }
-        }
-        for (int c = 0; c < 4; ++c) f.rgba[std::size_t(c)][i] = float((texel >> (8 * c)) & 255u) * float(1.0 / 255.0);
+    const Ints last = splat(int(tex.levels.size()) - 1);
+    for (int base = 0; base < f.lanes; base += L) {
+        const int n = std::min(f.lanes - base, L);
+        const Ints level = load_lanes<Ints>(f.level, base, n);
+        const Ints x = load_lanes<Ints>(f.x, base, n), y = load_lanes<Ints>(f.y, base, n);
+        const Ints z = f.z ? load_lanes<Ints>(f.z, base, n) : Ints{};
+        const Ints in_levels = (level >= 0) & (level <= last);
+        const LevelLanes lv = level_lanes(tex, level & in_levels);
+        const Ints in = in_levels & (x >= 0) & (x < lv.width) & (y >= 0) & (y < lv.height) & (z >= 0) & (z < lv.depth);
+        const Ints index = lv.offset + ((z & in) * lv.height + (y & in)) * lv.width + (x & in);
+        const Uints texel = gather(tex.texels.data(), index & in) & Uints(in);
+        for (int c = 0; c < 4; ++c) store_lanes(f.rgba[std::size_t(c)], base, n, unorm(channel(texel, c)));
     }
 }
 

@@ -261,12 +261,13 @@ struct Case {
     std::array<std::array<float, kBatchLanes>, 3> c;
     std::array<float, kBatchLanes> rho2, extra;
     int lod_kind;  // 0 implicit, 1 bias, 2 explicit
+    int lanes = kBatchLanes;  // the lookup's first lanes (the sampler works a register of 8 at a time)
 };
 
 void check_case(const Case& k) {
     std::array<std::array<float, kBatchLanes>, 4> rgba{};
     texture_detail::Lookup l;
-    l.lanes = kBatchLanes;
+    l.lanes = k.lanes;
     l.s = k.c[0].data(), l.t = k.c[1].data();
     if (k.tex->dims == 3) l.r = k.c[2].data();
     const bool implicit = k.lod_kind != 2 && k.tex->needs_lod();
@@ -275,7 +276,7 @@ void check_case(const Case& k) {
     l.lod = k.lod_kind == 2 ? k.extra.data() : nullptr;
     for (std::size_t ch = 0; ch < 4; ++ch) l.rgba[ch] = rgba[ch].data();
     texture_detail::sample(*k.tex, l);
-    for (std::size_t i = 0; i < kBatchLanes; ++i) {
+    for (std::size_t i = 0; i < std::size_t(k.lanes); ++i) {
         const std::array<float, 3> c{k.c[0][i], k.c[1][i], k.c[2][i]};
         const auto want = oracle(*k.tex, c, l.rho2 ? &k.rho2[i] : nullptr, l.bias ? &k.extra[i] : nullptr, l.lod ? &k.extra[i] : nullptr);
         for (std::size_t ch = 0; ch < 4; ++ch) {
@@ -311,7 +312,8 @@ TEST_CASE("texture lookups: the lanes equal a scalar oracle of llvmpipe's rules,
         const sampler3D t3 = three ? sampler3D(w, h, d, texels.data(), s) : sampler3D();
         const Texture& tex = three ? static_cast<const Texture&>(t3) : t2;
         for (int lod_kind = 0; lod_kind < 3; ++lod_kind) {
-            Case k{&tex, {}, {}, {}, lod_kind};
+            constexpr int kLanes[] = {kBatchLanes, kBatchLanes, 5, kBatchLanes, 12, 1, 8, 9};
+            Case k{&tex, {}, {}, {}, lod_kind, kLanes[(round * 3 + lod_kind) % 8]};
             for (std::size_t i = 0; i < kBatchLanes; ++i) {
                 for (auto& axis : k.c) axis[i] = random_coordinate(rng);
                 k.rho2[i] = std::exp2(log_rho(rng));
@@ -399,6 +401,58 @@ TEST_CASE("textureSize and texelFetch: the level's size, zero outside; texels as
         CHECK(rgba[c][4] == float((t >> (8 * c)) & 255u) * float(1.0 / 255.0));
         CHECK(rgba[c][5] == 0.0f);  // no level 4
     }
+}
+
+TEST_CASE("texelFetch: every lane as a scalar reading of the level, zero outside, any count of lanes", "[textures]") {
+    std::mt19937 rng(11);
+    const auto texels = random_texels(rng, 13 * 7 * 5);
+    SamplerState mipmapped;
+    mipmapped.mip = MipFilter::Linear;
+    const sampler2D flat(13, 7, texels.data(), {}), flat_mips(13, 7, texels.data(), mipmapped);
+    const sampler3D volume(13, 7, 5, texels.data(), mipmapped);
+    const std::int32_t extremes[] = {std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max(),
+                                     -1, 1 << 20, -(1 << 20), 65536};
+    int lanes_checked = 0;
+    for (int round = 0; round < 300; ++round) {
+        const Texture* choices[3] = {&flat, &flat_mips, &volume};
+        const Texture& tex = *choices[round % 3];
+        const int lanes = 1 + round % kBatchLanes;
+        std::array<std::int32_t, kBatchLanes> c[3], level;
+        auto coordinate = [&](int size) {
+            const int kind = int(rng() % 8);
+            return kind == 0 ? extremes[rng() % 6] : std::int32_t(int(rng() % unsigned(size + 4)) - 2);
+        };
+        for (int i = 0; i < kBatchLanes; ++i) {
+            c[0][std::size_t(i)] = coordinate(tex.width), c[1][std::size_t(i)] = coordinate(tex.height);
+            c[2][std::size_t(i)] = coordinate(tex.depth);
+            level[std::size_t(i)] = rng() % 8 == 0 ? extremes[rng() % 6] : std::int32_t(int(rng() % 6) - 1);
+        }
+        std::array<std::array<float, kBatchLanes>, 4> rgba;
+        for (auto& ch : rgba) ch.fill(-1.0f);  // lanes past the lookup's end stay as they were
+        texture_detail::Fetch f;
+        f.lanes = lanes, f.x = c[0].data(), f.y = c[1].data(), f.z = tex.dims == 3 ? c[2].data() : nullptr, f.level = level.data();
+        for (std::size_t ch = 0; ch < 4; ++ch) f.rgba[ch] = rgba[ch].data();
+        texture_detail::fetch(tex, f);
+        for (std::size_t i = 0; i < kBatchLanes; ++i) {
+            const int x = c[0][i], y = c[1][i], z = tex.dims == 3 ? c[2][i] : 0, l = level[i];
+            std::uint32_t want = 0;
+            if (l >= 0 && l < int(tex.levels.size())) {
+                const Texture::Level& lv = tex.levels[std::size_t(l)];
+                if (x >= 0 && x < lv.width && y >= 0 && y < lv.height && z >= 0 && z < lv.depth) {
+                    want = tex.texels[std::size_t(lv.offset) + (std::size_t(z) * std::size_t(lv.height) + std::size_t(y)) * std::size_t(lv.width) + std::size_t(x)];
+                }
+            }
+            for (std::size_t ch = 0; ch < 4; ++ch) {
+                INFO("dims " << tex.dims << " levels " << tex.levels.size() << " lanes " << lanes << " lane " << i << " texel (" << x
+                             << ", " << y << ", " << z << ") level " << l << " channel " << ch);
+                const float expected = int(i) < lanes ? float((want >> (8 * ch)) & 255u) * float(1.0 / 255.0) : -1.0f;
+                REQUIRE(std::bit_cast<std::uint32_t>(rgba[ch][i]) == std::bit_cast<std::uint32_t>(expected));
+            }
+            lanes_checked += int(i) < lanes;
+        }
+    }
+    static_assert(kBatchLanes == 16);
+    CHECK(lanes_checked == 18 * (16 * 17 / 2) + 12 * 13 / 2);  // 1..16 lanes, 300 rounds
 }
 
 namespace {
