@@ -6,7 +6,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS_IN(kSeed001, NoiseBumps, NoiseBumpsHeightMap, BakedLit)
+QUADSHADE_SHADERS_IN(kSeed001, NoiseBumps, NoiseBumpsHeightMap, NoiseBumpsLit, BakedLit)
 QUADSHADE_HEIGHT_FIELD(NoiseBumps, NoiseBumpsHeightMap)
 
 }  // namespace qs::shaders

@@ -6,6 +6,7 @@
 
 #include "shading/glsl.h"
 #include "shading/noise/simplex3d.h"
+#include "shading/noise/simplex3d_grad.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
 #include "shading/shaders/vertex_stages.h"
@@ -77,6 +78,32 @@ struct NoiseBumpsHeightMap {
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         return vec4<F>(vec3<F>(Height::height(in.P)), 1.0f);
+    }
+};
+
+// noise_bumps_lit.frag: the live counterpart of noise_bumps baked and drawn by baked_lit.
+struct NoiseBumpsLit {
+    static constexpr ShaderInfo info{
+        "noise_bumps_lit", "noise_bumps lit live: the height's analytic gradient bends the face normal (cross(dFdx(P), dFdy(P))), Lambert as baked_lit",
+        Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = false},
+        {"shaders/surface_point.vert"},
+        {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/noise_bumps_lit.frag"},
+        Simplex3dSmooth::glsl_defines};
+    using VertexStage = SurfacePoint;
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        using noise::snoise3_grad;
+        vec3<F> G1, G2, G3;
+        F n = snoise3_grad<Simplex3dSmooth>(3.0f * in.P, G1) + 0.5f * snoise3_grad<Simplex3dSmooth>(6.0f * in.P, G2) +
+              0.25f * snoise3_grad<Simplex3dSmooth>(12.0f * in.P, G3);
+        F h = 0.5f + 0.25f * n;
+        vec3<F> g = 0.25f * (3.0f * G1 + 3.0f * G2 + 3.0f * G3);
+        vec3<F> N = normalize(cross(dFdx(in.P), dFdy(in.P)));
+        vec3<F> bumped = normalize(N - 0.05f * (g - dot(g, N) * N));
+        vec3<F> L = vec3<F>(0.2873479f, 0.7662610f, 0.5746958f);
+        F diffuse = max(dot(bumped, L), 0.0f);
+        vec3<F> color = mix(vec3<F>(0.35f, 0.25f, 0.2f), vec3<F>(0.85f, 0.8f, 0.7f), h);
+        return vec4<F>(color * (0.2f + 0.8f * diffuse), 1.0f);
     }
 };
 
