@@ -360,7 +360,7 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
         "HOW",
         "the normal map from the height's gradient through Dual2 (analytic, the default) or from\n"
         "three heights and a cross product (finite: seed 001's way)");
-    cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-3)")
+    cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-4)")
         ->check(CLI::PositiveNumber & kFinite)->option_text("E");
     a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,
                                                {{"float", Precision::Float}, {"double", Precision::Double}}, "P",

@@ -28,7 +28,7 @@ void check_request(const NormalBakeRequest& r) {
         throw std::invalid_argument("a skirt must be 0 to " + std::to_string(kMaxSkirt) + " texels wide, got " +
                                     std::to_string(r.skirt));
     }
-    if (!(std::isfinite(r.step) && r.step > 0.0)) {
+    if (r.method == NormalMethod::FiniteDifferences && !(std::isfinite(r.step) && r.step > 0.0)) {
         throw std::invalid_argument("a finite-difference step must be finite and positive, got " + std::to_string(r.step));
     }
 }

@@ -45,7 +45,7 @@ struct NormalBakeRequest {
     int size = 1024;   // atlas texels per side
     int skirt = 0;     // dilation rings into the gutter
     NormalMethod method = NormalMethod::Analytic;
-    double step = 1e-3;  // finite differences' e, object units
+    double step = 1e-4;  // finite differences' e, object units (the float optimum: docs/results.md)
     Precision precision = Precision::Float;
     int threads = 0;  // 0: all cores
 };
@@ -64,7 +64,8 @@ AtlasTexels atlas_texels(const Scene& scene, int size);
 std::vector<glm::dvec3> surface_normals(const HeightField& field, const AtlasTexels& texels, const NormalBakeRequest& request);
 
 // The object-space normal map, encoded as above. Throws std::invalid_argument for a size outside
-// [1, kMaxAtlasSide], a skirt outside [0, kMaxSkirt] or a step that is not finite and positive.
+// [1, kMaxAtlasSide], a skirt outside [0, kMaxSkirt] or, for finite differences, a step that is
+// not finite and positive.
 Image bake_normal_map(const Scene& scene, const HeightField& field, const NormalBakeRequest& request);
 
 }  // namespace qs
