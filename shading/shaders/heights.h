@@ -27,8 +27,8 @@ struct SurfacePoint {
 // 3D simplex noise with a kernel radius^2 of 0.5: each corner's kernel ends where the simplices
 // around it do, so the noise and its gradient are continuous. The chapter's 0.6 (and the
 // benchmark's 0.51) let a kernel reach past the four corners a point sums, and the noise jumps
-// by up to about 1e-3 where it leaves them: harmless in a colour, but a height's finite
-// differences divide that jump by the step (docs/results.md, Normal maps). Scale 95 keeps the
+// a little where it leaves them: harmless in a colour, but a height's finite differences divide
+// that jump by the step (docs/results.md, "Normal maps from a height"). Scale 95 keeps the
 // range near [-1, 1] (the peak grows as falloff^4.5: 42 (0.6 / 0.5)^4.5).
 struct Simplex3dSmooth {
     static constexpr float falloff = 0.5f, scale = 95.0f;
