@@ -346,8 +346,8 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
         ->required()->option_text("NAME");
     cmd.add_option("-o,--output", a.output,
-                   "the baked scene: OUT.gltf and OUT.bin, its texture beside them (OUT-color.png), drawn\n"
-                   "with a shader that samples it")
+                   "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
+                   "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
         ->required()->option_text("OUT.gltf");
     cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
     cmd.add_option("--maps", a.maps,
