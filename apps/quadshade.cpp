@@ -24,6 +24,7 @@
 #include "render/gallery.h"
 #include "render/atlas_bake.h"
 #include "render/memory_plan.h"
+#include "render/normal_bake.h"
 #include "render/plugins.h"
 #include "render/scene_render.h"
 #include "render/undefined_mask.h"
@@ -34,6 +35,7 @@
 #include "scenes/uniforms.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
+#include "shading/height_field.h"
 
 namespace {
 
@@ -330,6 +332,12 @@ struct BakeArgs {
     Derivatives derivatives = Derivatives::Fine;
     int threads = 0;
     bool allow_outside = false;
+    // The normal map (--maps normal): how, and the finite differences' step.
+    CLI::Option* normals_option = nullptr;
+    NormalMethod normals = NormalMethod::Analytic;
+    CLI::Option* precision_option = nullptr;
+    Precision normal_precision = Precision::Float;
+    std::optional<double> normal_step;
 };
 
 void add_bake_options(CLI::App& cmd, BakeArgs& a) {
@@ -338,11 +346,25 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
         ->required()->option_text("NAME");
     cmd.add_option("-o,--output", a.output,
-                   "the baked scene: OUT.gltf and OUT.bin, its texture beside them (OUT-color.png), drawn\n"
-                   "with a shader that samples it")
+                   "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
+                   "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
         ->required()->option_text("OUT.gltf");
     cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
-    cmd.add_option("--maps", a.maps, "the maps to bake (default color)")->delimiter(',')->option_text("color");
+    cmd.add_option("--maps", a.maps,
+                   "the maps to bake, of color, height and normal (default color; color is required): height\n"
+                   "is the shader's height as grey (OUT-height.png), normal the object-space normal map its\n"
+                   "height gives (OUT-normal.png, 0.5 + 0.5 n), drawn lit by baked_lit")
+        ->delimiter(',')->option_text("MAP,...");
+    a.normals_option = add_choice<NormalMethod>(
+        cmd, "--normals", a.normals, {{"analytic", NormalMethod::Analytic}, {"finite", NormalMethod::FiniteDifferences}},
+        "HOW",
+        "the normal map from the height's gradient through Dual2 (analytic, the default) or from\n"
+        "three heights and a cross product (finite: seed 001's way)");
+    cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-4)")
+        ->check(CLI::PositiveNumber & kFinite)->option_text("E");
+    a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,
+                                               {{"float", Precision::Float}, {"double", Precision::Double}}, "P",
+                                               "the height's evaluations for the normal map in float (default) or double");
     cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
         ->check(CLI::Range(0, kMaxSkirt))->option_text("PIXELS");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
@@ -679,17 +701,43 @@ int cmd_gallery(const GalleryArgs& a) {
 int cmd_bake(const BakeArgs& a) {
     const fs::path output(a.output);
     if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
+    bool height = false, normal = false, color = false;
     for (const std::string& map : a.maps) {
-        if (map != "color") throw UsageError("--maps: '" + map + "' is not bakeable (color)");
+        if (map != "color" && map != "height" && map != "normal") {
+            throw UsageError("--maps: '" + map + "' is not a map bake makes (color, height, normal)");
+        }
+        bool& wanted = map == "color" ? color : map == "height" ? height : normal;
+        if (wanted) throw UsageError("--maps: '" + map + "' is named twice");
+        wanted = true;
+    }
+    if (!color) throw UsageError("--maps: color is required (the baked scene is drawn with it)");
+    if (!normal && (a.normals_option->count() || a.normal_step || a.precision_option->count())) {
+        throw UsageError("--normals, --normal-step and --normal-precision make the normal map: add normal to --maps");
+    }
+    if (a.normal_step && a.normals != NormalMethod::FiniteDifferences) {
+        throw UsageError("--normal-step is the finite differences' step: it needs --normals finite");
+    }
+    const HeightField* field = nullptr;
+    if (height || normal) {
+        field = find_height_field(a.shader);
+        if (!field) {
+            std::string with;
+            for (const HeightField* f : height_fields()) with += (with.empty() ? "" : ", ") + std::string(f->shader());
+            throw UsageError("--maps " + std::string(normal ? "normal" : "height") + ": shader '" + a.shader +
+                             "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
+        }
     }
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
     const std::string stem = output.stem().string();
-    const std::string bin = stem + ".bin", color = stem + "-color.png";
+    const std::string bin = stem + ".bin", color_file = stem + "-color.png", height_file = stem + "-height.png",
+                      normal_file = stem + "-normal.png";
     check_output(output, scene.inputs, "-o");
     check_output(output.parent_path() / bin, scene.inputs, "-o (its buffer)");
-    check_output(output.parent_path() / color, scene.inputs, "-o (its texture)");
+    check_output(output.parent_path() / color_file, scene.inputs, "-o (its texture)");
+    if (height) check_output(output.parent_path() / height_file, scene.inputs, "-o (its height map)");
+    if (normal) check_output(output.parent_path() / normal_file, scene.inputs, "-o (its normal map)");
     const Program* program = find_program(a.shader);
     if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
 
@@ -701,23 +749,64 @@ int cmd_bake(const BakeArgs& a) {
     req.frame.shading.derivatives = a.derivatives;
     req.frame.shading.threads = a.threads;
     for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
-    const auto t0 = std::chrono::steady_clock::now();
+    auto clock = std::chrono::steady_clock::now;
+    auto ms_since = [](auto t0) { return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    auto t0 = clock();
     const Image atlas = bake_atlas(scene, req);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double color_ms = ms_since(t0);
+    // Every map is made before any file is written: an error leaves no output.
+    Image height_map, normal_map;
+    double height_ms = 0.0, normal_ms = 0.0;
+    if (height) {
+        AtlasRequest h = req;
+        h.frame.shader_override = std::string(field->height_shader());
+        t0 = clock();
+        height_map = bake_atlas(scene, h);
+        height_ms = ms_since(t0);
+    }
+    NormalBakeRequest n;
+    n.size = a.size, n.skirt = a.skirt, n.method = a.normals, n.precision = a.normal_precision, n.threads = a.threads;
+    if (a.normal_step) n.step = *a.normal_step;
+    if (normal) {
+        t0 = clock();
+        normal_map = bake_normal_map(scene, *field, n);
+        normal_ms = ms_since(t0);
+    }
 
     OutputSet out(output);
-    write_image(out.staged(color), atlas,
-                {{"quadshade:shader", a.shader},
-                 {"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"},
-                 {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
-                 {"quadshade:skirt", std::to_string(a.skirt)},
-                 {"quadshade:derivatives", rule_name(a.derivatives)}},
-                true);
-    const Scene baked = baked_scene(scene, out.staged(color));
+    const Metadata common = {{"quadshade:shader", a.shader},
+                             {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
+                             {"quadshade:skirt", std::to_string(a.skirt)}};
+    Metadata meta = common;
+    meta.push_back({"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"});
+    meta.push_back({"quadshade:derivatives", rule_name(a.derivatives)});
+    write_image(out.staged(color_file), atlas, meta, true);
+    if (height) {
+        meta = common;
+        meta.push_back({"quadshade:atlas", "the height of " + a.shader + " (" + std::string(field->height_shader()) +
+                                               "), 0 to 1 for 0 to " + std::to_string(field->amplitude()) +
+                                               " object units of relief; row 0 is t = 0"});
+        write_image(out.staged(height_file), height_map, meta, true);
+    }
+    if (normal) {
+        meta = common;
+        meta.push_back({"quadshade:atlas", "object-space unit normals as 0.5 + 0.5 n (not tangent-space), alpha 0 in the "
+                                           "gutter; row 0 is t = 0"});
+        meta.push_back({"quadshade:normals", n.method == NormalMethod::Analytic
+                                                 ? "analytic (Dual2)"
+                                                 : "finite differences, step " + std::to_string(n.step) + " object units"});
+        meta.push_back({"quadshade:precision", n.precision == Precision::Double ? "double" : "float"});
+        write_image(out.staged(normal_file), normal_map, meta, true);
+    }
+    const Scene baked = baked_scene(scene, out.staged(color_file), normal ? out.staged(normal_file) : fs::path(),
+                                    height ? out.staged(height_file) : fs::path());
     save_scene(baked, out.staged(output.filename().string()));
     out.commit(output.filename().string());
-    std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)\n", a.output.c_str(), a.shader.c_str(),
-                 a.size, a.size, seconds * 1e3, color.c_str());
+    std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)", a.output.c_str(), a.shader.c_str(),
+                 a.size, a.size, color_ms, color_file.c_str());
+    if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
+    if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
+    std::fputc('\n', stderr);
     return 0;
 }
 

@@ -1,12 +1,16 @@
 // quadshade-bench-bake: the chapter's trade-off measured. A shader baked into a mesh's atlas and
 // drawn as a texture (trilinear, mipmaps built on load) against the live procedural render:
 // error and frame time, magnified (an atlas smaller than the mesh on screen) and minified, and
-// the seams the gutter leaves, with skirts of 0, 2, 4 and 8 texels.
+// the seams the gutter leaves, with skirts of 0, 2, 4 and 8 texels; normal maps from a height,
+// by finite differences against Dual2 (angle error against the step, float and double, and
+// cost); and the lit bake (colour and normal map drawn by baked_lit) against the lit live render
+// (noise_bumps_lit).
 //
 //   quadshade-bench-bake [--out DIR] [--repeat N] [--threads N]
 //
-// Prints two tables and writes them to DIR/bake.md and DIR/bake-seams.md (bench/results.py puts
-// them into docs/results.md), with every image compared in DIR.
+// Prints four tables and writes them to DIR/bake.md, DIR/bake-seams.md, DIR/bake-normals.md and
+// DIR/bake-lit.md (bench/results.py puts them into docs/results.md), with every image compared
+// in DIR.
 //
 // Seam pixels: pixels of the mesh whose texture lookups, without skirts, reach gutter texels
 // (the baked render's alpha, the atlas's coverage filtered as the colour is, is below 1 there).
@@ -22,9 +26,13 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "render/atlas_bake.h"
+#include "render/normal_bake.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "shading/height_field.h"
 
 namespace {
 
@@ -86,6 +94,113 @@ float rgb_error(const Framebuffer& a, const Framebuffer& b, std::size_t i) {
         e = std::max(e, std::abs(std::round(x * 255.0f) - std::round(y * 255.0f)));
     }
     return e;  // 8-bit steps
+}
+
+// The median of `repeat` runs of f, in ms.
+template <class F>
+double median_ms(int repeat, F&& f) {
+    std::vector<double> t;
+    for (int r = 0; r < repeat; ++r) {
+        const auto t0 = Clock::now();
+        f();
+        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+}
+
+// Finite differences against the analytic normal (Dual2 in double is the reference), per step
+// and precision, over every covered texel of a 512^2 atlas of the sphere.
+void normals_study(const Options& o) {
+    const fs::path mesh = kSource / "scenes/assets/bake/atlas-sphere.gltf";
+    const Scene scene = load_scene(mesh);
+    const HeightField& field = *find_height_field("noise_bumps");
+    constexpr int kSize = 512;
+    const auto w0 = Clock::now();
+    const AtlasTexels texels = atlas_texels(scene, kSize);
+    const double walk_ms = std::chrono::duration<double, std::milli>(Clock::now() - w0).count();
+    NormalBakeRequest r;
+    r.size = kSize, r.threads = o.threads;
+    r.precision = Precision::Double;
+    const std::vector<glm::dvec3> truth = surface_normals(field, texels, r);
+    Table md(o.out / "bake-normals.md");
+    md.line("\n## Normal maps: finite differences against Dual2, noise_bumps on %s, atlas %d^2 (%zu texels), %d threads, "
+            "median of %d runs\n\n",
+            mesh.filename().c_str(), kSize, texels.texel.size(), o.threads, o.repeat);
+    md.line("Angles against the analytic normal in double; e in object units (the sphere's radius is 1, a texel about "
+            "%.1e); the texel walk (positions and frames) takes %.1f ms once.\n\n",
+            2.0 * 3.14159265 / kSize, walk_ms);
+    md.line("| method | precision | e | max angle (deg) | RMS angle (deg) | ms |\n|---|---|---|---|---|---|\n");
+    auto row = [&](NormalMethod method, Precision precision, double e) {
+        r.method = method, r.precision = precision, r.step = e;
+        std::vector<glm::dvec3> n;
+        const double ms = median_ms(o.repeat, [&] { n = surface_normals(field, texels, r); });
+        double worst = 0.0, sum2 = 0.0;
+        for (std::size_t k = 0; k < n.size(); ++k) {
+            const double a = std::atan2(glm::length(glm::cross(n[k], truth[k])), glm::dot(n[k], truth[k])) * 180.0 / 3.14159265358979;
+            worst = std::max(worst, a), sum2 += a * a;
+        }
+        const char* p = precision == Precision::Double ? "double" : "float";
+        if (method == NormalMethod::Analytic) {
+            md.line("| analytic (Dual2) | %s | - | %.2e | %.2e | %.1f |\n", p, worst, std::sqrt(sum2 / double(n.size())), ms);
+        } else {
+            md.line("| finite differences | %s | %.0e | %.2e | %.2e | %.1f |\n", p, e, worst, std::sqrt(sum2 / double(n.size())), ms);
+        }
+    };
+    row(NormalMethod::Analytic, Precision::Float, 0.0);
+    row(NormalMethod::Analytic, Precision::Double, 0.0);
+    for (Precision precision : {Precision::Float, Precision::Double}) {
+        for (double e : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) row(NormalMethod::FiniteDifferences, precision, e);
+    }
+}
+
+// noise_bumps baked (colour and analytic normal map) and drawn by baked_lit, against
+// noise_bumps_lit live, as the first table.
+void lit_study(const Options& o, const FrameRequest& frame) {
+    const fs::path mesh = kSource / "scenes/assets/bake/atlas-sphere.gltf";
+    const Scene live = load_scene(mesh);
+    const HeightField& field = *find_height_field("noise_bumps");
+    Table md(o.out / "bake-lit.md");
+    md.line("\n## Lit: noise_bumps baked (colour, normal map) and drawn by baked_lit against noise_bumps_lit live, on %s, "
+            "%d threads, median of %d frames\n\n",
+            mesh.filename().c_str(), o.threads, o.repeat);
+    md.line("| view | frame | atlas | live ms | baked ms | baked/live | mean error (8-bit steps) | pixels over 8/255 |\n");
+    md.line("|---|---|---|---|---|---|---|---|\n");
+    struct View { const char* name; int frame, atlas; };
+    for (const View v : {View{"magnified", 1024, 256}, View{"matched", 512, 1024}, View{"minified", 128, 1024}}) {
+        AtlasRequest bake;
+        bake.size = v.atlas, bake.skirt = 4, bake.frame = frame;
+        bake.frame.shader_override = "noise_bumps";
+        NormalBakeRequest n;
+        n.size = v.atlas, n.skirt = 4, n.threads = o.threads;
+        const auto b0 = Clock::now();
+        const Image color = bake_atlas(live, bake), normals = bake_normal_map(live, field, n);
+        const double bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - b0).count();
+        const fs::path color_png = o.out / (std::string("lit-color-") + v.name + ".png"),
+                       normal_png = o.out / (std::string("lit-normal-") + v.name + ".png");
+        write_image(color_png, color, {}, true);
+        write_image(normal_png, normals, {}, true);
+        Scene baked = baked_scene(live, color_png, normal_png, {});
+        Scene live_copy = live;
+        FrameRequest r = frame;
+        r.width = r.height = v.frame;
+        FrameRequest lr = r;
+        lr.shader_override = "noise_bumps_lit";
+        double live_ms = 0, baked_ms = 0;
+        const Framebuffer L = timed(live_copy, lr, o.repeat, live_ms);
+        const Framebuffer B = timed(baked, r, o.repeat, baked_ms);
+        double sum = 0;
+        std::size_t count = 0, over8 = 0;
+        for (std::size_t i = 0; i < std::size_t(v.frame) * std::size_t(v.frame); ++i) {
+            if (L.rgba[i * 4 + 3] < 0.5f) continue;
+            const float e = rgb_error(L, B, i);
+            sum += e, ++count, over8 += e > 8.0f;
+        }
+        md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
+                v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, sum / double(count), over8, count);
+        write_image(o.out / (std::string("lit-live-") + v.name + ".png"), Image{L.width, L.height, L.rgba});
+        write_image(o.out / (std::string("lit-baked-") + v.name + ".png"), Image{B.width, B.height, B.rgba});
+    }
 }
 
 }  // namespace
@@ -181,6 +296,9 @@ int main(int argc, char** argv) {
             write_image(o.out / ("baked-skirt-" + std::to_string(skirt) + ".png"), Image{B.width, B.height, B.rgba});
         }
         write_image(o.out / "live.png", Image{L.width, L.height, L.rgba});
+
+        normals_study(o);
+        lit_study(o, frame);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-bench-bake: %s\n", e.what());
         return 1;

@@ -10,8 +10,9 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   throughput, frame
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
-  bake, bake-seams
-               STUDY_DIR/bake.md, bake-seams.md                         (quadshade-bench-bake)
+  bake, bake-seams, bake-normals, bake-lit
+               STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
+                                                                        (quadshade-bench-bake)
   host         this machine and the date
 A block whose input is missing is left as it was, and said so on stderr, so a partial run never
 blanks a table; the prose is written by hand and should be reread when the numbers move.
@@ -169,6 +170,8 @@ def main():
         "error": lambda: error_table(study),
         "bake": lambda: markdown_file(study, "bake.md"),
         "bake-seams": lambda: markdown_file(study, "bake-seams.md"),
+        "bake-normals": lambda: markdown_file(study, "bake-normals.md"),
+        "bake-lit": lambda: markdown_file(study, "bake-lit.md"),
     }
     with open(doc) as f:
         text = f.read()

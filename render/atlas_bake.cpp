@@ -159,18 +159,33 @@ Framebuffer render_atlas_frame(const Scene& scene, const AtlasRequest& request) 
     return render_frame(s, frame);
 }
 
-Scene baked_scene(const Scene& scene, const std::filesystem::path& texture) {
+Scene baked_scene(const Scene& scene, const std::filesystem::path& texture) { return baked_scene(scene, texture, {}, {}); }
+
+Scene baked_scene(const Scene& scene, const std::filesystem::path& texture, const std::filesystem::path& normal_map,
+                  const std::filesystem::path& height_map) {
     Scene s = scene;
-    Texture t;
-    t.image.file = texture;
-    t.image.mime_type = "image/png";
-    t.sampler = Sampler{Filter::Linear, Filter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
-    t.field = "the baked atlas " + texture.filename().string();
-    s.textures = {t};
+    auto atlas = [](const std::filesystem::path& file) {
+        Texture t;
+        t.image.file = file;
+        t.image.mime_type = "image/png";
+        t.sampler = Sampler{Filter::Linear, Filter::LinearMipmapLinear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
+        t.field = "the baked atlas " + file.filename().string();
+        return t;
+    };
+    s.textures = {atlas(texture)};
+    std::vector<SamplerBinding> samplers;
+    if (!normal_map.empty()) {
+        s.textures.push_back(atlas(normal_map));
+        samplers.push_back({"normalmap", int(s.textures.size()) - 1});
+    }
+    if (!height_map.empty()) {
+        s.textures.push_back(atlas(height_map));
+        samplers.push_back({"heightmap", int(s.textures.size()) - 1});
+    }
     for (Object& o : s.objects) {
-        o.shader = "single_texture";
+        o.shader = normal_map.empty() ? "single_texture" : "baked_lit";
         o.texture = 0;
-        o.samplers.clear();
+        o.samplers = samplers;
         o.uniforms.clear();
     }
     return s;

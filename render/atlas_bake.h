@@ -59,6 +59,15 @@ Image bake_atlas(const Scene& scene, const AtlasRequest& request);
 // to its edge. Other textures, samplers and uniforms are dropped.
 Scene baked_scene(const Scene& scene, const std::filesystem::path& texture);
 
+// The same with the maps of a bake with a height (render/normal_bake.h): with `normal_map` (a
+// PNG of bake_normal_map's object-space normals) every object is drawn by `baked_lit`, the
+// colour atlas its baseColorTexture and the normal map bound as the sampler `normalmap` in the
+// material's extras.textures (not glTF's normalTexture, which is tangent-space), sampled as the
+// atlas is. A `height_map` is bound as extras.textures' `heightmap`, for other tools: no
+// shader of the catalogue samples it. Empty paths: no such map.
+Scene baked_scene(const Scene& scene, const std::filesystem::path& texture, const std::filesystem::path& normal_map,
+                  const std::filesystem::path& height_map);
+
 // A frame's rows in the opposite order: between a frame (top-down) and a texture (t = 0 first).
 Image flip_rows(const Framebuffer& frame);
 

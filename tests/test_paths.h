@@ -7,7 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "scenes/gltf.h"
 #include "scenes/scene.h"
+#include "shading/program.h"
 
 namespace qs::test {
 
@@ -25,6 +27,16 @@ inline const std::filesystem::path kSeed004Plane = kSource / "scenes/assets/seed
 // The plane a shader of the plane is shown on: its seed's where the seed reads textures of its own.
 inline const std::filesystem::path& plane_for(std::string_view shader) {
     return shader.starts_with("lawlor_") ? kSeed004Plane : kPlane;
+}
+
+// Whether that plane binds every named sampler the shader declares (baked_lit's `normalmap` is
+// bound only by the baked scenes it draws, where tests/reference/test_atlas_bake.cpp compares it).
+inline bool plane_binds_samplers(const ShaderInfo& info) {
+    const Scene plane = load_scene(plane_for(info.name));
+    for (const SamplerUse& s : info.needs.samplers) {
+        if (!s.name.empty() && plane.objects.at(0).texture_for(s.name) < 0) return false;
+    }
+    return true;
 }
 
 // A fresh, empty folder under the system's temporary directory, unique to this process.

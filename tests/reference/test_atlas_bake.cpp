@@ -7,7 +7,9 @@
 #include <string>
 
 #include "render/atlas_bake.h"
+#include "render/normal_bake.h"
 #include "scenes/gltf.h"
+#include "shading/height_field.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_paths.h"
 
@@ -99,6 +101,50 @@ TEST_CASE("bake: the mesh drawn with its baked atlas (trilinear, mipmaps) is OSM
         CHECK(c.coverage_mismatch == 0);
         CHECK(c.over_1 * 1000 <= c.covered);
         CHECK(c.over_2 == 0);
+    }
+}
+
+TEST_CASE("bake: the mesh drawn lit by its baked colour and normal map (baked_lit) is OSMesa's render of the baked scene",
+          "[reference][bake][normals]") {
+    // noise_bumps baked with its normal map as `quadshade bake --maps color,normal` writes it,
+    // both meshes, minified and magnified: baked_lit's two trilinear lookups, normalize and
+    // Lambert against llvmpipe's, at the bar of every catalogue shader.
+    const auto dir = temp_dir("atlas-baked-lit");
+    const HeightField* field = find_height_field("noise_bumps");
+    REQUIRE(field);
+    for (const auto& mesh : {kAtlasCube, kAtlasSphere}) {
+        const Scene scene = load_scene(mesh);
+        AtlasRequest req;
+        req.size = 128, req.skirt = 2;
+        req.frame.shader_override = "noise_bumps";
+        NormalBakeRequest n;
+        n.size = 128, n.skirt = 2;
+        const std::string stem = mesh.stem().string();
+        write_image(dir / (stem + "-color.png"), bake_atlas(scene, req), {}, true);
+        write_image(dir / (stem + "-normal.png"), bake_normal_map(scene, *field, n), {}, true);
+        save_scene(baked_scene(scene, dir / (stem + "-color.png"), dir / (stem + "-normal.png"), {}), dir / (stem + ".gltf"));
+        for (const int size : {61, 301}) {
+            Scene baked = load_scene(dir / (stem + ".gltf"));
+            REQUIRE(baked.objects.at(0).shader == "baked_lit");
+            FrameRequest r;
+            r.width = r.height = size;
+            r.set(raster_options_as(GlDriver::Llvmpipe));
+            const Framebuffer ours = render_frame(baked, r);
+            const auto out = dir / (stem + "-" + std::to_string(size) + ".exr");
+            const std::string cmd = (kBin / "quadshade-reference").string() + " " + (dir / (stem + ".gltf")).string() +
+                                    " -o " + out.string() + " --glsl " + QUADSHADE_GLSL_DIR + " --driver llvmpipe --size " +
+                                    std::to_string(size) + "x" + std::to_string(size) + " 2> /dev/null";
+            REQUIRE(std::system(cmd.c_str()) == 0);
+            const Image ref = read_image(out);
+            const Counts c = count(ours, ref);
+            INFO("lit baked " << stem << " at " << size << ": covered " << c.covered << ", coverage " << c.coverage_mismatch
+                              << ", over 1/255 " << c.over_1 << ", over 2/255 " << c.over_2 << ", max " << c.max_steps);
+            if (c.coverage_mismatch || c.over_1) write_comparison(ours, ref, dir / (stem + "-" + std::to_string(size) + "-diff.png"));
+            CHECK(c.covered > std::size_t(size * size) / 8);
+            CHECK(c.coverage_mismatch == 0);
+            CHECK(c.over_1 * 1000 <= c.covered);
+            CHECK(c.over_2 == 0);
+        }
     }
 }
 
