@@ -51,7 +51,7 @@ class BuildTimes(unittest.TestCase):
             self.assertIn("| bad.cpp (failed) |", out.getvalue())
             self.assertIn("all 2 translation units", out.getvalue())
             with open(os.path.join(tmp, "t.csv")) as f:
-                rows = {r["file"]: r for r in csv.DictReader(f)}
+                rows = {os.path.basename(r["file"]): r for r in csv.DictReader(f)}
             self.assertEqual(rows["good.cpp"]["exit"], "0")
             self.assertNotEqual(rows["bad.cpp"]["exit"], "0")
             self.assertFalse(os.path.exists(os.path.join(tmp, "good.cpp.o")))  # scratch, not the build's
@@ -60,6 +60,22 @@ class BuildTimes(unittest.TestCase):
                 self.assertEqual(build_times.main(["--build", tmp, "--filter", "good"]), 0)
             with self.assertRaises(SystemExit):
                 build_times.main(["--build", tmp, "--filter", "nothing-matches"])
+
+            # As a build's launcher: each compile's times appended to a log, its status passed on.
+            log = os.path.join(tmp, "times.jsonl")
+            for name, expected in (("good.cpp", 0), ("bad.cpp", 1)):
+                with contextlib.redirect_stderr(io.StringIO()):
+                    rc = build_times.main(["--record", log, "--", "c++", "-o", os.path.join(tmp, name + ".o"),
+                                           "-c", os.path.join(src, name)])
+                self.assertEqual(rc != 0, bool(expected))
+            self.assertTrue(os.path.exists(os.path.join(tmp, "good.cpp.o")))  # the launcher's compile is the build's
+            out = io.StringIO()
+            with contextlib.redirect_stdout(out):
+                self.assertEqual(build_times.main(["--log", log]), 1)
+            self.assertIn("all 2 translation units, as the build ran them", out.getvalue())
+            self.assertIn("| bad.cpp (failed) |", out.getvalue())
+            with self.assertRaises(SystemExit):
+                build_times.main(["--record", log, "c++"])
 
 
 if __name__ == "__main__":
