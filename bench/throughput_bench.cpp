@@ -142,9 +142,12 @@ struct PeerRun {
     std::string missing;  // otherwise: what the table says instead
 };
 
-// Failures of a child (it crashed, or its report does not parse) stop the bench at the end;
-// a host whose llvmpipe does not honour a width is a fact the table shows.
-int g_child_failures = 0;
+// A child whose report does not parse is this program's fault and fails the bench at the end.
+// llvmpipe failing at a width (Mesa 22.3 at 512 bits on an AVX2 CPU crashes on mipmapped
+// textures), or not honouring it, is a fact about the peer on this host: the table says so, the
+// child's errors go to stderr, and the row is compared with the widths that ran.
+int g_unreadable_reports = 0;
+int g_rows_without_peer = 0;  // rows that no width measured: the bench fails
 
 PeerRun run_peer(const Options& o, int width, const std::vector<std::string>& job) {
     std::vector<std::string> argv = {qs::bench::self_executable(), "--peer-only",
@@ -163,8 +166,7 @@ PeerRun run_peer(const Options& o, int width, const std::vector<std::string>& jo
     if (!child.ok()) {
         std::fprintf(stderr, "\nquadshade-bench-throughput: llvmpipe at %d bits failed (%s): %s\n%s\n", width,
                      child.status().c_str(), what.c_str(), child.err.c_str());
-        ++g_child_failures;
-        run.missing = "failed: " + child.status();
+        run.missing = "llvmpipe failed: " + child.status();
         return run;
     }
     try {
@@ -179,8 +181,8 @@ PeerRun run_peer(const Options& o, int width, const std::vector<std::string>& jo
     } catch (const std::exception& e) {
         std::fprintf(stderr, "\nquadshade-bench-throughput: %s: %s\nits stdout:\n%s\n", what.c_str(), e.what(),
                      child.out.c_str());
-        ++g_child_failures;
-        run.missing = "failed: unreadable report";
+        ++g_unreadable_reports;
+        run.missing = "unreadable report";
     }
     return run;
 }
@@ -248,6 +250,7 @@ std::string figure_frames(const Options& o) {
     std::vector<PeerRun> peers;
     for (int width : o.widths) peers.push_back(run_peer(o, width, {"--figure"}));
     const PeerRun* best = fastest(peers);
+    if (!best) ++g_rows_without_peer;
 
     std::ostringstream md;
     md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms | speedup against llvmpipe at its best"
@@ -290,7 +293,6 @@ int run_throughput(const Options& o) {
     std::ostringstream special;
     special << "| shader | size | what the shader needs | specialised ms | general path ms | saving |\n"
                "|---|---|---|---|---|---|\n";
-    int rows_without_peer = 0;
     for (int size : o.sizes) {
         for (const Row& row : kRows) {
             if (!o.shaders.empty() && std::find(o.shaders.begin(), o.shaders.end(), row.shader) == o.shaders.end()) continue;
@@ -339,7 +341,7 @@ int run_throughput(const Options& o) {
                 csv << "," << best->width << "," << qm << "," << lm << "," << qm / lm << "\n";
                 md << format(" | %.2fx (%d bits)", qm / lm, best->width);
             } else {
-                ++rows_without_peer;
+                ++g_rows_without_peer;
                 csv << ",,," << qm << ",,\n";
                 md << " | -";
             }
@@ -360,9 +362,9 @@ int run_throughput(const Options& o) {
         std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", o.threads, o.repeat,
                     figure.c_str());
     }
-    if (g_child_failures > 0 || rows_without_peer > 0) {
-        std::fprintf(stderr, "quadshade-bench-throughput: %d llvmpipe runs failed, %d rows without llvmpipe (above)\n",
-                     g_child_failures, rows_without_peer);
+    if (g_unreadable_reports > 0 || g_rows_without_peer > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: %d unreadable llvmpipe reports, %d rows without llvmpipe at "
+                             "any width (above)\n", g_unreadable_reports, g_rows_without_peer);
         return 1;
     }
     return 0;
