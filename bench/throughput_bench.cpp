@@ -166,7 +166,7 @@ PeerRun run_peer(const Options& o, int width, const std::vector<std::string>& jo
     if (!child.ok()) {
         std::fprintf(stderr, "\nquadshade-bench-throughput: llvmpipe at %d bits failed (%s): %s\n%s\n", width,
                      child.status().c_str(), what.c_str(), child.err.c_str());
-        run.missing = "llvmpipe failed: " + child.status();
+        run.missing = (child.signal ? "llvmpipe crashed: " : "failed: ") + child.status();
         return run;
     }
     try {
