@@ -25,6 +25,8 @@
 #include <thread>
 #include <vector>
 
+#include <sys/resource.h>
+
 #include <CLI/CLI.hpp>
 
 #include "bench/child_process.h"
@@ -370,20 +372,31 @@ int run_throughput(const Options& o) {
     return 0;
 }
 
+// Seconds of CPU this process has used, all its threads.
+double process_cpu_seconds() {
+    rusage u{};
+    ::getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 // quadshade alone on the noise rows at several thread counts: each round times every shader at
-// every count in turn (renderers built once), so a round's ratios come from the same minutes.
+// every count in turn, so a round's ratios come from the same minutes. The cores each count
+// actually got (CPU time over wall time) tell a scheduler that does not scale from a shared host
+// that did not give the process its cores.
 int run_scaling(const Options& o) {
     struct Series {
         const Row* row;
         int size;
-        std::vector<std::vector<double>> ms;  // [thread count][round]: median ms of the round
+        std::vector<std::vector<double>> ms;     // [thread count][round]: median ms of the round
+        std::vector<std::vector<double>> cores;  // [thread count][round]: CPU time over wall time
     };
     std::vector<Series> series;
     for (int size : o.sizes) {
         for (const Row& row : kRows) {
             const bool chosen = o.shaders.empty() ? row.noise
                                                   : std::find(o.shaders.begin(), o.shaders.end(), row.shader) != o.shaders.end();
-            if (chosen) series.push_back({&row, size, std::vector<std::vector<double>>(o.scaling_threads.size())});
+            if (chosen) series.push_back({&row, size, std::vector<std::vector<double>>(o.scaling_threads.size()),
+                                          std::vector<std::vector<double>>(o.scaling_threads.size())});
         }
     }
     qs::Scene scene = qs::load_scene(kPlane);
@@ -398,7 +411,10 @@ int run_scaling(const Options& o) {
                 req.shading.threads = o.scaling_threads[i];
                 qs::SceneRenderer renderer(scene, req);
                 qs::Framebuffer fb;
+                const double cpu0 = process_cpu_seconds();
+                const auto t0 = Clock::now();
                 s.ms[i].push_back(time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); }).median);
+                s.cores[i].push_back((process_cpu_seconds() - cpu0) / (1e-3 * ms_since(t0)));
             }
         }
     }
@@ -412,8 +428,10 @@ int run_scaling(const Options& o) {
     for (std::size_t i = 1; i < o.scaling_threads.size(); ++i) {
         md << " | " << threads(o.scaling_threads[i]) << " vs " << o.scaling_threads[i - 1];
     }
+    md << " | cores used (CPU time / wall time)";
+    for (std::size_t i = 0; i < o.scaling_threads.size(); ++i) md << (i ? " / " : ": ") << o.scaling_threads[i];
     md << " |\n|---|---|";
-    for (std::size_t i = 0; i < 2 * o.scaling_threads.size() - 1; ++i) md << "---|";
+    for (std::size_t i = 0; i < 2 * o.scaling_threads.size(); ++i) md << "---|";
     md << "\n";
     for (const Series& s : series) {
         md << format("| %s | %d", s.row->book_name, s.size);
@@ -427,6 +445,7 @@ int run_scaling(const Options& o) {
             const Stats st = stats_of(ratio);
             md << format(" | %.2fx (%.2f-%.2f)", st.median, st.min, st.max);
         }
+        for (std::size_t i = 0; i < s.cores.size(); ++i) md << format(i ? " / %.2f" : " | %.2f", stats_of(s.cores[i]).median);
         md << " |\n";
     }
     std::ofstream(fs::path(o.out) / "scaling.md") << md.str();
