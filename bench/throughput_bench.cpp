@@ -498,6 +498,24 @@ int main(int argc, char** argv) {
                              "--figure or --size and --shader; those options only with --peer-only\n");
         return 2;
     }
+    // Options of one mode given to the other are refused, not ignored.
+    for (const char* opt : {"--widths", "--threads"}) {
+        if (o.scaling && app.count(opt) > 0) {
+            std::fprintf(stderr, "quadshade-bench-throughput: %s is not an option of --scaling (quadshade alone, at "
+                                 "--scaling-threads)\n", opt);
+            return 2;
+        }
+    }
+    for (const char* opt : {"--scaling-threads", "--rounds"}) {
+        if ((!o.scaling || o.peer_only) && app.count(opt) > 0) {
+            std::fprintf(stderr, "quadshade-bench-throughput: %s only with --scaling\n", opt);
+            return 2;
+        }
+    }
+    if (o.scaling && o.peer_only) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling and --peer-only are two different runs\n");
+        return 2;
+    }
     if (o.scaling && o.scaling_threads.size() < 2) {
         std::fprintf(stderr, "quadshade-bench-throughput: --scaling needs at least two --scaling-threads\n");
         return 2;
