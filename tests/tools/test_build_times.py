@@ -71,7 +71,7 @@ class BuildTimes(unittest.TestCase):
             self.assertTrue(os.path.exists(os.path.join(tmp, "good.cpp.o")))  # the launcher's compile is the build's
             out = io.StringIO()
             with contextlib.redirect_stdout(out):
-                self.assertEqual(build_times.main(["--log", log]), 1)
+                self.assertEqual(build_times.main(["--log", log, "--by", "user"]), 1)
             self.assertIn("all 2 translation units, as the build ran them", out.getvalue())
             self.assertIn("| bad.cpp (failed) |", out.getvalue())
             with self.assertRaises(SystemExit):
