@@ -75,12 +75,19 @@ def throughput_sections(root):
     parts = []
     for name, title, text in (
             ("throughput.md", "Throughput against OSMesa llvmpipe (Table 1.1 plane)",
-             "Same run, same cores; median Mfragments/s with min-max, goal 2x llvmpipe."),
+             "Same run, same cores; median Mfragments/s with min-max; llvmpipe at each vector width in its own "
+             "process, goal 2x the faster."),
             ("specialisation.md", "Leaving out what a shader does not need",
              "Median ms per frame with the specialised pipeline against the general path (quads with helper "
              "lanes and a depth buffer for every shader)."),
             ("figure-1.1-frame.md", "Figure 1.1: rasterizer, ray caster and llvmpipe",
-             "One frame at 1264x400, median of the run's frames; the BVH is built once per scene.")):
+             "One frame at 1264x400, median of the run's frames; the BVH is built once per scene."),
+            ("scaling.md", "Thread scaling on the noise rows",
+             "quadshade alone at 1, 2 and 8 threads: median over rounds of each round's median frame time "
+             "(min-max over rounds); speedups per round against one thread."),
+            ("compare-builds.md", "This build against the previous one",
+             "bench/compare-builds, quadshade-bench-core of both builds run in turn; a ratio below 1 is faster "
+             "than the previous build.")):
         path = os.path.join(root, name)
         if os.path.exists(path):
             with open(path) as f:

@@ -9,6 +9,9 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   conformance  BUILD_DIR/conformance/SCENE-{llvmpipe,softpipe}.csv      (ctest: test_conformance_*)
   throughput, frame
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
+  scaling      STUDY_DIR/scaling.md                  (quadshade-bench-throughput --scaling)
+  guard        STUDY_DIR/compare-builds.md           (bench/compare-builds, run-study --previous);
+               a study run without --previous says so in the block
   error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
   bake, bake-seams, bake-normals, bake-lit
                STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
@@ -157,6 +160,16 @@ def host_line():
             f"{platform.release()}, {datetime.date.today().isoformat()}."]
 
 
+def guard_table(study):
+    """The previous build against this one, or a line saying this run had no previous build."""
+    table = markdown_file(study, "compare-builds.md")
+    if table:
+        return table
+    if os.path.exists(os.path.join(study, "throughput.md")):
+        return ["_This run had no previous build to compare with: `bench/run-study --previous OLD_BUILD DIR`._"]
+    return None
+
+
 def main():
     if len(sys.argv) != 4:
         sys.exit(__doc__)
@@ -167,6 +180,8 @@ def main():
         "conformance": lambda: conformance_table(build),
         "throughput": lambda: markdown_file(study, "throughput.md"),
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
+        "scaling": lambda: markdown_file(study, "scaling.md"),
+        "guard": lambda: guard_table(study),
         "error": lambda: error_table(study),
         "bake": lambda: markdown_file(study, "bake.md"),
         "bake-seams": lambda: markdown_file(study, "bake-seams.md"),

@@ -1,45 +1,84 @@
 // quadshade-bench-throughput: Table 1.1's shaders on the Table 1.1 plane, quadshade next to OSMesa
-// llvmpipe in one run on the same cores (LP_NUM_THREADS = quadshade's thread count), next to
-// the book's 2011 GPU figures. Frames are timed after set-up (context creation and GLSL
+// llvmpipe at its best in one run on the same cores (LP_NUM_THREADS = quadshade's thread count),
+// next to the book's 2011 GPU figures. Frames are timed after set-up (context creation and GLSL
 // compilation are reported separately); llvmpipe frames end with glFinish. Both render into a
 // float RGBA target, as the reference comparisons do.
 //
-//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--shaders a,b] [--out DIR]
-// Writes DIR/throughput.csv and DIR/throughput.md and prints the Markdown table.
+// llvmpipe reads LP_NATIVE_VECTOR_WIDTH once per process, so each of its rows runs in a child
+// process per width (this program re-executed with --peer-only and an explicit environment),
+// right after quadshade's frames of the same row; quadshade is compared with the faster width.
+//
+//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--shaders a,b]
+//                              [--widths 256,512] [--out DIR]
+//   quadshade-bench-throughput --scaling [--scaling-threads 1,2,8] [--rounds N] [--sizes 1024] [--out DIR]
+// Writes DIR/throughput.csv, throughput.md, specialisation.md and figure-1.1-frame.md (or, with
+// --scaling, DIR/scaling.md) and prints the Markdown tables.
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <sys/resource.h>
+
+#include <CLI/CLI.hpp>
+
+#include "bench/child_process.h"
+#include "bench/peer_report.h"
+#include "reference/gl_renderer.h"
+#include "render/scene_render.h"
+#include "scenes/gltf.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
-#include "reference/gl_renderer.h"
-#include "scenes/gltf.h"
-#include "render/scene_render.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+namespace fs = std::filesystem;
 
 struct Row {
     const char* shader;
     const char* book_name;
     int book[4];  // Mfrag/s on NVIDIA 9600M, AMD HD6310, AMD HD4850, NVIDIA GTX260 (seed 000)
+    bool noise;   // a noise row of the scaling table
 };
 const Row kRows[] = {
-    {"constant_color", "Constant color", {422, 430, 2721, 3610}},
-    {"single_texture", "Single texture", {412, 414, 2718, 3610}},
-    {"dots", "Dots (Fig 1.2)", {360, 355, 2720, 3420}},
-    {"perlin", "Perlin noise (Fig 1.4)", {63, 97, 1042, 697}},
-    {"perlin5", "5x Perlin (Fig 1.4)", {11, 23, 271, 146}},
-    {"worley", "Worley noise (Fig 1.5)", {82, 116, 1192, 787}},
-    {"worley_tiles", "Worley tiles (Fig 1.5)", {26, 51, 580, 345}},
-    {"halftone", "Halftone (Fig 1.6)", {34, 52, 597, 373}},
+    {"constant_color", "Constant color", {422, 430, 2721, 3610}, false},
+    {"single_texture", "Single texture", {412, 414, 2718, 3610}, false},
+    {"dots", "Dots (Fig 1.2)", {360, 355, 2720, 3420}, false},
+    {"perlin", "Perlin noise (Fig 1.4)", {63, 97, 1042, 697}, true},
+    {"perlin5", "5x Perlin (Fig 1.4)", {11, 23, 271, 146}, true},
+    {"worley", "Worley noise (Fig 1.5)", {82, 116, 1192, 787}, true},
+    {"worley_tiles", "Worley tiles (Fig 1.5)", {26, 51, 580, 345}, true},
+    {"halftone", "Halftone (Fig 1.6)", {34, 52, 597, 373}, false},
+};
+
+const fs::path kSource = QUADSHADE_SOURCE_DIR;
+const fs::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
+const fs::path kFigure = kSource / "scenes/assets/figure-1.1.gltf";
+
+struct Options {
+    int threads = 2, repeat = 15;
+    std::vector<int> sizes = {1024, 500};
+    std::string out = "bench-results";
+    std::vector<std::string> shaders;  // these rows only, and no Figure 1.1 frame
+    std::vector<int> widths = {256, 512};
+    bool scaling = false;
+    std::vector<int> scaling_threads = {1, 2, 8};
+    int rounds = 3;
+    // A peer child's job (--peer-only): one llvmpipe row, or the Figure 1.1 frame.
+    bool peer_only = false;
+    int vector_width = 0;
+    int size = 0;
+    std::string shader;
+    bool figure = false;
+    std::string glsl;
 };
 
 struct Stats {
@@ -62,6 +101,110 @@ Stats time_frames(int repeat, F&& frame) {
     return stats_of(ms);
 }
 
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+std::string format(const char* fmt, auto... args) {
+    char line[1024];
+    std::snprintf(line, sizeof line, fmt, args...);
+    return line;
+}
+
+// ---- the peer child: llvmpipe at the width its environment sets ---------------------------
+
+int run_peer_child(const Options& o) {
+    const char* env_width = std::getenv("LP_NATIVE_VECTOR_WIDTH");
+    if (!env_width || std::string(env_width) != std::to_string(o.vector_width)) {
+        std::fprintf(stderr, "quadshade-bench-throughput --peer-only: LP_NATIVE_VECTOR_WIDTH must be %d (the parent "
+                             "bench sets it), found %s\n", o.vector_width, env_width ? env_width : "none");
+        return 2;
+    }
+    qs::Scene scene = qs::load_scene(o.figure ? kFigure : kPlane);
+    const int w = o.figure ? scene.width : o.size, h = o.figure ? scene.height : o.size;
+    const auto s0 = Clock::now();
+    auto context = qs::create_osmesa_context(w, h, qs::GlDriver::Llvmpipe, o.threads);
+    qs::GlSceneRenderer gl(scene, {w, h, {}, o.figure ? "" : o.shader, {}}, *context, fs::path(o.glsl));
+    gl.draw();  // the first frame compiles llvmpipe's code
+    qs::bench::PeerReport report;
+    report.setup_ms = ms_since(s0);
+    const Stats l = time_frames(o.repeat, [&] { gl.draw(); });
+    report.median_ms = l.median;
+    report.min_ms = l.min;
+    report.max_ms = l.max;
+    report.renderer = context->info().renderer;
+    std::fputs(qs::bench::format_peer_report(report).c_str(), stdout);
+    return 0;
+}
+
+// ---- the parent's side ---------------------------------------------------------------------
+
+// llvmpipe at one width on one job, or why there is no measurement.
+struct PeerRun {
+    int width = 0;
+    std::optional<qs::bench::PeerReport> report;  // set when llvmpipe ran at `width`
+    std::string missing;  // otherwise: what the table says instead
+};
+
+// A child whose report does not parse is this program's fault and fails the bench at the end.
+// llvmpipe failing at a width (Mesa 22.3 at 512 bits on an AVX2 CPU crashes on mipmapped
+// textures), or not honouring it, is a fact about the peer on this host: the table says so, the
+// child's errors go to stderr, and the row is compared with the widths that ran.
+int g_unreadable_reports = 0;
+int g_rows_without_peer = 0;  // rows that no width measured: the bench fails
+
+PeerRun run_peer(const Options& o, int width, const std::vector<std::string>& job) {
+    std::vector<std::string> argv = {qs::bench::self_executable(), "--peer-only",
+                                     "--vector-width", std::to_string(width),
+                                     "--threads", std::to_string(o.threads),
+                                     "--repeat", std::to_string(o.repeat),
+                                     "--glsl", (fs::path(o.out) / "glsl").string()};
+    argv.insert(argv.end(), job.begin(), job.end());
+    const std::vector<std::string> env = qs::bench::environment_with(
+        {"LP_NATIVE_VECTOR_WIDTH=" + std::to_string(width), "GALLIUM_DRIVER=llvmpipe",
+         "LP_NUM_THREADS=" + std::to_string(o.threads)});
+    PeerRun run{width, std::nullopt, ""};
+    std::string what;
+    for (const std::string& a : argv) what += (what.empty() ? "" : " ") + a;
+    const qs::bench::ChildOutput child = qs::bench::run_child(argv, env);
+    if (!child.ok()) {
+        std::fprintf(stderr, "\nquadshade-bench-throughput: llvmpipe at %d bits failed (%s): %s\n%s\n", width,
+                     child.status().c_str(), what.c_str(), child.err.c_str());
+        run.missing = (child.signal ? "llvmpipe crashed: " : "failed: ") + child.status();
+        return run;
+    }
+    try {
+        qs::bench::PeerReport report = qs::bench::parse_peer_report(child.out);
+        const std::optional<int> bits = qs::bench::vector_bits_of(report.renderer);
+        if (bits != width) {
+            run.missing = "n/a: llvmpipe ran at " + (bits ? std::to_string(*bits) + " bits" : "an unknown width") +
+                          " (" + report.renderer + ")";
+            return run;
+        }
+        run.report = report;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "\nquadshade-bench-throughput: %s: %s\nits stdout:\n%s\n", what.c_str(), e.what(),
+                     child.out.c_str());
+        ++g_unreadable_reports;
+        run.missing = "unreadable report";
+    }
+    return run;
+}
+
+// The fastest width measured, or nothing.
+const PeerRun* fastest(const std::vector<PeerRun>& runs) {
+    const PeerRun* best = nullptr;
+    for (const PeerRun& r : runs) {
+        if (r.report && (!best || r.report->median_ms < best->report->median_ms)) best = &r;
+    }
+    return best;
+}
+
+// "llvmpipe 512-bit": with a note where the CPU has no instructions of that width.
+std::string width_title(int width) {
+    std::string s = "llvmpipe " + std::to_string(width) + "-bit";
+    if (width >= 512 && !__builtin_cpu_supports("avx512f")) s += " (no AVX-512 on this CPU: 256-bit halves)";
+    return s;
+}
+
 // What the specialised pipeline keeps for a shader, in words; the depth buffer is the frame's
 // (the plane's two triangles do not overlap: none).
 std::string needs_of(const char* shader, const qs::RenderStats& frame) {
@@ -75,12 +218,9 @@ std::string needs_of(const char* shader, const qs::RenderStats& frame) {
 }
 
 // Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
-// differentials) next to llvmpipe, with the ray caster's one-off BVH build apart.
-std::string figure_frames(int threads, int repeat, const std::filesystem::path& glsl) {
-    const std::filesystem::path file = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/figure-1.1.gltf";
-    qs::Scene scene = qs::load_scene(file);
-    std::ostringstream md;
-    md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms |\n|---|---|---|---|---|\n";
+// differentials) next to llvmpipe at each width, with the ray caster's one-off BVH build apart.
+std::string figure_frames(const Options& o) {
+    qs::Scene scene = qs::load_scene(kFigure);
     struct Mode {
         const char* name;
         qs::Backend backend;
@@ -91,132 +231,309 @@ std::string figure_frames(int threads, int repeat, const std::filesystem::path& 
                           {"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Analytic, "Dual2, plane derivatives"},
                           {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Fine, "fine ray quads"},
                           {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Analytic, "Dual2, ray differentials"}};
+    struct Timed {
+        const Mode* mode;
+        Stats t;
+        double setup, bvh;
+    };
+    std::vector<Timed> timed;
     for (const Mode& m : modes) {
         qs::FrameRequest req;
         req.backend = m.backend;
         req.shading.derivatives = m.rule;
-        req.shading.threads = threads;
+        req.shading.threads = o.threads;
         const auto s0 = Clock::now();
         qs::SceneRenderer renderer(scene, req);
-        const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
+        const double setup = ms_since(s0);
         qs::Framebuffer fb;
-        const Stats t = time_frames(repeat, [&] { renderer.render_into(fb, std::nullopt); });
-        char line[256];
-        std::snprintf(line, sizeof line, "| %s | %s | %.1f (%.1f-%.1f) | %.1f | %.1f |\n", m.name, m.rule_name, t.median,
-                      t.min, t.max, setup, 1e3 * renderer.bvh_build_seconds());
-        md << line;
+        const Stats t = time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); });
+        timed.push_back({&m, t, setup, 1e3 * renderer.bvh_build_seconds()});
     }
-    auto context = qs::create_osmesa_context(scene.width, scene.height, qs::GlDriver::Llvmpipe, threads);
-    const auto s0 = Clock::now();
-    qs::GlSceneRenderer gl(scene, {scene.width, scene.height, {}, "", {}}, *context, glsl);
-    gl.draw();
-    const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
-    const Stats l = time_frames(repeat, [&] { gl.draw(); });
-    char line[256];
-    std::snprintf(line, sizeof line, "| OSMesa llvmpipe | fine quads | %.1f (%.1f-%.1f) | %.0f (context, GLSL compile) | - |\n", l.median, l.min, l.max, setup);
-    md << line;
+    std::vector<PeerRun> peers;
+    for (int width : o.widths) peers.push_back(run_peer(o, width, {"--figure"}));
+    const PeerRun* best = fastest(peers);
+    if (!best) ++g_rows_without_peer;
+
+    std::ostringstream md;
+    md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms | speedup against llvmpipe at its best"
+       << (best ? " (" + std::to_string(best->width) + " bits)" : "") << " |\n|---|---|---|---|---|---|\n";
+    for (const Timed& t : timed) {
+        const std::string speedup = best ? format("%.2fx", best->report->median_ms / t.t.median) : "-";
+        md << format("| %s | %s | %.1f (%.1f-%.1f) | %.1f | %.1f | %s |\n", t.mode->name, t.mode->rule_name, t.t.median,
+                     t.t.min, t.t.max, t.setup, t.bvh, speedup.c_str());
+    }
+    for (const PeerRun& p : peers) {
+        if (p.report) {
+            const qs::bench::PeerReport& r = *p.report;
+            md << format("| OSMesa %s | fine quads | %.1f (%.1f-%.1f) | %.0f (context, GLSL compile) | - | %s |\n",
+                         width_title(p.width).c_str(), r.median_ms, r.min_ms, r.max_ms, r.setup_ms,
+                         &p == best ? "(the faster)" : "-");
+        } else {
+            md << format("| OSMesa %s | fine quads | %s | - | - | - |\n", width_title(p.width).c_str(), p.missing.c_str());
+        }
+    }
     return md.str();
+}
+
+int run_throughput(const Options& o) {
+    const fs::path out = o.out;
+    std::ofstream csv(out / "throughput.csv");
+    csv << "shader,size,threads,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max";
+    for (int w : o.widths) {
+        csv << ",llvmpipe" << w << "_ms_median,llvmpipe" << w << "_ms_min,llvmpipe" << w << "_ms_max,llvmpipe" << w
+            << "_setup_ms";
+    }
+    csv << ",best_width,quadshade_mfrags,llvmpipe_best_mfrags,speedup\n";
+    std::ostringstream md;
+    md << "| shader | size | quadshade Mfrag/s";
+    for (int w : o.widths) md << " | " << width_title(w) << " Mfrag/s";
+    md << " | speedup against the faster llvmpipe (goal >= 2) | llvmpipe set-up ms";
+    for (std::size_t i = 0; i < o.widths.size(); ++i) md << (i ? " / " : " (") << o.widths[i];
+    md << ") | 2011 GPUs: 9600M / HD6310 / HD4850 / GTX260 |\n|---|---|---|";
+    for (std::size_t i = 0; i < o.widths.size(); ++i) md << "---|";
+    md << "---|---|---|\n";
+    std::ostringstream special;
+    special << "| shader | size | what the shader needs | specialised ms | general path ms | saving |\n"
+               "|---|---|---|---|---|---|\n";
+    for (int size : o.sizes) {
+        for (const Row& row : kRows) {
+            if (!o.shaders.empty() && std::find(o.shaders.begin(), o.shaders.end(), row.shader) == o.shaders.end()) continue;
+            std::fprintf(stderr, "\r%-16s %4dx%-4d ...", row.shader, size, size);
+            qs::Scene scene = qs::load_scene(kPlane);
+            qs::FrameRequest req;
+            req.width = req.height = size;
+            req.shader_override = row.shader;
+            req.shading.threads = o.threads;
+            qs::Framebuffer fb;
+            qs::SceneRenderer renderer(scene, req);
+            const Stats q = time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); });
+            qs::RenderStats frame;
+            renderer.render_into(fb, std::nullopt, &frame);
+            // The same frame through the general path: quads with helper lanes and a depth
+            // buffer whatever the shader needs.
+            qs::FrameRequest general_req = req;
+            general_req.raster.force_general_path = true;
+            qs::SceneRenderer general(scene, general_req);
+            const Stats g = time_frames(o.repeat, [&] { general.render_into(fb, std::nullopt); });
+            special << format("| %s | %d | %s | %.2f | %.2f | %.0f%% |\n", row.book_name, size,
+                              needs_of(row.shader, frame).c_str(), q.median, g.median, 100.0 * (1.0 - q.median / g.median));
+
+            std::vector<PeerRun> peers;
+            for (int w : o.widths) peers.push_back(run_peer(o, w, {"--size", std::to_string(size), "--shader", row.shader}));
+            const PeerRun* best = fastest(peers);
+            const double frags = double(size) * size * 1e-3;  // per ms -> Mfrag/s
+            const double qm = frags / q.median;
+            csv << row.shader << "," << size << "," << o.threads << "," << q.median << "," << q.min << "," << q.max;
+            md << format("| %s | %d | %.0f (%.0f-%.0f)", row.book_name, size, qm, frags / q.max, frags / q.min);
+            std::string setups;
+            for (const PeerRun& p : peers) {
+                if (p.report) {
+                    const qs::bench::PeerReport& r = *p.report;
+                    csv << "," << r.median_ms << "," << r.min_ms << "," << r.max_ms << "," << r.setup_ms;
+                    md << format(" | %.0f (%.0f-%.0f)", frags / r.median_ms, frags / r.max_ms, frags / r.min_ms);
+                    setups += (setups.empty() ? "" : " / ") + format("%.0f", r.setup_ms);
+                } else {
+                    csv << ",,,,";
+                    md << " | " << p.missing;
+                    setups += setups.empty() ? "-" : " / -";
+                }
+            }
+            if (best) {
+                const double lm = frags / best->report->median_ms;
+                csv << "," << best->width << "," << qm << "," << lm << "," << qm / lm << "\n";
+                md << format(" | %.2fx (%d bits)", qm / lm, best->width);
+            } else {
+                ++g_rows_without_peer;
+                csv << ",,," << qm << ",,\n";
+                md << " | -";
+            }
+            md << format(" | %s | %d / %d / %d / %d |\n", setups.c_str(), row.book[0], row.book[1], row.book[2], row.book[3]);
+        }
+    }
+    std::fprintf(stderr, "\r%40s\r", "");
+    std::ofstream(out / "throughput.md") << md.str();
+    std::printf("%d threads, median of %d frames (min-max in brackets), float RGBA target; llvmpipe in a child "
+                "process per vector width\n\n%s", o.threads, o.repeat, md.str().c_str());
+    std::ofstream(out / "specialisation.md") << special.str();
+    std::printf("\nLeaving out what a shader does not need (median ms per frame, %d threads): the specialised "
+                "pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
+                o.threads, special.str().c_str());
+    if (o.shaders.empty()) {
+        const std::string figure = figure_frames(o);
+        std::ofstream(out / "figure-1.1-frame.md") << figure;
+        std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", o.threads, o.repeat,
+                    figure.c_str());
+    }
+    if (g_unreadable_reports > 0 || g_rows_without_peer > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: %d unreadable llvmpipe reports, %d rows without llvmpipe at "
+                             "any width (above)\n", g_unreadable_reports, g_rows_without_peer);
+        return 1;
+    }
+    return 0;
+}
+
+// Seconds of CPU this process has used, all its threads.
+double process_cpu_seconds() {
+    rusage u{};
+    ::getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// quadshade alone on the noise rows at several thread counts: each round times every shader at
+// every count in turn, so a round's ratios come from the same minutes. The cores each count
+// actually got (CPU time over wall time) tell a scheduler that does not scale from a shared host
+// that did not give the process its cores.
+int run_scaling(const Options& o) {
+    struct Series {
+        const Row* row;
+        int size;
+        std::vector<std::vector<double>> ms;     // [thread count][round]: median ms of the round
+        std::vector<std::vector<double>> cores;  // [thread count][round]: CPU time over wall time
+    };
+    std::vector<Series> series;
+    for (int size : o.sizes) {
+        for (const Row& row : kRows) {
+            const bool chosen = o.shaders.empty() ? row.noise
+                                                  : std::find(o.shaders.begin(), o.shaders.end(), row.shader) != o.shaders.end();
+            if (chosen) series.push_back({&row, size, std::vector<std::vector<double>>(o.scaling_threads.size()),
+                                          std::vector<std::vector<double>>(o.scaling_threads.size())});
+        }
+    }
+    qs::Scene scene = qs::load_scene(kPlane);
+    for (int round = 0; round < o.rounds; ++round) {
+        for (Series& s : series) {
+            for (std::size_t i = 0; i < o.scaling_threads.size(); ++i) {
+                std::fprintf(stderr, "\rround %d/%d %-16s %4d ...", round + 1, o.rounds, s.row->shader,
+                             o.scaling_threads[i]);
+                qs::FrameRequest req;
+                req.width = req.height = s.size;
+                req.shader_override = s.row->shader;
+                req.shading.threads = o.scaling_threads[i];
+                qs::SceneRenderer renderer(scene, req);
+                qs::Framebuffer fb;
+                const double cpu0 = process_cpu_seconds();
+                const auto t0 = Clock::now();
+                s.ms[i].push_back(time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); }).median);
+                s.cores[i].push_back((process_cpu_seconds() - cpu0) / (1e-3 * ms_since(t0)));
+            }
+        }
+    }
+    std::fprintf(stderr, "\r%50s\r", "");
+    // Each cell: the median over rounds (min-max); speedups are per round, each thread count
+    // against the one before it (2 against 1, 8 against 2).
+    auto threads = [](int t) { return std::to_string(t) + (t == 1 ? " thread" : " threads"); };
+    std::ostringstream md;
+    md << "| shader | size";
+    for (int t : o.scaling_threads) md << " | " << threads(t) << " ms";
+    for (std::size_t i = 1; i < o.scaling_threads.size(); ++i) {
+        md << " | " << threads(o.scaling_threads[i]) << " vs " << o.scaling_threads[i - 1];
+    }
+    md << " | cores used (CPU time / wall time)";
+    for (std::size_t i = 0; i < o.scaling_threads.size(); ++i) md << (i ? " / " : ": ") << o.scaling_threads[i];
+    md << " |\n|---|---|";
+    for (std::size_t i = 0; i < 2 * o.scaling_threads.size(); ++i) md << "---|";
+    md << "\n";
+    for (const Series& s : series) {
+        md << format("| %s | %d", s.row->book_name, s.size);
+        for (const std::vector<double>& ms : s.ms) {
+            const Stats st = stats_of(ms);
+            md << format(" | %.2f (%.2f-%.2f)", st.median, st.min, st.max);
+        }
+        for (std::size_t i = 1; i < s.ms.size(); ++i) {
+            std::vector<double> ratio;
+            for (int r = 0; r < o.rounds; ++r) ratio.push_back(s.ms[i - 1][r] / s.ms[i][r]);
+            const Stats st = stats_of(ratio);
+            md << format(" | %.2fx (%.2f-%.2f)", st.median, st.min, st.max);
+        }
+        for (std::size_t i = 0; i < s.cores.size(); ++i) md << format(i ? " / %.2f" : " | %.2f", stats_of(s.cores[i]).median);
+        md << " |\n";
+    }
+    std::ofstream(fs::path(o.out) / "scaling.md") << md.str();
+    std::printf("quadshade alone, ms per frame: median over %d rounds of each round's median of %d frames "
+                "(min-max over rounds); speedups per round, each thread count against the one before (this host: %u hardware threads)\n\n%s",
+                o.rounds, o.repeat, std::thread::hardware_concurrency(), md.str().c_str());
+    return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    int threads = 2, repeat = 15;
-    std::vector<int> sizes = {1024, 500};
-    std::string out = "bench-results";
-    std::vector<std::string> only;  // --shaders: these rows only, and no Figure 1.1 frame
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
-        if (a == "--threads") threads = std::max(1, std::atoi(value().c_str()));
-        else if (a == "--repeat") repeat = std::max(3, std::atoi(value().c_str()));
-        else if (a == "--out") out = value();
-        else if (a == "--shaders") {
-            std::stringstream ss(value());
-            for (std::string sh; std::getline(ss, sh, ',');) only.push_back(sh);
+    Options o;
+    CLI::App app{"quadshade-bench-throughput: Table 1.1's shaders against OSMesa llvmpipe at each vector width, "
+                 "and the Figure 1.1 frame"};
+    app.add_option("--threads", o.threads, "threads for quadshade and llvmpipe (LP_NUM_THREADS)")
+        ->check(CLI::Range(1, 256));
+    app.add_option("--repeat", o.repeat, "frames timed per measurement (median, min-max)")->check(CLI::Range(3, 100000));
+    app.add_option("--sizes", o.sizes, "square sizes of the Table 1.1 plane (--scaling: 1024)")->delimiter(',')->check(CLI::Range(1, 8192));
+    app.add_option("--shaders", o.shaders, "these rows only (no Figure 1.1 frame)")->delimiter(',');
+    app.add_option("--widths", o.widths, "llvmpipe vector widths (LP_NATIVE_VECTOR_WIDTH), each in a child process")
+        ->delimiter(',')->check(CLI::IsMember({128, 256, 512}));
+    app.add_option("--out", o.out, "folder for the tables and CSV");
+    app.add_flag("--scaling", o.scaling, "quadshade alone on the noise rows at --scaling-threads (writes scaling.md)");
+    app.add_option("--scaling-threads", o.scaling_threads, "thread counts of --scaling, the first the baseline")
+        ->delimiter(',')->check(CLI::Range(1, 256));
+    app.add_option("--rounds", o.rounds, "rounds of --scaling (median and min-max over them)")->check(CLI::Range(3, 1000));
+    // The peer child's job, set by the parent (hidden).
+    app.add_flag("--peer-only", o.peer_only)->group("");
+    app.add_option("--vector-width", o.vector_width)->group("")->check(CLI::IsMember({128, 256, 512}));
+    app.add_option("--size", o.size)->group("")->check(CLI::Range(1, 8192));
+    app.add_option("--shader", o.shader)->group("");
+    app.add_flag("--figure", o.figure)->group("");
+    app.add_option("--glsl", o.glsl)->group("");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "quadshade-bench-throughput: %s (--help lists the options)\n", e.what());
+        return 2;
+    }
+    if (o.scaling && app.count("--sizes") == 0) o.sizes = {1024};
+
+    const bool peer_job = o.vector_width || o.size || !o.shader.empty() || o.figure || !o.glsl.empty();
+    if (o.peer_only != peer_job || (o.peer_only && (!o.vector_width || o.glsl.empty() ||
+                                                    o.figure == (o.size > 0 || !o.shader.empty()) ||
+                                                    (!o.figure && (o.size == 0 || o.shader.empty()))))) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --peer-only takes --vector-width, --glsl and either "
+                             "--figure or --size and --shader; those options only with --peer-only\n");
+        return 2;
+    }
+    // Options of one mode given to the other are refused, not ignored.
+    for (const char* opt : {"--widths", "--threads"}) {
+        if (o.scaling && app.count(opt) > 0) {
+            std::fprintf(stderr, "quadshade-bench-throughput: %s is not an option of --scaling (quadshade alone, at "
+                                 "--scaling-threads)\n", opt);
+            return 2;
         }
-        else if (a == "--sizes") {
-            sizes.clear();
-            std::stringstream ss(value());
-            for (std::string s; std::getline(ss, s, ',');) sizes.push_back(std::atoi(s.c_str()));
-        } else {
-            std::fprintf(stderr, "usage: quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] "
-                                 "[--shaders a,b] [--out DIR]\n");
-            return a == "--help" ? 0 : 2;
+    }
+    for (const char* opt : {"--scaling-threads", "--rounds"}) {
+        if ((!o.scaling || o.peer_only) && app.count(opt) > 0) {
+            std::fprintf(stderr, "quadshade-bench-throughput: %s only with --scaling\n", opt);
+            return 2;
+        }
+    }
+    if (o.scaling && o.peer_only) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling and --peer-only are two different runs\n");
+        return 2;
+    }
+    if (o.scaling && o.scaling_threads.size() < 2) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling needs at least two --scaling-threads\n");
+        return 2;
+    }
+    for (const std::string& s : o.shaders) {
+        if (std::none_of(std::begin(kRows), std::end(kRows), [&](const Row& r) { return s == r.shader; })) {
+            std::fprintf(stderr, "quadshade-bench-throughput: --shaders: '%s' is not a Table 1.1 row\n", s.c_str());
+            return 2;
         }
     }
     try {
-        const std::filesystem::path plane = std::filesystem::path(QUADSHADE_SOURCE_DIR) / "scenes/assets/table-1.1-plane.gltf";
-        std::filesystem::create_directories(out);
-        const std::filesystem::path glsl = std::filesystem::path(out) / "glsl";  // what llvmpipe compiles
-        qs::export_glsl(glsl);
-        std::ofstream csv(std::filesystem::path(out) / "throughput.csv");
-        csv << "shader,size,threads,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max,llvmpipe_ms_median,"
-               "llvmpipe_ms_min,llvmpipe_ms_max,llvmpipe_setup_ms,quadshade_mfrags,llvmpipe_mfrags,speedup\n";
-        std::ostringstream md;
-        md << "| shader | size | quadshade Mfrag/s | llvmpipe Mfrag/s | speedup (goal >= 2) | llvmpipe set-up ms | "
-              "2011 GPUs: 9600M / HD6310 / HD4850 / GTX260 |\n|---|---|---|---|---|---|---|\n";
-        std::ostringstream special;
-        special << "| shader | size | what the shader needs | specialised ms | general path ms | saving |\n"
-                   "|---|---|---|---|---|---|\n";
-        for (int size : sizes) {
-            auto context = qs::create_osmesa_context(size, size, qs::GlDriver::Llvmpipe, threads);
-            for (const Row& row : kRows) {
-                if (!only.empty() && std::find(only.begin(), only.end(), row.shader) == only.end()) continue;
-                std::fprintf(stderr, "\r%-16s %4dx%-4d ...", row.shader, size, size);
-                qs::Scene scene = qs::load_scene(plane);
-                qs::FrameRequest req;
-                req.width = req.height = size;
-                req.shader_override = row.shader;
-                req.shading.threads = threads;
-                qs::Framebuffer fb;
-                qs::SceneRenderer renderer(scene, req);
-                const Stats q = time_frames(repeat, [&] { renderer.render_into(fb, std::nullopt); });
-                qs::RenderStats frame;
-                renderer.render_into(fb, std::nullopt, &frame);
-                // The same frame through the general path: quads with helper lanes and a depth
-                // buffer whatever the shader needs.
-                qs::FrameRequest general_req = req;
-                general_req.raster.force_general_path = true;
-                qs::SceneRenderer general(scene, general_req);
-                const Stats g = time_frames(repeat, [&] { general.render_into(fb, std::nullopt); });
-                char saving[256];
-                std::snprintf(saving, sizeof saving, "| %s | %d | %s | %.2f | %.2f | %.0f%% |\n", row.book_name, size,
-                              needs_of(row.shader, frame).c_str(), q.median, g.median, 100.0 * (1.0 - q.median / g.median));
-                special << saving;
-                const auto s0 = Clock::now();
-                qs::GlSceneRenderer gl(scene, {size, size, {}, row.shader, {}}, *context, glsl);
-                gl.draw();  // the first frame compiles llvmpipe's code
-                const double setup = std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
-                const Stats l = time_frames(repeat, [&] { gl.draw(); });
-                const double frags = double(size) * size * 1e-3;  // per ms -> Mfrag/s
-                const double qm = frags / q.median, lm = frags / l.median;
-                csv << row.shader << "," << size << "," << threads << "," << q.median << "," << q.min << "," << q.max << ","
-                    << l.median << "," << l.min << "," << l.max << "," << setup << "," << qm << "," << lm << ","
-                    << qm / lm << "\n";
-                char line[512];
-                std::snprintf(line, sizeof line, "| %s | %d | %.0f (%.0f-%.0f) | %.0f (%.0f-%.0f) | %.2fx | %.0f | %d / %d / %d / %d |\n",
-                              row.book_name, size, qm, frags / q.max, frags / q.min, lm, frags / l.max, frags / l.min,
-                              qm / lm, setup, row.book[0], row.book[1], row.book[2], row.book[3]);
-                md << line;
-            }
-        }
-        std::fprintf(stderr, "\r%40s\r", "");
-        std::ofstream(std::filesystem::path(out) / "throughput.md") << md.str();
-        std::printf("%d threads, median of %d frames (min-max in brackets), float RGBA target\n\n%s", threads, repeat,
-                    md.str().c_str());
-        std::ofstream(std::filesystem::path(out) / "specialisation.md") << special.str();
-        std::printf("\nLeaving out what a shader does not need (median ms per frame, %d threads): the specialised "
-                    "pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
-                    threads, special.str().c_str());
-        if (!only.empty()) return 0;
-        const std::string figure = figure_frames(threads, repeat, glsl);
-        std::ofstream(std::filesystem::path(out) / "figure-1.1-frame.md") << figure;
-        std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", threads, repeat,
-                    figure.c_str());
+        if (o.peer_only) return run_peer_child(o);
+        fs::create_directories(o.out);
+        if (o.scaling) return run_scaling(o);
+        qs::export_glsl(fs::path(o.out) / "glsl");  // what llvmpipe compiles
+        return run_throughput(o);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-bench-throughput: %s\n", e.what());
         return 1;
     }
-    return 0;
 }
