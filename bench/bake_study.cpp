@@ -96,6 +96,24 @@ float rgb_error(const Framebuffer& a, const Framebuffer& b, std::size_t i) {
     return e;  // 8-bit steps
 }
 
+// A baked frame B against the live frame L over the pixels L covers: the mean RGB error in 8-bit
+// steps and how many pixels are over 8 steps.
+struct LiveError {
+    double mean = 0;
+    std::size_t over8 = 0, covered = 0;
+};
+LiveError error_against_live(const Framebuffer& L, const Framebuffer& B) {
+    LiveError r;
+    double sum = 0;
+    for (std::size_t i = 0; i < std::size_t(L.width) * std::size_t(L.height); ++i) {
+        if (L.rgba[i * 4 + 3] < 0.5f) continue;
+        const float e = rgb_error(L, B, i);
+        sum += e, ++r.covered, r.over8 += e > 8.0f;
+    }
+    r.mean = sum / double(r.covered);
+    return r;
+}
+
 // The median of `repeat` runs of f, in ms.
 template <class F>
 double median_ms(int repeat, F&& f) {
@@ -189,15 +207,9 @@ void lit_study(const Options& o, const FrameRequest& frame) {
         double live_ms = 0, baked_ms = 0;
         const Framebuffer L = timed(live_copy, lr, o.repeat, live_ms);
         const Framebuffer B = timed(baked, r, o.repeat, baked_ms);
-        double sum = 0;
-        std::size_t count = 0, over8 = 0;
-        for (std::size_t i = 0; i < std::size_t(v.frame) * std::size_t(v.frame); ++i) {
-            if (L.rgba[i * 4 + 3] < 0.5f) continue;
-            const float e = rgb_error(L, B, i);
-            sum += e, ++count, over8 += e > 8.0f;
-        }
+        const LiveError e = error_against_live(L, B);
         md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
-                v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, sum / double(count), over8, count);
+                v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, e.mean, e.over8, e.covered);
         write_image(o.out / (std::string("lit-live-") + v.name + ".png"), Image{L.width, L.height, L.rgba});
         write_image(o.out / (std::string("lit-baked-") + v.name + ".png"), Image{B.width, B.height, B.rgba});
     }
@@ -246,15 +258,9 @@ int main(int argc, char** argv) {
             double live_ms = 0, baked_ms = 0;
             const Framebuffer L = timed(live_copy, r, o.repeat, live_ms);
             const Framebuffer B = timed(baked, r, o.repeat, baked_ms);
-            double sum = 0;
-            std::size_t n = 0, over8 = 0;
-            for (std::size_t i = 0; i < std::size_t(v.frame) * std::size_t(v.frame); ++i) {
-                if (L.rgba[i * 4 + 3] < 0.5f) continue;
-                const float e = rgb_error(L, B, i);
-                sum += e, ++n, over8 += e > 8.0f;
-            }
+            const LiveError e = error_against_live(L, B);
             bake_md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
-                        v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, sum / double(n), over8, n);
+                        v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, e.mean, e.over8, e.covered);
             write_image(o.out / (std::string("live-") + v.name + ".png"), Image{L.width, L.height, L.rgba});
             write_image(o.out / (std::string("baked-") + v.name + ".png"), Image{B.width, B.height, B.rgba});
         }
