@@ -13,6 +13,7 @@
 #include "render/atlas_skirts.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "tests/test_command.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -31,15 +32,6 @@ std::string error_of(const Scene& s) {
         return e.what();
     }
     return "";
-}
-
-int run(const std::string& cmd, std::string* err = nullptr, const std::filesystem::path& err_file = {}) {
-    const int status = std::system((cmd + " 2> " + (err_file.empty() ? std::string("/dev/null") : err_file.string())).c_str());
-    if (err && !err_file.empty()) {
-        std::ifstream in(err_file);
-        err->assign(std::istreambuf_iterator<char>(in), {});
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace

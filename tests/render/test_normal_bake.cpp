@@ -18,6 +18,7 @@
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "shading/height_field.h"
+#include "tests/test_command.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -28,15 +29,6 @@ using namespace test;
 
 const std::filesystem::path kAtlasCube = kSource / "scenes/assets/bake/atlas-cube.gltf";
 const std::filesystem::path kAtlasSphere = kSource / "scenes/assets/bake/atlas-sphere.gltf";
-
-int run(const std::string& cmd, std::string* err = nullptr, const std::filesystem::path& err_file = {}) {
-    const int status = std::system((cmd + " 2> " + (err_file.empty() ? std::string("/dev/null") : err_file.string())).c_str());
-    if (err && !err_file.empty()) {
-        std::ifstream in(err_file);
-        err->assign(std::istreambuf_iterator<char>(in), {});
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 double angle(const glm::dvec3& a, const glm::dvec3& b) {
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
