@@ -28,7 +28,6 @@
 #include <concepts>
 #include <cstring>
 #include <cstdint>
-#include <experimental/simd>
 #include <type_traits>
 
 #if defined(__SSE2__)
@@ -39,20 +38,17 @@
 #include "shading/number/dual2.h"
 #include "shading/number/lanes.h"
 #include "shading/number/scalar.h"
+#include "shading/number/wide_vector.h"
 
 namespace qs {
 
 namespace integer_detail {
 
-// The SIMD ABI that holds one T per fragment of F.
-template <class T, class F>
-struct abi_of {
-    using type = stdx::simd_abi::scalar;  // float, double: one fragment
-};
-template <class T, class S, int N, class L>
-struct abi_of<T, Lanes<S, N, L>> {
-    using type = stdx::simd_abi::deduce_t<T, N>;
-};
+// How many fragments one F holds: its lanes, or 1 for float and double.
+template <class F>
+struct fragments_of : std::integral_constant<int, 1> {};
+template <class S, int N, class L>
+struct fragments_of<Lanes<S, N, L>> : std::integral_constant<int, N> {};
 
 // int(x) of N floats or doubles: truncated, INT_MIN out of range (after truncation) and for
 // NaN. That is the x86 conversions' answer (cvttps2dq, cvttpd2dq and their wider forms), which
@@ -84,22 +80,6 @@ void truncate(const S (&in)[N], std::int32_t (&out)[N]) {
     }
 }
 
-// Casts between masks of the same lanes and different value types or ABIs (bool for one lane).
-template <class To, class From>
-To mask_cast(const From& m) {
-    if constexpr (std::is_same_v<To, From>) {
-        return m;
-    } else if constexpr (std::is_same_v<To, bool>) {
-        return bool(m[0]);
-    } else if constexpr (std::is_same_v<From, bool>) {
-        return To(m);
-    } else {
-        // libstdc++'s mask conversion (the Parallelism TS v2 has none): a no-op between
-        // bitmask ABIs, a widening or narrowing between vector masks.
-        return stdx::__proposed::static_simd_cast<To>(m);
-    }
-}
-
 }  // namespace integer_detail
 
 template <class T, class F>
@@ -109,19 +89,19 @@ class IntLanes {
 public:
     using value_type = T;
     using float_type = F;  // the float number type whose fragments these are
-    using Simd = stdx::simd<T, typename integer_detail::abi_of<T, F>::type>;
-    using Mask = decltype(F() < F());  // F's own mask: GLSL's bool in this instantiation
-    static constexpr int size = int(Simd::size());
+    static constexpr int size = integer_detail::fragments_of<F>::value;
+    using Vector = simd::Wide<T, size>;  // one lane per fragment (one for float and double)
+    using Mask = decltype(F() < F());        // F's own mask: GLSL's bool in this instantiation
     static constexpr bool is_signed = std::is_signed_v<T>;
 
-    Simd v;
+    Vector v;
 
     IntLanes() = default;
-    IntLanes(T x) : v(x) {}  // NOLINT: broadcast, as GLSL promotes a literal
+    IntLanes(T x) : v(Vector::splat(x)) {}  // NOLINT: broadcast, as GLSL promotes a literal
     template <std::integral S>
         requires(!std::is_same_v<S, T> && !std::is_same_v<S, bool>)
-    IntLanes(S x) : v(T(x)) {}  // NOLINT: an integer literal of either signedness
-    explicit IntLanes(const Simd& s) : v(s) {}
+    IntLanes(S x) : IntLanes(T(x)) {}  // NOLINT: an integer literal of either signedness
+    explicit IntLanes(const Vector& x) : v(x) {}
 
     // GLSL int(x), uint(x) of a float: truncation, out-of-range results as stated above.
     explicit IntLanes(const F& x) : v(from_float(x)) {}
@@ -132,25 +112,16 @@ public:
     // int(u), uint(i): the same bits.
     template <class U>
         requires(!std::is_same_v<U, T>)
-    explicit IntLanes(const IntLanes<U, F>& o) : v(stdx::static_simd_cast<Simd>(o.v)) {}
+    explicit IntLanes(const IntLanes<U, F>& o) : v(simd::bit_cast<T>(o.v)) {}
     // int(b): 1 or 0.
     explicit IntLanes(const Mask& m) : IntLanes(select(m, IntLanes(1), IntLanes(0))) {}
 
     // float(i), double(i) where F is float or double.
-    explicit operator float() const requires std::is_floating_point_v<F> { return float(T(v[0])); }
-    explicit operator double() const requires std::is_floating_point_v<F> { return double(T(v[0])); }
-    // The lanes as float lanes (F's value type), rounded to nearest.
-    template <class S>
-    stdx::simd<S, stdx::simd_abi::deduce_t<S, size>> to_simd() const {
-        return stdx::static_simd_cast<stdx::simd<S, stdx::simd_abi::deduce_t<S, size>>>(v);
-    }
+    explicit operator float() const requires std::is_floating_point_v<F> { return float(v[0]); }
+    explicit operator double() const requires std::is_floating_point_v<F> { return double(v[0]); }
 
-    static IntLanes load(const T* p) {
-        IntLanes r;
-        r.v.copy_from(p, stdx::element_aligned);
-        return r;
-    }
-    void store(T* p) const { v.copy_to(p, stdx::element_aligned); }
+    static IntLanes load(const T* p) { return IntLanes(Vector::load(p)); }
+    void store(T* p) const { v.store(p); }
     T operator[](int i) const { return v[i]; }
 
     // ---- arithmetic, wrapping: computed on the unsigned bits ----
@@ -160,25 +131,16 @@ public:
     friend IntLanes operator-(const IntLanes& a, const IntLanes& b) { return wrap(bits(a) - bits(b)); }
     friend IntLanes operator*(const IntLanes& a, const IntLanes& b) { return wrap(bits(a) * bits(b)); }
     friend IntLanes operator/(const IntLanes& a, const IntLanes& b) {
-        const auto zero = b.v == Simd(T(0));
-        if constexpr (is_signed) {
-            // x / 0 = 0; INT_MIN / -1 = INT_MIN, the quotient 2^31 wrapped.
-            IntLanes q = quotient(a, select_simd(zero, Simd(T(1)), b.v));
-            stdx::where(zero, q.v) = T(0);
-            return q;
-        } else {
-            IntLanes q = quotient(a, select_simd(zero, Simd(T(1)), b.v));
-            stdx::where(zero, q.v) = T(0xFFFFFFFFu);
-            return q;
-        }
+        const auto zero = simd::equal(b.v, Vector{});
+        // x / 0 = 0 for int, 0xFFFFFFFF for uint; INT_MIN / -1 = INT_MIN, the quotient 2^31 wrapped.
+        const IntLanes q = quotient(a, simd::select(zero, Vector::splat(T(1)), b.v));
+        return IntLanes(simd::select(zero, Vector::splat(is_signed ? T(0) : T(0xFFFFFFFFu)), q.v));
     }
     friend IntLanes operator%(const IntLanes& a, const IntLanes& b) {
         using U = IntLanes<std::uint32_t, F>;
         const U ua(a), ub(b);
         const U r = ua - (ua / ub) * ub;  // x % 0: x - 0xFFFFFFFF * 0 = x, fixed below
-        IntLanes out(r);
-        stdx::where(b.v == Simd(T(0)), out.v) = T(0xFFFFFFFFu);
-        return out;
+        return IntLanes(simd::select(simd::equal(b.v, Vector{}), Vector::splat(T(0xFFFFFFFFu)), IntLanes(r).v));
     }
     friend IntLanes operator&(const IntLanes& a, const IntLanes& b) { return IntLanes(a.v & b.v); }
     friend IntLanes operator|(const IntLanes& a, const IntLanes& b) { return IntLanes(a.v | b.v); }
@@ -190,7 +152,7 @@ public:
     }
     template <class C>
     friend IntLanes operator>>(const IntLanes& a, const IntLanes<C, F>& n) {
-        return IntLanes(a.v >> stdx::static_simd_cast<Simd>(count(n)));
+        return IntLanes(a.v >> simd::bit_cast<T>(count(n)));
     }
     friend IntLanes operator<<(const IntLanes& a, int n) { return wrap(bits(a) << (n & 31)); }
     friend IntLanes operator>>(const IntLanes& a, int n) { return IntLanes(a.v >> (n & 31)); }
@@ -208,73 +170,78 @@ public:
     IntLanes& operator++() & { return *this = *this + IntLanes(1); }
     IntLanes& operator--() & { return *this = *this - IntLanes(1); }
 
-    friend Mask operator<(const IntLanes& a, const IntLanes& b) { return mask(a.v < b.v); }
-    friend Mask operator<=(const IntLanes& a, const IntLanes& b) { return mask(a.v <= b.v); }
-    friend Mask operator>(const IntLanes& a, const IntLanes& b) { return mask(a.v > b.v); }
-    friend Mask operator>=(const IntLanes& a, const IntLanes& b) { return mask(a.v >= b.v); }
-    friend Mask operator==(const IntLanes& a, const IntLanes& b) { return mask(a.v == b.v); }
-    friend Mask operator!=(const IntLanes& a, const IntLanes& b) { return mask(a.v != b.v); }
+    friend Mask operator<(const IntLanes& a, const IntLanes& b) { return mask(simd::less(a.v, b.v)); }
+    friend Mask operator<=(const IntLanes& a, const IntLanes& b) { return mask(simd::less_equal(a.v, b.v)); }
+    friend Mask operator>(const IntLanes& a, const IntLanes& b) { return mask(simd::less(b.v, a.v)); }
+    friend Mask operator>=(const IntLanes& a, const IntLanes& b) { return mask(simd::less_equal(b.v, a.v)); }
+    friend Mask operator==(const IntLanes& a, const IntLanes& b) { return mask(simd::equal(a.v, b.v)); }
+    friend Mask operator!=(const IntLanes& a, const IntLanes& b) { return mask(simd::not_equal(a.v, b.v)); }
 
     friend IntLanes select(const Mask& m, const IntLanes& a, const IntLanes& b) {
-        return IntLanes(select_simd(integer_detail::mask_cast<typename Simd::mask_type>(m), a.v, b.v));
+        return IntLanes(simd::select(lane_bits_of(m), a.v, b.v));
     }
     // GLSL's integer min, max, abs (abs(INT_MIN) wraps to INT_MIN, as it does on GPUs).
-    friend IntLanes min(const IntLanes& a, const IntLanes& b) { return IntLanes(stdx::min(a.v, b.v)); }
-    friend IntLanes max(const IntLanes& a, const IntLanes& b) { return IntLanes(stdx::max(a.v, b.v)); }
+    friend IntLanes min(const IntLanes& a, const IntLanes& b) { return IntLanes(simd::select(simd::less(a.v, b.v), a.v, b.v)); }
+    friend IntLanes max(const IntLanes& a, const IntLanes& b) { return IntLanes(simd::select(simd::less(b.v, a.v), a.v, b.v)); }
     friend IntLanes abs(const IntLanes& a) requires is_signed { return select(a < IntLanes(0), -a, a); }
 
     friend T lane(const IntLanes& a, int i) { return a.v[i]; }
 
     // The lanes' bits as uint (for wrapping arithmetic), and back.
-    using Bits = stdx::simd<std::uint32_t, typename Simd::abi_type>;
-    static Bits bits(const IntLanes& a) { return stdx::static_simd_cast<Bits>(a.v); }
-    static Bits bits(std::uint32_t x) { return Bits(x); }
-    static IntLanes wrap(const Bits& b) { return IntLanes(stdx::static_simd_cast<Simd>(b)); }
+    using Bits = simd::Wide<std::uint32_t, size>;
+    static Bits bits(const IntLanes& a) { return simd::bit_cast<std::uint32_t>(a.v); }
+    static Bits bits(std::uint32_t x) { return Bits::splat(x); }
+    static IntLanes wrap(const Bits& b) { return IntLanes(simd::bit_cast<T>(b)); }
 
 private:
-    static Mask mask(const typename Simd::mask_type& m) { return integer_detail::mask_cast<Mask>(m); }
-    static Simd select_simd(const typename Simd::mask_type& m, const Simd& a, Simd b) {
-        stdx::where(m, b) = a;
-        return b;
+    using Comparison = simd::Wide<std::int32_t, size>;  // what comparing two Vectors yields
+
+    static Mask mask(const Comparison& c) {
+        if constexpr (std::is_same_v<Mask, bool>) return c[0] != 0;
+        else if constexpr (std::is_same_v<typename Mask::Vector, Comparison>) return Mask(c);
+        else return Mask(simd::convert<typename Mask::Bits>(c));  // double lanes: widened
+    }
+    static Comparison lane_bits_of(const Mask& m) {
+        if constexpr (std::is_same_v<Mask, bool>) return Comparison::splat(m ? -1 : 0);
+        else if constexpr (std::is_same_v<typename Mask::Vector, Comparison>) return m.bits;
+        else return simd::convert<std::int32_t>(m.bits);
     }
     template <class C>
     static Bits count(const IntLanes<C, F>& n) {
-        return IntLanes<C, F>::bits(n) & Bits(31u);
+        return IntLanes<C, F>::bits(n) & Bits::splat(31u);
     }
 
     // a / b for b != 0, truncated: in double, exact for 32-bit operands (a quotient's distance to
     // the next integer is at least 1/|b| > 2^-32, far above double's rounding error), then
     // brought into range, which only INT_MIN / -1 leaves.
-    static IntLanes quotient(const IntLanes& a, const Simd& b) {
-        using D = stdx::simd<double, stdx::simd_abi::deduce_t<double, size>>;
-        using W = stdx::simd<std::int64_t, stdx::simd_abi::deduce_t<std::int64_t, size>>;
-        const D q = stdx::trunc(stdx::static_simd_cast<D>(a.v) / stdx::static_simd_cast<D>(b));
-        const W w = stdx::static_simd_cast<W>(q);  // |q| <= 2^32: in range
-        return wrap(stdx::static_simd_cast<Bits>(w));  // the low 32 bits
+    static IntLanes quotient(const IntLanes& a, const Vector& b) {
+        const auto q = simd::round<simd::Rounding::Trunc>(simd::convert<double>(a.v) / simd::convert<double>(b));
+        const auto w = simd::convert<std::int64_t>(q);  // |q| <= 2^32: in range
+        return wrap(simd::convert<std::uint32_t>(w));  // the low 32 bits
     }
 
     // int(x), uint(x) of F's lanes.
-    static Simd from_float(const F& x) {
+    static Vector from_float(const F& x) {
         if constexpr (std::is_floating_point_v<F>) {
-            return Simd(convert_one(x));
+            return Vector::splat(convert_one(x));
         } else {
             using S = typename F::value_type;
-            using I = stdx::simd<std::int32_t, typename Simd::abi_type>;
-            auto to_int = [](const typename F::Simd& f) {
+            using I = simd::Wide<std::int32_t, size>;
+            auto to_int = [](const F& f) {
                 alignas(64) S in[size];
                 alignas(64) std::int32_t out[size];
-                f.copy_to(in, stdx::element_aligned);
+                f.store(in);
                 integer_detail::truncate(in, out);
                 I r;
-                r.copy_from(out, stdx::element_aligned);
+                std::memcpy(&r, out, sizeof r);
                 return r;
             };
-            const I i = to_int(x.v);
+            const I i = to_int(x);
             if constexpr (is_signed) {
                 return i;
             } else {
-                const I high = to_int(x.v - S(2147483648.0));
-                return stdx::static_simd_cast<Simd>(i | (high & (i >> 31)));
+                const I high = to_int(x - F(S(2147483648.0)));
+                return simd::bit_cast<T>(i | (high & (i >> 31)));
             }
         }
     }

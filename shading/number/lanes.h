@@ -1,5 +1,5 @@
 #pragma once
-// SIMD lanes as a shading number type, on std::experimental::simd.
+// SIMD lanes as a shading number type, on GCC vectors (number/simd_vector.h).
 //
 // `Lanes<T, N, Layout>` holds N values that the shader code treats as one GLSL `float`.
 // The Layout says what the lanes are:
@@ -22,17 +22,19 @@
 // float are llvmpipe's polynomial (number/sin_cos.h). Comparisons
 // yield masks; `select(mask, a, b)` picks per lane. min/max return the non-NaN operand.
 
+#include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
-#include <experimental/simd>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
+#include "shading/number/lane_mask.h"
+#include "shading/number/wide_vector.h"
 #include "shading/number/sin_cos.h"
 
 namespace qs {
-
-namespace stdx = std::experimental;
 
 enum class DerivativeRule { Fine, CoarseLower, CoarseUpper };
 
@@ -44,49 +46,39 @@ struct QuadLanes {
 
 template <class T, int N, class Layout = PixelLanes>
 class Lanes {
+    static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
+
 public:
     using value_type = T;
-    using Simd = stdx::simd<T, stdx::simd_abi::deduce_t<T, N>>;
-    using Mask = typename Simd::mask_type;
+    using Vector = simd::Wide<T, N>;  // register-wide GCC vectors (wide_vector.h)
+    using Mask = LaneMask<int(sizeof(T)), N>;
     using layout = Layout;
     static constexpr int size = N;
-    static_assert(Simd::size() == std::size_t(N), "std::experimental::simd gave a different width");
 
-    Simd v;
+    Vector v;
 
     Lanes() = default;
-    Lanes(T x) : v(x) {}  // NOLINT: broadcast, as GLSL promotes a literal
+    Lanes(T x) : v(Vector::splat(x)) {}  // NOLINT: broadcast, as GLSL promotes a literal
     template <class S>
         requires(std::is_arithmetic_v<S> && !std::is_same_v<S, T>)
-    Lanes(S x) : v(static_cast<T>(x)) {}  // NOLINT
-    explicit Lanes(const Simd& s) : v(s) {}
+    Lanes(S x) : v(Vector::splat(static_cast<T>(x))) {}  // NOLINT
+    explicit Lanes(const Vector& x) : v(x) {}
     // GLSL float(i) of the integers of these lanes (number/integer.h), rounded to nearest.
     template <class I>
         requires std::is_same_v<typename I::float_type, Lanes>
-    explicit Lanes(const I& i) : v(i.template to_simd<T>()) {}
+    explicit Lanes(const I& i) : v(simd::convert<T>(i.v)) {}
     // GLSL float(b): 1 or 0.
-    explicit Lanes(const Mask& m) : v(T(0)) { stdx::where(m, v) = T(1); }
+    explicit Lanes(const Mask& m) : v(simd::select(m.bits, Vector::splat(T(1)), Vector{})) {}
 
-    static Lanes load(const T* p) {
-        Lanes r;
-        r.v.copy_from(p, stdx::element_aligned);
-        return r;
-    }
-    void store(T* p) const { v.copy_to(p, stdx::element_aligned); }
+    static Lanes load(const T* p) { return Lanes(Vector::load(p)); }
+    void store(T* p) const { v.store(p); }
     T operator[](int i) const { return v[i]; }
 
     // Lane i takes the value of lane Index{}(i): a stateless function object, evaluated at
     // compile time, so the move is one shuffle instruction (a generator reading v[index(i)]
     // lane by lane became sixteen scalar loads, and a function pointer a call per lane).
     template <class Index>
-    Lanes permute(Index) const {
-        const Vector x = vector();
-        Vector moved;
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            moved = __builtin_shufflevector(x, x, Index{}(I)...);
-        }(std::make_index_sequence<std::size_t(N)>());
-        return from_vector(moved);
-    }
+    Lanes permute(Index) const { return Lanes(simd::permute<Index>(v)); }
 
     // The lanes through a function of arrays (number/sin_cos.h).
     template <void (*Function)(const T*, T*)>
@@ -95,21 +87,6 @@ public:
         store(in);
         Function(in, out);
         return load(out);
-    }
-
-    // The lanes as a GCC vector, for shuffles.
-    typedef T Vector __attribute__((vector_size(N * sizeof(T))));
-    Vector vector() const {
-        alignas(Vector) T lanes[N];
-        v.copy_to(lanes, stdx::element_aligned);
-        Vector x;
-        std::memcpy(&x, lanes, sizeof x);
-        return x;
-    }
-    static Lanes from_vector(const Vector& x) {
-        alignas(Vector) T lanes[N];
-        std::memcpy(lanes, &x, sizeof x);
-        return load(lanes);
     }
 
     friend Lanes operator-(const Lanes& a) { return Lanes(-a.v); }
@@ -122,66 +99,59 @@ public:
     Lanes& operator*=(const Lanes& b) { v *= b.v; return *this; }
     Lanes& operator/=(const Lanes& b) { v /= b.v; return *this; }
 
-    friend Mask operator<(const Lanes& a, const Lanes& b) { return a.v < b.v; }
-    friend Mask operator<=(const Lanes& a, const Lanes& b) { return a.v <= b.v; }
-    friend Mask operator>(const Lanes& a, const Lanes& b) { return a.v > b.v; }
-    friend Mask operator>=(const Lanes& a, const Lanes& b) { return a.v >= b.v; }
-    friend Mask operator==(const Lanes& a, const Lanes& b) { return a.v == b.v; }
-    friend Mask operator!=(const Lanes& a, const Lanes& b) { return a.v != b.v; }
+    friend Mask operator<(const Lanes& a, const Lanes& b) { return Mask(simd::less(a.v, b.v)); }
+    friend Mask operator<=(const Lanes& a, const Lanes& b) { return Mask(simd::less_equal(a.v, b.v)); }
+    friend Mask operator>(const Lanes& a, const Lanes& b) { return Mask(simd::less(b.v, a.v)); }
+    friend Mask operator>=(const Lanes& a, const Lanes& b) { return Mask(simd::less_equal(b.v, a.v)); }
+    friend Mask operator==(const Lanes& a, const Lanes& b) { return Mask(simd::equal(a.v, b.v)); }
+    friend Mask operator!=(const Lanes& a, const Lanes& b) { return Mask(simd::not_equal(a.v, b.v)); }
 
-    friend Lanes select(const Mask& m, const Lanes& a, const Lanes& b) {
-        Simd r = b.v;
-        stdx::where(m, r) = a.v;
-        return Lanes(r);
-    }
-    friend Mask isnan(const Lanes& a) { return stdx::isnan(a.v); }
-    friend Mask isinf(const Lanes& a) { return stdx::isinf(a.v); }
+    friend Lanes select(const Mask& m, const Lanes& a, const Lanes& b) { return Lanes(simd::select(m.bits, a.v, b.v)); }
+    friend Mask isnan(const Lanes& a) { return a != a; }
+    friend Mask isinf(const Lanes& a) { return abs(a) == Lanes(std::numeric_limits<T>::infinity()); }
     // GLSL min/max as llvmpipe evaluates them: a NaN operand loses to the other one.
     friend Lanes min(const Lanes& a, const Lanes& b) { return select(isnan(b) || a < b, a, b); }
     friend Lanes max(const Lanes& a, const Lanes& b) { return select(isnan(b) || a > b, a, b); }
 
-    friend Lanes floor(const Lanes& a) { return Lanes(stdx::floor(a.v)); }
-    friend Lanes ceil(const Lanes& a) { return Lanes(stdx::ceil(a.v)); }
-    friend Lanes trunc(const Lanes& a) { return Lanes(stdx::trunc(a.v)); }
+    friend Lanes floor(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Floor>(a.v)); }
+    friend Lanes ceil(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Ceil>(a.v)); }
+    friend Lanes trunc(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Trunc>(a.v)); }
     // To nearest, halves to even: the rounding mode shading threads never change.
-    friend Lanes roundEven(const Lanes& a) { return Lanes(stdx::nearbyint(a.v)); }
-    friend Lanes abs(const Lanes& a) { return Lanes(stdx::abs(a.v)); }
-    friend Lanes sqrt(const Lanes& a) { return Lanes(stdx::sqrt(a.v)); }
+    friend Lanes roundEven(const Lanes& a) { return Lanes(simd::round<simd::Rounding::NearestEven>(a.v)); }
+    friend Lanes abs(const Lanes& a) {
+        using Bits = typename Mask::Bits;  // the sign bit cleared
+        return Lanes(simd::bit_cast<T>(simd::bit_cast<Bits>(a.v) & Mask::Vector::splat(std::numeric_limits<Bits>::max())));
+    }
+    friend Lanes sqrt(const Lanes& a) { return Lanes(simd::sqrt(a.v)); }
     // On float, llvmpipe's sin and cos to the bit (number/sin_cos.h); double keeps the library's.
     friend Lanes sin(const Lanes& a) {
         if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<false, N>>();
-        else return Lanes(stdx::sin(a.v));
+        else return a.map([](T x) { return std::sin(x); });
     }
     friend Lanes cos(const Lanes& a) {
         if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<true, N>>();
-        else return Lanes(stdx::cos(a.v));
+        else return a.map([](T x) { return std::cos(x); });
     }
-    friend Lanes tan(const Lanes& a) { return Lanes(stdx::tan(a.v)); }
-    friend Lanes asin(const Lanes& a) { return Lanes(stdx::asin(a.v)); }
-    friend Lanes acos(const Lanes& a) { return Lanes(stdx::acos(a.v)); }
-    friend Lanes atan(const Lanes& a) { return Lanes(stdx::atan(a.v)); }
-    friend Lanes atan(const Lanes& y, const Lanes& x) { return Lanes(stdx::atan2(y.v, x.v)); }
-    friend Lanes exp(const Lanes& a) { return Lanes(stdx::exp(a.v)); }
-    friend Lanes log(const Lanes& a) { return Lanes(stdx::log(a.v)); }
-    friend Lanes exp2(const Lanes& a) { return Lanes(stdx::exp2(a.v)); }
-    friend Lanes log2(const Lanes& a) { return Lanes(stdx::log2(a.v)); }
-    friend Lanes pow(const Lanes& a, const Lanes& b) { return Lanes(stdx::pow(a.v, b.v)); }
+    // The rest, with no vector instruction: the library's functions lane by lane.
+    friend Lanes tan(const Lanes& a) { return a.map([](T x) { return std::tan(x); }); }
+    friend Lanes asin(const Lanes& a) { return a.map([](T x) { return std::asin(x); }); }
+    friend Lanes acos(const Lanes& a) { return a.map([](T x) { return std::acos(x); }); }
+    friend Lanes atan(const Lanes& a) { return a.map([](T x) { return std::atan(x); }); }
+    friend Lanes atan(const Lanes& y, const Lanes& x) { return y.map(x, [](T a, T b) { return std::atan2(a, b); }); }
+    friend Lanes exp(const Lanes& a) { return a.map([](T x) { return std::exp(x); }); }
+    friend Lanes log(const Lanes& a) { return a.map([](T x) { return std::log(x); }); }
+    friend Lanes exp2(const Lanes& a) { return a.map([](T x) { return std::exp2(x); }); }
+    friend Lanes log2(const Lanes& a) { return a.map([](T x) { return std::log2(x); }); }
+    friend Lanes pow(const Lanes& a, const Lanes& b) { return a.map(b, [](T x, T y) { return std::pow(x, y); }); }
 
     friend T lane(const Lanes& a, int i) { return a.v[i]; }
-};
 
-template <class T, class Abi>
-bool lane(const stdx::simd_mask<T, Abi>& m, int i) { return m[i]; }
-// GLSL bools are masks: selecting between two of them.
-template <class T, class Abi>
-stdx::simd_mask<T, Abi> select(const stdx::simd_mask<T, Abi>& m, const stdx::simd_mask<T, Abi>& a,
-                               const stdx::simd_mask<T, Abi>& b) {
-    return (m && a) || (!m && b);
-}
-template <class T, class Abi>
-bool any(const stdx::simd_mask<T, Abi>& m) { return stdx::any_of(m); }
-template <class T, class Abi>
-bool all(const stdx::simd_mask<T, Abi>& m) { return stdx::all_of(m); }
+private:
+    template <class F>
+    Lanes map(F f) const { return Lanes(simd::per_element(v, f)); }
+    template <class F>
+    Lanes map(const Lanes& b, F f) const { return Lanes(simd::per_element(v, b.v, f)); }
+};
 
 // Number types the renderer instantiates shaders with.
 template <class T, int N>

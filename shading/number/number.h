@@ -57,7 +57,7 @@ template <class M>
 struct is_checked_mask<CheckedMask<M>> : std::true_type {};
 // A Boolean stands where GLSL has bool: a mask of lanes (bool for one lane).
 template <class M>
-concept Boolean = std::is_same_v<M, bool> || stdx::is_simd_mask_v<M> || is_checked_mask<M>::value;
+concept Boolean = std::is_same_v<M, bool> || is_lane_mask<M>::value || is_checked_mask<M>::value;
 
 // Whether dFdx/dFdy exist on F: quads (lane differences) and Dual2 (carried partials).
 template <class F>

@@ -1,0 +1,162 @@
+#pragma once
+// GCC vectors (`T __attribute__((vector_size(...)))`) of at most one register, the parts of
+// simd::Wide (wide_vector.h), and the few operations on them that C++ operators do not cover:
+// rounding, square roots and any() by the CPU's own instructions, and splat.
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace qs::simd {
+
+template <class T, int N>
+struct vector_of {
+    typedef T type __attribute__((vector_size(N * sizeof(T))));
+};
+// N values of T as one GCC vector (N = 1 is a vector of one element: the per-pixel numbers).
+template <class T, int N>
+using Vector = typename vector_of<T, N>::type;
+
+template <class V>
+using element_t = std::remove_cvref_t<decltype(std::declval<V>()[0])>;
+template <class V>
+inline constexpr int size_v = int(sizeof(V) / sizeof(element_t<V>));
+
+// x in every lane (as an initializer, which keeps -0.0: `V{} + x` would make it +0.0).
+template <class V>
+[[gnu::always_inline]] inline V splat(element_t<V> x) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return V{((void)I, x)...};
+    }(std::make_index_sequence<std::size_t(size_v<V>)>());
+}
+
+// The widest vector register the build's CPU has, in bytes.
+inline constexpr std::size_t register_bytes =
+#if defined(__AVX512F__)
+    64;
+#elif defined(__AVX2__)
+    32;
+#else
+    16;
+#endif
+
+// Apply op, a function of the CPU's native vector type Native (__m256, ...), to x of the same size.
+template <class Native, class V, class Op>
+[[gnu::always_inline]] inline V by_register(const V& x, Op op) {
+    static_assert(sizeof(V) == sizeof(Native));
+    return std::bit_cast<V>(op(std::bit_cast<Native>(x)));
+}
+
+// f of each element, for what has no vector instruction (transcendentals: the library's
+// functions, element by element, as libstdc++'s simd computes them).
+template <class V, class F>
+V per_element(const V& x, F f) {
+    V r;
+    for (int i = 0; i < size_v<V>; ++i) r[i] = f(x[i]);
+    return r;
+}
+template <class V, class F>
+V per_element(const V& x, const V& y, F f) {
+    V r;
+    for (int i = 0; i < size_v<V>; ++i) r[i] = f(x[i], y[i]);
+    return r;
+}
+
+// Rounding to an integer value in the direction Mode (_MM_FROUND_TO_NEG_INF, ..._POS_INF,
+// ..._ZERO, ..._NEAREST_INT), with roundps/roundpd as llvmpipe emits for floor, ceil, trunc and
+// roundEven; the library's functions where SSE4.1 is missing (the same values).
+enum class Rounding { Floor, Ceil, Trunc, NearestEven };
+
+template <Rounding R, class V>
+[[gnu::always_inline]] inline V round(const V& x) {
+#if defined(__SSE4_1__)
+    [[maybe_unused]] constexpr int mode = (R == Rounding::Floor  ? _MM_FROUND_TO_NEG_INF
+                          : R == Rounding::Ceil ? _MM_FROUND_TO_POS_INF
+                          : R == Rounding::Trunc ? _MM_FROUND_TO_ZERO
+                                                 : _MM_FROUND_TO_NEAREST_INT) |
+                         _MM_FROUND_NO_EXC;
+    using T [[maybe_unused]] = element_t<V>;
+#if defined(__AVX512F__)
+    if constexpr (sizeof(V) == 64) {
+        if constexpr (std::is_same_v<T, float>) return by_register<__m512>(x, [](__m512 c) { return _mm512_roundscale_ps(c, mode); });
+        else return by_register<__m512d>(x, [](__m512d c) { return _mm512_roundscale_pd(c, mode); });
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32) {
+        if constexpr (std::is_same_v<T, float>) return by_register<__m256>(x, [](__m256 c) { return _mm256_round_ps(c, mode); });
+        else return by_register<__m256d>(x, [](__m256d c) { return _mm256_round_pd(c, mode); });
+    }
+#endif
+    if constexpr (sizeof(V) == 16) {
+        if constexpr (std::is_same_v<T, float>) return by_register<__m128>(x, [](__m128 c) { return _mm_round_ps(c, mode); });
+        else return by_register<__m128d>(x, [](__m128d c) { return _mm_round_pd(c, mode); });
+    }
+#endif
+    return per_element(x, [](auto e) {
+        if constexpr (R == Rounding::Floor) return std::floor(e);
+        else if constexpr (R == Rounding::Ceil) return std::ceil(e);
+        else if constexpr (R == Rounding::Trunc) return std::trunc(e);
+        else return std::nearbyint(e);  // the rounding mode shading threads never change: to even
+    });
+}
+
+// The correctly rounded square root (sqrtps/sqrtpd; the library's sqrt, element by element, where
+// the vector does not fill registers).
+template <class V>
+[[gnu::always_inline]] inline V sqrt(const V& x) {
+    using T [[maybe_unused]] = element_t<V>;
+#if defined(__AVX512F__)
+    if constexpr (sizeof(V) == 64) {
+        if constexpr (std::is_same_v<T, float>) return by_register<__m512>(x, [](__m512 c) { return _mm512_sqrt_ps(c); });
+        else return by_register<__m512d>(x, [](__m512d c) { return _mm512_sqrt_pd(c); });
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32) {
+        if constexpr (std::is_same_v<T, float>) return by_register<__m256>(x, [](__m256 c) { return _mm256_sqrt_ps(c); });
+        else return by_register<__m256d>(x, [](__m256d c) { return _mm256_sqrt_pd(c); });
+    }
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(V) == 16) {
+        if constexpr (std::is_same_v<T, float>) return by_register<__m128>(x, [](__m128 c) { return _mm_sqrt_ps(c); });
+        else return by_register<__m128d>(x, [](__m128d c) { return _mm_sqrt_pd(c); });
+    }
+#endif
+    return per_element(x, [](auto e) { return std::sqrt(e); });
+}
+
+// Whether any element of an integer vector (at most one register wide) is non-zero: one test.
+template <class V>
+[[gnu::always_inline]] inline bool any(const V& m) {
+    static_assert(sizeof(V) <= register_bytes);
+#if defined(__AVX512F__)
+    if constexpr (sizeof(V) == 64) {
+        const __m512i x = std::bit_cast<__m512i>(m);
+        return _mm512_test_epi32_mask(x, x) != 0;
+    }
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(V) == 32) {
+        const __m256i x = std::bit_cast<__m256i>(m);
+        return !_mm256_testz_si256(x, x);
+    }
+#endif
+#if defined(__SSE4_1__)
+    if constexpr (sizeof(V) == 16) {
+        const __m128i x = std::bit_cast<__m128i>(m);
+        return !_mm_testz_si128(x, x);
+    }
+#endif
+    for (int i = 0; i < size_v<V>; ++i)
+        if (m[i]) return true;
+    return false;
+}
+}  // namespace qs::simd
