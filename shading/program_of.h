@@ -20,15 +20,10 @@
 
 // `flatten` inlines the whole shader into ProgramOf::run: one straight-line SIMD body per number
 // type, as a GPU compiler would make it, instead of calls passing vectors through memory (it
-// doubled the noise shaders' throughput). Only where a batch is one native register (AVX-512):
-// with narrower vectors a batch is a tuple of registers and flattening it makes compile times
-// explode (minutes per shader group) for little gain. A group of small shaders whose compile
-// time it barely touches defines QS_FLATTEN_ON_EVERY_TARGET before including this header.
-#if defined(__AVX512F__) || defined(QS_FLATTEN_ON_EVERY_TARGET)
+// doubled the noise shaders' throughput). On every target: the number types' operations are
+// always-inlined operators on register-wide parts (number/wide_vector.h), so the flattened body
+// costs the compiler little more than the calls did.
 #define QS_FLATTEN [[gnu::flatten]]
-#else
-#define QS_FLATTEN
-#endif
 
 namespace qs {
 
