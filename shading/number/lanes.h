@@ -1,5 +1,5 @@
 #pragma once
-// SIMD lanes as a shading number type, on GCC vectors (number/simd_vector.h).
+// SIMD lanes as a shading number type, on register-wide GCC vectors (number/wide_vector.h).
 //
 // `Lanes<T, N, Layout>` holds N values that the shader code treats as one GLSL `float`.
 // The Layout says what the lanes are:

@@ -10,7 +10,8 @@
 // * an out-of-line call once a translation unit of shader instantiations had used up GCC's
 // inlining budget. Wide<T, N> is an array of vectors the size of one register, each operation is
 // always inlined and applies the compiler's own operator to each part: no calls, every part one
-// register (measured in docs/design.md, "On AVX2 hosts the shaders were not inlined").
+// register (measured in docs/design.md, "The number types are arrays of register-wide GCC
+// vectors").
 //
 // Lanes keep their order: lane i is element i % part_size of part i / part_size, so a 2x2 quad
 // (four consecutive lanes) lies in one part wherever a register holds four values or more.
