@@ -48,18 +48,24 @@ struct Options {
     int threads = 2;
 };
 
-// The median of `repeat` renders' wall time, and the last frame.
-Framebuffer timed(Scene& scene, const FrameRequest& request, int repeat, double& ms) {
+// The median of `repeat` runs of f, in ms.
+template <class F>
+double median_ms(int repeat, F&& f) {
     std::vector<double> t;
-    Framebuffer fb;
-    SceneRenderer renderer(scene, request);
     for (int r = 0; r < repeat; ++r) {
         const auto t0 = Clock::now();
-        renderer.render_into(fb, request.time);
+        f();
         t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
     std::sort(t.begin(), t.end());
-    ms = t[t.size() / 2];
+    return t[t.size() / 2];
+}
+
+// The median of `repeat` renders' wall time, and the last frame.
+Framebuffer timed(Scene& scene, const FrameRequest& request, int repeat, double& ms) {
+    Framebuffer fb;
+    SceneRenderer renderer(scene, request);
+    ms = median_ms(repeat, [&] { renderer.render_into(fb, request.time); });
     return fb;
 }
 
@@ -114,17 +120,29 @@ LiveError error_against_live(const Framebuffer& L, const Framebuffer& B) {
     return r;
 }
 
-// The median of `repeat` runs of f, in ms.
-template <class F>
-double median_ms(int repeat, F&& f) {
-    std::vector<double> t;
-    for (int r = 0; r < repeat; ++r) {
-        const auto t0 = Clock::now();
-        f();
-        t.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-    }
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
+// The three views of both live-against-baked tables: the atlas magnified, matched, minified.
+struct View {
+    const char* name;
+    int frame, atlas;
+};
+constexpr View kViews[] = {{"magnified", 1024, 256}, {"matched", 512, 1024}, {"minified", 128, 1024}};
+
+void live_against_baked_header(Table& md) {
+    md.line("| view | frame | atlas | live ms | baked ms | baked/live | mean error (8-bit steps) | pixels over 8/255 |\n");
+    md.line("|---|---|---|---|---|---|---|---|\n");
+}
+// One view's row: the live and the baked frame timed and compared, both written as PREFIXlive-
+// and PREFIXbaked-VIEW.png.
+void live_against_baked_row(Table& md, const View& v, double bake_ms, Scene live, const FrameRequest& live_request,
+                            Scene baked, const FrameRequest& baked_request, const Options& o, const std::string& prefix) {
+    double live_ms = 0, baked_ms = 0;
+    const Framebuffer L = timed(live, live_request, o.repeat, live_ms);
+    const Framebuffer B = timed(baked, baked_request, o.repeat, baked_ms);
+    const LiveError e = error_against_live(L, B);
+    md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
+            v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, e.mean, e.over8, e.covered);
+    write_image(o.out / (prefix + "live-" + v.name + ".png"), Image{L.width, L.height, L.rgba});
+    write_image(o.out / (prefix + "baked-" + v.name + ".png"), Image{B.width, B.height, B.rgba});
 }
 
 // Finite differences against the analytic normal (Dual2 in double is the reference), per step
@@ -182,10 +200,8 @@ void lit_study(const Options& o, const FrameRequest& frame) {
     md.line("\n## Lit: noise_bumps baked (colour, normal map) and drawn by baked_lit against noise_bumps_lit live, on %s, "
             "%d threads, median of %d frames\n\n",
             mesh.filename().c_str(), o.threads, o.repeat);
-    md.line("| view | frame | atlas | live ms | baked ms | baked/live | mean error (8-bit steps) | pixels over 8/255 |\n");
-    md.line("|---|---|---|---|---|---|---|---|\n");
-    struct View { const char* name; int frame, atlas; };
-    for (const View v : {View{"magnified", 1024, 256}, View{"matched", 512, 1024}, View{"minified", 128, 1024}}) {
+    live_against_baked_header(md);
+    for (const View& v : kViews) {
         AtlasRequest bake;
         bake.size = v.atlas, bake.skirt = 4, bake.frame = frame;
         bake.frame.shader_override = "noise_bumps";
@@ -198,20 +214,11 @@ void lit_study(const Options& o, const FrameRequest& frame) {
                        normal_png = o.out / (std::string("lit-normal-") + v.name + ".png");
         write_image(color_png, color, {}, true);
         write_image(normal_png, normals, {}, true);
-        Scene baked = baked_scene(live, color_png, normal_png, {});
-        Scene live_copy = live;
         FrameRequest r = frame;
         r.width = r.height = v.frame;
         FrameRequest lr = r;
         lr.shader_override = "noise_bumps_lit";
-        double live_ms = 0, baked_ms = 0;
-        const Framebuffer L = timed(live_copy, lr, o.repeat, live_ms);
-        const Framebuffer B = timed(baked, r, o.repeat, baked_ms);
-        const LiveError e = error_against_live(L, B);
-        md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
-                v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, e.mean, e.over8, e.covered);
-        write_image(o.out / (std::string("lit-live-") + v.name + ".png"), Image{L.width, L.height, L.rgba});
-        write_image(o.out / (std::string("lit-baked-") + v.name + ".png"), Image{B.width, B.height, B.rgba});
+        live_against_baked_row(md, v, bake_ms, live, lr, baked_scene(live, color_png, normal_png, {}), r, o, "lit-");
     }
 }
 
@@ -241,28 +248,17 @@ int main(int argc, char** argv) {
         Table bake_md(o.out / "bake.md");
         bake_md.line("## Baked against live: %s on %s, time 0.5, %d threads, median of %d frames\n\n", shader.c_str(),
                     mesh.filename().c_str(), o.threads, o.repeat);
-        bake_md.line("| view | frame | atlas | live ms | baked ms | baked/live | mean error (8-bit steps) | pixels over 8/255 |\n");
-        bake_md.line("|---|---|---|---|---|---|---|---|\n");
-        struct View { const char* name; int frame, atlas; };
-        for (const View v : {View{"magnified", 1024, 256}, View{"matched", 512, 1024}, View{"minified", 128, 1024}}) {
+        live_against_baked_header(bake_md);
+        for (const View& v : kViews) {
             AtlasRequest bake;
             bake.size = v.atlas, bake.skirt = 4, bake.frame = frame;
             bake.frame.shader_override = shader;
             const auto b0 = Clock::now();
             const Image atlas = bake_atlas(live, bake);
             const double bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - b0).count();
-            Scene baked = baked_in(live, atlas, o.out, std::string("atlas-") + v.name);
-            Scene live_copy = live;
             FrameRequest r = frame;
             r.width = r.height = v.frame;
-            double live_ms = 0, baked_ms = 0;
-            const Framebuffer L = timed(live_copy, r, o.repeat, live_ms);
-            const Framebuffer B = timed(baked, r, o.repeat, baked_ms);
-            const LiveError e = error_against_live(L, B);
-            bake_md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
-                        v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, e.mean, e.over8, e.covered);
-            write_image(o.out / (std::string("live-") + v.name + ".png"), Image{L.width, L.height, L.rgba});
-            write_image(o.out / (std::string("baked-") + v.name + ".png"), Image{B.width, B.height, B.rgba});
+            live_against_baked_row(bake_md, v, bake_ms, live, r, baked_in(live, atlas, o.out, std::string("atlas-") + v.name), r, o, "");
         }
 
         Table seams_md(o.out / "bake-seams.md");
