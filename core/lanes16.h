@@ -77,4 +77,42 @@ inline Floats fma(const Floats& a, const Floats& b, const Floats& c) {
 #endif
 }
 
+// Sixteen 64-bit integers: the edge functions' values (raster/edge_function.h).
+typedef std::int64_t Longs __attribute__((vector_size(kBatchLanes * sizeof(std::int64_t))));
+
+// Lane masks (bit i for lane i) of comparisons, on whole registers: GCC splits a comparison of
+// these vectors wider than a register into one scalar comparison per lane.
+// a < b
+inline std::uint32_t less(const Floats& a, const Floats& b) {
+#if defined(__AVX__)
+    __m256 x[2], y[2];
+    std::memcpy(x, &a, sizeof x), std::memcpy(y, &b, sizeof y);
+    std::uint32_t r = 0;
+    for (int h = 0; h < 2; ++h) r |= std::uint32_t(_mm256_movemask_ps(_mm256_cmp_ps(x[h], y[h], _CMP_LT_OQ))) << (8 * h);
+    return r;
+#else
+    std::uint32_t r = 0;
+    for (int i = 0; i < kBatchLanes; ++i) r |= std::uint32_t(a[i] < b[i]) << i;
+    return r;
+#endif
+}
+// a + b > 0, a the same for every lane
+inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
+#if defined(__AVX2__)
+    __m256i y[4];
+    std::memcpy(y, &b, sizeof y);
+    const __m256i x = _mm256_set1_epi64x(a);
+    std::uint32_t r = 0;
+    for (int h = 0; h < 4; ++h) {
+        const __m256i positive = _mm256_cmpgt_epi64(_mm256_add_epi64(x, y[h]), _mm256_setzero_si256());
+        r |= std::uint32_t(_mm256_movemask_pd(_mm256_castsi256_pd(positive))) << (4 * h);
+    }
+    return r;
+#else
+    std::uint32_t r = 0;
+    for (int i = 0; i < kBatchLanes; ++i) r |= std::uint32_t(a + b[i] > 0) << i;
+    return r;
+#endif
+}
+
 }  // namespace qs::lanes16

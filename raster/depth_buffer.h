@@ -12,8 +12,10 @@
 // proven keeps the depth buffer. The ray caster needs none: it shades the closest hit.
 
 #include <cmath>
+#include <cstring>
 #include <span>
 
+#include "core/lanes16.h"
 #include "raster/triangle_setup.h"
 
 namespace qs {
@@ -24,6 +26,27 @@ namespace qs {
 // integer is exact in a float. Depths closer than 2^-24 compare equal, so the first drawn stays.
 inline constexpr float kDepthCleared = 16777215.0f;  // the clear value 1
 inline float depth24(float z) { return std::nearbyint(std::fmin(std::fmax(z, 0.0f), 1.0f) * kDepthCleared); }
+
+// depth24 on every lane of a batch, to the bit.
+inline lanes16::Floats depth24(const lanes16::Floats& z) {
+#if defined(__AVX__)
+    // max(z, 0) takes 0 where z is NaN (its second operand), as std::fmax; round mode 0xC is the
+    // current rounding mode without exceptions: std::nearbyint.
+    __m256 parts[2];
+    std::memcpy(parts, &z, sizeof parts);
+    for (__m256& p : parts) {
+        const __m256 clamped = _mm256_min_ps(_mm256_max_ps(p, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+        p = _mm256_round_ps(_mm256_mul_ps(clamped, _mm256_set1_ps(kDepthCleared)), _MM_FROUND_CUR_DIRECTION | _MM_FROUND_NO_EXC);
+    }
+    lanes16::Floats r;
+    std::memcpy(&r, parts, sizeof r);
+    return r;
+#else
+    lanes16::Floats r;
+    for (int i = 0; i < kBatchLanes; ++i) r[i] = depth24(z[i]);
+    return r;
+#endif
+}
 
 // Whether the open interiors of two set-up triangles intersect, exactly, on their snapped
 // fixed-point vertices. When they do not, no pixel centre is covered by both, under either fill

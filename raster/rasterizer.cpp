@@ -106,8 +106,10 @@ public:
         // largest and smallest offset from there over the block's pixel centres.
         BlockEdges edges;
         for (int k = 0; k < 3; ++k) {
-            edges.most[k] = t.edges[std::size_t(k)].most_offset(kBlock);
-            edges.least[k] = t.edges[std::size_t(k)].least_offset(kBlock);
+            const EdgeFunction& e = t.edges[std::size_t(k)];
+            edges.most[k] = e.most_offset(kBlock);
+            edges.least[k] = e.least_offset(kBlock);
+            for (int i = 0; i < kBatchLanes; ++i) edges.lane[k][i] = e.dcdx * kLaneDx[i] + e.dcdy * kLaneDy[i];
         }
         const int bx0 = x0 + ((lo_x - x0) & ~(kBlock - 1));
         for (int by = y0 + ((lo_y - y0) & ~(kBlock - 1)); by <= hi_y; by += kBlock) {
@@ -139,26 +141,28 @@ private:
         std::int64_t at[3];     // edge k at the block's top-left pixel centre
         std::int64_t most[3];   // the largest offset from there over the block's pixel centres
         std::int64_t least[3];  // the smallest
+        lanes16::Longs lane[3];  // the offset from there of each lane's pixel centre
     };
 
     // Coverage, early depth and shading of the 4x4 block whose top-left pixel is (bx, by).
     void block(int bx, int by, const BlockEdges& e) {
-        const auto& edges = tri_->edges;
         // The edge functions are linear: the block is outside an edge when its largest value
         // there is not inside, fully inside when its smallest is.
-        bool full = bx >= 0 && by >= 0 && bx + kBlock <= fb_.width && by + kBlock <= fb_.height;
+        bool inside_all = true;
         for (int k = 0; k < 3; ++k) {
             if (e.at[k] + e.most[k] <= 0) return;
-            full &= e.at[k] + e.least[k] > 0;
+            inside_all &= e.at[k] + e.least[k] > 0;
         }
+        // Else each lane's E = at + offset, the same integers as EdgeFunction::inside.
         std::uint32_t mask = kAllLanes;
-        if (!full) {
-            mask = 0;
+        if (!inside_all) {
+            mask = lanes16::sum_positive(e.at[0], e.lane[0]) & lanes16::sum_positive(e.at[1], e.lane[1]) &
+                   lanes16::sum_positive(e.at[2], e.lane[2]);
+        }
+        if (bx < 0 || by < 0 || bx + kBlock > fb_.width || by + kBlock > fb_.height) {
             for (int i = 0; i < kBatchLanes; ++i) {
                 const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-                const bool in = x >= 0 && y >= 0 && x < fb_.width && y < fb_.height && edges[0].inside(x, y) &&
-                                edges[1].inside(x, y) && edges[2].inside(x, y);
-                mask |= std::uint32_t(in) << i;
+                if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) mask &= ~(1u << i);
             }
         }
         if (depth_test_) mask &= depth_mask(bx, by, mask);
@@ -295,15 +299,23 @@ private:
         }
     }
 
+    // The lanes of the block at (bx, by) that pass the depth test (LESS). The tile's depth is in
+    // lane order: the block's sixteen values lie together.
     std::uint32_t depth_mask(int bx, int by, std::uint32_t mask) const {
-        std::uint32_t pass = 0;
-        for (int i = 0; i < kBatchLanes; ++i) {
-            if (!(mask >> i & 1)) continue;
-            const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            const float z = tri_->z.at(float(x), float(y), fused_);
-            pass |= std::uint32_t(depth24(z) < depth_[tile_index(x, y)]) << i;
+        const lanes16::Floats x = lanes_x(bx), y = lanes_y(by);
+        const lanes16::Floats z = fused_ ? plane_at<true>(tri_->z, x, y) : plane_at<false>(tri_->z, x, y);
+        return mask & lanes16::less(depth24(z), lanes16::load(&depth_[block_base(bx, by)]));
+    }
+
+    // Plane p at the lanes' pixels, each lane as PlaneEquation::at (or at_fused) computes it.
+    template <bool Fused>
+    static lanes16::Floats plane_at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
+        using lanes16::broadcast;
+        if constexpr (Fused) {
+            return lanes16::fma(broadcast(p.dady), y, lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0)));
+        } else {
+            return (p.a0 + p.dadx * x) + p.dady * y;
         }
-        return pass;
     }
 
     // The shader inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) from the
@@ -321,13 +333,7 @@ private:
         using lanes16::broadcast, lanes16::store, lanes16::Floats;
         const TriangleSetup& t = *tri_;
         const PreparedDraw& d = *draw_;
-        const auto at = [&](const PlaneEquation& p) -> Floats {
-            if constexpr (Fused) {
-                return lanes16::fma(broadcast(p.dady), y, lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0)));
-            } else {
-                return (p.a0 + p.dadx * x) + p.dady * y;
-            }
-        };
+        const auto at = [&](const PlaneEquation& p) { return plane_at<Fused>(p, x, y); };
         if (d.frag_coord) {
             store(in.frag_coord[0], x + 0.5f);
             store(in.frag_coord[1], float(fb_.height) - (y + 0.5f));  // GL window y points up
