@@ -2,6 +2,9 @@
 // provably changes nothing (no two triangles share a pixel, no depth reaches 1).
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "raster/depth_buffer.h"
@@ -154,6 +157,38 @@ TEST_CASE("depth is stored in 24 bits as the reference's buffer: nearer by less 
         CHECK(z2 * 0.5f + 0.5f < z1 * 0.5f + 0.5f);
         CHECK((depth24(z2 * 0.5f + 0.5f) == depth24(z1 * 0.5f + 0.5f)) == hair);
         CHECK(fb.pixel(2, 13)[2] == (hair ? z1 : z2));
+    }
+}
+
+TEST_CASE("the lane-wide depth test is the per-lane one: depth24, LESS and the edge sums on a whole batch",
+          "[raster][depth]") {
+    // What the rasterizer's block test uses (raster/rasterizer.cpp), lane by lane against the
+    // scalar definitions: clamps, NaN, ties of the rounding (k + 0.5 steps), both signs, and edge
+    // values at the 64-bit range the fixed-point edge functions reach.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<float> z = {0.0f, -0.0f, 1.0f, 2.0f, -1.0f, nan, std::nextafter(1.0f, 0.0f), 0x1p-25f, 0x1p-24f,
+                            std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+    for (const float steps : {0.5f, 1.5f, 2.5f, 1000.5f, 4194303.5f}) z.push_back(steps / kDepthCleared);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> near_unit(-0.1f, 1.1f);
+    while (z.size() % kBatchLanes != 0 || z.size() < 8 * std::size_t(kBatchLanes)) z.push_back(near_unit(random));
+    for (std::size_t at = 0; at < z.size(); at += kBatchLanes) {
+        const lanes16::Floats lanes = lanes16::load(&z[at]);
+        const lanes16::Floats d = depth24(lanes);
+        lanes16::Floats stored;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            CHECK(std::bit_cast<std::uint32_t>(d[i]) == std::bit_cast<std::uint32_t>(depth24(z[at + std::size_t(i)])));
+            stored[i] = depth24(z[(at + std::size_t(i) * 7) % z.size()]);  // another lane's depth, often equal
+        }
+        const std::uint32_t pass = lanes16::less(d, stored);
+        for (int i = 0; i < kBatchLanes; ++i) CHECK((pass >> i & 1) == std::uint32_t(d[i] < stored[i]));
+    }
+    const std::int64_t big = std::int64_t(1) << 62;
+    lanes16::Longs offsets;
+    for (int i = 0; i < kBatchLanes; ++i) offsets[i] = (i % 2 ? -1 : 1) * (std::int64_t(i) << 40) + (i % 3) - 1;
+    for (const std::int64_t base : {std::int64_t(0), std::int64_t(1), std::int64_t(-1), big, -big, std::int64_t(15) << 40}) {
+        const std::uint32_t positive = lanes16::sum_positive(base, offsets);
+        for (int i = 0; i < kBatchLanes; ++i) CHECK((positive >> i & 1) == std::uint32_t(base + offsets[i] > 0));
     }
 }
 
