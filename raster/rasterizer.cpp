@@ -165,7 +165,7 @@ private:
                 if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) mask &= ~(1u << i);
             }
         }
-        if (depth_test_) mask &= depth_mask(bx, by, mask);
+        if (mask != 0 && depth_test_) mask = depth_mask(bx, by, mask);
         if (mask == 0) return;
         if (draw_->quads) {
             // A quad runs when any of its lanes writes; its other lanes are helpers. Blocks whose
