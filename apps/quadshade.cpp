@@ -1,198 +1,37 @@
 // quadshade: the command line. Parses arguments (CLI11) and calls the libraries; nothing else.
+// Each subcommand's options and command are in their own file (render_command, bake_commands);
+// the small ones (shaders, compare, check, test, gallery) are here.
 //
 // Exit codes: 0 success, 1 bad input or failed render (message on stderr), 2 bad usage,
 // 3 `compare` found differences over its thresholds, a `check` case missed its bar, or a `test`
 // case failed.
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <map>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "apps/bake_commands.h"
 #include "apps/check.h"
-#include "apps/frame_pattern.h"
+#include "apps/command_line.h"
 #include "apps/golden_suite.h"
+#include "apps/render_command.h"
 #include "render/gallery.h"
-#include "render/atlas_bake.h"
-#include "render/memory_plan.h"
-#include "render/normal_bake.h"
 #include "render/plugins.h"
-#include "render/scene_render.h"
-#include "render/undefined_mask.h"
-#include "render/volume_bake.h"
-#include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/temporary_file.h"
 #include "scenes/uniforms.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
-#include "shading/height_field.h"
 
 namespace {
 
 using namespace qs;
+using namespace qs::app;
 namespace fs = std::filesystem;
-
-constexpr int kExitInput = 1, kExitUsage = 2, kExitDifferent = 3;
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-// ---- outputs ------------------------------------------------------------------------------
-
-// The file system entry `p` names: its folder resolved (symlinks and all), its own name kept. An
-// output replaces that entry (written beside it, renamed over it), never what a link there points to.
-fs::path resolved(const fs::path& p) {
-    std::error_code ec;
-    const fs::path folder = fs::weakly_canonical(p.parent_path().empty() ? fs::path(".") : p.parent_path(), ec);
-    return ec ? p.lexically_normal() : folder / p.filename();
-}
-
-// Refuses (UsageError) an output that is a folder or one of the scene's own files. Cheap for a
-// million frames: only an output named like an input has its folder resolved.
-void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option) {
-    if (fs::is_directory(output)) throw UsageError(std::string(option) + " " + output.string() + ": is a folder; give a file name");
-    for (const fs::path& in : inputs) {
-        if (output.filename() == in.filename() && resolved(output) == in) {
-            throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
-        }
-    }
-}
-
-// ---- arguments ------------------------------------------------------------------------------
-
-// A CLI11 check that a number is finite (CLI11 reads "nan", "inf" and 1e400 as numbers).
-const CLI::Validator kFinite(
-    [](std::string& s) {
-        double v = 0.0;
-        return CLI::detail::lexical_cast(s, v) && std::isfinite(v) ? std::string() : "expected a finite number, got '" + s + "'";
-    },
-    "FINITE");
-
-// An option whose value is one of `choices`, with the old command line's messages.
-template <class T>
-CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::vector<std::pair<std::string, T>> choices,
-                        const std::string& text, const std::string& help) {
-    return app
-        .add_option_function<std::string>(
-            name,
-            [&target, choices, name](const std::string& v) {
-                std::string names;
-                for (const auto& [n, value] : choices) {
-                    if (n == v) {
-                        target = value;
-                        return;
-                    }
-                    names += (names.empty() ? "" : " | ") + n;
-                }
-                throw CLI::ValidationError(name, "expected " + names + ", got '" + v + "'");
-            },
-            help)
-        ->option_text(text);
-}
-
-// --plugin, repeatable: shared libraries whose shaders join the catalogue (render/plugins.h),
-// loaded in order once the command line has parsed.
-void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins) {
-    cmd.add_option("--plugin", plugins, "load a shader plugin (quadshade_add_shader_plugin) first; repeatable")
-        ->option_text("LIB")->allow_extra_args(false);
-}
-
-struct RenderArgs {
-    std::string scene, output, mask_output;
-    FrameRequest request;
-    std::pair<int, int> frames{-1, -1};  // -1: no animation
-    float fps = 30.0f;
-    bool alpha = false;
-    SceneLoadOptions load;
-    std::string memory_limit;  // empty: what the system has available
-    std::vector<std::string> plugins;
-    std::vector<std::string> uniforms;  // --uniform NAME=VALUE, read by parse_uniform_option
-    std::vector<std::string> raster_only;  // the rasterizer's own options given (kRasterOnly)
-    bool animated() const { return frames.first >= 0; }
-};
-
-// Options only the rasterizer has: the ray caster refuses them, even at their default values,
-// rather than render something the command line did not describe.
-const char* const kRasterOnly[] = {"--fill-rule", "--interpolation", "--general-path"};
-
-void add_render_options(CLI::App& cmd, RenderArgs& a) {
-    FrameRequest& r = a.request;
-    cmd.add_option("SCENE", a.scene, "the glTF scene (.gltf or .glb)")->required()->option_text("SCENE.gltf");
-    cmd.add_option("-o,--output", a.output,
-                   "image to write (.png: 8-bit, .exr/.tif: float); with --frames,\n"
-                   "a %d (or %04d ...) in FILE is the frame number, else _NNNN is added")
-        ->required()->option_text("FILE")->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-    cmd.add_option_function<std::vector<int>>(
-           "--size", [&r](const std::vector<int>& v) { r.width = v[0], r.height = v[1]; },
-           "image size (default: the scene's, e.g. 1264x400 for Figure 1.1)")
-        ->delimiter('x')->expected(2)->check(CLI::Range(1, 1 << 15))->option_text("WxH");
-    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
-    cmd.add_option("--frames", a.frames, "render frames A..B (inclusive) at time = frame / fps")
-        ->delimiter(':')->check(CLI::Range(0, 1000000))->option_text("A:B");
-    cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
-        ->check(kFinite & CLI::PositiveNumber)->option_text("N");
-    cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
-    add_plugin_option(cmd, a.plugins);
-    cmd.add_option("--uniform", a.uniforms,
-                   "a shader's own uniform, for every object whose shader declares it\n"
-                   "(replaces the material's extras.uniforms): 4.0, 1,0.5,0.2 or [1,0.5,0.2];\n"
-                   "matrices column by column; repeatable")
-        ->option_text("NAME=VALUE")->allow_extra_args(false);
-    add_choice<Backend>(cmd, "--backend", r.backend, {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}}, "B",
-                        "raster (default) | raycast (Embree, 2x2 ray quads)");
-    add_choice<Derivatives>(cmd, "--derivatives", r.shading.derivatives,
-                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
-                             {"coarse", Derivatives::CoarseLower}, {"coarse-upper", Derivatives::CoarseUpper},
-                             {"analytic", Derivatives::Analytic}},
-                            "RULE",
-                            "fine (llvmpipe, default) | coarse-lower (softpipe) |\n"
-                            "coarse-upper (first pixel of a top-down quad) | analytic (Dual2;\n"
-                            "with raycast: ray differentials)");
-    add_choice<Precision>(cmd, "--precision", r.shading.precision, {{"float", Precision::Float}, {"double", Precision::Double}},
-                          "P", "float (default) | double");
-    add_choice<QuadPairing>(cmd, "--quad-pairing", r.shading.pairing,
-                            {{"top-down", QuadPairing::TopDown}, {"bottom-up", QuadPairing::BottomUp}}, "P",
-                            "top-down (OSMesa's buffer, default) | bottom-up (an FBO)");
-    add_choice<FillRule>(cmd, "--fill-rule", r.raster.fill_rule,
-                         {{"left-bottom", FillRule::LeftBottom}, {"right-top", FillRule::RightTop}}, "R",
-                         "pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)");
-    add_choice<bool>(cmd, "--interpolation", r.raster.fused_interpolation, {{"fused", true}, {"separate", false}}, "I",
-                     "fused (llvmpipe on FMA hosts; the default there) | separate (softpipe)");
-    cmd.add_flag("--stable-time", r.stable_time,
-                 "reduce time by each shader's exact period in double before it\n"
-                 "becomes the float uniform: long animations (t ~ 1e6 s) keep\n"
-                 "their frame spacing (default: float time, as GL)");
-    cmd.add_flag("--alpha", a.alpha, "keep the alpha channel (the clear colour's alpha is 0)");
-    cmd.add_flag("--general-path", r.raster.force_general_path,
-                 "shade every shader in quads with gl_FragCoord and a depth buffer\n(no specialisation)");
-    cmd.add_option("--undefined-mask", a.mask_output,
-                   "also write where the colour depends on a GLSL case with an undefined\n"
-                   "result: red NaN produced, green division by zero, blue a built-in\n"
-                   "outside its domain (smoothstep e0 >= e1, clamp lo > hi, sqrt, log,\n"
-                   "pow, inversesqrt, atan); shades slower, same colours; float quads or\n"
-                   "pixels only (not with analytic derivatives or double precision)")
-        ->option_text("FILE");
-    cmd.add_option("--threads", r.shading.threads, "worker threads (default: all cores)")
-        ->check(CLI::Range(1, 1024))->option_text("N");
-    cmd.add_flag("--allow-outside-paths", a.load.paths.allow_outside,
-                 "let the scene read files outside its own folder (absolute paths,\n"
-                 "../, symlinks); by default only files beside it are read");
-    cmd.add_option("--memory-limit", a.memory_limit,
-                   "memory the render may use, e.g. 4G (default: what the system has\n"
-                   "available); larger images are rendered and written in bands of rows")
-        ->option_text("SIZE");
-}
 
 struct CompareArgs {
     std::vector<std::string> images;
@@ -259,47 +98,6 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
     add_plugin_option(cmd, a.plugins);
 }
 
-std::uint64_t memory_limit(const std::string& option) {
-    if (option.empty()) return available_memory();
-    try {
-        return parse_byte_size(option);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--memory-limit: ") + e.what());
-    }
-}
-
-struct VolumeArgs {
-    std::string shader, output, scene;
-    int size = 32;
-    std::optional<double> time;
-    std::vector<std::string> uniforms, plugins;
-    Derivatives derivatives = Derivatives::Fine;
-    int threads = 0;
-    bool allow_outside = false;
-};
-
-void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
-    cmd.add_option("--shader", a.shader, "the catalogue shader to evaluate (its object-space position is the grid's)")
-        ->required()->option_text("NAME");
-    cmd.add_option("-o,--output", a.output,
-                   "the volume as a 3D texture: N x N^2 pixels, slice k in rows [kN, (k+1)N)\n"
-                   "(.png: 8-bit, loadable as a sampler3D; .exr/.tif: float)")
-        ->required()->option_text("FILE");
-    cmd.add_option("--size", a.size, "texels per side, N (default 32)")->check(CLI::Range(1, kMaxVolumeSide))->option_text("N");
-    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 0)")->check(kFinite)->option_text("T");
-    cmd.add_option("--scene", a.scene, "take the shader's textures and uniforms from this scene's first object")
-        ->option_text("SCENE.gltf");
-    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
-        ->option_text("NAME=VALUE")->allow_extra_args(false);
-    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
-                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
-                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
-                            "RULE", "for shaders that take derivatives: per texel along x and y (default fine)");
-    add_plugin_option(cmd, a.plugins);
-    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
-    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let --scene read files outside its own folder");
-}
-
 struct GalleryArgs {
     std::string output;
     std::vector<std::string> scenes, plugins;
@@ -320,278 +118,6 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
-}
-
-struct BakeArgs {
-    std::string mesh, shader, output;
-    int size = 1024;
-    std::vector<std::string> maps{"color"};
-    int skirt = 0;
-    std::optional<double> time;
-    std::vector<std::string> uniforms, plugins;
-    Derivatives derivatives = Derivatives::Fine;
-    int threads = 0;
-    bool allow_outside = false;
-    // The normal map (--maps normal): how, and the finite differences' step.
-    CLI::Option* normals_option = nullptr;
-    NormalMethod normals = NormalMethod::Analytic;
-    CLI::Option* precision_option = nullptr;
-    Precision normal_precision = Precision::Float;
-    std::optional<double> normal_step;
-};
-
-void add_bake_options(CLI::App& cmd, BakeArgs& a) {
-    cmd.add_option("mesh", a.mesh, "a glTF scene whose meshes have a UV atlas in TEXCOORD_0 (in [0, 1], no overlaps)")
-        ->required()->option_text("MESH.gltf");
-    cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
-        ->required()->option_text("NAME");
-    cmd.add_option("-o,--output", a.output,
-                   "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
-                   "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
-        ->required()->option_text("OUT.gltf");
-    cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
-    cmd.add_option("--maps", a.maps,
-                   "the maps to bake, of color, height and normal (default color; color is required): height\n"
-                   "is the shader's height as grey (OUT-height.png), normal the object-space normal map its\n"
-                   "height gives (OUT-normal.png, 0.5 + 0.5 n), drawn lit by baked_lit")
-        ->delimiter(',')->option_text("MAP,...");
-    a.normals_option = add_choice<NormalMethod>(
-        cmd, "--normals", a.normals, {{"analytic", NormalMethod::Analytic}, {"finite", NormalMethod::FiniteDifferences}},
-        "HOW",
-        "the normal map from the height's gradient through Dual2 (analytic, the default) or from\n"
-        "three heights and a cross product (finite: seed 001's way)");
-    cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-4)")
-        ->check(CLI::PositiveNumber & kFinite)->option_text("E");
-    a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,
-                                               {{"float", Precision::Float}, {"double", Precision::Double}}, "P",
-                                               "the height's evaluations for the normal map in float (default) or double");
-    cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
-        ->check(CLI::Range(0, kMaxSkirt))->option_text("PIXELS");
-    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
-    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
-        ->option_text("NAME=VALUE")->allow_extra_args(false);
-    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
-                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
-                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
-                            "RULE",
-                            "dFdx/dFdy per atlas texel (default fine: quad differences); analytic: exact\n"
-                            "partials of the varyings (Dual2), also across chart edges");
-    add_plugin_option(cmd, a.plugins);
-    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
-    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
-}
-
-// ---- render ---------------------------------------------------------------------------------
-
-const char* precision_name(Precision p) { return p == Precision::Double ? "double" : "float"; }
-
-const char* rule_name(Derivatives d) {
-    switch (d) {
-        case Derivatives::None: return "none";
-        case Derivatives::Fine: return "fine";
-        case Derivatives::CoarseLower: return "coarse-lower";
-        case Derivatives::CoarseUpper: return "coarse-upper";
-        case Derivatives::Analytic: return "analytic";
-    }
-    return "?";
-}
-
-// Refuses (UsageError) what no backend honours as asked, before anything is read or written:
-// the rasterizer's own options with the ray caster, a shading request no instantiation honours.
-void refuse_unsupported(const RenderArgs& a) {
-    const FrameRequest& req = a.request;
-    if (req.backend == Backend::RayCaster && !a.raster_only.empty()) {
-        throw UsageError(a.raster_only.front() + ": a rasterizer option; the ray caster (--backend raycast) has no fill "
-                         "rule, plane interpolation or general path");
-    }
-    try {
-        check_supported(req);
-    } catch (const UnsupportedRequest& e) {
-        throw UsageError("--derivatives " + std::string(rule_name(req.shading.derivatives)) + " --precision " +
-                         precision_name(req.shading.precision) + (a.mask_output.empty() ? "" : " --undefined-mask") +
-                         ": " + e.what());
-    }
-}
-
-// The settings that decide the image's pixels beside the scene, as image metadata, so that an
-// image says how it was made (the undefined-case mask, threads and bands change no pixel).
-Metadata render_metadata(const RenderArgs& a, double time) {
-    const FrameRequest& req = a.request;
-    const RasterOptions r = req.raster_options();
-    const bool raster = req.backend == Backend::Rasterizer;
-    Metadata m = {{"quadshade:scene", a.scene},
-                  {"quadshade:time", std::to_string(time)},
-                  {"quadshade:stable_time", req.stable_time ? "on" : "off"},
-                  {"quadshade:backend", raster ? "raster" : "raycast"},
-                  {"quadshade:shader", req.shader_override.empty() ? "(per material)" : req.shader_override},
-                  {"quadshade:derivatives", rule_name(r.derivatives)},
-                  {"quadshade:precision", precision_name(r.precision)},
-                  {"quadshade:quad_pairing", r.pairing == QuadPairing::BottomUp ? "bottom-up" : "top-down"}};
-    if (raster) {
-        m.emplace_back("quadshade:fill_rule", r.fill_rule == FillRule::RightTop ? "right-top" : "left-bottom");
-        m.emplace_back("quadshade:interpolation", r.fused_interpolation ? "fused" : "separate");
-    }
-    std::string uniforms, plugins;
-    for (const std::string& u : a.uniforms) uniforms += (uniforms.empty() ? "" : " ") + u;
-    for (const std::string& p : a.plugins) plugins += (plugins.empty() ? "" : " ") + p;
-    if (!uniforms.empty()) m.emplace_back("quadshade:uniforms", uniforms);
-    if (!plugins.empty()) m.emplace_back("quadshade:plugins", plugins);
-    return m;
-}
-
-bool writes_in_bands(const fs::path& file) {
-    std::string ext = file.extension().string();
-    for (char& c : ext) c = char(std::tolower((unsigned char)c));
-    return ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
-}
-
-// What a render of the whole frame, or of bands of it, needs beside the loaded scene.
-std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs& a, std::uint64_t limit) {
-    const int w = renderer.width();
-    MemoryPlanInput in;
-    in.height = renderer.height();
-    in.pairing = a.request.shading.pairing;
-    in.limit = limit;
-    in.can_band = writes_in_bands(a.output) && (a.mask_output.empty() || writes_in_bands(a.mask_output));
-    in.bytes_for_rows = [&](int rows) {
-        std::uint64_t bytes = renderer.frame_bytes(rows) + ImageWriter::conversion_bytes(a.output, w, rows, a.alpha);
-        if (!a.mask_output.empty()) {
-            bytes += std::uint64_t(w) * std::uint64_t(rows) * 4 * sizeof(float) +
-                     ImageWriter::conversion_bytes(a.mask_output, w, rows, false);
-        }
-        return bytes;
-    };
-    return plan_bands(in);
-}
-
-struct FrameTotals {
-    double render_seconds = 0.0;
-    int renders = 0;  // frames rendered, not reused
-    RenderStats stats;  // of the last frame
-    UndefinedCounts undefined;
-};
-
-// Renders the frame at `time` band by band into `output` (and the undefined-case mask into
-// `mask_output` unless empty). The files are opened once the first band is rendered (OpenImageIO
-// keeps every string attribute, the frame's time among them, for the process's lifetime: made
-// after the frame's working memory is freed, it does not pin the heap) and renamed into place
-// once complete.
-// `rendered`: `fb` already holds this frame's image (one band, a frame that does not depend on
-// its time), which is written again without rendering.
-void write_frame(SceneRenderer& renderer, const std::vector<RowBand>& bands, double time, const RenderArgs& a,
-                 const std::string& output, const std::string& mask_output, Framebuffer& fb, FrameTotals& totals,
-                 bool rendered) {
-    std::optional<ImageWriter> image, mask;
-    if (!rendered) totals.stats = {};
-    for (const RowBand& band : bands) {
-        if (!rendered) {
-            RenderStats band_stats;
-            const auto t0 = std::chrono::steady_clock::now();
-            renderer.render_into(fb, time, &band_stats, band);
-            totals.render_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            totals.stats.triangles_setup = band_stats.triangles_setup, totals.stats.lanes_shaded += band_stats.lanes_shaded;
-            totals.stats.depth_buffer = band_stats.depth_buffer;  // decided for the whole frame, the same in every band
-            ++totals.renders;
-        }
-        if (!image) {
-            Metadata metadata = render_metadata(a, time);
-            image.emplace(output, fb.width, fb.height, a.alpha, metadata);
-            if (!mask_output.empty()) {
-                metadata.emplace_back("quadshade:undefined_mask",
-                                      "red: NaN produced, green: division by zero, blue: built-in outside its domain");
-                mask.emplace(mask_output, fb.width, fb.height, false, metadata);
-            }
-        }
-        image->write_rows(fb.rows, fb.rgba.data());
-        if (mask) {
-            mask->write_rows(fb.rows, undefined_mask_image(fb).rgba.data());
-            const UndefinedCounts c = count_undefined(fb);
-            totals.undefined.pixels += c.pixels;
-            for (std::size_t k = 0; k < c.per_case.size(); ++k) totals.undefined.per_case[k] += c.per_case[k];
-        }
-    }
-    image->commit();
-    if (mask) mask->commit();
-}
-
-void print_progress(int done, int total) {
-    const int width = 30, filled = done * width / total;
-    std::fprintf(stderr, "\r[%s%s] %d/%d frames", std::string(std::size_t(filled), '#').c_str(),
-                 std::string(std::size_t(width - filled), '.').c_str(), done, total);
-    if (done == total) std::fputc('\n', stderr);
-}
-
-int cmd_render(RenderArgs& a) {
-    FrameRequest& req = a.request;
-    if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
-    req.shading.check_undefined = !a.mask_output.empty();
-    if (req.shading.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
-        throw UsageError("--undefined-mask: the same file as -o");
-    }
-    refuse_unsupported(a);
-    for (const std::string& u : a.uniforms) req.uniforms.push_back(parse_uniform_option(u));
-    const std::uint64_t limit = memory_limit(a.memory_limit);
-    const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
-    auto path_of = [&](const std::string& pattern, int f) {
-        try {
-            return a.animated() ? frame_path(pattern, f) : pattern;
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(e.what());
-        }
-    };
-    path_of(a.output, first);  // a bad pattern is refused before anything is read
-    if (!a.mask_output.empty()) path_of(a.mask_output, first);
-
-    for (const std::string& plugin : a.plugins) load_plugin(plugin);
-    Scene scene = load_scene(a.scene, a.load);
-    for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
-    for (int f = first; f <= last; ++f) {
-        check_output(path_of(a.output, f), scene.inputs, "-o");
-        if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");
-    }
-    SceneRenderer renderer(scene, req);
-    for (const std::string& note : renderer.notes()) std::fprintf(stderr, "quadshade: warning: %s\n", note.c_str());
-    const std::vector<RowBand> bands = plan_render(renderer, a, limit);
-
-    const bool progress = last > first && ::isatty(STDERR_FILENO);
-    const auto start = std::chrono::steady_clock::now();
-    FrameTotals totals;
-    Framebuffer fb;
-    // Frames that cannot differ (no drawn shader reads time) are rendered once, when one band
-    // holds the whole frame.
-    const bool render_once = !renderer.depends_on_time() && bands.size() == 1;
-    for (int f = first; f <= last; ++f) {
-        const double time = a.animated() ? double(f) / double(a.fps) : req.time.value_or(double(scene.time));
-        const std::string mask = a.mask_output.empty() ? "" : path_of(a.mask_output, f);
-        write_frame(renderer, bands, time, a, path_of(a.output, f), mask, fb, totals, render_once && f > first);
-        if (progress) print_progress(f - first + 1, last - first + 1);
-    }
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int nframes = last - first + 1, w = renderer.width(), h = renderer.height();
-    const double render_seconds = totals.render_seconds;
-    const int renders = totals.renders;
-    const RenderStats& stats = totals.stats;
-    const UndefinedCounts& undefined = totals.undefined;
-    std::fprintf(stderr, "quadshade: %d frame%s %dx%d in %.3f s (render %.1f ms/frame, %.1f Mpixel/s), %llu triangles, %llu lanes shaded",
-                 nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / renders,
-                 double(w) * h * renders / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
-                 (unsigned long long)stats.lanes_shaded);
-    if (renders < nframes) std::fputs(", rendered once (no drawn shader reads time)", stderr);
-    if (bands.size() > 1) std::fprintf(stderr, ", in %zu bands of rows", bands.size());
-    if (req.backend == Backend::RayCaster) {
-        std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
-    } else {
-        std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (no two triangles overlap)", stderr);
-    }
-    std::fputc('\n', stderr);
-    if (!a.mask_output.empty()) {
-        std::fprintf(stderr,
-                     "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "
-                     "built-in outside its domain %llu\n",
-                     (unsigned long long)undefined.pixels, (unsigned long long)undefined.per_case[0],
-                     (unsigned long long)undefined.per_case[1], (unsigned long long)undefined.per_case[2]);
-    }
-    return 0;
 }
 
 int cmd_shaders(const std::string& export_dir) {
@@ -621,39 +147,6 @@ int cmd_shaders(const std::string& export_dir) {
                         std::string(s.description).c_str());
         }
     }
-    return 0;
-}
-
-int cmd_bake_volume(const VolumeArgs& a) {
-    VolumeRequest req;
-    req.shader = a.shader, req.size = a.size;
-    req.frame.time = a.time.value_or(0.0);
-    req.frame.shading.derivatives = a.derivatives;
-    req.frame.shading.threads = a.threads;
-    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
-    std::optional<Scene> scene;
-    if (!a.scene.empty()) {
-        SceneLoadOptions load;
-        load.paths.allow_outside = a.allow_outside;
-        scene = load_scene(a.scene, load);
-        if (scene->objects.empty()) throw UsageError("--scene " + a.scene + ": has no object to take a material from");
-        req.material_scene = &*scene;
-    }
-    check_output(a.output, scene ? scene->inputs : std::vector<fs::path>{}, "-o");
-    const Program* program = find_program(a.shader);
-    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
-    const auto t0 = std::chrono::steady_clock::now();
-    const Image volume = bake_volume(req);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_image(a.output, volume,
-                {{"quadshade:shader", a.shader},
-                 {"quadshade:volume", std::to_string(a.size) + "^3: slice k is rows [k N, (k + 1) N); texel centres at "
-                                                               "object positions -1 + 2 (i + 0.5) / N"},
-                 {"quadshade:time", std::to_string(*req.frame.time)},
-                 {"quadshade:derivatives", rule_name(a.derivatives)}},
-                true);
-    std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
-                 a.size, a.shader.c_str(), seconds * 1e3, a.size);
     return 0;
 }
 
@@ -695,118 +188,6 @@ int cmd_gallery(const GalleryArgs& a) {
         std::printf("%s: %s, %zu shaders%s\n", file.c_str(), sheet.collection.c_str(), sheet.drawn.size(),
                     undrawn ? (" (" + std::to_string(undrawn) + " without a scene that binds their textures)").c_str() : "");
     }
-    return 0;
-}
-
-int cmd_bake(const BakeArgs& a) {
-    const fs::path output(a.output);
-    if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
-    bool height = false, normal = false, color = false;
-    for (const std::string& map : a.maps) {
-        if (map != "color" && map != "height" && map != "normal") {
-            throw UsageError("--maps: '" + map + "' is not a map bake makes (color, height, normal)");
-        }
-        bool& wanted = map == "color" ? color : map == "height" ? height : normal;
-        if (wanted) throw UsageError("--maps: '" + map + "' is named twice");
-        wanted = true;
-    }
-    if (!color) throw UsageError("--maps: color is required (the baked scene is drawn with it)");
-    if (!normal && (a.normals_option->count() || a.normal_step || a.precision_option->count())) {
-        throw UsageError("--normals, --normal-step and --normal-precision make the normal map: add normal to --maps");
-    }
-    if (a.normal_step && a.normals != NormalMethod::FiniteDifferences) {
-        throw UsageError("--normal-step is the finite differences' step: it needs --normals finite");
-    }
-    const HeightField* field = nullptr;
-    if (height || normal) {
-        field = find_height_field(a.shader);
-        if (!field) {
-            std::string with;
-            for (const HeightField* f : height_fields()) with += (with.empty() ? "" : ", ") + std::string(f->shader());
-            throw UsageError("--maps " + std::string(normal ? "normal" : "height") + ": shader '" + a.shader +
-                             "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
-        }
-    }
-    SceneLoadOptions load;
-    load.paths.allow_outside = a.allow_outside;
-    Scene scene = load_scene(a.mesh, load);
-    const std::string stem = output.stem().string();
-    const std::string bin = stem + ".bin", color_file = stem + "-color.png", height_file = stem + "-height.png",
-                      normal_file = stem + "-normal.png";
-    check_output(output, scene.inputs, "-o");
-    check_output(output.parent_path() / bin, scene.inputs, "-o (its buffer)");
-    check_output(output.parent_path() / color_file, scene.inputs, "-o (its texture)");
-    if (height) check_output(output.parent_path() / height_file, scene.inputs, "-o (its height map)");
-    if (normal) check_output(output.parent_path() / normal_file, scene.inputs, "-o (its normal map)");
-    const Program* program = find_program(a.shader);
-    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
-
-    AtlasRequest req;
-    req.size = a.size;
-    req.skirt = a.skirt;
-    req.frame.shader_override = a.shader;
-    if (a.time) req.frame.time = *a.time;
-    req.frame.shading.derivatives = a.derivatives;
-    req.frame.shading.threads = a.threads;
-    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
-    auto clock = std::chrono::steady_clock::now;
-    auto ms_since = [](auto t0) { return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    auto t0 = clock();
-    const Image atlas = bake_atlas(scene, req);
-    const double color_ms = ms_since(t0);
-    // Every map is made before any file is written: an error leaves no output.
-    Image height_map, normal_map;
-    double height_ms = 0.0, normal_ms = 0.0;
-    if (height) {
-        AtlasRequest h = req;
-        h.frame.shader_override = std::string(field->height_shader());
-        t0 = clock();
-        height_map = bake_atlas(scene, h);
-        height_ms = ms_since(t0);
-    }
-    NormalBakeRequest n;
-    n.size = a.size, n.skirt = a.skirt, n.method = a.normals, n.precision = a.normal_precision, n.threads = a.threads;
-    if (a.normal_step) n.step = *a.normal_step;
-    if (normal) {
-        t0 = clock();
-        normal_map = bake_normal_map(scene, *field, n);
-        normal_ms = ms_since(t0);
-    }
-
-    OutputSet out(output);
-    const Metadata common = {{"quadshade:shader", a.shader},
-                             {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
-                             {"quadshade:skirt", std::to_string(a.skirt)}};
-    Metadata meta = common;
-    meta.push_back({"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"});
-    meta.push_back({"quadshade:derivatives", rule_name(a.derivatives)});
-    write_image(out.staged(color_file), atlas, meta, true);
-    if (height) {
-        meta = common;
-        meta.push_back({"quadshade:atlas", "the height of " + a.shader + " (" + std::string(field->height_shader()) +
-                                               "), 0 to 1 for 0 to " + std::to_string(field->amplitude()) +
-                                               " object units of relief; row 0 is t = 0"});
-        write_image(out.staged(height_file), height_map, meta, true);
-    }
-    if (normal) {
-        meta = common;
-        meta.push_back({"quadshade:atlas", "object-space unit normals as 0.5 + 0.5 n (not tangent-space), alpha 0 in the "
-                                           "gutter; row 0 is t = 0"});
-        meta.push_back({"quadshade:normals", n.method == NormalMethod::Analytic
-                                                 ? "analytic (Dual2)"
-                                                 : "finite differences, step " + std::to_string(n.step) + " object units"});
-        meta.push_back({"quadshade:precision", n.precision == Precision::Double ? "double" : "float"});
-        write_image(out.staged(normal_file), normal_map, meta, true);
-    }
-    const Scene baked = baked_scene(scene, out.staged(color_file), normal ? out.staged(normal_file) : fs::path(),
-                                    height ? out.staged(height_file) : fs::path());
-    save_scene(baked, out.staged(output.filename().string()));
-    out.commit(output.filename().string());
-    std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)", a.output.c_str(), a.shader.c_str(),
-                 a.size, a.size, color_ms, color_file.c_str());
-    if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
-    if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
-    std::fputc('\n', stderr);
     return 0;
 }
 
@@ -942,9 +323,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade: %s\n\n%s", e.what(), app.help().c_str());
         return kExitUsage;
     }
-    for (const char* option : kRasterOnly) {
-        if (render_cmd->count(option) > 0) render.raster_only.emplace_back(option);
-    }
+    note_raster_only(*render_cmd, render);
     try {
         if (render_cmd->parsed()) return cmd_render(render);  // loads its plugins once its options are checked
         const std::vector<std::string>& plugins = check_cmd->parsed()    ? check.plugins

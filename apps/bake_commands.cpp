@@ -1,0 +1,229 @@
+#include "apps/bake_commands.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "apps/command_line.h"
+#include "render/atlas_bake.h"
+#include "render/volume_bake.h"
+#include "scenes/gltf.h"
+#include "scenes/image_io.h"
+#include "scenes/temporary_file.h"
+#include "scenes/uniforms.h"
+#include "shading/catalogue.h"
+#include "shading/height_field.h"
+
+namespace qs::app {
+
+namespace fs = std::filesystem;
+
+void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
+    cmd.add_option("--shader", a.shader, "the catalogue shader to evaluate (its object-space position is the grid's)")
+        ->required()->option_text("NAME");
+    cmd.add_option("-o,--output", a.output,
+                   "the volume as a 3D texture: N x N^2 pixels, slice k in rows [kN, (k+1)N)\n"
+                   "(.png: 8-bit, loadable as a sampler3D; .exr/.tif: float)")
+        ->required()->option_text("FILE");
+    cmd.add_option("--size", a.size, "texels per side, N (default 32)")->check(CLI::Range(1, kMaxVolumeSide))->option_text("N");
+    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 0)")->check(kFinite)->option_text("T");
+    cmd.add_option("--scene", a.scene, "take the shader's textures and uniforms from this scene's first object")
+        ->option_text("SCENE.gltf");
+    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
+        ->option_text("NAME=VALUE")->allow_extra_args(false);
+    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
+                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
+                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
+                            "RULE", "for shaders that take derivatives: per texel along x and y (default fine)");
+    add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let --scene read files outside its own folder");
+}
+
+void add_bake_options(CLI::App& cmd, BakeArgs& a) {
+    cmd.add_option("mesh", a.mesh, "a glTF scene whose meshes have a UV atlas in TEXCOORD_0 (in [0, 1], no overlaps)")
+        ->required()->option_text("MESH.gltf");
+    cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
+        ->required()->option_text("NAME");
+    cmd.add_option("-o,--output", a.output,
+                   "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
+                   "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
+        ->required()->option_text("OUT.gltf");
+    cmd.add_option("--size", a.size, "atlas texels per side (default 1024)")->check(CLI::Range(1, kMaxAtlasSide))->option_text("N");
+    cmd.add_option("--maps", a.maps,
+                   "the maps to bake, of color, height and normal (default color; color is required): height\n"
+                   "is the shader's height as grey (OUT-height.png), normal the object-space normal map its\n"
+                   "height gives (OUT-normal.png, 0.5 + 0.5 n), drawn lit by baked_lit")
+        ->delimiter(',')->option_text("MAP,...");
+    a.normals_option = add_choice<NormalMethod>(
+        cmd, "--normals", a.normals, {{"analytic", NormalMethod::Analytic}, {"finite", NormalMethod::FiniteDifferences}},
+        "HOW",
+        "the normal map from the height's gradient through Dual2 (analytic, the default) or from\n"
+        "three heights and a cross product (finite: seed 001's way)");
+    cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-4)")
+        ->check(CLI::PositiveNumber & kFinite)->option_text("E");
+    a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,
+                                               {{"float", Precision::Float}, {"double", Precision::Double}}, "P",
+                                               "the height's evaluations for the normal map in float (default) or double");
+    cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
+        ->check(CLI::Range(0, kMaxSkirt))->option_text("PIXELS");
+    cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--uniform", a.uniforms, "a shader's own uniform, as for render; repeatable")
+        ->option_text("NAME=VALUE")->allow_extra_args(false);
+    add_choice<Derivatives>(cmd, "--derivatives", a.derivatives,
+                            {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower},
+                             {"coarse-upper", Derivatives::CoarseUpper}, {"analytic", Derivatives::Analytic}},
+                            "RULE",
+                            "dFdx/dFdy per atlas texel (default fine: quad differences); analytic: exact\n"
+                            "partials of the varyings (Dual2), also across chart edges");
+    add_plugin_option(cmd, a.plugins);
+    cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
+}
+
+int cmd_bake_volume(const VolumeArgs& a) {
+    VolumeRequest req;
+    req.shader = a.shader, req.size = a.size;
+    req.frame.time = a.time.value_or(0.0);
+    req.frame.shading.derivatives = a.derivatives;
+    req.frame.shading.threads = a.threads;
+    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
+    std::optional<Scene> scene;
+    if (!a.scene.empty()) {
+        SceneLoadOptions load;
+        load.paths.allow_outside = a.allow_outside;
+        scene = load_scene(a.scene, load);
+        if (scene->objects.empty()) throw UsageError("--scene " + a.scene + ": has no object to take a material from");
+        req.material_scene = &*scene;
+    }
+    check_output(a.output, scene ? scene->inputs : std::vector<fs::path>{}, "-o");
+    const Program* program = find_program(a.shader);
+    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+    const auto t0 = std::chrono::steady_clock::now();
+    const Image volume = bake_volume(req);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_image(a.output, volume,
+                {{"quadshade:shader", a.shader},
+                 {"quadshade:volume", std::to_string(a.size) + "^3: slice k is rows [k N, (k + 1) N); texel centres at "
+                                                               "object positions -1 + 2 (i + 0.5) / N"},
+                 {"quadshade:time", std::to_string(*req.frame.time)},
+                 {"quadshade:derivatives", rule_name(a.derivatives)}},
+                true);
+    std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
+                 a.size, a.shader.c_str(), seconds * 1e3, a.size);
+    return 0;
+}
+
+int cmd_bake(const BakeArgs& a) {
+    const fs::path output(a.output);
+    if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
+    bool height = false, normal = false, color = false;
+    for (const std::string& map : a.maps) {
+        if (map != "color" && map != "height" && map != "normal") {
+            throw UsageError("--maps: '" + map + "' is not a map bake makes (color, height, normal)");
+        }
+        bool& wanted = map == "color" ? color : map == "height" ? height : normal;
+        if (wanted) throw UsageError("--maps: '" + map + "' is named twice");
+        wanted = true;
+    }
+    if (!color) throw UsageError("--maps: color is required (the baked scene is drawn with it)");
+    if (!normal && (a.normals_option->count() || a.normal_step || a.precision_option->count())) {
+        throw UsageError("--normals, --normal-step and --normal-precision make the normal map: add normal to --maps");
+    }
+    if (a.normal_step && a.normals != NormalMethod::FiniteDifferences) {
+        throw UsageError("--normal-step is the finite differences' step: it needs --normals finite");
+    }
+    const HeightField* field = nullptr;
+    if (height || normal) {
+        field = find_height_field(a.shader);
+        if (!field) {
+            std::string with;
+            for (const HeightField* f : height_fields()) with += (with.empty() ? "" : ", ") + std::string(f->shader());
+            throw UsageError("--maps " + std::string(normal ? "normal" : "height") + ": shader '" + a.shader +
+                             "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
+        }
+    }
+    SceneLoadOptions load;
+    load.paths.allow_outside = a.allow_outside;
+    Scene scene = load_scene(a.mesh, load);
+    const std::string stem = output.stem().string();
+    const std::string bin = stem + ".bin", color_file = stem + "-color.png", height_file = stem + "-height.png",
+                      normal_file = stem + "-normal.png";
+    check_output(output, scene.inputs, "-o");
+    check_output(output.parent_path() / bin, scene.inputs, "-o (its buffer)");
+    check_output(output.parent_path() / color_file, scene.inputs, "-o (its texture)");
+    if (height) check_output(output.parent_path() / height_file, scene.inputs, "-o (its height map)");
+    if (normal) check_output(output.parent_path() / normal_file, scene.inputs, "-o (its normal map)");
+    const Program* program = find_program(a.shader);
+    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+
+    AtlasRequest req;
+    req.size = a.size;
+    req.skirt = a.skirt;
+    req.frame.shader_override = a.shader;
+    if (a.time) req.frame.time = *a.time;
+    req.frame.shading.derivatives = a.derivatives;
+    req.frame.shading.threads = a.threads;
+    for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
+    auto clock = std::chrono::steady_clock::now;
+    auto ms_since = [](auto t0) { return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    auto t0 = clock();
+    const Image atlas = bake_atlas(scene, req);
+    const double color_ms = ms_since(t0);
+    // Every map is made before any file is written: an error leaves no output.
+    Image height_map, normal_map;
+    double height_ms = 0.0, normal_ms = 0.0;
+    if (height) {
+        AtlasRequest h = req;
+        h.frame.shader_override = std::string(field->height_shader());
+        t0 = clock();
+        height_map = bake_atlas(scene, h);
+        height_ms = ms_since(t0);
+    }
+    NormalBakeRequest n;
+    n.size = a.size, n.skirt = a.skirt, n.method = a.normals, n.precision = a.normal_precision, n.threads = a.threads;
+    if (a.normal_step) n.step = *a.normal_step;
+    if (normal) {
+        t0 = clock();
+        normal_map = bake_normal_map(scene, *field, n);
+        normal_ms = ms_since(t0);
+    }
+
+    OutputSet out(output);
+    const Metadata common = {{"quadshade:shader", a.shader},
+                             {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
+                             {"quadshade:skirt", std::to_string(a.skirt)}};
+    Metadata meta = common;
+    meta.push_back({"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"});
+    meta.push_back({"quadshade:derivatives", rule_name(a.derivatives)});
+    write_image(out.staged(color_file), atlas, meta, true);
+    if (height) {
+        meta = common;
+        meta.push_back({"quadshade:atlas", "the height of " + a.shader + " (" + std::string(field->height_shader()) +
+                                               "), 0 to 1 for 0 to " + std::to_string(field->amplitude()) +
+                                               " object units of relief; row 0 is t = 0"});
+        write_image(out.staged(height_file), height_map, meta, true);
+    }
+    if (normal) {
+        meta = common;
+        meta.push_back({"quadshade:atlas", "object-space unit normals as 0.5 + 0.5 n (not tangent-space), alpha 0 in the "
+                                           "gutter; row 0 is t = 0"});
+        meta.push_back({"quadshade:normals", n.method == NormalMethod::Analytic
+                                                 ? "analytic (Dual2)"
+                                                 : "finite differences, step " + std::to_string(n.step) + " object units"});
+        meta.push_back({"quadshade:precision", n.precision == Precision::Double ? "double" : "float"});
+        write_image(out.staged(normal_file), normal_map, meta, true);
+    }
+    const Scene baked = baked_scene(scene, out.staged(color_file), normal ? out.staged(normal_file) : fs::path(),
+                                    height ? out.staged(height_file) : fs::path());
+    save_scene(baked, out.staged(output.filename().string()));
+    out.commit(output.filename().string());
+    std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)", a.output.c_str(), a.shader.c_str(),
+                 a.size, a.size, color_ms, color_file.c_str());
+    if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
+    if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
+    std::fputc('\n', stderr);
+    return 0;
+}
+
+}  // namespace qs::app

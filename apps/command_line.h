@@ -1,0 +1,72 @@
+#pragma once
+// What the quadshade subcommands share: exit codes, the usage error, the checks every output
+// gets, and the option helpers built on CLI11.
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "shading/program.h"
+
+namespace qs::app {
+
+// 0 is success; 3: `compare` found differences over its thresholds, a `check` case missed its
+// bar, or a `test` case failed.
+inline constexpr int kExitInput = 1, kExitUsage = 2, kExitDifferent = 3;
+
+// Bad usage (exit 2): an option combination or value the command cannot honour.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The file system entry `p` names: its folder resolved (symlinks and all), its own name kept. An
+// output replaces that entry (written beside it, renamed over it), never what a link there points to.
+std::filesystem::path resolved(const std::filesystem::path& p);
+
+// Refuses (UsageError) an output that is a folder or one of the scene's own files. Cheap for a
+// million frames: only an output named like an input has its folder resolved.
+void check_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs,
+                  const char* option);
+
+// A CLI11 check that a number is finite (CLI11 reads "nan", "inf" and 1e400 as numbers).
+extern const CLI::Validator kFinite;
+
+// An option whose value is one of `choices`, with the old command line's messages.
+template <class T>
+CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::vector<std::pair<std::string, T>> choices,
+                        const std::string& text, const std::string& help) {
+    return app
+        .add_option_function<std::string>(
+            name,
+            [&target, choices, name](const std::string& v) {
+                std::string names;
+                for (const auto& [n, value] : choices) {
+                    if (n == v) {
+                        target = value;
+                        return;
+                    }
+                    names += (names.empty() ? "" : " | ") + n;
+                }
+                throw CLI::ValidationError(name, "expected " + names + ", got '" + v + "'");
+            },
+            help)
+        ->option_text(text);
+}
+
+// --plugin, repeatable: shared libraries whose shaders join the catalogue (render/plugins.h),
+// loaded in order once the command line has parsed.
+void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins);
+
+// --memory-limit's bytes; empty: what the system has available.
+std::uint64_t memory_limit(const std::string& option);
+
+// The names the options give these, for messages and image metadata.
+const char* precision_name(Precision p);
+const char* rule_name(Derivatives d);
+
+}  // namespace qs::app
