@@ -46,15 +46,6 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "softpipe sets up edges in floating point without llvmpipe's 8-bit sub-pixel snapping, which "
       "quadshade follows: 2 pixels where the plane's far edge passes within 1/256 pixel of a pixel "
       "centre are covered by one and not the other (measured: 2 of 505600, 4 pixels over 2/255)"}},
-    // Every solid texture shown on Figure 1.1's spheres (cases() below), against softpipe.
-    {{"spheres", "softpipe"},
-     {4, 4, 4,
-      "as figure-1.1: softpipe's edges without sub-pixel snapping cover 2 silhouette pixels the others do not "
-      "(measured at 632x200: 2 coverage mismatches, the only pixels over 1/255)"}},
-    {{"spots_length", "softpipe"},
-     {10, 8, 4,
-      "the spheres' 2 silhouette pixels, and softpipe's own interpolation (see perlin5) moving a few spot rims "
-      "(measured at 632x200: 6 over 1/255, 5 over 2/255)"}},
     {{"perlin5", "softpipe"},
      {130, 110, 0,
       "softpipe sets up and interpolates varyings with its own arithmetic (neither llvmpipe's, which "
@@ -228,7 +219,6 @@ void check_against(const std::string& driver, Derivatives rule, const char* rule
                         << " over 2/255, max " << n.max_steps << "/255, coverage mismatches " << n.coverage_mismatch);
             if (driver == "softpipe" && kSoftpipeCountedOnly.count(c.name)) continue;
             auto it = kBounds.find({c.name, driver});
-            if (it == kBounds.end() && c.scene == kFigure && !c.shader.empty()) it = kBounds.find({"spheres", driver});
             const Bound bound = it == kBounds.end() ? Bound{} : it->second;
             INFO("bound: " << bound.cause);
             CHECK(n.coverage_mismatch <= bound.coverage_mismatch);
