@@ -58,6 +58,7 @@ private:
     std::unique_ptr<Device> device_;
     std::uint32_t meshes_ = 0;
     bool committed_ = false;
+    int packet_width_ = 4;  // rays per Embree call: the widest the CPU traces natively
 };
 
 }  // namespace qs

@@ -22,6 +22,7 @@
 #include "core/tile_loop.h"
 #include "core/vertex_stage.h"
 #include "raycast/embree_scene.h"
+#include "raycast/eye.h"
 
 namespace qs {
 
@@ -29,55 +30,22 @@ namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
+// A triangle's plane as its fragments' intersections use it.
+struct TrianglePlane {
+    glm::dvec3 p0, e1, e2;  // vertex 0, and the edges from it to vertices 1 and 2
+    glm::dvec3 n;           // e1 x e2
+    double nn;              // n . n
+
+    explicit TrianglePlane(const glm::dvec3& v0, const glm::dvec3& v1, const glm::dvec3& v2)
+        : p0(v0), e1(v1 - v0), e2(v2 - v0), n(glm::cross(e1, e2)), nn(glm::dot(n, n)) {}
+};
+
 // One draw's geometry in world space and this frame's vertex stage output.
 struct Mesh {
     std::vector<glm::dvec3> world;    // per vertex
     std::vector<Triangle> triangles;  // Embree's primitive i is triangles[i]: the finite ones
+    std::vector<TrianglePlane> planes;  // per primitive
     std::vector<VertexOut> out;       // per vertex, this frame
-};
-
-// Primary rays through pixel centres in GL window coordinates (y up), from the near plane
-// (origin, t = 0) to the far plane (t = 1), and their derivatives in window x and y.
-struct Eye {
-    glm::dmat4 clip_from_world, world_from_clip;
-    double ndc_per_x = 0.0, ndc_per_y = 0.0;  // 2/W, 2/H
-
-    struct Ray {
-        glm::dvec3 origin, direction;
-    };
-    // d(origin)/dx, d(direction)/dx and the same for y.
-    struct Differentials {
-        glm::dvec3 origin_dx, direction_dx, origin_dy, direction_dy;
-    };
-
-    // The world point of NDC (x, y, z), and its derivative along the NDC direction `d` (a point
-    // p = h.xyz / h.w with h linear: dp = (dh.xyz - p dh.w) / h.w).
-    glm::dvec3 unproject(double x, double y, double z, const glm::dvec4* d = nullptr, glm::dvec3* dp = nullptr) const {
-        const glm::dvec4 h = world_from_clip * glm::dvec4(x, y, z, 1.0);
-        const glm::dvec3 p = glm::dvec3(h) / h.w;
-        if (d) {
-            const glm::dvec4 dh = world_from_clip * *d;
-            *dp = (glm::dvec3(dh) - p * dh.w) / h.w;
-        }
-        return p;
-    }
-
-    Ray ray(double xw, double yw) const {
-        const double x = xw * ndc_per_x - 1.0, y = yw * ndc_per_y - 1.0;
-        const glm::dvec3 near = unproject(x, y, -1.0), far = unproject(x, y, 1.0);
-        return {near, far - near};
-    }
-
-    Differentials differentials(double xw, double yw) const {
-        const double x = xw * ndc_per_x - 1.0, y = yw * ndc_per_y - 1.0;
-        const glm::dvec4 dx(ndc_per_x, 0.0, 0.0, 0.0), dy(0.0, ndc_per_y, 0.0, 0.0);
-        Differentials d;
-        glm::dvec3 far_dx, far_dy;
-        unproject(x, y, -1.0, &dx, &d.origin_dx), unproject(x, y, 1.0, &dx, &far_dx);
-        unproject(x, y, -1.0, &dy, &d.origin_dy), unproject(x, y, 1.0, &dy, &far_dy);
-        d.direction_dx = far_dx - d.origin_dx, d.direction_dy = far_dy - d.origin_dy;
-        return d;
-    }
 };
 
 // Embree works on rays and vertices whose coordinates stay within +-1.844e18 (FLT_LARGE in its
@@ -91,14 +59,14 @@ bool within_embree_range(const glm::dvec3& v) {
 // The rays of a width x height image are within Embree's range: the near-plane points and the
 // directions are projective images of the screen rectangle, largest at its corners.
 void check_rays(const Eye& eye, int width, int height) {
-    for (const double x : {0.0, double(width)}) {
-        for (const double y : {0.0, double(height)}) {
-            const Eye::Ray r = eye.ray(x, y);
-            if (!within_embree_range(r.origin) || !within_embree_range(r.direction)) {
-                throw RayCastError("ray caster: the camera's rays reach coordinates beyond +-1.8e18 (the camera is too "
-                                   "far from the origin, or its view too wide), where Embree cannot trace them; the "
-                                   "rasterizer (--backend raster) can render this view");
-            }
+    lanes16::Doubles x, y;  // the four corners, repeated
+    for (int i = 0; i < kBatchLanes; ++i) x[i] = (i & 1) ? width : 0.0, y[i] = (i & 2) ? height : 0.0;
+    const Eye::Rays r = eye.rays(x, y);
+    for (int corner = 0; corner < 4; ++corner) {
+        if (!within_embree_range(r.origin.at(corner)) || !within_embree_range(r.direction.at(corner))) {
+            throw RayCastError("ray caster: the camera's rays reach coordinates beyond +-1.8e18 (the camera is too "
+                               "far from the origin, or its view too wide), where Embree cannot trace them; the "
+                               "rasterizer (--backend raster) can render this view");
         }
     }
 }
@@ -138,16 +106,17 @@ private:
     // `lanes` are cast, from tnear[i] on when given.
     void block(int bx, int by, glm::vec4 clear, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
+        lanes16::Doubles xw, yw;
         for (int i = 0; i < kBatchLanes; ++i) {
             const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
+            xw[i] = x + 0.5, yw[i] = fb_.height - (y + 0.5);
             if (!(lanes >> i & 1) || x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) continue;
             rays.active |= 1u << i;
             if (tnear) rays.tnear[i] = tnear[i];
-            const Eye::Ray r = eye_.ray(x + 0.5, fb_.height - (y + 0.5));
-            for (int c = 0; c < 3; ++c) {
-                rays.origin[c][i] = float(r.origin[c]), rays.direction[c][i] = float(r.direction[c]);
-            }
         }
+        // Every lane's ray; Embree reads the active ones.
+        const Eye::Rays r = eye_.rays(xw, yw);
+        lanes16::store(rays.origin, r.origin), lanes16::store(rays.direction, r.direction);
         RayHits hits;
         bvh_.intersect(rays, hits);
         for (int i = 0; i < kBatchLanes; ++i) {
@@ -214,56 +183,65 @@ private:
         if (b.lanes.add(x, y, write)) flush(g);
     }
 
-    // Lane `lane` of in_: the pixel's ray meets triangle `primitive`'s plane at P; the attributes
-    // there are the vertices' weighted by P's barycentric coordinates, which is perspective-
-    // correct interpolation (a GPU's a/w over 1/w is the same point seen from the screen). For a
-    // helper lane P lies outside the triangle and the weights extrapolate.
-    void fragment(const PreparedDraw& d, const Mesh& m, int lane, int x, int y, std::uint32_t primitive,
-                  bool differentials) {
-        const Triangle& tri = m.triangles[primitive];
-        const glm::dvec3 p0 = m.world[tri[0]], e1 = m.world[tri[1]] - p0, e2 = m.world[tri[2]] - p0;
-        const glm::dvec3 n = glm::cross(e1, e2);
-        const double nn = glm::dot(n, n);
-        const double xw = x + 0.5, yw = fb_.height - (y + 0.5);
-        const Eye::Ray r = eye_.ray(xw, yw);
-        const double dn = glm::dot(r.direction, n);
-        const double t = glm::dot(p0 - r.origin, n) / dn;
-        const glm::dvec3 rel = r.origin + t * r.direction - p0;
+    // The fragments of batch `b`, into in_: each lane's ray meets its triangle's plane at P; the
+    // attributes there are the vertices' weighted by P's barycentric coordinates, which is
+    // perspective-correct interpolation (a GPU's a/w over 1/w is the same point seen from the
+    // screen). For a helper lane P lies outside the triangle and the weights extrapolate.
+    void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, bool differentials) {
+        using namespace lanes16;
+        const LaneBatch& at = b.lanes;
+        Doubles xw, yw, nn;
+        Doubles3 p0, e1, e2, n;
+        // The vertices' attributes, per varying and lane.
+        alignas(64) float a[3][kMaxVaryings][kBatchLanes];
+        for (int i = 0; i < kBatchLanes; ++i) {
+            const int k = i < at.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
+            xw[i] = at.x[k] + 0.5, yw[i] = fb_.height - (at.y[k] + 0.5);
+            const TrianglePlane& plane = m.planes[b.primitive[k]];
+            p0.set(i, plane.p0), e1.set(i, plane.e1), e2.set(i, plane.e2), n.set(i, plane.n), nn[i] = plane.nn;
+            const Triangle& tri = m.triangles[b.primitive[k]];
+            for (int c = 0; c < 3; ++c) {
+                for (int v = 0; v < d.varyings; ++v) a[c][v][i] = m.out[tri[c]].varyings[std::size_t(v)];
+            }
+        }
+        const Eye::Rays r = eye_.rays(xw, yw);
+        const Doubles dn = dot(r.direction, n);
+        const Doubles t = dot(p0 - r.origin, n) / dn;
+        const Doubles3 rel = r.origin + t * r.direction - p0;
         // Barycentric weights of vertices 1 and 2: signed sub-triangle areas over the whole.
-        const double b1 = glm::dot(glm::cross(rel, e2), n) / nn, b2 = glm::dot(glm::cross(e1, rel), n) / nn;
-        const double b0 = 1.0 - b1 - b2;
-        const glm::dvec4 clip = eye_.clip_from_world * glm::dvec4(p0 + rel, 1.0);
-        in_.frag_coord[0][lane] = float(xw);
-        in_.frag_coord[1][lane] = float(yw);
-        in_.frag_coord[2][lane] = float(0.5 * clip.z / clip.w + 0.5);
-        in_.frag_coord[3][lane] = float(1.0 / clip.w);
-        const auto& a0 = m.out[tri[0]].varyings, &a1 = m.out[tri[1]].varyings, &a2 = m.out[tri[2]].varyings;
+        const Doubles b1 = dot(cross(rel, e2), n) / nn, b2 = dot(cross(e1, rel), n) / nn;
+        const Doubles b0 = 1.0 - b1 - b2;
+        const Doubles4 clip = transform(eye_.clip_from_world, p0 + rel, 1.0);
+        store(in_.frag_coord[0], to_float(xw));
+        store(in_.frag_coord[1], to_float(yw));
+        store(in_.frag_coord[2], to_float(0.5 * clip.z / clip.w + 0.5));
+        store(in_.frag_coord[3], to_float(1.0 / clip.w));
         for (int v = 0; v < d.varyings; ++v) {
-            in_.varying[v][lane] = (d.flat >> v & 1) ? a2[std::size_t(v)]  // provoking: the last vertex
-                                                     : float(b0 * a0[std::size_t(v)] + b1 * a1[std::size_t(v)] +
-                                                             b2 * a2[std::size_t(v)]);
+            const Floats a0 = load(a[0][v]), a1 = load(a[1][v]), a2 = load(a[2][v]);
+            const bool flat = d.flat >> v & 1;  // the provoking vertex's: the last
+            store(in_.varying[v], flat ? a2 : to_float(b0 * to_double(a0) + b1 * to_double(a1) + b2 * to_double(a2)));
         }
         if (!differentials) return;
         // Igehy's transfer: the hit moves along the surface as the ray moves with the pixel,
         // dP = dO + t dD + dt D with dt = -((dO + t dD) . n) / (D . n); the weights' derivatives
         // follow from dP as the weights from P, and everything else by the chain rule.
-        const Eye::Differentials rd = eye_.differentials(xw, yw);
-        auto carry = [&](const glm::dvec3& dorigin, const glm::dvec3& ddirection, int axis) {
-            const glm::dvec3 moved = dorigin + t * ddirection;
-            const glm::dvec3 dp = moved - (glm::dot(moved, n) / dn) * r.direction;
-            const double db1 = glm::dot(glm::cross(dp, e2), n) / nn, db2 = glm::dot(glm::cross(e1, dp), n) / nn;
-            const glm::dvec4 dclip = eye_.clip_from_world * glm::dvec4(dp, 0.0);
-            float(&vdx)[kMaxVaryings][kBatchLanes] = axis == 0 ? in_.varying_dx : in_.varying_dy;
-            float(&fdx)[2][kBatchLanes] = axis == 0 ? in_.frag_coord_dx : in_.frag_coord_dy;
-            fdx[0][lane] = float(0.5 * (dclip.z * clip.w - clip.z * dclip.w) / (clip.w * clip.w));
-            fdx[1][lane] = float(-dclip.w / (clip.w * clip.w));
+        const Eye::Differentials rd = eye_.differentials(r);
+        auto carry = [&](const Doubles3& dorigin, const Doubles3& ddirection, float (&dvarying)[kMaxVaryings][kBatchLanes],
+                         float (&dfrag)[2][kBatchLanes]) {
+            const Doubles3 moved = dorigin + t * ddirection;
+            const Doubles3 dp = moved - (dot(moved, n) / dn) * r.direction;
+            const Doubles db1 = dot(cross(dp, e2), n) / nn, db2 = dot(cross(e1, dp), n) / nn;
+            const Doubles4 dclip = transform(eye_.clip_from_world, dp, 0.0);
+            store(dfrag[0], to_float(0.5 * (dclip.z * clip.w - clip.z * dclip.w) / (clip.w * clip.w)));
+            store(dfrag[1], to_float(-dclip.w / (clip.w * clip.w)));
             for (int v = 0; v < d.varyings; ++v) {
-                const std::size_t s = std::size_t(v);
-                vdx[v][lane] = (d.flat >> v & 1) ? 0.0f : float(db1 * (a1[s] - a0[s]) + db2 * (a2[s] - a0[s]));
+                const Floats a0 = load(a[0][v]), a1 = load(a[1][v]), a2 = load(a[2][v]);
+                const bool flat = d.flat >> v & 1;
+                store(dvarying[v], flat ? Floats{} : to_float(db1 * to_double(a1 - a0) + db2 * to_double(a2 - a0)));
             }
         };
-        carry(rd.origin_dx, rd.direction_dx, 0);
-        carry(rd.origin_dy, rd.direction_dy, 1);
+        carry(rd.origin_dx, rd.direction_dx, in_.varying_dx, in_.frag_coord_dx);
+        carry(rd.origin_dy, rd.direction_dy, in_.varying_dy, in_.frag_coord_dy);
     }
 
     void flush(std::size_t g) {
@@ -272,10 +250,7 @@ private:
         if (at.count == 0) return;
         const PreparedDraw& d = draws_[g];
         const bool differentials = d.mode.derivatives == Derivatives::Analytic;
-        for (int i = 0; i < kBatchLanes; ++i) {
-            const int k = i < at.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
-            fragment(d, meshes_[g], i, at.x[k], at.y[k], b.primitive[k], differentials);
-        }
+        set_up(d, meshes_[g], b, differentials);
         d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
         lanes_ += std::uint64_t(at.count);
         for (int i = 0; i < at.count; ++i) {
@@ -347,7 +322,7 @@ struct RayCaster::Impl {
             Mesh& m = meshes[i];
             positions.assign(m.world.begin(), m.world.end());
             // Triangles with a vertex that is not finite are left out, as the rasterizer drops them.
-            m.triangles.clear();
+            m.triangles.clear(), m.planes.clear();
             const auto& idx = draws[i].indices;
             for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
                 const Triangle t{idx[k], idx[k + 1], idx[k + 2]};
@@ -368,6 +343,7 @@ struct RayCaster::Impl {
                     }
                 }
                 m.triangles.push_back(t);
+                m.planes.emplace_back(m.world[t[0]], m.world[t[1]], m.world[t[2]]);
             }
             scene->add_mesh(positions, m.triangles);
         }
