@@ -51,17 +51,22 @@ struct EmbreeScene::Device {
     }
 };
 
-EmbreeScene::EmbreeScene() : device_(std::make_unique<Device>()) {
+EmbreeScene::EmbreeScene(int packet_width) : device_(std::make_unique<Device>()) {
+    if (packet_width != 0 && packet_width != 4 && packet_width != 8 && packet_width != 16) {
+        throw std::invalid_argument("EmbreeScene: packets of " + std::to_string(packet_width) + " rays (4, 8 or 16)");
+    }
     device_->device = rtcNewDevice(nullptr);
     if (!device_->device) {
         throw RayCastError(std::string("Embree: cannot create a device: ") + error_name(rtcGetDeviceError(nullptr)));
     }
     rtcSetDeviceErrorFunction(device_->device, &Device::on_error, device_.get());
-    // The widest packet this CPU traces natively: a wider one is split into pieces of this width
-    // behind the call, which took the Figure 1.1 frame on an AVX2 host from 43 to 79 ms.
-    packet_width_ = rtcGetDeviceProperty(device_->device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) ? 16
-                    : rtcGetDeviceProperty(device_->device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8
-                                                                                                       : 4;
+    // By default the widest packet this CPU traces natively: a wider one is split behind the
+    // call, which took the Figure 1.1 frame on an AVX2 host from 43 to 79 ms.
+    auto native = [&](RTCDeviceProperty p) { return rtcGetDeviceProperty(device_->device, p) != 0; };
+    packet_width_ = packet_width != 0                                    ? packet_width
+                    : native(RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) ? 16
+                    : native(RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)  ? 8
+                                                                         : 4;
     device_->scene = rtcNewScene(device_->device);
     // Robust: no shortcuts that trade accuracy for speed, so that rays through shared edges and
     // vertices never fall between two triangles.

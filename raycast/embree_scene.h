@@ -40,7 +40,9 @@ struct RayHits {
 
 class EmbreeScene {
 public:
-    EmbreeScene();
+    // packet_width: rays per Embree call, 4, 8 or 16; 0 for the widest the CPU traces natively
+    // (a wider packet is split into pieces of that width behind the call, at twice the cost).
+    explicit EmbreeScene(int packet_width = 0);
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -58,7 +60,7 @@ private:
     std::unique_ptr<Device> device_;
     std::uint32_t meshes_ = 0;
     bool committed_ = false;
-    int packet_width_ = 4;  // rays per Embree call: the widest the CPU traces natively
+    int packet_width_ = 4;
 };
 
 }  // namespace qs
