@@ -25,7 +25,12 @@ namespace qs {
 // llvmpipe's max and min drop it), scaled by 2^24 - 1 in float and rounded to nearest even. The
 // integer is exact in a float. Depths closer than 2^-24 compare equal, so the first drawn stays.
 inline constexpr float kDepthCleared = 16777215.0f;  // the clear value 1
-inline float depth24(float z) { return std::nearbyint(std::fmin(std::fmax(z, 0.0f), 1.0f) * kDepthCleared); }
+inline float depth24(float z) {
+    // max(z, 0) then min(.., 1) as maxss and minss take them (NaN goes to 0), written as
+    // comparisons: std::fmax and std::fmin were calls into libm.
+    const float above = z > 0.0f ? z : 0.0f;
+    return std::nearbyint((above < 1.0f ? above : 1.0f) * kDepthCleared);
+}
 
 // depth24 on every lane of a batch, to the bit.
 inline lanes16::Floats depth24(const lanes16::Floats& z) {

@@ -273,7 +273,7 @@ private:
         const int block = block_base(bx, by) / kBatchLanes;
         touched_[std::size_t(block)] = true;
         if (depth_test_) {
-            for (int i = 0; i < kBatchLanes; ++i) depth_[block * kBatchLanes + i] = depth24(in_[h].frag_coord[2][i]);
+            lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
         }
         written_ += kBatchLanes;
     }

@@ -42,10 +42,10 @@ struct TrianglePlane {
 
 // One draw's geometry in world space and this frame's vertex stage output.
 struct Mesh {
-    std::vector<glm::dvec3> world;    // per vertex
-    std::vector<Triangle> triangles;  // Embree's primitive i is triangles[i]: the finite ones
+    std::vector<glm::dvec3> world;      // per vertex
+    std::vector<Triangle> triangles;    // Embree's primitive i is triangles[i]: the finite ones
     std::vector<TrianglePlane> planes;  // per primitive
-    std::vector<VertexOut> out;       // per vertex, this frame
+    std::vector<VertexOut> out;         // per vertex, this frame
 };
 
 // Embree works on rays and vertices whose coordinates stay within +-1.844e18 (FLT_LARGE in its
