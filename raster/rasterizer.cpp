@@ -30,6 +30,14 @@ namespace qs {
 
 namespace {
 
+// Each lane's pixel offset in its block (block_layout.h) as 64-bit lanes, for the edge functions.
+lanes16::Longs lane_offsets(const int (&d)[kBatchLanes]) {
+    lanes16::Longs v;
+    for (int i = 0; i < kBatchLanes; ++i) v[i] = d[i];
+    return v;
+}
+const lanes16::Longs kLaneDx64 = lane_offsets(kLaneDx), kLaneDy64 = lane_offsets(kLaneDy);
+
 // Renders the triangles of one tile, in submission order, straight into the tile's part of the
 // framebuffer (no thread else writes there, so the result is the same for any thread count).
 // A whole block's colour is transposed in registers from lane order into its four pixel rows.
@@ -109,7 +117,7 @@ public:
             const EdgeFunction& e = t.edges[std::size_t(k)];
             edges.most[k] = e.most_offset(kBlock);
             edges.least[k] = e.least_offset(kBlock);
-            for (int i = 0; i < kBatchLanes; ++i) edges.lane[k][i] = e.dcdx * kLaneDx[i] + e.dcdy * kLaneDy[i];
+            edges.lane[k] = e.dcdx * kLaneDx64 + e.dcdy * kLaneDy64;
         }
         const int bx0 = x0 + ((lo_x - x0) & ~(kBlock - 1));
         for (int by = y0 + ((lo_y - y0) & ~(kBlock - 1)); by <= hi_y; by += kBlock) {
