@@ -15,6 +15,7 @@ namespace qs::lanes16 {
 typedef double Doubles __attribute__((vector_size(kBatchLanes * sizeof(double))));
 
 inline Doubles to_double(const Floats& v) { return __builtin_convertvector(v, Doubles); }
+inline Doubles to_double(const Ints& v) { return __builtin_convertvector(v, Doubles); }
 inline Floats to_float(const Doubles& v) { return __builtin_convertvector(v, Floats); }
 
 struct Doubles3 {

@@ -106,16 +106,15 @@ private:
     // `lanes` are cast, from tnear[i] on when given.
     void block(int bx, int by, glm::vec4 clear, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
-        lanes16::Doubles xw, yw;
         for (int i = 0; i < kBatchLanes; ++i) {
             const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            xw[i] = x + 0.5, yw[i] = fb_.height - (y + 0.5);
             if (!(lanes >> i & 1) || x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) continue;
             rays.active |= 1u << i;
             if (tnear) rays.tnear[i] = tnear[i];
         }
         // Every lane's ray; Embree reads the active ones.
-        const Eye::Rays r = eye_.rays(xw, yw);
+        const WindowPoints w = centres(bx + lanes16::load(kLaneDx), by + lanes16::load(kLaneDy));
+        const Eye::Rays r = eye_.rays(w.x, w.y);
         lanes16::store(rays.origin, r.origin), lanes16::store(rays.direction, r.direction);
         RayHits hits;
         bvh_.intersect(rays, hits);
@@ -183,6 +182,14 @@ private:
         if (b.lanes.add(x, y, write)) flush(g);
     }
 
+    // The centres of pixels (x, y) in framebuffer coordinates (y down), in GL window coordinates.
+    struct WindowPoints {
+        lanes16::Doubles x, y;
+    };
+    WindowPoints centres(const lanes16::Ints& x, const lanes16::Ints& y) const {
+        return {lanes16::to_double(x) + 0.5, fb_.height - (lanes16::to_double(y) + 0.5)};
+    }
+
     // The fragments of batch `b`, into in_: each lane's ray meets its triangle's plane at P; the
     // attributes there are the vertices' weighted by P's barycentric coordinates, which is
     // perspective-correct interpolation (a GPU's a/w over 1/w is the same point seen from the
@@ -190,13 +197,12 @@ private:
     void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, bool differentials) {
         using namespace lanes16;
         const LaneBatch& at = b.lanes;
-        Doubles xw, yw, nn;
+        Doubles nn;
         Doubles3 p0, e1, e2, n;
         // The vertices' attributes, per varying and lane.
         alignas(64) float a[3][kMaxVaryings][kBatchLanes];
         for (int i = 0; i < kBatchLanes; ++i) {
             const int k = i < at.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
-            xw[i] = at.x[k] + 0.5, yw[i] = fb_.height - (at.y[k] + 0.5);
             const TrianglePlane& plane = m.planes[b.primitive[k]];
             p0.set(i, plane.p0), e1.set(i, plane.e1), e2.set(i, plane.e2), n.set(i, plane.n), nn[i] = plane.nn;
             const Triangle& tri = m.triangles[b.primitive[k]];
@@ -204,7 +210,8 @@ private:
                 for (int v = 0; v < d.varyings; ++v) a[c][v][i] = m.out[tri[c]].varyings[std::size_t(v)];
             }
         }
-        const Eye::Rays r = eye_.rays(xw, yw);
+        const WindowPoints w = centres(load(at.x), load(at.y));
+        const Eye::Rays r = eye_.rays(w.x, w.y);
         const Doubles dn = dot(r.direction, n);
         const Doubles t = dot(p0 - r.origin, n) / dn;
         const Doubles3 rel = r.origin + t * r.direction - p0;
@@ -212,8 +219,8 @@ private:
         const Doubles b1 = dot(cross(rel, e2), n) / nn, b2 = dot(cross(e1, rel), n) / nn;
         const Doubles b0 = 1.0 - b1 - b2;
         const Doubles4 clip = transform(eye_.clip_from_world, p0 + rel, 1.0);
-        store(in_.frag_coord[0], to_float(xw));
-        store(in_.frag_coord[1], to_float(yw));
+        store(in_.frag_coord[0], to_float(w.x));
+        store(in_.frag_coord[1], to_float(w.y));
         store(in_.frag_coord[2], to_float(0.5 * clip.z / clip.w + 0.5));
         store(in_.frag_coord[3], to_float(1.0 / clip.w));
         for (int v = 0; v < d.varyings; ++v) {
@@ -248,6 +255,7 @@ private:
         HitBatch& b = pending_[g];
         LaneBatch& at = b.lanes;
         if (at.count == 0) return;
+        at.pad();
         const PreparedDraw& d = draws_[g];
         const bool differentials = d.mode.derivatives == Derivatives::Analytic;
         set_up(d, meshes_[g], b, differentials);
