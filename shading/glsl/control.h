@@ -39,6 +39,9 @@
 // after loop.next() (`for (...; loop(c); loop.next(), t += 0.1f)`), so that lanes that continued
 // rejoin before it.
 
+#include <cstddef>
+#include <new>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -100,8 +103,49 @@ private:
 
 struct LoopTag {};
 
-// The lanes of a loop: running, gone (break, return, condition failed) and paused (continue).
-// Nested loops reach their parents through this.
+namespace loop_detail {
+
+// The values lanes left or paused with, of every loop running on this thread, innermost last.
+// They are in memory on purpose: a loop reads and writes them only where lanes leave or pause
+// and at its end, and held in registers they take those the body iterates in. (Mandelbrot on
+// AVX2: its three variables, their saved values, cx, cy and the running lanes are 18 registers
+// for 16 lanes, of 16; as members of the Loop, GCC spilled the body's variables, not the saved
+// ones, and each iteration waited on a store and a reload.)
+class SavedValues {
+public:
+    // GLSL has no recursion: the loops running at once are the shader's nesting, a few.
+    static constexpr std::size_t kBytes = 16 * 1024;
+
+    // Room for a T, released by pop(mark) where mark is top() from before.
+    template <class T>
+    T* push() {
+        const std::size_t at = (top_ + alignof(T) - 1) / alignof(T) * alignof(T);
+        if (at + sizeof(T) > kBytes) throw std::length_error("shader loops: the variables of the loops running at once exceed 16 KiB");
+        top_ = at + sizeof(T);
+        return reinterpret_cast<T*>(bytes_ + at);
+    }
+    std::size_t top() const { return top_; }
+    void pop(std::size_t mark) { top_ = mark; }
+
+private:
+    alignas(64) std::byte bytes_[kBytes] = {};
+    std::size_t top_ = 0;
+};
+inline constinit thread_local SavedValues saved_values;
+
+// This thread's SavedValues, looked up once per loop: the pointer passes through an empty asm so
+// that GCC keeps it instead of repeating the lookup (in position-independent code, a call that
+// makes the body's vectors go to the stack and back) where the loop ends.
+inline SavedValues* this_threads_saved_values() {
+    SavedValues* p = &saved_values;
+    asm("" : "+r"(p));
+    return p;
+}
+
+}  // namespace loop_detail
+
+// The lanes of a loop: running and paused (continue); every other lane has left (break, return,
+// condition failed) or never entered. Nested loops reach their parents through this.
 template <class M>
 class LoopLanes : public LoopTag {
 public:
@@ -109,7 +153,7 @@ public:
     const M& active() const { return active_; }
 
 protected:
-    LoopLanes(const M& entry, LoopLanes* parent) : active_(entry), left_(!entry), parent_(parent) {}
+    LoopLanes(const M& entry, LoopLanes* parent) : active_(entry), parent_(parent) {}
     LoopLanes(const LoopLanes&) = delete;
     LoopLanes& operator=(const LoopLanes&) = delete;
 
@@ -117,13 +161,12 @@ protected:
     // loops find them: the function's value for them is in its Return.
     void leave_all(const M& lanes) {
         for (LoopLanes* l = this; l; l = l->parent_) {
-            l->left_ = l->left_ || lanes;
             l->active_ = l->active_ && !lanes;
             l->paused_ = l->paused_ && !lanes;
         }
     }
 
-    M active_, left_;
+    M active_;
     M paused_ = M(false);
     bool any_paused_ = false;
     LoopLanes* parent_;
@@ -135,7 +178,10 @@ public:
     explicit Loop(Vars&... vars) : Loop(M(true), nullptr, vars...) {}
     Loop(Inside<M> entry, Vars&... vars) : Loop(entry.lanes, nullptr, vars...) {}
     Loop(LoopLanes<M>& parent, Vars&... vars) : Loop(parent.active(), &parent, vars...) {}
-    ~Loop() { end(); }
+    ~Loop() {
+        end();
+        stack_->pop(mark_);
+    }
 
     // The loop's head: the lanes that continued rejoin, the lanes whose condition fails leave.
     // False, with every variable restored, once no lane runs.
@@ -203,32 +249,38 @@ public:
     void end() {
         if (ended_) return;
         ended_ = true;
-        const M kept = this->left_ || this->paused_;
+        const M kept = !this->active_;  // left, paused, or never entered (saved as they came)
         if (any(kept)) restore(kept);
     }
 
 private:
     Loop(const M& entry, LoopLanes<M>* parent, Vars&... vars)
-        : LoopLanes<M>(entry, parent), vars_(vars...), saved_(vars...) {}
+        : LoopLanes<M>(entry, parent),
+          vars_(vars...),
+          stack_(loop_detail::this_threads_saved_values()),
+          mark_(stack_->top()),
+          saved_(new (stack_->template push<std::tuple<Vars...>>()) std::tuple<Vars...>(vars...)) {}
 
     void leave(const M& lanes) {
         save(lanes);
-        this->left_ = this->left_ || lanes;
         this->active_ = this->active_ && !lanes;
     }
     void save(const M& lanes) {
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((std::get<I>(saved_) = select(lanes, std::get<I>(vars_), std::get<I>(saved_))), ...);
+            ((std::get<I>(*saved_) = select(lanes, std::get<I>(vars_), std::get<I>(*saved_))), ...);
         }(std::index_sequence_for<Vars...>());
     }
     void restore(const M& lanes) {
         [&]<std::size_t... I>(std::index_sequence<I...>) {
-            ((std::get<I>(vars_) = select(lanes, std::get<I>(saved_), std::get<I>(vars_))), ...);
+            ((std::get<I>(vars_) = select(lanes, std::get<I>(*saved_), std::get<I>(vars_))), ...);
         }(std::index_sequence_for<Vars...>());
     }
 
+    static_assert(std::is_trivially_destructible_v<std::tuple<Vars...>>, "the saved values are released without a destructor");
     std::tuple<Vars&...> vars_;
-    std::tuple<Vars...> saved_;  // per lane: the value it left or paused with
+    loop_detail::SavedValues* stack_;
+    std::size_t mark_;
+    std::tuple<Vars...>* saved_;  // per lane: the value it left or paused with (in stack_)
     bool ended_ = false;
 };
 

@@ -19,7 +19,6 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <type_traits>
 #include <utility>
 
@@ -69,12 +68,21 @@ struct Wide {
         for_each_part<parts>([&](auto i) QS_ALWAYS_INLINE { r.part[i] = p; });
         return r;
     }
+    // Loads and stores part by part, as one unaligned vector access each. Not a memcpy of the
+    // whole Wide: that takes its address, and a variable whose address is taken stays in memory,
+    // stored on every assignment (a shader loop's variables read back from the stack on each
+    // iteration) and copied in halves through general registers.
+    typedef T UnalignedPart __attribute__((vector_size(sizeof(Part)), aligned(alignof(T)), may_alias));
     [[gnu::always_inline]] static Wide load(const T* p) {
         Wide r;
-        std::memcpy(&r, p, sizeof r);
+        for_each_part<parts>([&](auto i) QS_ALWAYS_INLINE {
+            r.part[i] = *reinterpret_cast<const UnalignedPart*>(p + i * part_size);
+        });
         return r;
     }
-    [[gnu::always_inline]] void store(T* p) const { std::memcpy(p, this, sizeof *this); }
+    [[gnu::always_inline]] void store(T* p) const {
+        for_each_part<parts>([&](auto i) QS_ALWAYS_INLINE { *reinterpret_cast<UnalignedPart*>(p + i * part_size) = part[i]; });
+    }
 
     [[gnu::always_inline]] T operator[](int i) const { return part[i / part_size][i % part_size]; }
 

@@ -9,6 +9,7 @@
 #include <cfenv>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -285,6 +286,32 @@ TEMPLATE_TEST_CASE("a loop inside a varying if runs only for the lanes inside; a
         CHECK(value_at(runs, k) == (sx > S(0) ? 10.0 : 0.0));
         CHECK(lane(out.discarded, k) == discarded);
     }
+}
+
+namespace {
+
+// Loops nested until the thread's room for saved values runs out (GLSL cannot recurse; this
+// only checks the limit). `depth` counts the loops that got their room.
+void nest_loops(vec4<Pixels<double, 16>>& v, int& depth) {
+    Loop loop(v);
+    ++depth;
+    if (depth < 1000) nest_loops(v, depth);
+}
+
+}  // namespace
+
+TEST_CASE("a loop's saved values are released when it ends, also when an exception leaves it; loops beyond the room are refused",
+          "[loops]") {
+    const std::size_t before = loop_detail::saved_values.top();
+    const vec2<Pixels<float, 16>> c = collatz(ramp<Pixels<float, 16>>(1.0, 1.0));
+    CHECK(value_at(c.x, 0) == 0.0);  // seed 1: the loop ends at once
+    CHECK(loop_detail::saved_values.top() == before);
+
+    vec4<Pixels<double, 16>> v(1.0f);
+    int depth = 0;
+    CHECK_THROWS_AS(nest_loops(v, depth), std::length_error);
+    CHECK(depth == int((loop_detail::SavedValues::kBytes - before) / sizeof(vec4<Pixels<double, 16>>)));
+    CHECK(loop_detail::saved_values.top() == before);
 }
 
 // ---- matrices ---------------------------------------------------------------------------------
