@@ -781,12 +781,99 @@ template <int Dims>
 [[gnu::always_inline]] inline void sample_dims(const Texture& tex, const Lookup& l) {
     for (int base = 0; base < l.lanes; base += L) sample_register<Dims>(tex, l, base);
 }
+
+// ---- the plain 2D lookup: one level, one filter, the 8-bit path ---------------------------
+// What single_texture and the halftone do: a 2D texture whose sampler needs no level of detail
+// (min == mag, no mipmaps), REPEAT or CLAMP_TO_EDGE, no derivatives. The same arithmetic as
+// sample_lanes takes there (choose_levels' first case, aos_level at level 0), with the axes'
+// modes fixed at compile time, and one more thing: a texel is gathered only when some lane's
+// weight reads it. llvmpipe's 8-bit lerp with weight 0 returns its first operand exactly
+// (a + ((0 (b - a) + 128) >> 8) = a), so where every lane's weight along x (or y) is 0 the
+// second column (row) changes nothing; lookups at texel centres, as the halftone's explicit
+// bilinear filter makes them, read one texel per lane instead of four.
+enum class AxisMode { Clamp, RepeatPot, RepeatNpot };
+
+template <AxisMode M>
+[[gnu::always_inline]] inline Axis plain_linear_axis(const Floats& s, const Ints& size, const Ints& active) {
+    Axis a = aos_linear(s, size, M == AxisMode::Clamp ? Wrap::ClampToEdge : Wrap::Repeat, M != AxisMode::RepeatNpot);
+    a.w8 = a.w8 & active;  // lanes past the lookup's end weigh nothing (their results are dropped)
+    return a;
+}
+template <AxisMode M>
+[[gnu::always_inline]] inline Ints plain_nearest_axis(const Floats& s, const Ints& size) {
+    return aos_nearest(s, size, M == AxisMode::Clamp ? Wrap::ClampToEdge : Wrap::Repeat, M != AxisMode::RepeatNpot);
+}
+
+template <AxisMode MS, AxisMode MT, bool Linear>
+void sample_plain_2d(const Texture& tex, const Lookup& l) {
+    const Ints width = splat(tex.width), height = splat(tex.height);
+    const std::uint32_t* t = tex.texels.data();
+    for (int base = 0; base < l.lanes; base += L) {
+        const int n = std::min(l.lanes - base, L);
+        const Floats s = load_lanes(l.s, base, n), tc = load_lanes(l.t, base, n);
+        Pairs q;
+        if constexpr (Linear) {
+            static constexpr Ints kLaneIds{0, 1, 2, 3, 4, 5, 6, 7};
+            const Ints active = kLaneIds < n;
+            const Axis x = plain_linear_axis<MS>(s, width, active), y = plain_linear_axis<MT>(tc, height, active);
+            const Ints row0 = y.i0 * width;
+            q = split(gather(t, row0 + x.i0));
+            const bool along_x = any(x.w8), along_y = any(y.w8);
+            if (along_x) q = lerp8(x.w8, q, split(gather(t, row0 + x.i1)));
+            if (along_y) {
+                const Ints row1 = y.i1 * width;
+                Pairs q1 = split(gather(t, row1 + x.i0));
+                if (along_x) q1 = lerp8(x.w8, q1, split(gather(t, row1 + x.i1)));
+                q = lerp8(y.w8, q, q1);
+            }
+        } else {
+            q = split(gather(t, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
+        }
+        for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
+    }
+}
+
+using PlainSampler = void (*)(const Texture&, const Lookup&);
+template <AxisMode MS, AxisMode MT>
+PlainSampler plain_sampler(bool linear) {
+    return linear ? &sample_plain_2d<MS, MT, true> : &sample_plain_2d<MS, MT, false>;
+}
+template <AxisMode MS>
+PlainSampler plain_sampler(AxisMode mt, bool linear) {
+    switch (mt) {
+        case AxisMode::Clamp: return plain_sampler<MS, AxisMode::Clamp>(linear);
+        case AxisMode::RepeatPot: return plain_sampler<MS, AxisMode::RepeatPot>(linear);
+        case AxisMode::RepeatNpot: break;
+    }
+    return plain_sampler<MS, AxisMode::RepeatNpot>(linear);
+}
+// The plain lookup's function for this texture and lookup, or null where it is not one.
+PlainSampler plain_sampler(const Texture& tex, const Lookup& l) {
+    const SamplerState& st = tex.sampler;
+    if (tex.dims != 2 || l.rho2 || l.lod || l.d_ds[0] || st.min != st.mag || st.mip != MipFilter::None ||
+        st.wrap_s == Wrap::MirroredRepeat || st.wrap_t == Wrap::MirroredRepeat) {
+        return nullptr;
+    }
+    auto mode = [](Wrap w, int size) {
+        return w == Wrap::ClampToEdge ? AxisMode::Clamp : std::has_single_bit(unsigned(size)) ? AxisMode::RepeatPot : AxisMode::RepeatNpot;
+    };
+    const AxisMode ms = mode(st.wrap_s, tex.width), mt = mode(st.wrap_t, tex.height);
+    const bool linear = st.min == Filter::Linear;
+    switch (ms) {
+        case AxisMode::Clamp: return plain_sampler<AxisMode::Clamp>(mt, linear);
+        case AxisMode::RepeatPot: return plain_sampler<AxisMode::RepeatPot>(mt, linear);
+        case AxisMode::RepeatNpot: break;
+    }
+    return plain_sampler<AxisMode::RepeatNpot>(mt, linear);
+}
 }  // namespace
 
 // Flattened: the helpers above become one straight body (called as functions, their vectors
 // would travel through memory).
 [[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
-    if (tex.dims == 3) {
+    if (const PlainSampler plain = plain_sampler(tex, l)) {
+        plain(tex, l);
+    } else if (tex.dims == 3) {
         sample_dims<3>(tex, l);
     } else {
         sample_dims<2>(tex, l);
