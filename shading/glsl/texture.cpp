@@ -804,10 +804,34 @@ template <AxisMode M>
     return aos_nearest(s, size, M == AxisMode::Clamp ? Wrap::ClampToEdge : Wrap::Repeat, M != AxisMode::RepeatNpot);
 }
 
+// gather(texels, index) where the lanes read texels close together, as a magnified texture's
+// neighbouring pixels do: when every lane's index lies within 8 texels from lane 0's (and those
+// 8 are inside the texture), one load of those 8 and a permute across lanes (vpermd) instead of
+// the gather, which costs about as much as 8 separate loads. The same texels either way.
+Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& index) {
+#if defined(__AVX2__)
+    const std::int32_t base = index[0];
+    const Ints d = index - base;
+    if (std::size_t(base) + L <= count && !any(d & ~(L - 1))) {
+        __m256i window, offsets;
+        std::memcpy(&offsets, &d, sizeof offsets);
+        window = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + base));
+        const __m256i r = _mm256_permutevar8x32_epi32(window, offsets);
+        Uints out;
+        std::memcpy(&out, &r, sizeof out);
+        return out;
+    }
+#else
+    (void)count;
+#endif
+    return gather(texels, index);
+}
+
 template <AxisMode MS, AxisMode MT, bool Linear>
 void sample_plain_2d(const Texture& tex, const Lookup& l) {
     const Ints width = splat(tex.width), height = splat(tex.height);
     const std::uint32_t* t = tex.texels.data();
+    const std::size_t count = tex.texels.size();
     for (int base = 0; base < l.lanes; base += L) {
         const int n = std::min(l.lanes - base, L);
         const Floats s = load_lanes(l.s, base, n), tc = load_lanes(l.t, base, n);
@@ -817,17 +841,17 @@ void sample_plain_2d(const Texture& tex, const Lookup& l) {
             const Ints active = kLaneIds < n;
             const Axis x = plain_linear_axis<MS>(s, width, active), y = plain_linear_axis<MT>(tc, height, active);
             const Ints row0 = y.i0 * width;
-            q = split(gather(t, row0 + x.i0));
+            q = split(gather_near(t, count, row0 + x.i0));
             const bool along_x = any(x.w8), along_y = any(y.w8);
-            if (along_x) q = lerp8(x.w8, q, split(gather(t, row0 + x.i1)));
+            if (along_x) q = lerp8(x.w8, q, split(gather_near(t, count, row0 + x.i1)));
             if (along_y) {
                 const Ints row1 = y.i1 * width;
-                Pairs q1 = split(gather(t, row1 + x.i0));
-                if (along_x) q1 = lerp8(x.w8, q1, split(gather(t, row1 + x.i1)));
+                Pairs q1 = split(gather_near(t, count, row1 + x.i0));
+                if (along_x) q1 = lerp8(x.w8, q1, split(gather_near(t, count, row1 + x.i1)));
                 q = lerp8(y.w8, q, q1);
             }
         } else {
-            q = split(gather(t, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
+            q = split(gather_near(t, count, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
         }
         for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
     }
