@@ -69,12 +69,16 @@ struct Wide {
         for_each_part<parts>([&](auto i) QS_ALWAYS_INLINE { r.part[i] = p; });
         return r;
     }
+    // A register at a time: one memcpy of the whole array became 16-byte moves through the stack
+    // and a stalled 32-byte reload (store forwarding fails across two stores).
     [[gnu::always_inline]] static Wide load(const T* p) {
         Wide r;
-        std::memcpy(&r, p, sizeof r);
+        for_each_part<parts>([&](auto i) QS_ALWAYS_INLINE { std::memcpy(&r.part[i], p + i * part_size, sizeof(Part)); });
         return r;
     }
-    [[gnu::always_inline]] void store(T* p) const { std::memcpy(p, this, sizeof *this); }
+    [[gnu::always_inline]] void store(T* p) const {
+        for_each_part<parts>([&](auto i) QS_ALWAYS_INLINE { std::memcpy(p + i * part_size, &part[i], sizeof(Part)); });
+    }
 
     [[gnu::always_inline]] T operator[](int i) const { return part[i / part_size][i % part_size]; }
 
