@@ -807,19 +807,34 @@ template <AxisMode M>
 // gather(texels, index) where the lanes read texels close together, as a magnified texture's
 // neighbouring pixels do: when every lane's index lies within 8 texels from lane 0's (and those
 // 8 are inside the texture), one load of those 8 and a permute across lanes (vpermd) instead of
-// the gather, which costs about as much as 8 separate loads. The same texels either way.
+// the gather, which costs about as much as 8 separate loads; else, when the register's two
+// pixel rows (lanes 0, 1, 4, 5 and 2, 3, 6, 7 of two quads, number/lanes.h) read two texel
+// rows, each within 8 texels of its first lane's, two loads, two permutes and a blend. The same
+// texels in every case.
 Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& index) {
 #if defined(__AVX2__)
     const std::int32_t base = index[0];
     const Ints d = index - base;
-    if (std::size_t(base) + L <= count && !any(d & ~(L - 1))) {
-        __m256i window, offsets;
-        std::memcpy(&offsets, &d, sizeof offsets);
-        window = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + base));
-        const __m256i r = _mm256_permutevar8x32_epi32(window, offsets);
+    const auto window = [&](std::int32_t at) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + at)); };
+    const auto result = [](const __m256i& r) {
         Uints out;
         std::memcpy(&out, &r, sizeof out);
         return out;
+    };
+    __m256i offsets;
+    if (std::size_t(base) + L <= count) {
+        if (!any(d & ~(L - 1))) {
+            std::memcpy(&offsets, &d, sizeof offsets);
+            return result(_mm256_permutevar8x32_epi32(window(base), offsets));
+        }
+        const std::int32_t upper_base = index[2];
+        static constexpr Ints kUpper{0, 0, -1, -1, 0, 0, -1, -1};
+        const Ints d2 = kUpper ? index - upper_base : d;
+        if (std::size_t(upper_base) + L <= count && !any(d2 & ~(L - 1))) {
+            std::memcpy(&offsets, &d2, sizeof offsets);
+            return result(_mm256_blend_epi32(_mm256_permutevar8x32_epi32(window(base), offsets),
+                                             _mm256_permutevar8x32_epi32(window(upper_base), offsets), 0xcc));
+        }
     }
 #else
     (void)count;
