@@ -278,6 +278,24 @@ void BM_texture2D(benchmark::State& state) {
     });
 }
 
+// Table 1.1's textured rows through the whole pipeline on one thread, as BM_raster, from the
+// bilinear texture above (the plane's image is 256x256 CLAMP_TO_EDGE LINEAR too).
+void BM_raster_textured(benchmark::State& state, const char* shader) {
+    const Program* program = find_program(shader);
+    static const std::vector<VertexIn> verts = {{{-1, -1, 0}, {0, 0}}, {{1, -1, 0}, {1, 0}}, {{1, 1, 0}, {1, 1}}, {{-1, 1, 0}, {0, 1}}};
+    static const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    DrawCall d{verts, idx, program, {}};
+    d.uniforms.teximage = &bench_texture(TextureCase::Bilinear);
+    RasterOptions options;
+    options.threads = 1;
+    Framebuffer fb;
+    for (auto _ : state) {
+        rasterize_into(fb, kSide, kSide, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), options);
+        benchmark::DoNotOptimize(fb.rgba.data());
+    }
+    state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 // Keeps each benchmark's rate so main can print the ratios of this very run.
 class RateReporter : public benchmark::ConsoleReporter {
 public:
@@ -319,6 +337,8 @@ BENCHMARK_TEMPLATE(BM_texture2D, Pixels<float, 16>, TextureCase::Bilinear)->Unit
 BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Trilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Mirrored)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster_textured, single_texture_1thread, "single_texture")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_raster_textured, halftone_1thread, "halftone")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);

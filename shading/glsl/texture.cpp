@@ -781,12 +781,138 @@ template <int Dims>
 [[gnu::always_inline]] inline void sample_dims(const Texture& tex, const Lookup& l) {
     for (int base = 0; base < l.lanes; base += L) sample_register<Dims>(tex, l, base);
 }
+
+// ---- the plain 2D lookup: one level, one filter, the 8-bit path ---------------------------
+// What single_texture and the halftone do: a 2D texture whose sampler needs no level of detail
+// (min == mag, no mipmaps), REPEAT or CLAMP_TO_EDGE, no derivatives. The same arithmetic as
+// sample_lanes takes there (choose_levels' first case, aos_level at level 0), with the axes'
+// modes fixed at compile time, and one more thing: a texel is gathered only when some lane's
+// weight reads it. llvmpipe's 8-bit lerp with weight 0 returns its first operand exactly
+// (a + ((0 (b - a) + 128) >> 8) = a), so where every lane's weight along x (or y) is 0 the
+// second column (row) changes nothing; lookups at texel centres, as the halftone's explicit
+// bilinear filter makes them, read one texel per lane instead of four.
+enum class AxisMode { Clamp, RepeatPot, RepeatNpot };
+
+template <AxisMode M>
+[[gnu::always_inline]] inline Axis plain_linear_axis(const Floats& s, const Ints& size, const Ints& active) {
+    Axis a = aos_linear(s, size, M == AxisMode::Clamp ? Wrap::ClampToEdge : Wrap::Repeat, M != AxisMode::RepeatNpot);
+    a.w8 = a.w8 & active;  // lanes past the lookup's end weigh nothing (their results are dropped)
+    return a;
+}
+template <AxisMode M>
+[[gnu::always_inline]] inline Ints plain_nearest_axis(const Floats& s, const Ints& size) {
+    return aos_nearest(s, size, M == AxisMode::Clamp ? Wrap::ClampToEdge : Wrap::Repeat, M != AxisMode::RepeatNpot);
+}
+
+// gather(texels, index) where the lanes read texels close together, as a magnified texture's
+// neighbouring pixels do: when every lane's index lies within 8 texels from lane 0's (and those
+// 8 are inside the texture), one load of those 8 and a permute across lanes (vpermd) instead of
+// the gather, which costs about as much as 8 separate loads; else, when the register's two
+// pixel rows (lanes 0, 1, 4, 5 and 2, 3, 6, 7 of two quads, number/lanes.h) read two texel
+// rows, each within 8 texels of its first lane's, two loads, two permutes and a blend. The same
+// texels in every case.
+Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& index) {
+#if defined(__AVX2__)
+    const std::int32_t base = index[0];
+    const Ints d = index - base;
+    const auto window = [&](std::int32_t at) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + at)); };
+    const auto result = [](const __m256i& r) {
+        Uints out;
+        std::memcpy(&out, &r, sizeof out);
+        return out;
+    };
+    __m256i offsets;
+    if (std::size_t(base) + L <= count) {
+        if (!any(d & ~(L - 1))) {
+            std::memcpy(&offsets, &d, sizeof offsets);
+            return result(_mm256_permutevar8x32_epi32(window(base), offsets));
+        }
+        const std::int32_t upper_base = index[2];
+        static constexpr Ints kUpper{0, 0, -1, -1, 0, 0, -1, -1};
+        const Ints d2 = kUpper ? index - upper_base : d;
+        if (std::size_t(upper_base) + L <= count && !any(d2 & ~(L - 1))) {
+            std::memcpy(&offsets, &d2, sizeof offsets);
+            return result(_mm256_blend_epi32(_mm256_permutevar8x32_epi32(window(base), offsets),
+                                             _mm256_permutevar8x32_epi32(window(upper_base), offsets), 0xcc));
+        }
+    }
+#else
+    (void)count;
+#endif
+    return gather(texels, index);
+}
+
+template <AxisMode MS, AxisMode MT, bool Linear>
+void sample_plain_2d(const Texture& tex, const Lookup& l) {
+    const Ints width = splat(tex.width), height = splat(tex.height);
+    const std::uint32_t* t = tex.texels.data();
+    const std::size_t count = tex.texels.size();
+    for (int base = 0; base < l.lanes; base += L) {
+        const int n = std::min(l.lanes - base, L);
+        const Floats s = load_lanes(l.s, base, n), tc = load_lanes(l.t, base, n);
+        Pairs q;
+        if constexpr (Linear) {
+            static constexpr Ints kLaneIds{0, 1, 2, 3, 4, 5, 6, 7};
+            const Ints active = kLaneIds < n;
+            const Axis x = plain_linear_axis<MS>(s, width, active), y = plain_linear_axis<MT>(tc, height, active);
+            const Ints row0 = y.i0 * width;
+            q = split(gather_near(t, count, row0 + x.i0));
+            const bool along_x = any(x.w8), along_y = any(y.w8);
+            if (along_x) q = lerp8(x.w8, q, split(gather_near(t, count, row0 + x.i1)));
+            if (along_y) {
+                const Ints row1 = y.i1 * width;
+                Pairs q1 = split(gather_near(t, count, row1 + x.i0));
+                if (along_x) q1 = lerp8(x.w8, q1, split(gather_near(t, count, row1 + x.i1)));
+                q = lerp8(y.w8, q, q1);
+            }
+        } else {
+            q = split(gather_near(t, count, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
+        }
+        for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
+    }
+}
+
+using PlainSampler = void (*)(const Texture&, const Lookup&);
+template <AxisMode MS, AxisMode MT>
+PlainSampler plain_sampler(bool linear) {
+    return linear ? &sample_plain_2d<MS, MT, true> : &sample_plain_2d<MS, MT, false>;
+}
+template <AxisMode MS>
+PlainSampler plain_sampler(AxisMode mt, bool linear) {
+    switch (mt) {
+        case AxisMode::Clamp: return plain_sampler<MS, AxisMode::Clamp>(linear);
+        case AxisMode::RepeatPot: return plain_sampler<MS, AxisMode::RepeatPot>(linear);
+        case AxisMode::RepeatNpot: break;
+    }
+    return plain_sampler<MS, AxisMode::RepeatNpot>(linear);
+}
+// The plain lookup's function for this texture and lookup, or null where it is not one.
+PlainSampler plain_sampler(const Texture& tex, const Lookup& l) {
+    const SamplerState& st = tex.sampler;
+    if (tex.dims != 2 || l.rho2 || l.lod || l.d_ds[0] || st.min != st.mag || st.mip != MipFilter::None ||
+        st.wrap_s == Wrap::MirroredRepeat || st.wrap_t == Wrap::MirroredRepeat) {
+        return nullptr;
+    }
+    auto mode = [](Wrap w, int size) {
+        return w == Wrap::ClampToEdge ? AxisMode::Clamp : std::has_single_bit(unsigned(size)) ? AxisMode::RepeatPot : AxisMode::RepeatNpot;
+    };
+    const AxisMode ms = mode(st.wrap_s, tex.width), mt = mode(st.wrap_t, tex.height);
+    const bool linear = st.min == Filter::Linear;
+    switch (ms) {
+        case AxisMode::Clamp: return plain_sampler<AxisMode::Clamp>(mt, linear);
+        case AxisMode::RepeatPot: return plain_sampler<AxisMode::RepeatPot>(mt, linear);
+        case AxisMode::RepeatNpot: break;
+    }
+    return plain_sampler<AxisMode::RepeatNpot>(mt, linear);
+}
 }  // namespace
 
 // Flattened: the helpers above become one straight body (called as functions, their vectors
 // would travel through memory).
 [[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
-    if (tex.dims == 3) {
+    if (const PlainSampler plain = plain_sampler(tex, l)) {
+        plain(tex, l);
+    } else if (tex.dims == 3) {
         sample_dims<3>(tex, l);
     } else {
         sample_dims<2>(tex, l);

@@ -327,6 +327,55 @@ TEST_CASE("texture lookups: the lanes equal a scalar oracle of llvmpipe's rules,
     CHECK(cases == 900);
 }
 
+// The plain 2D lookup (one level, one filter, 8-bit path) reads a column or row of texels only
+// where some lane of the register weighs it, and texels close together by one load and a
+// permute: lookups at texel centres, where every lane's weight is 0 along x, y or both (the
+// halftone's explicit bilinear filter), next to registers where one lane is off centre, and
+// ramps of a fraction of a texel a lane along one row or column (a magnified texture), up to
+// the texture's last texels, each against the oracle.
+TEST_CASE("texture lookups: texel centres and magnified ramps equal the oracle", "[textures]") {
+    std::mt19937 rng(20261124);
+    const int sizes[][2] = {{256, 256}, {8, 16}, {5, 3}, {13, 7}, {1, 1}, {64, 32}};
+    const Wrap wraps[2] = {Wrap::Repeat, Wrap::ClampToEdge};
+    int cases = 0;
+    for (const auto& size : sizes) {
+        const int w = size[0], h = size[1];
+        const auto texels = random_texels(rng, std::size_t(w) * std::size_t(h));
+        for (int variant = 0; variant < 8; ++variant) {
+            SamplerState st;
+            st.wrap_s = wraps[variant & 1], st.wrap_t = wraps[(variant >> 1) & 1];
+            st.min = st.mag = variant & 4 ? Filter::Nearest : Filter::Linear;
+            const sampler2D tex(w, h, texels.data(), st);
+            // Per axis: 0 texel centres (as the halftone computes them, (i + 0.5) * (1 / size)),
+            // 1 centres but one lane off centre, 2 anywhere, 3 a ramp from a random texel, 0.3
+            // texel a lane, 4 one coordinate for every lane.
+            for (int kind = 0; kind < 25; ++kind) {
+                for (int lanes : {kBatchLanes, 8, 5}) {
+                    Case k{&tex, {}, {}, {}, 0, lanes};
+                    const int size_of[2] = {w, h};
+                    for (std::size_t axis = 0; axis < 2; ++axis) {
+                        const int how = axis == 0 ? kind % 5 : kind / 5;
+                        const float one = 1.0f / float(size_of[axis]);
+                        std::uniform_int_distribution<int> texel(-2, size_of[axis] + 1);
+                        std::uniform_real_distribution<float> anywhere(-0.25f, 1.25f);
+                        const float start = float(texel(rng)) * one, same = anywhere(rng);
+                        for (std::size_t i = 0; i < kBatchLanes; ++i) {
+                            k.c[axis][i] = how == 2   ? anywhere(rng)
+                                           : how == 3 ? start + float(i) * 0.3f * one
+                                           : how == 4 ? same
+                                                      : (float(texel(rng)) + 0.5f) * one;
+                        }
+                        if (how == 1) k.c[axis][rng() % std::size_t(lanes)] += 0.3f * one;
+                    }
+                    check_case(k);
+                    ++cases;
+                }
+            }
+        }
+    }
+    CHECK(cases == 6 * 8 * 25 * 3);
+}
+
 TEST_CASE("texture lookups: a 3D texture of one slice with CLAMP_TO_EDGE on r samples as its 2D image", "[textures]") {
     std::mt19937 rng(7);
     const auto texels = random_texels(rng, 12 * 5);
