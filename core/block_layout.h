@@ -1,7 +1,7 @@
 #pragma once
 // The 4x4 pixel block: exactly one FragmentBatch of kBatchQuads quads, the unit both the
-// rasterizer and the ray caster shade (the rasterizer's stores of whole blocks are in
-// raster/block_rows.h). Lane offsets inside a block in framebuffer coordinates
+// rasterizer and the ray caster shade (both backends' stores of whole blocks are in
+// core/block_rows.h). Lane offsets inside a block in framebuffer coordinates
 // (y down): quad-major, quads (0,0) (2,0) (0,2) (2,2), and inside each quad the GL lane order of
 // number/lanes.h (lower row first: lanes 0, 1 on the quad's row + 1).
 

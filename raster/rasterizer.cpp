@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/block_layout.h"
-#include "raster/block_rows.h"
+#include "core/block_rows.h"
 #include "core/float_environment.h"
 #include "core/lane_batch.h"
 #include "core/lanes16.h"
@@ -466,7 +466,7 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
 }
 
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RenderStats* stats_out, RowBand band) {
+                    const RasterOptions& options, RenderStats* stats_out, RowBand band, RasterMemory* memory) {
     check_image_size(width, height);
     band = checked_band(band, height, options.pairing);
     const std::vector<PreparedDraw> prepared = prepare_draws(
@@ -477,7 +477,10 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     // Vertex stage, clipping and setup, per draw, triangles kept in submission order; with
     // denormals flushed, as Mesa's draw module runs them.
     const Viewport viewport(width, height);
-    std::vector<TriangleSetup> triangles;
+    RasterMemory own;
+    RasterMemory& kept = memory ? *memory : own;
+    std::vector<TriangleSetup>& triangles = kept.triangles;
+    triangles.clear();
     const FlushDenormals ftz;
     for (std::size_t di = 0; di < prepared.size(); ++di) {
         const DrawCall& call = *prepared[di].call;
@@ -514,7 +517,9 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
 
     // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order.
     const TileGrid grid(width, height, options.pairing, band);
-    std::vector<std::vector<std::uint32_t>> bins(std::size_t(grid.count()));
+    std::vector<std::vector<std::uint32_t>>& bins = kept.bins;
+    bins.resize(std::size_t(grid.count()));
+    for (std::vector<std::uint32_t>& bin : bins) bin.clear();
     for (std::uint32_t i = 0; i < triangles.size(); ++i) {
         const TriangleSetup& t = triangles[i];
         const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;

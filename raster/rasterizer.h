@@ -21,6 +21,7 @@
 #include "core/tile_grid.h"
 #include "raster/edge_function.h"
 #include "raster/plane_equation.h"
+#include "raster/triangle_setup.h"
 #include "shading/program.h"
 
 namespace qs {
@@ -44,14 +45,25 @@ struct RasterSettings {
 
 struct RasterOptions : ShadingSettings, RasterSettings {};
 
+// A frame's set-up triangles and tile bins, kept by a caller that renders many frames
+// (SceneRenderer) so that each reuses the memory of the last: allocated afresh, the Figure 1.1
+// frame's 1.7 MB of triangles were new pages, whose faults took a tenth of a one-thread frame,
+// all of it before the tiles run in parallel.
+struct RasterMemory {
+    std::vector<TriangleSetup> triangles;
+    std::vector<std::vector<std::uint32_t>> bins;  // per tile
+};
+
 // Renders draws into a width x height framebuffer cleared to `clear`.
 // Throws std::invalid_argument for absurd sizes or a draw without a program, UnsupportedRequest
 // (shade_choice.h) for options no shader instantiation honours.
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                       const RasterOptions& options, RenderStats* stats = nullptr);
 // The same into `fb`, reusing its memory (animation loops, benchmarks): every pixel is written;
-// with a band (image_bands, core/tile_grid.h), only its rows.
+// with a band (image_bands, core/tile_grid.h), only its rows; with `memory`, the working memory
+// of the last frame that was given it.
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RenderStats* stats = nullptr, RowBand band = {});
+                    const RasterOptions& options, RenderStats* stats = nullptr, RowBand band = {},
+                    RasterMemory* memory = nullptr);
 
 }  // namespace qs

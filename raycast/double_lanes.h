@@ -21,7 +21,6 @@ inline Floats to_float(const Doubles& v) { return __builtin_convertvector(v, Flo
 struct Doubles3 {
     Doubles x, y, z;
 
-    void set(int lane, const glm::dvec3& v) { x[lane] = v.x, y[lane] = v.y, z[lane] = v.z; }
     glm::dvec3 at(int lane) const { return {x[lane], y[lane], z[lane]}; }
 };
 

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/block_layout.h"
+#include "core/block_rows.h"
 #include "core/lane_batch.h"
 #include "core/parallel.h"
 #include "core/prepared_draw.h"
@@ -23,6 +24,7 @@
 #include "core/vertex_stage.h"
 #include "raycast/embree_scene.h"
 #include "raycast/eye.h"
+#include "raycast/primitive_groups.h"
 
 namespace qs {
 
@@ -101,6 +103,16 @@ public:
     std::uint64_t written() const { return written_; }
 
 private:
+    // Pixel centres in GL window coordinates.
+    struct WindowPoints {
+        lanes16::Doubles x, y;
+    };
+    // A block's pixel centres and the rays through them.
+    struct BlockRays {
+        WindowPoints w;
+        Eye::Rays r;
+    };
+
     // Casts, shades and writes the 4x4 block whose top-left pixel is (bx, by) in framebuffer
     // coordinates; pixels outside the framebuffer only ever serve as helpers. Only the lanes in
     // `lanes` are cast, from tnear[i] on when given.
@@ -113,9 +125,10 @@ private:
             if (tnear) rays.tnear[i] = tnear[i];
         }
         // Every lane's ray; Embree reads the active ones.
-        const WindowPoints w = centres(bx + lanes16::load(kLaneDx), by + lanes16::load(kLaneDy));
-        const Eye::Rays r = eye_.rays(w.x, w.y);
-        lanes16::store(rays.origin, r.origin), lanes16::store(rays.direction, r.direction);
+        BlockRays cast;
+        cast.w = centres(bx + lanes16::load(kLaneDx), by + lanes16::load(kLaneDy));
+        cast.r = eye_.rays(cast.w.x, cast.w.y);
+        lanes16::store(rays.origin, cast.r.origin), lanes16::store(rays.direction, cast.r.direction);
         RayHits hits;
         bvh_.intersect(rays, hits);
         for (int i = 0; i < kBatchLanes; ++i) {
@@ -123,6 +136,10 @@ private:
             float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
             p[0] = clear.r, p[1] = clear.g, p[2] = clear.b, p[3] = clear.a;
             if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
+        }
+        if (whole_block(rays.active, hits)) {
+            shade_whole_block(bx, by, hits, cast);
+            return;
         }
         for (int q = 0; q < kBatchQuads; ++q) {
             // Each primitive hit in the quad runs it once; done[] marks lanes already served.
@@ -142,6 +159,49 @@ private:
                 }
                 quads_ += d.quads;
             }
+        }
+    }
+
+    // Whether every lane of the block was cast and hit one draw, so that the block is shaded as
+    // it is, as one batch: with quads, each quad must lie on one triangle (else it runs once per
+    // triangle, each time with its other lanes as helpers on that triangle's plane).
+    bool whole_block(std::uint32_t active, const RayHits& hits) const {
+        const std::uint32_t g = hits.geometry[0];
+        if (active != kAllLanes || g == kNoHit) return false;
+        for (int i = 1; i < kBatchLanes; ++i) {
+            if (hits.geometry[i] != g) return false;
+        }
+        if (!draws_[g].quads) return true;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            if (hits.primitive[i] != hits.primitive[i & ~3]) return false;
+        }
+        return true;
+    }
+
+    // Shades the block at (bx, by), whose every lane hit draw hits.geometry[0], with the rays
+    // it was cast with, and writes it.
+    void shade_whole_block(int bx, int by, const RayHits& hits, const BlockRays& cast) {
+        const std::uint32_t g = hits.geometry[0];
+        HitBatch& b = whole_;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            b.lanes.x[i] = bx + kLaneDx[i], b.lanes.y[i] = by + kLaneDy[i];
+            b.lane[i] = std::uint8_t(i), b.primitive[i] = hits.primitive[i], b.t[i] = hits.t[i];
+        }
+        b.lanes.count = kBatchLanes, b.lanes.write = kAllLanes;
+        if (draws_[g].quads) quads_ += kBatchQuads;
+        shade(g, b, &cast);
+        if (out_.discarded == 0) {
+            // The block lies inside the image (every lane was cast): four rows at once.
+            float* const row = fb_.pixel(bx, by);
+            const std::size_t pitch = 4 * std::size_t(fb_.width);
+            block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
+                          {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
+            if (draws_[g].mode.check_undefined) {
+                for (int i = 0; i < kBatchLanes; ++i) *undefined_at(b.lanes.x[i], b.lanes.y[i]) = out_.undefined[i];
+            }
+            written_ += kBatchLanes;
+        } else {
+            write(g, b);
         }
     }
 
@@ -183,9 +243,6 @@ private:
     }
 
     // The centres of pixels (x, y) in framebuffer coordinates (y down), in GL window coordinates.
-    struct WindowPoints {
-        lanes16::Doubles x, y;
-    };
     WindowPoints centres(const lanes16::Ints& x, const lanes16::Ints& y) const {
         return {lanes16::to_double(x) + 0.5, fb_.height - (lanes16::to_double(y) + 0.5)};
     }
@@ -194,24 +251,34 @@ private:
     // attributes there are the vertices' weighted by P's barycentric coordinates, which is
     // perspective-correct interpolation (a GPU's a/w over 1/w is the same point seen from the
     // screen). For a helper lane P lies outside the triangle and the weights extrapolate.
-    void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, bool differentials) {
+    // `cast`: the batch is a whole block, in lane order, and these are its rays.
+    void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, bool differentials, const BlockRays* cast) {
         using namespace lanes16;
         const LaneBatch& at = b.lanes;
-        Doubles nn;
-        Doubles3 p0, e1, e2, n;
+        std::uint32_t primitive[kBatchLanes];
+        for (int i = 0; i < kBatchLanes; ++i) primitive[i] = b.primitive[i < at.count ? i : 0];  // unused lanes repeat lane 0
+        const PrimitiveGroups groups(primitive);
+        auto plane = [&](const glm::dvec3 TrianglePlane::*v) {
+            auto component = [&](int c) {
+                return groups.spread_doubles([&](int g) { return (m.planes[groups.primitive[g]].*v)[c]; });
+            };
+            return Doubles3{component(0), component(1), component(2)};
+        };
+        const Doubles3 p0 = plane(&TrianglePlane::p0), e1 = plane(&TrianglePlane::e1), e2 = plane(&TrianglePlane::e2),
+                       n = plane(&TrianglePlane::n);
+        const Doubles nn = groups.spread_doubles([&](int g) { return m.planes[groups.primitive[g]].nn; });
         // The vertices' attributes, per varying and lane.
         alignas(64) float a[3][kMaxVaryings][kBatchLanes];
-        for (int i = 0; i < kBatchLanes; ++i) {
-            const int k = i < at.count ? i : 0;  // unused lanes repeat lane 0 and write nothing
-            const TrianglePlane& plane = m.planes[b.primitive[k]];
-            p0.set(i, plane.p0), e1.set(i, plane.e1), e2.set(i, plane.e2), n.set(i, plane.n), nn[i] = plane.nn;
-            const Triangle& tri = m.triangles[b.primitive[k]];
-            for (int c = 0; c < 3; ++c) {
-                for (int v = 0; v < d.varyings; ++v) a[c][v][i] = m.out[tri[c]].varyings[std::size_t(v)];
+        for (int c = 0; c < 3; ++c) {
+            for (int v = 0; v < d.varyings; ++v) {
+                store(a[c][v], groups.spread_floats([&](int g) {
+                    return m.out[m.triangles[groups.primitive[g]][std::size_t(c)]].varyings[std::size_t(v)];
+                }));
             }
         }
-        const WindowPoints w = centres(load(at.x), load(at.y));
-        const Eye::Rays r = eye_.rays(w.x, w.y);
+        Eye::Rays own;
+        const WindowPoints w = cast ? cast->w : centres(load(at.x), load(at.y));
+        const Eye::Rays& r = cast ? cast->r : (own = eye_.rays(w.x, w.y));
         const Doubles dn = dot(r.direction, n);
         const Doubles t = dot(p0 - r.origin, n) / dn;
         const Doubles3 rel = r.origin + t * r.direction - p0;
@@ -253,14 +320,26 @@ private:
 
     void flush(std::size_t g) {
         HitBatch& b = pending_[g];
-        LaneBatch& at = b.lanes;
-        if (at.count == 0) return;
-        at.pad();
+        if (b.lanes.count == 0) return;
+        b.lanes.pad();
+        shade(g, b, nullptr);
+        write(g, b);
+        b.lanes.clear();
+    }
+
+    // Shades batch b of draw g into out_.
+    void shade(std::size_t g, const HitBatch& b, const BlockRays* cast) {
         const PreparedDraw& d = draws_[g];
-        const bool differentials = d.mode.derivatives == Derivatives::Analytic;
-        set_up(d, meshes_[g], b, differentials);
+        set_up(d, meshes_[g], b, d.mode.derivatives == Derivatives::Analytic, cast);
         d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
-        lanes_ += std::uint64_t(at.count);
+        lanes_ += std::uint64_t(b.lanes.count);
+    }
+
+    // Writes the lanes of the shaded batch b of draw g, lane by lane; the ones that discarded
+    // wait to be cast again.
+    void write(std::size_t g, const HitBatch& b) {
+        const PreparedDraw& d = draws_[g];
+        const LaneBatch& at = b.lanes;
         for (int i = 0; i < at.count; ++i) {
             if (!(at.write >> i & 1)) continue;
             if (out_.discarded >> i & 1) {
@@ -272,7 +351,6 @@ private:
             if (d.mode.check_undefined) *undefined_at(at.x[i], at.y[i]) = out_.undefined[i];
             ++written_;
         }
-        at.clear();
     }
 
     std::uint8_t* undefined_at(int x, int y) { return &fb_.undefined[fb_.index(x, y)]; }
@@ -283,6 +361,7 @@ private:
     const std::vector<PreparedDraw>& draws_;
     const std::vector<Mesh>& meshes_;  // per draw
     std::vector<HitBatch> pending_;    // per draw
+    HitBatch whole_;                   // a whole block shaded at once
     // Fragments that discarded: their block, lane and where their ray met the surface.
     struct Discarded {
         int bx, by, lane;

@@ -196,7 +196,8 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ren
         return;
     }
 #endif
-    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster_options(), stats, band);
+    rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster_options(), stats, band,
+                   &raster_memory_);
 }
 
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats) {

@@ -95,6 +95,7 @@ private:
     std::vector<std::unique_ptr<Program>> atlas_programs_;  // per draw with FrameRequest::atlas
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user
     std::vector<std::string> notes_;
+    RasterMemory raster_memory_;  // the last frame's triangles and bins, reused
     struct Caster;
     std::unique_ptr<Caster> caster_;
 };

@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "raster/block_rows.h"
+#include "core/block_rows.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The rasterizer's whole-block work: which quads of a block run, and a block's colour stored as
+// Whole-block work: which quads of a block run, and a block's colour stored as
 // four framebuffer rows (the lane order is core/block_layout.h's).
 
 #include <cstdint>
