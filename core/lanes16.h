@@ -5,11 +5,12 @@
 // compiler needs no run-time checks that the arrays overlap, and nothing falls back to scalar
 // code, whose stores a vector load cannot take straight from the store buffer.
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 
-#if defined(__AVX__)
+#if defined(__AVX__) || defined(__BMI2__)
 #include <immintrin.h>
 #endif
 
@@ -84,7 +85,9 @@ typedef std::int64_t Longs __attribute__((vector_size(kBatchLanes * sizeof(std::
 // these vectors wider than a register into one scalar comparison per lane.
 // a < b
 inline std::uint32_t less(const Floats& a, const Floats& b) {
-#if defined(__AVX__)
+#if defined(__AVX512F__)
+    return _mm512_cmp_ps_mask(__m512(a), __m512(b), _CMP_LT_OQ);
+#elif defined(__AVX__)
     __m256 x[2], y[2];
     std::memcpy(x, &a, sizeof x), std::memcpy(y, &b, sizeof y);
     std::uint32_t r = 0;
@@ -98,7 +101,13 @@ inline std::uint32_t less(const Floats& a, const Floats& b) {
 }
 // a + b > 0, a the same for every lane
 inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
-#if defined(__AVX2__)
+#if defined(__AVX512F__)
+    __m512i y[2];
+    std::memcpy(y, &b, sizeof y);
+    const __m512i x = _mm512_set1_epi64(a);
+    return std::uint32_t(_mm512_cmpgt_epi64_mask(_mm512_add_epi64(x, y[0]), _mm512_setzero_si512())) |
+           std::uint32_t(_mm512_cmpgt_epi64_mask(_mm512_add_epi64(x, y[1]), _mm512_setzero_si512())) << 8;
+#elif defined(__AVX2__)
     __m256i y[4];
     std::memcpy(y, &b, sizeof y);
     const __m256i x = _mm256_set1_epi64x(a);
@@ -111,6 +120,32 @@ inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
 #else
     std::uint32_t r = 0;
     for (int i = 0; i < kBatchLanes; ++i) r |= std::uint32_t(a + b[i] > 0) << i;
+    return r;
+#endif
+}
+
+// The lanes of v whose bit in `mask` is set, in lane order, into out[0 .. popcount(mask)); out
+// has room for all sixteen. Returns their number.
+inline int compress(std::uint32_t mask, const Ints& v, int* out) {
+#if defined(__AVX512F__)
+    // In a register, then one store: the compressing store to memory is slow on AMD's AVX-512.
+    _mm512_storeu_si512(out, _mm512_maskz_compress_epi32(__mmask16(mask), __m512i(v)));
+#else
+    int n = 0;
+    for (int i = 0; i < kBatchLanes; ++i) {
+        if (mask >> i & 1) out[n++] = v[i];
+    }
+#endif
+    return std::popcount(mask);
+}
+
+// The bits of `bits` at the set bits of `mask`, packed from bit 0 up (BMI2's pext).
+inline std::uint32_t compress_bits(std::uint32_t bits, std::uint32_t mask) {
+#if defined(__BMI2__)
+    return _pext_u32(bits, mask);
+#else
+    std::uint32_t r = 0;
+    for (int n = 0; mask != 0; mask &= mask - 1, ++n) r |= (bits >> std::countr_zero(mask) & 1u) << n;
     return r;
 #endif
 }

@@ -184,17 +184,11 @@ private:
                 shade_block(bx, by, mask);
                 return;
             }
-            for (int q = 0; q < kBatchQuads; ++q) {
-                if (!(running >> (4 * q) & 1)) continue;
-                for (int l = 4 * q; l < 4 * q + 4; ++l) append(bx + kLaneDx[l], by + kLaneDy[l], mask >> l & 1);
-            }
+            append_lanes(bx, by, running, mask);
         } else if (mask == kAllLanes) {
             shade_block(bx, by, mask);
         } else {
-            // Per pixel: gather the covered pixels of partial blocks, no helpers.
-            for (int i = 0; i < kBatchLanes; ++i) {
-                if (mask >> i & 1) append(bx + kLaneDx[i], by + kLaneDy[i], true);
-            }
+            append_lanes(bx, by, mask, mask);  // per pixel: the covered pixels of partial blocks, no helpers
         }
     }
 
@@ -298,12 +292,25 @@ private:
         }
     }
 
-    // Adds one lane to the gathered batch; quads are appended four lanes at a time, so they stay
-    // whole and aligned within it.
-    void append(int x, int y, bool write) {
-        if (pending_.add(x, y, write)) {
-            flush(pending_);
-            pending_.clear();
+    // Adds `lanes` of the block at (bx, by) to the gathered batch, in lane order, those in `write`
+    // writing, in as few copies as the batch's room allows. Whole quads stay whole and aligned
+    // in the batch: it holds a multiple of four lanes when quads are appended.
+    void append_lanes(int bx, int by, std::uint32_t lanes, std::uint32_t write) {
+        alignas(64) int x[kBatchLanes], y[kBatchLanes];
+        const int n = lanes16::compress(lanes, bx + lanes16::load(kLaneDx), x);
+        lanes16::compress(lanes, by + lanes16::load(kLaneDy), y);
+        std::uint32_t writes = lanes16::compress_bits(write, lanes);
+        for (int i = 0; i < n;) {
+            const int take = std::min(n - i, kBatchLanes - pending_.count);
+            std::memcpy(pending_.x + pending_.count, x + i, sizeof(int) * std::size_t(take));
+            std::memcpy(pending_.y + pending_.count, y + i, sizeof(int) * std::size_t(take));
+            pending_.write |= (writes & std::uint32_t((std::uint64_t(1) << take) - 1)) << pending_.count;
+            writes >>= take;
+            pending_.count += take, i += take;
+            if (pending_.count == kBatchLanes) {
+                flush(pending_);
+                pending_.clear();
+            }
         }
     }
 

@@ -112,6 +112,13 @@ private:
         WindowPoints w;
         Eye::Rays r;
     };
+    // A block whose every lane hit draw `draw`, as one batch in lane order, with its rays.
+    struct WholeBlock {
+        std::uint32_t draw;
+        int bx, by;
+        HitBatch batch;
+        BlockRays cast;
+    };
 
     // Casts, shades and writes the 4x4 block whose top-left pixel is (bx, by) in framebuffer
     // coordinates; pixels outside the framebuffer only ever serve as helpers. Only the lanes in
@@ -124,8 +131,10 @@ private:
             rays.active |= 1u << i;
             if (tnear) rays.tnear[i] = tnear[i];
         }
-        // Every lane's ray; Embree reads the active ones.
-        BlockRays cast;
+        // Every lane's ray; Embree reads the active ones. They are computed where the block would
+        // wait, should it be whole.
+        WholeBlock& whole = whole_[waiting_ ? 1 - first_ : first_];
+        BlockRays& cast = whole.cast;
         cast.w = centres(bx + lanes16::load(kLaneDx), by + lanes16::load(kLaneDy));
         cast.r = eye_.rays(cast.w.x, cast.w.y);
         lanes16::store(rays.origin, cast.r.origin), lanes16::store(rays.direction, cast.r.direction);
@@ -138,7 +147,15 @@ private:
             if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
         }
         if (whole_block(rays.active, hits)) {
-            shade_whole_block(bx, by, hits, cast);
+            whole.draw = hits.geometry[0], whole.bx = bx, whole.by = by;
+            HitBatch& b = whole.batch;
+            for (int i = 0; i < kBatchLanes; ++i) {
+                b.lanes.x[i] = bx + kLaneDx[i], b.lanes.y[i] = by + kLaneDy[i];
+                b.lane[i] = std::uint8_t(i), b.primitive[i] = hits.primitive[i], b.t[i] = hits.t[i];
+            }
+            b.lanes.count = kBatchLanes, b.lanes.write = kAllLanes;
+            if (draws_[whole.draw].quads) quads_ += kBatchQuads;
+            whole_block_cast();
             return;
         }
         for (int q = 0; q < kBatchQuads; ++q) {
@@ -178,35 +195,55 @@ private:
         return true;
     }
 
-    // Shades the block at (bx, by), whose every lane hit draw hits.geometry[0], with the rays
-    // it was cast with, and writes it.
-    void shade_whole_block(int bx, int by, const RayHits& hits, const BlockRays& cast) {
-        const std::uint32_t g = hits.geometry[0];
-        HitBatch& b = whole_;
-        for (int i = 0; i < kBatchLanes; ++i) {
-            b.lanes.x[i] = bx + kLaneDx[i], b.lanes.y[i] = by + kLaneDy[i];
-            b.lane[i] = std::uint8_t(i), b.primitive[i] = hits.primitive[i], b.t[i] = hits.t[i];
+    // A whole block was cast into the free one of whole_. Whole blocks are shaded two at a time
+    // (Program::shade_pair), as the rasterizer shades them: the first waits for the next of
+    // the same draw, or for finish().
+    void whole_block_cast() {
+        if (!waiting_) {
+            waiting_ = true;
+            return;
         }
-        b.lanes.count = kBatchLanes, b.lanes.write = kAllLanes;
-        if (draws_[g].quads) quads_ += kBatchQuads;
-        shade(g, b, &cast);
-        if (out_.discarded == 0) {
-            // The block lies inside the image (every lane was cast): four rows at once.
-            float* const row = fb_.pixel(bx, by);
-            const std::size_t pitch = 4 * std::size_t(fb_.width);
-            block_to_rows({out_.rgba[0], out_.rgba[1], out_.rgba[2], out_.rgba[3]},
-                          {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
-            if (draws_[g].mode.check_undefined) {
-                for (int i = 0; i < kBatchLanes; ++i) *undefined_at(b.lanes.x[i], b.lanes.y[i]) = out_.undefined[i];
-            }
-            written_ += kBatchLanes;
-        } else {
-            write(g, b);
+        const WholeBlock &first = whole_[first_], &second = whole_[1 - first_];
+        if (first.draw != second.draw) {
+            // The first is shaded alone; the second waits in its place.
+            shade_whole(first_);
+            first_ = 1 - first_;
+            return;
         }
+        const PreparedDraw& d = draws_[first.draw];
+        set_up(d, meshes_[first.draw], first.batch, &first.cast, in_[0]);
+        set_up(d, meshes_[second.draw], second.batch, &second.cast, in_[1]);
+        d.call->program->shade_pair(d.mode, in_[0], in_[1], d.call->uniforms, out_[0], out_[1]);
+        lanes_ += 2 * kBatchLanes;
+        write_whole(first, out_[0]);
+        write_whole(second, out_[1]);
+        waiting_ = false;
     }
 
+    // Shades and writes whole_[i] alone.
+    void shade_whole(int i) {
+        const WholeBlock& w = whole_[i];
+        shade(w.draw, w.batch, &w.cast);
+        write_whole(w, out_[0]);
+    }
+
+    void write_whole(const WholeBlock& w, const ColorBatch& out) {
+        if (out.discarded != 0) return write(w.draw, w.batch, out);
+        // The block lies inside the image (every lane was cast): four rows at once.
+        float* const row = fb_.pixel(w.bx, w.by);
+        const std::size_t pitch = 4 * std::size_t(fb_.width);
+        block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]},
+                      {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
+        if (draws_[w.draw].mode.check_undefined) {
+            for (int i = 0; i < kBatchLanes; ++i) *undefined_at(w.batch.lanes.x[i], w.batch.lanes.y[i]) = out.undefined[i];
+        }
+        written_ += kBatchLanes;
+    }
+
+    // Shades what waits: the gathered batches and a whole block.
     void finish() {
         for (std::size_t g = 0; g < pending_.size(); ++g) flush(g);
+        if (waiting_) shade_whole(first_), waiting_ = false;
     }
 
     // GLSL discard leaves the pixel to whatever lies behind: the rays of discarded fragments
@@ -247,16 +284,17 @@ private:
         return {lanes16::to_double(x) + 0.5, fb_.height - (lanes16::to_double(y) + 0.5)};
     }
 
-    // The fragments of batch `b`, into in_: each lane's ray meets its triangle's plane at P; the
+    // The fragments of batch `b`, into `in`: each lane's ray meets its triangle's plane at P; the
     // attributes there are the vertices' weighted by P's barycentric coordinates, which is
     // perspective-correct interpolation (a GPU's a/w over 1/w is the same point seen from the
     // screen). For a helper lane P lies outside the triangle and the weights extrapolate.
     // `cast`: the batch is a whole block, in lane order, and these are its rays.
-    void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, bool differentials, const BlockRays* cast) {
+    void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, const BlockRays* cast, FragmentBatch& in) {
         using namespace lanes16;
         const LaneBatch& at = b.lanes;
         std::uint32_t primitive[kBatchLanes];
-        for (int i = 0; i < kBatchLanes; ++i) primitive[i] = b.primitive[i < at.count ? i : 0];  // unused lanes repeat lane 0
+        // Unused lanes repeat lane 0 (and write nothing).
+        for (int i = 0; i < kBatchLanes; ++i) primitive[i] = i < at.count ? b.primitive[i] : b.primitive[0];
         const PrimitiveGroups groups(primitive);
         auto plane = [&](const glm::dvec3 TrianglePlane::*v) {
             auto component = [&](int c) {
@@ -286,16 +324,16 @@ private:
         const Doubles b1 = dot(cross(rel, e2), n) / nn, b2 = dot(cross(e1, rel), n) / nn;
         const Doubles b0 = 1.0 - b1 - b2;
         const Doubles4 clip = transform(eye_.clip_from_world, p0 + rel, 1.0);
-        store(in_.frag_coord[0], to_float(w.x));
-        store(in_.frag_coord[1], to_float(w.y));
-        store(in_.frag_coord[2], to_float(0.5 * clip.z / clip.w + 0.5));
-        store(in_.frag_coord[3], to_float(1.0 / clip.w));
+        store(in.frag_coord[0], to_float(w.x));
+        store(in.frag_coord[1], to_float(w.y));
+        store(in.frag_coord[2], to_float(0.5 * clip.z / clip.w + 0.5));
+        store(in.frag_coord[3], to_float(1.0 / clip.w));
         for (int v = 0; v < d.varyings; ++v) {
             const Floats a0 = load(a[0][v]), a1 = load(a[1][v]), a2 = load(a[2][v]);
             const bool flat = d.flat >> v & 1;  // the provoking vertex's: the last
-            store(in_.varying[v], flat ? a2 : to_float(b0 * to_double(a0) + b1 * to_double(a1) + b2 * to_double(a2)));
+            store(in.varying[v], flat ? a2 : to_float(b0 * to_double(a0) + b1 * to_double(a1) + b2 * to_double(a2)));
         }
-        if (!differentials) return;
+        if (d.mode.derivatives != Derivatives::Analytic) return;
         // Igehy's transfer: the hit moves along the surface as the ray moves with the pixel,
         // dP = dO + t dD + dt D with dt = -((dO + t dD) . n) / (D . n); the weights' derivatives
         // follow from dP as the weights from P, and everything else by the chain rule.
@@ -314,8 +352,8 @@ private:
                 store(dvarying[v], flat ? Floats{} : to_float(db1 * to_double(a1 - a0) + db2 * to_double(a2 - a0)));
             }
         };
-        carry(rd.origin_dx, rd.direction_dx, in_.varying_dx, in_.frag_coord_dx);
-        carry(rd.origin_dy, rd.direction_dy, in_.varying_dy, in_.frag_coord_dy);
+        carry(rd.origin_dx, rd.direction_dx, in.varying_dx, in.frag_coord_dx);
+        carry(rd.origin_dy, rd.direction_dy, in.varying_dy, in.frag_coord_dy);
     }
 
     void flush(std::size_t g) {
@@ -323,32 +361,32 @@ private:
         if (b.lanes.count == 0) return;
         b.lanes.pad();
         shade(g, b, nullptr);
-        write(g, b);
+        write(g, b, out_[0]);
         b.lanes.clear();
     }
 
-    // Shades batch b of draw g into out_.
+    // Shades batch b of draw g into out_[0].
     void shade(std::size_t g, const HitBatch& b, const BlockRays* cast) {
         const PreparedDraw& d = draws_[g];
-        set_up(d, meshes_[g], b, d.mode.derivatives == Derivatives::Analytic, cast);
-        d.call->program->shade(d.mode, in_, d.call->uniforms, out_);
+        set_up(d, meshes_[g], b, cast, in_[0]);
+        d.call->program->shade(d.mode, in_[0], d.call->uniforms, out_[0]);
         lanes_ += std::uint64_t(b.lanes.count);
     }
 
-    // Writes the lanes of the shaded batch b of draw g, lane by lane; the ones that discarded
-    // wait to be cast again.
-    void write(std::size_t g, const HitBatch& b) {
+    // Writes the lanes of batch b of draw g, shaded into `out`, lane by lane; the ones that
+    // discarded wait to be cast again.
+    void write(std::size_t g, const HitBatch& b, const ColorBatch& out) {
         const PreparedDraw& d = draws_[g];
         const LaneBatch& at = b.lanes;
         for (int i = 0; i < at.count; ++i) {
             if (!(at.write >> i & 1)) continue;
-            if (out_.discarded >> i & 1) {
+            if (out.discarded >> i & 1) {
                 discarded_.push_back({at.x[i] - kLaneDx[b.lane[i]], at.y[i] - kLaneDy[b.lane[i]], b.lane[i], b.t[i]});
                 continue;
             }
             float* p = fb_.pixel(at.x[i], at.y[i]);
-            for (int c = 0; c < 4; ++c) p[c] = out_.rgba[c][i];
-            if (d.mode.check_undefined) *undefined_at(at.x[i], at.y[i]) = out_.undefined[i];
+            for (int c = 0; c < 4; ++c) p[c] = out.rgba[c][i];
+            if (d.mode.check_undefined) *undefined_at(at.x[i], at.y[i]) = out.undefined[i];
             ++written_;
         }
     }
@@ -361,7 +399,9 @@ private:
     const std::vector<PreparedDraw>& draws_;
     const std::vector<Mesh>& meshes_;  // per draw
     std::vector<HitBatch> pending_;    // per draw
-    HitBatch whole_;                   // a whole block shaded at once
+    WholeBlock whole_[2];              // whole blocks: whole_[first_] waits when waiting_
+    int first_ = 0;
+    bool waiting_ = false;
     // Fragments that discarded: their block, lane and where their ray met the surface.
     struct Discarded {
         int bx, by, lane;
@@ -369,8 +409,9 @@ private:
     };
     std::vector<Discarded> discarded_;
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
-    FragmentBatch in_;
-    ColorBatch out_;
+    // Two batches: gathered batches and lone whole blocks use the first, pairs of whole blocks both.
+    FragmentBatch in_[2];
+    ColorBatch out_[2];
 };
 
 // Runs every draw's vertex stage into meshes[i].out.
