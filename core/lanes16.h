@@ -99,6 +99,24 @@ inline std::uint32_t less(const Floats& a, const Floats& b) {
     return r;
 #endif
 }
+// a == b
+inline std::uint32_t equal(const Ints& a, const Ints& b) {
+#if defined(__AVX512F__)
+    return _mm512_cmpeq_epi32_mask(__m512i(a), __m512i(b));
+#elif defined(__AVX2__)
+    __m256i x[2], y[2];
+    std::memcpy(x, &a, sizeof x), std::memcpy(y, &b, sizeof y);
+    std::uint32_t r = 0;
+    for (int h = 0; h < 2; ++h) {
+        r |= std::uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(x[h], y[h])))) << (8 * h);
+    }
+    return r;
+#else
+    std::uint32_t r = 0;
+    for (int i = 0; i < kBatchLanes; ++i) r |= std::uint32_t(a[i] == b[i]) << i;
+    return r;
+#endif
+}
 // a + b > 0, a the same for every lane
 inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
 #if defined(__AVX512F__)

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -125,12 +126,8 @@ private:
     // `lanes` are cast, from tnear[i] on when given.
     void block(int bx, int by, glm::vec4 clear, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
-        for (int i = 0; i < kBatchLanes; ++i) {
-            const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            if (!(lanes >> i & 1) || x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) continue;
-            rays.active |= 1u << i;
-            if (tnear) rays.tnear[i] = tnear[i];
-        }
+        rays.active = lanes & inside_image(bx, by);
+        if (tnear) std::copy_n(tnear, kBatchLanes, rays.tnear);
         // Every lane's ray; Embree reads the active ones. They are computed where the block would
         // wait, should it be whole.
         WholeBlock& whole = whole_[waiting_ ? 1 - first_ : first_];
@@ -140,13 +137,15 @@ private:
         lanes16::store(rays.origin, cast.r.origin), lanes16::store(rays.direction, cast.r.direction);
         RayHits hits;
         bvh_.intersect(rays, hits);
-        for (int i = 0; i < kBatchLanes; ++i) {
-            if (!(rays.active >> i & 1) || hits.geometry[i] != kNoHit) continue;
+        const lanes16::Ints geometry = std::bit_cast<lanes16::Ints>(hits.geometry);
+        const std::uint32_t missed = rays.active & lanes16::equal(geometry, lanes16::Ints{} + int(kNoHit));
+        for (std::uint32_t m = missed; m != 0; m &= m - 1) {
+            const int i = std::countr_zero(m);
             float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
             p[0] = clear.r, p[1] = clear.g, p[2] = clear.b, p[3] = clear.a;
             if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
         }
-        if (whole_block(rays.active, hits)) {
+        if (rays.active == kAllLanes && whole_block(geometry, hits)) {
             whole.draw = hits.geometry[0], whole.bx = bx, whole.by = by;
             HitBatch& b = whole.batch;
             for (int i = 0; i < kBatchLanes; ++i) {
@@ -179,20 +178,29 @@ private:
         }
     }
 
-    // Whether every lane of the block was cast and hit one draw, so that the block is shaded as
-    // it is, as one batch: with quads, each quad must lie on one triangle (else it runs once per
-    // triangle, each time with its other lanes as helpers on that triangle's plane).
-    bool whole_block(std::uint32_t active, const RayHits& hits) const {
-        const std::uint32_t g = hits.geometry[0];
-        if (active != kAllLanes || g == kNoHit) return false;
-        for (int i = 1; i < kBatchLanes; ++i) {
-            if (hits.geometry[i] != g) return false;
-        }
-        if (!draws_[g].quads) return true;
+    // The lanes of the block at (bx, by) whose pixels lie in the image.
+    std::uint32_t inside_image(int bx, int by) const {
+        if (bx >= 0 && by >= 0 && bx + kBlock <= fb_.width && by + kBlock <= fb_.height) return kAllLanes;
+        std::uint32_t inside = 0;
         for (int i = 0; i < kBatchLanes; ++i) {
-            if (hits.primitive[i] != hits.primitive[i & ~3]) return false;
+            const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
+            inside |= std::uint32_t(x >= 0 && y >= 0 && x < fb_.width && y < fb_.height) << i;
         }
-        return true;
+        return inside;
+    }
+
+    // Whether every lane of a block cast whole hit one draw (`geometry` is hits.geometry), so
+    // that the block is shaded as it is, as one batch: with quads, each quad must lie on one
+    // triangle (else it runs once per triangle, each time with its other lanes as helpers on that
+    // triangle's plane).
+    bool whole_block(const lanes16::Ints& geometry, const RayHits& hits) const {
+        const std::uint32_t g = hits.geometry[0];
+        if (g == kNoHit || lanes16::equal(geometry, lanes16::Ints{} + int(g)) != kAllLanes) return false;
+        if (!draws_[g].quads) return true;
+        const lanes16::Ints primitive = std::bit_cast<lanes16::Ints>(hits.primitive);
+        const lanes16::Ints first = __builtin_shufflevector(primitive, primitive, 0, 0, 0, 0, 4, 4, 4, 4, 8, 8, 8, 8, 12,
+                                                            12, 12, 12);  // each quad's first lane
+        return lanes16::equal(primitive, first) == kAllLanes;
     }
 
     // A whole block was cast into the free one of whole_. Whole blocks are shaded two at a time
@@ -323,11 +331,19 @@ private:
         // Barycentric weights of vertices 1 and 2: signed sub-triangle areas over the whole.
         const Doubles b1 = dot(cross(rel, e2), n) / nn, b2 = dot(cross(e1, rel), n) / nn;
         const Doubles b0 = 1.0 - b1 - b2;
-        const Doubles4 clip = transform(eye_.clip_from_world, p0 + rel, 1.0);
-        store(in.frag_coord[0], to_float(w.x));
-        store(in.frag_coord[1], to_float(w.y));
-        store(in.frag_coord[2], to_float(0.5 * clip.z / clip.w + 0.5));
-        store(in.frag_coord[3], to_float(1.0 / clip.w));
+        // gl_FragCoord where the shader reads it (its depth and 1/w cost a projection and two
+        // divisions); elsewhere NaN, as the rasterizer leaves it.
+        const Floats nan = broadcast(std::numeric_limits<float>::quiet_NaN());
+        Doubles4 clip{};
+        if (d.frag_coord) {
+            clip = transform(eye_.clip_from_world, p0 + rel, 1.0);
+            store(in.frag_coord[0], to_float(w.x));
+            store(in.frag_coord[1], to_float(w.y));
+            store(in.frag_coord[2], to_float(0.5 * clip.z / clip.w + 0.5));
+            store(in.frag_coord[3], to_float(1.0 / clip.w));
+        } else {
+            for (float(&c)[kBatchLanes] : in.frag_coord) store(c, nan);
+        }
         for (int v = 0; v < d.varyings; ++v) {
             const Floats a0 = load(a[0][v]), a1 = load(a[1][v]), a2 = load(a[2][v]);
             const bool flat = d.flat >> v & 1;  // the provoking vertex's: the last
@@ -343,9 +359,13 @@ private:
             const Doubles3 moved = dorigin + t * ddirection;
             const Doubles3 dp = moved - (dot(moved, n) / dn) * r.direction;
             const Doubles db1 = dot(cross(dp, e2), n) / nn, db2 = dot(cross(e1, dp), n) / nn;
-            const Doubles4 dclip = transform(eye_.clip_from_world, dp, 0.0);
-            store(dfrag[0], to_float(0.5 * (dclip.z * clip.w - clip.z * dclip.w) / (clip.w * clip.w)));
-            store(dfrag[1], to_float(-dclip.w / (clip.w * clip.w)));
+            if (d.frag_coord) {
+                const Doubles4 dclip = transform(eye_.clip_from_world, dp, 0.0);
+                store(dfrag[0], to_float(0.5 * (dclip.z * clip.w - clip.z * dclip.w) / (clip.w * clip.w)));
+                store(dfrag[1], to_float(-dclip.w / (clip.w * clip.w)));
+            } else {
+                store(dfrag[0], nan), store(dfrag[1], nan);
+            }
             for (int v = 0; v < d.varyings; ++v) {
                 const Floats a0 = load(a[0][v]), a1 = load(a[1][v]), a2 = load(a[2][v]);
                 const bool flat = d.flat >> v & 1;
