@@ -71,10 +71,13 @@ public:
         for (int block = 0; block < kTileBlocks; ++block) {
             const int x = block_x(block), y = block_y(block);
             const int n = std::min(kBlock, fb_.width - x);
+            if (n <= 0) continue;
+            // The block's sixteen divisions in one instruction, each lane's the scalar one's.
+            const lanes16::Floats d = lanes16::load(&depth_[block * kBatchLanes]) / kDepthCleared;
             for (int r = 0; r < kBlock; ++r) {
-                if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
+                if (y + r < 0 || y + r >= fb_.height) continue;
                 float* depth = &fb_.depth[fb_.index(x, y + r)];
-                for (int dx = 0; dx < n; ++dx) depth[dx] = depth_[block * kBatchLanes + kLaneAt[r][dx]] / kDepthCleared;
+                for (int dx = 0; dx < n; ++dx) depth[dx] = d[kLaneAt[r][dx]];
             }
         }
     }
