@@ -2,12 +2,14 @@
 // clipping, robustness, determinism.
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>
 
 #include "core/block_rows.h"
+#include "core/lanes16.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"
@@ -70,6 +72,29 @@ TEST_CASE("a block's colours go from lane order to framebuffer rows, each pixel 
     block_to_rows({channels[0], channels[1], channels[2], channels[3]}, {rows[0], rows[1], rows[2], rows[3]});
     for (int i = 0; i < kBatchLanes; ++i) {
         for (int c = 0; c < 4; ++c) CHECK(rows[kLaneDy[i]][4 * kLaneDx[i] + c] == float(100 * c + i));
+    }
+}
+
+TEST_CASE("lanes16's compress, compress_bits and equal are their lane-by-lane definitions", "[raster][layout]") {
+    std::mt19937 random(5);
+    std::uniform_int_distribution<std::uint32_t> bits(0, 0xFFFFu);
+    std::uniform_int_distribution<int> small(-3, 3);
+    for (int trial = 0; trial < 500; ++trial) {
+        const std::uint32_t mask = trial % 10 == 0 ? 0u : trial % 10 == 1 ? 0xFFFFu : bits(random), other = bits(random);
+        lanes16::Ints v, w;
+        for (int i = 0; i < kBatchLanes; ++i) v[i] = 1000 * i - 7000, w[i] = small(random) == 0 ? v[i] : v[i] + small(random);
+        alignas(64) int out[kBatchLanes];
+        const int n = lanes16::compress(mask, v, out);
+        CHECK(n == std::popcount(mask));
+        std::uint32_t packed = 0, equal = 0;
+        for (int i = 0, k = 0; i < kBatchLanes; ++i) {
+            equal |= std::uint32_t(v[i] == w[i]) << i;
+            if (!(mask >> i & 1)) continue;
+            CHECK(out[k] == v[i]);
+            packed |= (other >> i & 1) << k++;
+        }
+        CHECK(lanes16::compress_bits(other, mask) == packed);
+        CHECK(lanes16::equal(v, w) == equal);
     }
 }
 
