@@ -92,6 +92,7 @@ public:
 
     // Casts, shades and writes the tile whose top-left pixel is (x0, y0).
     void tile(int x0, int y0, glm::vec4 clear) {
+        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
         for (int by = y0; by < std::min(y0 + kTileSize, fb_.height); by += kBlock) {
             for (int bx = x0; bx < std::min(x0 + kTileSize, fb_.width); bx += kBlock) block(bx, by, clear);
         }
@@ -139,6 +140,14 @@ private:
         bvh_.intersect(rays, hits);
         const lanes16::Ints geometry = std::bit_cast<lanes16::Ints>(hits.geometry);
         const std::uint32_t missed = rays.active & lanes16::equal(geometry, lanes16::Ints{} + int(kNoHit));
+        if (missed == kAllLanes) {
+            // Nothing hit (the sky: a quarter of Figure 1.1's blocks): four rows of the clear colour.
+            for (int r = 0; r < kBlock; ++r) lanes16::store(fb_.pixel(bx, by + r), clear_row_);
+            if (!fb_.undefined.empty()) {
+                for (int r = 0; r < kBlock; ++r) std::fill_n(undefined_at(bx, by + r), kBlock, std::uint8_t(0));
+            }
+            return;
+        }
         for (std::uint32_t m = missed; m != 0; m &= m - 1) {
             const int i = std::countr_zero(m);
             float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
@@ -420,6 +429,7 @@ private:
     const std::vector<Mesh>& meshes_;  // per draw
     std::vector<HitBatch> pending_;    // per draw
     WholeBlock whole_[2];              // whole blocks: whole_[first_] waits when waiting_
+    lanes16::Floats clear_row_;        // four pixels of the clear colour
     int first_ = 0;
     bool waiting_ = false;
     // Fragments that discarded: their block, lane and where their ray met the surface.
