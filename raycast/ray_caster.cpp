@@ -87,17 +87,18 @@ struct HitBatch {
 class TileCaster {
 public:
     TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws,
-               const std::vector<Mesh>& meshes)
-        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), pending_(draws.size()) {}
+               const std::vector<Mesh>& meshes, glm::vec4 clear)
+        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), pending_(draws.size()) {
+        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
+    }
 
     // Casts, shades and writes the tile whose top-left pixel is (x0, y0).
-    void tile(int x0, int y0, glm::vec4 clear) {
-        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
+    void tile(int x0, int y0) {
         for (int by = y0; by < std::min(y0 + kTileSize, fb_.height); by += kBlock) {
-            for (int bx = x0; bx < std::min(x0 + kTileSize, fb_.width); bx += kBlock) block(bx, by, clear);
+            for (int bx = x0; bx < std::min(x0 + kTileSize, fb_.width); bx += kBlock) block(bx, by);
         }
         finish();
-        cast_past_discards(clear);
+        cast_past_discards();
     }
 
     std::uint64_t quads() const { return quads_; }
@@ -125,7 +126,7 @@ private:
     // Casts, shades and writes the 4x4 block whose top-left pixel is (bx, by) in framebuffer
     // coordinates; pixels outside the framebuffer only ever serve as helpers. Only the lanes in
     // `lanes` are cast, from tnear[i] on when given.
-    void block(int bx, int by, glm::vec4 clear, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
+    void block(int bx, int by, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
         rays.active = lanes & inside_image(bx, by);
         if (tnear) std::copy_n(tnear, kBatchLanes, rays.tnear);
@@ -151,7 +152,7 @@ private:
         for (std::uint32_t m = missed; m != 0; m &= m - 1) {
             const int i = std::countr_zero(m);
             float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
-            p[0] = clear.r, p[1] = clear.g, p[2] = clear.b, p[3] = clear.a;
+            std::memcpy(p, &clear_row_, 4 * sizeof(float));
             if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
         }
         if (rays.active == kAllLanes && whole_block(geometry, hits)) {
@@ -266,7 +267,7 @@ private:
     // GLSL discard leaves the pixel to whatever lies behind: the rays of discarded fragments
     // are cast again from just past their hit, block by block, until they meet a fragment that
     // is kept or nothing (the clear colour), as depth testing would have it.
-    void cast_past_discards(glm::vec4 clear) {
+    void cast_past_discards() {
         while (!discarded_.empty()) {
             std::vector<Discarded> now;
             now.swap(discarded_);
@@ -281,7 +282,7 @@ private:
                     lanes |= 1u << now[j].lane;
                     tnear[now[j].lane] = std::nextafter(now[j].t, 2.0f);
                 }
-                block(now[i].bx, now[i].by, clear, lanes, tnear);
+                block(now[i].bx, now[i].by, lanes, tnear);
                 i = j;
             }
             finish();
@@ -429,7 +430,7 @@ private:
     const std::vector<Mesh>& meshes_;  // per draw
     std::vector<HitBatch> pending_;    // per draw
     WholeBlock whole_[2];              // whole blocks: whole_[first_] waits when waiting_
-    lanes16::Floats clear_row_;        // four pixels of the clear colour
+    lanes16::Floats clear_row_;        // four pixels of the frame's clear colour
     int first_ = 0;
     bool waiting_ = false;
     // Fragments that discarded: their block, lane and where their ray met the surface.
@@ -552,8 +553,8 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     fb.hold(width, height, band, false, options.check_undefined);
     const TileGrid grid(width, height, options.pairing, band);
     const auto casters = for_each_tile<TileCaster>(
-        grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes); },
-        [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i), clear); });
+        grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes, clear); },
+        [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i)); });
     for (const auto& caster : casters) stats.add_work(caster->quads(), caster->lanes(), caster->written());
     if (stats_out) *stats_out = stats;
 }
