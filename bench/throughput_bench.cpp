@@ -7,8 +7,11 @@
 // llvmpipe reads LP_NATIVE_VECTOR_WIDTH once per process, so each of its rows runs in a child
 // process per width (this program re-executed with --peer-only and an explicit environment),
 // right after quadshade's frames of the same row; quadshade is compared with the faster width.
+// This host's speed drifts between minutes, so the whole table is measured in rounds: each round
+// times every row (and the Figure 1.1 frame) in turn, each ratio is taken within a round, and a
+// cell is the median over the rounds with their range.
 //
-//   quadshade-bench-throughput [--threads N] [--repeat N] [--sizes 1024,500] [--shaders a,b]
+//   quadshade-bench-throughput [--threads N] [--repeat N] [--rounds N] [--sizes 1024,500] [--shaders a,b]
 //                              [--widths 256,512] [--out DIR]
 //   quadshade-bench-throughput --scaling [--scaling-threads 1,2,8] [--rounds N] [--sizes 1024] [--out DIR]
 // Writes DIR/throughput.csv, throughput.md, specialisation.md and figure-1.1-frame.md (or, with
@@ -19,6 +22,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <iterator>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -149,7 +155,7 @@ struct PeerRun {
 // textures), or not honouring it, is a fact about the peer on this host: the table says so, the
 // child's errors go to stderr, and the row is compared with the widths that ran.
 int g_unreadable_reports = 0;
-int g_rows_without_peer = 0;  // rows that no width measured: the bench fails
+int g_rows_without_peer = 0;  // rounds of a row that no width measured: the bench fails
 
 PeerRun run_peer(const Options& o, int width, const std::vector<std::string>& job) {
     std::vector<std::string> argv = {qs::bench::self_executable(), "--peer-only",
@@ -217,8 +223,39 @@ std::string needs_of(const char* shader, const qs::RenderStats& frame) {
     return s;
 }
 
+// The median over rounds with its unit, then the range and a note: "2.07x (1.87-2.46; 256 bits)".
+std::string over_rounds(const char* fmt, const std::vector<double>& values, const char* unit = "",
+                        const std::string& note = "") {
+    if (values.empty()) return "-";
+    const Stats s = stats_of(values);
+    return format(fmt, s.median) + unit + " (" + format(fmt, s.min) + "-" + format(fmt, s.max) +
+           (note.empty() ? "" : "; " + note) + ")";
+}
+
+// A row's llvmpipe runs at one width over the rounds: its frame times, or what the table says
+// instead where a round did not measure it.
+std::string peer_cell(const std::vector<const PeerRun*>& runs, const std::function<double(double)>& of_ms, const char* fmt) {
+    std::vector<double> values;
+    for (const PeerRun* r : runs) {
+        if (!r->report) return r->missing;
+        values.push_back(of_ms(r->report->median_ms));
+    }
+    return over_rounds(fmt, values);
+}
+
+// "256 bits", or "256/512 bits" when the faster width changed between rounds.
+std::string widths_named(std::vector<int> widths) {
+    std::sort(widths.begin(), widths.end());
+    widths.erase(std::unique(widths.begin(), widths.end()), widths.end());
+    std::string s;
+    for (int w : widths) s += (s.empty() ? "" : "/") + std::to_string(w);
+    return s + " bits";
+}
+
 // Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
 // differentials) next to llvmpipe at each width, with the ray caster's one-off BVH build apart.
+// Each round times every renderer in turn and then llvmpipe; every ratio is taken within a
+// round, and the table gives its median over the rounds with their range.
 std::string figure_frames(const Options& o) {
     qs::Scene scene = qs::load_scene(kFigure);
     struct Mode {
@@ -231,54 +268,129 @@ std::string figure_frames(const Options& o) {
                           {"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Analytic, "Dual2, plane derivatives"},
                           {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Fine, "fine ray quads"},
                           {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Analytic, "Dual2, ray differentials"}};
+    constexpr std::size_t kModes = std::size(modes);
     struct Timed {
-        const Mode* mode;
-        Stats t;
-        double setup, bvh;
+        std::unique_ptr<qs::SceneRenderer> renderer;
+        qs::Framebuffer fb;
+        double setup = 0;
+        std::vector<double> ms;  // per round
     };
-    std::vector<Timed> timed;
-    for (const Mode& m : modes) {
+    std::vector<Timed> timed(kModes);
+    for (std::size_t i = 0; i < kModes; ++i) {
         qs::FrameRequest req;
-        req.backend = m.backend;
-        req.shading.derivatives = m.rule;
+        req.backend = modes[i].backend;
+        req.shading.derivatives = modes[i].rule;
         req.shading.threads = o.threads;
         const auto s0 = Clock::now();
-        qs::SceneRenderer renderer(scene, req);
-        const double setup = ms_since(s0);
-        qs::Framebuffer fb;
-        const Stats t = time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); });
-        timed.push_back({&m, t, setup, 1e3 * renderer.bvh_build_seconds()});
+        timed[i].renderer = std::make_unique<qs::SceneRenderer>(scene, req);
+        timed[i].setup = ms_since(s0);
     }
-    std::vector<PeerRun> peers;
-    for (int width : o.widths) peers.push_back(run_peer(o, width, {"--figure"}));
-    const PeerRun* best = fastest(peers);
-    if (!best) ++g_rows_without_peer;
+    std::vector<std::vector<PeerRun>> peers;  // [round][width]
+    for (int round = 0; round < o.rounds; ++round) {
+        std::fprintf(stderr, "\rround %d/%d Figure 1.1 ...        ", round + 1, o.rounds);
+        for (Timed& t : timed) {
+            t.ms.push_back(time_frames(o.repeat, [&] { t.renderer->render_into(t.fb, std::nullopt); }).median);
+        }
+        peers.emplace_back();
+        for (int width : o.widths) peers.back().push_back(run_peer(o, width, {"--figure"}));
+        if (!fastest(peers.back())) ++g_rows_without_peer;
+    }
+    auto rasterizer_with = [&](qs::Derivatives rule) {
+        std::size_t i = 0;
+        while (modes[i].backend != qs::Backend::Rasterizer || modes[i].rule != rule) ++i;
+        return i;
+    };
+    std::vector<int> best_widths;
+    for (const std::vector<PeerRun>& round : peers) {
+        if (const PeerRun* best = fastest(round)) best_widths.push_back(best->width);
+    }
 
     std::ostringstream md;
-    md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms | speedup against llvmpipe at its best"
-       << (best ? " (" + std::to_string(best->width) + " bits)" : "") << " |\n|---|---|---|---|---|---|\n";
-    for (const Timed& t : timed) {
-        const std::string speedup = best ? format("%.2fx", best->report->median_ms / t.t.median) : "-";
-        md << format("| %s | %s | %.1f (%.1f-%.1f) | %.1f | %.1f | %s |\n", t.mode->name, t.mode->rule_name, t.t.median,
-                     t.t.min, t.t.max, t.setup, t.bvh, speedup.c_str());
-    }
-    for (const PeerRun& p : peers) {
-        if (p.report) {
-            const qs::bench::PeerReport& r = *p.report;
-            md << format("| OSMesa %s | fine quads | %.1f (%.1f-%.1f) | %.0f (context, GLSL compile) | - | %s |\n",
-                         width_title(p.width).c_str(), r.median_ms, r.min_ms, r.max_ms, r.setup_ms,
-                         &p == best ? "(the faster)" : "-");
-        } else {
-            md << format("| OSMesa %s | fine quads | %s | - | - | - |\n", width_title(p.width).c_str(), p.missing.c_str());
+    md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms | speedup against llvmpipe at its "
+          "best (goal >= 2) | time against the rasterizer's, same derivatives (goal <= 1.5) |\n|---|---|---|---|---|---|---|\n";
+    for (std::size_t i = 0; i < kModes; ++i) {
+        std::vector<double> speedup, against_raster;
+        for (int r = 0; r < o.rounds; ++r) {
+            if (const PeerRun* best = fastest(peers[std::size_t(r)])) speedup.push_back(best->report->median_ms / timed[i].ms[std::size_t(r)]);
+            if (modes[i].backend == qs::Backend::RayCaster) {
+                against_raster.push_back(timed[i].ms[std::size_t(r)] / timed[rasterizer_with(modes[i].rule)].ms[std::size_t(r)]);
+            }
         }
+        md << format("| %s | %s | ", modes[i].name, modes[i].rule_name) << over_rounds("%.1f", timed[i].ms)
+           << format(" | %.1f | %.1f | ", timed[i].setup, 1e3 * timed[i].renderer->bvh_build_seconds())
+           << over_rounds("%.2f", speedup, "x", widths_named(best_widths)) << " | "
+           << over_rounds("%.2f", against_raster, "x") << " |\n";
+    }
+    for (std::size_t w = 0; w < o.widths.size(); ++w) {
+        std::vector<const PeerRun*> runs;
+        std::vector<double> setups;
+        for (const std::vector<PeerRun>& round : peers) {
+            runs.push_back(&round[w]);
+            if (round[w].report) setups.push_back(round[w].report->setup_ms);
+        }
+        md << format("| OSMesa %s | fine quads | ", width_title(o.widths[w]).c_str())
+           << peer_cell(runs, [](double ms) { return ms; }, "%.1f") << " | "
+           << (setups.empty() ? std::string("-") : format("%.0f (context, GLSL compile)", stats_of(setups).median))
+           << " | - | - | - |\n";
     }
     return md.str();
 }
 
+// One Table 1.1 row at one size, measured once per round.
+struct RowSeries {
+    const Row* row;
+    int size;
+    std::string needs;
+    std::vector<Stats> quadshade, general;   // per round
+    std::vector<std::vector<PeerRun>> peers;  // [round][width]
+};
+
+void measure_round(const Options& o, qs::Scene& scene, RowSeries& s) {
+    qs::FrameRequest req;
+    req.width = req.height = s.size;
+    req.shader_override = s.row->shader;
+    req.shading.threads = o.threads;
+    qs::Framebuffer fb;
+    qs::SceneRenderer renderer(scene, req);
+    s.quadshade.push_back(time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); }));
+    if (s.needs.empty()) {
+        qs::RenderStats frame;
+        renderer.render_into(fb, std::nullopt, &frame);
+        s.needs = needs_of(s.row->shader, frame);
+    }
+    // The same frame through the general path: quads with helper lanes and a depth buffer
+    // whatever the shader needs.
+    qs::FrameRequest general_req = req;
+    general_req.raster.force_general_path = true;
+    qs::SceneRenderer general(scene, general_req);
+    s.general.push_back(time_frames(o.repeat, [&] { general.render_into(fb, std::nullopt); }));
+    s.peers.emplace_back();
+    for (int w : o.widths) s.peers.back().push_back(run_peer(o, w, {"--size", std::to_string(s.size), "--shader", s.row->shader}));
+    if (!fastest(s.peers.back())) ++g_rows_without_peer;
+}
+
 int run_throughput(const Options& o) {
+    std::vector<RowSeries> series;
+    for (int size : o.sizes) {
+        for (const Row& row : kRows) {
+            if (o.shaders.empty() || std::find(o.shaders.begin(), o.shaders.end(), row.shader) != o.shaders.end()) {
+                series.push_back({&row, size, "", {}, {}, {}});
+            }
+        }
+    }
+    // Each round measures every row in turn, so that a round's ratios come from the same minutes
+    // and the rounds from different ones.
+    qs::Scene scene = qs::load_scene(kPlane);
+    for (int round = 0; round < o.rounds; ++round) {
+        for (RowSeries& s : series) {
+            std::fprintf(stderr, "\rround %d/%d %-16s %4dx%-4d ...", round + 1, o.rounds, s.row->shader, s.size, s.size);
+            measure_round(o, scene, s);
+        }
+    }
+
     const fs::path out = o.out;
     std::ofstream csv(out / "throughput.csv");
-    csv << "shader,size,threads,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max";
+    csv << "shader,size,threads,round,quadshade_ms_median,quadshade_ms_min,quadshade_ms_max";
     for (int w : o.widths) {
         csv << ",llvmpipe" << w << "_ms_median,llvmpipe" << w << "_ms_min,llvmpipe" << w << "_ms_max,llvmpipe" << w
             << "_setup_ms";
@@ -295,78 +407,72 @@ int run_throughput(const Options& o) {
     std::ostringstream special;
     special << "| shader | size | what the shader needs | specialised ms | general path ms | saving |\n"
                "|---|---|---|---|---|---|\n";
-    for (int size : o.sizes) {
-        for (const Row& row : kRows) {
-            if (!o.shaders.empty() && std::find(o.shaders.begin(), o.shaders.end(), row.shader) == o.shaders.end()) continue;
-            std::fprintf(stderr, "\r%-16s %4dx%-4d ...", row.shader, size, size);
-            qs::Scene scene = qs::load_scene(kPlane);
-            qs::FrameRequest req;
-            req.width = req.height = size;
-            req.shader_override = row.shader;
-            req.shading.threads = o.threads;
-            qs::Framebuffer fb;
-            qs::SceneRenderer renderer(scene, req);
-            const Stats q = time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); });
-            qs::RenderStats frame;
-            renderer.render_into(fb, std::nullopt, &frame);
-            // The same frame through the general path: quads with helper lanes and a depth
-            // buffer whatever the shader needs.
-            qs::FrameRequest general_req = req;
-            general_req.raster.force_general_path = true;
-            qs::SceneRenderer general(scene, general_req);
-            const Stats g = time_frames(o.repeat, [&] { general.render_into(fb, std::nullopt); });
-            special << format("| %s | %d | %s | %.2f | %.2f | %.0f%% |\n", row.book_name, size,
-                              needs_of(row.shader, frame).c_str(), q.median, g.median, 100.0 * (1.0 - q.median / g.median));
-
-            std::vector<PeerRun> peers;
-            for (int w : o.widths) peers.push_back(run_peer(o, w, {"--size", std::to_string(size), "--shader", row.shader}));
-            const PeerRun* best = fastest(peers);
-            const double frags = double(size) * size * 1e-3;  // per ms -> Mfrag/s
-            const double qm = frags / q.median;
-            csv << row.shader << "," << size << "," << o.threads << "," << q.median << "," << q.min << "," << q.max;
-            md << format("| %s | %d | %.0f (%.0f-%.0f)", row.book_name, size, qm, frags / q.max, frags / q.min);
-            std::string setups;
-            for (const PeerRun& p : peers) {
+    for (const RowSeries& s : series) {
+        const double frags = double(s.size) * s.size * 1e-3;  // per ms -> Mfrag/s
+        std::vector<double> q_rate, q_ms, g_ms, saving, speedup;
+        std::vector<int> best_widths;
+        for (int r = 0; r < o.rounds; ++r) {
+            const Stats& q = s.quadshade[std::size_t(r)];
+            const Stats& g = s.general[std::size_t(r)];
+            q_rate.push_back(frags / q.median), q_ms.push_back(q.median), g_ms.push_back(g.median);
+            saving.push_back(100.0 * (1.0 - q.median / g.median));
+            csv << s.row->shader << "," << s.size << "," << o.threads << "," << r + 1 << "," << q.median << "," << q.min
+                << "," << q.max;
+            for (const PeerRun& p : s.peers[std::size_t(r)]) {
                 if (p.report) {
-                    const qs::bench::PeerReport& r = *p.report;
-                    csv << "," << r.median_ms << "," << r.min_ms << "," << r.max_ms << "," << r.setup_ms;
-                    md << format(" | %.0f (%.0f-%.0f)", frags / r.median_ms, frags / r.max_ms, frags / r.min_ms);
-                    setups += (setups.empty() ? "" : " / ") + format("%.0f", r.setup_ms);
+                    csv << "," << p.report->median_ms << "," << p.report->min_ms << "," << p.report->max_ms << ","
+                        << p.report->setup_ms;
                 } else {
                     csv << ",,,,";
-                    md << " | " << p.missing;
-                    setups += setups.empty() ? "-" : " / -";
                 }
             }
-            if (best) {
+            if (const PeerRun* best = fastest(s.peers[std::size_t(r)])) {
                 const double lm = frags / best->report->median_ms;
-                csv << "," << best->width << "," << qm << "," << lm << "," << qm / lm << "\n";
-                md << format(" | %.2fx (%d bits)", qm / lm, best->width);
+                speedup.push_back(frags / q.median / lm);
+                best_widths.push_back(best->width);
+                csv << "," << best->width << "," << frags / q.median << "," << lm << "," << speedup.back() << "\n";
             } else {
-                ++g_rows_without_peer;
-                csv << ",,," << qm << ",,\n";
-                md << " | -";
+                csv << ",," << frags / q.median << ",,\n";
             }
-            md << format(" | %s | %d / %d / %d / %d |\n", setups.c_str(), row.book[0], row.book[1], row.book[2], row.book[3]);
         }
+        special << format("| %s | %d | %s | ", s.row->book_name, s.size, s.needs.c_str()) << over_rounds("%.2f", q_ms)
+                << " | " << over_rounds("%.2f", g_ms) << " | " << over_rounds("%.0f", saving, "%") << " |\n";
+        md << format("| %s | %d | ", s.row->book_name, s.size) << over_rounds("%.0f", q_rate);
+        std::string setups;
+        for (std::size_t w = 0; w < o.widths.size(); ++w) {
+            std::vector<const PeerRun*> runs;
+            std::vector<double> setup;
+            for (const std::vector<PeerRun>& round : s.peers) {
+                runs.push_back(&round[w]);
+                if (round[w].report) setup.push_back(round[w].report->setup_ms);
+            }
+            md << " | " << peer_cell(runs, [&](double ms) { return frags / ms; }, "%.0f");
+            setups += (w ? " / " : "") + (setup.empty() ? std::string("-") : format("%.0f", stats_of(setup).median));
+        }
+        md << " | " << over_rounds("%.2f", speedup, "x", widths_named(best_widths));
+        md << format(" | %s | %d / %d / %d / %d |\n", setups.c_str(), s.row->book[0], s.row->book[1], s.row->book[2],
+                     s.row->book[3]);
     }
-    std::fprintf(stderr, "\r%40s\r", "");
+    std::fprintf(stderr, "\r%50s\r", "");
     std::ofstream(out / "throughput.md") << md.str();
-    std::printf("%d threads, median of %d frames (min-max in brackets), float RGBA target; llvmpipe in a child "
-                "process per vector width\n\n%s", o.threads, o.repeat, md.str().c_str());
+    std::printf("%d threads; each cell the median over %d rounds of each round's median of %d frames (min-max over "
+                "rounds), a round measuring every row in turn; speedups per round against that round's faster "
+                "llvmpipe; float RGBA target; llvmpipe in a child process per vector width\n\n%s",
+                o.threads, o.rounds, o.repeat, md.str().c_str());
     std::ofstream(out / "specialisation.md") << special.str();
-    std::printf("\nLeaving out what a shader does not need (median ms per frame, %d threads): the specialised "
-                "pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
+    std::printf("\nLeaving out what a shader does not need (ms per frame, %d threads, median over rounds): the "
+                "specialised pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
                 o.threads, special.str().c_str());
     if (o.shaders.empty()) {
         const std::string figure = figure_frames(o);
+        std::fprintf(stderr, "\r%50s\r", "");
         std::ofstream(out / "figure-1.1-frame.md") << figure;
-        std::printf("\nFigure 1.1 at 1264x400, %d threads, median of %d frames (min-max)\n\n%s", o.threads, o.repeat,
-                    figure.c_str());
+        std::printf("\nFigure 1.1 at 1264x400, %d threads, median over %d rounds of each round's median of %d frames "
+                    "(min-max over rounds); ratios per round\n\n%s", o.threads, o.rounds, o.repeat, figure.c_str());
     }
     if (g_unreadable_reports > 0 || g_rows_without_peer > 0) {
-        std::fprintf(stderr, "quadshade-bench-throughput: %d unreadable llvmpipe reports, %d rows without llvmpipe at "
-                             "any width (above)\n", g_unreadable_reports, g_rows_without_peer);
+        std::fprintf(stderr, "quadshade-bench-throughput: %d unreadable llvmpipe reports, %d rounds of a row without "
+                             "llvmpipe at any width (above)\n", g_unreadable_reports, g_rows_without_peer);
         return 1;
     }
     return 0;
@@ -472,7 +578,8 @@ int main(int argc, char** argv) {
     app.add_flag("--scaling", o.scaling, "quadshade alone on the noise rows at --scaling-threads (writes scaling.md)");
     app.add_option("--scaling-threads", o.scaling_threads, "thread counts of --scaling, the first the baseline")
         ->delimiter(',')->check(CLI::Range(1, 256));
-    app.add_option("--rounds", o.rounds, "rounds of --scaling (median and min-max over them)")->check(CLI::Range(3, 1000));
+    app.add_option("--rounds", o.rounds, "rounds, each measuring every row in turn (median and min-max over them)")
+        ->check(CLI::Range(1, 1000));
     // The peer child's job, set by the parent (hidden).
     app.add_flag("--peer-only", o.peer_only)->group("");
     app.add_option("--vector-width", o.vector_width)->group("")->check(CLI::IsMember({128, 256, 512}));
@@ -506,11 +613,14 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    for (const char* opt : {"--scaling-threads", "--rounds"}) {
-        if ((!o.scaling || o.peer_only) && app.count(opt) > 0) {
-            std::fprintf(stderr, "quadshade-bench-throughput: %s only with --scaling\n", opt);
-            return 2;
-        }
+    if (!o.scaling && app.count("--scaling-threads") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling-threads only with --scaling\n");
+        return 2;
+    }
+    if (o.peer_only && app.count("--rounds") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --rounds is not an option of --peer-only (the parent runs "
+                             "one child per round)\n");
+        return 2;
     }
     if (o.scaling && o.peer_only) {
         std::fprintf(stderr, "quadshade-bench-throughput: --scaling and --peer-only are two different runs\n");
