@@ -75,13 +75,15 @@ def throughput_sections(root):
     parts = []
     for name, title, text in (
             ("throughput.md", "Throughput against OSMesa llvmpipe (Table 1.1 plane)",
-             "Same run, same cores; median Mfragments/s with min-max; llvmpipe at each vector width in its own "
-             "process, goal 2x the faster."),
+             "Same run, same cores, in rounds that each measure every row in turn: the median over rounds of "
+             "each round's median Mfragments/s, with the rounds' min-max; llvmpipe at each vector width in its own "
+             "process; speedups taken within each round against its faster width, goal 2x."),
             ("specialisation.md", "Leaving out what a shader does not need",
-             "Median ms per frame with the specialised pipeline against the general path (quads with helper "
-             "lanes and a depth buffer for every shader)."),
+             "ms per frame with the specialised pipeline against the general path (quads with helper "
+             "lanes and a depth buffer for every shader), median over rounds with their min-max."),
             ("figure-1.1-frame.md", "Figure 1.1: rasterizer, ray caster and llvmpipe",
-             "One frame at 1264x400, median of the run's frames; the BVH is built once per scene."),
+             "One frame at 1264x400, median over rounds of each round's median frame, with the rounds' min-max; "
+             "ratios taken within each round; the BVH is built once per scene."),
             ("scaling.md", "Thread scaling on the noise rows",
              "quadshade alone at 1, 2 and 8 threads: median over rounds of each round's median frame time "
              "(min-max over rounds); speedups per round against one thread."),
