@@ -2,7 +2,8 @@
 // number type, next to a plain loop written directly with std::experimental::simd at native
 // width, and the same noise rasterized as a full-screen quad. One run, so the ratios are fair:
 //   wide lane type / plain loop       goal >= 0.80 (the abstraction costs nothing)
-//   rasterized / plain loop, 1 thread goal >= 0.70 (rasterization keeps the throughput)
+//   rasterized / plain loop, 1 thread goal >= 0.85 (rasterization keeps the throughput; #22,
+//                                     raised from 0.70)
 // The same for an integer-hash shader (PCG value noise) and a loop that breaks per pixel (the
 // Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
 // (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
@@ -45,8 +46,19 @@ F lane_ramp(float start, float step) {
     }
 }
 
+// What a benchmark keeps of its sum: lane 0, and of a Dual2 its partials too, so that a
+// flattened loop cannot drop their arithmetic.
 template <class F>
-void BM_simplex2d(benchmark::State& state) {
+double kept(const F& acc) {
+    if constexpr (is_dual2<F>::value) return double(lane(acc, 0)) + double(lane(acc.dx, 0)) + double(lane(acc.dy, 0));
+    else return double(lane(acc, 0));
+}
+
+// The benchmarks over number types are flattened, as the renderer's shader instantiations are
+// (shading/program_of.h): otherwise GCC stops inlining the noise inside this file's loops and
+// passes the lanes through memory, and these rows measure the calls instead of the arithmetic.
+template <class F>
+[[gnu::flatten]] void BM_simplex2d(benchmark::State& state) {
     constexpr int n = lanes_of<F>();
     static_assert(kSide % n == 0);
     double sink = 0.0;
@@ -59,7 +71,7 @@ void BM_simplex2d(benchmark::State& state) {
                 acc += noise::snoise(vec2<F>(px, py));
             }
         }
-        sink += double(lane(acc, 0));
+        sink += kept(acc);
         benchmark::DoNotOptimize(sink);
     }
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
@@ -115,7 +127,7 @@ void BM_plain_stdx_loop(benchmark::State& state) {
 // ---- the integer hash and the loop with break (shading/shaders/seed_patterns.h) ---------------
 // A shader's fragment function over the grid on number type F, as BM_simplex2d does.
 template <class F, class Fragment>
-void run_grid(benchmark::State& state, Fragment fragment) {
+[[gnu::flatten]] void run_grid(benchmark::State& state, Fragment fragment) {
     constexpr int n = lanes_of<F>();
     double sink = 0.0;
     for (auto _ : state) {
@@ -124,7 +136,7 @@ void run_grid(benchmark::State& state, Fragment fragment) {
             const F t((float(y) + 0.5f) / kSide);
             for (int x = 0; x < kSide; x += n) acc += fragment(vec2<F>(lane_ramp<F>((float(x) + 0.5f) / kSide, 1.0f / kSide), t));
         }
-        sink += double(lane(acc, 0));
+        sink += kept(acc);
         benchmark::DoNotOptimize(sink);
     }
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
@@ -214,7 +226,7 @@ void BM_plain(benchmark::State& state) {
 // std::experimental::sin it replaced, on the sine hash's arguments: dot(p, (12.9898, 78.233))
 // over p in [0, 128)^2, the range of seed 003's 128 tiles.
 template <class F>
-void BM_sin(benchmark::State& state) {
+[[gnu::flatten]] void BM_sin(benchmark::State& state) {
     constexpr int n = lanes_of<F>();
     double sink = 0.0;
     for (auto _ : state) {
@@ -223,7 +235,7 @@ void BM_sin(benchmark::State& state) {
             const F py(float(y) * (128.0f / kSide) * 78.233f);
             for (int x = 0; x < kSide; x += n) acc += sin(lane_ramp<F>(float(x) * (128.0f / kSide), 128.0f / kSide) * 12.9898f + py);
         }
-        sink += double(lane(acc, 0));
+        sink += kept(acc);
         benchmark::DoNotOptimize(sink);
     }
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
@@ -358,8 +370,8 @@ int main(int argc, char** argv) {
                     wide / plain >= 0.80 ? "MET" : "NOT MET");
     }
     if (plain > 0 && raster1 > 0) {
-        std::printf("rasterized simplex2d (1 thread) / plain loop: %.2f (goal >= 0.70) %s\n", raster1 / plain,
-                    raster1 / plain >= 0.70 ? "MET" : "NOT MET");
+        std::printf("rasterized simplex2d (1 thread) / plain loop: %.2f (goal >= 0.85) %s\n", raster1 / plain,
+                    raster1 / plain >= 0.85 ? "MET" : "NOT MET");
     }
     for (const std::string shader : {"pcg", "mandelbrot"}) {
         const std::string name = shader == "pcg" ? "pcg_value_noise" : shader;
