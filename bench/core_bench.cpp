@@ -49,8 +49,8 @@ F lane_ramp(float start, float step) {
 // A row's coordinate, hidden from the optimizer in each iteration along the row. A fragment
 // shader computes its whole function for every fragment; a loop along a row would otherwise
 // compute the row's share of it (the hashes of y, y's terms of the skew) once, before the loop,
-// and time less arithmetic than any shader does (the PCG loop a third less, the simplex loop a
-// tenth). Costs a broadcast per iteration.
+// and time less arithmetic than any shader does (the PCG loop a third less; the simplex loop
+// hardly any). Costs a broadcast per iteration.
 inline float per_fragment(float row) {
 #if defined(__x86_64__) || defined(__i386__)
     asm volatile("" : "+x"(row));
