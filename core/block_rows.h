@@ -2,6 +2,7 @@
 // Whole-block work: which quads of a block run, and a block's colour stored as
 // four framebuffer rows (the lane order is core/block_layout.h's).
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 
@@ -10,6 +11,7 @@
 #endif
 
 #include "core/block_layout.h"
+#include "core/framebuffer.h"
 #include "core/lanes16.h"
 
 namespace qs {
@@ -86,6 +88,17 @@ inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kB
     row<3>(rg_high, ba_high, out[3], sixteen);
     for (int i = 0; i < kBlock; ++i) lanes16::store(rows[i], out[i]);
 #endif
+}
+
+// A whole block's shaded colour into `fb` as four rows, and with `undefined` its lanes' undefined
+// cases; the block, top-left pixel (bx, by), lies inside the image.
+inline void store_block(Framebuffer& fb, int bx, int by, const ColorBatch& out, bool undefined) {
+    float* const row = fb.pixel(bx, by);
+    const std::size_t pitch = 4 * std::size_t(fb.width);
+    block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]}, {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
+    if (undefined) {
+        for (int i = 0; i < kBatchLanes; ++i) fb.undefined[fb.index(bx + kLaneDx[i], by + kLaneDy[i])] = out.undefined[i];
+    }
 }
 
 }  // namespace qs

@@ -170,12 +170,7 @@ private:
             mask = lanes16::sum_positive(e.at[0], e.lane[0]) & lanes16::sum_positive(e.at[1], e.lane[1]) &
                    lanes16::sum_positive(e.at[2], e.lane[2]);
         }
-        if (bx < 0 || by < 0 || bx + kBlock > fb_.width || by + kBlock > fb_.height) {
-            for (int i = 0; i < kBatchLanes; ++i) {
-                const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-                if (x < 0 || y < 0 || x >= fb_.width || y >= fb_.height) mask &= ~(1u << i);
-            }
-        }
+        mask &= lanes_inside(bx, by, fb_.width, fb_.height);
         if (mask != 0 && depth_test_) mask = depth_mask(bx, by, mask);
         if (mask == 0) return;
         if (draw_->quads) {
@@ -218,7 +213,7 @@ private:
     // discard.
     void tile_block(int h, int bx, int by) {
         if (out_[h].discarded == 0) {
-            store_block(out_[h], bx, by);
+            store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined);
             touched_[std::size_t(block_base(bx, by) / kBatchLanes)] = true;
             written_ += kBatchLanes;
             return;
@@ -274,25 +269,13 @@ private:
             }
             return;
         }
-        store_block(out, bx, by);
+        store_block(fb_, bx, by, out, draw_->mode.check_undefined);
         const int block = block_base(bx, by) / kBatchLanes;
         touched_[std::size_t(block)] = true;
         if (depth_test_) {
             lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
         }
         written_ += kBatchLanes;
-    }
-
-    // Writes a whole block's colour (and undefined cases): the block lies inside the image, its
-    // colour goes out as four rows.
-    void store_block(const ColorBatch& out, int bx, int by) {
-        float* const row = fb_.pixel(bx, by);
-        const std::size_t pitch = 4 * std::size_t(fb_.width);
-        block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]},
-                      {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
-        if (draw_->mode.check_undefined) {
-            for (int i = 0; i < kBatchLanes; ++i) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = out.undefined[i];
-        }
     }
 
     // Adds `lanes` of the block at (bx, by) to the gathered batch, in lane order, those in `write`

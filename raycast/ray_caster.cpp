@@ -128,7 +128,7 @@ private:
     // `lanes` are cast, from tnear[i] on when given.
     void block(int bx, int by, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
-        rays.active = lanes & inside_image(bx, by);
+        rays.active = lanes & lanes_inside(bx, by, fb_.width, fb_.height);
         if (tnear) std::copy_n(tnear, kBatchLanes, rays.tnear);
         // Every lane's ray; Embree reads the active ones. They are computed where the block would
         // wait, should it be whole.
@@ -188,17 +188,6 @@ private:
         }
     }
 
-    // The lanes of the block at (bx, by) whose pixels lie in the image.
-    std::uint32_t inside_image(int bx, int by) const {
-        if (bx >= 0 && by >= 0 && bx + kBlock <= fb_.width && by + kBlock <= fb_.height) return kAllLanes;
-        std::uint32_t inside = 0;
-        for (int i = 0; i < kBatchLanes; ++i) {
-            const int x = bx + kLaneDx[i], y = by + kLaneDy[i];
-            inside |= std::uint32_t(x >= 0 && y >= 0 && x < fb_.width && y < fb_.height) << i;
-        }
-        return inside;
-    }
-
     // Whether every lane of a block cast whole hit one draw (`geometry` is hits.geometry), so
     // that the block is shaded as it is, as one batch: with quads, each quad must lie on one
     // triangle (else it runs once per triangle, each time with its other lanes as helpers on that
@@ -248,13 +237,7 @@ private:
     void write_whole(const WholeBlock& w, const ColorBatch& out) {
         if (out.discarded != 0) return write(w.draw, w.batch, out);
         // The block lies inside the image (every lane was cast): four rows at once.
-        float* const row = fb_.pixel(w.bx, w.by);
-        const std::size_t pitch = 4 * std::size_t(fb_.width);
-        block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]},
-                      {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
-        if (draws_[w.draw].mode.check_undefined) {
-            for (int i = 0; i < kBatchLanes; ++i) *undefined_at(w.batch.lanes.x[i], w.batch.lanes.y[i]) = out.undefined[i];
-        }
+        store_block(fb_, w.bx, w.by, out, draws_[w.draw].mode.check_undefined);
         written_ += kBatchLanes;
     }
 
