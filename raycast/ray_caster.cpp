@@ -26,6 +26,7 @@
 #include "raycast/embree_scene.h"
 #include "raycast/eye.h"
 #include "raycast/primitive_groups.h"
+#include "raycast/screen_footprint.h"
 
 namespace qs {
 
@@ -87,8 +88,8 @@ struct HitBatch {
 class TileCaster {
 public:
     TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws,
-               const std::vector<Mesh>& meshes, glm::vec4 clear)
-        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), pending_(draws.size()) {
+               const std::vector<Mesh>& meshes, const BlockMask& covered, glm::vec4 clear)
+        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), covered_(covered), pending_(draws.size()) {
         for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
     }
 
@@ -129,6 +130,8 @@ private:
     void block(int bx, int by, std::uint32_t lanes = 0xFFFFu, const float* tnear = nullptr) {
         RayPacket rays;
         rays.active = lanes & lanes_inside(bx, by, fb_.width, fb_.height);
+        // No triangle's footprint reaches the block (the sky: a quarter of Figure 1.1's blocks).
+        if (!covered_.covered(bx, by)) return clear_lanes(bx, by, rays.active);
         if (tnear) std::copy_n(tnear, kBatchLanes, rays.tnear);
         // Every lane's ray; Embree reads the active ones. They are computed where the block would
         // wait, should it be whole.
@@ -141,20 +144,8 @@ private:
         bvh_.intersect(rays, hits);
         const lanes16::Ints geometry = std::bit_cast<lanes16::Ints>(hits.geometry);
         const std::uint32_t missed = rays.active & lanes16::equal(geometry, lanes16::Ints{} + int(kNoHit));
-        if (missed == kAllLanes) {
-            // Nothing hit (the sky: a quarter of Figure 1.1's blocks): four rows of the clear colour.
-            for (int r = 0; r < kBlock; ++r) lanes16::store(fb_.pixel(bx, by + r), clear_row_);
-            if (!fb_.undefined.empty()) {
-                for (int r = 0; r < kBlock; ++r) std::fill_n(undefined_at(bx, by + r), kBlock, std::uint8_t(0));
-            }
-            return;
-        }
-        for (std::uint32_t m = missed; m != 0; m &= m - 1) {
-            const int i = std::countr_zero(m);
-            float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
-            std::memcpy(p, &clear_row_, 4 * sizeof(float));
-            if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
-        }
+        clear_lanes(bx, by, missed);
+        if (missed == rays.active) return;
         if (rays.active == kAllLanes && whole_block(geometry, hits)) {
             whole.draw = hits.geometry[0], whole.bx = bx, whole.by = by;
             HitBatch& b = whole.batch;
@@ -185,6 +176,24 @@ private:
                 }
                 quads_ += d.quads;
             }
+        }
+    }
+
+    // Writes the clear colour into the lanes `lanes` of the block at (bx, by).
+    void clear_lanes(int bx, int by, std::uint32_t lanes) {
+        if (lanes == kAllLanes) {
+            // A whole block (it lies inside the image): four rows.
+            for (int r = 0; r < kBlock; ++r) lanes16::store(fb_.pixel(bx, by + r), clear_row_);
+            if (!fb_.undefined.empty()) {
+                for (int r = 0; r < kBlock; ++r) std::fill_n(undefined_at(bx, by + r), kBlock, std::uint8_t(0));
+            }
+            return;
+        }
+        for (std::uint32_t m = lanes; m != 0; m &= m - 1) {
+            const int i = std::countr_zero(m);
+            float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
+            std::memcpy(p, &clear_row_, 4 * sizeof(float));
+            if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
         }
     }
 
@@ -411,6 +420,7 @@ private:
     const Eye& eye_;
     const std::vector<PreparedDraw>& draws_;
     const std::vector<Mesh>& meshes_;  // per draw
+    const BlockMask& covered_;         // the blocks some triangle may cover
     std::vector<HitBatch> pending_;    // per draw
     WholeBlock whole_[2];              // whole blocks: whole_[first_] waits when waiting_
     lanes16::Floats clear_row_;        // four pixels of the frame's clear colour
@@ -439,6 +449,7 @@ struct RayCaster::Impl {
     Eye eye;
     std::vector<Mesh> meshes;
     std::unique_ptr<EmbreeScene> bvh;
+    std::unique_ptr<ScreenFootprint> footprint;  // the BVH's triangles seen by the eye
     double build_seconds = 0.0;
 
     // World positions from this frame's gl_Position; true when they differ from the BVH's.
@@ -459,6 +470,7 @@ struct RayCaster::Impl {
     void build(std::span<const DrawCall> draws) {
         const auto start = std::chrono::steady_clock::now();
         auto scene = std::make_unique<EmbreeScene>();
+        auto seen = std::make_unique<ScreenFootprint>(eye.clip_from_world, eye.world_from_clip);
         std::vector<glm::vec3> positions;
         for (std::size_t i = 0; i < meshes.size(); ++i) {
             Mesh& m = meshes[i];
@@ -486,11 +498,12 @@ struct RayCaster::Impl {
                 }
                 m.triangles.push_back(t);
                 m.planes.emplace_back(m.world[t[0]], m.world[t[1]], m.world[t[2]]);
+                seen->add(m.world[t[0]], m.world[t[1]], m.world[t[2]]);
             }
             scene->add_mesh(positions, m.triangles);
         }
         scene->commit();
-        bvh = std::move(scene);
+        bvh = std::move(scene), footprint = std::move(seen);
         build_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 };
@@ -535,8 +548,9 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
 
     fb.hold(width, height, band, false, options.check_undefined);
     const TileGrid grid(width, height, options.pairing, band);
+    const BlockMask& covered = im.footprint->blocks(width, height, grid.y0(0), grid.y0(0) + grid.rows * kTileSize);
     const auto casters = for_each_tile<TileCaster>(
-        grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes, clear); },
+        grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes, covered, clear); },
         [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i)); });
     for (const auto& caster : casters) stats.add_work(caster->quads(), caster->lanes(), caster->written());
     if (stats_out) *stats_out = stats;
