@@ -52,8 +52,10 @@ struct PrimitiveGroups {
         lanes16::Doubles r;
 #if defined(__AVX512F__)
         static_assert(sizeof r == 2 * sizeof(__m512d));
-        __m512d half[2] = {_mm512_setzero_pd(), _mm512_setzero_pd()};
-        for (int g = 0; g < count; ++g) {
+        // Every lane is in a group: the first group's value first, unmasked (a block on one
+        // triangle needs nothing more).
+        __m512d half[2] = {_mm512_set1_pd(value(0)), _mm512_set1_pd(value(0))};
+        for (int g = 1; g < count; ++g) {
             const __m512d v = _mm512_set1_pd(value(g));
             half[0] = _mm512_mask_mov_pd(half[0], __mmask8(lanes[g]), v);
             half[1] = _mm512_mask_mov_pd(half[1], __mmask8(lanes[g] >> 8), v);
@@ -69,8 +71,8 @@ struct PrimitiveGroups {
         lanes16::Floats r;
 #if defined(__AVX512F__)
         static_assert(sizeof r == sizeof(__m512));
-        __m512 all = _mm512_setzero_ps();
-        for (int g = 0; g < count; ++g) all = _mm512_mask_mov_ps(all, __mmask16(lanes[g]), _mm512_set1_ps(value(g)));
+        __m512 all = _mm512_set1_ps(value(0));
+        for (int g = 1; g < count; ++g) all = _mm512_mask_mov_ps(all, __mmask16(lanes[g]), _mm512_set1_ps(value(g)));
         std::memcpy(&r, &all, sizeof r);
 #else
         for (int i = 0; i < kBatchLanes; ++i) r[i] = value(group_of[i]);
