@@ -7,7 +7,9 @@
 // The same for an integer-hash shader (PCG value noise) and a loop that breaks per pixel (the
 // Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
 // (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
-// And texture2D's lanes on three samplers (BM_texture2D), for the sampler's own speed.
+// And texture2D's lanes on three samplers (BM_texture2D), for the sampler's own speed. And the
+// Figure 1.1 frame on one thread with each backend (BM_frame), so that bench/compare-builds, which
+// runs this program, guards the ray caster and the scene path too.
 // Usage: quadshade-bench-core [Google Benchmark flags]
 
 #include <benchmark/benchmark.h>
@@ -22,6 +24,8 @@
 #include "shading/noise/simplex2d.h"
 #include "shading/shaders/seed_patterns.h"
 #include "raster/rasterizer.h"
+#include "render/scene_render.h"
+#include "scenes/gltf.h"
 
 namespace {
 
@@ -276,6 +280,24 @@ void BM_raster(benchmark::State& state, const char* shader, int threads) {
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// ---- the Figure 1.1 frame (render/scene_render.h) -----------------------------------------------
+// One frame after another into the same framebuffer, as an animation loop renders them; the ray
+// caster's BVH is built before the timing.
+void BM_frame(benchmark::State& state, Backend backend) {
+    static Scene scene = load_scene(QUADSHADE_SOURCE_DIR "/scenes/assets/figure-1.1.gltf");
+    FrameRequest request;
+    request.backend = backend;
+    request.shading.threads = 1;
+    SceneRenderer renderer(scene, request);
+    Framebuffer fb;
+    for (auto _ : state) {
+        renderer.render_into(fb, std::nullopt);
+        benchmark::DoNotOptimize(fb.rgba.data());
+    }
+    state.counters["Mpixel/s"] = benchmark::Counter(double(renderer.width()) * renderer.height() * 1e-6,
+                                                    benchmark::Counter::kIsIterationInvariantRate);
+}
+
 // ---- texture lookups (shading/glsl/texture.cpp) ------------------------------------------------
 // texture2D over the grid, st in [0,1]^2 as on Table 1.1's plane, from a 256x256 texture of random
 // texels (the plane's image size): bilinear CLAMP_TO_EDGE as single_texture (8-bit path, no level
@@ -291,9 +313,9 @@ const sampler2D& bench_texture(TextureCase c) {
     }();
     static const sampler2D bilinear(256, 256, rgba.data(), SamplerState{});
     static const sampler2D trilinear(256, 256, rgba.data(),
-                                     SamplerState{.wrap_s = Wrap::Repeat, .wrap_t = Wrap::Repeat, .mip = MipFilter::Linear});
+                                     SamplerState{.wrap_s = glsl::Wrap::Repeat, .wrap_t = glsl::Wrap::Repeat, .mip = MipFilter::Linear});
     static const sampler2D mirrored(256, 256, rgba.data(),
-                                    SamplerState{.wrap_s = Wrap::MirroredRepeat, .wrap_t = Wrap::MirroredRepeat});
+                                    SamplerState{.wrap_s = glsl::Wrap::MirroredRepeat, .wrap_t = glsl::Wrap::MirroredRepeat});
     return c == TextureCase::Bilinear ? bilinear : c == TextureCase::Trilinear ? trilinear : mirrored;
 }
 template <class F, TextureCase C>
@@ -362,6 +384,11 @@ BENCHMARK_CAPTURE(BM_raster, mandelbrot_1thread, "mandelbrot", 1)->Unit(benchmar
 BENCHMARK_TEMPLATE(BM_sin, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_plain, plain_sin)->Name("BM_plain_stdx_sin")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_raster, es_smooth9_tiles128_1thread, "es_smooth9_tiles128", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raster_1thread, Backend::Rasterizer)->Unit(benchmark::kMillisecond)->UseRealTime();
+#if defined(QUADSHADE_HAS_RAYCAST)
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_1thread, Backend::RayCaster)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
 
 BENCHMARK_TEMPLATE(BM_texture2D, Pixels<float, 16>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_texture2D, Quads<float, 4>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
