@@ -14,7 +14,9 @@
 //
 // The BVH is built once, from the vertex stage's gl_Position taken back to world space with the
 // camera's inverse view-projection; each frame reruns the vertex stage for the varyings (and
-// rebuilds only if a vertex moved). Output is bit-identical for any thread count.
+// rebuilds only if a vertex moved). A block that no triangle's screen footprint reaches is the
+// clear colour without a ray cast (screen_footprint.h). Output is bit-identical for any thread
+// count.
 
 #include <memory>
 #include <span>
