@@ -152,9 +152,9 @@ struct ShaderInfo {
     // Program::shade_pair runs two batches as one number of twice the width, as a GPU driver
     // picks a wave size per shader. It pays where a shader is long dependency chains on few
     // values (the noises: 8-22% faster) and costs where its values outgrow the registers or it
-    // works lane by lane (Worley's 3x3 search, texture fetches: up to 1.5x slower). Per pixel
-    // only: quad derivatives on two registers shuffle far slower than they gain. Set from
-    // quadshade-bench-batch-width, which times both for every shader.
+    // works lane by lane (Worley's 3x3 search, texture fetches: up to 1.5x slower). Pixels
+    // wide, or quads wide with llvmpipe's rule (Fine; each quad's derivatives shuffle inside
+    // its register). Set from quadshade-bench-batch-width, which times both for every shader.
     bool wide_batches = false;
     // The GLSL version its sources are compiled as (the #version line the reference writes):
     // 120, or 130 and later for integers, bit operations and the like; from 150 on the
@@ -244,8 +244,9 @@ public:
     // Precondition: mode.derivatives != None unless !info().needs.derivatives.
     virtual void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const = 0;
     // Shades two batches at once, with the same results as shade() on each. For a shader with
-    // ShaderInfo::wide_batches, shaded per pixel in float on AVX-512 (a batch is then one
-    // register), both go through the shader as one number of twice the width: every operation
+    // ShaderInfo::wide_batches, shaded in float on AVX-512 (a batch is then one register) per
+    // pixel or in quads by llvmpipe's rule, both go through the shader as one number of twice
+    // the width: every operation
     // becomes two independent instructions, which the CPU overlaps, while one batch alone
     // leaves a noise shader's long dependency chains exposed. Otherwise two shade() calls.
     virtual void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,

@@ -181,11 +181,17 @@ public:
                     ColorBatch& out_a, ColorBatch& out_b) const override {
         Uniforms scratch;
         const Uniforms& u = with_user_uniforms(given, scratch);
-        static_assert(!kInfo.wide_batches || !kNeeds.derivatives,
-                      "wide batches are per pixel: quads on two registers shuffle slower than they gain");
         if constexpr (kWidePairs && kInfo.wide_batches) {
-            if (!mode.check_undefined && mode.precision == Precision::Float && mode.derivatives == Derivatives::None) {
-                return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
+            if (!mode.check_undefined && mode.precision == Precision::Float) {
+                if constexpr (!kNeeds.derivatives) {
+                    if (mode.derivatives == Derivatives::None) return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
+                } else {
+                    // llvmpipe's rule only: each quad's lanes stay in one register, so its
+                    // derivatives shuffle inside that register as on one batch.
+                    if (mode.derivatives == Derivatives::Fine) {
+                        return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
+                    }
+                }
             }
         }
         shade(mode, a, u, out_a);

@@ -80,13 +80,13 @@ struct Turbulence {
 // and no anti-aliasing (AAWidth::Step), selected in GLSL by SPOTS_LENGTH / SPOTS_STEP.
 template <AAWidth W = AAWidth::Fwidth>
 struct Spots {
-    static constexpr ShaderInfo info{
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
         W == AAWidth::Fwidth ? "spots" : W == AAWidth::Length ? "spots_length" : "spots_step",
         "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
         Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true},
         {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"},
         W == AAWidth::Fwidth ? "" : W == AAWidth::Length ? "#define SPOTS_LENGTH\n" : "#define SPOTS_STEP\n",
-        289.0};  // P.z moves with time; cellular hashes floor(P) mod 289
+        289.0});  // P.z moves with time; cellular hashes floor(P) mod 289
     using VertexStage = Sphere<4, -1>;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -95,11 +95,12 @@ struct Worley {
 
 template <AAWidth W = AAWidth::Length>
 struct WorleyTiles {
-    static constexpr ShaderInfo info{aa_variant_name(W, "worley_tiles", "worley_tiles_fwidth", "worley_tiles_step"),
-                                     "Table 1.1 / Figure 1.5: anti-aliased Worley tiles",
-                                     W == AAWidth::Step ? kPlaneNeeds : kPlaneDerivativeNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/worley_tiles.frag"},
-                                     aa_variant_defines(W)};
+    static constexpr ShaderInfo info = with_wide_batches(
+        ShaderInfo{aa_variant_name(W, "worley_tiles", "worley_tiles_fwidth", "worley_tiles_step"),
+                   "Table 1.1 / Figure 1.5: anti-aliased Worley tiles",
+                   W == AAWidth::Step ? kPlaneNeeds : kPlaneDerivativeNeeds, {"shaders/plane_st.vert"},
+                   {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/worley_tiles.frag"},
+                   aa_variant_defines(W)});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -123,12 +124,12 @@ inline constexpr CheckBound kHalftoneStepCheckBounds[] = {
 template <AAWidth W = AAWidth::Length>
 struct Halftone {
     static constexpr ShaderInfo info = with_check_bounds(
-        ShaderInfo{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
+        with_wide_batches(ShaderInfo{aa_variant_name(W, "halftone", "halftone_fwidth", "halftone_step"),
                    "Table 1.1 / Listing 1.5: CMYK halftone of an image, blended to RGB when minified",
                    Needs{.derivatives = true, .texture = true, .time = false},
                    {"shaders/halftone.vert"},
                    {"noise/simplex2d.glsl", "shaders/aastep.glsl", "shaders/halftone.frag"},
-                   aa_variant_defines(W)},
+                   aa_variant_defines(W)}),
         W == AAWidth::Step ? std::span<const CheckBound>(kHalftoneStepCheckBounds) : std::span<const CheckBound>());
     // halftone.vert; its `dims` uniform is the texture's size.
     struct VertexStage {
