@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <vector>
 #include <string>
 #include <vector>
 
@@ -70,7 +69,6 @@ int main(int argc, char** argv) {
     Uniforms u;
     u.time = 0.5f;
     u.teximage = &texture;
-    u.samplers[0] = &volume;  // the named-sampler shaders' one sampler3D
     const FragmentBatch a = batch_at(0.0f);
     const FragmentBatch b = batch_at(4.0f);
     ColorBatch out_a, out_b;
@@ -79,6 +77,11 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---|---|---|---|\n");
     for (const Program* program : catalogue()) {
         const ShaderInfo& info = program->info();
+        // Each declared sampler bound to a texture of its kind, as a scene binds them.
+        for (std::size_t i = 0; i < info.needs.samplers.size(); ++i) {
+            const SamplerUse& use = info.needs.samplers[i];
+            u.samplers[i] = use.name.empty() ? nullptr : use.dims == 3 ? static_cast<const glsl::Texture*>(&volume) : &texture;
+        }
         const DrawShading shading = choose_shading(info.needs, false, ShadeRequest{});
         const ShadeMode mode = shading.mode;
         // Independent calls, as the rasterizer's blocks are: the CPU may overlap them.
