@@ -58,11 +58,10 @@ struct Simplex3d {
 };
 
 struct Turbulence {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-        "turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
-        {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
-        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
+    static constexpr ShaderInfo info{"turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
+                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
+                                     {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
+                                     noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod};
     using VertexStage = Sphere<2, -1>;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -133,8 +133,8 @@ struct Facets {
 };
 
 struct Blobs {
-    static constexpr ShaderInfo info = with_wide_batches(
-        plane_pattern("blobs", "Figure 1.5: 1 - F1^2", false, {"noise/cellular.glsl", "shaders/blobs.frag"}));
+    static constexpr ShaderInfo info =
+        plane_pattern("blobs", "Figure 1.5: 1 - F1^2", false, {"noise/cellular.glsl", "shaders/blobs.frag"});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -28,9 +28,10 @@ struct ConstantColor {
 };
 
 struct SingleTexture {
-    static constexpr ShaderInfo info{"single_texture", "Table 1.1: one bilinear texture lookup (clamp, no mipmaps)",
-                                     Needs{.derivatives = false, .texture = true, .time = false},
-                                     {"shaders/plane_st.vert"}, {"shaders/single_texture.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(
+        ShaderInfo{"single_texture", "Table 1.1: one bilinear texture lookup (clamp, no mipmaps)",
+                   Needs{.derivatives = false, .texture = true, .time = false}, {"shaders/plane_st.vert"},
+                   {"shaders/single_texture.frag"}});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -65,9 +66,9 @@ struct Perlin {
 };
 
 struct Perlin5 {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-        "perlin5", "Table 1.1 / Figure 1.4: five octaves of 3D simplex noise", kPlaneNeeds, {"shaders/plane_st.vert"},
-        {"noise/simplex3d.glsl", "shaders/perlin5.frag"}, noise::Simplex3dBenchmark::glsl_defines});
+    static constexpr ShaderInfo info{"perlin5", "Table 1.1 / Figure 1.4: five octaves of 3D simplex noise", kPlaneNeeds,
+                                     {"shaders/plane_st.vert"}, {"noise/simplex3d.glsl", "shaders/perlin5.frag"},
+                                     noise::Simplex3dBenchmark::glsl_defines};
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
