@@ -151,10 +151,11 @@ struct ShaderInfo {
     double time_period = 0.0;
     // Program::shade_pair runs two batches as one number of twice the width, as a GPU driver
     // picks a wave size per shader. It pays where a shader is long dependency chains on few
-    // values (the noises: 8-22% faster) and costs where its values outgrow the registers or it
-    // works lane by lane (Worley's 3x3 search, texture fetches: up to 1.5x slower). Pixels
-    // wide, or quads wide with llvmpipe's rule (Fine; each quad's derivatives shuffle inside
-    // its register). Set from quadshade-bench-batch-width, which times both for every shader.
+    // values (the noises: 5-30% faster) or short (the call's fixed cost halves), and costs
+    // where its values outgrow the registers (five octaves of 3D simplex noise, the 3D Worley
+    // searches: 1.4-1.6x slower). Pixels wide, or quads wide with llvmpipe's rule (Fine; each
+    // quad's derivatives shuffle inside its register). Set where quadshade-bench-batch-width,
+    // which times both for every shader, found the pair at most 0.95 of two batches' time.
     bool wide_batches = false;
     // The GLSL version its sources are compiled as (the #version line the reference writes):
     // 120, or 130 and later for integers, bit operations and the like; from 150 on the

@@ -109,10 +109,10 @@ struct NoiseBumpsLit {
 
 // baked_lit.frag: what `quadshade bake --maps color,normal` draws its baked scene with.
 struct BakedLit {
-    static constexpr ShaderInfo info{
-        "baked_lit", "a baked atlas lit: teximage's colour, Lambert with the object-space normal map `normalmap` (quadshade bake)",
-        Needs{.derivatives = false, .texture = true, .time = false, .samplers = {SamplerUse{"normalmap", 2}}},
-        {"shaders/plane_st.vert"}, {"shaders/baked_lit.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
+                                       "baked_lit", "a baked atlas lit: teximage's colour, Lambert with the object-space normal map `normalmap` (quadshade bake)",
+                                       Needs{.derivatives = false, .texture = true, .time = false, .samplers = {SamplerUse{"normalmap", 2}}},
+                                       {"shaders/plane_st.vert"}, {"shaders/baked_lit.frag"}});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {

@@ -36,14 +36,14 @@ struct PatternS {
 };
 
 struct Lines {
-    static constexpr ShaderInfo info = plane_pattern("lines", "Figure 1.2: fract(10 s)", false, {"shaders/lines.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("lines", "Figure 1.2: fract(10 s)", false, {"shaders/lines.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return grey(fract(10.0f * in.st.x)); }
 };
 
 struct Ridges {
-    static constexpr ShaderInfo info = plane_pattern("ridges", "Figure 1.2: abs(fract(5 s) * 2 - 1)", false, {"shaders/ridges.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("ridges", "Figure 1.2: abs(fract(5 s) * 2 - 1)", false, {"shaders/ridges.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -52,7 +52,7 @@ struct Ridges {
 };
 
 struct Checker {
-    static constexpr ShaderInfo info = plane_pattern("checker", "Figure 1.2: checkerboard", false, {"shaders/checker.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("checker", "Figure 1.2: checkerboard", false, {"shaders/checker.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -62,7 +62,7 @@ struct Checker {
 };
 
 struct Wave {
-    static constexpr ShaderInfo info = plane_pattern("wave", "Figure 1.2: sine wave edge, fixed width", false, {"shaders/wave.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("wave", "Figure 1.2: sine wave edge, fixed width", false, {"shaders/wave.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -72,8 +72,8 @@ struct Wave {
 };
 
 struct WaveAA {
-    static constexpr ShaderInfo info = plane_pattern("wave_aa", "Figure 1.2: sine wave edge with aastep", true,
-                                                     {"shaders/aastep.glsl", "shaders/wave_aa.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("wave_aa", "Figure 1.2: sine wave edge with aastep", true,
+                                                                       {"shaders/aastep.glsl", "shaders/wave_aa.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -89,7 +89,7 @@ F brick_distance(const vec2<F>& st) {
 }
 
 struct Bricks {
-    static constexpr ShaderInfo info = plane_pattern("bricks", "Figure 1.2: bricks, fixed width", false, {"shaders/bricks.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("bricks", "Figure 1.2: bricks, fixed width", false, {"shaders/bricks.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -99,9 +99,9 @@ struct Bricks {
 
 template <AAWidth W = AAWidth::Length>
 struct BricksAA {
-    static constexpr ShaderInfo info = plane_pattern(aa_variant_name(W, "bricks_aa", "bricks_aa_fwidth", "bricks_aa_step"),
-                                                     "Figure 1.2: bricks with aastep", W != AAWidth::Step,
-                                                     {"shaders/aastep.glsl", "shaders/bricks_aa.frag"}, aa_variant_defines(W));
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(aa_variant_name(W, "bricks_aa", "bricks_aa_fwidth", "bricks_aa_step"),
+                                                                       "Figure 1.2: bricks with aastep", W != AAWidth::Step,
+                                                                       {"shaders/aastep.glsl", "shaders/bricks_aa.frag"}, aa_variant_defines(W)));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -214,9 +214,9 @@ struct Cellular2x2 {
 };
 
 struct GradientAA {
-    static constexpr ShaderInfo info = plane_pattern(
-        "gradient_aa", "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st", true,
-        {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"});
+    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
+                          "gradient_aa", "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st", true,
+                          {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

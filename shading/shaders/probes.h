@@ -12,9 +12,9 @@ namespace qs::shaders {
 using namespace qs::glsl;
 
 struct DerivativeProbe {
-    static constexpr ShaderInfo info{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
+                                                                    Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
+                                                                    {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}});
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -37,9 +37,9 @@ struct StDerivativeProbe {
 };
 
 struct PositionDerivativeProbe {
-    static constexpr ShaderInfo info{"position_derivative_probe", "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true},
-                                     {"shaders/sphere_spots.vert"}, {"shaders/position_derivative_probe.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"position_derivative_probe", "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
+                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true},
+                                                                    {"shaders/sphere_spots.vert"}, {"shaders/position_derivative_probe.frag"}});
     using VertexStage = Sphere<4, -1>;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -49,9 +49,9 @@ struct PositionDerivativeProbe {
 };
 
 struct SmoothstepProbe {
-    static constexpr ShaderInfo info{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
+                                                                    Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
+                                                                    {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}});
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -75,9 +75,9 @@ struct ArithmeticProbe {
 };
 
 struct FloatEnvironmentProbe {
-    static constexpr ShaderInfo info{"float_env_probe", "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"shaders/float_env_probe.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"float_env_probe", "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
+                                                                    Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .frag_coord = true},
+                                                                    {"shaders/plane_st.vert"}, {"shaders/float_env_probe.frag"}});
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -18,11 +18,11 @@ namespace qs::shaders {
 using namespace qs::glsl;
 
 struct Simplex3dContourAa {
-    static constexpr ShaderInfo info{"simplex3d_contour_aa", "seed 000, Listing 1.2: a contour line of 3D simplex noise, anti-aliased by its analytic gradient through Jacobian3",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = false},
-                                     {"shaders/object_position.vert"},
-                                     {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex3d_contour_aa.frag"},
-                                     noise::Simplex3dDemo::glsl_defines};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex3d_contour_aa", "seed 000, Listing 1.2: a contour line of 3D simplex noise, anti-aliased by its analytic gradient through Jacobian3",
+                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = false},
+                                                                    {"shaders/object_position.vert"},
+                                                                    {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex3d_contour_aa.frag"},
+                                                                    noise::Simplex3dDemo::glsl_defines});
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -56,10 +56,10 @@ struct SolidTime4 {
 // No time period: w = 0.3 time repeats its hash every 289 / 0.3 s, but 0.3 t and 0.3 (t + 963.3)
 // are not the same floats' offsets, so the output does not repeat exactly.
 struct Simplex4dAnimated {
-    static constexpr ShaderInfo info{"simplex4d_animated", "seed 000: 4D simplex noise of (object position, time), an animated solid texture (the noise ours: the chapter prints none)",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
-                                     {"shaders/simplex4d_animated.vert"},
-                                     {"noise/simplex4d.glsl", "shaders/simplex4d_animated.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex4d_animated", "seed 000: 4D simplex noise of (object position, time), an animated solid texture (the noise ours: the chapter prints none)",
+                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
+                                                                    {"shaders/simplex4d_animated.vert"},
+                                                                    {"noise/simplex4d.glsl", "shaders/simplex4d_animated.frag"}});
     using VertexStage = SolidTime4;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -69,11 +69,11 @@ struct Simplex4dAnimated {
 };
 
 struct SimplexBump {
-    static constexpr ShaderInfo info{"simplex_bump", "seed 000: a bump map of 3D simplex noise from its analytic gradient, one directional light (the normal a unit sphere's)",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false},
-                                     {"shaders/object_position.vert"},
-                                     {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex_bump.frag"},
-                                     noise::Simplex3dDemo::glsl_defines};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex_bump", "seed 000: a bump map of 3D simplex noise from its analytic gradient, one directional light (the normal a unit sphere's)",
+                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false},
+                                                                    {"shaders/object_position.vert"},
+                                                                    {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex_bump.frag"},
+                                                                    noise::Simplex3dDemo::glsl_defines});
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -16,13 +16,13 @@ using namespace qs::glsl;
 // the bit (shading/number/sin_cos.h). softpipe calls the C library's sinf, half an ulp of 1 away
 // from it on many cells, which the factor 43758.5453 makes a different hash.
 struct HashSin {
-    static constexpr ShaderInfo info{
-        .name = "hash_sin",
-        .description = "seed 002: the sine hash fract(sin(dot(p, (12.9898, 78.233))) * 43758.5453) of 32 cells across",
-        .needs = kPlaneNeeds,
-        .glsl_vertex = {"shaders/plane_st.vert"},
-        .glsl_fragment = {"shaders/hash_sin.frag"},
-    };
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
+                                       .name = "hash_sin",
+                                       .description = "seed 002: the sine hash fract(sin(dot(p, (12.9898, 78.233))) * 43758.5453) of 32 cells across",
+                                       .needs = kPlaneNeeds,
+                                       .glsl_vertex = {"shaders/plane_st.vert"},
+                                       .glsl_fragment = {"shaders/hash_sin.frag"},
+                                   });
     using VertexStage = PlaneSt;
     template <class F>
     static F cellnoise_sin(const vec2<F>& p) {

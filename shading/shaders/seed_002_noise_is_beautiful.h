@@ -30,11 +30,11 @@ inline constexpr CheckBound kCellHashCheckBounds[] = {
      "(measured: 1495 pixels)"}};
 
 struct HashPcg {
-    static constexpr ShaderInfo info = with_check_bounds(
-        with_glsl_version(ShaderInfo{"hash_pcg", "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_pcg.frag"}},
-                          130),
-        kCellHashCheckBounds);
+    static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(
+                          with_glsl_version(ShaderInfo{"hash_pcg", "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
+                                                       kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_pcg.frag"}},
+                                            130),
+                          kCellHashCheckBounds));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -162,9 +162,9 @@ struct Perlin3dPerm {
 };
 
 struct Simplex2dSkew {
-    static constexpr ShaderInfo info{"simplex2d_skew", "seed 002: simplex noise on the seed's xy_to_uv shear, permutation-polynomial gradients, 10 units across",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_skew.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex2d_skew", "seed 002: simplex noise on the seed's xy_to_uv shear, permutation-polynomial gradients, 10 units across",
+                                                                    kPlaneNeeds, {"shaders/plane_st.vert"},
+                                                                    {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_skew.frag"}});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -173,9 +173,9 @@ struct Simplex2dSkew {
 };
 
 struct Simplex3dFibonacci {
-    static constexpr ShaderInfo info{"simplex3d_fibonacci", "seed 002: 3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the seed's prose); a solid texture",
-                                     kSolidNeeds, {"shaders/object_position.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_fibonacci.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex3d_fibonacci", "seed 002: 3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the seed's prose); a solid texture",
+                                                                    kSolidNeeds, {"shaders/object_position.vert"},
+                                                                    {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_fibonacci.frag"}});
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -185,9 +185,9 @@ struct Simplex3dFibonacci {
 };
 
 struct Simplex2dDnoise {
-    static constexpr ShaderInfo info{"simplex2d_dnoise", "seed 002: the analytic gradient of its 2D simplex noise (dnoise, ours: the seed's sum was an image) as red and green, the noise as blue",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_dnoise.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex2d_dnoise", "seed 002: the analytic gradient of its 2D simplex noise (dnoise, ours: the seed's sum was an image) as red and green, the noise as blue",
+                                                                    kPlaneNeeds, {"shaders/plane_st.vert"},
+                                                                    {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_dnoise.frag"}});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -197,9 +197,9 @@ struct Simplex2dDnoise {
 };
 
 struct Simplex3dDnoise {
-    static constexpr ShaderInfo info{"simplex3d_dnoise", "seed 002: the analytic gradient of its 3D simplex noise as colour; a solid texture",
-                                     kSolidNeeds, {"shaders/object_position.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_dnoise.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex3d_dnoise", "seed 002: the analytic gradient of its 3D simplex noise as colour; a solid texture",
+                                                                    kSolidNeeds, {"shaders/object_position.vert"},
+                                                                    {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_dnoise.frag"}});
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -211,9 +211,9 @@ struct Simplex3dDnoise {
 
 // Octave loops: a float counter to a constant bound, the same in every lane, as in the seed.
 struct FbmSimplex2d {
-    static constexpr ShaderInfo info = with_check_bounds(ShaderInfo{"fbm_simplex2d", "seed 002: fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/fbm_simplex2d.frag"}}, kOctaveCheckBounds);
+    static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(ShaderInfo{"fbm_simplex2d", "seed 002: fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
+                                                       kPlaneNeeds, {"shaders/plane_st.vert"},
+                                                       {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/fbm_simplex2d.frag"}}, kOctaveCheckBounds));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -229,9 +229,9 @@ struct FbmSimplex2d {
 };
 
 struct MultifractalSimplex2d {
-    static constexpr ShaderInfo info = with_check_bounds(ShaderInfo{"multifractal_simplex2d", "seed 002: a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the seed's formula was an image)",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/multifractal_simplex2d.frag"}}, kOctaveCheckBounds);
+    static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(ShaderInfo{"multifractal_simplex2d", "seed 002: a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the seed's formula was an image)",
+                                                       kPlaneNeeds, {"shaders/plane_st.vert"},
+                                                       {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/multifractal_simplex2d.frag"}}, kOctaveCheckBounds));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -280,12 +280,12 @@ struct Scattering3d {
         {"uResolution", UniformType::Vec2, {64.0f, 64.0f}},
     };
     enum : int { uResolution };
-    static constexpr ShaderInfo info = with_uniforms(
-        ShaderInfo{"scattering3d", "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
-                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = true, .frag_coord = true},
-                   {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
-                   {}, 289.0},  // time is the lattice's z, hashed mod 289
-        kUniforms);
+    static constexpr ShaderInfo info = with_wide_batches(with_uniforms(
+                          ShaderInfo{"scattering3d", "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = true, .frag_coord = true},
+                                     {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
+                                     {}, 289.0},  // time is the lattice's z, hashed mod 289
+                          kUniforms));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> mainImage(const vec2<F>& fragCoord, const Uniforms& u) {

@@ -46,8 +46,8 @@ struct EsTutorial {
 };
 
 struct EsTiles2 : EsTutorial {
-    static constexpr ShaderInfo info = shader("es_tiles2", "seed 003, ES tutorial: the square viewport in 2x2 random tiles",
-                                              "shaders/es_tiles2.frag");
+    static constexpr ShaderInfo info = with_wide_batches(shader("es_tiles2", "seed 003, ES tutorial: the square viewport in 2x2 random tiles",
+                                                                "shaders/es_tiles2.frag"));
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
@@ -64,12 +64,12 @@ struct EsTiles2 : EsTutorial {
 template <int Shift>
 struct EsRandomSquareShifted : EsTutorial {
     static constexpr ShaderInfo info =
-        Shift == 0 ? shader("es_random_square", "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded",
-                            "shaders/es_random_square.frag")
-        : Shift < 0 ? shader("es_random_square_minus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by -1",
-                             "shaders/es_random_square_minus1.frag")
-                    : shader("es_random_square_plus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
-                             "shaders/es_random_square_plus1.frag");
+                          with_wide_batches(Shift == 0 ? shader("es_random_square", "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded",
+                                              "shaders/es_random_square.frag")
+                          : Shift < 0 ? shader("es_random_square_minus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by -1",
+                                               "shaders/es_random_square_minus1.frag")
+                                      : shader("es_random_square_plus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
+                                               "shaders/es_random_square_plus1.frag"));
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
@@ -84,8 +84,8 @@ using EsRandomSquareMinus1 = EsRandomSquareShifted<-1>;
 using EsRandomSquarePlus1 = EsRandomSquareShifted<1>;
 
 struct EsTiles128 : EsTutorial {
-    static constexpr ShaderInfo info = shader("es_tiles128", "seed 003, ES tutorial: the square viewport in 128x128 random tiles",
-                                              "shaders/es_tiles128.frag");
+    static constexpr ShaderInfo info = with_wide_batches(shader("es_tiles128", "seed 003, ES tutorial: the square viewport in 128x128 random tiles",
+                                                                "shaders/es_tiles128.frag"));
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
@@ -138,8 +138,8 @@ struct EsSmooth9Tiles128 : EsTutorial {
 };
 
 struct EsSmooth5Tiles8 : EsTutorial {
-    static constexpr ShaderInfo info = shader("es_smooth5_tiles8", "seed 003, ES tutorial: 8 tiles, each half its own noise and 1/8 of each edge neighbour's (whole window)",
-                                              "shaders/es_smooth5_tiles8.frag");
+    static constexpr ShaderInfo info = with_wide_batches(shader("es_smooth5_tiles8", "seed 003, ES tutorial: 8 tiles, each half its own noise and 1/8 of each edge neighbour's (whole window)",
+                                                                "shaders/es_smooth5_tiles8.frag"));
     template <class F>
     static F smoothNoise(const vec2<F>& p) {
         vec2<F> nn(p.x, p.y + 1.0f);

@@ -189,8 +189,8 @@ struct LawlorStainedGlass : LawlorGrid<LawlorStainedGlass> {
 };
 
 struct LawlorTextureHigh : LawlorGrid<LawlorTextureHigh> {
-    static constexpr ShaderInfo info{"lawlor_texture_high", "seed 004, Lawlor: the repeating noise texture, ten times across",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_high.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"lawlor_texture_high", "seed 004, Lawlor: the repeating noise texture, ten times across",
+                                                                    kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_high.frag"}});
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         return texture2D(u.sampler2D(0), loc);
@@ -198,8 +198,8 @@ struct LawlorTextureHigh : LawlorGrid<LawlorTextureHigh> {
 };
 
 struct LawlorTextureLow : LawlorGrid<LawlorTextureLow> {
-    static constexpr ShaderInfo info{"lawlor_texture_low", "seed 004, Lawlor: the repeating noise texture stretched, five times across",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_low.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"lawlor_texture_low", "seed 004, Lawlor: the repeating noise texture stretched, five times across",
+                                                                    kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_low.frag"}});
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         return texture2D(u.sampler2D(0), loc * 0.5f);
@@ -207,8 +207,8 @@ struct LawlorTextureLow : LawlorGrid<LawlorTextureLow> {
 };
 
 struct LawlorTextureTwoOctaves : LawlorGrid<LawlorTextureTwoOctaves> {
-    static constexpr ShaderInfo info{"lawlor_texture_two_octaves", "seed 004, Lawlor: the high and the low octave of the noise texture, averaged",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_two_octaves.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"lawlor_texture_two_octaves", "seed 004, Lawlor: the high and the low octave of the noise texture, averaged",
+                                                                    kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_two_octaves.frag"}});
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         const sampler2D& tex4 = u.sampler2D(0);
@@ -241,10 +241,10 @@ struct LawlorTextureOctaves {
 // pixels, most by ulps and 574 over 1/255 near the set's boundary, where an ulp changes the
 // escape time; Mesa's order on none.
 struct LawlorMandelbrot {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"lawlor_mandelbrot", "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
-                   kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_mandelbrot.frag"}},
-        120);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"lawlor_mandelbrot", "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
+                                     kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_mandelbrot.frag"}},
+                          120));
     using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -38,10 +38,10 @@ F value_noise(const vec2<F>& p) {
 }
 
 struct PcgValueNoise {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"pcg_value_noise", "Noise is Beautiful: value noise from the PCG integer hash, four octaves (GLSL 1.30)",
-                   kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/pcg_value_noise.frag"}},
-        130);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"pcg_value_noise", "Noise is Beautiful: value noise from the PCG integer hash, four octaves (GLSL 1.30)",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/pcg_value_noise.frag"}},
+                          130));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -53,10 +53,10 @@ struct PcgValueNoise {
 };
 
 struct Mandelbrot {
-    static constexpr ShaderInfo info{"mandelbrot", "Lawlor, Procedural Solid Texturing: the Mandelbrot set in window coordinates, up to 100 iterations with break",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                           .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"shaders/mandelbrot.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"mandelbrot", "Lawlor, Procedural Solid Texturing: the Mandelbrot set in window coordinates, up to 100 iterations with break",
+                                                                    Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
+                                                                          .frag_coord = true},
+                                                                    {"shaders/plane_st.vert"}, {"shaders/mandelbrot.frag"}});
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -29,8 +29,8 @@ struct TextureLodProbe {
 };
 
 struct TextureBiasProbe {
-    static constexpr ShaderInfo info{"texture_bias_probe", "probe: texture2D with a bias from -1 to 2 per pixel",
-                                     kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_bias_probe.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"texture_bias_probe", "probe: texture2D with a bias from -1 to 2 per pixel",
+                                                                    kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_bias_probe.frag"}});
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -67,10 +67,10 @@ inline constexpr Needs kTexelFetchNeeds{.coordinates = Coordinates::None, .deriv
                                         .time = false, .frag_coord = true};
 
 struct TexelFetchProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
-                   kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
-        130);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
+                                     kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
+                          130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -86,12 +86,12 @@ struct TexelFetchProbe {
 };
 
 struct TexelFetch3dProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
-                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                         .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
-                   {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
-        130);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
+                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
+                                           .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
+                                     {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
+                          130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -108,11 +108,11 @@ struct TexelFetch3dProbe {
 
 // Seed 001's noiseFast on the object position (as improved noise, which it approximates).
 struct FastNoise {
-    static constexpr ShaderInfo info{
-        "fast_noise", "seed 001: noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false,
-              .samplers = {SamplerUse{"noise3dSampler", 3}}},
-        {"shaders/object_position.vert"}, {"shaders/fast_noise.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
+                                       "fast_noise", "seed 001: noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
+                                       Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false,
+                                             .samplers = {SamplerUse{"noise3dSampler", 3}}},
+                                       {"shaders/object_position.vert"}, {"shaders/fast_noise.frag"}});
     using VertexStage = ObjectPosition;
     static constexpr float PI = 3.14159265358979f;
     template <class F>

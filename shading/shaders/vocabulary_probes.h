@@ -16,10 +16,10 @@ inline constexpr Needs kWindowProbeNeeds{.coordinates = Coordinates::None, .deri
                                          .frag_coord = true};
 
 struct IntegerProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"integer_probe", "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_probe.frag"}},
-        130);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"integer_probe", "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
+                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_probe.frag"}},
+                          130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -59,10 +59,10 @@ struct IntegerProbe {
 };
 
 struct IntegerUndefinedProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"integer_undefined_probe", "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_undefined_probe.frag"}},
-        130);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"integer_undefined_probe", "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
+                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_undefined_probe.frag"}},
+                          130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -99,10 +99,10 @@ struct IntegerUndefinedProbe {
 };
 
 struct BoolProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"bool_probe", "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/bool_probe.frag"}},
-        130);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"bool_probe", "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
+                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/bool_probe.frag"}},
+                          130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -120,8 +120,8 @@ struct BoolProbe {
 };
 
 struct LoopProbe {
-    static constexpr ShaderInfo info{"loop_probe", "probe: loops that exit per fragment: break, continue, return, while, nested",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/loop_probe.frag"}};
+    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"loop_probe", "probe: loops that exit per fragment: break, continue, return, while, nested",
+                                                                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/loop_probe.frag"}});
     using VertexStage = PlanePosition;
 
     template <class F>
@@ -258,10 +258,10 @@ struct BuiltinsProbe {
 };
 
 struct SinCosProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"sin_cos_probe", "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/sin_cos_probe.frag"}},
-        330);
+    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
+                          ShaderInfo{"sin_cos_probe", "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
+                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/sin_cos_probe.frag"}},
+                          330));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -293,11 +293,11 @@ struct UniformProbe {
     };
     enum : int { uScale, uTint, uBands, uCells, uSeed, uRotate, uWarp, uResolution };
     static_assert(kUniforms[uResolution].name == "uResolution" && kUniforms[uWarp].name == "uWarp");
-    static constexpr ShaderInfo info = with_uniforms(
-        with_glsl_version(ShaderInfo{"uniform_probe", "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
-                          130),
-        kUniforms);
+    static constexpr ShaderInfo info = with_wide_batches(with_uniforms(
+                          with_glsl_version(ShaderInfo{"uniform_probe", "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
+                                                       kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
+                                            130),
+                          kUniforms));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
