@@ -5,7 +5,8 @@
 // faster (ratio below 1); the others run it as two calls (ratio about 1). To see whether another
 // shader gains, set its flag and run this again.
 //
-//   quadshade-bench-batch-width [--repeat N]     (median of N timings, default 15)
+//   quadshade-bench-batch-width [--repeat N] [SHADER...]   (median of N timings, default 15;
+//                                                         the named shaders only, if any)
 
 #include <algorithm>
 #include <chrono>
@@ -54,11 +55,15 @@ double time_ns(int repeat, ShadeTwo shade_two) {
 
 int main(int argc, char** argv) {
     int repeat = 15;
+    std::vector<std::string> only;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
             repeat = std::max(1, std::atoi(argv[++i]));
+        } else if (argv[i][0] != '-' && find_program(argv[i])) {
+            only.emplace_back(argv[i]);
         } else {
-            std::fprintf(stderr, "usage: %s [--repeat N]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--repeat N] [SHADER...]\n(%s is not an option or a shader of the catalogue)\n",
+                         argv[0], argv[i]);
             return 2;
         }
     }
@@ -77,6 +82,7 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---|---|---|---|\n");
     for (const Program* program : catalogue()) {
         const ShaderInfo& info = program->info();
+        if (!only.empty() && std::find(only.begin(), only.end(), std::string(info.name)) == only.end()) continue;
         // Each declared sampler bound to a texture of its kind, as a scene binds them.
         for (std::size_t i = 0; i < info.needs.samplers.size(); ++i) {
             const SamplerUse& use = info.needs.samplers[i];
