@@ -1,4 +1,5 @@
-// The chapter's other patterns (Listing 1.3's simplex noise: simplex2d.cpp), instantiated for every number type (see program_of.h).
+// The chapter's other patterns, instantiated for every number type (see program_of.h); Listing
+// 1.3's simplex noise is in simplex2d.cpp.
 #include "shading/shaders/collections.h"
 #include "shading/shaders/patterns.h"
 

@@ -215,8 +215,8 @@ struct Cellular2x2 {
 
 struct GradientAA {
     static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
-                          "gradient_aa", "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st", true,
-                          {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"}));
+        "gradient_aa", "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st", true,
+        {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"}));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

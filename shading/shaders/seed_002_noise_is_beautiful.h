@@ -31,10 +31,10 @@ inline constexpr CheckBound kCellHashCheckBounds[] = {
 
 struct HashPcg {
     static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(
-                          with_glsl_version(ShaderInfo{"hash_pcg", "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
-                                                       kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_pcg.frag"}},
-                                            130),
-                          kCellHashCheckBounds));
+        with_glsl_version(ShaderInfo{"hash_pcg", "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
+                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_pcg.frag"}},
+                          130),
+        kCellHashCheckBounds));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -281,11 +281,11 @@ struct Scattering3d {
     };
     enum : int { uResolution };
     static constexpr ShaderInfo info = with_wide_batches(with_uniforms(
-                          ShaderInfo{"scattering3d", "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = true, .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
-                                     {}, 289.0},  // time is the lattice's z, hashed mod 289
-                          kUniforms));
+        ShaderInfo{"scattering3d", "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
+                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = true, .frag_coord = true},
+                   {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
+                   {}, 289.0},  // time is the lattice's z, hashed mod 289
+        kUniforms));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> mainImage(const vec2<F>& fragCoord, const Uniforms& u) {

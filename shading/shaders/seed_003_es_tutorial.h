@@ -64,12 +64,12 @@ struct EsTiles2 : EsTutorial {
 template <int Shift>
 struct EsRandomSquareShifted : EsTutorial {
     static constexpr ShaderInfo info =
-                          with_wide_batches(Shift == 0 ? shader("es_random_square", "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded",
-                                              "shaders/es_random_square.frag")
-                          : Shift < 0 ? shader("es_random_square_minus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by -1",
-                                               "shaders/es_random_square_minus1.frag")
-                                      : shader("es_random_square_plus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
-                                               "shaders/es_random_square_plus1.frag"));
+        with_wide_batches(Shift == 0 ? shader("es_random_square", "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded",
+                            "shaders/es_random_square.frag")
+        : Shift < 0 ? shader("es_random_square_minus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by -1",
+                             "shaders/es_random_square_minus1.frag")
+                    : shader("es_random_square_plus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
+                             "shaders/es_random_square_plus1.frag"));
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;

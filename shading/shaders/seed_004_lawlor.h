@@ -242,9 +242,9 @@ struct LawlorTextureOctaves {
 // escape time; Mesa's order on none.
 struct LawlorMandelbrot {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"lawlor_mandelbrot", "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
-                                     kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_mandelbrot.frag"}},
-                          120));
+        ShaderInfo{"lawlor_mandelbrot", "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
+                   kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_mandelbrot.frag"}},
+        120));
     using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -39,9 +39,9 @@ F value_noise(const vec2<F>& p) {
 
 struct PcgValueNoise {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"pcg_value_noise", "Noise is Beautiful: value noise from the PCG integer hash, four octaves (GLSL 1.30)",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/pcg_value_noise.frag"}},
-                          130));
+        ShaderInfo{"pcg_value_noise", "Noise is Beautiful: value noise from the PCG integer hash, four octaves (GLSL 1.30)",
+                   kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/pcg_value_noise.frag"}},
+        130));
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -68,9 +68,9 @@ inline constexpr Needs kTexelFetchNeeds{.coordinates = Coordinates::None, .deriv
 
 struct TexelFetchProbe {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
-                                     kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
-                          130));
+        ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
+                   kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
+        130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -87,11 +87,11 @@ struct TexelFetchProbe {
 
 struct TexelFetch3dProbe {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                           .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
-                                     {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
-                          130));
+        ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
+                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
+                         .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
+                   {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
+        130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {

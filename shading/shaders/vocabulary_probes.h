@@ -17,9 +17,9 @@ inline constexpr Needs kWindowProbeNeeds{.coordinates = Coordinates::None, .deri
 
 struct IntegerProbe {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"integer_probe", "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_probe.frag"}},
-                          130));
+        ShaderInfo{"integer_probe", "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
+                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_probe.frag"}},
+        130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -60,9 +60,9 @@ struct IntegerProbe {
 
 struct IntegerUndefinedProbe {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"integer_undefined_probe", "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_undefined_probe.frag"}},
-                          130));
+        ShaderInfo{"integer_undefined_probe", "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
+                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_undefined_probe.frag"}},
+        130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -100,9 +100,9 @@ struct IntegerUndefinedProbe {
 
 struct BoolProbe {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"bool_probe", "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/bool_probe.frag"}},
-                          130));
+        ShaderInfo{"bool_probe", "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
+                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/bool_probe.frag"}},
+        130));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -259,9 +259,9 @@ struct BuiltinsProbe {
 
 struct SinCosProbe {
     static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-                          ShaderInfo{"sin_cos_probe", "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/sin_cos_probe.frag"}},
-                          330));
+        ShaderInfo{"sin_cos_probe", "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
+                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/sin_cos_probe.frag"}},
+        330));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -294,10 +294,10 @@ struct UniformProbe {
     enum : int { uScale, uTint, uBands, uCells, uSeed, uRotate, uWarp, uResolution };
     static_assert(kUniforms[uResolution].name == "uResolution" && kUniforms[uWarp].name == "uWarp");
     static constexpr ShaderInfo info = with_wide_batches(with_uniforms(
-                          with_glsl_version(ShaderInfo{"uniform_probe", "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
-                                                       kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
-                                            130),
-                          kUniforms));
+        with_glsl_version(ShaderInfo{"uniform_probe", "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
+                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
+                          130),
+        kUniforms));
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
