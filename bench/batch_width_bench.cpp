@@ -62,8 +62,8 @@ int main(int argc, char** argv) {
         } else if (argv[i][0] != '-' && find_program(argv[i])) {
             only.emplace_back(argv[i]);
         } else {
-            std::fprintf(stderr, "usage: %s [--repeat N] [SHADER...]\n(%s is not an option or a shader of the catalogue)\n",
-                         argv[0], argv[i]);
+            std::fprintf(stderr, "usage: %s [--repeat N] [SHADER...]\n'%s': %s\n", argv[0], argv[i],
+                         std::strcmp(argv[i], "--repeat") == 0 ? "needs a number" : "neither an option nor a catalogue shader");
             return 2;
         }
     }

@@ -5,8 +5,9 @@
 //
 // A triangle's footprint is its projection grown by the rounding of what Embree traces: float
 // vertices and float rays. Where Embree reports a hit, the exact ray through the pixel centre
-// passes within that slack of the triangle, so the pixel centre lies in the footprint. A triangle that comes near the eye plane (w <= 0 within the slack) projects
-// without bound: it covers the whole screen.
+// passes within that slack of the triangle, so the pixel centre lies in the footprint. A
+// triangle that comes near the eye plane (w <= 0 within the slack) projects without bound: it
+// covers the whole screen.
 
 #include <algorithm>
 #include <cstdint>

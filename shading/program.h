@@ -247,9 +247,9 @@ public:
     // Shades two batches at once, with the same results as shade() on each. For a shader with
     // ShaderInfo::wide_batches, shaded in float on AVX-512 (a batch is then one register) per
     // pixel or in quads by llvmpipe's rule, both go through the shader as one number of twice
-    // the width: every operation
-    // becomes two independent instructions, which the CPU overlaps, while one batch alone
-    // leaves a noise shader's long dependency chains exposed. Otherwise two shade() calls.
+    // the width: every operation becomes two independent instructions, which the CPU overlaps,
+    // while one batch alone leaves a noise shader's long dependency chains exposed. Otherwise
+    // two shade() calls.
     virtual void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
                             ColorBatch& out_a, ColorBatch& out_b) const = 0;
 };

@@ -182,16 +182,15 @@ public:
         Uniforms scratch;
         const Uniforms& u = with_user_uniforms(given, scratch);
         if constexpr (kWidePairs && kInfo.wide_batches) {
-            if (!mode.check_undefined && mode.precision == Precision::Float) {
-                if constexpr (!kNeeds.derivatives) {
-                    if (mode.derivatives == Derivatives::None) return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
-                } else {
-                    // llvmpipe's rule only: each quad's lanes stay in one register, so its
-                    // derivatives shuffle inside that register as on one batch.
-                    if (mode.derivatives == Derivatives::Fine) {
-                        return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
-                    }
+            const bool wide_float = !mode.check_undefined && mode.precision == Precision::Float;
+            if constexpr (!kNeeds.derivatives) {
+                if (wide_float && mode.derivatives == Derivatives::None) {
+                    return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
                 }
+            } else if (wide_float && mode.derivatives == Derivatives::Fine) {
+                // llvmpipe's rule only: each quad's lanes stay in one register, so its
+                // derivatives shuffle inside that register as on one batch.
+                return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
             }
         }
         shade(mode, a, u, out_a);
