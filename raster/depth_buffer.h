@@ -34,9 +34,16 @@ inline float depth24(float z) {
 
 // depth24 on every lane of a batch, to the bit.
 inline lanes16::Floats depth24(const lanes16::Floats& z) {
-#if defined(__AVX__)
     // max(z, 0) takes 0 where z is NaN (its second operand), as std::fmax; round mode 0xC is the
     // current rounding mode without exceptions: std::nearbyint.
+#if defined(__AVX512F__)
+    // One register (as two halves, they met again through memory: a load spanning two stores
+    // waits for both to be written, a stall on every block's depth test).
+    static_assert(sizeof(lanes16::Floats) == sizeof(__m512));
+    const __m512 clamped = _mm512_min_ps(_mm512_max_ps(__m512(z), _mm512_setzero_ps()), _mm512_set1_ps(1.0f));
+    return lanes16::Floats(_mm512_roundscale_ps(_mm512_mul_ps(clamped, _mm512_set1_ps(kDepthCleared)),
+                                                _MM_FROUND_CUR_DIRECTION | _MM_FROUND_NO_EXC));
+#elif defined(__AVX__)
     __m256 parts[2];
     std::memcpy(parts, &z, sizeof parts);
     for (__m256& p : parts) {
