@@ -869,7 +869,7 @@ void sample_plain_2d(const Texture& tex, const Lookup& l) {
             q = split(gather_near(t, count, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
         }
         // Unrolled, the texels stay in registers (as a loop, GCC picked each channel's half
-        // through memory: the halftone's frame took 6% longer).
+        // through memory: the halftone's frame took 7% longer).
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
     }
