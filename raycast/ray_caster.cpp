@@ -302,9 +302,15 @@ private:
     void set_up(const PreparedDraw& d, const Mesh& m, const HitBatch& b, const BlockRays* cast, FragmentBatch& in) {
         using namespace lanes16;
         const LaneBatch& at = b.lanes;
-        std::uint32_t primitive[kBatchLanes];
-        // Unused lanes repeat lane 0 (and write nothing).
-        for (int i = 0; i < kBatchLanes; ++i) primitive[i] = i < at.count ? b.primitive[i] : b.primitive[0];
+        // Unused lanes repeat lane 0 (and write nothing). Padded in a register and stored whole:
+        // PrimitiveGroups loads all sixteen at once, which waits for sixteen separate stores to
+        // reach the cache (a load spanning several stores is not forwarded).
+        const Ints hit = std::bit_cast<Ints>(b.primitive);
+        Ints lane;
+        for (int i = 0; i < kBatchLanes; ++i) lane[i] = i;
+        const Ints padded = lane < at.count ? hit : Ints{} + hit[0];
+        alignas(64) std::uint32_t primitive[kBatchLanes];
+        std::memcpy(primitive, &padded, sizeof primitive);
         const PrimitiveGroups groups(primitive);
         auto plane = [&](const glm::dvec3 TrianglePlane::*v) {
             auto component = [&](int c) {
