@@ -102,7 +102,7 @@ public:
         frag_coord_set_ = d.frag_coord || depth_test_;
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
-        if (lo_x > hi_x || lo_y > hi_y) return;
+        if (lo_x > hi_x || lo_y > hi_y || misses_tile(t, x0, y0)) return;
         if (!depth_test_ && covers_tile(t, x0, y0)) {
             if (fused_) {
                 shade_tile<true>(x0, y0);
@@ -132,6 +132,16 @@ public:
         }
         flush_blocks();
         flush(pending_);
+    }
+
+    // Whether no pixel centre of the tile at (x0, y0) lies inside t: the blocks' test below, once
+    // for the whole tile. Triangles are binned by their bounding boxes, and a large one misses
+    // many of the tiles its box touches (half of them for either triangle of a square).
+    static bool misses_tile(const TriangleSetup& t, int x0, int y0) {
+        for (const EdgeFunction& e : t.edges) {
+            if (e.at(x0, y0) + e.most_offset(kTileSize) <= 0) return true;
+        }
+        return false;
     }
 
     // Whether the tile at (x0, y0) lies inside the image and every pixel centre of it inside t.
