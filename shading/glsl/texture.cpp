@@ -843,7 +843,7 @@ Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& in
 }
 
 template <AxisMode MS, AxisMode MT, bool Linear>
-void sample_plain_2d(const Texture& tex, const Lookup& l) {
+void sample_plain_2d(const Texture& tex, const PlainLookup& l) {
     const Ints width = splat(tex.width), height = splat(tex.height);
     const std::uint32_t* t = tex.texels.data();
     const std::size_t count = tex.texels.size();
@@ -875,7 +875,7 @@ void sample_plain_2d(const Texture& tex, const Lookup& l) {
     }
 }
 
-using PlainSampler = void (*)(const Texture&, const Lookup&);
+using PlainSampler = void (*)(const Texture&, const PlainLookup&);
 template <AxisMode MS, AxisMode MT>
 PlainSampler plain_sampler(bool linear) {
     return linear ? &sample_plain_2d<MS, MT, true> : &sample_plain_2d<MS, MT, false>;
@@ -889,11 +889,11 @@ PlainSampler plain_sampler(AxisMode mt, bool linear) {
     }
     return plain_sampler<MS, AxisMode::RepeatNpot>(linear);
 }
-// The plain lookup's function for this texture and lookup, or null where it is not one.
-PlainSampler plain_sampler(const Texture& tex, const Lookup& l) {
+// The plain lookup's function for this texture, or null where its lookups are not plain ones.
+PlainSampler plain_sampler(const Texture& tex) {
     const SamplerState& st = tex.sampler;
-    if (tex.dims != 2 || l.rho2 || l.lod || l.d_ds[0] || st.min != st.mag || st.mip != MipFilter::None ||
-        st.wrap_s == Wrap::MirroredRepeat || st.wrap_t == Wrap::MirroredRepeat) {
+    if (tex.dims != 2 || st.min != st.mag || st.mip != MipFilter::None || st.wrap_s == Wrap::MirroredRepeat ||
+        st.wrap_t == Wrap::MirroredRepeat) {
         return nullptr;
     }
     auto mode = [](Wrap w, int size) {
@@ -913,13 +913,20 @@ PlainSampler plain_sampler(const Texture& tex, const Lookup& l) {
 // Flattened: the helpers above become one straight body (called as functions, their vectors
 // would travel through memory).
 [[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
-    if (const PlainSampler plain = plain_sampler(tex, l)) {
-        plain(tex, l);
+    const PlainSampler plain = l.rho2 || l.lod || l.d_ds[0] ? nullptr : plain_sampler(tex);
+    if (plain) {
+        plain(tex, {l.lanes, l.s, l.t, l.rgba});
     } else if (tex.dims == 3) {
         sample_dims<3>(tex, l);
     } else {
         sample_dims<2>(tex, l);
     }
+}
+
+bool sample_plain(const Texture& tex, const PlainLookup& l) {
+    const PlainSampler plain = plain_sampler(tex);
+    if (plain) plain(tex, l);
+    return plain != nullptr;
 }
 
 // lp_build_fetch_texel: the level is lod + first level (0); a lane outside the level's size or

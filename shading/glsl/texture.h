@@ -115,6 +115,20 @@ struct Lookup {
 };
 void sample(const Texture& tex, const Lookup& lookup);
 
+// The plain lookup, most of those shaders make (single_texture's, the halftone's four): a 2D
+// texture whose sampler needs no level of detail (one level, min == mag) and mirrors no axis,
+// read with no derivatives carried and no explicit level. `sample` takes it for such a Lookup;
+// this entry takes any number of lanes in one call and no descriptor beyond the arrays, since
+// for a lookup this cheap the call itself and filling a Lookup were most of the cost. Returns
+// false, writing nothing, for a texture whose lookups are not plain ones.
+struct PlainLookup {
+    int lanes;  // any number
+    const float* s;
+    const float* t;
+    std::array<float*, 4> rgba;  // out
+};
+bool sample_plain(const Texture& tex, const PlainLookup& lookup);
+
 // texelFetch's lanes: integer texel coordinates and level, no filter and no wrap; a lane outside
 // the level, or a level outside the texture's, reads (0, 0, 0, 0) as on llvmpipe.
 struct Fetch {
@@ -226,7 +240,11 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, Lod kind, c
         }
     }
     constexpr bool derivatives = is_dual2<F>::value;
-    for (int i = 0; i < N; i += kMaxLanes) {
+    bool plain = false;
+    if constexpr (Dims == 2 && !derivatives) {
+        plain = kind != Lod::Explicit && !implicit && sample_plain(tex, {N, c[0], c[1], {rgba[0], rgba[1], rgba[2], rgba[3]}});
+    }
+    for (int i = 0; !plain && i < N; i += kMaxLanes) {
         Lookup l;
         l.lanes = N - i < kMaxLanes ? N - i : kMaxLanes;
         l.s = c[0] + i, l.t = c[1] + i;
