@@ -115,7 +115,7 @@ struct Lookup {
 };
 void sample(const Texture& tex, const Lookup& lookup);
 
-// The plain lookup, most of those shaders make (single_texture's, the halftone's four): a 2D
+// The plain lookup, the kind most shaders make (single_texture's, the halftone's four): a 2D
 // texture whose sampler needs no level of detail (one level, min == mag) and mirrors no axis,
 // read with no derivatives carried and no explicit level. `sample` takes it for such a Lookup;
 // this entry takes any number of lanes in one call and no descriptor beyond the arrays, since
