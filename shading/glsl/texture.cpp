@@ -910,23 +910,21 @@ PlainSampler plain_sampler(const Texture& tex) {
 }
 }  // namespace
 
-// Flattened: the helpers above become one straight body (called as functions, their vectors
-// would travel through memory).
-[[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
-    const PlainSampler plain = l.rho2 || l.lod || l.d_ds[0] ? nullptr : plain_sampler(tex);
-    if (plain) {
-        plain(tex, {l.lanes, l.s, l.t, l.rgba});
-    } else if (tex.dims == 3) {
-        sample_dims<3>(tex, l);
-    } else {
-        sample_dims<2>(tex, l);
-    }
-}
-
 bool sample_plain(const Texture& tex, const PlainLookup& l) {
     const PlainSampler plain = plain_sampler(tex);
     if (plain) plain(tex, l);
     return plain != nullptr;
+}
+
+// Flattened: the helpers above become one straight body (called as functions, their vectors
+// would travel through memory). A descriptor of a plain lookup takes sample_plain, as shaders do.
+[[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
+    if (!l.rho2 && !l.lod && !l.d_ds[0] && sample_plain(tex, {l.lanes, l.s, l.t, l.rgba})) return;
+    if (tex.dims == 3) {
+        sample_dims<3>(tex, l);
+    } else {
+        sample_dims<2>(tex, l);
+    }
 }
 
 // lp_build_fetch_texel: the level is lod + first level (0); a lane outside the level's size or

@@ -376,6 +376,56 @@ TEST_CASE("texture lookups: texel centres and magnified ramps equal the oracle",
     CHECK(cases == 6 * 8 * 25 * 3);
 }
 
+// sample_plain, the entry shaders' plain lookups take (texture.h): any number of lanes in one
+// call (a pair of batches is 32; odd counts end in part of a register), each lane the oracle's;
+// a texture whose lookups are not plain ones is refused and nothing written.
+TEST_CASE("texture lookups: the plain entry takes any number of lanes and refuses other samplers", "[textures]") {
+    std::mt19937 rng(20261125);
+    const int sizes[][2] = {{256, 256}, {13, 7}, {1, 1}, {64, 32}};
+    const Wrap wraps[2] = {Wrap::Repeat, Wrap::ClampToEdge};
+    int cases = 0;
+    for (const auto& size : sizes) {
+        const int w = size[0], h = size[1];
+        const auto texels = random_texels(rng, std::size_t(w) * std::size_t(h));
+        for (int variant = 0; variant < 8; ++variant) {
+            SamplerState st;
+            st.wrap_s = wraps[variant & 1], st.wrap_t = wraps[(variant >> 1) & 1];
+            st.min = st.mag = variant & 4 ? Filter::Nearest : Filter::Linear;
+            const sampler2D tex(w, h, texels.data(), st);
+            for (int lanes : {32, 37, 17, 3}) {
+                std::vector<float> s(static_cast<std::size_t>(lanes), 0.0f), t(s);
+                for (int i = 0; i < lanes; ++i) s[std::size_t(i)] = random_coordinate(rng), t[std::size_t(i)] = random_coordinate(rng);
+                std::array<std::vector<float>, 4> rgba;
+                for (auto& c : rgba) c.assign(std::size_t(lanes), -1.0f);
+                REQUIRE(texture_detail::sample_plain(tex, {lanes, s.data(), t.data(), {rgba[0].data(), rgba[1].data(), rgba[2].data(), rgba[3].data()}}));
+                for (std::size_t i = 0; i < std::size_t(lanes); ++i) {
+                    const auto want = oracle(tex, {s[i], t[i], 0.0f}, nullptr, nullptr, nullptr);
+                    for (std::size_t ch = 0; ch < 4; ++ch) {
+                        INFO("size " << w << "x" << h << " variant " << variant << " lanes " << lanes << " lane " << i << " st (" << s[i]
+                                     << ", " << t[i] << ") channel " << ch);
+                        REQUIRE(std::bit_cast<std::uint32_t>(rgba[ch][i]) == std::bit_cast<std::uint32_t>(want[ch]));
+                    }
+                }
+                ++cases;
+            }
+        }
+    }
+    CHECK(cases == 4 * 8 * 4);
+    // Not plain: a mirrored axis, mipmaps, different min and mag filters.
+    const auto texels = random_texels(rng, 8 * 8);
+    SamplerState mirrored, mipmapped, mixed;
+    mirrored.wrap_t = Wrap::MirroredRepeat;
+    mipmapped.mip = MipFilter::Nearest;
+    mixed.min = Filter::Nearest;
+    for (const SamplerState& st : {mirrored, mipmapped, mixed}) {
+        const sampler2D tex(8, 8, texels.data(), st);
+        float s[4] = {0.1f, 0.2f, 0.3f, 0.4f}, rgba[4][4];
+        for (auto& c : rgba) std::fill_n(c, 4, -1.0f);
+        CHECK_FALSE(texture_detail::sample_plain(tex, {4, s, s, {rgba[0], rgba[1], rgba[2], rgba[3]}}));
+        for (auto& c : rgba) CHECK(std::count(c, c + 4, -1.0f) == 4);
+    }
+}
+
 TEST_CASE("texture lookups: a 3D texture of one slice with CLAMP_TO_EDGE on r samples as its 2D image", "[textures]") {
     std::mt19937 rng(7);
     const auto texels = random_texels(rng, 12 * 5);
