@@ -333,46 +333,52 @@ TEST_CASE("texture lookups: the lanes equal a scalar oracle of llvmpipe's rules,
 // halftone's explicit bilinear filter), next to registers where one lane is off centre, and
 // ramps of a fraction of a texel a lane along one row or column (a magnified texture), up to
 // the texture's last texels, each against the oracle.
-TEST_CASE("texture lookups: texel centres and magnified ramps equal the oracle", "[textures]") {
-    std::mt19937 rng(20261124);
-    const int sizes[][2] = {{256, 256}, {8, 16}, {5, 3}, {13, 7}, {1, 1}, {64, 32}};
+// Every sampler the plain lookup takes (REPEAT or CLAMP_TO_EDGE on each axis, LINEAR or NEAREST
+// for both filters) over a texture of random texels of each size: f(texture, width, height).
+template <class F>
+void for_each_plain_sampler(std::mt19937& rng, std::initializer_list<std::array<int, 2>> sizes, F f) {
     const Wrap wraps[2] = {Wrap::Repeat, Wrap::ClampToEdge};
-    int cases = 0;
-    for (const auto& size : sizes) {
-        const int w = size[0], h = size[1];
+    for (const auto& [w, h] : sizes) {
         const auto texels = random_texels(rng, std::size_t(w) * std::size_t(h));
         for (int variant = 0; variant < 8; ++variant) {
             SamplerState st;
             st.wrap_s = wraps[variant & 1], st.wrap_t = wraps[(variant >> 1) & 1];
             st.min = st.mag = variant & 4 ? Filter::Nearest : Filter::Linear;
-            const sampler2D tex(w, h, texels.data(), st);
-            // Per axis: 0 texel centres (as the halftone computes them, (i + 0.5) * (1 / size)),
-            // 1 centres but one lane off centre, 2 anywhere, 3 a ramp from a random texel, 0.3
-            // texel a lane, 4 one coordinate for every lane.
-            for (int kind = 0; kind < 25; ++kind) {
-                for (int lanes : {kBatchLanes, 8, 5}) {
-                    Case k{&tex, {}, {}, {}, 0, lanes};
-                    const int size_of[2] = {w, h};
-                    for (std::size_t axis = 0; axis < 2; ++axis) {
-                        const int how = axis == 0 ? kind % 5 : kind / 5;
-                        const float one = 1.0f / float(size_of[axis]);
-                        std::uniform_int_distribution<int> texel(-2, size_of[axis] + 1);
-                        std::uniform_real_distribution<float> anywhere(-0.25f, 1.25f);
-                        const float start = float(texel(rng)) * one, same = anywhere(rng);
-                        for (std::size_t i = 0; i < kBatchLanes; ++i) {
-                            k.c[axis][i] = how == 2   ? anywhere(rng)
-                                           : how == 3 ? start + float(i) * 0.3f * one
-                                           : how == 4 ? same
-                                                      : (float(texel(rng)) + 0.5f) * one;
-                        }
-                        if (how == 1) k.c[axis][rng() % std::size_t(lanes)] += 0.3f * one;
-                    }
-                    check_case(k);
-                    ++cases;
-                }
-            }
+            f(sampler2D(w, h, texels.data(), st), w, h);
         }
     }
+}
+
+TEST_CASE("texture lookups: texel centres and magnified ramps equal the oracle", "[textures]") {
+    std::mt19937 rng(20261124);
+    int cases = 0;
+    for_each_plain_sampler(rng, {{256, 256}, {8, 16}, {5, 3}, {13, 7}, {1, 1}, {64, 32}}, [&](const sampler2D& tex, int w, int h) {
+        // Per axis: 0 texel centres (as the halftone computes them, (i + 0.5) * (1 / size)),
+        // 1 centres but one lane off centre, 2 anywhere, 3 a ramp from a random texel, 0.3
+        // texel a lane, 4 one coordinate for every lane.
+        for (int kind = 0; kind < 25; ++kind) {
+            for (int lanes : {kBatchLanes, 8, 5}) {
+                Case k{&tex, {}, {}, {}, 0, lanes};
+                const int size_of[2] = {w, h};
+                for (std::size_t axis = 0; axis < 2; ++axis) {
+                    const int how = axis == 0 ? kind % 5 : kind / 5;
+                    const float one = 1.0f / float(size_of[axis]);
+                    std::uniform_int_distribution<int> texel(-2, size_of[axis] + 1);
+                    std::uniform_real_distribution<float> anywhere(-0.25f, 1.25f);
+                    const float start = float(texel(rng)) * one, same = anywhere(rng);
+                    for (std::size_t i = 0; i < kBatchLanes; ++i) {
+                        k.c[axis][i] = how == 2   ? anywhere(rng)
+                                       : how == 3 ? start + float(i) * 0.3f * one
+                                       : how == 4 ? same
+                                                  : (float(texel(rng)) + 0.5f) * one;
+                    }
+                    if (how == 1) k.c[axis][rng() % std::size_t(lanes)] += 0.3f * one;
+                }
+                check_case(k);
+                ++cases;
+            }
+        }
+    });
     CHECK(cases == 6 * 8 * 25 * 3);
 }
 
@@ -381,35 +387,26 @@ TEST_CASE("texture lookups: texel centres and magnified ramps equal the oracle",
 // a texture whose lookups are not plain ones is refused and nothing written.
 TEST_CASE("texture lookups: the plain entry takes any number of lanes and refuses other samplers", "[textures]") {
     std::mt19937 rng(20261125);
-    const int sizes[][2] = {{256, 256}, {13, 7}, {1, 1}, {64, 32}};
-    const Wrap wraps[2] = {Wrap::Repeat, Wrap::ClampToEdge};
     int cases = 0;
-    for (const auto& size : sizes) {
-        const int w = size[0], h = size[1];
-        const auto texels = random_texels(rng, std::size_t(w) * std::size_t(h));
-        for (int variant = 0; variant < 8; ++variant) {
-            SamplerState st;
-            st.wrap_s = wraps[variant & 1], st.wrap_t = wraps[(variant >> 1) & 1];
-            st.min = st.mag = variant & 4 ? Filter::Nearest : Filter::Linear;
-            const sampler2D tex(w, h, texels.data(), st);
-            for (int lanes : {32, 37, 17, 3}) {
-                std::vector<float> s(static_cast<std::size_t>(lanes), 0.0f), t(s);
-                for (int i = 0; i < lanes; ++i) s[std::size_t(i)] = random_coordinate(rng), t[std::size_t(i)] = random_coordinate(rng);
-                std::array<std::vector<float>, 4> rgba;
-                for (auto& c : rgba) c.assign(std::size_t(lanes), -1.0f);
-                REQUIRE(texture_detail::sample_plain(tex, {lanes, s.data(), t.data(), {rgba[0].data(), rgba[1].data(), rgba[2].data(), rgba[3].data()}}));
-                for (std::size_t i = 0; i < std::size_t(lanes); ++i) {
-                    const auto want = oracle(tex, {s[i], t[i], 0.0f}, nullptr, nullptr, nullptr);
-                    for (std::size_t ch = 0; ch < 4; ++ch) {
-                        INFO("size " << w << "x" << h << " variant " << variant << " lanes " << lanes << " lane " << i << " st (" << s[i]
-                                     << ", " << t[i] << ") channel " << ch);
-                        REQUIRE(std::bit_cast<std::uint32_t>(rgba[ch][i]) == std::bit_cast<std::uint32_t>(want[ch]));
-                    }
+    for_each_plain_sampler(rng, {{256, 256}, {13, 7}, {1, 1}, {64, 32}}, [&](const sampler2D& tex, int w, int h) {
+        for (int lanes : {32, 37, 17, 3}) {
+            std::vector<float> s(static_cast<std::size_t>(lanes), 0.0f), t(s);
+            for (int i = 0; i < lanes; ++i) s[std::size_t(i)] = random_coordinate(rng), t[std::size_t(i)] = random_coordinate(rng);
+            std::array<std::vector<float>, 4> rgba;
+            for (auto& c : rgba) c.assign(std::size_t(lanes), -1.0f);
+            REQUIRE(texture_detail::sample_plain(tex, {lanes, s.data(), t.data(), {rgba[0].data(), rgba[1].data(), rgba[2].data(), rgba[3].data()}}));
+            for (std::size_t i = 0; i < std::size_t(lanes); ++i) {
+                const auto want = oracle(tex, {s[i], t[i], 0.0f}, nullptr, nullptr, nullptr);
+                for (std::size_t ch = 0; ch < 4; ++ch) {
+                    INFO("size " << w << "x" << h << " wraps " << int(tex.sampler.wrap_s) << int(tex.sampler.wrap_t) << " mag "
+                                 << int(tex.sampler.mag) << " lanes " << lanes << " lane " << i << " st (" << s[i]
+                                 << ", " << t[i] << ") channel " << ch);
+                    REQUIRE(std::bit_cast<std::uint32_t>(rgba[ch][i]) == std::bit_cast<std::uint32_t>(want[ch]));
                 }
-                ++cases;
             }
+            ++cases;
         }
-    }
+    });
     CHECK(cases == 4 * 8 * 4);
     // Not plain: a mirrored axis, mipmaps, different min and mag filters.
     const auto texels = random_texels(rng, 8 * 8);
