@@ -8,9 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
+#include "core/parallel.h"
 #include "render/atlas_bake.h"
 
 namespace qs {
@@ -133,11 +132,9 @@ std::vector<glm::dvec3> surface_normals(const HeightField& field, const AtlasTex
             }
         }
     };
-    tbb::task_arena arena(request.threads > 0 ? request.threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batches, 64),
-                          [&](const tbb::blocked_range<std::size_t>& r) { shade(r.begin(), r.end()); });
-    });
+    const ThreadLimit limit(request.threads);
+    parallel_chunks<std::size_t>(0, batches, 64,
+                                 [&](const tbb::blocked_range<std::size_t>& r) { shade(r.begin(), r.end()); });
     return normals;
 }
 
