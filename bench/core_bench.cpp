@@ -98,8 +98,16 @@ template <class F>
 
 // The same function written straight on std::experimental::simd, at native width: the yardstick.
 using V = stdx::native_simd<float>;
-inline V mod289(V x) { return x - stdx::floor(x * (1.0f / 289.0f)) * 289.0f; }
-inline V permute(V x) { return mod289(((x * 34.0f) + 1.0f) * x); }
+// The shader's mod289 and permute (noise/simplex2d.h): the exact products fused where the CPU can.
+inline V exact_product_add(V a, V b, V c) {
+#if defined(__FMA__)
+    return stdx::fma(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
+inline V mod289(V x) { return exact_product_add(stdx::floor(x * (1.0f / 289.0f)), V(-289.0f), x); }
+inline V permute(V x) { return mod289(exact_product_add(x, V(34.0f), V(1.0f)) * x); }
 inline V plain_snoise(V vx, V vy) {
     const float Cx = 0.211324865405187f, Cy = 0.366025403784439f, Cz = -0.577350269189626f, Cw = 0.024390243902439f;
     const V s = (vx * Cy + vy * Cy);

@@ -6,10 +6,22 @@
 namespace qs::noise {
 using namespace qs::glsl;
 
+// GLSL: x - floor(x * (1.0 / 289.0)) * 289.0 and mod289(((x*34.0)+1.0)*x). Each multiply and
+// the addition after it are one exact_product_add: where the product is exact, rounding once or
+// twice gives the same bits, and fused they take one step and a multiply pipe instead of two
+// steps, one on the adders the noise keeps busiest (5x Perlin 3% faster, Perlin 4%).
+// - floor(x / 289) * 289 is exact while |x| < 2^24 - 289: the product's magnitude stays below
+//   2^24 (2^53 in double), where floats are whole numbers.
+// - x * 34 is exact for whole x below 2^24 / 34. These noises permute whole numbers below 582:
+//   mod289 of a whole number below 2^24 lies in [-2, 290] (its floor may be one off next to a
+//   multiple of 289), and each permute adds at most 291 to one; (34 * 581 + 1) * 581 < 2^24 - 289.
+// So the noises give llvmpipe's bits for coordinates below 2^24 - 289 in magnitude, beyond which
+// a float has no fraction left to make noise of (tests/shading/test_exact_product_add.cpp checks
+// every whole number in range, and floats between them).
 template <class V>
-V mod289(const V& x) { return x - floor(x * (1.0f / 289.0f)) * 289.0f; }
+V mod289(const V& x) { return exact_product_add(floor(x * (1.0f / 289.0f)), V(-289.0f), x); }
 template <class V>
-V permute289(const V& x) { return mod289(((x * 34.0f) + 1.0f) * x); }  // GLSL: permute
+V permute289(const V& x) { return mod289(exact_product_add(x, V(34.0f), V(1.0f)) * x); }  // GLSL: permute
 
 // Corner offset of Listing 1.3. The seed prints C.xxxx; every published copy has C.xxzz.
 enum class Simplex2dCorner { Correct, SeedTypo };

@@ -191,6 +191,9 @@ public:
     friend Checked operator+(const Checked& a, const Checked& b) { return result(a.v + b.v, {}, a, b); }
     friend Checked operator-(const Checked& a, const Checked& b) { return result(a.v - b.v, {}, a, b); }
     friend Checked operator*(const Checked& a, const Checked& b) { return result(a.v * b.v, {}, a, b); }
+    friend Checked exact_product_add(const Checked& a, const Checked& b, const Checked& c) {
+        return result(exact_product_add(a.v, b.v, c.v), {}, a, b, c);
+    }
     friend Checked operator/(const Checked& a, const Checked& b) {
         return result(a.v / b.v, LaneCases::on(lane_bits(b.v == L(0)), Undefined::DivisionByZero), a, b);
     }

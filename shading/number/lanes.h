@@ -123,6 +123,10 @@ public:
         return Lanes(simd::bit_cast<T>(simd::bit_cast<Bits>(a.v) & Mask::Vector::splat(std::numeric_limits<Bits>::max())));
     }
     friend Lanes sqrt(const Lanes& a) { return Lanes(simd::sqrt(a.v)); }
+    // a * b + c where a * b is exact: fused or not, the same bits (simd_vector.h).
+    friend Lanes exact_product_add(const Lanes& a, const Lanes& b, const Lanes& c) {
+        return Lanes(simd::exact_product_add(a.v, b.v, c.v));
+    }
     // On float, llvmpipe's sin and cos to the bit (number/sin_cos.h); double keeps the library's.
     friend Lanes sin(const Lanes& a) {
         if constexpr (std::is_same_v<T, float>) return a.through<llvmpipe_math::sin_or_cos<false, N>>();

@@ -58,7 +58,15 @@ inline float sin(float a) { return llvmpipe_math::sin(a); }
 inline double sin(double a) { return std::sin(a); }
 inline float cos(float a) { return llvmpipe_math::cos(a); }
 inline double cos(double a) { return std::cos(a); }
-
+// a * b + c where a * b is exact: fused or not, the same bits (number/simd_vector.h).
+template <std::floating_point T>
+T exact_product_add(T a, T b, T c) {
+#if defined(__FMA__)
+    return std::fma(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
 
 // Lane access, so that code written over any number type can look at single values.
 inline float lane(float a, int) { return a; }

@@ -1,7 +1,8 @@
 #pragma once
 // GCC vectors (`T __attribute__((vector_size(...)))`) of at most one register, the parts of
 // simd::Wide (wide_vector.h), and the few operations on them that C++ operators do not cover:
-// rounding, square roots and any() by the CPU's own instructions, and splat.
+// rounding, square roots, exact products' additions and any() by the CPU's own instructions,
+// and splat.
 
 #include <bit>
 #include <cmath>
@@ -131,6 +132,36 @@ template <class V>
     }
 #endif
     return per_element(x, [](auto e) { return std::sqrt(e); });
+}
+
+// a * b + c for operands whose product a * b is representable: one rounding (FMA) or two then
+// give the same bits, so the build's CPU decides. With FMA it is one instruction, on a multiply
+// pipe, one step shorter than the two; shaders use it only where the product is exact
+// (noise/simplex2d.h says why there).
+template <class V>
+[[gnu::always_inline]] inline V exact_product_add(const V& a, const V& b, const V& c) {
+#if defined(__FMA__)
+    using T [[maybe_unused]] = element_t<V>;
+    auto by_registers = [&]<class Native>(Native (*fmadd)(Native, Native, Native)) {
+        static_assert(sizeof(V) == sizeof(Native));
+        return std::bit_cast<V>(fmadd(std::bit_cast<Native>(a), std::bit_cast<Native>(b), std::bit_cast<Native>(c)));
+    };
+#if defined(__AVX512F__)
+    if constexpr (sizeof(V) == 64) {
+        if constexpr (std::is_same_v<T, float>) return by_registers(+[](__m512 x, __m512 y, __m512 z) { return _mm512_fmadd_ps(x, y, z); });
+        else return by_registers(+[](__m512d x, __m512d y, __m512d z) { return _mm512_fmadd_pd(x, y, z); });
+    }
+#endif
+    if constexpr (sizeof(V) == 32) {
+        if constexpr (std::is_same_v<T, float>) return by_registers(+[](__m256 x, __m256 y, __m256 z) { return _mm256_fmadd_ps(x, y, z); });
+        else return by_registers(+[](__m256d x, __m256d y, __m256d z) { return _mm256_fmadd_pd(x, y, z); });
+    }
+    if constexpr (sizeof(V) == 16) {
+        if constexpr (std::is_same_v<T, float>) return by_registers(+[](__m128 x, __m128 y, __m128 z) { return _mm_fmadd_ps(x, y, z); });
+        else return by_registers(+[](__m128d x, __m128d y, __m128d z) { return _mm_fmadd_pd(x, y, z); });
+    }
+#endif
+    return a * b + c;
 }
 
 // Whether any element of an integer vector (at most one register wide) is non-zero: one test.

@@ -203,6 +203,12 @@ template <class T, int N>
     return Wide<T, N>::map([](const auto& x) QS_ALWAYS_INLINE { return simd::sqrt(x); }, a);
 }
 
+template <class T, int N>
+[[gnu::always_inline]] inline Wide<T, N> exact_product_add(const Wide<T, N>& a, const Wide<T, N>& b, const Wide<T, N>& c) {
+    return Wide<T, N>::map([](const auto& x, const auto& y, const auto& z) QS_ALWAYS_INLINE { return simd::exact_product_add(x, y, z); },
+                           a, b, c);
+}
+
 // Whether any lane of an integer Wide is non-zero: the parts ORed, then one test.
 template <class T, int N>
 [[gnu::always_inline]] inline bool any(const Wide<T, N>& m) {

@@ -1,0 +1,99 @@
+// exact_product_add (number/simd_vector.h) and the noises' mod289 and permute written with it
+// (noise/simplex2d.h): where the product is exact, fusing changes no bit, and the noises' products
+// are exact over the whole range the noise comment claims. Each whole number in it is run.
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include "shading/noise/simplex2d.h"
+
+// Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
+namespace qs::glsl {
+
+namespace {
+
+using L = Pixels<float, 16>;
+
+// The GLSL's mod289 and permute as written, each operation rounded (the build contracts nothing).
+float glsl_mod289(float x) { return x - std::floor(x * (1.0f / 289.0f)) * 289.0f; }
+float glsl_permute(float x) { return glsl_mod289(((x * 34.0f) + 1.0f) * x); }
+
+constexpr float kExactBelow = 16777216.0f - 289.0f;  // 2^24 - 289, noise/simplex2d.h
+
+bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+
+// Runs check(x, lanes' result, scalar result) for 16 values at a time of `next(i)`, i < count.
+template <class Next, class Of, class Check>
+void over_lanes(std::int64_t count, Next next, Of of, Check check) {
+    for (std::int64_t i = 0; i < count; i += 16) {
+        float x[16];
+        for (int k = 0; k < 16; ++k) x[k] = next(std::min(i + k, count - 1));
+        const L r = of(L::load(x));
+        for (int k = 0; k < 16; ++k) check(x[k], r[k], of(x[k]));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("exact_product_add: a * b + c, the same bits fused or not where a * b is exact", "[noise]") {
+    // 3 * 5 is exact, and so is 2^12 * 2^12; the sums round alike both ways.
+    CHECK(exact_product_add(3.0f, 5.0f, 0.1f) == 3.0f * 5.0f + 0.1f);
+    CHECK(exact_product_add(4096.0f, 4096.0f, 1.0f) == 4096.0f * 4096.0f + 1.0f);
+    CHECK(exact_product_add(-0.0f, 289.0f, 0.0f) == 0.0f);
+    CHECK(!std::signbit(exact_product_add(-0.0f, 289.0f, 0.0f)));
+    CHECK(exact_product_add(3.0, 5.0, 0.1) == 3.0 * 5.0 + 0.1);
+    float a[16], b[16], c[16];
+    for (int k = 0; k < 16; ++k) a[k] = float(k) - 7.0f, b[k] = 34.0f, c[k] = 0.25f * float(k);
+    const L r = exact_product_add(L::load(a), L::load(b), L::load(c));
+    for (int k = 0; k < 16; ++k) CHECK(same_bits(r[k], a[k] * b[k] + c[k]));
+    // Dual2: d(uv + w) = u dv + v du + dw.
+    const Dual2<float> u(2.0f, 1.0f, 0.0f), v(3.0f, 0.0f, 1.0f), w(0.5f, 0.25f, 0.125f);
+    const Dual2<float> s = exact_product_add(u, v, w);
+    CHECK(s.val == 6.5f);
+    CHECK(s.dx == 3.25f);
+    CHECK(s.dy == 2.125f);
+}
+
+TEST_CASE("mod289 gives the GLSL's bits on every whole number below 2^24 - 289, and floats between",
+          "[noise]") {
+    const auto whole = std::int64_t(kExactBelow) - 1;  // |x| <= whole
+    std::int64_t differ = 0, outside = 0;
+    over_lanes(
+        2 * whole + 1, [&](std::int64_t i) { return float(i - whole); },
+        [](const auto& x) { return noise::mod289(x); },
+        [&](float x, float lanes, float scalar) {
+            const float g = glsl_mod289(x);
+            differ += !same_bits(lanes, g) || !same_bits(scalar, g);
+            outside += g < -2.0f || g > 290.0f;  // the range the permute bound rests on
+        });
+    CHECK(differ == 0);
+    CHECK(outside == 0);
+    std::mt19937 random(289);
+    std::uniform_real_distribution<float> anywhere(-kExactBelow, kExactBelow);
+    std::uniform_real_distribution<float> small(-600.0f, 600.0f);
+    differ = 0;
+    over_lanes(
+        1 << 21, [&](std::int64_t i) { return i % 2 ? anywhere(random) : small(random); },
+        [](const auto& x) { return noise::mod289(x); },
+        [&](float x, float lanes, float scalar) {
+            differ += !same_bits(lanes, glsl_mod289(x)) || !same_bits(scalar, glsl_mod289(x));
+        });
+    CHECK(differ == 0);
+}
+
+TEST_CASE("permute gives the GLSL's bits on every whole number the noises permute, and beyond", "[noise]") {
+    // The noises permute whole numbers in [-6, 581] (noise/simplex2d.h); x * 34 stays exact far
+    // beyond, and the product's mod289 while (34 x + 1) x < 2^24 - 289: |x| <= 702.
+    std::int64_t differ = 0;
+    over_lanes(
+        1405, [](std::int64_t i) { return float(i - 702); }, [](const auto& x) { return noise::permute289(x); },
+        [&](float x, float lanes, float scalar) {
+            differ += !same_bits(lanes, glsl_permute(x)) || !same_bits(scalar, glsl_permute(x));
+        });
+    CHECK(differ == 0);
+}
+
+}  // namespace qs::glsl
