@@ -47,11 +47,17 @@ inline constexpr std::size_t register_bytes =
     16;
 #endif
 
-// Apply op, a function of the CPU's native vector type Native (__m256, ...), to x of the same size.
+// Apply op, a function of the CPU's native vector type Native (__m256, ...), to x of the same size
+// (or to a, b and c).
 template <class Native, class V, class Op>
 [[gnu::always_inline]] inline V by_register(const V& x, Op op) {
     static_assert(sizeof(V) == sizeof(Native));
     return std::bit_cast<V>(op(std::bit_cast<Native>(x)));
+}
+template <class Native, class V, class Op>
+[[gnu::always_inline]] inline V by_register(const V& a, const V& b, const V& c, Op op) {
+    static_assert(sizeof(V) == sizeof(Native));
+    return std::bit_cast<V>(op(std::bit_cast<Native>(a), std::bit_cast<Native>(b), std::bit_cast<Native>(c)));
 }
 
 // f of each element, for what has no vector instruction (transcendentals: the library's
@@ -142,23 +148,19 @@ template <class V>
 [[gnu::always_inline]] inline V exact_product_add(const V& a, const V& b, const V& c) {
 #if defined(__FMA__)
     using T [[maybe_unused]] = element_t<V>;
-    auto by_registers = [&]<class Native>(Native (*fmadd)(Native, Native, Native)) {
-        static_assert(sizeof(V) == sizeof(Native));
-        return std::bit_cast<V>(fmadd(std::bit_cast<Native>(a), std::bit_cast<Native>(b), std::bit_cast<Native>(c)));
-    };
 #if defined(__AVX512F__)
     if constexpr (sizeof(V) == 64) {
-        if constexpr (std::is_same_v<T, float>) return by_registers(+[](__m512 x, __m512 y, __m512 z) { return _mm512_fmadd_ps(x, y, z); });
-        else return by_registers(+[](__m512d x, __m512d y, __m512d z) { return _mm512_fmadd_pd(x, y, z); });
+        if constexpr (std::is_same_v<T, float>) return by_register<__m512>(a, b, c, [](__m512 x, __m512 y, __m512 z) { return _mm512_fmadd_ps(x, y, z); });
+        else return by_register<__m512d>(a, b, c, [](__m512d x, __m512d y, __m512d z) { return _mm512_fmadd_pd(x, y, z); });
     }
 #endif
     if constexpr (sizeof(V) == 32) {
-        if constexpr (std::is_same_v<T, float>) return by_registers(+[](__m256 x, __m256 y, __m256 z) { return _mm256_fmadd_ps(x, y, z); });
-        else return by_registers(+[](__m256d x, __m256d y, __m256d z) { return _mm256_fmadd_pd(x, y, z); });
+        if constexpr (std::is_same_v<T, float>) return by_register<__m256>(a, b, c, [](__m256 x, __m256 y, __m256 z) { return _mm256_fmadd_ps(x, y, z); });
+        else return by_register<__m256d>(a, b, c, [](__m256d x, __m256d y, __m256d z) { return _mm256_fmadd_pd(x, y, z); });
     }
     if constexpr (sizeof(V) == 16) {
-        if constexpr (std::is_same_v<T, float>) return by_registers(+[](__m128 x, __m128 y, __m128 z) { return _mm_fmadd_ps(x, y, z); });
-        else return by_registers(+[](__m128d x, __m128d y, __m128d z) { return _mm_fmadd_pd(x, y, z); });
+        if constexpr (std::is_same_v<T, float>) return by_register<__m128>(a, b, c, [](__m128 x, __m128 y, __m128 z) { return _mm_fmadd_ps(x, y, z); });
+        else return by_register<__m128d>(a, b, c, [](__m128d x, __m128d y, __m128d z) { return _mm_fmadd_pd(x, y, z); });
     }
 #endif
     return a * b + c;
