@@ -15,9 +15,11 @@ using namespace qs::glsl;
 // - x * 34 is exact for whole x below 2^24 / 34. These noises permute whole numbers below 582:
 //   mod289 of a whole number below 2^24 lies in [-2, 290] (its floor may be one off next to a
 //   multiple of 289), and each permute adds at most 291 to one; (34 * 581 + 1) * 581 < 2^24 - 289.
-// So the noises give llvmpipe's bits for coordinates below 2^24 - 289 in magnitude, beyond which
-// a float has no fraction left to make noise of (tests/shading/test_exact_product_add.cpp checks
-// every whole number in range, and floats between them).
+// So the noises give llvmpipe's bits while their lattice point i (the coordinates skewed, up to
+// 2.3 times them in 4D) stays below 2^24 - 289 in magnitude: for coordinates below about 7
+// million, near where a float's spacing reaches 1 and no fraction is left to make noise of
+// (tests/shading/test_exact_product_add.cpp checks every whole number in range, and floats
+// between them).
 template <class V>
 V mod289(const V& x) { return exact_product_add(floor(x * (1.0f / 289.0f)), V(-289.0f), x); }
 template <class V>
