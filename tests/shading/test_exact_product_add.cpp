@@ -1,8 +1,10 @@
 // exact_product_add (number/simd_vector.h) and the noises' mod289 and permute written with it
-// (noise/simplex2d.h): where the product is exact, fusing changes no bit, and the noises' products
-// are exact over the whole range the noise comment claims. Each whole number in it is run.
+// (noise/simplex2d.h) and snoise3's gradients (noise/simplex3d.h): where the product is exact,
+// fusing changes no bit, and the noises' products are exact over the whole range the noise
+// comment claims. Each whole number in it is run.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -93,6 +95,51 @@ TEST_CASE("permute gives the GLSL's bits on every whole number the noises permut
         [&](float x, float lanes, float scalar) {
             differ += !same_bits(lanes, glsl_permute(x)) || !same_bits(scalar, glsl_permute(x));
         });
+    CHECK(differ == 0);
+}
+
+namespace {
+
+// The steps of noise/simplex3d.h's gradients that it fuses, on a permutation value p: j, y_, the
+// two s and the two a, as snoise3 computes them (F) and as the GLSL writes them (float).
+template <class F>
+std::array<F, 6> gradient_steps(const F& p) {
+    const float n_ = 1.0f / 7.0f, nsx = n_ * 2.0f - 0.0f, nsy = n_ * 0.5f - 1.0f, nsz = n_ * 1.0f - 0.0f;
+    const F j = exact_product_add(floor(p * nsz * nsz), F(-49.0f), p);
+    const F x_ = floor(j * nsz);
+    const F y_ = floor(exact_product_add(x_, F(-7.0f), j));
+    const F x = x_ * nsx + nsy, y = y_ * nsx + nsy;
+    const F h = 1.0f - abs(x) - abs(y);
+    const F sx = exact_product_add(floor(x), F(2.0f), F(1.0f)), sy = exact_product_add(floor(y), F(2.0f), F(1.0f));
+    const F sh = -step(h, F(0.0f));
+    return {j, y_, sx, sy, exact_product_add(sx, sh, x), exact_product_add(sy, sh, y)};
+}
+std::array<float, 6> glsl_gradient_steps(float p) {
+    const float n_ = 1.0f / 7.0f, nsx = n_ * 2.0f - 0.0f, nsy = n_ * 0.5f - 1.0f, nsz = n_ * 1.0f - 0.0f;
+    const float j = p - 49.0f * std::floor(p * nsz * nsz);
+    const float x_ = std::floor(j * nsz);
+    const float y_ = std::floor(j - 7.0f * x_);
+    const float x = x_ * nsx + nsy, y = y_ * nsx + nsy;
+    const float h = 1.0f - std::fabs(x) - std::fabs(y);
+    const float sx = std::floor(x) * 2.0f + 1.0f, sy = std::floor(y) * 2.0f + 1.0f;
+    const float sh = -(0.0f < h ? 0.0f : 1.0f);
+    return {j, y_, sx, sy, x + sx * sh, y + sy * sh};
+}
+
+}  // namespace
+
+TEST_CASE("snoise3's gradient steps give the GLSL's bits for every permutation value", "[noise]") {
+    // Permutations are whole numbers in [-2, 290] (the mod289 test above); a margin either side.
+    std::int64_t differ = 0;
+    for (int first = -40; first <= 330; first += 16) {
+        float p[16];
+        for (int k = 0; k < 16; ++k) p[k] = float(first + k);
+        const std::array<L, 6> lanes = gradient_steps(L::load(p));
+        for (int k = 0; k < 16; ++k) {
+            const std::array<float, 6> scalar = gradient_steps(p[k]), glsl = glsl_gradient_steps(p[k]);
+            for (int s = 0; s < 6; ++s) differ += !same_bits(lanes[s][k], glsl[s]) || !same_bits(scalar[s], glsl[s]);
+        }
+    }
     CHECK(differ == 0);
 }
 
