@@ -13,7 +13,7 @@ int main() {
     long shared = 0;
     // Each chunk waits for the other to start, so the two run on two threads at once. Then the
     // second writes only after the first has: TSan can miss two accesses made at the same
-    // instant (each checks the other's record before either is stored; stop 38's CI saw it),
+    // instant (each checks the other's record before either is stored; a .ci/run here saw it),
     // not two made in turn. The flags are relaxed, which orders nothing for TSan, as two tiles
     // of a frame are ordered by nothing.
     std::atomic<int> started{0};
