@@ -4,6 +4,7 @@
 // comment claims. Each whole number in it is run.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
