@@ -7,8 +7,18 @@
 namespace qs::noise {
 using namespace qs::glsl;
 
+// GLSL: permute(x) = mod(((x*34.0)+1.0)*x, 289.0), where mod(a, b) = a - b * floor(a / b). The
+// noises permute whole numbers |x| <= 577: a permutation or mod(floor(P), 289.0) lies in
+// [-288, 288] (the quotient of a whole number below 2^24 rounds at most up to the next whole
+// number), and a hash adds two and a corner offset. Up to |x| = 702, (34 x + 1) x < 2^24 and
+// every product is a whole number, exact, so each multiply and the addition after it round once
+// (exact_product_add, noise/simplex2d.h) with the GLSL's bits (tests/shading/
+// test_exact_product_add.cpp runs each such x).
 template <class V>
-V permute_mod(const V& x) { return mod(((x * 34.0f) + 1.0f) * x, 289.0f); }  // GLSL: permute
+V permute_mod(const V& x) {
+    const V y = exact_product_add(x, V(34.0f), V(1.0f)) * x;
+    return exact_product_add(floor(y / 289.0f), V(-289.0f), y);
+}
 
 template <class F>
 F srdnoise(const vec2<F>& P, const F& rot, vec2<F>& grad) {

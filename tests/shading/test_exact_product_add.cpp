@@ -1,5 +1,6 @@
 // exact_product_add (number/simd_vector.h) and the noises' mod289 and permute written with it
-// (noise/simplex2d.h) and snoise3's gradients (noise/simplex3d.h): where the product is exact,
+// (noise/simplex2d.h), snoise3's gradients (noise/simplex3d.h), and the cellular and flow noises'
+// permute and mod 7 (noise/flow_noise.h, noise/cellular.h): where the product is exact,
 // fusing changes no bit, and the noises' products are exact over the whole range the noise
 // comment claims. Each whole number in it is run.
 #include <catch2/catch.hpp>
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <random>
 
+#include "shading/noise/cellular.h"
 #include "shading/noise/simplex2d.h"
 
 // Inside qs::glsl, as shader code is: unqualified built-ins resolve as they do in shaders.
@@ -23,6 +25,9 @@ using L = Pixels<float, 16>;
 // The GLSL's mod289 and permute as written, each operation rounded (the build contracts nothing).
 float glsl_mod289(float x) { return x - std::floor(x * (1.0f / 289.0f)) * 289.0f; }
 float glsl_permute(float x) { return glsl_mod289(((x * 34.0f) + 1.0f) * x); }
+// The cellular and flow noises' forms: GLSL mod, which divides.
+float glsl_mod(float x, float y) { return x - y * std::floor(x / y); }
+float glsl_permute_mod(float x) { return glsl_mod(((x * 34.0f) + 1.0f) * x, 289.0f); }
 
 constexpr float kExactBelow = 16777216.0f - 289.0f;  // 2^24 - 289, noise/simplex2d.h
 
@@ -141,6 +146,42 @@ TEST_CASE("snoise3's gradient steps give the GLSL's bits for every permutation v
             for (int s = 0; s < 6; ++s) differ += !same_bits(lanes[s][k], glsl[s]) || !same_bits(scalar[s], glsl[s]);
         }
     }
+    CHECK(differ == 0);
+}
+
+TEST_CASE("the cellular and flow noises' permute and mod 7 give the GLSL's bits on every value they see",
+          "[noise]") {
+    // mod(x, 289.0) of a whole number below 2^24 lies in [-288, 288] (noise/flow_noise.h): the
+    // range the permutations' bound rests on.
+    const std::int64_t whole = (std::int64_t(1) << 24) - 1;
+    std::int64_t outside = 0;
+    over_lanes(
+        2 * whole + 1, [&](std::int64_t i) { return float(i - whole); },
+        [](const auto& x) { return mod(x, 289.0f); },
+        [&](float x, float lanes, float scalar) {
+            const float g = glsl_mod(x, 289.0f);
+            outside += !same_bits(lanes, g) || !same_bits(scalar, g) || g < -288.0f || g > 288.0f;
+        });
+    CHECK(outside == 0);
+    // Permuted are whole numbers |x| <= 577; the products stay exact up to 702.
+    std::int64_t differ = 0;
+    outside = 0;
+    over_lanes(
+        1405, [](std::int64_t i) { return float(i - 702); }, [](const auto& x) { return noise::permute_mod(x); },
+        [&](float x, float lanes, float scalar) {
+            const float g = glsl_permute_mod(x);
+            differ += !same_bits(lanes, g) || !same_bits(scalar, g);
+            outside += g < -288.0f || g > 288.0f;
+        });
+    CHECK(differ == 0);
+    CHECK(outside == 0);
+    // mod 7 of floor(p * K), p a permutation: whole numbers in [-42, 41]; a margin either side.
+    differ = 0;
+    over_lanes(
+        129, [](std::int64_t i) { return float(i - 64); }, [](const auto& x) { return noise::mod7(x); },
+        [&](float x, float lanes, float scalar) {
+            differ += !same_bits(lanes, glsl_mod(x, 7.0f)) || !same_bits(scalar, glsl_mod(x, 7.0f));
+        });
     CHECK(differ == 0);
 }
 
