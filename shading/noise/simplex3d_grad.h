@@ -35,19 +35,21 @@ F snoise3_grad(const vec3<F>& v, vec3<F>& gradient) {
     // Gradients: 7x7 points over a square, mapped onto an octahedron
     F n_ = 1.0f / 7.0f;
     vec3<F> ns = n_ * vec3<F>(D.w, D.y, D.z) - vec3<F>(D.x, D.z, D.x);  // GLSL: n_ * D.wyz - D.xzx
-    vec4<F> j = p - 49.0f * floor(p * ns.z * ns.z);
+    // Fused where the product is exact, as in snoise3 (simplex3d.h).
+    vec4<F> j = exact_product_add(floor(p * ns.z * ns.z), vec4<F>(-49.0f), p);  // GLSL: p - 49.0 * floor(p * ns.z * ns.z)
     vec4<F> x_ = floor(j * ns.z);
-    vec4<F> y_ = floor(j - 7.0f * x_);
+    vec4<F> y_ = floor(exact_product_add(x_, vec4<F>(-7.0f), j));  // GLSL: floor(j - 7.0 * x_)
     vec4<F> x = x_ * ns.x + vec4<F>(ns.y);
     vec4<F> y = y_ * ns.x + vec4<F>(ns.y);
     vec4<F> h = 1.0f - abs(x) - abs(y);
     vec4<F> b0(x.xy(), y.xy());
     vec4<F> b1(x.zw(), y.zw());
-    vec4<F> s0 = floor(b0) * 2.0f + 1.0f;
-    vec4<F> s1 = floor(b1) * 2.0f + 1.0f;
+    vec4<F> s0 = exact_product_add(floor(b0), vec4<F>(2.0f), vec4<F>(1.0f));  // GLSL: floor(b0)*2.0 + 1.0
+    vec4<F> s1 = exact_product_add(floor(b1), vec4<F>(2.0f), vec4<F>(1.0f));
     vec4<F> sh = -step(h, vec4<F>(0.0f));
-    vec4<F> a0 = b0.xzyw() + s0.xzyw() * vec4<F>(sh.x, sh.x, sh.y, sh.y);  // sh.xxyy
-    vec4<F> a1 = b1.xzyw() + s1.xzyw() * vec4<F>(sh.z, sh.z, sh.w, sh.w);  // sh.zzww
+    // GLSL: a0 = b0.xzyw + s0.xzyw*sh.xxyy, a1 = b1.xzyw + s1.xzyw*sh.zzww
+    vec4<F> a0 = exact_product_add(s0.xzyw(), vec4<F>(sh.x, sh.x, sh.y, sh.y), b0.xzyw());
+    vec4<F> a1 = exact_product_add(s1.xzyw(), vec4<F>(sh.z, sh.z, sh.w, sh.w), b1.xzyw());
     vec3<F> p0(a0.xy(), h.x);
     vec3<F> p1(a0.zw(), h.y);
     vec3<F> p2(a1.xy(), h.z);
