@@ -98,7 +98,8 @@ template <class F>
 
 // The same function written straight on std::experimental::simd, at native width: the yardstick.
 using V = stdx::native_simd<float>;
-// The shader's mod289 and permute (noise/simplex2d.h): the exact products fused where the CPU can.
+// The shader's mod289, permute and 2 fract(p / 41) - 1 (noise/simplex2d.h): the exact products
+// fused where the CPU can.
 inline V exact_product_add(V a, V b, V c) {
 #if defined(__FMA__)
     return stdx::fma(a, b, c);
@@ -126,7 +127,7 @@ inline V plain_snoise(V vx, V vy) {
         V m = stdx::max(0.5f - (dx * dx + dy * dy), V(0.0f));
         m = m * m;
         m = m * m;
-        const V xx = 2.0f * (p * Cw - stdx::floor(p * Cw)) - 1.0f;
+        const V xx = exact_product_add(p * Cw - stdx::floor(p * Cw), V(2.0f), V(-1.0f));
         const V h = stdx::abs(xx) - 0.5f;
         const V a0 = xx - stdx::floor(xx + 0.5f);
         m *= 1.79284291400159f - 0.85373472095314f * (a0 * a0 + h * h);

@@ -48,7 +48,8 @@ F snoise(const vec2<F>& v) {
     m = m * m;
     m = m * m;
     // Gradients
-    vec3<F> x = 2.0f * fract(p * vec3<F>(C.w)) - 1.0f;
+    // 2 f is exact (a power of two's multiple, f in [0, 1)), so fused it is the GLSL's bits.
+    vec3<F> x = exact_product_add(fract(p * vec3<F>(C.w)), vec3<F>(2.0f), vec3<F>(-1.0f));  // GLSL: 2.0 * fract(p * C.www) - 1.0
     vec3<F> h = abs(x) - 0.5f;
     vec3<F> a0 = x - floor(x + 0.5f);
     // Normalise gradients implicitly by scaling m

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <type_traits>
 
 #include "shading/noise/cellular.h"
 #include "shading/noise/simplex2d.h"
@@ -101,6 +102,31 @@ TEST_CASE("permute gives the GLSL's bits on every whole number the noises permut
         [&](float x, float lanes, float scalar) {
             differ += !same_bits(lanes, glsl_permute(x)) || !same_bits(scalar, glsl_permute(x));
         });
+    CHECK(differ == 0);
+}
+
+TEST_CASE("2D simplex's 2 fract(p / 41) - 1 gives the GLSL's bits on every permutation value and any fraction",
+          "[noise]") {
+    // Twice a float is exact, whatever its size below 2^127: a permutation's fraction (noise/
+    // simplex2d.h) or any other.
+    auto glsl = [](float f) { return 2.0f * f - 1.0f; };
+    auto fused = [](const auto& f) {
+        using T = std::remove_cvref_t<decltype(f)>;
+        return exact_product_add(f, T(2.0f), T(-1.0f));
+    };
+    auto fraction = [](std::int64_t p) {  // fract(p * C.w) of a permutation value p, a margin either side
+        const float y = float(p - 50) * 0.024390243902439f;
+        return y - std::floor(y);
+    };
+    std::int64_t differ = 0;
+    over_lanes(400, fraction, fused, [&](float f, float lanes, float scalar) {
+        differ += !same_bits(lanes, glsl(f)) || !same_bits(scalar, glsl(f));
+    });
+    std::mt19937 random(41);
+    std::uniform_int_distribution<std::uint32_t> bits(0, 0x7EFFFFFFu);  // every finite float below 2^127
+    over_lanes(
+        1 << 20, [&](std::int64_t i) { return (i % 2 ? 1.0f : -1.0f) * std::bit_cast<float>(bits(random)); }, fused,
+        [&](float f, float lanes, float scalar) { differ += !same_bits(lanes, glsl(f)) || !same_bits(scalar, glsl(f)); });
     CHECK(differ == 0);
 }
 
