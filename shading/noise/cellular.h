@@ -15,14 +15,6 @@ inline constexpr float Kz = 0.166666666667f;     // 1/6
 inline constexpr float Kzo = 0.416666666667f;    // 1/2-1/6*2
 }  // namespace cellular_constants
 
-// GLSL: mod(x, 7.0) = x - 7.0 * floor(x / 7.0), on floor(p * K) of a permutation p: a whole
-// number in [-42, 41] (permute_mod, noise/flow_noise.h), so 7 floor(x / 7) is exact and the
-// subtraction rounds once with it (exact_product_add) with the GLSL's bits.
-template <class F>
-F mod7(const F& x) {
-    return exact_product_add(floor(x / 7.0f), F(-7.0f), x);
-}
-
 // Keep the two smallest of the squared distances seen so far (and the vectors to them).
 template <class F>
 void insert(const F& d, const vec2<F>& v, vec2<F>& Fs, vec4<F>& d1d2) {
@@ -46,7 +38,8 @@ vec2<F> cellular_vectors(const vec2<F>& P, vec4<F>& d1d2) {
         for (int j = -1; j <= 1; j++) {
             F p = permute_mod(permute_mod(Pi.x + float(i)) + Pi.y + float(j));
             F ox = fract(p * K) - Ko;
-            F oy = mod7(floor(p * K)) * K - Ko;  // GLSL: mod(floor(p * K), 7.0) * K - Ko
+            // floor(p * K) of a permutation p is a whole number in [-42, 41] (noise/flow_noise.h).
+            F oy = mod_whole(floor(p * K), 7.0f) * K - Ko;
             vec2<F> d(Pf.x - (float(i) + 0.5f) + jitter * ox, Pf.y - (float(j) + 0.5f) + jitter * oy);
             insert(dot(d, d), d, Fs, d1d2);
         }
@@ -71,8 +64,7 @@ vec2<F> cellular2x2x2(const vec3<F>& P) {
         for (int b = 0; b <= 1; b++) {
             for (int c = 0; c <= 1; c++) {
                 F p = permute_mod(permute_mod(permute_mod(Pi.x + float(a)) + Pi.y + float(b)) + Pi.z + float(c));
-                // GLSL: vec3 o = vec3(fract(p * K) - Ko, mod(floor(p * K), 7.0) * K - Ko, floor(p * K2) * Kz - Kzo)
-                vec3<F> o(fract(p * K) - Ko, mod7(floor(p * K)) * K - Ko, floor(p * K2) * Kz - Kzo);
+                vec3<F> o(fract(p * K) - Ko, mod_whole(floor(p * K), 7.0f) * K - Ko, floor(p * K2) * Kz - Kzo);
                 vec3<F> d = Pf - vec3<F>(float(a), float(b), float(c)) + jitter * o;
                 F1 = min(F1, dot(d, d));
             }
@@ -93,8 +85,7 @@ vec2<F> cellular(const vec3<F>& P) {
         for (int b = -1; b <= 1; b++) {
             for (int c = -1; c <= 1; c++) {
                 F p = permute_mod(permute_mod(permute_mod(Pi.x + float(a)) + Pi.y + float(b)) + Pi.z + float(c));
-                // GLSL: vec3 o = vec3(fract(p * K) - Ko, mod(floor(p * K), 7.0) * K - Ko, floor(p * K2) * Kz - Kzo)
-                vec3<F> o(fract(p * K) - Ko, mod7(floor(p * K)) * K - Ko, floor(p * K2) * Kz - Kzo);
+                vec3<F> o(fract(p * K) - Ko, mod_whole(floor(p * K), 7.0f) * K - Ko, floor(p * K2) * Kz - Kzo);
                 vec3<F> d = Pf - vec3<F>(float(a), float(b), float(c)) + jitter * o;
                 F d2 = dot(d, d);
                 Fs = vec2<F>(min(Fs.x, d2), min(Fs.y, max(Fs.x, d2)));

@@ -7,17 +7,23 @@
 namespace qs::noise {
 using namespace qs::glsl;
 
-// GLSL: permute(x) = mod(((x*34.0)+1.0)*x, 289.0), where mod(a, b) = a - b * floor(a / b). The
-// noises permute whole numbers |x| <= 577: a permutation or mod(floor(P), 289.0) lies in
-// [-288, 288] (the quotient of a whole number below 2^24 rounds at most up to the next whole
-// number), and a hash adds two and a corner offset. Up to |x| = 702, (34 x + 1) x < 2^24 and
-// every product is a whole number, exact, so each multiply and the addition after it round once
-// (exact_product_add, noise/simplex2d.h) with the GLSL's bits (tests/shading/
-// test_exact_product_add.cpp runs each such x).
+// GLSL's mod(x, m) = x - m * floor(x / m) for a whole number x whose m * floor(x / m) stays below
+// 2^24: that product is exact, so the subtraction rounds once with it (exact_product_add,
+// noise/simplex2d.h) with the GLSL's bits.
+template <class V>
+V mod_whole(const V& x, float m) {
+    return exact_product_add(floor(x / m), V(-m), x);
+}
+
+// GLSL: permute(x) = mod(((x*34.0)+1.0)*x, 289.0). The noises permute whole numbers |x| <= 577:
+// a permutation or mod(floor(P), 289.0) lies in [-288, 288] (the quotient of a whole number below
+// 2^24 rounds at most up to the next whole number), and a hash adds two and a corner offset. Up to
+// |x| = 702, (34 x + 1) x < 2^24 and every product is a whole number, exact, so each multiply and
+// the addition after it round once with the GLSL's bits (tests/shading/test_exact_product_add.cpp
+// runs each such x).
 template <class V>
 V permute_mod(const V& x) {
-    const V y = exact_product_add(x, V(34.0f), V(1.0f)) * x;
-    return exact_product_add(floor(y / 289.0f), V(-289.0f), y);
+    return mod_whole(exact_product_add(x, V(34.0f), V(1.0f)) * x, 289.0f);
 }
 
 template <class F>

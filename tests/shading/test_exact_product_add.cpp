@@ -204,7 +204,7 @@ TEST_CASE("the cellular and flow noises' permute and mod 7 give the GLSL's bits 
     // mod 7 of floor(p * K), p a permutation: whole numbers in [-42, 41]; a margin either side.
     differ = 0;
     over_lanes(
-        129, [](std::int64_t i) { return float(i - 64); }, [](const auto& x) { return noise::mod7(x); },
+        129, [](std::int64_t i) { return float(i - 64); }, [](const auto& x) { return noise::mod_whole(x, 7.0f); },
         [&](float x, float lanes, float scalar) {
             differ += !same_bits(lanes, glsl_mod(x, 7.0f)) || !same_bits(scalar, glsl_mod(x, 7.0f));
         });
