@@ -21,16 +21,23 @@ namespace qs::lanes16 {
 typedef float Floats __attribute__((vector_size(kBatchLanes * sizeof(float))));
 typedef std::int32_t Ints __attribute__((vector_size(kBatchLanes * sizeof(std::int32_t))));
 
+// v in every lane, -0 included (`Floats{} + v` would add +0 to it: +0 for -0, and an addition
+// the compiler cannot leave out, where a broadcast operand of the instruction using it is free).
 inline Floats broadcast(float v) {
-#if defined(__AVX__) && !defined(__AVX512F__)
-    // Two registers of eight (`Floats{} + v` compiled to sixteen scalar stores).
+#if defined(__AVX512F__)
+    static_assert(sizeof(Floats) == sizeof(__m512));
+    return Floats(_mm512_set1_ps(v));
+#elif defined(__AVX__)
+    // Two registers of eight (a loop compiled to sixteen scalar stores).
     const __m256 half = _mm256_set1_ps(v);
     const __m256 both[2] = {half, half};
     Floats r;
     std::memcpy(&r, both, sizeof r);
     return r;
 #else
-    return Floats{} + v;
+    Floats r;
+    for (int i = 0; i < kBatchLanes; ++i) r[i] = v;
+    return r;
 #endif
 }
 

@@ -24,6 +24,7 @@
 #include "core/vertex_stage.h"
 #include "raster/clipper.h"
 #include "raster/depth_buffer.h"
+#include "raster/fragment_inputs.h"
 #include "raster/triangle_setup.h"
 
 namespace qs {
@@ -86,12 +87,8 @@ public:
     // lies on the quad grid.
     void render(const TriangleSetup& t, int x0, int y0, int x1, int y1) {
         const PreparedDraw& d = draws_[t.draw];
-        tri_ = &t;
         draw_ = &d;
-        // Perspective division: an affine triangle (equal w at its vertices, 1/w a constant
-        // plane) shares one reciprocal, the same number each lane would compute.
-        affine_ = t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f;
-        affine_rcp_ = 1.0f / t.inv_w.a0;
+        inputs_ = FragmentInputs(t, d, depth_test_, fb_.height);
         pending_.clear();
         if (!d.frag_coord && frag_coord_set_) {
             // A shader that reads gl_FragCoord without saying so reads NaN, not the last draw's.
@@ -208,11 +205,12 @@ private:
     void shade_tile(int x0, int y0) {
         static_assert(kTileSize % (2 * kBlock) == 0);
         const Program& program = *draw_->call->program;
+        const FragmentInputs inputs = inputs_;  // fragment_inputs.h: why a copy
         for (int by = y0; by < y0 + kTileSize; by += kBlock) {
             const lanes16::Floats y = lanes_y(by);
             for (int bx = x0; bx < x0 + kTileSize; bx += 2 * kBlock) {
-                interpolate<Fused>(in_[0], lanes_x(bx), y);
-                interpolate<Fused>(in_[1], lanes_x(bx + kBlock), y);
+                inputs.fill<Fused>(in_[0], lanes_x(bx), y);
+                inputs.fill<Fused>(in_[1], lanes_x(bx + kBlock), y);
                 program.shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
                 tile_block(0, bx, by);
                 tile_block(1, bx + kBlock, by);
@@ -314,67 +312,17 @@ private:
     // lane order: the block's sixteen values lie together.
     std::uint32_t depth_mask(int bx, int by, std::uint32_t mask) const {
         const lanes16::Floats x = lanes_x(bx), y = lanes_y(by);
-        const lanes16::Floats z = fused_ ? plane_at<true>(tri_->z, x, y) : plane_at<false>(tri_->z, x, y);
+        const lanes16::Floats z = fused_ ? inputs_.depth<true>(x, y) : inputs_.depth<false>(x, y);
         return mask & lanes16::less(depth24(z), lanes16::load(&depth_[block_base(bx, by)]));
     }
 
-    // Plane p at the lanes' pixels, each lane as PlaneEquation::at (or at_fused) computes it.
-    template <bool Fused>
-    static lanes16::Floats plane_at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
-        using lanes16::broadcast;
-        if constexpr (Fused) {
-            return lanes16::fma(broadcast(p.dady), y, lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0)));
-        } else {
-            return (p.a0 + p.dadx * x) + p.dady * y;
-        }
-    }
-
     // The shader inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) from the
-    // current triangle's planes; each lane computes exactly what PlaneEquation::at does.
-    void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
+    // current triangle.
+    void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) const {
         if (fused_) {
-            interpolate<true>(in, x, y);
+            inputs_.fill<true>(in, x, y);
         } else {
-            interpolate<false>(in, x, y);
-        }
-    }
-
-    template <bool Fused>
-    [[gnu::always_inline]] void interpolate(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) {
-        using lanes16::broadcast, lanes16::store, lanes16::Floats;
-        const TriangleSetup& t = *tri_;
-        const PreparedDraw& d = *draw_;
-        const auto at = [&](const PlaneEquation& p) { return plane_at<Fused>(p, x, y); };
-        if (d.frag_coord) {
-            store(in.frag_coord[0], x + 0.5f);
-            store(in.frag_coord[1], float(fb_.height) - (y + 0.5f));  // GL window y points up
-            store(in.frag_coord[2], at(t.z));
-            store(in.frag_coord[3], at(t.inv_w));
-        } else if (depth_test_) {
-            store(in.frag_coord[2], at(t.z));  // the depth written
-        }
-        const bool analytic = d.mode.derivatives == Derivatives::Analytic;
-        if (analytic && d.frag_coord) {
-            // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
-            store(in.frag_coord_dx[0], broadcast(t.z.dadx));
-            store(in.frag_coord_dy[0], broadcast(-t.z.dady));
-            store(in.frag_coord_dx[1], broadcast(t.inv_w.dadx));
-            store(in.frag_coord_dy[1], broadcast(-t.inv_w.dady));
-        }
-        if (d.varyings == 0) return;
-        const Floats rcp = affine_ ? broadcast(affine_rcp_) : 1.0f / at(t.inv_w);
-        for (int v = 0; v < d.varyings; ++v) {
-            const PlaneEquation& p = t.varyings[std::size_t(v)];
-            const bool flat = d.flat >> v & 1;
-            const Floats value = flat ? broadcast(p.a0) : at(p) * rcp;
-            store(in.varying[v], value);
-            if (analytic) {
-                // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
-                // varying enters as 0 (its plane is constant: zero derivatives).
-                const Floats v0 = flat ? broadcast(0.0f) : value;
-                store(in.varying_dx[v], (p.dadx - v0 * t.inv_w.dadx) * rcp);
-                store(in.varying_dy[v], -((p.dady - v0 * t.inv_w.dady) * rcp));
-            }
+            inputs_.fill<false>(in, x, y);
         }
     }
 
@@ -443,10 +391,8 @@ private:
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];  // 24-bit depths (depth24), exact in float
     std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
-    const TriangleSetup* tri_ = nullptr;
     const PreparedDraw* draw_ = nullptr;
-    bool affine_ = false;      // tri_'s 1/w is constant
-    float affine_rcp_ = 0.0f;  // and this its reciprocal
+    FragmentInputs inputs_;  // the current triangle's
     LaneBatch pending_;
     bool frag_coord_set_ = true;  // in_[].frag_coord may hold numbers (it starts uninitialised)
     struct WaitingBlock {

@@ -37,7 +37,12 @@ typedef float Floats __attribute__((vector_size(L * sizeof(float))));
 typedef std::int32_t Ints __attribute__((vector_size(L * sizeof(std::int32_t))));
 typedef std::uint32_t Uints __attribute__((vector_size(L * sizeof(std::uint32_t))));
 
-Floats splat(float v) { return Floats{} + v; }
+// v in every lane (`Floats{} + v` would turn -0 into +0).
+Floats splat(float v) {
+    Floats r;
+    for (int i = 0; i < L; ++i) r[i] = v;
+    return r;
+}
 Ints splat(std::int32_t v) { return Ints{} + v; }
 Floats to_float(const Ints& v) { return __builtin_convertvector(v, Floats); }
 Ints bits(const Floats& v) {

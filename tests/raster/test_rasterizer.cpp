@@ -210,6 +210,25 @@ TEST_CASE("flat varyings take the provoking (last) vertex's value over the whole
     CHECK(drawn > 100);
 }
 
+TEST_CASE("a flat varying of -0 reaches the shader as -0", "[raster][interpolation]") {
+    // Spread over the lanes as it is: adding +0 to spread it would turn -0 into +0, which the
+    // shader could tell (1/x, atan, sign tests).
+    static const ProgramOf<FlatX> flat;
+    const Framebuffer fb = draw(32, 32, {{1.0f, 1.0f, 0}, {30.0f, 2.0f, 0}, {-0.0f, 29.0f, 0}}, flat);
+    int drawn = 0;
+    for (int row = 0; row < 32; ++row) {
+        for (int x = 0; x < 32; ++x) {
+            const float* px = fb.pixel(x, row);
+            if (px[3] == 0.0f) continue;
+            ++drawn;
+            CHECK(px[0] == 0.0f);
+            CHECK(std::signbit(px[0]));
+        }
+    }
+    CHECK(drawn > 100);
+    CHECK(std::signbit(lanes16::broadcast(-0.0f)[7]));
+}
+
 TEST_CASE("dFdx of an interpolated varying on helper lanes equals the interior value", "[raster][helpers]") {
     // v = x / 4 in window space: every quad difference is exactly 0.25, and 0 in y, including
     // quads along the sliver's edges where most lanes are helpers extrapolating the plane.
