@@ -218,8 +218,10 @@ private:
         }
     }
     // Writes batch h of a whole tile, the block at (bx, by): whole, or its lanes that did not
-    // discard.
-    void tile_block(int h, int bx, int by) {
+    // discard. Inlined into the tile's loop whatever GCC's budget says: a variant of this file
+    // with more instantiations of the loop got it as a call per block, and the simplex square
+    // took 2.84-2.90 ms against 2.67-2.73 with it inlined.
+    [[gnu::always_inline]] void tile_block(int h, int bx, int by) {
         if (out_[h].discarded == 0) {
             store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined);
             touched_[std::size_t(block_base(bx, by) / kBatchLanes)] = true;
