@@ -196,36 +196,24 @@ TEST_CASE("perspective-correct varyings equal the analytic value at pixel centre
 
 TEST_CASE("flat varyings take the provoking (last) vertex's value over the whole triangle", "[raster][interpolation]") {
     static const ProgramOf<FlatX> flat;
-    const Framebuffer fb = draw(32, 32, {{1.0f, 1.0f, 0}, {30.0f, 2.0f, 0}, {12.0f, 29.0f, 0}}, flat);
-    int drawn = 0;
-    for (int row = 0; row < 32; ++row) {
-        for (int x = 0; x < 32; ++x) {
-            const float* px = fb.pixel(x, row);
-            if (px[3] == 0.0f) continue;
-            ++drawn;
-            CHECK(px[0] == 12.0f);                   // flat: the last vertex's x
-            CHECK(std::abs(px[1] - (31 - row + 0.5f)) < 1e-3f);  // smooth: the pixel centre's y
+    // -0 too, sign and all: spreading it over the lanes by adding +0 would make it +0, which a
+    // shader can tell (1/x, atan, sign tests).
+    for (const float last_x : {12.0f, -0.0f}) {
+        CAPTURE(last_x);
+        const Framebuffer fb = draw(32, 32, {{1.0f, 1.0f, 0}, {30.0f, 2.0f, 0}, {last_x, 29.0f, 0}}, flat);
+        int drawn = 0;
+        for (int row = 0; row < 32; ++row) {
+            for (int x = 0; x < 32; ++x) {
+                const float* px = fb.pixel(x, row);
+                if (px[3] == 0.0f) continue;
+                ++drawn;
+                CHECK(px[0] == last_x);  // flat: the last vertex's x
+                CHECK(std::signbit(px[0]) == std::signbit(last_x));
+                CHECK(std::abs(px[1] - (31 - row + 0.5f)) < 1e-3f);  // smooth: the pixel centre's y
+            }
         }
+        CHECK(drawn > 100);
     }
-    CHECK(drawn > 100);
-}
-
-TEST_CASE("a flat varying of -0 reaches the shader as -0", "[raster][interpolation]") {
-    // Spread over the lanes as it is: adding +0 to spread it would turn -0 into +0, which the
-    // shader could tell (1/x, atan, sign tests).
-    static const ProgramOf<FlatX> flat;
-    const Framebuffer fb = draw(32, 32, {{1.0f, 1.0f, 0}, {30.0f, 2.0f, 0}, {-0.0f, 29.0f, 0}}, flat);
-    int drawn = 0;
-    for (int row = 0; row < 32; ++row) {
-        for (int x = 0; x < 32; ++x) {
-            const float* px = fb.pixel(x, row);
-            if (px[3] == 0.0f) continue;
-            ++drawn;
-            CHECK(px[0] == 0.0f);
-            CHECK(std::signbit(px[0]));
-        }
-    }
-    CHECK(drawn > 100);
     CHECK(std::signbit(lanes16::broadcast(-0.0f)[7]));
 }
 
