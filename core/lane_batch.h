@@ -11,8 +11,8 @@
 namespace qs {
 
 struct LaneBatch {
-    alignas(64) int x[kBatchLanes];  // framebuffer coordinates
-    alignas(64) int y[kBatchLanes];
+    alignas(64) int x[kBatchLanes] = {};  // framebuffer coordinates
+    alignas(64) int y[kBatchLanes] = {};
     std::uint32_t write = 0;  // bit i: lane i writes (a helper lane does not)
     int count = 0;
 

@@ -63,6 +63,17 @@ inline void store(float* p, const Floats& v) {
 #endif
 }
 
+inline void store(int* p, const Ints& v) {
+#if defined(__AVX__) && !defined(__AVX512F__)
+    __m256i halves[2];
+    std::memcpy(halves, &v, sizeof halves);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), halves[0]);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(p + 8), halves[1]);
+#else
+    std::memcpy(p, &v, sizeof v);
+#endif
+}
+
 inline Floats to_float(const Ints& v) { return __builtin_convertvector(v, Floats); }
 
 // a * b + c rounded once on every lane, as std::fma.
@@ -149,19 +160,31 @@ inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
 #endif
 }
 
-// The lanes of v whose bit in `mask` is set, in lane order, into out[0 .. popcount(mask)); out
-// has room for all sixteen. Returns their number.
-inline int compress(std::uint32_t mask, const Ints& v, int* out) {
+// `to` with the lanes of v at the set bits of `lanes` packed into its lanes first, first + 1, ...
+// (in order; first + popcount(lanes) <= kBatchLanes), its other lanes as they were. Computed in
+// registers, so that a batch gathered block by block is stored whole each time and its next
+// (whole) load is forwarded from that store: gathered with scalar or variable-length copies, the
+// load waited for every older store to reach the cache.
+inline Ints append(const Ints& to, int first, std::uint32_t lanes, const Ints& v) {
 #if defined(__AVX512F__)
-    // In a register, then one store: the compressing store to memory is slow on AMD's AVX-512.
-    _mm512_storeu_si512(out, _mm512_maskz_compress_epi32(__mmask16(mask), __m512i(v)));
+    const __mmask16 slots = __mmask16(((1u << std::popcount(lanes)) - 1u) << first);
+    return Ints(_mm512_mask_expand_epi32(__m512i(to), slots, _mm512_maskz_compress_epi32(__mmask16(lanes), __m512i(v))));
 #else
-    int n = 0;
-    for (int i = 0; i < kBatchLanes; ++i) {
-        if (mask >> i & 1) out[n++] = v[i];
-    }
+    Ints r = to;
+    for (std::uint32_t m = lanes; m != 0; m &= m - 1) r[first++] = v[std::countr_zero(m)];
+    return r;
 #endif
-    return std::popcount(mask);
+}
+
+// The lowest n set bits of `mask` (all of them when it has n or fewer).
+inline std::uint32_t lowest_bits(std::uint32_t mask, int n) {
+#if defined(__BMI2__)
+    return n >= 32 ? mask : _pdep_u32((1u << n) - 1u, mask);
+#else
+    std::uint32_t r = 0;
+    for (; mask != 0 && n > 0; mask &= mask - 1, --n) r |= mask & -mask;
+    return r;
+#endif
 }
 
 // The bits of `bits` at the set bits of `mask`, packed from bit 0 up (BMI2's pext).

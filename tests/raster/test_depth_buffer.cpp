@@ -160,6 +160,38 @@ TEST_CASE("depth is stored in 24 bits as the reference's buffer: nearer by less 
     }
 }
 
+TEST_CASE("the stored depth is each pixel's own, in every block of an odd-sized frame", "[raster][depth]") {
+    // Two crossing triangles whose depth changes by about 0.02 from one pixel to the next, on a
+    // frame whose last block column and row are partial, and whose corners no triangle covers.
+    // A pixel's stored depth is the window depth of the fragment it shows (blue is its NDC z),
+    // to the 24-bit step; the clear depth, 1, where it shows none. A block's depths stored in
+    // the wrong order or place would be off by whole steps of the slope.
+    constexpr int W = 37, H = 23;
+    const std::vector<VertexIn> v = {{{-2, 2, -0.9f}, {}}, {{36, 4, 0.8f}, {}}, {{10, 22, 0.1f}, {}},
+                                     {{1, 20, 0.7f}, {}},  {{35, 21, -0.6f}, {}}, {{20, 1, 0.2f}, {}}};
+    const std::vector<std::uint32_t> idx = {0, 1, 2, 3, 4, 5};
+    DrawCall d{v, idx, &kPosition, {}};
+    d.uniforms.model_view_projection = window_to_clip(W, H);
+    const Framebuffer fb = rasterize(W, H, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), {});
+    REQUIRE(!fb.depth.empty());
+    int covered = 0, clear = 0;
+    for (int y = 0; y < H; ++y) {
+        for (int x = 0; x < W; ++x) {
+            const float* p = fb.pixel(x, y);
+            const float depth = fb.depth[fb.index(x, y)];
+            if (p[3] == 0.0f) {
+                CHECK(depth == 1.0f);
+                ++clear;
+            } else {
+                CHECK(std::abs(depth - (p[2] * 0.5f + 0.5f)) < 0x1p-20f);
+                ++covered;
+            }
+        }
+    }
+    CHECK(covered > W * H / 2);
+    CHECK(clear > 0);
+}
+
 TEST_CASE("the lane-wide depth test is the per-lane one: depth24, LESS and the edge sums on a whole batch",
           "[raster][depth]") {
     // What the rasterizer's block test uses (raster/rasterizer.cpp), lane by lane against the

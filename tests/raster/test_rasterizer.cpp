@@ -75,23 +75,32 @@ TEST_CASE("a block's colours go from lane order to framebuffer rows, each pixel 
     }
 }
 
-TEST_CASE("lanes16's compress, compress_bits and equal are their lane-by-lane definitions", "[raster][layout]") {
+TEST_CASE("lanes16's append, lowest_bits, compress_bits and equal are their lane-by-lane definitions", "[raster][layout]") {
     std::mt19937 random(5);
     std::uniform_int_distribution<std::uint32_t> bits(0, 0xFFFFu);
     std::uniform_int_distribution<int> small(-3, 3);
     for (int trial = 0; trial < 500; ++trial) {
         const std::uint32_t mask = trial % 10 == 0 ? 0u : trial % 10 == 1 ? 0xFFFFu : bits(random), other = bits(random);
-        lanes16::Ints v, w;
-        for (int i = 0; i < kBatchLanes; ++i) v[i] = 1000 * i - 7000, w[i] = small(random) == 0 ? v[i] : v[i] + small(random);
-        alignas(64) int out[kBatchLanes];
-        const int n = lanes16::compress(mask, v, out);
-        CHECK(n == std::popcount(mask));
-        std::uint32_t packed = 0, equal = 0;
-        for (int i = 0, k = 0; i < kBatchLanes; ++i) {
+        lanes16::Ints v, w, to;
+        for (int i = 0; i < kBatchLanes; ++i) {
+            v[i] = 1000 * i - 7000, w[i] = small(random) == 0 ? v[i] : v[i] + small(random), to[i] = -1 - i;
+        }
+        // Appended after `first` lanes, as many of mask's lanes as fit.
+        const int first = trial % (kBatchLanes + 1);
+        const std::uint32_t taken = lanes16::lowest_bits(mask, kBatchLanes - first);
+        const lanes16::Ints appended = lanes16::append(to, first, taken, v);
+        std::uint32_t packed = 0, equal = 0, expected_taken = 0;
+        int k = 0;
+        for (int i = 0; i < kBatchLanes; ++i) {
             equal |= std::uint32_t(v[i] == w[i]) << i;
             if (!(mask >> i & 1)) continue;
-            CHECK(out[k] == v[i]);
+            if (k < kBatchLanes - first) expected_taken |= 1u << i;
             packed |= (other >> i & 1) << k++;
+        }
+        CHECK(taken == expected_taken);
+        for (int i = 0, n = 0; i < kBatchLanes; ++i) {
+            if (taken >> i & 1) CHECK(appended[first + n++] == v[i]);
+            if (i < first || i >= first + std::popcount(taken)) CHECK(appended[i] == to[i]);
         }
         CHECK(lanes16::compress_bits(other, mask) == packed);
         CHECK(lanes16::equal(v, w) == equal);
