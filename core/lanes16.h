@@ -51,20 +51,12 @@ inline Ints load(const int* p) {
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline void store(float* p, const Floats& v) {
+// Sixteen lanes of T (float or int) stored at p.
+template <class T, class Lanes>
+inline void store_lanes(T* p, const Lanes& v) {
+    static_assert(sizeof v == kBatchLanes * sizeof(T));
 #if defined(__AVX__) && !defined(__AVX512F__)
     // Two registers of eight, stored as such (a copy of the whole went through general registers).
-    __m256 halves[2];
-    std::memcpy(halves, &v, sizeof halves);
-    _mm256_storeu_ps(p, halves[0]);
-    _mm256_storeu_ps(p + 8, halves[1]);
-#else
-    std::memcpy(p, &v, sizeof v);
-#endif
-}
-
-inline void store(int* p, const Ints& v) {
-#if defined(__AVX__) && !defined(__AVX512F__)
     __m256i halves[2];
     std::memcpy(halves, &v, sizeof halves);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), halves[0]);
@@ -73,6 +65,8 @@ inline void store(int* p, const Ints& v) {
     std::memcpy(p, &v, sizeof v);
 #endif
 }
+inline void store(float* p, const Floats& v) { store_lanes(p, v); }
+inline void store(int* p, const Ints& v) { store_lanes(p, v); }
 
 inline Floats to_float(const Ints& v) { return __builtin_convertvector(v, Floats); }
 
