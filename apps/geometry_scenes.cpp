@@ -138,12 +138,13 @@ Scene base_scene(int width, int height, const Camera& c) {
 }
 
 // A torus seen from above its rim under a rolled camera: every pixel of it is drawn over by
-// back faces, the far inner wall shows through the hole and the near part of the ring hides
-// the rest. Odd size.
+// back faces (its material is double-sided, so that they are drawn), the far inner wall shows
+// through the hole and the near part of the ring hides the rest. Odd size.
 Scene torus_rolled() {
     Scene s = base_scene(777, 431, camera({0.0f, 1.9f, 2.6f}, {0.0f, -0.15f, 0.0f}, 45.0f, 0.5f, 20.0f, 28.0f));
     s.meshes = {torus_mesh(1.0f, 0.45f, 72, 28, 6.0f, 2.0f)};
     s.objects.push_back(object("torus", 0, glm::mat4(1.0f), "dots"));
+    s.objects.back().double_sided = true;
     return s;
 }
 
@@ -221,11 +222,39 @@ Scene grazing_plane() {
 }
 
 // A fan of slivers and a strip of long thin triangles, tilted away in perspective: nothing
-// overlaps, so the depth buffer is left out, and every pixel must still be llvmpipe's.
+// overlaps, so the depth buffer is left out, and every pixel must still be llvmpipe's. Double
+// sided, so that both windings are drawn.
 Scene sliver_fan() {
     Scene s = base_scene(256, 192, camera({0.25f, -0.2f, 2.3f}, {0.25f, -0.05f, 0.0f}, 50.0f, 0.5f, 10.0f));
     s.meshes = {sliver_mesh(240)};
     s.objects.push_back(object("slivers", 0, glm::rotate(glm::mat4(1.0f), glm::radians(-55.0f), {1, 0, 0}), "dots"));
+    s.objects.back().double_sided = true;
+    return s;
+}
+
+// Back-face culling as glTF asks for it (materials are single-sided unless doubleSided): a torus
+// whose near part crosses the near plane (the clipped pieces are culled by what is seen of them:
+// through the cut, its inner walls are culled and the far side shows), a box under a mirroring
+// node (its front faces wind clockwise: it must look solid, not hollow), two squares seen from
+// behind, single-sided (culled) and double-sided (drawn), and the sliver fan single-sided, whose
+// windings alternate: only the thin slivers face the eye. Odd size.
+Scene culling() {
+    Scene s = base_scene(301, 187, camera({0.0f, 0.0f, 2.4f}, {0.0f, 0.0f, 0.0f}, 60.0f, 0.9f, 10.0f));
+    s.meshes = {torus_mesh(0.3f, 0.12f, 48, 20, 6.0f, 2.0f), box_mesh(), grid_mesh(1.0f, 1, 1.0f), sliver_mesh(120)};
+    const glm::mat4 I(1.0f);
+    // The squares stand up facing -z: (x, y, z) -> (x, z, -y) turns the grid's +y normal away from the eye.
+    const glm::mat4 face_away(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));
+    s.objects = {
+        object("torus", 0, glm::rotate(glm::translate(I, {0.0f, -0.15f, 1.35f}), glm::radians(-60.0f), {1, 0, 0}), "dots"),
+        object("mirrored box", 1,
+               glm::scale(glm::rotate(glm::translate(I, {-1.3f, 0.6f, -0.5f}), glm::radians(35.0f), {1, 1, 0}),
+                          glm::vec3(-0.3f, 0.3f, 0.3f)),
+               "dots"),
+        object("single-sided square", 2, glm::translate(I, {1.2f, 0.5f, -0.5f}) * face_away, "dots"),
+        object("double-sided square", 2, glm::translate(I, {1.2f, -0.7f, -0.5f}) * face_away, "dots"),
+        object("single-sided slivers", 3, glm::scale(glm::translate(I, {-1.3f, -0.8f, -0.5f}), glm::vec3(0.6f)), "dots"),
+    };
+    s.objects[3].double_sided = true;
     return s;
 }
 
@@ -240,6 +269,7 @@ void write_geometry_scenes(const std::filesystem::path& dir) {
     write_hierarchy(out / "hierarchy.gltf");
     save_scene(grazing_plane(), out / "grazing-plane.gltf");
     save_scene(sliver_fan(), out / "sliver-fan.gltf");
+    save_scene(culling(), out / "culling.gltf");
 }
 
 }  // namespace qs

@@ -30,12 +30,13 @@ import sys
 from collections import OrderedDict
 
 SCENES = OrderedDict([
-    ("torus-rolled", "torus under a camera rolled 28° (self-occluding)"),
+    ("torus-rolled", "double-sided torus under a camera rolled 28° (self-occluding)"),
     ("overlap", "overlapping objects: squares at three depths, a box and a torus crossing one, mixed order"),
     ("overlap-reversed", "the same drawn in reverse order"),
     ("hierarchy", "node hierarchy: matrix, TRS with non-uniform scale, a sheared grandchild"),
     ("grazing-plane", "200x200 plane seen from 0.3 above, crossing the near plane and the screen's sides"),
-    ("sliver-fan", "fan of 240 slivers and a strip of long thin triangles"),
+    ("sliver-fan", "double-sided fan of 240 slivers and a strip of long thin triangles"),
+    ("culling", "back faces culled: a torus cut by the near plane, a mirrored box, squares from behind, single-sided slivers"),
 ])
 
 

@@ -8,6 +8,19 @@
 
 namespace qs {
 
+// Which way a triangle's vertices turn in GL's window (y up), as glFrontFace names it.
+enum class Winding { CounterClockwise, Clockwise };
+
+// Which triangles a draw keeps, as GL's GL_CULL_FACE with glCullFace(GL_BACK) and glFrontFace:
+// with `cull_back`, only those that wind as `front` in the window. The facing is the visible
+// part's, after clipping, so a triangle crossing the near plane is judged by what is drawn of it.
+struct FaceCulling {
+    bool cull_back = false;
+    Winding front = Winding::CounterClockwise;
+    bool keeps(Winding w) const { return !cull_back || w == front; }
+    bool operator==(const FaceCulling&) const = default;
+};
+
 struct DrawCall {
     std::span<const VertexIn> vertices;
     std::span<const std::uint32_t> indices;  // three per triangle
@@ -16,6 +29,7 @@ struct DrawCall {
     // The bound texture picks a mipmap level or a filter from the level of detail: shade in quads
     // even if the shader takes no derivatives of its own, as a GL driver does for texture2D.
     bool texture_lod = false;
+    FaceCulling culling = {};  // none by default: a bake draws every triangle
 };
 
 }  // namespace qs

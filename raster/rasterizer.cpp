@@ -488,7 +488,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
             clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, viewport, clipped);
             for (const auto& tri : clipped) {
                 if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule,
-                                            prepared[di].flat, verts[c])) {
+                                            prepared[di].flat, verts[c], call.culling)) {
                     t->draw = int(di);
                     triangles.push_back(*t);
                 }

@@ -10,7 +10,7 @@ namespace qs {
 
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
-                                            const ClipVertex& provoking) {
+                                            const ClipVertex& provoking, FaceCulling culling) {
     std::int64_t fx[3], fy[3];
     for (int i = 0; i < 3; ++i) {
         const glm::vec4& w = tri[std::size_t(i)].window;
@@ -27,6 +27,8 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     // Orient so that the interior is on the positive side of every edge.
     const std::int64_t area = (fx[1] - fx[0]) * (fy[2] - fy[0]) - (fx[2] - fx[0]) * (fy[1] - fy[0]);
     if (area == 0) return std::nullopt;
+    // y runs down here, so a negative area turns counter-clockwise in GL's window.
+    if (!culling.keeps(area < 0 ? Winding::CounterClockwise : Winding::Clockwise)) return std::nullopt;
     int order[3] = {0, 1, 2};
     if (area < 0) std::swap(order[1], order[2]);
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/draw_call.h"
 #include "raster/clipper.h"
 #include "raster/edge_function.h"
 #include "raster/plane_equation.h"
@@ -27,11 +28,12 @@ struct TriangleSetup {
 
 // From the vertices' window coordinates (ClipVertex::window: framebuffer pixels, y down as
 // OSMesa's buffer, depth, 1/w), snapped to fixed point for the edges. Returns nothing for a
-// triangle that covers no pixel centre of the framebuffer or has zero area. Flat varyings (bits
-// of `flat`) take the value of `provoking`, the last vertex of the triangle before clipping, in
-// the plane's a0.
+// triangle that covers no pixel centre of the framebuffer, has zero area, or that `culling`
+// drops by its winding on the snapped vertices (the sign llvmpipe's setup culls by). Flat
+// varyings (bits of `flat`) take the value of `provoking`, the last vertex of the triangle before
+// clipping, in the plane's a0.
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
-                                            const ClipVertex& provoking);
+                                            const ClipVertex& provoking, FaceCulling culling = {});
 
 }  // namespace qs

@@ -50,7 +50,18 @@ struct Mesh {
     std::vector<Triangle> triangles;    // Embree's primitive i is triangles[i]: the finite ones
     std::vector<TrianglePlane> planes;  // per primitive
     std::vector<VertexOut> out;         // per vertex, this frame
+    FaceCulling culling;                // the draw's, when the BVH was built
 };
+
+// Whether the visible part of a triangle winds counter-clockwise in GL's window, from its clip
+// coordinates: the sign of det[x y w] is that of its window area wherever all three w are
+// positive, and clipping keeps it (each clipped piece lies in the same plane through the eye,
+// turning the same way), so it judges a triangle crossing the near plane as the rasterizer's
+// clipped pieces are judged. Zero (edge-on) for a triangle that covers no pixel.
+double clip_winding(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+    const glm::dvec3 p(a.x, a.y, a.w), q(b.x, b.y, b.w), r(c.x, c.y, c.w);
+    return glm::dot(p, glm::cross(q, r));
+}
 
 // Embree works on rays and vertices whose coordinates stay within +-1.844e18 (FLT_LARGE in its
 // sources); beyond, its assertions abort or its builder drops triangles silently.
@@ -495,6 +506,11 @@ struct RayCaster::Impl {
                     return std::isfinite(positions[v].x) && std::isfinite(positions[v].y) && std::isfinite(positions[v].z);
                 };
                 if (!finite(t[0]) || !finite(t[1]) || !finite(t[2])) continue;
+                // Culled triangles are left out: the BVH holds what the eye sees from one side.
+                if (m.culling.cull_back) {
+                    const double turn = clip_winding(m.out[t[0]].clip, m.out[t[1]].clip, m.out[t[2]].clip);
+                    if (turn == 0.0 || !m.culling.keeps(turn > 0.0 ? Winding::CounterClockwise : Winding::Clockwise)) continue;
+                }
                 for (std::uint32_t v : t) {
                     if (!within_embree_range(m.world[v])) {
                         throw RayCastError("ray caster: vertex " + std::to_string(v) + " of draw " + std::to_string(i) +
@@ -518,6 +534,7 @@ RayCaster::RayCaster(std::span<const DrawCall> draws, const glm::mat4& clip_from
     impl_->eye.clip_from_world = glm::dmat4(clip_from_world);
     impl_->eye.world_from_clip = glm::inverse(impl_->eye.clip_from_world);
     impl_->meshes.resize(draws.size());
+    for (std::size_t i = 0; i < draws.size(); ++i) impl_->meshes[i].culling = draws[i].culling;
     run_vertex_stages(draws, impl_->meshes);
     impl_->update_positions();
     impl_->build(draws);
@@ -542,7 +559,12 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     }
     const ThreadLimit limit(options.threads);
     run_vertex_stages(draws, im.meshes);
-    if (im.update_positions()) im.build(draws);
+    bool culling_changed = false;
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+        culling_changed |= im.meshes[i].culling != draws[i].culling;
+        im.meshes[i].culling = draws[i].culling;
+    }
+    if (im.update_positions() || culling_changed) im.build(draws);
 
     RenderStats stats;
     for (std::size_t i = 0; i < draws.size(); ++i) {

@@ -372,7 +372,7 @@ void GlSceneRenderer::draw() {
     glClearColor(scene_.clear_color.r, scene_.clear_color.g, scene_.clear_color.b, scene_.clear_color.a);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -386,6 +386,14 @@ void GlSceneRenderer::draw() {
         glLoadMatrixf(glm::value_ptr(mvp));
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
+        // glTF: a material that is not doubleSided culls back faces; a mirroring node turns its
+        // front faces clockwise. An atlas bake draws every triangle, in texture space.
+        if (o.double_sided || request_.atlas) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glFrontFace(o.mirrors() ? GL_CW : GL_CCW);
+        }
         if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
         if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
             glUniform2f(loc, float(width), float(height));

@@ -107,6 +107,8 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.program = &program;
         if (request.atlas) d.program = atlas_programs_.emplace_back(std::make_unique<AtlasProgram>(program)).get();
         d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
+        // An atlas bake draws every triangle in texture space, where winding says nothing of facing.
+        if (!request.atlas) d.culling = {!o.double_sided, o.mirrors() ? Winding::Clockwise : Winding::CounterClockwise};
         d.uniforms.time = float(request.time.value_or(double(scene.time)));
         const Needs& needs = program.info().needs;
         if (needs.coordinates == Coordinates::Texcoord2D && !mesh.has_texcoords) {

@@ -820,6 +820,7 @@ Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::p
                     const tinygltf::Material& gmat = m.materials[std::size_t(mat)];
                     const std::string mf = "materials[" + std::to_string(mat) + "].extras";
                     o.material = gmat.name.empty() ? "materials[" + std::to_string(mat) + "]" : gmat.name;
+                    o.double_sided = gmat.doubleSided;
                     if (gmat.extras.IsObject() && gmat.extras.Has("shader")) {
                         if (!gmat.extras.Get("shader").IsString()) fail(path, mf + ".shader", "expected a shader name");
                         o.shader = gmat.extras.Get("shader").Get<std::string>();
@@ -928,6 +929,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
     for (const Object& o : scene.objects) {
         tinygltf::Material mat;
         mat.name = o.name;
+        mat.doubleSided = o.double_sided;
         tinygltf::Value::Object extras{{"shader", tinygltf::Value(o.shader)}};
         if (!o.uniforms.empty()) {
             tinygltf::Value::Object uniforms;

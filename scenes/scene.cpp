@@ -1,6 +1,8 @@
 #include "scenes/scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 namespace qs {
 
@@ -25,6 +27,8 @@ int Object::texture_for(std::string_view uniform) const {
     }
     return -1;
 }
+
+bool Object::mirrors() const { return glm::determinant(glm::mat3(world_from_object)) < 0.0f; }
 
 glm::mat4 Scene::model_view_projection(const Object& o, float aspect) const {
     return camera.projection(aspect) * camera.view * o.world_from_object;

@@ -119,9 +119,15 @@ struct Object {
     std::string material; // for messages: which glTF material named the shader
     // Values for the shader's own uniforms: the material's extras.uniforms, by name.
     std::vector<UniformSetting> uniforms;
+    // The material's doubleSided. When false (glTF's default, a primitive without a material
+    // included) back faces are culled: a front face winds counter-clockwise seen from outside,
+    // or clockwise when the node's world transform mirrors (glTF 3.7.4).
+    bool double_sided = false;
 
     // The texture bound to sampler `uniform`, `teximage` included; -1 for none.
     int texture_for(std::string_view uniform) const;
+    // Whether world_from_object mirrors (its determinant is negative), turning the front faces.
+    bool mirrors() const;
 };
 
 struct Scene {

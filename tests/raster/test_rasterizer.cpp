@@ -2,11 +2,13 @@
 // clipping, robustness, determinism.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>
+#include <tuple>
 
 #include "core/block_rows.h"
 #include "core/lanes16.h"
@@ -339,6 +341,47 @@ TEST_CASE("triangles crossing the near plane and vertices at 1e6 in clip space a
     DrawCall h{huge, tri, &kFlat, {}};
     const Framebuffer b = rasterize(W, H, glm::vec4(0), std::span<const DrawCall>(&h, 1), {});
     for (std::size_t i = 3; i < b.rgba.size(); i += 4) CHECK(b.rgba[i] == 1.0f);
+}
+
+TEST_CASE("back faces are culled by their winding in the window, after clipping, for either front winding", "[raster][culling]") {
+    constexpr int W = 32, H = 32;
+    auto draw_culled = [](const std::vector<VertexIn>& verts, const std::vector<std::uint32_t>& idx, const glm::mat4& mvp,
+                          FaceCulling culling) {
+        DrawCall d{verts, idx, &kFlat, {}};
+        d.uniforms.model_view_projection = mvp;
+        d.culling = culling;
+        return rasterize(W, H, glm::vec4(0), std::span<const DrawCall>(&d, 1), {});
+    };
+    auto alpha = [](const Framebuffer& fb) {
+        std::vector<float> a;
+        for (std::size_t i = 3; i < fb.rgba.size(); i += 4) a.push_back(fb.rgba[i]);
+        return a;
+    };
+    const FaceCulling none, back{true, Winding::CounterClockwise}, back_mirrored{true, Winding::Clockwise};
+    // In the window (y up): counter-clockwise on the left, clockwise on the right.
+    const std::vector<VertexIn> pair = {{{2, 2, 0}, {}},  {{14, 2, 0}, {}}, {{2, 30, 0}, {}},
+                                        {{18, 2, 0}, {}}, {{18, 30, 0}, {}}, {{30, 2, 0}, {}}};
+    const std::vector<std::uint32_t> both = {0, 1, 2, 3, 4, 5};
+    const glm::mat4 window = window_to_clip(W, H);
+    for (const auto& [culling, left, right] : {std::tuple{none, 1.0f, 1.0f}, std::tuple{back, 1.0f, 0.0f},
+                                               std::tuple{back_mirrored, 0.0f, 1.0f}}) {
+        const Framebuffer fb = draw_culled(pair, both, window, culling);
+        CHECK(covered(fb, 5, 5) == left);
+        CHECK(covered(fb, 21, 5) == right);
+    }
+    // A ground plane reaching behind the eye, counter-clockwise seen from above: its clipped
+    // pieces are judged by what is seen of them, so culling keeps all of it or none.
+    const glm::mat4 mvp = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
+                          glm::lookAt(glm::vec3(0, 0, 1), glm::vec3(0, 1, 1), glm::vec3(0, 0, 1));
+    const std::vector<VertexIn> plane = {{{-50, -50, 0}, {}}, {{50, -50, 0}, {}}, {{50, 50, 0}, {}}, {{-50, 50, 0}, {}}};
+    const std::vector<std::uint32_t> ccw = {0, 1, 2, 0, 2, 3}, cw = {0, 2, 1, 0, 3, 2};
+    const std::vector<float> drawn = alpha(draw_culled(plane, ccw, mvp, none));
+    REQUIRE(std::count(drawn.begin(), drawn.end(), 1.0f) >= W * H / 3);  // the ground below the horizon
+    const std::vector<float> nothing(drawn.size(), 0.0f);
+    CHECK(alpha(draw_culled(plane, ccw, mvp, back)) == drawn);
+    CHECK(alpha(draw_culled(plane, ccw, mvp, back_mirrored)) == nothing);
+    CHECK(alpha(draw_culled(plane, cw, mvp, back)) == nothing);
+    CHECK(alpha(draw_culled(plane, cw, mvp, back_mirrored)) == drawn);
 }
 
 TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "[raster][depth]") {

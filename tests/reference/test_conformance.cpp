@@ -1,7 +1,8 @@
 // The geometry conformance scenes (apps/geometry_scenes.h) with every catalogue shader that can
 // draw on them, against OSMesa rendering the original GLSL: the bar of tests/reference, on scenes
 // that were not designed for the renderer (self-occlusion, overlap in both draw orders, node
-// hierarchies, rolled cameras, the near plane at a grazing angle, slivers, odd sizes).
+// hierarchies, rolled cameras, the near plane at a grazing angle, slivers, back faces culled
+// and mirrored, odd sizes).
 //
 // Built once per driver (QUADSHADE_CONFORMANCE_DRIVER), since OSMesa picks its Gallium driver
 // once per process; each scene is a test case, so that ctest runs them side by side. The
@@ -37,6 +38,7 @@ struct SceneCase {
 const SceneCase kScenes[] = {
     {"torus-rolled", 259, 143}, {"overlap", 160, 120},        {"overlap-reversed", 101, 75},
     {"hierarchy", 192, 128},    {"grazing-plane", 259, 143},  {"sliver-fan", 128, 96},
+    {"culling", 151, 93},
 };
 
 // The bar, per case, against llvmpipe with the fine rule: coverage identical, at most 0.1% of the
@@ -94,6 +96,10 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
     {{"hierarchy/hash_hoskins", "softpipe"}, {10, 10, 0, "the cell hash; measured 7, 7"}},
     {{"hierarchy/lawlor_mandelbrot", "softpipe"}, {45, 38, 0, "escape times; measured 36, 29"}},
     {{"grazing-plane/es_smooth9_tiles128", "softpipe"}, {50, 50, 0, "the sine hash; measured 36, 36"}},
+    {{"culling/*", "softpipe"},
+     {14, 14, 0,
+      "softpipe's interpolation (below): the double-sided square's middle column of pixel centres lies on a step of "
+      "the patterns that step at s = 0.5 (lines, checker, the cell hashes); measured at most 10, 10"}},
     {{"sliver-fan/hash_hoskins", "softpipe"}, {8, 8, 3, "the cell hash; measured 5, 5, 2"}},
     {{"sliver-fan/lawlor_mandelbrot", "softpipe"}, {35, 30, 3, "escape times; measured 25, 21"}},
 };
@@ -175,9 +181,10 @@ TEST_CASE("every conformance scene's st is llvmpipe's bit for bit: clipped, back
           "[conformance][interpolation]") {
     // pattern_s writes st.s: each pixel shows the interpolated varying of the fragment that won
     // the depth test. The grazing plane's triangles around the eye are clipped at the near plane
-    // and the screen's sides (clipper.h), half the torus's and the boxes' faces are back faces
-    // (their planes set up from swapped vertices: triangle_setup.cpp), and the overlap scenes
-    // depend on the 24-bit depth test choosing llvmpipe's fragments (depth_buffer.h).
+    // and the screen's sides (clipper.h), half the double-sided torus's faces are back faces
+    // (their planes set up from swapped vertices: triangle_setup.cpp), the overlap scenes depend
+    // on the 24-bit depth test choosing llvmpipe's fragments (depth_buffer.h), and the culling
+    // scene on culling llvmpipe's triangles (clipped, mirrored and sliver ones).
     for (const SceneCase& sc : kScenes) {
         const std::filesystem::path file = kSource / "scenes/assets/conformance" / (std::string(sc.name) + ".gltf");
         Scene reference_scene = load_scene(file), scene = load_scene(file);
@@ -205,5 +212,6 @@ CONFORMANCE_CASE(2, "overlapping objects drawn in reverse order")
 CONFORMANCE_CASE(3, "node hierarchy with matrices and non-uniform TRS")
 CONFORMANCE_CASE(4, "200x200 plane from 0.3 above, crossing the near plane")
 CONFORMANCE_CASE(5, "fan of slivers")
+CONFORMANCE_CASE(6, "back faces culled, clipped and mirrored")
 
 }  // namespace qs

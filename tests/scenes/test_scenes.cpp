@@ -366,6 +366,66 @@ TEST_CASE("node hierarchies compose as glTF says: parent matrix times the child'
     }
 }
 
+TEST_CASE("glTF's doubleSided: back faces culled unless it is true, front faces clockwise under a mirroring node", "[scenes][culling]") {
+    // One triangle, counter-clockwise seen from the framing camera (+z), under a node that keeps
+    // it, turns it around (180 degrees about y) or mirrors it in z (the same points, but the
+    // determinant is negative, so its front faces are clockwise: it is seen from behind). Its
+    // texture coordinates wind clockwise: an atlas bake must draw it anyway.
+    const auto dir = temp_dir("culling");
+    const std::string nodes[] = {R"({"mesh": 0})", R"({"mesh": 0, "rotation": [0, 1, 0, 0]})", R"({"mesh": 0, "scale": [1, 1, -1]})"};
+    const bool kDrawnSingleSided[] = {true, false, false};
+    for (int n = 0; n < 3; ++n) {
+        for (const char* material : {"", R"(, "material": 0)"}) {
+            for (const bool double_sided : {false, true}) {
+                if (!*material && double_sided) continue;  // no material: glTF's default, single-sided
+                const std::string materials = *material ? std::string(R"("materials": [{"doubleSided": )") +
+                                                              (double_sided ? "true" : "false") + "}],"
+                                                        : "";
+                write_text(dir / "t.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+                    "nodes": [)" + nodes[n] + R"(], )" + materials + R"(
+                    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1})" + material + R"(}]}],
+                    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                                   "min": [-1, -1, 0], "max": [1, 1, 0]},
+                                  {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC2"}],
+                    "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 24}],
+                    "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAAzczMPc3MzD3NzMw9ZmZmP2ZmZj/NzMw9"}]})");
+                Scene s = load_scene(dir / "t.gltf");
+                REQUIRE(s.objects.size() == 1);
+                CHECK(s.objects[0].double_sided == double_sided);
+                CHECK(s.objects[0].mirrors() == (n == 2));
+                const bool expected = double_sided || kDrawnSingleSided[n];
+                for (const Backend backend : {Backend::Rasterizer, Backend::RayCaster}) {
+                    FrameRequest r;
+                    r.width = r.height = 32;
+                    r.shader_override = "checker";
+                    r.backend = backend;
+                    const Framebuffer fb = render_frame(s, r);
+                    std::size_t drawn = 0;
+                    for (std::size_t i = 3; i < fb.rgba.size(); i += 4) drawn += fb.rgba[i] > 0.5f;
+                    INFO("node " << n << (*material ? " with" : " without") << " a material, doubleSided " << double_sided
+                                 << ", backend " << int(backend));
+                    CHECK((drawn > 150) == expected);
+                    CHECK((drawn == 0) == !expected);
+                }
+                // An atlas bake draws every triangle whatever its material says.
+                FrameRequest atlas;
+                atlas.width = atlas.height = 32;
+                atlas.shader_override = "checker";
+                atlas.atlas = true;
+                const Framebuffer baked = render_frame(s, atlas);
+                std::size_t texels = 0;
+                for (std::size_t i = 3; i < baked.rgba.size(); i += 4) texels += baked.rgba[i] > 0.5f;
+                CHECK(texels > 0);
+            }
+        }
+    }
+    // save_scene writes doubleSided back.
+    Scene s = load_scene(dir / "t.gltf");
+    s.objects[0].shader = "checker";
+    save_scene(s, dir / "saved.gltf");
+    CHECK(load_scene(dir / "saved.gltf").objects[0].double_sided);
+}
+
 TEST_CASE("frames differ where the shader depends on time and nowhere else", "[scenes][animation]") {
     Scene fig = load_scene(kFigure);
     FrameRequest r;
