@@ -17,12 +17,13 @@ namespace qs {
 namespace {
 
 // The world point of NDC (x, y, z) and its derivative along NDC direction d, one ray at a time
-// as glm computes them.
+// as glm computes them (h.xyz scaled by 1 / h.w).
 glm::dvec3 unproject(const glm::dmat4& world_from_clip, double x, double y, double z, const glm::dvec4& d, glm::dvec3& dp) {
     const glm::dvec4 h = world_from_clip * glm::dvec4(x, y, z, 1.0);
-    const glm::dvec3 p = glm::dvec3(h) / h.w;
+    const double scale = 1.0 / h.w;
+    const glm::dvec3 p = glm::dvec3(h) * scale;
     const glm::dvec4 dh = world_from_clip * d;
-    dp = (glm::dvec3(dh) - p * dh.w) / h.w;
+    dp = (glm::dvec3(dh) - p * dh.w) * scale;
     return p;
 }
 
