@@ -761,52 +761,30 @@ void store_lanes(float* p, int base, int n, const Floats& v) {
     }
 }
 
-// Sixteen lanes stored as one vector: a shader loads its results sixteen at a time, and a load
-// spanning two stores is not forwarded from them: it waits for both to reach the cache (the
-// halftone's first load after each lookup held a fifth of its shader's samples).
-typedef float Floats16 __attribute__((vector_size(2 * L * sizeof(float))));
-void store_16_lanes(float* p, const Floats& low, const Floats& high) {
-    const Floats16 v = __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-    std::memcpy(p, &v, sizeof v);
-}
-
-// One register's worth of a lookup's lanes, from `base`: n of them.
+// One register's worth of a lookup's lanes, from `base`.
 template <int Dims>
-[[gnu::always_inline]] inline Sample sample_register(const Texture& tex, const Lookup& l, int base, int n) {
+[[gnu::always_inline]] inline void sample_register(const Texture& tex, const Lookup& l, int base) {
+    const int n = std::min(l.lanes - base, L);
     const Floats rho2 = l.rho2 ? load_lanes(l.rho2, base, n) : Floats{};
     const Floats bias = l.bias ? load_lanes(l.bias, base, n) : Floats{};
     const Floats lod = l.lod ? load_lanes(l.lod, base, n) : Floats{};
     Coords<Dims> co;
     co.c[0] = load_lanes(l.s, base, n), co.c[1] = load_lanes(l.t, base, n);
     if constexpr (Dims == 3) co.c[2] = load_lanes(l.r, base, n);
-    return sample_lanes<Dims>(tex, co, l.rho2 ? &rho2 : nullptr, l.bias ? &bias : nullptr, l.lod ? &lod : nullptr,
-                              l.quad_vectors, l.d_ds[0] != nullptr);
+    const bool gradient = l.d_ds[0] != nullptr;
+    const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? &rho2 : nullptr, l.bias ? &bias : nullptr, l.lod ? &lod : nullptr,
+                                        l.quad_vectors, gradient);
+    const std::array<float*, 4>* d_out[3] = {&l.d_ds, &l.d_dt, &l.d_dr};
+    for (int c = 0; c < 4; ++c) {
+        store_lanes(l.rgba[std::size_t(c)], base, n, r.rgba[c]);
+        if (gradient) {
+            for (int i = 0; i < Dims; ++i) store_lanes((*d_out[i])[std::size_t(c)], base, n, r.d[i][c]);
+        }
+    }
 }
 template <int Dims>
 [[gnu::always_inline]] inline void sample_dims(const Texture& tex, const Lookup& l) {
-    const bool gradient = l.d_ds[0] != nullptr;
-    const std::array<float*, 4>* d_out[3] = {&l.d_ds, &l.d_dt, &l.d_dr};
-    int base = 0;
-    // Two registers at a time, stored sixteen lanes at once (store_16_lanes).
-    for (; base + 2 * L <= l.lanes; base += 2 * L) {
-        const Sample low = sample_register<Dims>(tex, l, base, L), high = sample_register<Dims>(tex, l, base + L, L);
-        for (int c = 0; c < 4; ++c) {
-            store_16_lanes(l.rgba[std::size_t(c)] + base, low.rgba[c], high.rgba[c]);
-            if (gradient) {
-                for (int i = 0; i < Dims; ++i) store_16_lanes((*d_out[i])[std::size_t(c)] + base, low.d[i][c], high.d[i][c]);
-            }
-        }
-    }
-    for (; base < l.lanes; base += L) {
-        const int n = std::min(l.lanes - base, L);
-        const Sample r = sample_register<Dims>(tex, l, base, n);
-        for (int c = 0; c < 4; ++c) {
-            store_lanes(l.rgba[std::size_t(c)], base, n, r.rgba[c]);
-            if (gradient) {
-                for (int i = 0; i < Dims; ++i) store_lanes((*d_out[i])[std::size_t(c)], base, n, r.d[i][c]);
-            }
-        }
-    }
+    for (int base = 0; base < l.lanes; base += L) sample_register<Dims>(tex, l, base);
 }
 
 // ---- the plain 2D lookup: one level, one filter, the 8-bit path ---------------------------
@@ -838,7 +816,7 @@ template <AxisMode M>
 // pixel rows (lanes 0, 1, 4, 5 and 2, 3, 6, 7 of two quads, number/lanes.h) read two texel
 // rows, each within 8 texels of its first lane's, two loads, two permutes and a blend. The same
 // texels in every case.
-[[gnu::always_inline]] inline Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& index) {
+Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& index) {
 #if defined(__AVX2__)
     const std::int32_t base = index[0];
     const Ints d = index - base;
@@ -874,8 +852,8 @@ void sample_plain_2d(const Texture& tex, const PlainLookup& l) {
     const Ints width = splat(tex.width), height = splat(tex.height);
     const std::uint32_t* t = tex.texels.data();
     const std::size_t count = tex.texels.size();
-    // The texels of lanes base .. base + n - 1.
-    const auto texels = [&](int base, int n) __attribute__((always_inline)) {
+    for (int base = 0; base < l.lanes; base += L) {
+        const int n = std::min(l.lanes - base, L);
         const Floats s = load_lanes(l.s, base, n), tc = load_lanes(l.t, base, n);
         Pairs q;
         if constexpr (Linear) {
@@ -895,19 +873,8 @@ void sample_plain_2d(const Texture& tex, const PlainLookup& l) {
         } else {
             q = split(gather_near(t, count, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
         }
-        return q;
-    };
-    // Unrolled, the texels stay in registers (as a loop, GCC picked each channel's half through
-    // memory: the halftone's frame took 7% longer).
-    int base = 0;
-    for (; base + 2 * L <= l.lanes; base += 2 * L) {
-        const Pairs low = texels(base, L), high = texels(base + L, L);
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) store_16_lanes(l.rgba[std::size_t(c)] + base, unorm(channel(low, c)), unorm(channel(high, c)));
-    }
-    for (; base < l.lanes; base += L) {
-        const int n = std::min(l.lanes - base, L);
-        const Pairs q = texels(base, n);
+        // Unrolled, the texels stay in registers (as a loop, GCC picked each channel's half
+        // through memory: the halftone's frame took 7% longer).
 #pragma GCC unroll 4
         for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
     }
