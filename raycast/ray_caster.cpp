@@ -53,11 +53,11 @@ struct Mesh {
     FaceCulling culling;                // the draw's, when the BVH was built
 };
 
-// Whether the visible part of a triangle winds counter-clockwise in GL's window, from its clip
-// coordinates: the sign of det[x y w] is that of its window area wherever all three w are
-// positive, and clipping keeps it (each clipped piece lies in the same plane through the eye,
-// turning the same way), so it judges a triangle crossing the near plane as the rasterizer's
-// clipped pieces are judged. Zero (edge-on) for a triangle that covers no pixel.
+// det[x y w] of a triangle's clip coordinates: positive where what is seen of it winds
+// counter-clockwise in GL's window, negative where clockwise, zero edge-on. Its sign is that of
+// the window area wherever all three w are positive, and clipping keeps it (each clipped piece
+// lies in the same plane through the eye, turning the same way), so a triangle crossing the near
+// plane is judged as the rasterizer judges its clipped pieces.
 double clip_winding(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
     const glm::dvec3 p(a.x, a.y, a.w), q(b.x, b.y, b.w), r(c.x, c.y, c.w);
     return glm::dot(p, glm::cross(q, r));

@@ -5,9 +5,11 @@
 // the texture the object's material binds to that name: teximage, extras.textures), its textures
 // are decoded here (texture_image.h) and uploaded in glTF's orientation (the image's first row at
 // t = 0; a 3D texture's slices are the image's bands of rows, glTexImage3D's own order) with the
-// sampler's wraps and filters, and glGenerateMipmap when the minification filter reads mipmaps. Fixed-function state: depth test LESS against a buffer cleared to 1, back faces
-// culled unless the material is doubleSided (front faces clockwise where the node mirrors; no
-// culling in an atlas bake), no blending. Shared with the renderer: the scene model and the GLSL text, nothing else.
+// sampler's wraps and filters, and glGenerateMipmap when the minification filter reads mipmaps.
+// Fixed-function state: depth test LESS against a buffer cleared to 1, back faces culled unless
+// the material is doubleSided (front faces clockwise where the node mirrors; no culling in an
+// atlas bake), no blending. Shared with the renderer: the scene model and the GLSL text, nothing
+// else.
 
 #include <cstdint>
 #include <filesystem>
