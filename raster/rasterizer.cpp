@@ -117,7 +117,11 @@ public:
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
         if (lo_x > hi_x || lo_y > hi_y || misses_tile(t, x0, y0)) return;
-        if (!depth_test_ && covers_tile(t, x0, y0)) {
+        // A triangle covering the whole tile is shaded a block pair at a time, without coverage
+        // or depth tests, where every fragment passes: without a depth buffer, or as the tile's
+        // first (its depths all still the cleared 1, which LESS passes for any depth below 1; a
+        // backdrop drawn first, as Figure 1.1's ground plane).
+        if (covers_tile(t, x0, y0) && (!depth_test_ || (touched_.none() && !may_reach_depth_one(t)))) {
             if (fused_) {
                 shade_tile<true>(x0, y0);
             } else {
@@ -215,7 +219,8 @@ private:
     }
 
     // Shades the tile at (x0, y0), which lies inside the triangle and the image, block pair by
-    // block pair: no coverage to test, no early depth (the caller checks). The loop is the same
+    // block pair: no coverage to test, no early depth (the caller checks that every fragment
+    // passes), the depths written where the frame has a depth buffer. The loop is the same
     // work as shade_block's, with the per-draw choices inside interpolate made once per tile
     // rather than per block (about a tenth of the simplex square).
     template <bool Fused>
@@ -241,7 +246,9 @@ private:
     [[gnu::always_inline]] void tile_block(int h, int bx, int by) {
         if (out_[h].discarded == 0) {
             store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined);
-            touched_[std::size_t(block_base(bx, by) / kBatchLanes)] = true;
+            const int block = block_base(bx, by) / kBatchLanes;
+            touched_[std::size_t(block)] = true;
+            if (depth_test_) lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
             written_ += kBatchLanes;
             return;
         }

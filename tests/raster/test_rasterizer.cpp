@@ -12,6 +12,7 @@
 
 #include "core/block_rows.h"
 #include "core/lanes16.h"
+#include "core/tile_grid.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"
@@ -385,16 +386,30 @@ TEST_CASE("back faces are culled by their winding in the window, after clipping,
 }
 
 TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "[raster][depth]") {
-    const std::vector<glm::vec3> near_tri = {{0, 0, -0.5f}, {32, 0, -0.5f}, {0, 32, -0.5f}};
-    const std::vector<glm::vec3> far_tri = {{0, 0, 0.5f}, {32, 0, 0.5f}, {32, 32, 0.5f}};
+    // Two tiles wide (kTileSize 64): each triangle covers one tile whole (the near one the lower
+    // left, the far one the lower right), where, drawn first, it is shaded without tests and its
+    // depths written for the other to be tested against.
+    static_assert(kTileSize == 64);
+    constexpr int S = 2 * kTileSize;
+    const std::vector<glm::vec3> near_tri = {{0, 0, -0.5f}, {S, 0, -0.5f}, {0, S, -0.5f}};
+    const std::vector<glm::vec3> far_tri = {{0, 0, 0.5f}, {S, 0, 0.5f}, {S, S, 0.5f}};
     for (bool near_first : {true, false}) {
         std::vector<glm::vec3> all = near_first ? near_tri : far_tri;
         const auto& second = near_first ? far_tri : near_tri;
         all.insert(all.end(), second.begin(), second.end());
-        const Framebuffer fb = draw(32, 32, all, kPosition);
+        const Framebuffer fb = draw(S, S, all, kPosition);
         CHECK(!fb.depth.empty());
-        CHECK(fb.pixel(20, 31 - 5)[2] == -0.5f);  // covered by both: the near one's z
+        // Covered by both: the near one's z, in either triangle's whole tile.
+        CHECK(fb.pixel(80, S - 1 - 20)[2] == -0.5f);
+        CHECK(fb.pixel(40, S - 1 - 12)[2] == -0.5f);
     }
+    // On the far plane (window depth 1), drawn first over whole tiles: LESS against the cleared 1
+    // drops every fragment, so the tile's first triangle is not written untested.
+    const std::vector<glm::vec3> on_far_plane = {{0, 0, 1.0f}, {S, 0, 1.0f}, {0, S, 1.0f}, {1, 1, 0}, {3, 1, 0}, {1, 3, 0}};
+    const Framebuffer dropped = draw(S, S, on_far_plane, kPosition);
+    CHECK(!dropped.depth.empty());
+    CHECK(covered(dropped, 40, 12) == 0.0f);
+    CHECK(covered(dropped, 1, 1) == 1.0f);
     CHECK(draw(8, 8, near_tri, kFlat).depth.empty());  // one triangle occludes nothing: no depth buffer
 }
 
