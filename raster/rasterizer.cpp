@@ -50,9 +50,10 @@ const lanes16::Longs kLaneDx64 = lane_offsets(kLaneDx), kLaneDy64 = lane_offsets
 class TileRenderer {
 public:
     // `depth_test`: LESS test and depth write, for every draw of the frame or none; `fused`: fused
-    // plane evaluation.
-    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear, bool depth_test, bool fused)
-        : fb_(fb), draws_(draws), clear_(clear), depth_test_(depth_test), fused_(fused) {}
+    // plane evaluation; `general`: every depth tested, even where it provably passes.
+    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear, bool depth_test, bool fused,
+                 bool general)
+        : fb_(fb), draws_(draws), clear_(clear), depth_test_(depth_test), fused_(fused), general_(general) {}
 
     // Starts the tile whose top-left pixel is (x0, y0); one renderer per thread renders its tiles
     // one after the other.
@@ -121,7 +122,7 @@ public:
         // or depth tests, where every fragment passes: without a depth buffer, or as the tile's
         // first (its depths all still the cleared 1, which LESS passes for any depth below 1; a
         // backdrop drawn first, as Figure 1.1's ground plane).
-        if (covers_tile(t, x0, y0) && (!depth_test_ || (touched_.none() && !may_reach_depth_one(t)))) {
+        if (covers_tile(t, x0, y0) && (!depth_test_ || (!general_ && touched_.none() && !may_reach_depth_one(t)))) {
             if (fused_) {
                 shade_tile<true>(x0, y0);
             } else {
@@ -413,7 +414,7 @@ private:
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
     glm::vec4 clear_;
-    bool depth_test_, fused_;
+    bool depth_test_, fused_, general_;
     int x0_ = 0, y0_ = 0;
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];  // 24-bit depths (depth24), exact in float
@@ -525,7 +526,11 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     // Every pixel is stored by its tile: reuse the caller's memory, no clearing pass.
     fb.hold(width, height, band, depth, options.check_undefined);
     const auto tiles = for_each_tile<TileRenderer>(
-        grid, [&] { return std::make_unique<TileRenderer>(fb, prepared, clear, depth, options.fused_interpolation); },
+        grid,
+        [&] {
+            return std::make_unique<TileRenderer>(fb, prepared, clear, depth, options.fused_interpolation,
+                                                  options.force_general_path);
+        },
         [&](TileRenderer& tile, int b) {
             const int x0 = grid.x0(b), y0 = grid.y0(b);
             tile.start(x0, y0);

@@ -37,8 +37,8 @@ struct RasterSettings {
     bool fused_viewport = fused_interpolation_default();
     // Shade derivative-free shaders in quads with helper lanes too (the general path), interpolate
     // gl_FragCoord for every shader, and keep a depth buffer even when it provably changes
-    // nothing (depth_buffer.h). For measuring what specialisation saves, and for checking that it
-    // changes nothing.
+    // nothing (depth_buffer.h), testing every fragment against it (a tile's first triangle too).
+    // For measuring what specialisation saves, and for checking that it changes nothing.
     bool force_general_path = false;
     bool operator==(const RasterSettings&) const = default;
 };
