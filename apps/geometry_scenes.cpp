@@ -254,7 +254,7 @@ Scene culling() {
         object("double-sided square", 2, glm::translate(I, {1.2f, -0.7f, -0.5f}) * face_away, "dots"),
         object("single-sided slivers", 3, glm::scale(glm::translate(I, {-1.3f, -0.8f, -0.5f}), glm::vec3(0.6f)), "dots"),
     };
-    s.objects[3].double_sided = true;
+    s.objects[3].double_sided = true;  // the double-sided square
     return s;
 }
 

@@ -245,17 +245,19 @@ private:
     // with more instantiations of the loop got it as a call per block, and the simplex square
     // took 2.84-2.90 ms against 2.67-2.73 with it inlined.
     [[gnu::always_inline]] void tile_block(int h, int bx, int by) {
-        if (out_[h].discarded == 0) {
-            store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined);
-            const int block = block_base(bx, by) / kBatchLanes;
-            touched_[std::size_t(block)] = true;
-            if (depth_test_) lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
-            written_ += kBatchLanes;
-            return;
-        }
+        if (out_[h].discarded == 0) return write_whole(h, bx, by);
         for (int i = 0; i < kBatchLanes; ++i) {
             if (!(out_[h].discarded >> i & 1)) write_lane(h, i, bx + kLaneDx[i], by + kLaneDy[i]);
         }
+    }
+    // Writes every lane of batch h, the block at (bx, by): its colour, and its depth where the
+    // frame has a depth buffer.
+    [[gnu::always_inline]] void write_whole(int h, int bx, int by) {
+        store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined);
+        const int block = block_base(bx, by) / kBatchLanes;
+        touched_[std::size_t(block)] = true;
+        if (depth_test_) lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
+        written_ += kBatchLanes;
     }
 
     // The framebuffer x and y of the lanes of the block whose top-left pixel is (bx, by).
@@ -302,13 +304,7 @@ private:
             }
             return;
         }
-        store_block(fb_, bx, by, out, draw_->mode.check_undefined);
-        const int block = block_base(bx, by) / kBatchLanes;
-        touched_[std::size_t(block)] = true;
-        if (depth_test_) {
-            lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
-        }
-        written_ += kBatchLanes;
+        write_whole(h, bx, by);
     }
 
     // Adds `lanes` of the block at (bx, by) to the gathered batch, in lane order, those in `write`
