@@ -290,7 +290,7 @@ int cmd_render(RenderArgs& a) {
     if (req.backend == Backend::RayCaster) {
         std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
     } else {
-        std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (no two triangles overlap)", stderr);
+        std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (drawn in order, each pixel's nearest surface comes last)", stderr);
     }
     std::fputc('\n', stderr);
     if (!a.mask_output.empty()) {

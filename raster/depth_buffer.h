@@ -3,12 +3,16 @@
 // triangles, not the shaders.
 //
 // GL tests every fragment against the depth buffer (LESS, cleared to 1; quadshade's reference
-// always does). That test can only leave the image as it would be without it when every
-// fragment passes, and a fragment passes for sure only where nothing was drawn before it and its
-// depth is below the clear value. So the depth buffer may be left out when
-//  - no pixel centre is covered by two triangles (of any draws), and
-//  - no fragment's window depth can reach 1 (LESS against the cleared 1 drops it).
-// Both are tested exactly or conservatively on the numbers the rasterizer uses; anything not
+// always does). Drawn without it, in submission order, every fragment overwrites the pixel; that
+// is the same image exactly when every fragment would pass the test. So the depth buffer may be
+// left out when
+//  - no fragment's window depth can reach 1 (LESS against the cleared 1 drops it), and
+//  - wherever two triangles cover the same pixel centre, the later one is nearer there by more
+//    than the 24-bit buffer could tie (the painter's order). Triangles whose interiors are
+//    disjoint cover no centre twice; a large run of one draw's triangles is proven to cover each
+//    centre at most once as a whole (a convex mesh with its back faces culled: Figure 1.1's
+//    spheres), so that only pairs from different runs, or from runs not so proven, are tested.
+// Everything is tested exactly or conservatively on the numbers the rasterizer uses; anything not
 // proven keeps the depth buffer. The ray caster needs none: it shades the closest hit.
 
 #include <cmath>
@@ -70,17 +74,38 @@ inline lanes16::Floats depth24(const lanes16::Floats& z) {
 // outside it (the edges of their Minkowski difference are theirs).
 bool interiors_overlap(const TriangleSetup& a, const TriangleSetup& b);
 
-// Whether a fragment of t may have window depth >= 1: its depth plane's largest value over its
-// pixel bounding box, with a margin for the float evaluation, is not below 1.
+// Whether a fragment of t may have window depth >= 1: its depth plane's largest value over the
+// pixel centres it may cover (bounded by the plane at its snapped corners and at its pixel
+// bounding box's), with a margin for the float evaluation, is not below 1.
 bool may_reach_depth_one(const TriangleSetup& t);
 
-// Whether a depth buffer could change the frame these triangles draw. False only when proven
-// (above); true as well when the proof would cost too much: more than kMaxTrianglesTested
-// triangles, or more candidate pairs than a budget linear in their number. Pairs are only those
-// whose pixel bounding boxes meet: all of them for a handful of triangles, otherwise found
-// through a grid of 64-pixel cells, each pair tested once.
+// Whether the triangles, all set up with their interiors on the positive side of their edges,
+// cover every pixel centre at most once, proven on their snapped corners; false where not
+// proven. Each triangle's coverage is the winding number of its boundary around the pixel centre
+// moved by the fill rule's infinitesimal step, so the number of triangles covering a centre is
+// the winding number of the sum of their boundaries; edges two triangles share in opposite
+// directions cancel from it. What remains must be one simple closed polygon (every corner on it
+// starts one edge and ends one, no two edges touch but consecutive ones at their common corner),
+// around which no point winds more than once. Bounded: false past kMaxOutlineTests tests of
+// edge pairs.
+bool covers_each_centre_once(std::span<const TriangleSetup> triangles);
+
+// Whether, at every pixel centre `later` covers, `later`'s depth is below `earlier`'s plane by more
+// than the rounding of both planes' float evaluation and of the 24-bit conversion could make up,
+// with `later`'s depth at least 0 there: a fragment of `later` then passes LESS against one of
+// `earlier` drawn before it. Both depths are affine in the pixel, so their difference is least at
+// a corner of `later`; the evaluation error is bounded over the pixels the two boxes share.
+bool in_front(const TriangleSetup& later, const TriangleSetup& earlier);
+
+// Whether a depth buffer could change the frame these triangles draw, in this (submission) order.
+// False only when proven (above); true as well when the proof would cost too much: more than
+// kMaxTrianglesTested triangles, or more tested pairs than a budget linear in their number. Pairs
+// are only those whose pixel bounding boxes meet: all of them for a handful of triangles,
+// otherwise found through a grid of 64-pixel cells, each pair tested once; pairs within a run of
+// one draw proven by covers_each_centre_once are not tested.
 bool depth_buffer_matters(std::span<const TriangleSetup> triangles, int width, int height);
 
 inline constexpr std::size_t kMaxTrianglesTested = std::size_t(1) << 16;
+inline constexpr std::size_t kMaxOutlineTests = std::size_t(1) << 16;
 
 }  // namespace qs

@@ -1,13 +1,15 @@
 // The depth buffer: what it stores (24-bit, as the reference's), and leaving it out only where it
-// provably changes nothing (no two triangles share a pixel, no depth reaches 1).
+// provably changes nothing (every overlap in painter's order, no depth reaches 1).
 #include <catch2/catch.hpp>
 
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 
 #include "raster/depth_buffer.h"
+#include "raster/fixed_point.h"
 #include "tests/raster/test_program.h"
 
 namespace qs::test {
@@ -116,21 +118,123 @@ TEST_CASE("interiors_overlap is sound: triangles it calls disjoint never share a
     CHECK(touching > 1000);  // many of them did cover pixels on both sides of a shared edge
 }
 
-TEST_CASE("the depth buffer is left out only when no two triangles overlap and no depth reaches 1", "[raster][depth]") {
+TEST_CASE("the depth buffer is left out only when every overlap is in painter's order and no depth reaches 1",
+          "[raster][depth]") {
     constexpr int W = 64, H = 64;
     auto tri = [&](std::array<glm::vec3, 3> p) { return *setup_pixels(W, H, p, FillRule::LeftBottom); };
     const TriangleSetup lower = tri({{{1, 1, 0.5f}, {60, 1, 0.5f}, {60, 60, 0.5f}}});
     const TriangleSetup upper = tri({{{1, 1, 0.5f}, {60, 60, 0.5f}, {1, 60, 0.5f}}});
     const TriangleSetup across = tri({{{30, 2, 0.2f}, {40, 2, 0.2f}, {35, 50, 0.2f}}});
+    const TriangleSetup behind = tri({{{30, 2, 0.7f}, {40, 2, 0.7f}, {35, 50, 0.7f}}});
+    // Nearer than the square by two 24-bit steps: LESS could tie it after rounding.
+    const TriangleSetup hair = tri({{{30, 2, 0.5f - 0x1p-23f}, {40, 2, 0.5f - 0x1p-23f}, {35, 50, 0.5f - 0x1p-23f}}});
+    // Crossing the square's depth: in front at its base, behind at its tip.
+    const TriangleSetup crossing = tri({{{30, 2, 0.3f}, {40, 2, 0.3f}, {35, 50, 0.7f}}});
     const TriangleSetup far = tri({{{1.5f, 1.5f, 1.0f}, {60, 1, 0.9f}, {60, 60, 0.9f}}});  // depth 1 on a pixel centre
     const TriangleSetup nearly_far = tri({{{1, 1, 1.0f}, {60, 1, 0.9f}, {60, 60, 0.9f}}});  // below 1 at every centre
     CHECK_FALSE(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper}, W, H));
-    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, across}, W, H));
+    CHECK_FALSE(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, across}, W, H));  // drawn over, nearer
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{across, lower, upper}, W, H));  // drawn over, farther
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, behind}, W, H));
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, hair}, W, H));
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, crossing}, W, H));
+    CHECK(depth_buffer_matters(std::vector<TriangleSetup>{lower, upper, across, across}, W, H));  // a tie
     CHECK_FALSE(depth_buffer_matters(std::vector<TriangleSetup>{across}, W, H));
     CHECK(depth_buffer_matters(std::vector<TriangleSetup>{far}, W, H));  // LESS against 1 drops a corner
+    CHECK(in_front(across, lower));
+    CHECK_FALSE(in_front(lower, across));
+    CHECK_FALSE(in_front(hair, lower));
     CHECK(may_reach_depth_one(far));
     CHECK_FALSE(may_reach_depth_one(lower));
     CHECK_FALSE(may_reach_depth_one(nearly_far));
+}
+
+namespace {
+
+// A grid of n x n squares over [4, 60) pixels, each split into two triangles, its inner vertices
+// moved by up to `jitter` pixels (a quarter-pixel lattice): beyond half a square, triangles fold
+// over their neighbours.
+std::vector<TriangleSetup> grid_mesh(int n, float jitter, std::mt19937& rng, FillRule rule) {
+    constexpr int W = 64, H = 64;
+    std::uniform_int_distribution<int> step(-int(4 * jitter), int(4 * jitter));
+    std::vector<glm::vec3> p;
+    const float size = 56.0f / float(n);
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) {
+            const bool inner = i > 0 && j > 0 && i < n && j < n;
+            const float dx = inner ? float(step(rng)) / 4.0f : 0.0f, dy = inner ? float(step(rng)) / 4.0f : 0.0f;
+            p.push_back({4.0f + size * float(i) + dx, 4.0f + size * float(j) + dy, 0.5f});
+        }
+    }
+    std::vector<TriangleSetup> out;
+    auto add = [&](int a, int b, int c) {
+        if (auto t = setup_pixels(W, H, {p[std::size_t(a)], p[std::size_t(b)], p[std::size_t(c)]}, rule)) out.push_back(*t);
+    };
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            add(a, b, d), add(a, d, c);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("covers_each_centre_once: a mesh whose outline is one simple loop, and nothing else", "[raster][depth]") {
+    std::mt19937 rng(11);
+    CHECK(covers_each_centre_once(grid_mesh(6, 0.0f, rng, FillRule::LeftBottom)));
+    CHECK(covers_each_centre_once(grid_mesh(6, 1.5f, rng, FillRule::RightTop)));  // bent, not folded
+    // A triangle drawn twice.
+    std::vector<TriangleSetup> twice = grid_mesh(6, 0.0f, rng, FillRule::LeftBottom);
+    twice.push_back(twice[20]);
+    CHECK_FALSE(covers_each_centre_once(twice));
+    // Two meshes side by side: they do not overlap, but two loops are not proven.
+    std::vector<TriangleSetup> two = grid_mesh(3, 0.0f, rng, FillRule::LeftBottom);
+    for (TriangleSetup t : grid_mesh(3, 0.0f, rng, FillRule::LeftBottom)) {
+        for (std::int64_t& x : t.corner_x) x += 70 * fixed::kOne;  // only the corners matter here
+        two.push_back(t);
+    }
+    CHECK_FALSE(covers_each_centre_once(two));
+    // A fan of 9 triangles, 80 degrees each, winding twice round its centre: every inner edge
+    // has a neighbour across it, and the pixel centres near the centre are covered twice. Its
+    // outline is a star that crosses itself.
+    std::vector<TriangleSetup> fan;
+    for (int k = 0; k < 9; ++k) {
+        auto at = [](int i) {
+            const double a = 4.0 * std::numbers::pi * double(i % 9) / 9.0;
+            return glm::vec3(32.0f + float(std::lround(80.0 * std::cos(a))) / 4.0f, 32.0f + float(std::lround(80.0 * std::sin(a))) / 4.0f, 0.5f);
+        };
+        fan.push_back(*setup_pixels(64, 64, {glm::vec3(32.0f, 32.0f, 0.5f), at(k), at(k + 1)}, FillRule::LeftBottom));
+    }
+    CHECK_FALSE(covers_each_centre_once(fan));
+}
+
+TEST_CASE("covers_each_centre_once is sound: no pixel centre of a mesh it accepts is covered twice", "[raster][depth]") {
+    // Grids bent and folded at random: folds overlap their neighbours, and outlines cross.
+    std::mt19937 rng(2025);
+    int accepted = 0, refused = 0, refused_overlapping = 0;
+    for (int n = 0; n < 400; ++n) {
+        const FillRule rule = n % 2 ? FillRule::LeftBottom : FillRule::RightTop;
+        const std::vector<TriangleSetup> mesh = grid_mesh(2 + n % 5, float(n % 9) * 1.5f, rng, rule);
+        std::vector<int> count(64 * 64, 0);
+        int most = 0;
+        for (const TriangleSetup& t : mesh) {
+            const std::vector<bool> c = coverage(t, 64, 64);
+            for (std::size_t i = 0; i < c.size(); ++i) most = std::max(most, count[i] += c[i]);
+        }
+        if (covers_each_centre_once(mesh)) {
+            INFO("case " << n);
+            REQUIRE(most <= 1);
+            ++accepted;
+        } else {
+            ++refused;
+            refused_overlapping += most > 1;
+        }
+    }
+    CHECK(accepted > 100);
+    CHECK(refused_overlapping > 50);  // folds the proof caught
+    CHECK(refused > refused_overlapping - 1);
 }
 
 TEST_CASE("depth is stored in 24 bits as the reference's buffer: nearer by less than a step does not pass LESS",
@@ -152,8 +256,8 @@ TEST_CASE("depth is stored in 24 bits as the reference's buffer: nearer by less 
         DrawCall d{v, idx, &kPosition, {}};
         d.uniforms.model_view_projection = window_to_clip(16, 16);
         const Framebuffer fb = rasterize(16, 16, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), {});
-        REQUIRE(!fb.depth.empty());
         const bool hair = z2 == -0x1.6809dcp-2f;
+        CHECK(fb.depth.empty() == !hair);  // nearer by 2^-12, painter's order is proven and no buffer needed
         CHECK(z2 * 0.5f + 0.5f < z1 * 0.5f + 0.5f);
         CHECK((depth24(z2 * 0.5f + 0.5f) == depth24(z1 * 0.5f + 0.5f)) == hair);
         CHECK(fb.pixel(2, 13)[2] == (hair ? z1 : z2));
@@ -253,6 +357,53 @@ TEST_CASE("leaving the depth buffer out changes no pixel of a non-overlapping me
         CHECK_FALSE(stats.depth_buffer);
         CHECK(a.depth.empty());
         CHECK(a.rgba == b.rgba);
+    }
+}
+
+TEST_CASE("a convex mesh with its back faces culled, drawn over a backdrop, needs no depth buffer; drawn under, it does",
+          "[raster][depth]") {
+    // An ellipsoid of 16 x 10 facets (in window pixels, NDC depth -0.5..0.5),
+    // and a backdrop square behind it at depth 0.9, on a 64 x 64 frame.
+    constexpr int W = 64, H = 64, kAround = 16, kRings = 10;
+    std::vector<VertexIn> ellipsoid;
+    for (int r = 0; r <= kRings; ++r) {
+        const double polar = std::numbers::pi * double(r) / kRings;
+        for (int a = 0; a <= kAround; ++a) {
+            const double azimuth = 2.0 * std::numbers::pi * double(a) / kAround;
+            ellipsoid.push_back({{32.0f + 21.0f * float(std::sin(polar) * std::cos(azimuth)),
+                                  31.0f + 19.0f * float(std::sin(polar) * std::sin(azimuth)), -0.5f * float(std::cos(polar))},
+                                 {}});
+        }
+    }
+    std::vector<std::uint32_t> facets;
+    for (int r = 0; r < kRings; ++r) {
+        for (int a = 0; a < kAround; ++a) {
+            const std::uint32_t p = std::uint32_t(r * (kAround + 1) + a), q = p + 1, u = p + kAround + 1, v = u + 1;
+            facets.insert(facets.end(), {p, u, q, q, u, v});
+        }
+    }
+    const std::vector<VertexIn> square = {{{0, 0, 0.9f}, {}}, {{W, 0, 0.9f}, {}}, {{W, H, 0.9f}, {}}, {{0, H, 0.9f}, {}}};
+    const std::vector<std::uint32_t> two = {0, 1, 2, 0, 2, 3};
+    DrawCall backdrop{square, two, &kPosition, {}}, mesh{ellipsoid, facets, &kPosition, {}};
+    backdrop.uniforms.model_view_projection = mesh.uniforms.model_view_projection = window_to_clip(W, H);
+    auto render = [&](std::vector<DrawCall> draws, bool force, RenderStats* stats = nullptr) {
+        RasterOptions options;
+        options.force_general_path = force;
+        return rasterize(W, H, glm::vec4(0.0f), draws, options, stats);
+    };
+    for (const bool culled : {true, false}) {
+        // The near half's facets wind counter-clockwise in GL's window (y up).
+        mesh.culling = culled ? FaceCulling{true, Winding::CounterClockwise} : FaceCulling{};
+        for (const bool mesh_last : {true, false}) {
+            INFO("culled " << culled << ", mesh drawn " << (mesh_last ? "last" : "first"));
+            const std::vector<DrawCall> draws = mesh_last ? std::vector{backdrop, mesh} : std::vector{mesh, backdrop};
+            RenderStats stats;
+            const Framebuffer lean = render(draws, false, &stats), tested = render(draws, true);
+            CHECK(stats.depth_buffer == !(culled && mesh_last));
+            CHECK(lean.rgba == tested.rgba);
+            CHECK(lean.pixel(32, 32)[2] == Approx(-0.5f).margin(0.02f));  // the near pole shows
+            CHECK(lean.pixel(2, 2)[2] == 0.9f);                           // the backdrop round it
+        }
     }
 }
 

@@ -388,20 +388,25 @@ TEST_CASE("back faces are culled by their winding in the window, after clipping,
 TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "[raster][depth]") {
     // Two tiles wide (kTileSize 64): each triangle covers one tile whole (the near one the lower
     // left, the far one the lower right), where, drawn first, it is shaded without tests and its
-    // depths written for the other to be tested against.
+    // depths written for the other to be tested against. A third, small and farther still, drawn
+    // last over both, keeps the depth buffer in either order (drawn in painter's order alone,
+    // it would show).
     static_assert(kTileSize == 64);
     constexpr int S = 2 * kTileSize;
     const std::vector<glm::vec3> near_tri = {{0, 0, -0.5f}, {S, 0, -0.5f}, {0, S, -0.5f}};
     const std::vector<glm::vec3> far_tri = {{0, 0, 0.5f}, {S, 0, 0.5f}, {S, S, 0.5f}};
+    const std::vector<glm::vec3> hidden = {{30, 30, 0.9f}, {50, 30, 0.9f}, {30, 50, 0.9f}};
     for (bool near_first : {true, false}) {
         std::vector<glm::vec3> all = near_first ? near_tri : far_tri;
         const auto& second = near_first ? far_tri : near_tri;
         all.insert(all.end(), second.begin(), second.end());
+        all.insert(all.end(), hidden.begin(), hidden.end());
         const Framebuffer fb = draw(S, S, all, kPosition);
         CHECK(!fb.depth.empty());
         // Covered by both: the near one's z, in either triangle's whole tile.
         CHECK(fb.pixel(80, S - 1 - 20)[2] == -0.5f);
         CHECK(fb.pixel(40, S - 1 - 12)[2] == -0.5f);
+        CHECK(fb.pixel(34, S - 1 - 34)[2] == -0.5f);
     }
     // On the far plane (window depth 1), drawn first over whole tiles: LESS against the cleared 1
     // drops every fragment, so the tile's first triangle is not written untested.
