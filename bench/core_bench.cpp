@@ -8,8 +8,9 @@
 // Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
 // (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
 // And texture2D's lanes on three samplers (BM_texture2D), for the sampler's own speed. And the
-// Figure 1.1 frame on one thread with each backend (BM_frame), so that bench/compare-builds, which
-// runs this program, guards the ray caster and the scene path too.
+// Figure 1.1 frame on one thread and on all cores with each backend (BM_frame), so that
+// bench/compare-builds, which runs this program, guards the ray caster and the scene path too,
+// and the serial part of a frame (vertex stage, setup, the depth buffer's proof).
 // Usage: quadshade-bench-core [Google Benchmark flags]
 
 #include <benchmark/benchmark.h>
@@ -294,14 +295,14 @@ void BM_raster(benchmark::State& state, const char* shader, int threads) {
 // One frame after another into the same framebuffer, as an animation loop renders them; the ray
 // caster's BVH is built before the timing.
 // A build without Figure 1.1's shaders (QUADSHADE_SHADER_GROUPS) reports the row as skipped.
-void BM_frame(benchmark::State& state, Backend backend) {
+void BM_frame(benchmark::State& state, Backend backend, int threads) {
     std::unique_ptr<SceneRenderer> renderer;
     static Scene scene;
     try {
         if (scene.objects.empty()) scene = load_scene(QUADSHADE_SOURCE_DIR "/scenes/assets/figure-1.1.gltf");
         FrameRequest request;
         request.backend = backend;
-        request.shading.threads = 1;
+        request.shading.threads = threads;
         renderer = std::make_unique<SceneRenderer>(scene, request);
     } catch (const std::exception& e) {
         state.SkipWithError(e.what());
@@ -403,9 +404,11 @@ BENCHMARK_TEMPLATE(BM_sin, Pixels<float, 16>)->Unit(benchmark::kMillisecond)->Us
 BENCHMARK_TEMPLATE(BM_plain, plain_sin)->Name("BM_plain_stdx_sin")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_raster, es_smooth9_tiles128_1thread, "es_smooth9_tiles128", 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-BENCHMARK_CAPTURE(BM_frame, figure_1_1_raster_1thread, Backend::Rasterizer)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raster_1thread, Backend::Rasterizer, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raster_all_threads, Backend::Rasterizer, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
 #if defined(QUADSHADE_HAS_RAYCAST)
-BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_1thread, Backend::RayCaster)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_1thread, Backend::RayCaster, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_all_threads, Backend::RayCaster, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
 #endif
 
 BENCHMARK_TEMPLATE(BM_texture2D, Pixels<float, 16>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();
