@@ -297,4 +297,19 @@ bool depth_buffer_matters(std::span<const TriangleSetup> triangles, int width, i
     return false;
 }
 
+bool DepthBufferDecision::matters(std::span<const TriangleSetup> triangles, int width, int height) {
+    now_.clear();
+    for (const TriangleSetup& t : triangles) {
+        now_.push_back({t.corner_x, t.corner_y, {t.min_x, t.min_y, t.max_x, t.max_y},
+                        {std::bit_cast<std::uint32_t>(t.z.a0), std::bit_cast<std::uint32_t>(t.z.dadx), std::bit_cast<std::uint32_t>(t.z.dady)},
+                        t.draw});
+    }
+    if (now_ != last_ || width != width_ || height != height_) {
+        answer_ = depth_buffer_matters(triangles, width, height);
+        std::swap(now_, last_);
+        width_ = width, height_ = height;
+    }
+    return answer_;
+}
+
 }  // namespace qs

@@ -502,7 +502,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     stats.triangles_setup = triangles.size();
     // Depth is tested for every draw or none: GL tests it always, and leaving it out is only
     // allowed where it provably changes nothing (depth_buffer.h).
-    const bool depth = options.force_general_path || depth_buffer_matters(triangles, width, height);
+    const bool depth = options.force_general_path || kept.depth.matters(triangles, width, height);
     stats.depth_buffer = depth;
 
     // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order.

@@ -19,6 +19,7 @@
 #include "core/render_stats.h"
 #include "core/shading_settings.h"
 #include "core/tile_grid.h"
+#include "raster/depth_buffer.h"
 #include "raster/edge_function.h"
 #include "raster/plane_equation.h"
 #include "raster/triangle_setup.h"
@@ -51,6 +52,7 @@ struct RasterOptions : ShadingSettings, RasterSettings {};
 // all of it before the tiles run in parallel.
 struct RasterMemory {
     std::vector<TriangleSetup> triangles;
+    DepthBufferDecision depth;  // the last frame's, for a frame with the same triangles
     std::vector<std::vector<std::uint32_t>> bins;  // per tile
 };
 

@@ -149,6 +149,27 @@ TEST_CASE("the depth buffer is left out only when every overlap is in painter's 
     CHECK_FALSE(may_reach_depth_one(nearly_far));
 }
 
+TEST_CASE("DepthBufferDecision answers for the triangles it is given, not for the last frame's", "[raster][depth]") {
+    constexpr int W = 64, H = 64;
+    auto tri = [&](std::array<glm::vec3, 3> p) { return *setup_pixels(W, H, p, FillRule::LeftBottom); };
+    const TriangleSetup lower = tri({{{1, 1, 0.5f}, {60, 1, 0.5f}, {60, 60, 0.5f}}});
+    const TriangleSetup upper = tri({{{1, 1, 0.5f}, {60, 60, 0.5f}, {1, 60, 0.5f}}});
+    const TriangleSetup behind = tri({{{30, 2, 0.7f}, {40, 2, 0.7f}, {35, 50, 0.7f}}});
+    TriangleSetup moved = behind;  // the same corners, nearer: only its depth plane differs
+    moved.z.a0 -= 0.5f;
+    const std::vector<TriangleSetup> apart{lower, upper}, hidden{lower, upper, behind}, in_front_of{lower, upper, moved};
+    DepthBufferDecision decision;
+    for (int frame = 0; frame < 2; ++frame) {
+        CHECK_FALSE(decision.matters(apart, W, H));
+        CHECK_FALSE(decision.matters(apart, W, H));
+        CHECK(decision.matters(hidden, W, H));
+        CHECK(decision.matters(hidden, W, H));
+        CHECK_FALSE(decision.matters(in_front_of, W, H));
+        CHECK(decision.matters(hidden, W, H));
+        CHECK_FALSE(decision.matters(in_front_of, 2 * W, 2 * H));  // another size
+    }
+}
+
 namespace {
 
 // A grid of n x n squares over [4, 60) pixels, each split into two triangles, its inner vertices
