@@ -30,12 +30,13 @@ bool separated_by_an_edge_of(const TriangleSetup& a, const TriangleSetup& b) {
     return false;
 }
 
-// Plane z at corner k of t, exactly (in double, at the snapped corner in pixel units). A plane
-// is affine, so over the triangle (which holds every pixel centre it covers) it is largest and
-// least at corners.
+// Plane z at pixel (x, y), exactly (in double).
+double exactly_at(const PlaneEquation& z, double x, double y) { return double(z.a0) + double(z.dadx) * x + double(z.dady) * y; }
+
+// Plane z at corner k of t (the snapped corner in pixel units). A plane is affine, so over the
+// triangle (which holds every pixel centre it covers) it is largest and least at corners.
 double at_corner(const PlaneEquation& z, const TriangleSetup& t, std::size_t k) {
-    const double x = double(t.corner_x[k]) / double(fixed::kOne), y = double(t.corner_y[k]) / double(fixed::kOne);
-    return double(z.a0) + double(z.dadx) * x + double(z.dady) * y;
+    return exactly_at(z, double(t.corner_x[k]) / double(fixed::kOne), double(t.corner_y[k]) / double(fixed::kOne));
 }
 
 // How far the rasterizer's float evaluation of plane z (FragmentInputs::at) may be from the exact
@@ -65,7 +66,7 @@ bool may_reach_depth_one(const TriangleSetup& t) {
     double in_triangle = -HUGE_VAL, in_box = -HUGE_VAL;
     for (std::size_t k = 0; k < 3; ++k) in_triangle = std::max(in_triangle, at_corner(t.z, t, k));
     for (const int x : {t.min_x, t.max_x}) {
-        for (const int y : {t.min_y, t.max_y}) in_box = std::max(in_box, double(t.z.a0) + double(t.z.dadx) * x + double(t.z.dady) * y);
+        for (const int y : {t.min_y, t.max_y}) in_box = std::max(in_box, exactly_at(t.z, x, y));
     }
     const double largest = std::min(in_triangle, in_box);
     return !(largest + evaluation_error(t.z, t.min_x, t.max_x, t.min_y, t.max_y) < 1.0);  // also true for a NaN plane
