@@ -9,8 +9,9 @@
 //
 // The arithmetic, and the OSMesa experiments that pinned it, are in docs/design.md ("Textures");
 // the lanes' work is done by texture_detail::sample, or sample_plain for the plain lookup most
-// shaders make (texture.cpp), eight lanes to an AVX2 register: texel fetches are gathers, four
-// per register for a bilinear level, eight for a trilinear lookup.
+// shaders make (texture.cpp), eight lanes to an AVX2 register (sixteen to an AVX-512 register for
+// the plain lookup): texel fetches are gathers, four per register for a bilinear level, eight
+// for a trilinear lookup, or loads of neighbouring texels and permutes where the lanes read them.
 //
 // The lookups are written over the number type like any shader code. Per-pixel types (float,
 // double, Pixels) have no neighbours: they can only take an implicit level of detail from a
