@@ -99,7 +99,7 @@ struct HitBatch {
 class TileCaster {
 public:
     TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws,
-               const std::vector<Mesh>& meshes, const BlockMask& covered, glm::vec4 clear)
+               const std::vector<Mesh>& meshes, const BlockCoverage& covered, glm::vec4 clear)
         : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), covered_(covered), pending_(draws.size()) {
         for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
     }
@@ -143,16 +143,32 @@ private:
         rays.active = lanes & lanes_inside(bx, by, fb_.width, fb_.height);
         // No triangle's footprint reaches the block (the sky: a quarter of Figure 1.1's blocks).
         if (!covered_.covered(bx, by)) return clear_lanes(bx, by, rays.active);
-        if (tnear) std::copy_n(tnear, kBatchLanes, rays.tnear);
+        // The block lies well inside the only triangle seen there (most of Figure 1.1's ground):
+        // every ray hits it, and a ray cast again past it, after a discard, meets nothing.
+        const TriangleId* only = covered_.only(bx, by);
+        if (only && tnear) return clear_lanes(bx, by, rays.active);
         // Every lane's ray; Embree reads the active ones. They are computed where the block would
         // wait, should it be whole.
         WholeBlock& whole = whole_[waiting_ ? 1 - first_ : first_];
         BlockRays& cast = whole.cast;
         cast.w = centres(bx + lanes16::load(kLaneDx), by + lanes16::load(kLaneDy));
         cast.r = eye_.rays(cast.w.x, cast.w.y);
-        lanes16::store(rays.origin, cast.r.origin), lanes16::store(rays.direction, cast.r.direction);
         RayHits hits;
-        bvh_.intersect(rays, hits);
+        if (only) {
+            // Set a register at a time: they are read as registers next, and a load of sixteen
+            // lanes stored one by one waits for them to reach the cache.
+            lanes16::Ints bit;
+            for (int i = 0; i < kBatchLanes; ++i) bit[i] = 1 << i;
+            const lanes16::Ints active = (bit & int(rays.active)) != 0, none = lanes16::Ints{} + int(kNoHit);
+            const lanes16::Ints geometry = active ? lanes16::Ints{} + int(only->geometry) : none;
+            const lanes16::Ints primitive = active ? lanes16::Ints{} + int(only->primitive) : none;
+            std::memcpy(hits.geometry, &geometry, sizeof geometry), std::memcpy(hits.primitive, &primitive, sizeof primitive);
+            lanes16::store(hits.t, lanes16::broadcast(1.0f));  // not read: it serves to cast again after a discard
+        } else {
+            if (tnear) std::copy_n(tnear, kBatchLanes, rays.tnear);
+            lanes16::store(rays.origin, cast.r.origin), lanes16::store(rays.direction, cast.r.direction);
+            bvh_.intersect(rays, hits);
+        }
         const lanes16::Ints geometry = std::bit_cast<lanes16::Ints>(hits.geometry);
         const std::uint32_t missed = rays.active & lanes16::equal(geometry, lanes16::Ints{} + int(kNoHit));
         clear_lanes(bx, by, missed);
@@ -437,7 +453,7 @@ private:
     const Eye& eye_;
     const std::vector<PreparedDraw>& draws_;
     const std::vector<Mesh>& meshes_;  // per draw
-    const BlockMask& covered_;         // the blocks some triangle may cover
+    const BlockCoverage& covered_;     // what each block's rays may hit
     std::vector<HitBatch> pending_;    // per draw
     WholeBlock whole_[2];              // whole blocks: whole_[first_] waits when waiting_
     lanes16::Floats clear_row_;        // four pixels of the frame's clear colour
@@ -520,7 +536,8 @@ struct RayCaster::Impl {
                 }
                 m.triangles.push_back(t);
                 m.planes.emplace_back(m.world[t[0]], m.world[t[1]], m.world[t[2]]);
-                seen->add(m.world[t[0]], m.world[t[1]], m.world[t[2]]);
+                seen->add(m.world[t[0]], m.world[t[1]], m.world[t[2]],
+                          TriangleId{std::uint32_t(i), std::uint32_t(m.triangles.size() - 1)});
             }
             scene->add_mesh(positions, m.triangles);
         }
@@ -576,7 +593,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
 
     fb.hold(width, height, band, false, options.check_undefined);
     const TileGrid grid(width, height, options.pairing, band);
-    const BlockMask& covered = im.footprint->blocks(width, height, grid.y0(0), grid.y0(0) + grid.rows * kTileSize);
+    const BlockCoverage& covered = im.footprint->blocks(width, height, grid.y0(0), grid.y0(0) + grid.rows * kTileSize);
     const auto casters = for_each_tile<TileCaster>(
         grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes, covered, clear); },
         [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i)); });

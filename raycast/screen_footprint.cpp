@@ -1,6 +1,7 @@
 #include "raycast/screen_footprint.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/block_layout.h"
 
@@ -22,35 +23,42 @@ std::optional<TriangleFootprint> footprint(const glm::dmat4& m, const glm::dvec3
         const double spread = shares + 1e-9 * (std::abs(mid) + shares);
         return Range{mid - spread, mid + spread};
     };
-    const Range x = range(0), y = range(1), w = range(3);
+    const Range w = range(3);
     if (!(w.low > 0.0)) return std::nullopt;  // at or behind the eye plane (or not a number)
-    // The largest |NDC x| over the box, w > 0: x / w is largest at the largest |x| over the
-    // least w.
-    const double largest_x = std::max(std::abs(x.low), std::abs(x.high)) / w.low;
-    const double largest_y = std::max(std::abs(y.low), std::abs(y.high)) / w.low;
     // A point P of the triangle moved by e (|e| <= slack per axis) moves in NDC x by
     // (Mx.e - ndc_x(P) Mw.e) / w(P + e), and w(P + e) >= w.low: at most
-    // (|Mx|_1 + |ndc_x| |Mw|_1) slack / w.low.
-    auto norm = [&](int r) { return std::abs(m[0][r]) + std::abs(m[1][r]) + std::abs(m[2][r]); };
+    // (|Mx|_1 + |ndc_x| |Mw|_1) slack / w.low, where |ndc_x| over the box (w > 0) is at most its
+    // largest |x| over its least w. The same for y and z.
+    auto reach = [&](int r) {
+        const Range v = range(r);
+        const double largest = std::max(std::abs(v.low), std::abs(v.high)) / w.low;
+        auto norm = [&](int row) { return std::abs(m[0][row]) + std::abs(m[1][row]) + std::abs(m[2][row]); };
+        return (norm(r) + largest * norm(3)) * (slack / w.low);
+    };
     TriangleFootprint f;
-    f.reach = glm::dvec2(norm(0) + largest_x * norm(3), norm(1) + largest_y * norm(3)) * (slack / w.low);
+    f.reach = glm::dvec2(reach(0), reach(1));
+    // NDC depth over a triangle in front of the eye lies between its vertices' (the projection
+    // maps the triangle onto the flat triangle of their images).
+    const double depth_reach = reach(2);
+    f.nearest = std::numeric_limits<double>::infinity(), f.farthest = -f.nearest;
     const glm::dvec3* p[3] = {&a, &b, &c};
     for (int i = 0; i < 3; ++i) {
         const glm::dvec4 h = m * glm::dvec4(*p[i], 1.0);
         f.vertex[i] = glm::dvec2(h.x / h.w, h.y / h.w);
+        f.nearest = std::min(f.nearest, h.z / h.w - depth_reach), f.farthest = std::max(f.farthest, h.z / h.w + depth_reach);
     }
     for (double v : {f.reach.x, f.reach.y, f.vertex[0].x, f.vertex[0].y, f.vertex[1].x, f.vertex[1].y, f.vertex[2].x,
-                     f.vertex[2].y}) {
+                     f.vertex[2].y, f.nearest, f.farthest}) {
         if (!std::isfinite(v)) return std::nullopt;
     }
     return f;
 }
 
-BlockMask::BlockMask(int width, int height, int top, int bottom)
+BlockCoverage::BlockCoverage(int width, int height, int top, int bottom)
     : width_(width), height_(height), top_(top), bottom_(bottom), columns_((width + kBlock - 1) / kBlock),
-      rows_((bottom - top + kBlock - 1) / kBlock), covered_(std::size_t(columns_) * std::size_t(rows_), std::uint8_t(0)) {}
+      rows_((bottom - top + kBlock - 1) / kBlock), blocks_(std::size_t(columns_) * std::size_t(rows_), Block{Rays::Miss, {}}) {}
 
-void BlockMask::cover(const TriangleFootprint& f) {
+void BlockCoverage::cover(const TriangleFootprint& f) {
     // Window coordinates, y down the framebuffer's top-down rows: pixel (column, row) has its
     // centre at (column + 0.5, row + 0.5). One pixel of margin for the rounding of the rays' own
     // NDC and of this arithmetic.
@@ -71,6 +79,10 @@ void BlockMask::cover(const TriangleFootprint& f) {
     };
     int c0, c1, r0, r1;
     if (!blocks(corner0.x, corner1.x, 0, columns_, c0, c1) || !blocks(corner0.y, corner1.y, top_, rows_, r0, r1)) return;
+    // A block this footprint reaches: sure to hit this triangle while no other reaches it.
+    auto reach = [&](Block& block, bool sure) {
+        block = block.rays == Rays::Miss && sure ? Block{Rays::HitOne, f.id} : Block{Rays::Traced, {}};
+    };
     // The projected triangle's edges as e(p) = n . p + d, positive inside; a block is out when
     // the rectangle of its pixel centres, grown as the triangle is, lies wholly outside one edge.
     // A triangle seen edge-on keeps its rectangle.
@@ -81,8 +93,7 @@ void BlockMask::cover(const TriangleFootprint& f) {
     const bool edges = std::abs(area) > 1e-6 * scale && (c1 - c0 + 1) * (r1 - r0 + 1) > 4;
     if (!edges) {
         for (int row = r0; row <= r1; ++row) {
-            std::fill_n(covered_.begin() + std::ptrdiff_t(std::size_t(row) * std::size_t(columns_) + std::size_t(c0)),
-                        c1 - c0 + 1, std::uint8_t(1));
+            for (int column = c0; column <= c1; ++column) reach(blocks_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)], false);
         }
         return;
     }
@@ -97,17 +108,23 @@ void BlockMask::cover(const TriangleFootprint& f) {
         e[i].n = sign * glm::dvec2(from.y - to.y, to.x - from.x);
         e[i].d = -glm::dot(e[i].n, from);
     }
+    // A block's rays are sure to meet the triangle where the rectangle of its pixel centres,
+    // grown as the triangle is, lies wholly inside every edge, and the triangle between the
+    // near and far planes (Embree's t in [0, 1]; t = (1 + NDC depth) / 2 along these rays) with
+    // some room for the rounding of Embree's t.
+    constexpr double kDepthMargin = 0x1p-10;
+    const bool between = f.nearest > -1.0 + kDepthMargin && f.farthest < 1.0 - kDepthMargin;
     const glm::dvec2 half = 0.5 * double(kBlock - 1) + grow;
     for (int row = r0; row <= r1; ++row) {
         for (int column = c0; column <= c1; ++column) {
-            std::uint8_t& block = covered_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)];
-            if (block) continue;
             const glm::dvec2 centre(column * kBlock + 0.5 * kBlock, top_ + row * kBlock + 0.5 * kBlock);
-            bool inside = true;
-            for (int i = 0; i < 3 && inside; ++i) {
-                inside = glm::dot(e[i].n, centre) + e[i].d + std::abs(e[i].n.x) * half.x + std::abs(e[i].n.y) * half.y >= 0.0;
+            bool touches = true, inside = between;
+            for (int i = 0; i < 3 && touches; ++i) {
+                const double middle = glm::dot(e[i].n, centre) + e[i].d;
+                const double spread = std::abs(e[i].n.x) * half.x + std::abs(e[i].n.y) * half.y;
+                touches = middle + spread >= 0.0, inside = inside && middle - spread > 0.0;
             }
-            block = inside;
+            if (touches) reach(blocks_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)], inside);
         }
     }
 }
@@ -124,7 +141,7 @@ ScreenFootprint::ScreenFootprint(const glm::dmat4& clip_from_world, const glm::d
     }
 }
 
-void ScreenFootprint::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+void ScreenFootprint::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, TriangleId id) {
     if (everywhere_) return;
     double extent = 0.0;
     for (const glm::dvec3& p : {a, b, c}) extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
@@ -137,15 +154,17 @@ void ScreenFootprint::add(const glm::dvec3& a, const glm::dvec3& b, const glm::d
         return;
     }
     triangles_.push_back(*f);
+    triangles_.back().id = id;
 }
 
-const BlockMask& ScreenFootprint::blocks(int width, int height, int top, int bottom) {
-    if (!mask_ || mask_->width() != width || mask_->height() != height || mask_->top() != top || mask_->bottom() != bottom) {
-        mask_.emplace(width, height, top, bottom);
-        if (everywhere_) mask_->cover_all();
-        for (const TriangleFootprint& f : triangles_) mask_->cover(f);
+const BlockCoverage& ScreenFootprint::blocks(int width, int height, int top, int bottom) {
+    if (!coverage_ || coverage_->width() != width || coverage_->height() != height || coverage_->top() != top ||
+        coverage_->bottom() != bottom) {
+        coverage_.emplace(width, height, top, bottom);
+        if (everywhere_) coverage_->cover_all();
+        for (const TriangleFootprint& f : triangles_) coverage_->cover(f);
     }
-    return *mask_;
+    return *coverage_;
 }
 
 }  // namespace qs
