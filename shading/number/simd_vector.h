@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 
@@ -192,4 +193,13 @@ template <class V>
         if (m[i]) return true;
     return false;
 }
+
+#if defined(__AVX512F__)
+// Element i of the 32-entry table (low, high) at index[i], in [0, 32): one vpermt2ps.
+[[gnu::always_inline]] inline Vector<float, 16> lookup(const Vector<float, 16>& low, const Vector<float, 16>& high,
+                                                       const Vector<std::int32_t, 16>& index) {
+    return std::bit_cast<Vector<float, 16>>(_mm512_permutex2var_ps(
+        std::bit_cast<__m512>(low), std::bit_cast<__m512i>(index), std::bit_cast<__m512>(high)));
+}
+#endif
 }  // namespace qs::simd

@@ -2,7 +2,11 @@
 // flow noise is right, and Listing 1.3's seed typo breaks the noise along simplex edges.
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+
+#include <glm/vec2.hpp>
 
 #include "shading/noise/cellular.h"
 #include "shading/noise/flow_noise.h"
@@ -32,6 +36,60 @@ TEST_CASE("noise on 16 SIMD lanes equals the scalar float code bit for bit", "[n
         CHECK(flow[i] == noise::srdnoise(p.xy(), 0.7f, g));
         CHECK(grad.x[i] == g.x);
     }
+}
+
+// cellular_vectors hashes the cells of lanes that lie close together once per batch
+// (noise/cellular.h, on AVX-512): blocks of pixels at several scales (so that their cells are
+// close together, or not), across the hash's wrap at 289 and below zero, on 16 and 32 lanes of
+// pixels and quads, give every lane the scalar code's F1, F2 and vectors to the bit.
+template <class L>
+void check_cellular_lanes(int& nearby, int& batches) {
+    constexpr int N = L::size;
+    for (const float scale : {64.0f / 500.0f, 8.0f / 500.0f, 0.9f, 1.7f, 40.0f}) {
+        for (const glm::vec2 origin : {glm::vec2(0.3f, 0.7f), glm::vec2(287.6f, 40.2f), glm::vec2(-3.1f, -288.7f),
+                                       glm::vec2(1000.25f, 12.5f)}) {
+            for (int block = 0; block < 24; ++block) {
+                float xs[N], ys[N];
+                for (int i = 0; i < N; ++i) {
+                    const int x = 4 * block + (i / 16) * 4 + (i % 4 % 2) + 2 * (i % 16 / 4 % 2);
+                    const int y = (i % 4 / 2) + 2 * (i % 16 / 8);
+                    xs[i] = origin.x + scale * (float(x) + 0.5f), ys[i] = origin.y + scale * (float(y) + 0.5f);
+                }
+                const vec2<L> P(L::load(xs), L::load(ys));
+                vec4<L> d1d2;
+                const vec2<L> F = noise::cellular_vectors(P, d1d2);
+                vec2<L> Fs(1e6f);
+                vec4<L> unused(0.0f);
+                nearby += noise::cellular_search_nearby(mod(floor(P), 289.0f), fract(P), Fs, unused), ++batches;
+                for (int i = 0; i < N; ++i) {
+                    vec4<float> d;
+                    const vec2<float> f = noise::cellular_vectors(vec2<float>(xs[i], ys[i]), d);
+                    INFO("scale " << scale << ", origin " << origin.x << " " << origin.y << ", lane " << i);
+                    CHECK(std::bit_cast<std::uint32_t>(lane(F.x, i)) == std::bit_cast<std::uint32_t>(f.x));
+                    CHECK(std::bit_cast<std::uint32_t>(lane(F.y, i)) == std::bit_cast<std::uint32_t>(f.y));
+                    for (int c = 0; c < 4; ++c) {
+                        CHECK(std::bit_cast<std::uint32_t>(lane(d1d2[c], i)) == std::bit_cast<std::uint32_t>(d[c]));
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("cellular noise on lanes whose cells lie close together equals the scalar code bit for bit", "[noise]") {
+    int nearby = 0, batches = 0;
+    check_cellular_lanes<Pixels<float, 16>>(nearby, batches);
+    check_cellular_lanes<Pixels<float, 32>>(nearby, batches);
+    check_cellular_lanes<Quads<float, 4>>(nearby, batches);
+    check_cellular_lanes<Quads<float, 8>>(nearby, batches);
+#if defined(__AVX512F__)
+    // Both ways are taken: the table where the cells lie close together, each lane's own hashes
+    // elsewhere (the largest scale, and where the cells wrap at 289).
+    CHECK(nearby > batches / 4);
+    CHECK(nearby < batches);
+#else
+    CHECK(nearby == 0);
+#endif
 }
 
 TEST_CASE("flow noise's analytic gradient matches central differences", "[noise]") {
