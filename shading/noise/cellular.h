@@ -45,7 +45,8 @@ alignas(64) inline constexpr float kTableDy[32] = {-2, -2, -2, -2, -2, -1, -1, -
 //
 // A cell's feature point (the hash p and the offsets ox, oy below) depends on the cell alone,
 // and the lanes of a block mostly share their cells (a cell of st * 64 spans 7.8 pixels of a
-// 500x500 plane): Worley tiles spent about a quarter of its time hashing the same cells over.
+// 500x500 plane): hashing the same cells over for each lane, Worley tiles took 1.6x as long
+// on the Table 1.1 plane (docs/results.md).
 // Where every lane's cell is within one of lane 0's, the 5x5 cells around lane 0's are hashed
 // once, as 32 lanes, and each lane reads its nine from that table. The cells' coordinates are
 // whole numbers below 2^24, so the table's x0 + dx and permute_mod(.) + (y0 + dy) are each
