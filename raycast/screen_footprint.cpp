@@ -79,9 +79,10 @@ void BlockCoverage::cover(const TriangleFootprint& f) {
     };
     int c0, c1, r0, r1;
     if (!blocks(corner0.x, corner1.x, 0, columns_, c0, c1) || !blocks(corner0.y, corner1.y, top_, rows_, r0, r1)) return;
-    // A block this footprint reaches: sure to hit this triangle while no other reaches it.
-    auto reach = [&](Block& block, bool sure) {
-        block = block.rays == Rays::Miss && sure ? Block{Rays::HitOne, f.id} : Block{Rays::Traced, {}};
+    // Marks a block this footprint reaches: sure to hit this triangle while no other reaches it.
+    auto mark = [&](int column, int row, bool sure) {
+        Block& b = block(column, row);
+        b = b.rays == Rays::Miss && sure ? Block{Rays::HitOne, f.id} : Block{Rays::Traced, {}};
     };
     // The projected triangle's edges as e(p) = n . p + d, positive inside; a block is out when
     // the rectangle of its pixel centres, grown as the triangle is, lies wholly outside one edge.
@@ -93,7 +94,7 @@ void BlockCoverage::cover(const TriangleFootprint& f) {
     const bool edges = std::abs(area) > 1e-6 * scale && (c1 - c0 + 1) * (r1 - r0 + 1) > 4;
     if (!edges) {
         for (int row = r0; row <= r1; ++row) {
-            for (int column = c0; column <= c1; ++column) reach(blocks_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)], false);
+            for (int column = c0; column <= c1; ++column) mark(column, row, false);
         }
         return;
     }
@@ -124,7 +125,7 @@ void BlockCoverage::cover(const TriangleFootprint& f) {
                 const double spread = std::abs(e[i].n.x) * half.x + std::abs(e[i].n.y) * half.y;
                 touches = middle + spread >= 0.0, inside = inside && middle - spread > 0.0;
             }
-            if (touches) reach(blocks_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)], inside);
+            if (touches) mark(column, row, inside);
         }
     }
 }

@@ -77,9 +77,12 @@ private:
         Rays rays;
         TriangleId triangle;
     };
-    const Block& at(int bx, int by) const {
-        return blocks_[std::size_t((by - top_) / 4) * std::size_t(columns_) + std::size_t(bx / 4)];
+    // The block in block column `column` and block row `row`.
+    const Block& block(int column, int row) const {
+        return blocks_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)];
     }
+    Block& block(int column, int row) { return blocks_[std::size_t(row) * std::size_t(columns_) + std::size_t(column)]; }
+    const Block& at(int bx, int by) const { return block(bx / 4, (by - top_) / 4); }
 
     int width_, height_, top_, bottom_, columns_, rows_;
     std::vector<Block> blocks_;  // row by row
