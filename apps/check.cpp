@@ -20,6 +20,7 @@
 
 #include "core/framebuffer.h"
 #include "raster/driver_settings.h"
+#include "render/frame_image.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "shading/catalogue.h"
@@ -248,7 +249,7 @@ struct Checker {
         r.set(raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe));
         r.shading.threads = threads;
         const Framebuffer fb = render_frame(scene, r);
-        const Image ours{fb.width, fb.height, fb.rgba};
+        const Image ours = colour_image(fb);
         report.width = fb.width, report.height = fb.height;
         report.counts = count_differences(ours, theirs);
         report.bar = bar_for(info, scene_name, c.rule, report.counts);

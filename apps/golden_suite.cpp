@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/framebuffer.h"
+#include "render/frame_image.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 
@@ -166,7 +167,7 @@ CaseResult run_case(const SuiteCase& c, bool update, int threads) {
         FrameRequest request = c.request;
         request.shading.threads = threads;
         const Framebuffer fb = render_frame(scene, request);
-        const Image actual{fb.width, fb.height, fb.rgba};
+        const Image actual = colour_image(fb);
         r.pixels = (long long)fb.width * fb.height;
         if (update) {
             fs::create_directories(c.expected.parent_path());

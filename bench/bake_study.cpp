@@ -29,6 +29,7 @@
 #include <glm/geometric.hpp>
 
 #include "render/atlas_bake.h"
+#include "render/frame_image.h"
 #include "render/normal_bake.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
@@ -141,8 +142,8 @@ void live_against_baked_row(Table& md, const View& v, double bake_ms, Scene live
     const LiveError e = error_against_live(L, B);
     md.line("| %s | %dx%d | %d^2 (bake %.0f ms) | %.2f | %.2f | %.2f | %.2f | %zu of %zu |\n", v.name, v.frame, v.frame,
             v.atlas, bake_ms, live_ms, baked_ms, baked_ms / live_ms, e.mean, e.over8, e.covered);
-    write_image(o.out / (prefix + "live-" + v.name + ".png"), Image{L.width, L.height, L.rgba});
-    write_image(o.out / (prefix + "baked-" + v.name + ".png"), Image{B.width, B.height, B.rgba});
+    write_image(o.out / (prefix + "live-" + v.name + ".png"), colour_image(L));
+    write_image(o.out / (prefix + "baked-" + v.name + ".png"), colour_image(B));
 }
 
 // Finite differences against the analytic normal (Dual2 in double is the reference), per step
@@ -295,9 +296,9 @@ int main(int argc, char** argv) {
             }
             seams_md.line("| %d | %zu of %zu | %zu | %zu | %.2f | %.2f |\n", skirt, gutter, n_seam, over1, over8, sum_seam / double(n_seam),
                         sum_rest / double(n_rest));
-            write_image(o.out / ("baked-skirt-" + std::to_string(skirt) + ".png"), Image{B.width, B.height, B.rgba});
+            write_image(o.out / ("baked-skirt-" + std::to_string(skirt) + ".png"), colour_image(B));
         }
-        write_image(o.out / "live.png", Image{L.width, L.height, L.rgba});
+        write_image(o.out / "live.png", colour_image(L));
 
         normals_study(o);
         lit_study(o, frame);

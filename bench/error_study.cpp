@@ -19,11 +19,13 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/frame_image.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "reference/gl_renderer.h"
@@ -116,7 +118,7 @@ std::vector<Mode> modes_of(const Family& f) {
 // ---- images --------------------------------------------------------------------------------
 
 // Box filter of k x k pixel blocks.
-Image downsample(const std::vector<float>& rgba, int width, int height, int k) {
+Image downsample(std::span<const float> rgba, int width, int height, int k) {
     Image out{width / k, height / k, std::vector<float>(std::size_t(width / k) * std::size_t(height / k) * 4, 0.0f)};
     for (int y = 0; y < out.height; ++y) {
         for (int x = 0; x < out.width; ++x) {
@@ -240,7 +242,7 @@ private:
             const auto t0 = Clock::now();
             renderer.render_into(fb, std::nullopt);
             image = m.supersample > 1 ? downsample(fb.rgba, fb.width, fb.height, m.supersample)
-                                      : Image{fb.width, fb.height, fb.rgba};
+                                      : colour_image(fb);
             if (i >= kWarmUp) ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
         }
         return {image, median(ms)};

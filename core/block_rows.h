@@ -1,6 +1,6 @@
 #pragma once
 // Whole-block work: which quads of a block run, and a block's colour stored as
-// four framebuffer rows (the lane order is core/block_layout.h's).
+// four framebuffer rows (the lane order is core/block_layout.h's), streamed where they can be.
 
 #include <cstddef>
 #include <cstdint>
@@ -11,6 +11,7 @@
 #endif
 
 #include "core/block_layout.h"
+#include "core/cache_lines.h"
 #include "core/framebuffer.h"
 #include "core/lanes16.h"
 
@@ -48,7 +49,7 @@ void row(const Floats& rg, const Floats& ba, Floats& out, std::integer_sequence<
 // into four framebuffer rows of four RGBA pixels: rows[r] receives the 16 floats of pixels
 // (0..3, r) of the block, y down. Eight two-source shuffles: rows 0 and 1 hold lanes 0..7 (the
 // upper quads), rows 2 and 3 lanes 8..15.
-inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kBlock]) {
+inline void block_to_rows(const float* const (&rgba)[4], lanes16::Floats (&rows)[kBlock]) {
 #if defined(__AVX__) && !defined(__AVX512F__)
     // Two registers per channel: the generic shuffles below would be split into scalar moves.
     // Per half h (lanes 8h .. 8h + 7, block rows 2h and 2h + 1): interleave red with green and
@@ -56,19 +57,21 @@ inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kB
     // rows. Row 2h holds lanes 8h + {2, 3, 6, 7}, row 2h + 1 lanes 8h + {0, 1, 4, 5} (kLaneAt).
     static_assert(kLaneAt[0][0] == 2 && kLaneAt[0][2] == 6 && kLaneAt[1][0] == 0 && kLaneAt[1][2] == 4 &&
                   kLaneAt[2][0] == 10 && kLaneAt[3][0] == 8);
+    typedef float Eight __attribute__((vector_size(8 * sizeof(float))));
     for (int h = 0; h < 2; ++h) {
         const __m256 r = _mm256_loadu_ps(rgba[0] + 8 * h), g = _mm256_loadu_ps(rgba[1] + 8 * h);
         const __m256 b = _mm256_loadu_ps(rgba[2] + 8 * h), a = _mm256_loadu_ps(rgba[3] + 8 * h);
         const __m256 rg_low = _mm256_unpacklo_ps(r, g), rg_high = _mm256_unpackhi_ps(r, g);  // r0 g0 r1 g1 | r4 ..
         const __m256 ba_low = _mm256_unpacklo_ps(b, a), ba_high = _mm256_unpackhi_ps(b, a);
-        auto store_row = [](float* row, __m256 rg, __m256 ba) {
+        auto row = [](__m256 rg, __m256 ba) {
             const __m256 first = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(1, 0, 1, 0));   // pixel k, k + 4
             const __m256 second = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(3, 2, 3, 2));  // pixel k + 1, k + 5
-            _mm256_storeu_ps(row, _mm256_permute2f128_ps(first, second, 0x20));
-            _mm256_storeu_ps(row + 8, _mm256_permute2f128_ps(first, second, 0x31));
+            const Eight left = Eight(_mm256_permute2f128_ps(first, second, 0x20));
+            const Eight right = Eight(_mm256_permute2f128_ps(first, second, 0x31));
+            return lanes16::Floats(__builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
         };
-        store_row(rows[2 * h], rg_high, ba_high);
-        store_row(rows[2 * h + 1], rg_low, ba_low);
+        rows[2 * h] = row(rg_high, ba_high);
+        rows[2 * h + 1] = row(rg_low, ba_low);
     }
 #else
     using namespace block_detail;
@@ -81,24 +84,42 @@ inline void block_to_rows(const float* const (&rgba)[4], float* const (&rows)[kB
     interleave<1>(r, g, rg_high, sixteen);
     interleave<0>(b, a, ba_low, sixteen);
     interleave<1>(b, a, ba_high, sixteen);
-    Floats out[kBlock];
-    row<0>(rg_low, ba_low, out[0], sixteen);
-    row<1>(rg_low, ba_low, out[1], sixteen);
-    row<2>(rg_high, ba_high, out[2], sixteen);
-    row<3>(rg_high, ba_high, out[3], sixteen);
-    for (int i = 0; i < kBlock; ++i) lanes16::store(rows[i], out[i]);
+    row<0>(rg_low, ba_low, rows[0], sixteen);
+    row<1>(rg_low, ba_low, rows[1], sixteen);
+    row<2>(rg_high, ba_high, rows[2], sixteen);
+    row<3>(rg_high, ba_high, rows[3], sixteen);
 #endif
 }
 
-// A whole block's shaded colour into `fb` as four rows, and with `undefined` its lanes' undefined
-// cases; the block, top-left pixel (bx, by), lies inside the image.
-inline void store_block(Framebuffer& fb, int bx, int by, const ColorBatch& out, bool undefined) {
+// How a block's rows go to the frame: `Streamed` where nothing writes them again this frame.
+enum class RowStores { Cached, Streamed };
+
+// The four rows of the block whose top-left pixel is (bx, by), which lies inside the image, into
+// `fb`. Streamed, each is a cache line written past the caches (cache_lines.h) where the frame's
+// rows let it start one; else four plain stores.
+inline void write_block_rows(Framebuffer& fb, int bx, int by, const lanes16::Floats (&rows)[kBlock], RowStores stores) {
     float* const row = fb.pixel(bx, by);
     const std::size_t pitch = 4 * std::size_t(fb.width);
-    block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]}, {row, row + pitch, row + 2 * pitch, row + 3 * pitch});
-    if (undefined) {
-        for (int i = 0; i < kBatchLanes; ++i) fb.undefined[fb.index(bx + kLaneDx[i], by + kLaneDy[i])] = out.undefined[i];
+    if (stores == RowStores::Streamed && starts_cache_line(row) && pitch % (kCacheLine / sizeof(float)) == 0) {
+        for (int r = 0; r < kBlock; ++r) stream_line(row + std::size_t(r) * pitch, rows[r]);
+    } else {
+        for (int r = 0; r < kBlock; ++r) lanes16::store(row + std::size_t(r) * pitch, rows[r]);
     }
+}
+
+// A whole block's undefined cases into `fb`, which holds them; the block, top-left pixel (bx, by),
+// lies inside the image.
+inline void store_undefined(Framebuffer& fb, int bx, int by, const ColorBatch& out) {
+    for (int i = 0; i < kBatchLanes; ++i) fb.undefined[fb.index(bx + kLaneDx[i], by + kLaneDy[i])] = out.undefined[i];
+}
+
+// A whole block's shaded colour into `fb` as four rows (write_block_rows), and with `undefined`
+// its lanes' undefined cases; the block, top-left pixel (bx, by), lies inside the image.
+inline void store_block(Framebuffer& fb, int bx, int by, const ColorBatch& out, bool undefined, RowStores stores) {
+    lanes16::Floats rows[kBlock];
+    block_to_rows({out.rgba[0], out.rgba[1], out.rgba[2], out.rgba[3]}, rows);
+    write_block_rows(fb, bx, by, rows, stores);
+    if (undefined) store_undefined(fb, bx, by, out);
 }
 
 }  // namespace qs

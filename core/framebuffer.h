@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/cache_lines.h"
 #include "core/tile_grid.h"
 
 namespace qs {
@@ -16,7 +17,9 @@ struct Framebuffer {
     // The rows held: [first_row, first_row + rows) of the image. The whole image, unless it was
     // rendered band by band (RowBand, tile_grid.h); the vectors below hold these rows only.
     int first_row = 0, rows = 0;
-    std::vector<float> rgba;   // 4 per pixel, top-down
+    // 4 per pixel, top-down; from a cache line on, so that a block's row of four pixels fills one
+    // where the width is a multiple of 4 (cache_lines.h)
+    std::vector<float, CacheLineAllocator<float>> rgba;
     // Empty when the frame needed no depth buffer; else 1 per pixel, cleared to 1: window depth
     // as a 24-bit depth buffer holds it (depth_buffer.h).
     std::vector<float> depth;

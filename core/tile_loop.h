@@ -4,7 +4,8 @@
 // thread, with denormals flushed as the GPU's and llvmpipe's shading has them
 // (float_environment.h). Each thread renders its tiles with a worker of its own, made on its
 // first tile rather than per tile (a worker holds a tile's buffers), so a tile's pixels depend
-// on nothing another thread does: the output is the same for any thread count.
+// on nothing another thread does: the output is the same for any thread count. Workers may
+// write the frame with streaming stores (cache_lines.h); each chunk of tiles fences them.
 
 #include <memory>
 #include <utility>
@@ -12,6 +13,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include "core/cache_lines.h"
 #include "core/float_environment.h"
 #include "core/parallel.h"
 #include "core/tile_grid.h"
@@ -28,6 +30,7 @@ std::vector<std::unique_ptr<Worker>> for_each_tile(const TileGrid& grid, const M
         std::unique_ptr<Worker>& worker = workers.local();
         if (!worker) worker = make();
         for (int i = tiles.begin(); i != tiles.end(); ++i) work(*worker, i);
+        streaming_stores_done();  // the tiles' frame lines, before the chunk is reported done
     });
     std::vector<std::unique_ptr<Worker>> done;
     for (std::unique_ptr<Worker>& worker : workers) {

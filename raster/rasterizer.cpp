@@ -40,9 +40,25 @@ lanes16::Longs lane_offsets(const int (&d)[kBatchLanes]) {
 }
 const lanes16::Longs kLaneDx64 = lane_offsets(kLaneDx), kLaneDy64 = lane_offsets(kLaneDy);
 
+// Whether no pixel centre of the tile at (x0, y0) lies inside t: the blocks' test in
+// TileRenderer::block, once for the whole tile. A large triangle misses many of the tiles its
+// bounding box touches (half of them for either triangle of a square).
+bool misses_tile(const TriangleSetup& t, int x0, int y0) {
+    for (const EdgeFunction& e : t.edges) {
+        if (e.at(x0, y0) + e.most_offset(kTileSize) <= 0) return true;
+    }
+    return false;
+}
+
 // Renders the triangles of one tile, in submission order, straight into the tile's part of the
 // framebuffer (no thread else writes there, so the result is the same for any thread count).
-// A whole block's colour is transposed in registers from lane order into its four pixel rows.
+// A whole block's colour is transposed in registers from lane order into its four pixel rows,
+// streamed past the caches (cache_lines.h) where they are final: the tile's last triangle
+// writing a block no other wrote, and the clear colour of blocks none wrote. (Streamed always,
+// rows that a later triangle writes again were read back from memory: the one-thread Figure 1.1
+// frame, spheres over ground, took 4-7% longer. Kept in a tile-local buffer and streamed at the
+// tile's end, the stores came in bursts the memory took more slowly than the shading made them:
+// the simplex square took 22-32% longer.)
 // Blocks are cleared lazily: a block's first partial write clears it first, blocks never
 // written are cleared by finish(), and a block covered at once is never cleared at all.
 // Depth, when the frame needs it, stays tile-local in lane order, as the 24-bit values the
@@ -53,7 +69,9 @@ public:
     // plane evaluation; `general`: every depth tested, even where it provably passes.
     TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear, bool depth_test, bool fused,
                  bool general)
-        : fb_(fb), draws_(draws), clear_(clear), depth_test_(depth_test), fused_(fused), general_(general) {}
+        : fb_(fb), draws_(draws), depth_test_(depth_test), fused_(fused), general_(general) {
+        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
+    }
 
     // Starts the tile whose top-left pixel is (x0, y0); one renderer per thread renders its tiles
     // one after the other.
@@ -67,7 +85,7 @@ public:
     void finish() {
         if (!touched_.all()) {
             for (int block = 0; block < kTileBlocks; ++block) {
-                if (!touched_[std::size_t(block)]) clear_block(block);
+                if (!touched_[std::size_t(block)]) clear_block(block, RowStores::Streamed);
             }
         }
         if (fb_.depth.empty()) return;
@@ -99,10 +117,11 @@ public:
     }
 
     // Rasterizes triangle t inside the tile whose pixels are [x0, x1] x [y0, y1]; the tile's origin
-    // lies on the quad grid.
-    void render(const TriangleSetup& t, int x0, int y0, int x1, int y1) {
+    // lies on the quad grid. `last`: no later triangle of the tile reaches it.
+    void render(const TriangleSetup& t, int x0, int y0, int x1, int y1, bool last) {
         const PreparedDraw& d = draws_[t.draw];
         draw_ = &d;
+        last_ = last;
         // Built in place: assigned from a temporary, it was built on the stack in small stores
         // and copied with 64-byte loads, each waiting for those stores to reach the cache.
         static_assert(std::is_trivially_destructible_v<FragmentInputs>);
@@ -117,7 +136,7 @@ public:
         frag_coord_set_ = d.frag_coord || depth_test_;
         const int lo_x = std::max(x0, t.min_x), hi_x = std::min(x1, t.max_x);
         const int lo_y = std::max(y0, t.min_y), hi_y = std::min(y1, t.max_y);
-        if (lo_x > hi_x || lo_y > hi_y || misses_tile(t, x0, y0)) return;
+        if (lo_x > hi_x || lo_y > hi_y) return;  // (and t reaches the tile: binning)
         // A triangle covering the whole tile is shaded a block pair at a time, without coverage
         // or depth tests, where every fragment passes: without a depth buffer, or as the tile's
         // first (its depths all still the cleared 1, which LESS passes for any depth below 1; a
@@ -151,16 +170,6 @@ public:
         }
         flush_blocks();
         flush(pending_);
-    }
-
-    // Whether no pixel centre of the tile at (x0, y0) lies inside t: the blocks' test below, once
-    // for the whole tile. Triangles are binned by their bounding boxes, and a large one misses
-    // many of the tiles its box touches (half of them for either triangle of a square).
-    static bool misses_tile(const TriangleSetup& t, int x0, int y0) {
-        for (const EdgeFunction& e : t.edges) {
-            if (e.at(x0, y0) + e.most_offset(kTileSize) <= 0) return true;
-        }
-        return false;
     }
 
     // Whether the tile at (x0, y0) lies inside the image and every pixel centre of it inside t.
@@ -253,8 +262,9 @@ private:
     // Writes every lane of batch h, the block at (bx, by): its colour, and its depth where the
     // frame has a depth buffer.
     [[gnu::always_inline]] void write_whole(int h, int bx, int by) {
-        store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined);
         const int block = block_base(bx, by) / kBatchLanes;
+        const bool final = last_ && !touched_[std::size_t(block)];
+        store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined, final ? RowStores::Streamed : RowStores::Cached);
         touched_[std::size_t(block)] = true;
         if (depth_test_) lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
         written_ += kBatchLanes;
@@ -367,7 +377,7 @@ private:
     void write_lane(int h, int i, int x, int y) {
         const int t = tile_index(x, y);
         if (!touched_[std::size_t(t / kBatchLanes)]) {
-            clear_block(t / kBatchLanes);
+            clear_block(t / kBatchLanes, RowStores::Cached);
             touched_[std::size_t(t / kBatchLanes)] = true;
         }
         float* p = fb_.pixel(x, y);
@@ -382,13 +392,17 @@ private:
     int block_y(int block) const { return y0_ + (block / (kTileSize / kBlock)) * kBlock; }
 
     // Writes the clear colour into the block's pixels that lie inside the framebuffer.
-    void clear_block(int block) {
+    void clear_block(int block, RowStores stores) {
         const int x = block_x(block), y = block_y(block);
         const int n = std::min(kBlock, fb_.width - x);
+        const bool whole = n == kBlock && y >= 0 && y + kBlock <= fb_.height;
+        if (whole) {
+            const lanes16::Floats rows[kBlock] = {clear_row_, clear_row_, clear_row_, clear_row_};
+            write_block_rows(fb_, x, y, rows, stores);
+        }
         for (int r = 0; r < kBlock; ++r) {
             if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
-            float* p = fb_.pixel(x, y + r);
-            for (int dx = 0; dx < n; ++dx) std::memcpy(p + 4 * dx, &clear_[0], 4 * sizeof(float));
+            if (!whole) std::memcpy(fb_.pixel(x, y + r), &clear_row_, 4 * std::size_t(n) * sizeof(float));
             if (!fb_.undefined.empty()) std::fill_n(undefined_at(x, y + r), n, std::uint8_t(0));
         }
     }
@@ -409,8 +423,9 @@ private:
     static constexpr int kTileBlocks = kTilePixels / kBatchLanes;
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
-    glm::vec4 clear_;
+    lanes16::Floats clear_row_;  // four pixels of the clear colour
     bool depth_test_, fused_, general_;
+    bool last_ = false;  // render()'s
     int x0_ = 0, y0_ = 0;
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];  // 24-bit depths (depth24), exact in float
@@ -505,7 +520,9 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     const bool depth = options.force_general_path || kept.depth.matters(triangles, width, height);
     stats.depth_buffer = depth;
 
-    // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order.
+    // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order:
+    // those whose bounding box reaches the tile, less those its edges keep out of it (a tile's
+    // last triangle streams its rows, TileRenderer).
     const TileGrid grid(width, height, options.pairing, band);
     std::vector<std::vector<std::uint32_t>>& bins = kept.bins;
     bins.resize(std::size_t(grid.count()));
@@ -515,7 +532,10 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
         const int ty0 = std::max(grid.row_of(t.min_y), 0), ty1 = std::min(grid.row_of(t.max_y), grid.rows - 1);
         for (int ty = ty0; ty <= ty1; ++ty) {
-            for (int tx = tx0; tx <= tx1; ++tx) bins[std::size_t(ty * grid.columns + tx)].push_back(i);
+            for (int tx = tx0; tx <= tx1; ++tx) {
+                const int b = ty * grid.columns + tx;
+                if (!misses_tile(t, grid.x0(b), grid.y0(b))) bins[std::size_t(b)].push_back(i);
+            }
         }
     }
 
@@ -530,8 +550,9 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         [&](TileRenderer& tile, int b) {
             const int x0 = grid.x0(b), y0 = grid.y0(b);
             tile.start(x0, y0);
-            for (std::uint32_t i : bins[std::size_t(b)]) {
-                tile.render(triangles[i], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1);
+            const std::vector<std::uint32_t>& bin = bins[std::size_t(b)];
+            for (std::size_t k = 0; k < bin.size(); ++k) {
+                tile.render(triangles[bin[k]], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1, k + 1 == bin.size());
             }
             tile.finish();
         });

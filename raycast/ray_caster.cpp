@@ -209,8 +209,10 @@ private:
     // Writes the clear colour into the lanes `lanes` of the block at (bx, by).
     void clear_lanes(int bx, int by, std::uint32_t lanes) {
         if (lanes == kAllLanes) {
-            // A whole block (it lies inside the image): four rows.
-            for (int r = 0; r < kBlock; ++r) lanes16::store(fb_.pixel(bx, by + r), clear_row_);
+            // A whole block (it lies inside the image): four rows, streamed, as every whole block
+            // (a ray caster writes each pixel once a frame).
+            const lanes16::Floats rows[kBlock] = {clear_row_, clear_row_, clear_row_, clear_row_};
+            write_block_rows(fb_, bx, by, rows, RowStores::Streamed);
             if (!fb_.undefined.empty()) {
                 for (int r = 0; r < kBlock; ++r) std::fill_n(undefined_at(bx, by + r), kBlock, std::uint8_t(0));
             }
@@ -273,7 +275,7 @@ private:
     void write_whole(const WholeBlock& w, const ColorBatch& out) {
         if (out.discarded != 0) return write(w.draw, w.batch, out);
         // The block lies inside the image (every lane was cast): four rows at once.
-        store_block(fb_, w.bx, w.by, out, draws_[w.draw].mode.check_undefined);
+        store_block(fb_, w.bx, w.by, out, draws_[w.draw].mode.check_undefined, RowStores::Streamed);
         written_ += kBatchLanes;
     }
 

@@ -71,10 +71,38 @@ TEST_CASE("a block's colours go from lane order to framebuffer rows, each pixel 
     for (int c = 0; c < 4; ++c) {
         for (int i = 0; i < kBatchLanes; ++i) channels[c][i] = float(100 * c + i);
     }
-    float rows[kBlock][4 * kBlock];
-    block_to_rows({channels[0], channels[1], channels[2], channels[3]}, {rows[0], rows[1], rows[2], rows[3]});
+    lanes16::Floats rows[kBlock];
+    block_to_rows({channels[0], channels[1], channels[2], channels[3]}, rows);
     for (int i = 0; i < kBatchLanes; ++i) {
         for (int c = 0; c < 4; ++c) CHECK(rows[kLaneDy[i]][4 * kLaneDx[i] + c] == float(100 * c + i));
+    }
+}
+
+TEST_CASE("a block's rows land the same streamed or cached, on rows that start a cache line or not", "[raster][layout]") {
+    lanes16::Floats rows[kBlock];
+    for (int r = 0; r < kBlock; ++r) {
+        for (int j = 0; j < 4 * kBlock; ++j) rows[r][j] = float(100 * r + j);
+    }
+    // Widths 8 and 12: every block's rows start a cache line (the colour is allocated on one);
+    // 9, 10 and 11: they do not, and are stored as plain rows.
+    for (int width : {8, 9, 10, 11, 12}) {
+        for (RowStores stores : {RowStores::Cached, RowStores::Streamed}) {
+            Framebuffer fb;
+            fb.hold(width, 6, RowBand{0, 6}, false, false);
+            REQUIRE(starts_cache_line(fb.rgba.data()));
+            std::fill(fb.rgba.begin(), fb.rgba.end(), -1.0f);
+            write_block_rows(fb, 4, 1, rows, stores);
+            streaming_stores_done();
+            INFO("width " << width << (stores == RowStores::Streamed ? ", streamed" : ", cached"));
+            for (int y = 0; y < 6; ++y) {
+                for (int x = 0; x < width; ++x) {
+                    for (int c = 0; c < 4; ++c) {
+                        const bool in_block = x >= 4 && x < 8 && y >= 1 && y < 5;
+                        CHECK(fb.pixel(x, y)[c] == (in_block ? float(100 * (y - 1) + 4 * (x - 4) + c) : -1.0f));
+                    }
+                }
+            }
+        }
     }
 }
 

@@ -1,4 +1,5 @@
 #include "tests/reference/comparison.h"
+#include "render/frame_image.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -27,7 +28,7 @@ Counts count(const Framebuffer& a, const Image& b) {
 }
 
 void write_comparison(const Framebuffer& ours, const Image& reference, const std::filesystem::path& file) {
-    const Image mine{ours.width, ours.height, ours.rgba};
+    const Image mine = colour_image(ours);
     const Image heat = difference_heat_map(mine, reference, 8.0f / 255.0f);
     std::filesystem::create_directories(file.parent_path());
     write_image(file, side_by_side({&mine, &reference, &heat}));

@@ -9,6 +9,7 @@
 // reference renders in this process, one context per scene, which spares a process start and its
 // library loading per image. Writes build/conformance/<scene>-<driver>.csv and, for every case
 // that differs at all, a quadshade | OSMesa | difference image beside it.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -197,7 +198,7 @@ TEST_CASE("every conformance scene's st is llvmpipe's bit for bit: clipped, back
         const Framebuffer q = render_frame(scene, r);
         INFO(sc.name);
         CHECK(count(q, ref).covered > q.rgba.size() / 4 / 20);
-        CHECK(q.rgba == ref.rgba);
+        CHECK(std::ranges::equal(q.rgba, ref.rgba));
     }
 }
 #endif

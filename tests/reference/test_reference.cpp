@@ -15,6 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/frame_image.h"
 #include "shading/catalogue.h"
 #include "core/framebuffer.h"
 #include "scenes/gltf.h"
@@ -245,7 +246,7 @@ TEST_CASE("seed 003's square viewport: what lies above it in a portrait window i
     const Case c{"es_tiles2", kPlane, "es_tiles2", kPortraitWidth, kPortraitHeight};
     const Framebuffer q = ours(c, Derivatives::Fine, c.width, c.height);
     const Image ref = reference(c, "llvmpipe", c.width, c.height);
-    auto drawn = [](const std::vector<float>& rgba, std::size_t first_row, std::size_t rows) {
+    auto drawn = [](std::span<const float> rgba, std::size_t first_row, std::size_t rows) {
         std::size_t n = 0;
         for (std::size_t p = first_row * kPortraitWidth * 4; p < (first_row + rows) * kPortraitWidth * 4; p += 4) {
             n += rgba[p] != 0.0f || rgba[p + 1] != 0.0f || rgba[p + 2] != 0.0f;
@@ -264,8 +265,8 @@ TEST_CASE("derivative probe: fine equals llvmpipe and coarse-lower equals softpi
     const Framebuffer fine = ours(probe, Derivatives::Fine, 17, 15);
     const Framebuffer coarse = ours(probe, Derivatives::CoarseLower, 17, 15);
     const Image lp = reference(probe, "llvmpipe", 17, 15), sp = reference(probe, "softpipe", 17, 15);
-    CHECK(fine.rgba == lp.rgba);
-    CHECK(coarse.rgba == sp.rgba);
+    CHECK(std::ranges::equal(fine.rgba, lp.rgba));
+    CHECK(std::ranges::equal(coarse.rgba, sp.rgba));
     CHECK(fine.rgba != coarse.rgba);  // the rules really differ on this function
 }
 
@@ -280,7 +281,7 @@ TEST_CASE("fill rule: llvmpipe owns left and bottom edges, softpipe right and to
     test::copy_textures_into(s, work_dir());
     save_scene(s, file);
     const Case c{"fill-rule", file, "", 16, 16};
-    auto coverage = [](const std::vector<float>& rgba) {
+    auto coverage = [](std::span<const float> rgba) {
         std::vector<int> cov;
         for (std::size_t p = 0; p < rgba.size(); p += 4) cov.push_back(rgba[p] > 0.5f);  // red = drawn
         return cov;
@@ -296,19 +297,19 @@ TEST_CASE("fill rule: llvmpipe owns left and bottom edges, softpipe right and to
 // machines (raster/plane_equation.h), native or portable build alike.
 TEST_CASE("interpolated varyings equal llvmpipe's bit for bit", "[reference][interpolation]") {
     const Case st{"pattern_s", kPlane, "pattern_s", 500, 500};  // writes st.s unchanged
-    CHECK(ours(st, Derivatives::Fine, 500, 500).rgba == reference(st, "llvmpipe", 500, 500).rgba);
+    CHECK(std::ranges::equal(ours(st, Derivatives::Fine, 500, 500).rgba, reference(st, "llvmpipe", 500, 500).rgba));
 }
 
 TEST_CASE("division and mod are exact IEEE operations, bit for bit as llvmpipe", "[reference][arithmetic]") {
     const Case probe{"arithmetic_probe", kPlane, "arithmetic_probe", 64, 64};
-    CHECK(ours(probe, Derivatives::Fine, 64, 64).rgba == reference(probe, "llvmpipe", 64, 64).rgba);
+    CHECK(std::ranges::equal(ours(probe, Derivatives::Fine, 64, 64).rgba, reference(probe, "llvmpipe", 64, 64).rgba));
 }
 
 TEST_CASE("smoothstep with equal edges matches llvmpipe's run-time result", "[reference][undefined]") {
     const Case probe{"smoothstep_probe", kPlane, "smoothstep_probe", 32, 4};
     const Framebuffer q = ours(probe, Derivatives::Fine, 32, 4);
     const Image lp = reference(probe, "llvmpipe", 32, 4);
-    CHECK(q.rgba == lp.rgba);
+    CHECK(std::ranges::equal(q.rgba, lp.rgba));
     // ...which is x > e: 0 below and on the edge, 1 above (column 2 sits on it, x = 2.5).
     CHECK(q.pixel(1, 0)[0] == 0.0f);
     CHECK(q.pixel(2, 0)[0] == 0.0f);
@@ -710,7 +711,7 @@ TEST_CASE("uniforms: initializers, the material's extras.uniforms and --uniform 
     CHECK(differing_values(q2, reference(option, "llvmpipe", w, h, options)) == 0);
     CHECK(differing_values(q1, reference(material, "softpipe", w, h)) == 0);
     // Each source of values changed the image.
-    Image i0{w, h, q0.rgba}, i1{w, h, q1.rgba};
+    const Image i0 = colour_image(q0), i1 = colour_image(q1);
     CHECK(differing_values(q1, i0) > std::size_t(w * h / 4));
     CHECK(differing_values(q2, i1) > std::size_t(w * h / 4));
 }

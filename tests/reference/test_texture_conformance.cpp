@@ -441,7 +441,7 @@ TEST_CASE("orientation: glTF's UV (0, 0) is the image's top-left: t = 0.01 sampl
         CHECK(q.rgba[std::size_t(p) * 4 + 1] == 0.0f);
         CHECK(q.rgba[std::size_t(p) * 4 + 2] == 0.0f);
     }
-    CHECK(q.rgba == lp.rgba);
+    CHECK(std::ranges::equal(q.rgba, lp.rgba));
 }
 #endif
 

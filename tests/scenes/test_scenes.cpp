@@ -631,7 +631,7 @@ TEST_CASE("long animations: float time freezes and jumps near 1e6 s; --stable-ti
     r.stable_time = true;
     SceneRenderer stable(scene, r);
     const double start = 1e6;
-    std::vector<std::vector<float>> plain_frames, stable_frames;
+    std::vector<decltype(Framebuffer::rgba)> plain_frames, stable_frames;
     double worst_time_error = 0.0;
     for (int f = 0; f < 30; ++f) {  // one second at 30 frames per second
         const double t = start + f / 30.0;
@@ -642,7 +642,7 @@ TEST_CASE("long animations: float time freezes and jumps near 1e6 s; --stable-ti
         stable.render_into(fb, t);
         stable_frames.push_back(fb.rgba);
     }
-    auto distinct = [](const std::vector<std::vector<float>>& frames) {
+    auto distinct = [](const std::vector<decltype(Framebuffer::rgba)>& frames) {
         std::size_t n = 1;
         for (std::size_t i = 1; i < frames.size(); ++i) n += frames[i] != frames[i - 1];
         return n;

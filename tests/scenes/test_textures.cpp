@@ -34,7 +34,7 @@ std::size_t over_one_step(const Framebuffer& a, const Framebuffer& b) {
 }  // namespace
 
 TEST_CASE("a texture's image from a file, a data: URI and a .glb's bufferView renders the same", "[textures]") {
-    std::vector<float> first;
+    decltype(Framebuffer::rgba) first;
     for (const char* file : {"source-file.gltf", "source-data-uri.gltf", "source-buffer-view.glb"}) {
         Scene s = conformance_scene(file);
         REQUIRE(s.textures.size() == 1);
