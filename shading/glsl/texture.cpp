@@ -952,8 +952,11 @@ I lane_indices() {
     return r;
 }
 
+// Flattened, so that gather_near is inlined whatever GCC would choose: a variant of it with one
+// more branch became a call (its index vector then went through memory), and the
+// single-texture square took 5.7 ms against 3.6 at best.
 template <AxisMode MS, AxisMode MT, bool Linear>
-void sample_plain_2d(const Texture& tex, const PlainLookup& l) {
+[[gnu::flatten]] void sample_plain_2d(const Texture& tex, const PlainLookup& l) {
     using F = LanesOf<kPlainLanes>::Floats;
     using I = LanesOf<kPlainLanes>::Ints;
     const I width = I{} + tex.width, height = I{} + tex.height;
