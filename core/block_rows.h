@@ -107,6 +107,13 @@ inline void write_block_rows(Framebuffer& fb, int bx, int by, const lanes16::Flo
     }
 }
 
+// The block at (bx, by), which lies inside the image, filled with one colour: `row` is four
+// pixels of it (write_block_rows).
+inline void fill_block_rows(Framebuffer& fb, int bx, int by, const lanes16::Floats& row, RowStores stores) {
+    const lanes16::Floats rows[kBlock] = {row, row, row, row};
+    write_block_rows(fb, bx, by, rows, stores);
+}
+
 // A whole block's undefined cases into `fb`, which holds them; the block, top-left pixel (bx, by),
 // lies inside the image.
 inline void store_undefined(Framebuffer& fb, int bx, int by, const ColorBatch& out) {

@@ -396,10 +396,7 @@ private:
         const int x = block_x(block), y = block_y(block);
         const int n = std::min(kBlock, fb_.width - x);
         const bool whole = n == kBlock && y >= 0 && y + kBlock <= fb_.height;
-        if (whole) {
-            const lanes16::Floats rows[kBlock] = {clear_row_, clear_row_, clear_row_, clear_row_};
-            write_block_rows(fb_, x, y, rows, stores);
-        }
+        if (whole) fill_block_rows(fb_, x, y, clear_row_, stores);
         for (int r = 0; r < kBlock; ++r) {
             if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
             if (!whole) std::memcpy(fb_.pixel(x, y + r), &clear_row_, 4 * std::size_t(n) * sizeof(float));

@@ -211,8 +211,7 @@ private:
         if (lanes == kAllLanes) {
             // A whole block (it lies inside the image): four rows, streamed, as every whole block
             // (a ray caster writes each pixel once a frame).
-            const lanes16::Floats rows[kBlock] = {clear_row_, clear_row_, clear_row_, clear_row_};
-            write_block_rows(fb_, bx, by, rows, RowStores::Streamed);
+            fill_block_rows(fb_, bx, by, clear_row_, RowStores::Streamed);
             if (!fb_.undefined.empty()) {
                 for (int r = 0; r < kBlock; ++r) std::fill_n(undefined_at(bx, by + r), kBlock, std::uint8_t(0));
             }
