@@ -109,9 +109,12 @@ public:
     friend Lanes select(const Mask& m, const Lanes& a, const Lanes& b) { return Lanes(simd::select(m.bits, a.v, b.v)); }
     friend Mask isnan(const Lanes& a) { return a != a; }
     friend Mask isinf(const Lanes& a) { return abs(a) == Lanes(std::numeric_limits<T>::infinity()); }
-    // GLSL min/max as llvmpipe evaluates them: a NaN operand loses to the other one.
-    friend Lanes min(const Lanes& a, const Lanes& b) { return select(isnan(b) || a < b, a, b); }
-    friend Lanes max(const Lanes& a, const Lanes& b) { return select(isnan(b) || a > b, a, b); }
+    // GLSL min/max as llvmpipe evaluates them: a NaN operand loses to the other one, i.e.
+    // select(isnan(b) || a < b, a, b). minps gives a < b ? a : b, so only a NaN b needs the
+    // select, which a constant b (max(x, 0.0)) leaves out: one instruction where a compare, a
+    // second one on b and a blend were.
+    friend Lanes min(const Lanes& a, const Lanes& b) { return select(isnan(b), a, Lanes(simd::min_or_second(a.v, b.v))); }
+    friend Lanes max(const Lanes& a, const Lanes& b) { return select(isnan(b), a, Lanes(simd::max_or_second(a.v, b.v))); }
 
     friend Lanes floor(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Floor>(a.v)); }
     friend Lanes ceil(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Ceil>(a.v)); }

@@ -1,6 +1,9 @@
 // Every GLSL built-in, on every number type, against GLM's scalar implementation lane by lane.
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cstdint>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -171,6 +174,42 @@ TEMPLATE_TEST_CASE("NaN and infinity follow llvmpipe: min and max return the non
     CHECK(std::isnan(value_at(F(1.0f) + nan, 0)));  // arithmetic propagates NaN
     CHECK(value_at(step(F(0.0f), inf), 0) == 1.0);
     CHECK(value_at(fract(F(-0.25f)), 0) == 0.75);
+}
+
+// Lanes' min and max are minps/maxps with a NaN b's lanes taking a (number/lanes.h): the same
+// bits as the rule they stand for, select(isnan(b) || a < b, a, b), for every pair of special
+// and ordinary values, signed zeros included (equal, they give b as the rule does), on each
+// register width the lanes come in.
+TEMPLATE_TEST_CASE("min and max give the bits of select(isnan(b) || a < b, a, b) on every lane",
+                   "[builtins][nan]", (Pixels<float, 4>), (Pixels<float, 8>), (Pixels<float, 16>), (Pixels<float, 32>),
+                   (Pixels<double, 8>), (Pixels<double, 16>)) {
+    using F = TestType;
+    using T = typename F::value_type;
+    const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+    const T values[] = {T(0), -T(0), T(1), T(-1), T(0.5), inf, -inf, nan, -nan, std::numeric_limits<T>::denorm_min(),
+                        std::numeric_limits<T>::max(), T(-3.25)};
+    constexpr int kValues = int(std::size(values));
+    const auto bits = [](T x) {
+        if constexpr (sizeof(T) == 4) return std::uint64_t(std::bit_cast<std::uint32_t>(x));
+        else return std::bit_cast<std::uint64_t>(x);
+    };
+    // Every (a, b) pair, F::size of them at a time.
+    for (int first = 0; first < kValues * kValues; first += F::size) {
+        T a[F::size], b[F::size];
+        for (int i = 0; i < F::size; ++i) {
+            const int pair = (first + i) % (kValues * kValues);
+            a[i] = values[pair / kValues];
+            b[i] = values[pair % kValues];
+        }
+        const F lo = min(F::load(a), F::load(b)), hi = max(F::load(a), F::load(b));
+        for (int i = 0; i < F::size; ++i) {
+            const bool b_nan = std::isnan(b[i]);
+            const T want_lo = b_nan || a[i] < b[i] ? a[i] : b[i], want_hi = b_nan || a[i] > b[i] ? a[i] : b[i];
+            INFO("a = " << a[i] << ", b = " << b[i]);
+            CHECK(bits(lo[i]) == bits(want_lo));
+            CHECK(bits(hi[i]) == bits(want_hi));
+        }
+    }
 }
 
 TEMPLATE_TEST_CASE("smoothstep with equal edges is x > edge, as llvmpipe runs it", "[builtins][nan]", float, double,
