@@ -35,11 +35,25 @@ public:
     // Plane p at the lanes' pixels (x, y), each lane as PlaneEquation::at (or at_fused).
     template <bool Fused>
     static lanes16::Floats at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
+        return at_row<Fused>(p.dady, at_column<Fused>(p, x), y);
+    }
+    // The same in two steps, as both forms add x's term first: x's term (a0 + dadx x, fused
+    // fma(dadx, x, a0)), which a column of pixels shares, then y's.
+    template <bool Fused>
+    static lanes16::Floats at_column(const PlaneEquation& p, const lanes16::Floats& x) {
         using lanes16::broadcast;
         if constexpr (Fused) {
-            return lanes16::fma(broadcast(p.dady), y, lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0)));
+            return lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0));
         } else {
-            return (p.a0 + p.dadx * x) + p.dady * y;
+            return p.a0 + p.dadx * x;
+        }
+    }
+    template <bool Fused>
+    static lanes16::Floats at_row(float dady, const lanes16::Floats& column, const lanes16::Floats& y) {
+        if constexpr (Fused) {
+            return lanes16::fma(lanes16::broadcast(dady), y, column);
+        } else {
+            return column + dady * y;
         }
     }
 
@@ -84,6 +98,41 @@ public:
             }
         }
     }
+
+    // Whether a batch's inputs are only varyings, none flat, of an affine triangle: each the
+    // plane's value times the one reciprocal (no gl_FragCoord, no depth, no analytic
+    // derivatives). ColumnVaryings fills such inputs; `count` varyings of them.
+    bool only_smooth_varyings() const { return !frag_coord_ && !depth_ && !analytic_ && affine_ && flat_ == 0; }
+    int count() const { return count_; }
+
+    // fill for the blocks of a tile whose inputs are only_smooth_varyings(), Count of them: each
+    // varying's x term at the tile's Columns columns of blocks computed once, a block's inputs
+    // are then one step a varying (y's term) and the reciprocal's product, with the varyings'
+    // count known to the compiler. The same numbers as fill: each lane's at<Fused> times the
+    // reciprocal. (Through fill, with its tests and its loop over the varyings, the simplex
+    // square's inputs took about 6% of its time.)
+    template <bool Fused, int Count, int Columns>
+    class ColumnVaryings {
+    public:
+        // `lanes_x(i)`: the lanes' x in column i.
+        template <class LanesX>
+        ColumnVaryings(const FragmentInputs& in, const LanesX& lanes_x) : rcp_(lanes16::broadcast(in.affine_rcp_)) {
+            for (int v = 0; v < Count; ++v) dady_[v] = in.varyings_[std::size_t(v)].dady;
+            for (int i = 0; i < Columns; ++i) {
+                const lanes16::Floats x = lanes_x(i);
+                for (int v = 0; v < Count; ++v) column_[i][v] = at_column<Fused>(in.varyings_[std::size_t(v)], x);
+            }
+        }
+        // The inputs of the block in column i whose lanes' y is y.
+        [[gnu::always_inline]] void fill(FragmentBatch& batch, int i, const lanes16::Floats& y) const {
+            for (int v = 0; v < Count; ++v) lanes16::store(batch.varying[v], at_row<Fused>(dady_[v], column_[i][v], y) * rcp_);
+        }
+
+    private:
+        lanes16::Floats column_[Columns][Count];
+        lanes16::Floats rcp_;
+        float dady_[Count];
+    };
 
 private:
     PlaneEquation z_, inv_w_;

@@ -232,17 +232,44 @@ private:
     // block pair: no coverage to test, no early depth (the caller checks that every fragment
     // passes), the depths written where the frame has a depth buffer. The loop is the same
     // work as shade_block's, with the per-draw choices inside interpolate made once per tile
-    // rather than per block (about a tenth of the simplex square).
+    // rather than per block (about a tenth of the simplex square), and for inputs that are
+    // only a few smooth varyings (FragmentInputs::ColumnVaryings) none made per block at all.
     template <bool Fused>
     void shade_tile(int x0, int y0) {
-        static_assert(kTileSize % (2 * kBlock) == 0);
-        const Program& program = *draw_->call->program;
         const FragmentInputs inputs = inputs_;  // fragment_inputs.h: why a copy
+        if (inputs.only_smooth_varyings()) {
+            switch (inputs.count()) {
+                case 1: return shade_tile_varyings<Fused, 1>(inputs, x0, y0);
+                case 2: return shade_tile_varyings<Fused, 2>(inputs, x0, y0);
+                case 3: return shade_tile_varyings<Fused, 3>(inputs, x0, y0);
+                case 4: return shade_tile_varyings<Fused, 4>(inputs, x0, y0);
+                default: break;
+            }
+        }
+        shade_tile_with(x0, y0, [&](FragmentBatch& batch, int column, const lanes16::Floats& y) {
+            inputs.fill<Fused>(batch, lanes_x(x0 + kBlock * column), y);
+        });
+    }
+    template <bool Fused, int Count>
+    void shade_tile_varyings(const FragmentInputs& inputs, int x0, int y0) {
+        const FragmentInputs::ColumnVaryings<Fused, Count, kTileColumns> columns(
+            inputs, [&](int column) { return lanes_x(x0 + kBlock * column); });
+        shade_tile_with(x0, y0, [&](FragmentBatch& batch, int column, const lanes16::Floats& y) {
+            columns.fill(batch, column, y);
+        });
+    }
+    // The tile's loop; fill(batch, column, y) writes the inputs of the block in that column of
+    // blocks whose lanes' y is y.
+    template <class Fill>
+    [[gnu::always_inline]] void shade_tile_with(int x0, int y0, const Fill& fill) {
+        static_assert(kTileColumns % 2 == 0);
+        const Program& program = *draw_->call->program;
         for (int by = y0; by < y0 + kTileSize; by += kBlock) {
             const lanes16::Floats y = lanes_y(by);
-            for (int bx = x0; bx < x0 + kTileSize; bx += 2 * kBlock) {
-                inputs.fill<Fused>(in_[0], lanes_x(bx), y);
-                inputs.fill<Fused>(in_[1], lanes_x(bx + kBlock), y);
+            for (int column = 0; column < kTileColumns; column += 2) {
+                const int bx = x0 + kBlock * column;
+                fill(in_[0], column, y);
+                fill(in_[1], column + 1, y);
                 program.shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
                 tile_block(0, bx, by);
                 tile_block(1, bx + kBlock, by);
@@ -418,6 +445,7 @@ private:
 
     static constexpr int kTilePixels = kTileSize * kTileSize;
     static constexpr int kTileBlocks = kTilePixels / kBatchLanes;
+    static constexpr int kTileColumns = kTileSize / kBlock;  // columns of blocks
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
     lanes16::Floats clear_row_;  // four pixels of the clear colour

@@ -13,6 +13,7 @@
 #include "core/block_rows.h"
 #include "core/lanes16.h"
 #include "core/tile_grid.h"
+#include "raster/fragment_inputs.h"
 #include "scenes/gltf.h"
 #include "render/scene_render.h"
 #include "tests/raster/test_program.h"
@@ -42,6 +43,41 @@ struct UndeclaredSquareY : SquareY {
     static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true}, {}, {}};
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
+
+// Writes N smooth varyings (N = 1 to 5; the fifth in place of the third), each a different
+// function of the vertex: the inputs of whole tiles (FragmentInputs::ColumnVaryings for one to
+// four of them, fill for five) against the general path's.
+template <int N>
+struct SmoothVaryings {
+    static constexpr ShaderInfo info{"test_smooth_varyings", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    struct VertexStage {
+        template <class T>
+        struct Varyings {
+            T a, b, c, d, e;
+            auto fields() {
+                if constexpr (N == 1) return std::tie(a);
+                else if constexpr (N == 2) return std::tie(a, b);
+                else if constexpr (N == 3) return std::tie(a, b, c);
+                else if constexpr (N == 4) return std::tie(a, b, c, d);
+                else return std::tie(a, b, c, d, e);
+            }
+        };
+        static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
+            const float x = in.position.x, y = in.position.y;
+            out.a = 1.3f * x + 0.2f * y + 5.0f;
+            if constexpr (N > 1) out.b = 0.7f * y - 0.4f * x;
+            if constexpr (N > 2) out.c = 0.01f * x * y + 0.125f;
+            if constexpr (N > 3) out.d = 100.0f + 3.0f * y;
+            if constexpr (N > 4) out.e = 1.0f / (1.0f + 0.001f * x * x);
+            out.gl_Position = transform_point(u.model_view_projection, in.position);
+        }
+    };
+    template <class F>
+    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
+        const F zero(0.0f);
+        return vec4<F>(in.a, N > 1 ? in.b : zero, N > 4 ? in.e : N > 2 ? in.c : zero, N > 3 ? in.d : zero);
+    }
+};
 
 // Window-space triangles (x, y in pixels, y up; z in [-1, 1]) drawn with one program.
 Framebuffer draw(int w, int h, const std::vector<glm::vec3>& corners, const Program& program,
@@ -232,6 +268,64 @@ TEST_CASE("perspective-correct varyings equal the analytic value at pixel centre
         }
     }
     CHECK(checked > W * H / 3);
+}
+
+TEST_CASE("a plane at sixteen lanes is PlaneEquation's own value on each, fused or not, in one step or two",
+          "[raster][interpolation]") {
+    std::mt19937 rng(48);
+    std::uniform_real_distribution<float> coefficient(-1000.0f, 1000.0f), position(0.0f, 4096.0f);
+    for (int trial = 0; trial < 500; ++trial) {
+        PlaneEquation p;
+        p.a0 = coefficient(rng), p.dadx = coefficient(rng) * 1e-3f, p.dady = coefficient(rng) * 1e-2f;
+        lanes16::Floats x, y;
+        for (int i = 0; i < kBatchLanes; ++i) x[i] = std::floor(position(rng)) + 0.5f, y[i] = std::floor(position(rng)) + 0.5f;
+        const lanes16::Floats fused = FragmentInputs::at<true>(p, x, y), separate = FragmentInputs::at<false>(p, x, y);
+        const lanes16::Floats fused2 = FragmentInputs::at_row<true>(p.dady, FragmentInputs::at_column<true>(p, x), y);
+        const lanes16::Floats separate2 = FragmentInputs::at_row<false>(p.dady, FragmentInputs::at_column<false>(p, x), y);
+        for (int i = 0; i < kBatchLanes; ++i) {
+            CHECK(std::bit_cast<std::uint32_t>(fused[i]) == std::bit_cast<std::uint32_t>(p.at_fused(x[i], y[i])));
+            CHECK(std::bit_cast<std::uint32_t>(separate[i]) == std::bit_cast<std::uint32_t>(p.at(x[i], y[i])));
+            CHECK(std::bit_cast<std::uint32_t>(fused2[i]) == std::bit_cast<std::uint32_t>(fused[i]));
+            CHECK(std::bit_cast<std::uint32_t>(separate2[i]) == std::bit_cast<std::uint32_t>(separate[i]));
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE_SIG("whole tiles get the same varyings as the general path, bit for bit, whatever their count",
+                       "[raster][interpolation]", ((int N), N), 1, 2, 3, 4, 5) {
+    const ProgramOf<SmoothVaryings<N>> program;
+    // 200 x 150: whole 64 x 64 tiles and partial ones; two triangles over it all.
+    constexpr int W = 200, H = 150;
+    const std::vector<std::uint32_t> idx = {0, 1, 2, 0, 2, 3};
+    const bool affine = GENERATE(true, false);
+    const bool fused = GENERATE(true, false);
+    DrawCall d;
+    std::vector<VertexIn> verts;
+    if (affine) {  // window coordinates: w is 1 everywhere, the tiles' column path
+        verts = {{{-3, -2, 0}, {}}, {{W + 5.0f, -2, 0}, {}}, {{W + 5.0f, H + 4.0f, 0}, {}}, {{-3, H + 4.0f, 0}, {}}};
+        d.uniforms.model_view_projection = window_to_clip(W, H);
+    } else {  // a plane in perspective: the tiles' general fill
+        verts = {{{-6, -1, 0}, {}}, {{6, -1, 0}, {}}, {{6, 9, 0}, {}}, {{-6, 9, 0}, {}}};
+        d.uniforms.model_view_projection = glm::perspective(glm::radians(60.0f), float(W) / H, 0.5f, 50.0f) *
+                                           glm::lookAt(glm::vec3(0, -2, 1.0f), glm::vec3(0, 3, 0), glm::vec3(0, 0, 1));
+    }
+    d.vertices = verts;
+    d.indices = idx;
+    d.program = &program;
+    RasterOptions options;
+    options.fused_interpolation = fused;
+    RenderStats stats;
+    const Framebuffer tiles = rasterize(W, H, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), options, &stats);
+    options.force_general_path = true;
+    const Framebuffer general = rasterize(W, H, glm::vec4(0.0f), std::span<const DrawCall>(&d, 1), options);
+    INFO("varyings " << N << (affine ? ", affine" : ", perspective") << (fused ? ", fused" : ", separate"));
+    REQUIRE(tiles.rgba.size() == general.rgba.size());
+    CHECK(std::memcmp(tiles.rgba.data(), general.rgba.data(), tiles.rgba.size() * sizeof(float)) == 0);
+    // The varyings are not all alike (a shader reading one twice would pass the comparison).
+    const float* p = tiles.pixel(100, 75);
+    CHECK(p[0] != 0.0f);
+    if (N > 1) CHECK(p[1] != p[0]);
+    if (N > 3) CHECK(p[3] != p[2]);
 }
 
 TEST_CASE("flat varyings take the provoking (last) vertex's value over the whole triangle", "[raster][interpolation]") {
