@@ -113,8 +113,8 @@ public:
     // select(isnan(b) || a < b, a, b). minps gives a < b ? a : b, so only a NaN b needs the
     // select, which a constant b (max(x, 0.0)) leaves out: one instruction where a compare, a
     // second one on b and a blend were.
-    friend Lanes min(const Lanes& a, const Lanes& b) { return select(isnan(b), a, Lanes(simd::min_or_second(a.v, b.v))); }
-    friend Lanes max(const Lanes& a, const Lanes& b) { return select(isnan(b), a, Lanes(simd::max_or_second(a.v, b.v))); }
+    friend Lanes min(const Lanes& a, const Lanes& b) { return select(isnan(b), a, Lanes(simd::extremum_or_second<simd::Extremum::Min>(a.v, b.v))); }
+    friend Lanes max(const Lanes& a, const Lanes& b) { return select(isnan(b), a, Lanes(simd::extremum_or_second<simd::Extremum::Max>(a.v, b.v))); }
 
     friend Lanes floor(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Floor>(a.v)); }
     friend Lanes ceil(const Lanes& a) { return Lanes(simd::round<simd::Rounding::Ceil>(a.v)); }

@@ -146,55 +146,39 @@ template <class V>
     return per_element(x, [](auto e) { return std::sqrt(e); });
 }
 
-// a < b ? a : b and a > b ? a : b, element by element: b where the two are unordered (a NaN),
-// and b where they are equal (+0 and -0 too). Exactly minps/maxps (and their pd forms), which
-// GCC makes of the plain ternary, but not of one whose mask another test joins (GLSL's min
+// a < b ? a : b (Min) or a > b ? a : b (Max), element by element: b where the two are unordered
+// (a NaN), and b where they are equal (+0 and -0 too). Exactly minps/maxps (and their pd forms),
+// which GCC makes of the plain ternary, but not of one whose mask another test joins (GLSL's min
 // ignores a NaN b) or whose b is a constant: there it kept a compare and a blend.
-template <class V>
-[[gnu::always_inline]] inline V min_or_second(const V& a, const V& b) {
+enum class Extremum { Min, Max };
+
+template <Extremum E, class V>
+[[gnu::always_inline]] inline V extremum_or_second(const V& a, const V& b) {
     using T [[maybe_unused]] = element_t<V>;
+    constexpr bool kMin [[maybe_unused]] = E == Extremum::Min;
 #if defined(__AVX512F__)
     if constexpr (sizeof(V) == 64) {
-        if constexpr (std::is_same_v<T, float>) return by_register<__m512>(a, b, [](__m512 x, __m512 y) { return _mm512_min_ps(x, y); });
-        else return by_register<__m512d>(a, b, [](__m512d x, __m512d y) { return _mm512_min_pd(x, y); });
+        if constexpr (std::is_same_v<T, float>) return by_register<__m512>(a, b, [](__m512 x, __m512 y) { return kMin ? _mm512_min_ps(x, y) : _mm512_max_ps(x, y); });
+        else return by_register<__m512d>(a, b, [](__m512d x, __m512d y) { return kMin ? _mm512_min_pd(x, y) : _mm512_max_pd(x, y); });
     }
 #endif
 #if defined(__AVX__)
     if constexpr (sizeof(V) == 32) {
-        if constexpr (std::is_same_v<T, float>) return by_register<__m256>(a, b, [](__m256 x, __m256 y) { return _mm256_min_ps(x, y); });
-        else return by_register<__m256d>(a, b, [](__m256d x, __m256d y) { return _mm256_min_pd(x, y); });
+        if constexpr (std::is_same_v<T, float>) return by_register<__m256>(a, b, [](__m256 x, __m256 y) { return kMin ? _mm256_min_ps(x, y) : _mm256_max_ps(x, y); });
+        else return by_register<__m256d>(a, b, [](__m256d x, __m256d y) { return kMin ? _mm256_min_pd(x, y) : _mm256_max_pd(x, y); });
     }
 #endif
 #if defined(__SSE2__)
     if constexpr (sizeof(V) == 16) {
-        if constexpr (std::is_same_v<T, float>) return by_register<__m128>(a, b, [](__m128 x, __m128 y) { return _mm_min_ps(x, y); });
-        else return by_register<__m128d>(a, b, [](__m128d x, __m128d y) { return _mm_min_pd(x, y); });
+        if constexpr (std::is_same_v<T, float>) return by_register<__m128>(a, b, [](__m128 x, __m128 y) { return kMin ? _mm_min_ps(x, y) : _mm_max_ps(x, y); });
+        else return by_register<__m128d>(a, b, [](__m128d x, __m128d y) { return kMin ? _mm_min_pd(x, y) : _mm_max_pd(x, y); });
     }
 #endif
-    return a < b ? a : b;
-}
-template <class V>
-[[gnu::always_inline]] inline V max_or_second(const V& a, const V& b) {
-    using T [[maybe_unused]] = element_t<V>;
-#if defined(__AVX512F__)
-    if constexpr (sizeof(V) == 64) {
-        if constexpr (std::is_same_v<T, float>) return by_register<__m512>(a, b, [](__m512 x, __m512 y) { return _mm512_max_ps(x, y); });
-        else return by_register<__m512d>(a, b, [](__m512d x, __m512d y) { return _mm512_max_pd(x, y); });
+    if constexpr (kMin) {
+        return a < b ? a : b;
+    } else {
+        return a > b ? a : b;
     }
-#endif
-#if defined(__AVX__)
-    if constexpr (sizeof(V) == 32) {
-        if constexpr (std::is_same_v<T, float>) return by_register<__m256>(a, b, [](__m256 x, __m256 y) { return _mm256_max_ps(x, y); });
-        else return by_register<__m256d>(a, b, [](__m256d x, __m256d y) { return _mm256_max_pd(x, y); });
-    }
-#endif
-#if defined(__SSE2__)
-    if constexpr (sizeof(V) == 16) {
-        if constexpr (std::is_same_v<T, float>) return by_register<__m128>(a, b, [](__m128 x, __m128 y) { return _mm_max_ps(x, y); });
-        else return by_register<__m128d>(a, b, [](__m128d x, __m128d y) { return _mm_max_pd(x, y); });
-    }
-#endif
-    return a > b ? a : b;
 }
 
 // a * b + c for operands whose product a * b is representable: one rounding (FMA) or two then

@@ -143,14 +143,10 @@ template <class T, int N>
     return Wide<T, N>::map([](const auto& k, const auto& x, const auto& y) QS_ALWAYS_INLINE { return k ? x : y; }, m, a, b);
 }
 
-// min_or_second and max_or_second (simd_vector.h), part by part.
-template <class T, int N>
-[[gnu::always_inline]] inline Wide<T, N> min_or_second(const Wide<T, N>& a, const Wide<T, N>& b) {
-    return Wide<T, N>::map([](const auto& x, const auto& y) QS_ALWAYS_INLINE { return simd::min_or_second(x, y); }, a, b);
-}
-template <class T, int N>
-[[gnu::always_inline]] inline Wide<T, N> max_or_second(const Wide<T, N>& a, const Wide<T, N>& b) {
-    return Wide<T, N>::map([](const auto& x, const auto& y) QS_ALWAYS_INLINE { return simd::max_or_second(x, y); }, a, b);
+// extremum_or_second (simd_vector.h), part by part.
+template <Extremum E, class T, int N>
+[[gnu::always_inline]] inline Wide<T, N> extremum_or_second(const Wide<T, N>& a, const Wide<T, N>& b) {
+    return Wide<T, N>::map([](const auto& x, const auto& y) QS_ALWAYS_INLINE { return simd::extremum_or_second<E>(x, y); }, a, b);
 }
 
 // The same lanes' bits as another type of the same width (float <-> int32, int32 <-> uint32).
