@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <utility>
 #include <string>
 
@@ -915,9 +916,10 @@ template <AxisMode M, class F>
 }
 
 #if defined(__AVX512F__) && defined(__AVX512BW__)
-// Sixteen lanes, a 4x4 block of pixels (four quads, core/block_layout.h): windows of 16 texels,
-// one per texel row the lanes read (a magnified texture's block reads one or two), each lane
-// permuted from the window that holds its texel. The first window starts at the lesser index of
+// Sixteen lanes, a 4x4 block of pixels (four quads, core/block_layout.h), where the TexelWindow
+// below does not hold their texels (a minified or wrapped texture, lanes in another order):
+// windows of 16 texels, one per texel row the lanes read, each lane permuted from the window
+// that holds its texel. The first window starts at the lesser index of
 // lane 8, the block's lower left pixel in GL's window, and lane 0, the first of a row of pixels
 // laid out in order: on a texture mapped without a flip, the least index either way. Each next
 // window starts at the first lane still left; lanes that four windows do not hold are gathered.
@@ -937,6 +939,57 @@ LanesOf<16>::Uints gather_near(const std::uint32_t* texels, std::size_t count, c
     return std::bit_cast<LanesOf<16>::Uints>(_mm512_mask_i32gather_epi32(texel, left, at, texels, 4));
 }
 
+// Four texel rows of eight texels from (x0, y0), in two registers: what a 4x4 block reads where
+// the texture is magnified (at 1x to 4x its 16 pixels reach two to four rows and columns, their
+// bilinear neighbours one more each). Each lane's texel is one two-source permute (vpermt2d) by
+// its offset in the window: straight code in place of gather_near's chain of windows, whose
+// every step waits on the one before (single texture's square 15% faster). Opened at the least
+// column and row the block's lanes read, moved back from the texture's far edges so that its
+// loads stay inside level 0 (every index is in [0, size) after wrap or clamp).
+class TexelWindow {
+public:
+    using Uints = LanesOf<16>::Uints;
+    static constexpr int kColumns = 8, kRows = 4;
+    static bool fits(const Texture& tex) { return tex.width >= kColumns && tex.height >= kRows; }
+
+    // The least column and row a register's lanes read are at its block's corners, where its
+    // texels are a monotonic function of its pixels' position (an affine or projective map,
+    // clamped): lanes 2, 7, 8 and 13 of core/block_layout.h's 4x4 block. Lanes in any other
+    // order may find the window short and take gather_near.
+    TexelWindow(const std::uint32_t* texels, int width, int height, const __m512i& x, const __m512i& y) {
+        // x's corners in lanes 0-3, y's in 4-7; the least of each in lanes 0 and 4.
+        const __m512i corners = _mm512_setr_epi32(2, 7, 8, 13, 18, 23, 24, 29, 0, 0, 0, 0, 0, 0, 0, 0);
+        __m256i m = _mm512_castsi512_si256(_mm512_permutex2var_epi32(x, corners, y));
+        m = _mm256_min_epi32(m, _mm256_shuffle_epi32(m, _MM_PERM_BADC));
+        m = _mm256_min_epi32(m, _mm256_shuffle_epi32(m, _MM_PERM_CDAB));
+        const int x0 = std::min(_mm256_cvtsi256_si32(m), width - kColumns);
+        const int y0 = std::min(_mm_cvtsi128_si32(_mm256_extracti128_si256(m, 1)), height - kRows);
+        const auto row = [&](int r) {
+            return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + std::ptrdiff_t(y0 + r) * width + x0));
+        };
+        rows01_ = _mm512_inserti64x4(_mm512_castsi256_si512(row(0)), row(1), 1);
+        rows23_ = _mm512_inserti64x4(_mm512_castsi256_si512(row(2)), row(3), 1);
+        x0_ = _mm512_set1_epi32(x0), y0_ = _mm512_set1_epi32(y0);
+    }
+    // Whether the window holds every texel of the lanes whose columns are x0's or x1's and
+    // rows y0's or y1's (a bilinear lookup's four; a nearest one's, x1 = x0 and y1 = y0).
+    bool holds(const __m512i& x0, const __m512i& y0, const __m512i& x1, const __m512i& y1) const {
+        const __m512i dx = _mm512_or_si512(_mm512_sub_epi32(x0, x0_), _mm512_sub_epi32(x1, x0_));
+        const __m512i dy = _mm512_or_si512(_mm512_sub_epi32(y0, y0_), _mm512_sub_epi32(y1, y0_));
+        const __mmask16 in_columns = _mm512_cmplt_epu32_mask(dx, _mm512_set1_epi32(kColumns));
+        return _mm512_mask_cmplt_epu32_mask(in_columns, dy, _mm512_set1_epi32(kRows)) == 0xffff;
+    }
+    // The texels at (x, y), for lanes the window holds.
+    Uints texels(const __m512i& x, const __m512i& y) const {
+        const __m512i offset = _mm512_add_epi32(_mm512_slli_epi32(_mm512_sub_epi32(y, y0_), 3), _mm512_sub_epi32(x, x0_));
+        return std::bit_cast<Uints>(_mm512_permutex2var_epi32(rows01_, offset, rows23_));
+    }
+
+private:
+    __m512i rows01_, rows23_;  // rows y0, y0 + 1 | y0 + 2, y0 + 3, each from column x0
+    __m512i x0_, y0_;
+};
+
 // The plain lookup's register: one AVX-512 register of sixteen lanes where the CPU has one
 // (docs/results.md, stop 44: a bilinear lookup in about half the time of two 8-lane registers).
 constexpr int kPlainLanes = 16;
@@ -952,6 +1005,33 @@ I lane_indices() {
     return r;
 }
 
+// A register's filtered texels as the lookup's four channels.
+template <class U>
+[[gnu::always_inline]] inline void store_texels(const PlainLookup& l, int base, int n, const PairsOf<U>& q) {
+    // Unrolled, the texels stay in registers (as a loop, GCC picked each channel's half
+    // through memory: the halftone's frame took 7% longer).
+#pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
+}
+
+// llvmpipe's 8-bit filter of the texels texel(x, y) returns: the nearest, or the bilinear lerps
+// of the four (x.i0 or x.i1, y.i0 or y.i1) by the weights x.w8 and y.w8, skipping a column or
+// row of texels that no lane weighs (the lerp by 0 returns its first operand).
+template <bool Linear, class F, class Texel>
+[[gnu::always_inline]] inline auto filter(const AxisLanes<F>& x, const AxisLanes<F>& y, Texel texel) {
+    auto q = split(texel(x.i0, y.i0));
+    if constexpr (Linear) {
+        const bool along_x = any(x.w8), along_y = any(y.w8);
+        if (along_x) q = lerp8(x.w8, q, split(texel(x.i1, y.i0)));
+        if (along_y) {
+            auto q1 = split(texel(x.i0, y.i1));
+            if (along_x) q1 = lerp8(x.w8, q1, split(texel(x.i1, y.i1)));
+            q = lerp8(y.w8, q, q1);
+        }
+    }
+    return q;
+}
+
 // Flattened, so that gather_near is inlined whatever GCC would choose: a variant of it with one
 // more branch became a call (its index vector then went through memory), and the
 // single-texture square took 5.7 ms against 3.6 at best.
@@ -962,30 +1042,30 @@ template <AxisMode MS, AxisMode MT, bool Linear>
     const I width = I{} + tex.width, height = I{} + tex.height;
     const std::uint32_t* t = tex.texels.data();
     const std::size_t count = tex.texels.size();
+#if defined(__AVX512F__) && defined(__AVX512BW__)
+    const bool window_fits = TexelWindow::fits(tex);
+#endif
     for (int base = 0; base < l.lanes; base += kPlainLanes) {
         const int n = std::min(l.lanes - base, kPlainLanes);
         const F s = load_lanes<F>(l.s, base, n), tc = load_lanes<F>(l.t, base, n);
-        PairsOf<UintsLike<I>> q;
+        AxisLanes<F> x, y;
         if constexpr (Linear) {
             const I active = lane_indices<I>() < n;
-            const AxisLanes<F> x = plain_linear_axis<MS>(s, width, active), y = plain_linear_axis<MT>(tc, height, active);
-            const I row0 = y.i0 * width;
-            q = split(gather_near(t, count, row0 + x.i0));
-            const bool along_x = any(x.w8), along_y = any(y.w8);
-            if (along_x) q = lerp8(x.w8, q, split(gather_near(t, count, row0 + x.i1)));
-            if (along_y) {
-                const I row1 = y.i1 * width;
-                auto q1 = split(gather_near(t, count, row1 + x.i0));
-                if (along_x) q1 = lerp8(x.w8, q1, split(gather_near(t, count, row1 + x.i1)));
-                q = lerp8(y.w8, q, q1);
-            }
+            x = plain_linear_axis<MS>(s, width, active), y = plain_linear_axis<MT>(tc, height, active);
         } else {
-            q = split(gather_near(t, count, plain_nearest_axis<MT>(tc, height) * width + plain_nearest_axis<MS>(s, width)));
+            x.i0 = plain_nearest_axis<MS>(s, width), y.i0 = plain_nearest_axis<MT>(tc, height);
         }
-        // Unrolled, the texels stay in registers (as a loop, GCC picked each channel's half
-        // through memory: the halftone's frame took 7% longer).
-#pragma GCC unroll 4
-        for (int c = 0; c < 4; ++c) store_lanes(l.rgba[std::size_t(c)], base, n, unorm(channel(q, c)));
+#if defined(__AVX512F__) && defined(__AVX512BW__)
+        if (window_fits && n == kPlainLanes) {
+            const auto v = [](const I& i) { return std::bit_cast<__m512i>(i); };
+            const TexelWindow window(t, tex.width, tex.height, v(x.i0), v(y.i0));
+            if (window.holds(v(x.i0), v(y.i0), v(Linear ? x.i1 : x.i0), v(Linear ? y.i1 : y.i0))) {
+                store_texels(l, base, n, filter<Linear>(x, y, [&](const I& xi, const I& yi) { return window.texels(v(xi), v(yi)); }));
+                continue;
+            }
+        }
+#endif
+        store_texels(l, base, n, filter<Linear>(x, y, [&](const I& xi, const I& yi) { return gather_near(t, count, yi * width + xi); }));
     }
 }
 

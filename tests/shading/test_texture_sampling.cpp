@@ -384,18 +384,20 @@ TEST_CASE("texture lookups: texel centres and magnified ramps equal the oracle",
 
 // Lookups as the renderers make them: two 4x4 blocks of pixels side by side (32 lanes), each
 // laid out as core/block_layout.h lays out a block (four quads of a 2x2 arrangement; y down), or
-// row by row, or with s running backwards, over a texture seen at a fraction of a texel per pixel
-// up to several texels per pixel, anywhere on it and past its ends. The plain lookup reads a
-// block's texels by windows of neighbouring texels, one per texel row, and gathers what they do
-// not hold: each lane the oracle's whichever way it was read.
+// row by row, or with s or t running backwards, over a texture seen at a fraction of a texel per
+// pixel up to several texels per pixel, anywhere on it and past its ends. The plain lookup reads
+// a magnified block's texels from one window of four rows of eight texels opened at the block's
+// corners, else by windows of neighbouring texels, one per texel row, and gathers what they do
+// not hold: each lane the oracle's whichever way it was read. The sizes include the least a
+// window fits in (8x4) and ones just past it, where the window moves back from the far edges.
 TEST_CASE("texture lookups: blocks of pixels magnified and minified equal the oracle", "[textures]") {
     constexpr int kBlockDx[16] = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
     constexpr int kBlockDy[16] = {1, 1, 0, 0, 1, 1, 0, 0, 3, 3, 2, 2, 3, 3, 2, 2};
     std::mt19937 rng(20261129);
     int cases = 0;
-    for_each_plain_sampler(rng, {{256, 256}, {64, 32}, {13, 7}, {1, 1}}, [&](const sampler2D& tex, int w, int h) {
+    for_each_plain_sampler(rng, {{256, 256}, {64, 32}, {13, 7}, {8, 4}, {9, 5}, {1, 1}}, [&](const sampler2D& tex, int w, int h) {
         for (const float texels_per_pixel : {0.25f, 0.5f, 1.0f, 1.5f, 3.0f, 5.0f, 17.0f}) {
-            for (int layout = 0; layout < 3; ++layout) {
+            for (int layout = 0; layout < 4; ++layout) {
                 std::uniform_real_distribution<float> origin(-0.3f, 1.3f);
                 const float x0 = origin(rng), y0 = origin(rng);
                 float s[32], t[32], rgba[4][32];
@@ -404,7 +406,7 @@ TEST_CASE("texture lookups: blocks of pixels magnified and minified equal the or
                     const int dx = layout == 1 ? lane % 4 : kBlockDx[lane], dy = layout == 1 ? lane / 4 : kBlockDy[lane];
                     const float px = float(4 * block + dx) + 0.5f, py = float(3 - dy) + 0.5f;  // GL's y up
                     s[i] = x0 + (layout == 2 ? -px : px) * texels_per_pixel / float(w);
-                    t[i] = y0 + py * texels_per_pixel / float(h);
+                    t[i] = y0 + (layout == 3 ? -py : py) * texels_per_pixel / float(h);
                 }
                 REQUIRE(texture_detail::sample_plain(tex, {32, s, t, {rgba[0], rgba[1], rgba[2], rgba[3]}}));
                 for (std::size_t i = 0; i < 32; ++i) {
@@ -420,7 +422,7 @@ TEST_CASE("texture lookups: blocks of pixels magnified and minified equal the or
             }
         }
     });
-    CHECK(cases == 4 * 8 * 7 * 3);
+    CHECK(cases == 6 * 8 * 7 * 4);
 }
 
 // sample_plain, the entry shaders' plain lookups take (texture.h): any number of lanes in one
