@@ -972,11 +972,11 @@ public:
         rows23_ = _mm512_inserti64x4(_mm512_castsi256_si512(row(2)), row(3), 1);
         x0_ = _mm512_set1_epi32(x0), y0_ = _mm512_set1_epi32(y0);
     }
-    // Whether the window holds every texel of the lanes whose columns are x0's or x1's and
-    // rows y0's or y1's (a bilinear lookup's four; a nearest one's, x1 = x0 and y1 = y0).
-    bool holds(const __m512i& x0, const __m512i& y0, const __m512i& x1, const __m512i& y1) const {
-        const __m512i dx = _mm512_or_si512(_mm512_sub_epi32(x0, x0_), _mm512_sub_epi32(x1, x0_));
-        const __m512i dy = _mm512_or_si512(_mm512_sub_epi32(y0, y0_), _mm512_sub_epi32(y1, y0_));
+    // Whether the window holds every texel of the lanes whose columns are xa's or xb's and
+    // rows ya's or yb's (a bilinear lookup's four; a nearest one's, xb = xa and yb = ya).
+    bool holds(const __m512i& xa, const __m512i& ya, const __m512i& xb, const __m512i& yb) const {
+        const __m512i dx = _mm512_or_si512(_mm512_sub_epi32(xa, x0_), _mm512_sub_epi32(xb, x0_));
+        const __m512i dy = _mm512_or_si512(_mm512_sub_epi32(ya, y0_), _mm512_sub_epi32(yb, y0_));
         const __mmask16 in_columns = _mm512_cmplt_epu32_mask(dx, _mm512_set1_epi32(kColumns));
         return _mm512_mask_cmplt_epu32_mask(in_columns, dy, _mm512_set1_epi32(kRows)) == 0xffff;
     }
