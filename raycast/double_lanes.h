@@ -40,11 +40,6 @@ inline Doubles3 operator*(const Doubles& s, const Doubles3& v) { return {s * v.x
 // glm::dot: the products summed from x to z.
 inline Doubles dot(const Doubles3& a, const Doubles3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// glm::cross, each component's difference in glm's order.
-inline Doubles3 cross(const Doubles3& a, const Doubles3& b) {
-    return {a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y};
-}
-
 // m * vec4(x, y, z, w) as glm computes it, row by row: (m0 x + m1 y) + (m2 z + m3 w). z and w
 // are lanes or one value for all; a product of one value is formed once, as each lane would.
 template <class Z, class W>

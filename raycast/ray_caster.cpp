@@ -34,14 +34,22 @@ namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
-// A triangle's plane as its fragments' intersections use it.
+// A triangle's plane as its fragments' intersections use it. A point P of the plane, rel = P - p0,
+// has barycentric weights b1 = ((rel x e2) . n) / (n . n) and b2 = ((e1 x rel) . n) / (n . n)
+// (signed sub-triangle areas over the whole, e1 and e2 the edges from vertex 0): the same as
+// rel . to_b1 and rel . to_b2 with the vectors below, which leave the per-ray work a dot product
+// each, and no division (sixteen-lane double divisions stalled a third of the fragment set-up).
 struct TrianglePlane {
-    glm::dvec3 p0, e1, e2;  // vertex 0, and the edges from it to vertices 1 and 2
-    glm::dvec3 n;           // e1 x e2
-    double nn;              // n . n
+    glm::dvec3 p0;            // vertex 0
+    glm::dvec3 n;             // e1 x e2
+    glm::dvec3 to_b1, to_b2;  // (e2 x n) / (n . n), (n x e1) / (n . n)
 
-    explicit TrianglePlane(const glm::dvec3& v0, const glm::dvec3& v1, const glm::dvec3& v2)
-        : p0(v0), e1(v1 - v0), e2(v2 - v0), n(glm::cross(e1, e2)), nn(glm::dot(n, n)) {}
+    explicit TrianglePlane(const glm::dvec3& v0, const glm::dvec3& v1, const glm::dvec3& v2) : p0(v0) {
+        const glm::dvec3 e1 = v1 - v0, e2 = v2 - v0;
+        n = glm::cross(e1, e2);
+        const double nn = glm::dot(n, n);
+        to_b1 = glm::cross(e2, n) / nn, to_b2 = glm::cross(n, e1) / nn;
+    }
 };
 
 // One draw's geometry in world space and this frame's vertex stage output.
@@ -346,9 +354,14 @@ private:
             };
             return Doubles3{component(0), component(1), component(2)};
         };
-        const Doubles3 p0 = plane(&TrianglePlane::p0), e1 = plane(&TrianglePlane::e1), e2 = plane(&TrianglePlane::e2),
-                       n = plane(&TrianglePlane::n);
-        const Doubles nn = groups.spread_doubles([&](int g) { return m.planes[groups.primitive[g]].nn; });
+        // The ray parameter first: its division's latency is hidden behind the spreading below.
+        const Doubles3 p0 = plane(&TrianglePlane::p0), n = plane(&TrianglePlane::n);
+        Eye::Rays own;
+        const WindowPoints w = cast ? cast->w : centres(load(at.x), load(at.y));
+        const Eye::Rays& r = cast ? cast->r : (own = eye_.rays(w.x, w.y));
+        const Doubles per_dn = 1.0 / dot(r.direction, n);
+        const Doubles t = dot(p0 - r.origin, n) * per_dn;
+        const Doubles3 to_b1 = plane(&TrianglePlane::to_b1), to_b2 = plane(&TrianglePlane::to_b2);
         // The vertices' attributes, per varying and lane.
         alignas(64) float a[3][kMaxVaryings][kBatchLanes];
         for (int c = 0; c < 3; ++c) {
@@ -358,14 +371,9 @@ private:
                 }));
             }
         }
-        Eye::Rays own;
-        const WindowPoints w = cast ? cast->w : centres(load(at.x), load(at.y));
-        const Eye::Rays& r = cast ? cast->r : (own = eye_.rays(w.x, w.y));
-        const Doubles dn = dot(r.direction, n);
-        const Doubles t = dot(p0 - r.origin, n) / dn;
         const Doubles3 rel = r.origin + t * r.direction - p0;
-        // Barycentric weights of vertices 1 and 2: signed sub-triangle areas over the whole.
-        const Doubles b1 = dot(cross(rel, e2), n) / nn, b2 = dot(cross(e1, rel), n) / nn;
+        // Barycentric weights of vertices 1 and 2 (TrianglePlane).
+        const Doubles b1 = dot(rel, to_b1), b2 = dot(rel, to_b2);
         const Doubles b0 = 1.0 - b1 - b2;
         // gl_FragCoord where the shader reads it (its depth and 1/w cost a projection and two
         // divisions); elsewhere NaN, as the rasterizer leaves it.
@@ -393,8 +401,8 @@ private:
         auto carry = [&](const Doubles3& dorigin, const Doubles3& ddirection, float (&dvarying)[kMaxVaryings][kBatchLanes],
                          float (&dfrag)[2][kBatchLanes]) {
             const Doubles3 moved = dorigin + t * ddirection;
-            const Doubles3 dp = moved - (dot(moved, n) / dn) * r.direction;
-            const Doubles db1 = dot(cross(dp, e2), n) / nn, db2 = dot(cross(e1, dp), n) / nn;
+            const Doubles3 dp = moved - (dot(moved, n) * per_dn) * r.direction;
+            const Doubles db1 = dot(dp, to_b1), db2 = dot(dp, to_b2);
             if (d.frag_coord) {
                 const Doubles4 dclip = transform(eye_.clip_from_world, dp, 0.0);
                 store(dfrag[0], to_float(0.5 * (dclip.z * clip.w - clip.z * dclip.w) / (clip.w * clip.w)));
