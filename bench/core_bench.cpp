@@ -8,9 +8,9 @@
 // Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
 // (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
 // And texture2D's lanes on three samplers (BM_texture2D), for the sampler's own speed. And the
-// Figure 1.1 frame on one thread and on all cores with each backend (BM_frame), so that
-// bench/compare-builds, which runs this program, guards the ray caster and the scene path too,
-// and the serial part of a frame (vertex stage, setup, the depth buffer's proof).
+// Figure 1.1 frame with each backend, on one thread and on all cores, and with Dual2 on one
+// (BM_frame), so that bench/compare-builds, which runs this program, guards the ray caster and the
+// scene path too, and the serial part of a frame (vertex stage, setup, the depth buffer's proof).
 // Usage: quadshade-bench-core [Google Benchmark flags]
 
 #include <benchmark/benchmark.h>
@@ -295,7 +295,7 @@ void BM_raster(benchmark::State& state, const char* shader, int threads) {
 // One frame after another into the same framebuffer, as an animation loop renders them; the ray
 // caster's BVH is built before the timing.
 // A build without Figure 1.1's shaders (QUADSHADE_SHADER_GROUPS) reports the row as skipped.
-void BM_frame(benchmark::State& state, Backend backend, int threads) {
+void BM_frame(benchmark::State& state, Backend backend, int threads, Derivatives derivatives = Derivatives::Fine) {
     std::unique_ptr<SceneRenderer> renderer;
     static Scene scene;
     try {
@@ -303,6 +303,7 @@ void BM_frame(benchmark::State& state, Backend backend, int threads) {
         FrameRequest request;
         request.backend = backend;
         request.shading.threads = threads;
+        request.shading.derivatives = derivatives;
         renderer = std::make_unique<SceneRenderer>(scene, request);
     } catch (const std::exception& e) {
         state.SkipWithError(e.what());
@@ -411,6 +412,11 @@ BENCHMARK_CAPTURE(BM_frame, figure_1_1_raster_all_threads, Backend::Rasterizer, 
 #if defined(QUADSHADE_HAS_RAYCAST)
 BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_1thread, Backend::RayCaster, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_all_threads, Backend::RayCaster, 0)->Unit(benchmark::kMillisecond)->UseRealTime();
+#endif
+// Dual2: the rasterizer's plane derivatives, the ray caster's ray differentials.
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raster_dual2_1thread, Backend::Rasterizer, 1, Derivatives::Analytic)->Unit(benchmark::kMillisecond)->UseRealTime();
+#if defined(QUADSHADE_HAS_RAYCAST)
+BENCHMARK_CAPTURE(BM_frame, figure_1_1_raycast_dual2_1thread, Backend::RayCaster, 1, Derivatives::Analytic)->Unit(benchmark::kMillisecond)->UseRealTime();
 #endif
 
 BENCHMARK_TEMPLATE(BM_texture2D, Pixels<float, 16>, TextureCase::Bilinear)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -9,7 +9,9 @@
 // right after quadshade's frames of the same row; quadshade is compared with the faster width.
 // This host's speed drifts between minutes, so the whole table is measured in rounds: each round
 // times every row (and the Figure 1.1 frame) in turn, each ratio is taken within a round, and a
-// cell is the median over the rounds with their range.
+// cell is the median over the rounds with their range. Within a round it drifts over seconds too,
+// so quadshade's frames are timed both before and after llvmpipe's and pooled: a host that slows
+// or speeds up during the round moves both sides of the ratio alike.
 //
 //   quadshade-bench-throughput [--threads N] [--repeat N] [--rounds N] [--sizes 1024,500] [--shaders a,b]
 //                              [--widths 256,512] [--out DIR]
@@ -95,15 +97,21 @@ Stats stats_of(std::vector<double> ms) {
     return {ms[ms.size() / 2], ms.front(), ms.back()};
 }
 
+// Each frame's time, after a warm-up frame, appended to `ms`.
 template <class F>
-Stats time_frames(int repeat, F&& frame) {
+void time_frames_into(std::vector<double>& ms, int repeat, F&& frame) {
     frame();  // warm-up
-    std::vector<double> ms;
     for (int i = 0; i < repeat; ++i) {
         const auto t0 = Clock::now();
         frame();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
     }
+}
+
+template <class F>
+Stats time_frames(int repeat, F&& frame) {
+    std::vector<double> ms;
+    time_frames_into(ms, repeat, frame);
     return stats_of(ms);
 }
 
@@ -288,12 +296,19 @@ std::string figure_frames(const Options& o) {
     std::vector<std::vector<PeerRun>> peers;  // [round][width]
     for (int round = 0; round < o.rounds; ++round) {
         std::fprintf(stderr, "\rround %d/%d Figure 1.1 ...        ", round + 1, o.rounds);
-        for (Timed& t : timed) {
-            t.ms.push_back(time_frames(o.repeat, [&] { t.renderer->render_into(t.fb, std::nullopt); }).median);
-        }
+        // Every renderer before llvmpipe and again after it, in reverse order: each one's frames
+        // are centred on llvmpipe's.
+        std::vector<std::vector<double>> frames(kModes);
+        auto time_mode = [&](std::size_t i) {
+            Timed& t = timed[i];
+            time_frames_into(frames[i], o.repeat, [&] { t.renderer->render_into(t.fb, std::nullopt); });
+        };
+        for (std::size_t i = 0; i < kModes; ++i) time_mode(i);
         peers.emplace_back();
         for (int width : o.widths) peers.back().push_back(run_peer(o, width, {"--figure"}));
         if (!fastest(peers.back())) ++g_rows_without_peer;
+        for (std::size_t i = kModes; i-- > 0;) time_mode(i);
+        for (std::size_t i = 0; i < kModes; ++i) timed[i].ms.push_back(stats_of(frames[i]).median);
     }
     auto rasterizer_with = [&](qs::Derivatives rule) {
         std::size_t i = 0;
@@ -352,7 +367,6 @@ void measure_round(const Options& o, qs::Scene& scene, RowSeries& s) {
     req.shading.threads = o.threads;
     qs::Framebuffer fb;
     qs::SceneRenderer renderer(scene, req);
-    s.quadshade.push_back(time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); }));
     if (s.needs.empty()) {
         qs::RenderStats frame;
         renderer.render_into(fb, std::nullopt, &frame);
@@ -363,10 +377,20 @@ void measure_round(const Options& o, qs::Scene& scene, RowSeries& s) {
     qs::FrameRequest general_req = req;
     general_req.raster.force_general_path = true;
     qs::SceneRenderer general(scene, general_req);
-    s.general.push_back(time_frames(o.repeat, [&] { general.render_into(fb, std::nullopt); }));
+    // Both before llvmpipe and again after it, in reverse order: each one's frames are centred on
+    // llvmpipe's.
+    std::vector<double> quadshade_ms, general_ms;
+    auto specialised_frame = [&] { renderer.render_into(fb, std::nullopt); };
+    auto general_frame = [&] { general.render_into(fb, std::nullopt); };
+    time_frames_into(quadshade_ms, o.repeat, specialised_frame);
+    time_frames_into(general_ms, o.repeat, general_frame);
     s.peers.emplace_back();
     for (int w : o.widths) s.peers.back().push_back(run_peer(o, w, {"--size", std::to_string(s.size), "--shader", s.row->shader}));
     if (!fastest(s.peers.back())) ++g_rows_without_peer;
+    time_frames_into(general_ms, o.repeat, general_frame);
+    time_frames_into(quadshade_ms, o.repeat, specialised_frame);
+    s.quadshade.push_back(stats_of(quadshade_ms));
+    s.general.push_back(stats_of(general_ms));
 }
 
 int run_throughput(const Options& o) {
@@ -455,10 +479,11 @@ int run_throughput(const Options& o) {
     }
     std::fprintf(stderr, "\r%50s\r", "");
     std::ofstream(out / "throughput.md") << md.str();
-    std::printf("%d threads; each cell the median over %d rounds of each round's median of %d frames (min-max over "
-                "rounds), a round measuring every row in turn; speedups per round against that round's faster "
-                "llvmpipe; float RGBA target; llvmpipe in a child process per vector width\n\n%s",
-                o.threads, o.rounds, o.repeat, md.str().c_str());
+    std::printf("%d threads; each cell the median over %d rounds of each round's median of %d frames (quadshade's "
+                "of %d, half before llvmpipe's and half after) (min-max over rounds), a round measuring every row in turn; "
+                "speedups per round against that round's faster llvmpipe; float RGBA target; llvmpipe in a child "
+                "process per vector width\n\n%s",
+                o.threads, o.rounds, o.repeat, 2 * o.repeat, md.str().c_str());
     std::ofstream(out / "specialisation.md") << special.str();
     std::printf("\nLeaving out what a shader does not need (ms per frame, %d threads, median over rounds): the "
                 "specialised pipeline against the general one (quads with helper lanes, depth buffer)\n\n%s",
@@ -468,7 +493,8 @@ int run_throughput(const Options& o) {
         std::fprintf(stderr, "\r%50s\r", "");
         std::ofstream(out / "figure-1.1-frame.md") << figure;
         std::printf("\nFigure 1.1 at 1264x400, %d threads, median over %d rounds of each round's median of %d frames "
-                    "(min-max over rounds); ratios per round\n\n%s", o.threads, o.rounds, o.repeat, figure.c_str());
+                    "(quadshade's of %d, half before llvmpipe's and half after) (min-max over rounds); ratios per round\n\n%s",
+                    o.threads, o.rounds, o.repeat, 2 * o.repeat, figure.c_str());
     }
     if (g_unreadable_reports > 0 || g_rows_without_peer > 0) {
         std::fprintf(stderr, "quadshade-bench-throughput: %d unreadable llvmpipe reports, %d rounds of a row without "
@@ -569,7 +595,8 @@ int main(int argc, char** argv) {
                  "and the Figure 1.1 frame"};
     app.add_option("--threads", o.threads, "threads for quadshade and llvmpipe (LP_NUM_THREADS)")
         ->check(CLI::Range(1, 256));
-    app.add_option("--repeat", o.repeat, "frames timed per measurement (median, min-max)")->check(CLI::Range(3, 100000));
+    app.add_option("--repeat", o.repeat, "frames timed per measurement (median, min-max); quadshade's twice a round, "
+                                         "before and after llvmpipe's")->check(CLI::Range(3, 100000));
     app.add_option("--sizes", o.sizes, "square sizes of the Table 1.1 plane (--scaling: 1024)")->delimiter(',')->check(CLI::Range(1, 8192));
     app.add_option("--shaders", o.shaders, "these rows only (no Figure 1.1 frame)")->delimiter(',');
     app.add_option("--widths", o.widths, "llvmpipe vector widths (LP_NATIVE_VECTOR_WIDTH), each in a child process")
