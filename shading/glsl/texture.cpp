@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
-#include <limits>
 #include <utility>
 #include <string>
 
