@@ -62,6 +62,14 @@ CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::
 // loaded in order once the command line has parsed.
 void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins);
 
+// --glsl FRAG and --vert VERT: a user's GLSL drawn on every object (render/glsl_shaders.h).
+void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex);
+// Compiles the shaders --glsl and --vert name, if any, and names their program in `shader`
+// (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings.
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, std::string& shader);
+// The warning, once, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's limit.
+void warn_loop_limit(const Program* program);
+
 // --memory-limit's bytes; empty: what the system has available.
 std::uint64_t memory_limit(const std::string& option);
 

@@ -19,6 +19,7 @@
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
+#include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"
 #include "scenes/image_io.h"
@@ -54,7 +55,8 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
 
 struct CheckArgs {
     std::vector<std::string> shaders, rules{"fine"}, plugins;
-    bool all = false;
+    bool all = false, interpret = false;
+    std::string glsl, vertex_glsl;
     std::string scenes, output = "quadshade-check";
     int jobs = 0;
 };
@@ -75,6 +77,9 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
         ->option_text("DIR");
     cmd.add_option("--jobs", a.jobs, "cases checked at once, each a reference process and a render\n(default: one per core)")
         ->check(CLI::Range(1, 1024))->option_text("N");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    cmd.add_flag("--interpret", a.interpret,
+                 "check the shaders' GLSL run by the interpreter (as --glsl runs a\nfile) instead of their translations");
     add_plugin_option(cmd, a.plugins);
 }
 
@@ -220,9 +225,20 @@ int cmd_compare(const CompareArgs& a) {
 }
 
 int cmd_check(const CheckArgs& a) {
-    if (a.all == !a.shaders.empty()) throw UsageError("check: name the shaders to check, or --all (not both)");
     CheckRequest request;
     request.shaders = a.shaders;
+    std::string glsl;
+    if (use_glsl_options(a.glsl, a.vertex_glsl, glsl)) request.shaders.push_back(glsl);
+    if (a.all == !request.shaders.empty()) throw UsageError("check: name the shaders to check, or --all, or --glsl (one of them)");
+    if (a.interpret) {
+        // The GLSL of each shader to check, run by the interpreter, in its translation's place.
+        if (request.shaders.empty()) {
+            for (const Program* p : catalogue()) {
+                if (!std::string_view(p->info().name).ends_with("_probe")) request.shaders.emplace_back(p->info().name);
+            }
+        }
+        for (std::string& name : request.shaders) name = interpreted_twin(name);
+    }
     request.scenes = a.scenes;
     request.output = a.output;
     request.jobs = a.jobs;

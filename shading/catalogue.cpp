@@ -11,6 +11,9 @@ struct Entry {
     const Program* program;
     std::filesystem::path plugin;  // empty: built in
     std::string collection;        // empty: none
+    // A program compiled at run time: owned here, with its stages' GLSL.
+    std::shared_ptr<const Program> owned;
+    std::string vertex_glsl, fragment_glsl;
 };
 
 // Filled by static constructors (the built-in shaders' before main, a plugin's inside dlopen),
@@ -67,7 +70,7 @@ void add(const Program& program, const ShaderAbi& abi, std::string_view collecti
         problems.push_back("shader '" + name + "' is already defined by " + origin_name(entry_of(*taken).plugin));
         return;
     }
-    r.entries.push_back({&program, r.loading, std::string(collection)});
+    r.entries.push_back({&program, r.loading, std::string(collection), nullptr, {}, {}});
     r.programs.push_back(&program);
     ++r.added;
 }
@@ -116,6 +119,24 @@ std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection() {
     std::map<std::string, ProgramList> groups;
     for (const Program* p : catalogue()) groups[collection_of(*p)].push_back(p);
     return {groups.begin(), groups.end()};
+}
+
+const Program& add_compiled_program(std::unique_ptr<Program> program, std::string collection, std::string vertex_glsl,
+                                    std::string fragment_glsl) {
+    Registry& r = registry();
+    const std::string name(program->info().name);
+    if (find_program(name)) throw std::invalid_argument("a shader named '" + name + "' is in the catalogue already");
+    const Program& p = *program;
+    r.entries.push_back({&p, {}, std::move(collection), std::shared_ptr<const Program>(std::move(program)),
+                         std::move(vertex_glsl), std::move(fragment_glsl)});
+    r.programs.push_back(&p);
+    return p;
+}
+
+const std::string* compiled_glsl(const Program& program, bool vertex_stage) {
+    const Entry& e = entry_of(program);
+    if (!e.owned) return nullptr;
+    return vertex_stage ? &e.vertex_glsl : &e.fragment_glsl;
 }
 
 std::filesystem::path glsl_folder(const Program& program) {

@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -42,10 +43,18 @@ std::string collection_of(const Program& program);
 // order.
 std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection();
 
+// A shader compiled while quadshade runs (a user's GLSL, interpreter/glsl_program.h): the
+// catalogue keeps it, in `collection`, with the GLSL text of each stage as the reference is to
+// compile it. Throws std::invalid_argument where its name is taken.
+const Program& add_compiled_program(std::unique_ptr<Program> program, std::string collection, std::string vertex_glsl,
+                                    std::string fragment_glsl);
+// A compiled program's GLSL (vertex or fragment stage); nullptr for a translated one.
+const std::string* compiled_glsl(const Program& program, bool vertex_stage);
+
 // What crosses between quadshade and a plugin's shaders, as the plugin's headers laid it out: a
 // plugin built against other headers is refused, not run.
 struct ShaderAbi {
-    int version = 3;  // raised when program.h's contract changes in a way sizes do not show
+    int version = 4;  // raised when program.h's contract changes in a way sizes do not show
     int batch_lanes = kBatchLanes;
     int max_varyings = kMaxVaryings;
     std::size_t fragment_batch = sizeof(FragmentBatch);

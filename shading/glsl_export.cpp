@@ -27,6 +27,7 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 }  // namespace
 
 std::string glsl_source(const Program& program, bool vertex_stage) {
+    if (const std::string* text = compiled_glsl(program, vertex_stage)) return *text;  // a user's GLSL, as written
     const ShaderInfo& info = program.info();
     const std::filesystem::path folder = glsl_folder(program);
     // ShaderInfo::glsl_version; from 1.50 on the compatibility profile (gl_Vertex, gl_FragColor).
