@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 
 void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
     cmd.add_option("--shader", a.shader, "the catalogue shader to evaluate (its object-space position is the grid's)")
-        ->required()->option_text("NAME");
+        ->option_text("NAME");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
     cmd.add_option("-o,--output", a.output,
                    "the volume as a 3D texture: N x N^2 pixels, slice k in rows [kN, (k+1)N)\n"
                    "(.png: 8-bit, loadable as a sampler3D; .exr/.tif: float)")
@@ -44,7 +45,8 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     cmd.add_option("mesh", a.mesh, "a glTF scene whose meshes have a UV atlas in TEXCOORD_0 (in [0, 1], no overlaps)")
         ->required()->option_text("MESH.gltf");
     cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
-        ->required()->option_text("NAME");
+        ->option_text("NAME");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
     cmd.add_option("-o,--output", a.output,
                    "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
                    "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
@@ -81,7 +83,9 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
 }
 
-int cmd_bake_volume(const VolumeArgs& a) {
+int cmd_bake_volume(VolumeArgs a) {
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.shader);
+    if (a.shader.empty()) throw UsageError("bake-volume: give the shader to evaluate: --shader NAME or --glsl FRAG");
     VolumeRequest req;
     req.shader = a.shader, req.size = a.size;
     req.frame.time = a.time.value_or(0.0);
@@ -111,10 +115,13 @@ int cmd_bake_volume(const VolumeArgs& a) {
                 true);
     std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
                  a.size, a.shader.c_str(), seconds * 1e3, a.size);
+    warn_loop_limit(glsl);
     return 0;
 }
 
-int cmd_bake(const BakeArgs& a) {
+int cmd_bake(BakeArgs a) {
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.shader);
+    if (a.shader.empty()) throw UsageError("bake: give the shader to bake: --shader NAME or --glsl FRAG");
     const fs::path output(a.output);
     if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
     bool height = false, normal = false, color = false;
@@ -223,6 +230,7 @@ int cmd_bake(const BakeArgs& a) {
     if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
     if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
     std::fputc('\n', stderr);
+    warn_loop_limit(glsl);
     return 0;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -15,6 +16,7 @@
 
 #include "core/framebuffer.h"
 #include "render/frame_image.h"
+#include "render/glsl_shaders.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 
@@ -84,7 +86,7 @@ bool valid_name(const std::string& n) {
 }
 
 SuiteCase read_case(const Reader& in, const json& c, const std::string& field, const fs::path& folder, const fs::path& expected_dir) {
-    in.only(c, field, {"name", "scene", "shader", "size", "time", "derivatives", "backend", "precision", "uniforms", "expected",
+    in.only(c, field, {"name", "scene", "shader", "glsl", "vert", "size", "time", "derivatives", "backend", "precision", "uniforms", "expected",
                        "tolerance"});
     SuiteCase sc;
     if (!c.contains("name")) in.fail(field + ".name", "missing");
@@ -96,6 +98,19 @@ SuiteCase read_case(const Reader& in, const json& c, const std::string& field, c
     if (sc.expected.extension() != ".png") in.fail(field + ".expected", "expected images are 8-bit .png files");
     FrameRequest& r = sc.request;
     if (c.contains("shader")) r.shader_override = in.text(c["shader"], field + ".shader");
+    if (c.contains("vert") && !c.contains("glsl")) in.fail(field + ".vert", "a vertex shader needs its fragment shader: add glsl");
+    if (c.contains("glsl")) {
+        if (c.contains("shader")) in.fail(field + ".glsl", "give one of shader and glsl");
+        // A user's GLSL files beside the suite, compiled once per pair of files for the whole run.
+        const fs::path fragment = folder / in.text(c["glsl"], field + ".glsl");
+        std::optional<fs::path> vertex;
+        if (c.contains("vert")) vertex = folder / in.text(c["vert"], field + ".vert");
+        try {
+            r.shader_override = std::string(load_glsl_shader(fragment, vertex).program->info().name);
+        } catch (const std::runtime_error& e) {
+            in.fail(field + ".glsl", e.what());
+        }
+    }
     if (c.contains("size")) {
         const std::string s = in.text(c["size"], field + ".size");
         int w = 0, h = 0;

@@ -105,7 +105,7 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
 
 struct GalleryArgs {
     std::string output;
-    std::vector<std::string> scenes, plugins;
+    std::vector<std::string> scenes, plugins, glsl;
     int size = 160, columns = 6, threads = 0;
     double time = 1.0;
 };
@@ -121,6 +121,8 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
                    "that binds its textures")
         ->option_text("SCENE...");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
+    cmd.add_option("--glsl", a.glsl, "GLSL fragment shaders to draw instead of the catalogue, on one sheet (docs/glsl.md)")
+        ->option_text("FRAG...");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
 }
@@ -157,6 +159,11 @@ int cmd_shaders(const std::string& export_dir) {
 
 int cmd_gallery(const GalleryArgs& a) {
     GalleryRequest request;
+    for (const std::string& file : a.glsl) {
+        const GlslShader shader = load_glsl_shader(file, std::nullopt);
+        for (const std::string& w : shader.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
+        request.collections = {kGlslCollection};
+    }
     request.tile = a.size, request.columns = a.columns;
     request.frame.time = a.time;
     request.frame.shading.threads = a.threads;

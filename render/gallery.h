@@ -21,6 +21,7 @@ struct GalleryRequest {
     int tile = 160;    // each shader's square, in pixels
     int columns = 6;   // squares per row, at most
     FrameRequest frame;  // time, derivative rule, threads; its size and shader are set per tile
+    std::vector<std::string> collections;  // the catalogue's collections to draw (empty: all)
 };
 
 struct GallerySheet {
