@@ -76,7 +76,8 @@ struct Reader {
     }
     void only(const json& object, const std::string& field, std::initializer_list<const char*> known) const {
         if (!object.is_object()) fail(field, "expected an object");
-        for (const auto& [key, value] : object.items()) {
+        for (const auto& item : object.items()) {
+            const std::string& key = item.key();  // not a structured binding: clang 14 captures none
             if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
                 std::string names;
                 for (const char* k : known) names += (names.empty() ? "" : ", ") + std::string(k);
