@@ -5,10 +5,13 @@
 #include <filesystem>
 
 #include "apps/command_line.h"
+#include "core/framebuffer.h"
 #include "render/atlas_bake.h"
+#include "render/memory_plan.h"
 #include "render/volume_bake.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "scenes/scene_files.h"
 #include "scenes/temporary_file.h"
 #include "scenes/uniforms.h"
 #include "shading/catalogue.h"
@@ -81,7 +84,24 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
     cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
+    cmd.add_option("--memory-limit", a.memory_limit,
+                   "memory the bake may use, e.g. 4G (default: what the system has available); checked\n"
+                   "before any work, map by map (each is written before the next is made)")
+        ->option_text("SIZE");
 }
+
+namespace {
+
+// The atlas frame written as the texture it is: rows in the opposite order (row 0 is t = 0), a
+// row at a time, so that no flipped copy of the frame is made.
+void write_atlas(const fs::path& file, const Framebuffer& frame, const Metadata& metadata) {
+    ImageWriter writer(file, frame.width, frame.height, true, metadata);
+    const std::size_t row = std::size_t(frame.width) * 4;
+    for (int y = frame.height - 1; y >= 0; --y) writer.write_rows(1, frame.rgba.data() + std::size_t(y) * row);
+    writer.commit();
+}
+
+}  // namespace
 
 int cmd_bake_volume(VolumeArgs a) {
     const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.shader);
@@ -172,44 +192,50 @@ int cmd_bake(BakeArgs a) {
     req.frame.shading.derivatives = a.derivatives;
     req.frame.shading.threads = a.threads;
     for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
-    auto clock = std::chrono::steady_clock::now;
-    auto ms_since = [](auto t0) { return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    auto t0 = clock();
-    const Image atlas = bake_atlas(scene, req);
-    const double color_ms = ms_since(t0);
-    // Every map is made before any file is written: an error leaves no output.
-    Image height_map, normal_map;
-    double height_ms = 0.0, normal_ms = 0.0;
-    if (height) {
-        AtlasRequest h = req;
-        h.frame.shader_override = std::string(field->height_shader());
-        t0 = clock();
-        height_map = bake_atlas(scene, h);
-        height_ms = ms_since(t0);
-    }
     NormalBakeRequest n;
     n.size = a.size, n.skirt = a.skirt, n.method = a.normals, n.precision = a.normal_precision, n.threads = a.threads;
     if (a.normal_step) n.step = *a.normal_step;
-    if (normal) {
-        t0 = clock();
-        normal_map = bake_normal_map(scene, *field, n);
-        normal_ms = ms_since(t0);
+
+    // Before any work: the folder the files go to (their staging folder is made in it now), and
+    // the memory of the largest map (each map is written, and its memory freed, before the next).
+    OutputSet out(output);
+    const std::uint64_t limit = memory_limit(a.memory_limit);
+    const std::string side = std::to_string(a.size) + "x" + std::to_string(a.size);
+    std::vector<std::pair<std::string, std::uint64_t>> needs = {{"the colour atlas", atlas_bake_bytes(scene, req)}};
+    if (height) needs.emplace_back("the height map", needs.front().second);
+    if (normal) needs.emplace_back("the normal map", normal_bake_bytes(scene, n));
+    for (const auto& [map, bytes] : needs) {
+        if (bytes > limit) {
+            throw MemoryError("bake: " + map + " at " + side + " needs " + byte_size_text(bytes) + ", more than the " +
+                              byte_size_text(limit) +
+                              " available (--memory-limit sets it; a smaller --size needs less)");
+        }
     }
 
-    OutputSet out(output);
+    auto clock = std::chrono::steady_clock::now;
+    auto ms_since = [](auto t0) {
+        return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
     const Metadata common = {{"quadshade:shader", a.shader},
                              {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
                              {"quadshade:skirt", std::to_string(a.skirt)}};
     Metadata meta = common;
     meta.push_back({"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"});
     meta.push_back({"quadshade:derivatives", rule_name(a.derivatives)});
-    write_image(out.staged(color_file), atlas, meta, true);
+    auto t0 = clock();
+    write_atlas(out.staged(color_file), render_atlas_frame(scene, req), meta);
+    const double color_ms = ms_since(t0);
+    double height_ms = 0.0, normal_ms = 0.0;
     if (height) {
+        AtlasRequest h = req;
+        h.frame.shader_override = std::string(field->height_shader());
         meta = common;
         meta.push_back({"quadshade:atlas", "the height of " + a.shader + " (" + std::string(field->height_shader()) +
                                                "), 0 to 1 for 0 to " + std::to_string(field->amplitude()) +
                                                " object units of relief; row 0 is t = 0"});
-        write_image(out.staged(height_file), height_map, meta, true);
+        t0 = clock();
+        write_atlas(out.staged(height_file), render_atlas_frame(scene, h), meta);
+        height_ms = ms_since(t0);
     }
     if (normal) {
         meta = common;
@@ -219,7 +245,9 @@ int cmd_bake(BakeArgs a) {
                                                  ? "analytic (Dual2)"
                                                  : "finite differences, step " + std::to_string(n.step) + " object units"});
         meta.push_back({"quadshade:precision", n.precision == Precision::Double ? "double" : "float"});
-        write_image(out.staged(normal_file), normal_map, meta, true);
+        t0 = clock();
+        write_image(out.staged(normal_file), bake_normal_map(scene, *field, n), meta, true);
+        normal_ms = ms_since(t0);
     }
     const Scene baked = baked_scene(scene, out.staged(color_file), normal ? out.staged(normal_file) : fs::path(),
                                     height ? out.staged(height_file) : fs::path());

@@ -44,6 +44,7 @@ struct BakeArgs {
     CLI::Option* precision_option = nullptr;
     Precision normal_precision = Precision::Float;
     std::optional<double> normal_step;
+    std::string memory_limit;  // empty: what the system has available
 };
 
 void add_bake_options(CLI::App& cmd, BakeArgs& a);

@@ -21,8 +21,11 @@
 #include "core/framebuffer.h"
 #include "raster/driver_settings.h"
 #include "render/frame_image.h"
+#include "render/memory_plan.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
+#include "scenes/output_file.h"
+#include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 
@@ -224,11 +227,18 @@ struct CaseReport {
     std::string heat_map, error;
 };
 
+// Bytes a case holds per pixel beside its render, at most: our image and the reference's (16
+// each), the reference's decoding (16 more), the heat map and its intermediates (80), the
+// side-by-side strip (48), and the reference process (56: 55 measured at 2048x2048).
+constexpr std::uint64_t kCheckBytesPerPixel = 232;
+
 struct Checker {
     const CheckRequest& request;
     fs::path reference, glsl;
     std::vector<fs::path> files;
     std::vector<Scene> scenes;
+    InputFiles inputs;  // the scenes and the files they read: never written over
+    MemoryBudget* budget = nullptr;
     int threads = 1;  // per render
 
     // One case, its reference rendered by a quadshade-reference process writing `image`.
@@ -236,26 +246,38 @@ struct Checker {
         CaseReport report;
         const ShaderInfo& info = c.program->info();
         const std::string shader(info.name), scene_name = files[c.scene].stem().string();
+        Scene scene = scenes[c.scene];
+        FrameRequest r;
+        r.shader_override = shader;
+        r.set(raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe));
+        r.shading.threads = threads;
+        SceneRenderer renderer(scene, r);
+        const int w = renderer.width(), h = renderer.height();
+        const MemoryBudget::Reservation held =
+            budget->reserve(renderer.frame_bytes(h) + std::uint64_t(w) * std::uint64_t(h) * kCheckBytesPerPixel,
+                            "checking " + shader + " on " + files[c.scene].string() + " (" + std::to_string(w) + "x" +
+                                std::to_string(h) + ")");
         const std::vector<std::string> argv = {reference.string(), files[c.scene].string(), "-o", image.string(), "--glsl",
                                                glsl.string(), "--driver", driver_of(c.rule), "--shader", shader};
         if (const int status = run_process(argv, log); status != 0) {
             throw std::runtime_error("quadshade-reference failed on " + files[c.scene].string() + " with " + shader + " (" +
                                      driver_of(c.rule) + ", exit " + std::to_string(status) + "): " + read_text(log));
         }
-        const Image theirs = read_image(image);
-        Scene scene = scenes[c.scene];
-        FrameRequest r;
-        r.shader_override = shader;
-        r.set(raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe));
-        r.shading.threads = threads;
-        const Framebuffer fb = render_frame(scene, r);
+        ImageReadLimits limits;  // the scene's size, checked on the header
+        limits.width = w, limits.height = h;
+        const Image theirs = read_image(image, limits);
+        Framebuffer fb;
+        renderer.render_into(fb, std::nullopt);
         const Image ours = colour_image(fb);
-        report.width = fb.width, report.height = fb.height;
+        fb = {};
+        report.width = w, report.height = h;
         report.counts = count_differences(ours, theirs);
         report.bar = bar_for(info, scene_name, c.rule, report.counts);
         report.ok = meets(report.counts, report.bar);
         if (report.counts.coverage || report.counts.max_steps) {
             const fs::path f = request.output / (scene_name + "-" + shader + "-" + rule_name(c.rule) + ".png");
+            if (inputs.contains(f))
+                throw std::runtime_error(f.string() + ": a file a scene reads; check's heat map would overwrite it");
             const Image diff = difference_heat_map(ours, theirs, 8.0f / 255.0f);
             write_image(f, side_by_side({&ours, &theirs, &diff}));
             report.heat_map = f.string();
@@ -285,7 +307,8 @@ struct Checker {
 }  // namespace
 
 int run_check(const CheckRequest& request) {
-    Checker checker{request, executable_folder() / "quadshade-reference", request.output / "glsl", {}, {}, 1};
+    Checker checker{request, executable_folder() / "quadshade-reference", request.output / "glsl", {}, {}, {}, nullptr,
+                    1};
     if (::access(checker.reference.c_str(), X_OK) != 0) {
         throw std::runtime_error(checker.reference.string() + ": quadshade-reference is not beside quadshade (built with "
                                  "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); check needs it");
@@ -296,6 +319,7 @@ int run_check(const CheckRequest& request) {
     std::size_t skipped_pairs = 0;
     for (std::size_t s = 0; s < checker.files.size(); ++s) {
         checker.scenes.push_back(load_scene(checker.files[s]));
+        for (const fs::path& input : checker.scenes.back().inputs) checker.inputs.add(input);
         for (const Program* program : programs) {
             // The default set's texture scenes (apps/texture_scenes.h) test sampling: they are for
             // the shaders that sample a texture; the others are checked on the geometry scenes.
@@ -309,9 +333,21 @@ int run_check(const CheckRequest& request) {
         }
     }
     if (cases.empty()) throw std::runtime_error("no case to check: no scene binds the textures the shaders sample");
-    fs::create_directories(request.output);
+    const fs::path report_file = request.output / "report.csv";
+    for (const fs::path& output : {report_file, checker.glsl}) {
+        if (checker.inputs.contains(output))
+            throw std::runtime_error(output.string() + ": a file a scene reads; check would overwrite it");
+    }
+    make_output_folder(request.output, FolderLink::Followed);
+    output_place(report_file, Streams::Refused);
+    make_output_folder(checker.glsl, FolderLink::Refused);
     export_glsl(checker.glsl);  // the reference sees the GLSL as any GL application would: the text only
-    std::ofstream csv(request.output / "report.csv");
+    // The reference images and logs are this run's own (two runs may share -o); the report is
+    // written whole once every case is done.
+    const ScratchFolder scratch(request.output / "reference");
+    MemoryBudget budget(request.memory_limit ? request.memory_limit : available_memory());
+    checker.budget = &budget;
+    std::ostringstream csv;
     csv << "scene,shader,rule,driver,width,height,covered,coverage_mismatch,over_1,over_2,max_steps,max_x,max_y,"
            "bar_over_1,bar_over_2,bar_coverage,result\n";
 
@@ -326,8 +362,8 @@ int run_check(const CheckRequest& request) {
     std::size_t printed = 0, failed = 0;
     const auto start = std::chrono::steady_clock::now();
     auto worker = [&](int id) {
-        const fs::path image = request.output / ("reference-" + std::to_string(id) + ".exr");
-        const fs::path log = request.output / ("reference-" + std::to_string(id) + ".log");
+        const fs::path image = scratch.path() / ("reference-" + std::to_string(id) + ".exr");
+        const fs::path log = scratch.path() / ("reference-" + std::to_string(id) + ".log");
         for (std::size_t k = next++; k < cases.size() && !stop; k = next++) {
             CaseReport r;
             try {
@@ -344,9 +380,6 @@ int run_check(const CheckRequest& request) {
                 failed += !reports[printed].ok;
             }
         }
-        std::error_code ec;
-        fs::remove(image, ec);
-        fs::remove(log, ec);
     };
     std::vector<std::thread> pool;
     for (int j = 1; j < jobs; ++j) pool.emplace_back(worker, j);
@@ -363,7 +396,8 @@ int run_check(const CheckRequest& request) {
         std::printf("; %zu shader-scene pairs left out (the scene binds no texture the shader samples%s)", skipped_pairs,
                     request.scenes.empty() ? ", or the shader samples none on a texture scene" : "");
     }
-    std::printf("\nquadshade check: report %s\n", (request.output / "report.csv").string().c_str());
+    write_output(report_file, csv.str());
+    std::printf("\nquadshade check: report %s\n", report_file.string().c_str());
     return failed ? 3 : 0;
 }
 

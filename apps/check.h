@@ -13,6 +13,7 @@
 // exactly"): see kCoarseLowerBar in check.cpp.
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -37,6 +38,9 @@ struct CheckRequest {
     // that differs at all are written.
     std::filesystem::path output = "quadshade-check";
     int jobs = 0;  // cases at once (a reference process and a render each); 0: one per core
+    // What the cases checked at once may use together (each reserves its render's and images'
+    // memory first: render/memory_plan.h's MemoryBudget); 0: what the system has available.
+    std::uint64_t memory_limit = 0;
 };
 
 // One case's differences. A pixel's difference is its largest RGB channel difference in 8-bit

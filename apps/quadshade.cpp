@@ -7,6 +7,7 @@
 // case failed.
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -23,6 +24,7 @@
 #include "render/gallery.h"
 #include "render/plugins.h"
 #include "scenes/image_io.h"
+#include "scenes/output_file.h"
 #include "scenes/temporary_file.h"
 #include "scenes/uniforms.h"
 #include "shading/catalogue.h"
@@ -57,7 +59,7 @@ struct CheckArgs {
     std::vector<std::string> shaders, rules{"fine"}, plugins;
     bool all = false, interpret = false;
     std::string glsl, vertex_glsl;
-    std::string scenes, output = "quadshade-check";
+    std::string scenes, output = "quadshade-check", memory_limit;
     int jobs = 0;
 };
 
@@ -80,14 +82,18 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
     add_glsl_options(cmd, a.glsl, a.vertex_glsl);
     cmd.add_flag("--interpret", a.interpret,
                  "check the shaders' GLSL run by the interpreter (as --glsl runs a\nfile) instead of their translations");
+    cmd.add_option(
+           "--memory-limit", a.memory_limit,
+           "memory the cases checked at once may use together, e.g. 4G (default: what the\nsystem has available)")
+        ->option_text("SIZE");
     add_plugin_option(cmd, a.plugins);
 }
 
 struct TestArgs {
     std::vector<std::string> inputs, plugins;
-    bool update = false, merge = false;
+    bool update = false, merge = false, allow_outside = false;
     int jobs = 0;
-    std::string junit, html, shard, report;
+    std::string junit, html, shard, report, memory_limit;
 };
 
 void add_test_options(CLI::App& cmd, TestArgs& a) {
@@ -100,6 +106,13 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
     cmd.add_flag("--merge", a.merge, "merge the report fragments of every shard (1..N, each once) instead of running");
     cmd.add_option("--junit", a.junit, "write a JUnit XML report")->option_text("FILE");
     cmd.add_option("--html", a.html, "write an HTML report, images side by side, to DIR/index.html")->option_text("DIR");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside,
+                 "let the suite name scenes and expected images outside its own folder (and --merge --html\n"
+                 "read images outside each fragment's folder); by default only files beside it");
+    cmd.add_option("--memory-limit", a.memory_limit,
+                   "memory the cases rendered at once may use together, e.g. 4G (default: what the system\n"
+                   "has available)")
+        ->option_text("SIZE");
     add_plugin_option(cmd, a.plugins);
 }
 
@@ -249,6 +262,7 @@ int cmd_check(const CheckArgs& a) {
     request.scenes = a.scenes;
     request.output = a.output;
     request.jobs = a.jobs;
+    if (!a.memory_limit.empty()) request.memory_limit = memory_limit(a.memory_limit);
     request.rules.clear();
     for (const std::string& rule : a.rules) {
         if (rule == "fine") request.rules.push_back(CheckRule::Fine);
@@ -258,33 +272,75 @@ int cmd_check(const CheckArgs& a) {
     return run_check(request);
 }
 
+// "K/N" with 1 <= K <= N <= kSuiteShards, nothing else (no wrapping: 4294967297 is not 1).
+bool parse_shard(const std::string& text, int& k, int& n) {
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos) return false;
+    auto number = [](std::string_view t, int& v) {
+        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+        return !t.empty() && ec == std::errc() && end == t.data() + t.size();
+    };
+    return number(std::string_view(text).substr(0, slash), k) && number(std::string_view(text).substr(slash + 1), n) &&
+           k >= 1 && k <= n && n <= kSuiteShards;
+}
+
 int cmd_test(const TestArgs& a) {
-    std::vector<fs::path> inputs;  // the suite or the fragments, and what a link among them points to
-    for (const std::string& input : a.inputs) {
-        std::error_code ec;
-        inputs.insert(inputs.end(), {resolved(input), fs::weakly_canonical(input, ec)});
-    }
-    if (!a.junit.empty()) check_output(a.junit, inputs, "--junit");
-    if (!a.report.empty()) check_output(a.report, inputs, "--report");
+    const std::uint64_t memory = a.memory_limit.empty() ? 0 : memory_limit(a.memory_limit);
+    // What no report may be written over: the suite or fragments, what the suite reads, and every
+    // file a case reads or writes (expected images, a failure's actual and difference images).
+    InputFiles taken;
+    for (const std::string& input : a.inputs) taken.add(input);
+    auto take_case_files = [&](const fs::path& expected, const fs::path& actual, const fs::path& diff) {
+        for (const fs::path* f : {&expected, &actual, &diff}) {
+            if (!f->empty()) taken.add(*f);
+        }
+    };
+    // The reports, each checked against those and against the reports before it.
+    auto check_reports = [&](const std::vector<fs::path>& html) {
+        InputFiles reports;
+        auto check = [&](const fs::path& file, const char* option, Streams streams) {
+            check_output(file, taken, option, streams);
+            if (output_place(file, streams) == OutputPlace::File && reports.contains(file)) {
+                throw UsageError(std::string(option) + " " + file.string() +
+                                 ": another report of this run is written there");
+            }
+            reports.add(file);
+        };
+        if (!a.junit.empty()) check(a.junit, "--junit", Streams::Allowed);
+        if (!a.report.empty()) check(a.report, "--report", Streams::Allowed);
+        if (std::error_code ec; !a.html.empty() && fs::exists(a.html, ec) && !fs::is_directory(a.html, ec)) {
+            throw UsageError("--html " + a.html + ": is not a folder");
+        }
+        for (const fs::path& file : html) check(file, "--html", Streams::Refused);
+    };
     SuiteRun run;
     if (a.merge) {
         if (a.update || !a.shard.empty() || !a.report.empty() || a.jobs) throw UsageError("--merge: only with --junit and --html");
-        run = merge_fragments({a.inputs.begin(), a.inputs.end()});
+        MergeOptions options;
+        options.reads_images = !a.html.empty();
+        options.allow_outside = a.allow_outside;
+        options.memory_limit = memory;
+        run = merge_fragments({a.inputs.begin(), a.inputs.end()}, options);
+        for (const CaseResult& r : run.results) take_case_files(r.expected, r.actual, r.diff);
+        check_reports(a.html.empty() ? std::vector<fs::path>{} : html_files(run, a.html));
     } else {
         if (a.inputs.size() != 1) throw UsageError("test: one suite file (or --merge FRAGMENT...)");
         SuiteRequest request;
-        request.suite = a.inputs[0];
         request.update = a.update;
         request.jobs = a.jobs;
-        if (!a.shard.empty()) {
-            int k = 0, n = 0;
-            char slash = 0, rest = 0;
-            if (std::sscanf(a.shard.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' || n < 1 || k < 1 || k > n || n > 100000) {
-                throw UsageError("--shard: expected K/N with 1 <= K <= N, got '" + a.shard + "'");
-            }
-            request.shard = k, request.shards = n;
+        request.load.allow_outside = a.allow_outside;
+        request.load.memory_limit = memory;
+        if (!a.shard.empty() && !parse_shard(a.shard, request.shard, request.shards)) {
+            throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kSuiteShards) + ", got '" +
+                             a.shard + "'");
         }
-        run = run_suite(request);
+        Suite suite = load_suite(a.inputs[0], request.load);
+        add_scene_inputs(suite, request.load);
+        for (const std::string& input : a.inputs) suite.inputs.add(input);
+        taken = suite.inputs;
+        for (const SuiteCase& c : suite.cases) take_case_files(c.expected, c.actual, c.diff);
+        check_reports(a.html.empty() ? std::vector<fs::path>{} : html_files(suite, a.html));
+        run = run_suite(suite, request);
         if (!a.report.empty()) write_fragment(run, a.report);
     }
     if (!a.junit.empty()) write_junit(run, a.junit);

@@ -235,7 +235,7 @@ int cmd_render(RenderArgs& a) {
     FrameRequest& req = a.request;
     if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
     req.shading.check_undefined = !a.mask_output.empty();
-    if (req.shading.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
+    if (req.shading.check_undefined && !a.animated() && resolved(a.mask_output) == resolved(a.output)) {
         throw UsageError("--undefined-mask: the same file as -o");
     }
     refuse_unsupported(a);
@@ -251,6 +251,17 @@ int cmd_render(RenderArgs& a) {
     };
     path_of(a.output, first);  // a bad pattern is refused before anything is read
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
+    if (!a.mask_output.empty() && a.animated()) {
+        // Every frame's name under both patterns: no mask may be written over any frame's image.
+        const std::string image = resolved_pattern(a.output), mask = resolved_pattern(a.mask_output);
+        for (int f = first; f <= last; ++f) {
+            if (const std::optional<int> g = frame_named(mask, frame_path(image, f), first, last)) {
+                throw UsageError("--undefined-mask: frame " + std::to_string(*g) +
+                                 "'s mask would be written over frame " + std::to_string(f) + "'s image " +
+                                 path_of(a.output, f));
+            }
+        }
+    }
 
     for (const std::string& plugin : a.plugins) load_plugin(plugin);
     const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);

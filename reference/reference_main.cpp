@@ -15,6 +15,7 @@
 
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
+#include "scenes/temporary_file.h"
 
 namespace {
 
@@ -30,6 +31,7 @@ struct Options {
 }  // namespace
 
 int main(int argc, char** argv) {
+    qs::remove_temporaries_on_signals();
     Options o;
     CLI::App app("quadshade-reference: renders a glTF scene through OSMesa from the shaders' original GLSL, as any "
                  "OpenGL application would. The outputs record the driver, renderer string and Mesa version in their "

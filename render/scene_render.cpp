@@ -166,6 +166,15 @@ double SceneRenderer::bvh_build_seconds() const {
     return 0.0;
 }
 
+std::uint64_t render_working_bytes(std::uint64_t pixels, std::uint64_t vertices, std::uint64_t triangles, bool depth,
+                                   bool undefined) {
+    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (undefined ? 1 : 0);
+    // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
+    // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
+    constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
+    return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+}
+
 std::uint64_t SceneRenderer::frame_bytes(int rows) const {
     // The rasterizer decides on a depth buffer per frame (depth_buffer.h): counted whenever it may.
     const bool depth = request_.backend == Backend::Rasterizer;
@@ -174,12 +183,8 @@ std::uint64_t SceneRenderer::frame_bytes(int rows) const {
         vertices += d.vertices.size();
         triangles += d.indices.size() / 3;
     }
-    const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(rows);
-    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (request_.shading.check_undefined ? 1 : 0);
-    // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
-    // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
-    constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
-    return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+    return render_working_bytes(std::uint64_t(width_) * std::uint64_t(rows), vertices, triangles, depth,
+                                request_.shading.check_undefined);
 }
 
 void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RenderStats* stats, RowBand band) {

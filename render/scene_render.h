@@ -100,6 +100,12 @@ private:
     std::unique_ptr<Caster> caster_;
 };
 
+// Bytes a render of `pixels` pixels holds while it runs (SceneRenderer::frame_bytes counts its own
+// with it): colour, depth, the undefined-case mask, and the vertex stage's and triangle setup's
+// working memory for that many vertices and triangles drawn.
+std::uint64_t render_working_bytes(std::uint64_t pixels, std::uint64_t vertices, std::uint64_t triangles, bool depth,
+                                   bool undefined);
+
 // One frame, for callers that render a scene once.
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);
 void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);

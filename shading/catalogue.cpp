@@ -44,6 +44,24 @@ std::filesystem::path builtin_glsl_folder() {
     return exe.parent_path().parent_path() / "share" / "quadshade" / "shading";
 }
 
+// A shader's name names files (--export-glsl writes NAME.vert and NAME.frag) and is what scenes
+// and command lines ask for: an identifier, so that no name can lead out of a folder.
+bool is_shader_name(std::string_view name) {
+    auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+    if (name.empty() || name.size() > 128 || !letter(name[0])) return false;
+    for (const char c : name) {
+        if (!letter(c) && !(c >= '0' && c <= '9')) return false;
+    }
+    return true;
+}
+
+// `name` as a message shows it: what is not printable ASCII as '?'.
+std::string shown(std::string_view name) {
+    std::string s(name.substr(0, 128));
+    for (char& c : s) c = c >= 0x20 && c < 0x7f ? c : '?';
+    return s;
+}
+
 const Entry& entry_of(const Program& program) {
     for (const Entry& e : registry().entries) {
         if (e.program == &program) return e;
@@ -64,6 +82,12 @@ void add(const Program& program, const ShaderAbi& abi, std::string_view collecti
                              std::to_string(abi.batch_lanes) + " lanes, " + std::to_string(abi.fragment_batch) +
                              "-byte fragment batches; this quadshade: " + std::to_string(kBatchLanes) + ", " +
                              std::to_string(sizeof(FragmentBatch)) + "): rebuild it against this installation");
+        return;
+    }
+    if (!is_shader_name(name)) {
+        problems.push_back("shader '" + shown(name) +
+                           "': a shader's name is letters, digits and '_', not starting with a "
+                           "digit (it names the files --export-glsl writes)");
         return;
     }
     if (const Program* taken = find_program(name)) {

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "scenes/output_file.h"
 #include "shading/catalogue.h"
 
 namespace qs {
@@ -16,12 +17,6 @@ std::string read_file(const std::filesystem::path& p) {
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();
-}
-
-void write_file(const std::filesystem::path& p, const std::string& text) {
-    std::ofstream out(p, std::ios::binary);
-    out << text;
-    if (!out.flush()) throw std::runtime_error(p.string() + ": cannot write GLSL");
 }
 
 }  // namespace
@@ -42,14 +37,13 @@ std::string glsl_source(const Program& program, bool vertex_stage) {
 }
 
 int export_glsl(const std::filesystem::path& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw std::runtime_error(dir.string() + ": cannot create folder: " + ec.message());
+    make_output_folder(dir, FolderLink::Followed);
     int n = 0;
     for (const Program* p : catalogue()) {
+        // A shader's name is an identifier (the catalogue refuses any other): a file name in DIR.
         const std::string name(p->info().name);
-        write_file(dir / (name + ".vert"), glsl_source(*p, true));
-        write_file(dir / (name + ".frag"), glsl_source(*p, false));
+        write_output(dir / (name + ".vert"), glsl_source(*p, true));
+        write_output(dir / (name + ".frag"), glsl_source(*p, false));
         ++n;
     }
     return n;
