@@ -45,7 +45,7 @@ std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection();
 // What crosses between quadshade and a plugin's shaders, as the plugin's headers laid it out: a
 // plugin built against other headers is refused, not run.
 struct ShaderAbi {
-    int version = 3;  // raised when program.h's contract changes in a way sizes do not show
+    int version = 4;  // raised when program.h's contract changes in a way sizes do not show
     int batch_lanes = kBatchLanes;
     int max_varyings = kMaxVaryings;
     std::size_t fragment_batch = sizeof(FragmentBatch);
