@@ -39,7 +39,8 @@ Geometry sphere(int bands, int steps) {
     for (int b = 0; b <= bands; ++b) {
         for (int s = 0; s <= steps; ++s) {
             const double theta = kPi * b / bands, phi = 2 * kPi * s / steps;
-            const glm::vec3 d(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(-std::sin(theta) * std::sin(phi)));
+            const glm::vec3 d(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                              float(-std::sin(theta) * std::sin(phi)));
             g.vertex(d, d, {float(s) / float(steps), float(b) / float(bands)});
         }
     }
@@ -63,9 +64,11 @@ Geometry box() {
         const glm::vec3 u = glm::cross(up, nrm), v = up;
         const auto base = std::uint16_t(g.vertices());
         const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-        for (const glm::vec2& c : corners) g.vertex(nrm + c.x * u + c.y * v, nrm, {0.5f + 0.5f * c.x, 0.5f - 0.5f * c.y});
-        g.index.insert(g.index.end(), {base, std::uint16_t(base + 1), std::uint16_t(base + 2), base, std::uint16_t(base + 2),
-                                       std::uint16_t(base + 3)});
+        for (const glm::vec2& c : corners) {
+            g.vertex(nrm + c.x * u + c.y * v, nrm, {0.5f + 0.5f * c.x, 0.5f - 0.5f * c.y});
+        }
+        g.index.insert(g.index.end(), {base, std::uint16_t(base + 1), std::uint16_t(base + 2), base,
+                                       std::uint16_t(base + 2), std::uint16_t(base + 3)});
     }
     return g;
 }
@@ -84,7 +87,8 @@ Geometry torus(float R, float r, int nu, int nv) {
     for (int j = 0; j < nv; ++j) {
         for (int i = 0; i < nu; ++i) {
             const auto at = [&](int ii, int jj) { return std::uint16_t(jj * (nu + 1) + ii); };
-            g.index.insert(g.index.end(), {at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            g.index.insert(g.index.end(),
+                           {at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
         }
     }
     return g;
@@ -101,20 +105,24 @@ Geometry cylinder(int steps) {
     }
     for (int s = 0; s < steps; ++s) {
         const auto b = std::uint16_t(2 * s);
-        g.index.insert(g.index.end(), {b, std::uint16_t(b + 2), std::uint16_t(b + 1), std::uint16_t(b + 1), std::uint16_t(b + 2),
-                                       std::uint16_t(b + 3)});
+        g.index.insert(g.index.end(), {b, std::uint16_t(b + 2), std::uint16_t(b + 1), std::uint16_t(b + 1),
+                                       std::uint16_t(b + 2), std::uint16_t(b + 3)});
     }
     for (const float y : {-1.0f, 1.0f}) {
         const auto centre = std::uint16_t(g.vertices());
         g.vertex({0, y, 0}, {0, y, 0}, {0.5f, 0.5f});
         for (int s = 0; s <= steps; ++s) {
             const double a = 2 * kPi * s / steps;
-            g.vertex({float(std::cos(a)), y, float(-std::sin(a))}, {0, y, 0}, {0.5f + 0.5f * float(std::cos(a)), 0.5f + 0.5f * float(std::sin(a))});
+            g.vertex({float(std::cos(a)), y, float(-std::sin(a))}, {0, y, 0},
+                     {0.5f + 0.5f * float(std::cos(a)), 0.5f + 0.5f * float(std::sin(a))});
         }
         for (int s = 0; s < steps; ++s) {
             const auto a = std::uint16_t(centre + 1 + s), b = std::uint16_t(centre + 2 + s);
-            if (y > 0) g.index.insert(g.index.end(), {centre, a, b});
-            else g.index.insert(g.index.end(), {centre, b, a});
+            if (y > 0) {
+                g.index.insert(g.index.end(), {centre, a, b});
+            } else {
+                g.index.insert(g.index.end(), {centre, b, a});
+            }
         }
     }
     return g;
@@ -175,7 +183,8 @@ int node(GltfWriter& w, const std::string& name, int mesh_index, json transform,
 int camera(GltfWriter& w, const std::string& name, glm::vec3 eye, glm::vec3 target, json camera_json,
            glm::quat parent = glm::quat(1, 0, 0, 0)) {
     const int c = w.add("cameras", std::move(camera_json));
-    const glm::mat4 local = glm::mat4_cast(glm::inverse(parent)) * glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
+    const glm::mat4 local =
+        glm::mat4_cast(glm::inverse(parent)) * glm::inverse(glm::lookAt(eye, target, glm::vec3(0, 1, 0)));
     json n = trs(glm::vec3(local[3]), glm::normalize(glm::quat_cast(glm::mat3(local))));
     n["name"] = name;
     n["camera"] = c;
@@ -190,8 +199,9 @@ json perspective(double yfov, double znear, double zfar, double aspect = 0.0) {
 
 // The clear colour's alpha is 0, so that coverage (alpha) tells what was drawn.
 void scene(GltfWriter& w, std::vector<int> roots, int width, int height, glm::vec4 clear = {0.18f, 0.2f, 0.24f, 0.0f}) {
-    w["scenes"] = json::array({{{"nodes", roots}, {"extras", {{"clear_color", {clear.r, clear.g, clear.b, clear.a}},
-                                                               {"size", {width, height}}}}}});
+    w["scenes"] =
+        json::array({{{"nodes", roots},
+                      {"extras", {{"clear_color", {clear.r, clear.g, clear.b, clear.a}}, {"size", {width, height}}}}}});
     w["scene"] = 0;
 }
 
@@ -207,7 +217,8 @@ int material(GltfWriter& w, const std::string& name, json pbr, json more = json:
 // A texture of image file `uri` (relative to the scene) with a sampler.
 int texture(GltfWriter& w, const std::string& uri, int mag, int min, int wrap_s = 10497, int wrap_t = 10497) {
     const int image = w.add("images", {{"uri", uri}});
-    const int sampler = w.add("samplers", {{"magFilter", mag}, {"minFilter", min}, {"wrapS", wrap_s}, {"wrapT", wrap_t}});
+    const int sampler =
+        w.add("samplers", {{"magFilter", mag}, {"minFilter", min}, {"wrapS", wrap_s}, {"wrapT", wrap_t}});
     return w.add("textures", {{"source", image}, {"sampler", sampler}});
 }
 constexpr int kNearest = 9728, kLinear = 9729, kTrilinear = 9987, kClamp = 33071, kMirrored = 33648;
@@ -253,8 +264,9 @@ Image8 grid_image() {
     return image(32, [](float u, float v) {
         const bool line = std::fmod(u * 4, 1.0f) < 0.12f || std::fmod(v * 4, 1.0f) < 0.12f;
         const float ax = u * 2, ay = v * 2;
-        const bool arrow = ax < 1 && ay < 1 && ((ax > 0.15f && ax < 0.6f && std::abs(ay - 0.5f) < 0.08f) ||
-                                                (ax >= 0.6f && ax < 0.9f && std::abs(ay - 0.5f) < 0.9f - ax));
+        const bool arrow = ax < 1 && ay < 1 &&
+                           ((ax > 0.15f && ax < 0.6f && std::abs(ay - 0.5f) < 0.08f) ||
+                            (ax >= 0.6f && ax < 0.9f && std::abs(ay - 0.5f) < 0.9f - ax));
         if (arrow) return glm::vec4(1.0f, 1.0f, 1.0f, 1.0f);
         return line ? glm::vec4(0.1f, 0.1f, 0.1f, 1.0f) : glm::vec4(u, v, 0.5f, 1.0f);
     });
@@ -277,7 +289,8 @@ void default_material(const std::filesystem::path& dir) {
     GltfWriter w;
     w.use_extension("KHR_materials_unlit");
     const int checker = texture(w, "textures/checker.png", kLinear, kTrilinear);
-    const int textured = material(w, "Checker", {{"baseColorFactor", {1.0, 0.85, 0.7, 1.0}}, {"baseColorTexture", {{"index", checker}}}});
+    const int textured = material(
+        w, "Checker", {{"baseColorFactor", {1.0, 0.85, 0.7, 1.0}}, {"baseColorTexture", {{"index", checker}}}});
     const int red = material(w, "Red", factor(0.8, 0.05, 0.04));
     const int white = material(w, "White", factor(1.0, 1.0, 1.0));
     const int sign = material(w, "Sign", {{"baseColorTexture", {{"index", checker}}}},
@@ -301,15 +314,18 @@ void default_material(const std::filesystem::path& dir) {
     }
     json colours = primitive(w, ring, white, true, false);
     colours["attributes"]["COLOR_0"] = w.data(hues, kUByte, "VEC3", true);
-    roots.push_back(node(w, "Vertex colours", mesh(w, "Ring", json::array({colours})), trs({0.9f, 0.75f, 0}, about(70, {1, 0, 0}))));
+    roots.push_back(node(w, "Vertex colours", mesh(w, "Ring", json::array({colours})),
+                         trs({0.9f, 0.75f, 0}, about(70, {1, 0, 0}))));
     // Float RGBA vertex colours and no material: glTF's default material, white and single-sided.
     std::vector<float> rgba;
     for (std::size_t i = 0; i < ball.vertices(); ++i) {
-        rgba.insert(rgba.end(), {0.5f + 0.5f * ball.n[3 * i], 0.5f + 0.5f * ball.n[3 * i + 1], 0.5f + 0.5f * ball.n[3 * i + 2], 1.0f});
+        rgba.insert(rgba.end(), {0.5f + 0.5f * ball.n[3 * i], 0.5f + 0.5f * ball.n[3 * i + 1],
+                                 0.5f + 0.5f * ball.n[3 * i + 2], 1.0f});
     }
     json bare = primitive(w, ball, -1, true, false);
     bare["attributes"]["COLOR_0"] = w.data(rgba, kFloatType, "VEC4");
-    roots.push_back(node(w, "No material", mesh(w, "Bare sphere", json::array({bare})), trs({2.6f, 0.75f, 0}, kNoRotation, glm::vec3(0.8f))));
+    roots.push_back(node(w, "No material", mesh(w, "Bare sphere", json::array({bare})),
+                         trs({2.6f, 0.75f, 0}, kNoRotation, glm::vec3(0.8f))));
     // Both seen from behind: the unlit sign mirrored, the lit plate with its normal reversed.
     roots.push_back(node(w, "Unlit sign", mesh(w, "Sign", json::array({primitive(w, plate, sign)})),
                          trs({-1.4f, -1.0f, 0}, about(160, {0, 1, 0}), {1.1f, 0.6f, 1})));
@@ -340,10 +356,12 @@ void alpha_modes(const std::filesystem::path& dir) {
     const glm::vec4 pane_colours[3] = {{0.9f, 0.1f, 0.1f, 0.5f}, {0.1f, 0.8f, 0.2f, 0.6f}, {0.15f, 0.3f, 1.0f, 0.4f}};
     for (int i = 0; i < 3; ++i) {  // nearest first in the file
         const glm::vec4 c = pane_colours[i];
-        const int m = material(w, "Pane " + std::to_string(i), factor(c.r, c.g, c.b, c.a), {{"alphaMode", "BLEND"}, {"doubleSided", true}});
-        roots.push_back(node(w, "Pane " + std::to_string(i), mesh(w, "Pane " + std::to_string(i), json::array({primitive(w, plate, m)})),
-                             trs({-0.35f + 0.35f * float(i), 0.1f * float(i), 1.0f - 0.8f * float(i)}, about(10.0f * float(i), {0, 1, 0}),
-                                 glm::vec3(0.75f))));
+        const int m = material(w, "Pane " + std::to_string(i), factor(c.r, c.g, c.b, c.a),
+                               {{"alphaMode", "BLEND"}, {"doubleSided", true}});
+        roots.push_back(node(w, "Pane " + std::to_string(i),
+                             mesh(w, "Pane " + std::to_string(i), json::array({primitive(w, plate, m)})),
+                             trs({-0.35f + 0.35f * float(i), 0.1f * float(i), 1.0f - 0.8f * float(i)},
+                                 about(10.0f * float(i), {0, 1, 0}), glm::vec3(0.75f))));
     }
     // A blended sphere, lit, crossing the floor: its far side drawn over the floor too.
     const int glass = material(w, "Glass", factor(0.7, 0.85, 1.0, 0.35), {{"alphaMode", "BLEND"}});
@@ -365,7 +383,8 @@ void texcoord_sets(const std::filesystem::path& dir) {
     // TEXCOORD_0 everywhere a corner of the texture, the real mapping in the other sets.
     std::vector<float> corner(plate.uv.size(), 0.1f), twice;
     for (float c : plate.uv) twice.push_back(2.0f * c - 0.5f);
-    auto quad = [&](const std::string& name, json base_texture, const std::vector<float>& set1, const std::vector<float>& set2) {
+    auto quad = [&](const std::string& name, json base_texture, const std::vector<float>& set1,
+                    const std::vector<float>& set2) {
         const int m = material(w, name, {{"baseColorTexture", std::move(base_texture)}});
         json p = primitive(w, plate, m, true, false);
         p["attributes"]["TEXCOORD_0"] = w.data(corner, kFloatType, "VEC2");
@@ -376,23 +395,29 @@ void texcoord_sets(const std::filesystem::path& dir) {
     std::vector<int> roots;
     roots.push_back(node(w, "Set 1", quad("TEXCOORD_1", {{"index", grid}, {"texCoord", 1}}, plate.uv, {}),
                          trs({-2.4f, 0.8f, 0}, kNoRotation, glm::vec3(0.75f))));
-    roots.push_back(node(w, "Set 2", quad("TEXCOORD_2", {{"index", grid}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 2}}}}}},
-                                          corner, plate.uv),
-                         trs({-0.8f, 0.8f, 0}, kNoRotation, glm::vec3(0.75f))));
-    roots.push_back(node(w, "Transform",
-                         quad("Transformed", {{"index", grid}, {"texCoord", 1},
-                                              {"extensions", {{"KHR_texture_transform",
-                                                               {{"offset", {0.25, -0.1}}, {"rotation", 0.4}, {"scale", {1.5, 2.0}}}}}}},
-                              plate.uv, {}),
-                         trs({0.8f, 0.8f, 0}, kNoRotation, glm::vec3(0.75f))));
+    roots.push_back(
+        node(w, "Set 2",
+             quad("TEXCOORD_2", {{"index", grid}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 2}}}}}},
+                  corner, plate.uv),
+             trs({-0.8f, 0.8f, 0}, kNoRotation, glm::vec3(0.75f))));
+    roots.push_back(
+        node(w, "Transform",
+             quad("Transformed",
+                  {{"index", grid},
+                   {"texCoord", 1},
+                   {"extensions",
+                    {{"KHR_texture_transform", {{"offset", {0.25, -0.1}}, {"rotation", 0.4}, {"scale", {1.5, 2.0}}}}}}},
+                  plate.uv, {}),
+             trs({0.8f, 0.8f, 0}, kNoRotation, glm::vec3(0.75f))));
     roots.push_back(node(w, "Mirrored", quad("Mirrored nearest", {{"index", mirrored}, {"texCoord", 1}}, twice, {}),
                          trs({2.4f, 0.8f, 0}, kNoRotation, glm::vec3(0.75f))));
     // A receding plane: the transform's scale changes the level of detail as llvmpipe computes it.
-    roots.push_back(node(w, "Floor",
-                         quad("Scaled floor", {{"index", grid}, {"texCoord", 1},
-                                               {"extensions", {{"KHR_texture_transform", {{"scale", {6.0, 3.0}}}}}}},
-                              plate.uv, {}),
-                         trs({0, -0.9f, -1.5f}, about(-80, {1, 0, 0}), {3.2f, 2.0f, 1})));
+    roots.push_back(node(
+        w, "Floor",
+        quad("Scaled floor",
+             {{"index", grid}, {"texCoord", 1}, {"extensions", {{"KHR_texture_transform", {{"scale", {6.0, 3.0}}}}}}},
+             plate.uv, {}),
+        trs({0, -0.9f, -1.5f}, about(-80, {1, 0, 0}), {3.2f, 2.0f, 1})));
     roots.push_back(camera(w, "Camera", {0.0f, 0.6f, 5.5f}, {0, 0, 0}, perspective(0.75, 0.5, 30.0)));
     scene(w, roots, 192, 128);
     w.write(dir / "texcoord-sets.gltf");
@@ -416,27 +441,37 @@ void primitive_modes(const std::filesystem::path& dir) {
         }
         strip_i.insert(strip_i.end(), {std::uint16_t(2 * i), std::uint16_t(2 * i + 1)});
     }
-    json strip = {{"mode", 5}, {"material", orange},
-                  {"attributes", {{"POSITION", w.data(strip_p, kFloatType, "VEC3", false, true)}, {"NORMAL", w.data(strip_n, kFloatType, "VEC3")}}},
+    json strip = {{"mode", 5},
+                  {"material", orange},
+                  {"attributes",
+                   {{"POSITION", w.data(strip_p, kFloatType, "VEC3", false, true)},
+                    {"NORMAL", w.data(strip_n, kFloatType, "VEC3")}}},
                   {"indices", w.data(strip_i, kUShort, "SCALAR")}};
     // A disc as a fan around its centre, not indexed, with vertex colours and no normals (flat).
     std::vector<float> fan_p = {-1.2f, -0.8f, 0.0f}, fan_c = {1, 1, 1, 1};
     for (int i = 0; i <= 12; ++i) {
         const double a = 2 * kPi * i / 12;
-        fan_p.insert(fan_p.end(), {-1.2f + 0.8f * float(std::cos(a)), -0.8f + 0.8f * float(std::sin(a)), 0.3f * float(std::sin(2 * a))});
+        fan_p.insert(fan_p.end(), {-1.2f + 0.8f * float(std::cos(a)), -0.8f + 0.8f * float(std::sin(a)),
+                                   0.3f * float(std::sin(2 * a))});
         fan_c.insert(fan_c.end(), {float(0.5 + 0.5 * std::cos(a)), float(0.5 + 0.5 * std::sin(a)), 0.3f, 1.0f});
     }
-    json fan = {{"mode", 6}, {"material", teal},
-                {"attributes", {{"POSITION", w.data(fan_p, kFloatType, "VEC3", false, true)}, {"COLOR_0", w.data(fan_c, kFloatType, "VEC4")}}}};
+    json fan = {{"mode", 6},
+                {"material", teal},
+                {"attributes",
+                 {{"POSITION", w.data(fan_p, kFloatType, "VEC3", false, true)},
+                  {"COLOR_0", w.data(fan_c, kFloatType, "VEC4")}}}};
     const Geometry cube = box();
     json triangles = primitive(w, cube, teal);
     json points = {{"mode", 0}, {"attributes", {{"POSITION", w.data(fan_p, kFloatType, "VEC3", false, true)}}}};
     json lines = {{"mode", 1}, {"attributes", {{"POSITION", w.data(strip_p, kFloatType, "VEC3", false, true)}}}};
     const int shapes = mesh(w, "Shapes", json::array({strip, fan, points, lines}));
-    const int outline = mesh(w, "Outline", json::array({{{"mode", 2}, {"attributes", {{"POSITION", w.data(fan_p, kFloatType, "VEC3", false, true)}}}}}));
+    const int outline = mesh(
+        w, "Outline",
+        json::array({{{"mode", 2}, {"attributes", {{"POSITION", w.data(fan_p, kFloatType, "VEC3", false, true)}}}}}));
     std::vector<int> roots;
     roots.push_back(node(w, "Shapes", shapes, json::object()));
-    roots.push_back(node(w, "Box", mesh(w, "Box", json::array({triangles})), trs({1.3f, -0.8f, 0}, about(30, {1, 1, 0}), glm::vec3(0.5f))));
+    roots.push_back(node(w, "Box", mesh(w, "Box", json::array({triangles})),
+                         trs({1.3f, -0.8f, 0}, about(30, {1, 1, 0}), glm::vec3(0.5f))));
     roots.push_back(node(w, "Outline", outline, trs({0, 0, 0.5f})));
     roots.push_back(camera(w, "Camera", {0.0f, 0.3f, 5.0f}, {0, 0, 0}, perspective(0.8, 0.5, 20.0)));
     scene(w, roots, 160, 120);
@@ -473,16 +508,18 @@ void animation(const std::filesystem::path& dir) {
         samplers.push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
         channels.push_back({{"sampler", samplers.size() - 1}, {"target", {{"node", target}, {"path", path}}}});
     };
-    channel(slider, "translation", "LINEAR", {0.0f, 1.0f, 2.0f}, {-2, 1, 0, -2, -0.3f, 0.5f, -1.4f, 0.4f, 1.0f}, "VEC3");
-    channel(blinker, "scale", "STEP", {0.0f, 0.5f, 1.0f, 1.5f}, {0.5f, 0.5f, 0.5f, 0.25f, 0.7f, 0.25f, 0.6f, 0.6f, 0.6f, 0.3f, 0.3f, 0.3f}, "VEC3");
+    channel(slider, "translation", "LINEAR", {0.0f, 1.0f, 2.0f}, {-2, 1, 0, -2, -0.3f, 0.5f, -1.4f, 0.4f, 1.0f},
+            "VEC3");
+    channel(blinker, "scale", "STEP", {0.0f, 0.5f, 1.0f, 1.5f},
+            {0.5f, 0.5f, 0.5f, 0.25f, 0.7f, 0.25f, 0.6f, 0.6f, 0.6f, 0.3f, 0.3f, 0.3f}, "VEC3");
     // in-tangent, value, out-tangent for each keyframe
-    channel(spline, "translation", "CUBICSPLINE", {0.0f, 1.0f, 2.0f},
-            {0, 0, 0, 2, 1, 0, 0, 3, 0,  //
-             -2, 0, 0, 2.2f, 0.2f, 0.5f, 1.5f, -1, 0,  //
-             0, -2, 0, 1.6f, 0.9f, -0.5f, 0, 0, 0},
+    channel(spline, "translation", "CUBICSPLINE", {0.0f, 1.0f, 2.0f}, {0,  0,  0, 2,    1,    0,     0,    3,  0,  //
+                                                                       -2, 0,  0, 2.2f, 0.2f, 0.5f,  1.5f, -1, 0,  //
+                                                                       0,  -2, 0, 1.6f, 0.9f, -0.5f, 0,    0,  0},
             "VEC3");
     const glm::quat q0(1, 0, 0, 0), q1 = about(120, {0, 1, 0}), q2 = -about(240, {0, 1, 0.3f});
-    channel(spinner, "rotation", "LINEAR", {0.0f, 1.0f, 2.0f}, {q0.x, q0.y, q0.z, q0.w, q1.x, q1.y, q1.z, q1.w, q2.x, q2.y, q2.z, q2.w}, "VEC4");
+    channel(spinner, "rotation", "LINEAR", {0.0f, 1.0f, 2.0f},
+            {q0.x, q0.y, q0.z, q0.w, q1.x, q1.y, q1.z, q1.w, q2.x, q2.y, q2.z, q2.w}, "VEC4");
     channel(cam, "translation", "LINEAR", {0.0f, 2.0f}, {0.0f, 0.8f, 7.0f, 1.0f, 1.2f, 6.0f}, "VEC3");
     w.add("animations", {{"name", "Everything"}, {"channels", channels}, {"samplers", samplers}});
     scene(w, roots, 192, 144);
@@ -509,9 +546,11 @@ void instancing(const std::filesystem::path& dir) {
     json grid = trs({0, 0, 0}, about(25, {1, 0, 0}) * about(35, {0, 1, 0}));
     grid["name"] = "Instances";
     grid["mesh"] = cube;
-    grid["extensions"] = {{"EXT_mesh_gpu_instancing", {{"attributes", {{"TRANSLATION", w.data(t, kFloatType, "VEC3")},
-                                                                         {"ROTATION", w.data(r, kShort, "VEC4", true)},
-                                                                         {"SCALE", w.data(s, kFloatType, "VEC3")}}}}}};
+    grid["extensions"] = {{"EXT_mesh_gpu_instancing",
+                           {{"attributes",
+                             {{"TRANSLATION", w.data(t, kFloatType, "VEC3")},
+                              {"ROTATION", w.data(r, kShort, "VEC4", true)},
+                              {"SCALE", w.data(s, kFloatType, "VEC3")}}}}}};
     const int instances = w.add("nodes", grid);
     const int cam = camera(w, "Camera", {0.0f, 0.0f, 10.0f}, {0, 0, 0}, perspective(0.7, 2.0, 20.0));
     scene(w, {instances, cam}, 160, 160);
@@ -533,25 +572,33 @@ void quantized(const std::filesystem::path& dir) {
         for (float x : v) q.push_back(decltype(type)(std::lround(x * scale)));
         return q;
     };
-    json sphere_p = {{"attributes", {{"POSITION", w.data(quantize(ball.p, 1000.0f, std::int16_t()), kShort, "VEC3", false, true)},
-                                     {"NORMAL", w.data(quantize(ball.n, 127.0f, std::int8_t()), kByte, "VEC3", true)},
-                                     {"TEXCOORD_0", w.data(quantize(ball.uv, 65535.0f, std::uint16_t()), kUShort, "VEC2", true)}}},
-                     {"indices", w.data(ball.index, kUShort, "SCALAR")}, {"material", textured}};
+    json sphere_p = {{"attributes",
+                      {{"POSITION", w.data(quantize(ball.p, 1000.0f, std::int16_t()), kShort, "VEC3", false, true)},
+                       {"NORMAL", w.data(quantize(ball.n, 127.0f, std::int8_t()), kByte, "VEC3", true)},
+                       {"TEXCOORD_0", w.data(quantize(ball.uv, 65535.0f, std::uint16_t()), kUShort, "VEC2", true)}}},
+                     {"indices", w.data(ball.index, kUShort, "SCALAR")},
+                     {"material", textured}};
     // The ring's positions in [-1, 1] as normalized bytes (its node scales them back), its normals
     // normalized shorts, vertex colours normalized unsigned shorts.
     std::vector<float> ring_p;
     for (float x : ring.p) ring_p.push_back(x / 1.0f);
     std::vector<std::uint16_t> colours;
     for (std::size_t i = 0; i < ring.vertices(); ++i) {
-        for (const float c : {ring.uv[2 * i], 1.0f - ring.uv[2 * i + 1], 0.4f, 1.0f}) colours.push_back(std::uint16_t(std::lround(c * 65535.0f)));
+        for (const float c : {ring.uv[2 * i], 1.0f - ring.uv[2 * i + 1], 0.4f, 1.0f}) {
+            colours.push_back(std::uint16_t(std::lround(c * 65535.0f)));
+        }
     }
-    json ring_prim = {{"attributes", {{"POSITION", w.data(quantize(ring_p, 127.0f, std::int8_t()), kByte, "VEC3", true, true)},
-                                      {"NORMAL", w.data(quantize(ring.n, 32767.0f, std::int16_t()), kShort, "VEC3", true)},
-                                      {"COLOR_0", w.data(colours, kUShort, "VEC4", true)}}},
-                      {"indices", w.data(ring.index, kUShort, "SCALAR")}, {"material", white}};
+    json ring_prim = {{"attributes",
+                       {{"POSITION", w.data(quantize(ring_p, 127.0f, std::int8_t()), kByte, "VEC3", true, true)},
+                        {"NORMAL", w.data(quantize(ring.n, 32767.0f, std::int16_t()), kShort, "VEC3", true)},
+                        {"COLOR_0", w.data(colours, kUShort, "VEC4", true)}}},
+                      {"indices", w.data(ring.index, kUShort, "SCALAR")},
+                      {"material", white}};
     std::vector<int> roots;
-    roots.push_back(node(w, "Sphere", mesh(w, "Sphere", json::array({sphere_p})), trs({-1.1f, 0, 0}, about(20, {0, 1, 0}), glm::vec3(0.001f))));
-    roots.push_back(node(w, "Ring", mesh(w, "Ring", json::array({ring_prim})), trs({1.1f, 0, 0}, about(65, {1, 0, 0}), glm::vec3(1.0f))));
+    roots.push_back(node(w, "Sphere", mesh(w, "Sphere", json::array({sphere_p})),
+                         trs({-1.1f, 0, 0}, about(20, {0, 1, 0}), glm::vec3(0.001f))));
+    roots.push_back(node(w, "Ring", mesh(w, "Ring", json::array({ring_prim})),
+                         trs({1.1f, 0, 0}, about(65, {1, 0, 0}), glm::vec3(1.0f))));
     roots.push_back(camera(w, "Camera", {0.0f, 0.5f, 5.0f}, {0, 0, 0}, perspective(0.65, 1.0, 20.0)));
     scene(w, roots, 160, 120);
     w.write(dir / "quantized.gltf");
@@ -565,14 +612,18 @@ void cameras(const std::filesystem::path& dir) {
     const int floor = material(w, "Floor", {{"baseColorTexture", {{"index", grid}}}});
     const int red = material(w, "Red", factor(0.8, 0.2, 0.15));
     std::vector<int> roots;
-    roots.push_back(node(w, "Floor", mesh(w, "Floor", json::array({primitive(w, square(), floor)})), trs({0, -1, 0}, about(-90, {1, 0, 0}), {3, 2, 1})));
+    roots.push_back(node(w, "Floor", mesh(w, "Floor", json::array({primitive(w, square(), floor)})),
+                         trs({0, -1, 0}, about(-90, {1, 0, 0}), {3, 2, 1})));
     const int cube = mesh(w, "Cube", json::array({primitive(w, box(), red)}));
     for (int i = 0; i < 3; ++i) {
-        roots.push_back(node(w, "Cube " + std::to_string(i), cube, trs({-2.0f + 2.0f * float(i), -0.5f, 0.3f * float(i)}, about(20.0f * float(i), {0, 1, 0}), glm::vec3(0.5f))));
+        roots.push_back(node(w, "Cube " + std::to_string(i), cube,
+                             trs({-2.0f + 2.0f * float(i), -0.5f, 0.3f * float(i)}, about(20.0f * float(i), {0, 1, 0}),
+                                 glm::vec3(0.5f))));
     }
     roots.push_back(camera(w, "Wide", {0, 1.5f, 6}, {0, -0.5f, 0}, perspective(0.6, 1.0, 20.0, 2.0)));
-    roots.push_back(camera(w, "Top", {0, 5, 0.01f}, {0, 0, 0},
-                           {{"type", "orthographic"}, {"orthographic", {{"xmag", 3.2}, {"ymag", 1.6}, {"znear", 1.0}, {"zfar", 10.0}}}}));
+    roots.push_back(camera(
+        w, "Top", {0, 5, 0.01f}, {0, 0, 0},
+        {{"type", "orthographic"}, {"orthographic", {{"xmag", 3.2}, {"ymag", 1.6}, {"znear", 1.0}, {"zfar", 10.0}}}}));
     roots.push_back(camera(w, "Close", {1.5f, 0.5f, 3.0f}, {0, -0.5f, 0}, perspective(0.9, 0.5, 20.0)));
     w["cameras"][1]["name"] = "Top view";
     scene(w, roots, 160, 120);
@@ -589,24 +640,34 @@ void workshop(const std::filesystem::path& dir) {
     w.use_extension("KHR_texture_transform");
     const int wood_texture = texture(w, "textures/wood.png", kLinear, kTrilinear);
     const int checker = texture(w, "textures/checker.png", kLinear, kTrilinear);
-    const int wood = material(w, "Wood", {{"baseColorTexture", {{"index", wood_texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.6}});
+    const int wood =
+        material(w, "Wood",
+                 {{"baseColorTexture", {{"index", wood_texture}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.6}});
     const int cover = material(w, "Cover", {{"baseColorFactor", {0.6, 0.08, 0.06, 1.0}}, {"metallicFactor", 0.0}});
-    const int cover_blue = material(w, "Cover.001", {{"baseColorFactor", {0.08, 0.2, 0.55, 1.0}}, {"metallicFactor", 0.0}});
+    const int cover_blue =
+        material(w, "Cover.001", {{"baseColorFactor", {0.08, 0.2, 0.55, 1.0}}, {"metallicFactor", 0.0}});
     const int ceramic = material(w, "Ceramic", {{"baseColorFactor", {0.92, 0.9, 0.85, 1.0}}, {"roughnessFactor", 0.2}});
     const int brass = material(w, "Brass", {{"baseColorFactor", {0.8, 0.6, 0.25, 1.0}}, {"metallicFactor", 1.0}},
-                               {{"emissiveFactor", {1.0, 0.9, 0.6}}, {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}});
-    const int glass = material(w, "Glass", {{"baseColorFactor", {0.75, 0.9, 0.95, 0.3}}, {"roughnessFactor", 0.05}}, {{"alphaMode", "BLEND"}});
-    const int cloth = material(w, "Cloth",
-                               {{"baseColorTexture", {{"index", checker}, {"extensions", {{"KHR_texture_transform", {{"scale", {3.0, 3.0}}}}}}}},
-                                {"baseColorFactor", {0.9, 0.9, 1.0, 1.0}}});
+                               {{"emissiveFactor", {1.0, 0.9, 0.6}},
+                                {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2.0}}}}}});
+    const int glass = material(w, "Glass", {{"baseColorFactor", {0.75, 0.9, 0.95, 0.3}}, {"roughnessFactor", 0.05}},
+                               {{"alphaMode", "BLEND"}});
+    const int cloth =
+        material(w, "Cloth",
+                 {{"baseColorTexture",
+                   {{"index", checker}, {"extensions", {{"KHR_texture_transform", {{"scale", {3.0, 3.0}}}}}}}},
+                  {"baseColorFactor", {0.9, 0.9, 1.0, 1.0}}});
     // Interleaved: position, normal and texture coordinates of a vertex together, 32 bytes.
     auto interleaved = [&](const Geometry& g, int m) {
         std::vector<float> v;
         for (std::size_t i = 0; i < g.vertices(); ++i) {
-            v.insert(v.end(), {g.p[3 * i], g.p[3 * i + 1], g.p[3 * i + 2], g.n[3 * i], g.n[3 * i + 1], g.n[3 * i + 2], g.uv[2 * i], g.uv[2 * i + 1]});
+            v.insert(v.end(), {g.p[3 * i], g.p[3 * i + 1], g.p[3 * i + 2], g.n[3 * i], g.n[3 * i + 1], g.n[3 * i + 2],
+                               g.uv[2 * i], g.uv[2 * i + 1]});
         }
         std::vector<double> lo(3, 1e300), hi(3, -1e300);
-        for (std::size_t i = 0; i < g.p.size(); ++i) lo[i % 3] = std::min(lo[i % 3], double(g.p[i])), hi[i % 3] = std::max(hi[i % 3], double(g.p[i]));
+        for (std::size_t i = 0; i < g.p.size(); ++i) {
+            lo[i % 3] = std::min(lo[i % 3], double(g.p[i])), hi[i % 3] = std::max(hi[i % 3], double(g.p[i]));
+        }
         const int view = w.view(v.data(), v.size() * sizeof(float), 32);
         json a = {{"POSITION", w.accessor(view, kFloatType, g.vertices(), "VEC3", false, 0, lo, hi)},
                   {"NORMAL", w.accessor(view, kFloatType, g.vertices(), "VEC3", false, 12)},
@@ -615,26 +676,32 @@ void workshop(const std::filesystem::path& dir) {
     };
     const Geometry cube = box(), can = cylinder(24), ball = sphere(12, 20), plate = square();
     std::vector<int> roots;
-    roots.push_back(node(w, "Table", mesh(w, "Cube", json::array({interleaved(cube, wood)})), trs({0, -0.15f, 0}, kNoRotation, {2.2f, 0.1f, 1.3f})));
+    roots.push_back(node(w, "Table", mesh(w, "Cube", json::array({interleaved(cube, wood)})),
+                         trs({0, -0.15f, 0}, kNoRotation, {2.2f, 0.1f, 1.3f})));
     roots.push_back(node(w, "Tablecloth", mesh(w, "Plane", json::array({interleaved(plate, cloth)})),
                          trs({0.9f, -0.04f, 0.3f}, about(-90, {1, 0, 0}) * about(12, {0, 0, 1}), {0.8f, 0.6f, 1})));
     const int book = mesh(w, "Cube.001", json::array({interleaved(cube, cover)}));
     const int book_blue = mesh(w, "Cube.002", json::array({interleaved(cube, cover_blue)}));
     roots.push_back(node(w, "Book", book, trs({-1.2f, 0.05f, 0.2f}, about(15, {0, 1, 0}), {0.45f, 0.1f, 0.32f})));
     roots.push_back(node(w, "Book.001", book, trs({-1.15f, 0.25f, 0.15f}, about(-8, {0, 1, 0}), {0.42f, 0.1f, 0.3f})));
-    roots.push_back(node(w, "Book.002", book_blue, trs({-1.2f, 0.45f, 0.22f}, about(25, {0, 1, 0}), {0.4f, 0.1f, 0.29f})));
-    roots.push_back(node(w, "Cup", mesh(w, "Cylinder", json::array({interleaved(can, ceramic)})), trs({0.3f, 0.2f, -0.3f}, kNoRotation, {0.22f, 0.25f, 0.22f})));
-    const int lamp_head = node(w, "Lamp.Head", mesh(w, "Sphere", json::array({interleaved(ball, brass)})), trs({0, 1.1f, 0}, kNoRotation, glm::vec3(0.25f)));
-    roots.push_back(node(w, "Lamp", mesh(w, "Cylinder.001", json::array({interleaved(can, brass)})), trs({1.5f, 0.45f, -0.6f}, kNoRotation, {0.05f, 0.5f, 0.05f}),
-                         {}));
+    roots.push_back(
+        node(w, "Book.002", book_blue, trs({-1.2f, 0.45f, 0.22f}, about(25, {0, 1, 0}), {0.4f, 0.1f, 0.29f})));
+    roots.push_back(node(w, "Cup", mesh(w, "Cylinder", json::array({interleaved(can, ceramic)})),
+                         trs({0.3f, 0.2f, -0.3f}, kNoRotation, {0.22f, 0.25f, 0.22f})));
+    const int lamp_head = node(w, "Lamp.Head", mesh(w, "Sphere", json::array({interleaved(ball, brass)})),
+                               trs({0, 1.1f, 0}, kNoRotation, glm::vec3(0.25f)));
+    roots.push_back(node(w, "Lamp", mesh(w, "Cylinder.001", json::array({interleaved(can, brass)})),
+                         trs({1.5f, 0.45f, -0.6f}, kNoRotation, {0.05f, 0.5f, 0.05f}), {}));
     w["nodes"][std::size_t(roots.back())]["children"] = {lamp_head};
     // The head under a scaled parent: undo the stem's scale.
     w["nodes"][std::size_t(lamp_head)]["scale"] = {5.0, 0.5, 5.0};
     w["nodes"][std::size_t(lamp_head)]["translation"] = {0.0, 1.2, 0.0};
-    roots.push_back(node(w, "Vase", mesh(w, "Sphere.001", json::array({interleaved(ball, glass)})), trs({0.6f, 0.3f, 0.4f}, kNoRotation, {0.28f, 0.35f, 0.28f})));
+    roots.push_back(node(w, "Vase", mesh(w, "Sphere.001", json::array({interleaved(ball, glass)})),
+                         trs({0.6f, 0.3f, 0.4f}, kNoRotation, {0.28f, 0.35f, 0.28f})));
     // The camera on a turntable: under a parent turned about the vertical.
     const glm::quat turn = about(35, {0, 1, 0});
-    const int cam = camera(w, "Camera", {2.6f, 2.2f, 3.6f}, {0, 0.1f, 0}, perspective(0.55, 0.1, 100.0, 1.3333333333), turn);
+    const int cam =
+        camera(w, "Camera", {2.6f, 2.2f, 3.6f}, {0, 0.1f, 0}, perspective(0.55, 0.1, 100.0, 1.3333333333), turn);
     roots.push_back(node(w, "Turntable", -1, trs({0, 0, 0}, turn), {cam}));
     scene(w, roots, 256, 192, {0.05f, 0.05f, 0.07f, 0.0f});
     w.write(dir / "workshop.gltf");
@@ -659,7 +726,9 @@ void assembly(const std::filesystem::path& dir) {
     const int plate_mesh = mesh(w, "PLATE-001", json::array({part(plate, paint, false)}));
     const int bolt_mesh = mesh(w, "BOLT-M6", json::array({part(bolt, steel, true), part(box(), -1, false)}));
     const int wheel_mesh = mesh(w, "WHEEL", json::array({part(wheel, rubber, true)}));
-    auto matrix = [](const glm::mat4& m) { return json{{"matrix", std::vector<float>(glm::value_ptr(m), glm::value_ptr(m) + 16)}}; };
+    auto matrix = [](const glm::mat4& m) {
+        return json{{"matrix", std::vector<float>(glm::value_ptr(m), glm::value_ptr(m) + 16)}};
+    };
     // One half: a plate, four bolts and a wheel; the other half is its mirror image.
     auto half = [&](const std::string& name, float side) {
         std::vector<int> children;

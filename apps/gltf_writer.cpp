@@ -6,9 +6,7 @@
 
 namespace qs {
 
-GltfWriter::GltfWriter() {
-    doc_["asset"] = {{"version", "2.0"}, {"generator", "quadshade scene generator"}};
-}
+GltfWriter::GltfWriter() { doc_["asset"] = {{"version", "2.0"}, {"generator", "quadshade scene generator"}}; }
 
 int GltfWriter::components(const std::string& type) {
     if (type == "SCALAR") return 1;

@@ -3,8 +3,8 @@
 // feature scenes (gltf_scenes.h), which use what the scene model cannot hold (strips, quantized
 // and normalized attributes, interleaved buffers, animations, instancing, extensions).
 
+#include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -38,8 +38,8 @@ public:
                 lo[c] = std::min(lo[c], double(values[i])), hi[c] = std::max(hi[c], double(values[i]));
             }
         }
-        return accessor(view(values.data(), values.size() * sizeof(T)), component_type, values.size() / std::size_t(n), type,
-                        normalized, 0, lo, hi);
+        return accessor(view(values.data(), values.size() * sizeof(T)), component_type, values.size() / std::size_t(n),
+                        type, normalized, 0, lo, hi);
     }
     // An array entry: its index.
     int add(const std::string& array, json value);

@@ -266,9 +266,10 @@ qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
-        std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,\n"
-                             "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/, bake/ and gltf/.\n");
+        std::fprintf(stderr,
+                     "usage: quadshade-make-scenes OUTPUT_DIR\n"
+                     "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,\n"
+                     "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/, bake/ and gltf/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {

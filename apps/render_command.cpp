@@ -38,7 +38,9 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
            "--size", [&r](const std::vector<int>& v) { r.width = v[0], r.height = v[1]; },
            "image size (default: the scene's, e.g. 1264x400 for Figure 1.1)")
         ->delimiter('x')->expected(2)->check(CLI::Range(1, 1 << 15))->option_text("WxH");
-    cmd.add_option("--time", r.time, "the `time` uniform and the animations' time, in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--time", r.time, "the `time` uniform and the animations' time, in seconds (default: the scene's)")
+        ->check(kFinite)
+        ->option_text("T");
     cmd.add_option("--frames", a.frames, "render frames A..B (inclusive) at time = frame / fps")
         ->delimiter(':')->check(CLI::Range(0, 1000000))->option_text("A:B");
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")

@@ -412,9 +412,13 @@ void GlSceneRenderer::draw() {
             glFrontFace(mirrors(pose, i) ? GL_CW : GL_CCW);
         }
         // glTF's alphaMode BLEND, for the default material: blended over what is drawn, no depth writes.
-        const bool blend = o.look.alpha_mode == AlphaMode::Blend && shaders_[i] == kDefaultMaterialShader && !request_.atlas;
-        if (blend) glEnable(GL_BLEND);
-        else glDisable(GL_BLEND);
+        const bool blend =
+            o.look.alpha_mode == AlphaMode::Blend && shaders_[i] == kDefaultMaterialShader && !request_.atlas;
+        if (blend) {
+            glEnable(GL_BLEND);
+        } else {
+            glDisable(GL_BLEND);
+        }
         glDepthMask(blend ? GL_FALSE : GL_TRUE);
         if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, float(time));
         if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
@@ -451,7 +455,8 @@ void GlSceneRenderer::draw() {
         for (const GLenum unit : {GL_TEXTURE0, GL_TEXTURE1}) {  // gl_MultiTexCoord0, gl_MultiTexCoord1
             glClientActiveTexture(unit);
             glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-            glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
+            glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex),
+                              unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
         }
         glClientActiveTexture(GL_TEXTURE0);
         glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());

@@ -47,8 +47,9 @@ int main(int argc, char** argv) {
     app.add_option("--driver", driver, "llvmpipe (default) or softpipe")->check(CLI::IsMember({"llvmpipe", "softpipe"}));
     app.add_option("--size", o.size, "image size WxH (default: the scene's)");
     app.add_option("--time", o.time, "the `time` uniform and the time animations are posed at (default: the scene's)");
-    app.add_option("--camera", o.camera, "the camera to render from: a camera node's or camera's name, or an index into "
-                                         "the file's cameras[] (default: the first camera node)")
+    app.add_option("--camera", o.camera,
+                   "the camera to render from: a camera node's or camera's name, or an index into "
+                   "the file's cameras[] (default: the first camera node)")
         ->option_text("NAME|INDEX");
     app.add_option("--shader", o.shader, "draw every object with this shader's GLSL");
     app.add_option("--uniform", o.uniforms,
@@ -97,7 +98,9 @@ int main(int argc, char** argv) {
         qs::SceneLoadOptions load;
         load.camera = o.camera;
         const qs::Scene scene = qs::load_scene(o.scene, load);
-        for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade-reference: warning: %s\n", w.c_str());
+        for (const std::string& w : scene.warnings) {
+            std::fprintf(stderr, "quadshade-reference: warning: %s\n", w.c_str());
+        }
         if (width == 0) width = scene.width, height = scene.height;
         const auto t0 = std::chrono::steady_clock::now();
         auto context = qs::create_osmesa_context(width, height, o.driver, o.threads);

@@ -68,20 +68,23 @@ void check_supported(const FrameRequest& request) {
     }
 }
 
-const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& program, std::string_view uniform, int dims) {
+const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& program, std::string_view uniform,
+                                                int dims) {
     const int index = o.texture_for(uniform);
     const std::string shader(program.info().name);
     if (index < 0) {
         // The default material reads white where the material has no base colour texture, as
         // glTF asks; another shader is told once, with every material it concerns.
-        if (shader != kDefaultMaterialShader) missing_samplers_[shader + "' samples '" + std::string(uniform)].push_back(o.material);
+        if (shader != kDefaultMaterialShader) {
+            missing_samplers_[shader + "' samples '" + std::string(uniform)].push_back(o.material);
+        }
         return white_texture(dims);
     }
     const Texture& source = scene_.textures[std::size_t(index)];
     if (source.dims != dims) {
         throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
-                         (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + std::string(uniform) + "' but " + source.field +
-                         " is a " + std::to_string(source.dims) + "D texture" +
+                         (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + std::string(uniform) + "' but " +
+                         source.field + " is a " + std::to_string(source.dims) + "D texture" +
                          (dims == 3 ? " (a 3D texture's binding gives its depth)" : ""));
     }
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
@@ -91,7 +94,9 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
         } catch (const SceneError& e) {
             // Every texture that cannot be read is reported, not only the first; the draw reads
             // white meanwhile and the constructor throws them all.
-            if (std::find(failures_.begin(), failures_.end(), e.what()) == failures_.end()) failures_.push_back(e.what());
+            if (std::find(failures_.begin(), failures_.end(), e.what()) == failures_.end()) {
+                failures_.push_back(e.what());
+            }
             return white_texture(dims);
         }
     }
@@ -120,10 +125,11 @@ std::string counted(const std::string& what, const std::vector<const Mesh*>& mes
     std::set<std::string> gltf_meshes;
     for (const Mesh* m : meshes) gltf_meshes.insert(gltf_mesh_of(*m));
     const Mesh& first = *meshes.front();
-    const std::string name = first.source.empty() || first.name == first.source ? first.name
-                                                                                : first.source + " '" + first.name + "'";
-    return what + " on " + std::to_string(meshes.size()) + (meshes.size() == 1 ? " primitive" : " primitives") + " of " +
-           std::to_string(gltf_meshes.size()) + (gltf_meshes.size() == 1 ? " mesh" : " meshes") + after + "; first: " + name;
+    const std::string name =
+        first.source.empty() || first.name == first.source ? first.name : first.source + " '" + first.name + "'";
+    return what + " on " + std::to_string(meshes.size()) + (meshes.size() == 1 ? " primitive" : " primitives") +
+           " of " + std::to_string(gltf_meshes.size()) + (gltf_meshes.size() == 1 ? " mesh" : " meshes") + after +
+           "; first: " + name;
 }
 
 }  // namespace
@@ -140,14 +146,16 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
     object_draws_.resize(scene.objects.size());
     uniform_words_.resize(scene.objects.size());
     std::map<std::string, std::vector<const Mesh*>> missing_coordinates;  // per TEXCOORD_n: the meshes
-    std::map<std::string, std::set<std::string>> reading_shaders;            // per TEXCOORD_n: who reads it
+    std::map<std::string, std::set<std::string>> reading_shaders;         // per TEXCOORD_n: who reads it
     std::vector<bool> counted_mesh(scene.meshes.size() * 2, false);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         const Program& program = program_for(scene, o, request.shader_override);
         const ShaderInfo& info = program.info();
-        if (request.backend == Backend::RayCaster && o.look.alpha_mode == AlphaMode::Blend && info.name == kDefaultMaterialShader) {
-            throw SceneError(scene.file.string() + ": " + o.material + ": alphaMode BLEND: the ray caster shades the "
+        if (request.backend == Backend::RayCaster && o.look.alpha_mode == AlphaMode::Blend &&
+            info.name == kDefaultMaterialShader) {
+            throw SceneError(scene.file.string() + ": " + o.material +
+                             ": alphaMode BLEND: the ray caster shades the "
                              "nearest surface only and blends nothing; render with the rasterizer (--backend raster)");
         }
         DrawCall& d = object_draws_[i];
@@ -155,7 +163,9 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         std::vector<VertexIn>& vertices = vertices_[o.mesh];
         if (vertices.empty()) {
             vertices.reserve(mesh.vertices.size());
-            for (const Vertex& v : mesh.vertices) vertices.push_back({v.position, v.texcoord, v.normal, v.color, v.texcoord1});
+            for (const Vertex& v : mesh.vertices) {
+                vertices.push_back({v.position, v.texcoord, v.normal, v.color, v.texcoord1});
+            }
         }
         d.vertices = vertices;
         d.indices = mesh.indices;
@@ -165,7 +175,8 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         // The texture coordinates the draw reads: TEXCOORD_0 for a shader of them, the base colour
         // texture's set for the default material with a texture.
         const bool default_material = info.name == kDefaultMaterialShader;
-        const bool reads_set0 = needs.coordinates == Coordinates::Texcoord2D && (!default_material || (o.texture >= 0 && o.look.texcoord == 0));
+        const bool reads_set0 = needs.coordinates == Coordinates::Texcoord2D &&
+                                (!default_material || (o.texture >= 0 && o.look.texcoord == 0));
         const bool reads_set1 = default_material && o.texture >= 0 && o.look.texcoord != 0;
         if ((reads_set0 && !mesh.has_texcoords) || (reads_set1 && !mesh.has_texcoord1)) {
             const std::string set = "TEXCOORD_" + std::to_string(reads_set0 ? 0 : o.look.texcoord);
@@ -198,8 +209,8 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         std::string shaders;
         for (const std::string& name : reading_shaders[set]) shaders += (shaders.empty() ? "" : ", ") + name;
         notes_.push_back(scene.file.string() + ": " +
-                         counted(set + " missing", meshes, " drawn by shaders that read it (" + shaders +
-                                                               "): (0, 0) at every vertex, as in GL"));
+                         counted(set + " missing", meshes,
+                                 " drawn by shaders that read it (" + shaders + "): (0, 0) at every vertex, as in GL"));
     }
     for (const auto& [what, materials] : missing_samplers_) {
         notes_.push_back(scene.file.string() + ": shader '" + what + "', which " + std::to_string(materials.size()) +
@@ -236,14 +247,16 @@ void SceneRenderer::pose(double time) {
         DrawCall& d = object_draws_[i];
         d.uniforms.model_view_projection = scene_.clip_from_object(pose, i, aspect);
         // An atlas bake draws every triangle in texture space, where winding says nothing of facing.
-        if (!request_.atlas) d.culling = {!o.double_sided, mirrors(pose, i) ? Winding::Clockwise : Winding::CounterClockwise};
+        if (!request_.atlas) {
+            d.culling = {!o.double_sided, mirrors(pose, i) ? Winding::Clockwise : Winding::CounterClockwise};
+        }
         // The scene's values for the uniforms the shader declares, replaced by the material's
         // extras.uniforms, then by --uniform.
         const ShaderInfo& info = d.program->info();
         std::vector<UniformSetting> given = object_uniforms(scene_, i, pose, aspect);
         std::erase_if(given, [&](const UniformSetting& s) { return !declares_uniform(info, s.name); });
-        uniform_words_[i] = bind_uniforms(info, merge_uniforms(merge_uniforms(given, o.uniforms), request_.uniforms), width_,
-                                          height_, !request_.shader_override.empty());
+        uniform_words_[i] = bind_uniforms(info, merge_uniforms(merge_uniforms(given, o.uniforms), request_.uniforms),
+                                          width_, height_, !request_.shader_override.empty());
         d.uniforms.user = uniform_words_[i].data();
     }
     draws_.clear();
@@ -295,9 +308,7 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ren
             caster_view_ = view;
             try {
                 caster_ = std::make_unique<Caster>(draws_, glm::mat4(scene_.camera.projection(aspect) * view));
-            } catch (const RayCastError& e) {
-                throw SceneError(scene_.file.string() + ": " + e.what());
-            }
+            } catch (const RayCastError& e) { throw SceneError(scene_.file.string() + ": " + e.what()); }
         }
 #endif
     }

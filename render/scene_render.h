@@ -100,15 +100,15 @@ private:
     int width_, height_;
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
-    std::vector<DrawCall> object_draws_;  // per scene object
-    std::vector<DrawCall> draws_;         // this frame's, in drawing order
+    std::vector<DrawCall> object_draws_;                    // per scene object
+    std::vector<DrawCall> draws_;                           // this frame's, in drawing order
     std::vector<std::unique_ptr<Program>> atlas_programs_;  // per draw with FrameRequest::atlas
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per object: its Uniforms::user
     std::vector<std::string> notes_;
     std::vector<std::string> failures_;  // textures that could not be read, each said once
     std::map<std::string, std::vector<std::string>> missing_samplers_;  // per shader and sampler: the materials
-    std::optional<double> posed_at_;  // the time of the pose the draws hold
-    glm::dmat4 caster_view_{1.0};     // the camera's view the ray caster was built for
+    std::optional<double> posed_at_;                                    // the time of the pose the draws hold
+    glm::dmat4 caster_view_{1.0};  // the camera's view the ray caster was built for
     RasterMemory raster_memory_;  // the last frame's triangles and bins, reused
     struct Caster;
     std::unique_ptr<Caster> caster_;

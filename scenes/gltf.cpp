@@ -240,42 +240,61 @@ struct Component {
 };
 constexpr Component kFloat{TINYGLTF_COMPONENT_TYPE_FLOAT, false};
 constexpr Component kByteNorm{TINYGLTF_COMPONENT_TYPE_BYTE, true}, kByte{TINYGLTF_COMPONENT_TYPE_BYTE, false};
-constexpr Component kUByteNorm{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true}, kUByte{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, false};
+constexpr Component kUByteNorm{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true},
+    kUByte{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, false};
 constexpr Component kShortNorm{TINYGLTF_COMPONENT_TYPE_SHORT, true}, kShort{TINYGLTF_COMPONENT_TYPE_SHORT, false};
 constexpr Component kUShortNorm{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true},
     kUShort{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, false};
 
 // What glTF 2.0 and KHR_mesh_quantization allow each attribute (and animation and instancing
 // data) to be stored as.
-const std::initializer_list<Component> kPositionTypes = {kFloat, kByte, kByteNorm, kUByte, kUByteNorm,
-                                                         kShort, kShortNorm, kUShort, kUShortNorm};
+const std::initializer_list<Component> kPositionTypes = {kFloat, kByte,      kByteNorm, kUByte,     kUByteNorm,
+                                                         kShort, kShortNorm, kUShort,   kUShortNorm};
 const std::initializer_list<Component> kNormalTypes = {kFloat, kByteNorm, kShortNorm};
-const std::initializer_list<Component> kTexcoordTypes = {kFloat, kByte, kByteNorm, kUByte, kUByteNorm,
-                                                         kShort, kShortNorm, kUShort, kUShortNorm};
+const std::initializer_list<Component> kTexcoordTypes = {kFloat, kByte,      kByteNorm, kUByte,     kUByteNorm,
+                                                         kShort, kShortNorm, kUShort,   kUShortNorm};
 const std::initializer_list<Component> kColorTypes = {kFloat, kUByteNorm, kUShortNorm};
 const std::initializer_list<Component> kRotationTypes = {kFloat, kByteNorm, kUByteNorm, kShortNorm, kUShortNorm};
 const std::initializer_list<Component> kFloatOnly = {kFloat};
 
 std::string type_name(int type) {
     switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        default: return "type " + std::to_string(type);
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        default:
+            return "type " + std::to_string(type);
     }
 }
 
 std::string component_name(int component_type, bool normalized) {
     std::string n;
     switch (component_type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: n = "BYTE"; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: n = "UNSIGNED_BYTE"; break;
-        case TINYGLTF_COMPONENT_TYPE_SHORT: n = "SHORT"; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: n = "UNSIGNED_SHORT"; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: n = "UNSIGNED_INT"; break;
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: n = "FLOAT"; break;
-        default: n = std::to_string(component_type);
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            n = "BYTE";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            n = "UNSIGNED_BYTE";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            n = "SHORT";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            n = "UNSIGNED_SHORT";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            n = "UNSIGNED_INT";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            n = "FLOAT";
+            break;
+        default:
+            n = std::to_string(component_type);
     }
     return normalized ? n + " normalized" : n;
 }
@@ -312,8 +331,9 @@ Floats read_floats(const tinygltf::Model& m, int index, const std::filesystem::p
         allowed_list += (allowed_list.empty() ? "" : ", ") + component_name(c.type, c.normalized);
     }
     if (!allowed) {
-        fail(file, field, af + " is " + component_name(a.componentType, normalized) + ", which glTF does not allow here (" +
-                              allowed_list + ")");
+        fail(file, field,
+             af + " is " + component_name(a.componentType, normalized) + ", which glTF does not allow here (" +
+                 allowed_list + ")");
     }
     const AccessorData d = read_accessor(m, index, file, field, a.type, {a.componentType}, max_count);
     Floats f;
@@ -329,14 +349,21 @@ Floats read_floats(const tinygltf::Model& m, int index, const std::filesystem::p
                 float x;
                 std::memcpy(&x, p, 4);
                 if (!std::isfinite(x)) {
-                    fail(file, field, std::string(element) + " " + std::to_string(i / std::size_t(f.components)) + " of " + af +
-                                          " is not finite");
+                    fail(file, field,
+                         std::string(element) + " " + std::to_string(i / std::size_t(f.components)) + " of " + af +
+                             " is not finite");
                 }
                 f.values[i] = x;
                 continue;
             }
-            case TINYGLTF_COMPONENT_TYPE_BYTE: v = double(std::int8_t(*p)); if (normalized) v = std::max(v / 127.0, -1.0); break;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = double(*p); if (normalized) v /= 255.0; break;
+            case TINYGLTF_COMPONENT_TYPE_BYTE:
+                v = double(std::int8_t(*p));
+                if (normalized) v = std::max(v / 127.0, -1.0);
+                break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                v = double(*p);
+                if (normalized) v /= 255.0;
+                break;
             case TINYGLTF_COMPONENT_TYPE_SHORT: {
                 std::int16_t s;
                 std::memcpy(&s, p, 2);
@@ -349,7 +376,8 @@ Floats read_floats(const tinygltf::Model& m, int index, const std::filesystem::p
                 v = normalized ? double(s) / 65535.0 : double(s);
                 break;
             }
-            default: break;  // not allowed above
+            default:
+                break;  // not allowed above
         }
         f.values[i] = float(v);
     }
@@ -364,8 +392,11 @@ std::vector<std::uint32_t> triangles_of(int mode, const std::vector<std::uint32_
     if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
         for (std::size_t i = 0; i + 2 < v.size(); ++i) {
             // Odd triangles swap their first two vertices: every triangle winds as the first.
-            if (i % 2 == 0) t.insert(t.end(), {v[i], v[i + 1], v[i + 2]});
-            else t.insert(t.end(), {v[i + 1], v[i], v[i + 2]});
+            if (i % 2 == 0) {
+                t.insert(t.end(), {v[i], v[i + 1], v[i + 2]});
+            } else {
+                t.insert(t.end(), {v[i + 1], v[i], v[i + 2]});
+            }
         }
     } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
         for (std::size_t i = 1; i + 1 < v.size(); ++i) t.insert(t.end(), {v[0], v[i], v[i + 1]});
@@ -404,8 +435,8 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
         mesh.lower = glm::min(mesh.lower, xyz), mesh.upper = glm::max(mesh.upper, xyz);
     }
     // An attribute of the same count as POSITION, read into each vertex by `put`.
-    auto attribute = [&](const std::string& name, std::initializer_list<int> types, std::initializer_list<Component> kinds,
-                         auto put) {
+    auto attribute = [&](const std::string& name, std::initializer_list<int> types,
+                         std::initializer_list<Component> kinds, auto put) {
         const auto it = p.attributes.find(name);
         if (it == p.attributes.end()) return false;
         const std::string af = field + ".attributes." + name;
@@ -414,10 +445,13 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
         for (std::size_t i = 0; i < a.count; ++i) put(mesh.vertices[i], a.at(i), a.components);
         return true;
     };
-    mesh.has_texcoords = attribute("TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, kTexcoordTypes,
-                                   [](Vertex& v, glm::vec4 a, int) { v.texcoord = {a.x, a.y}; });
+    mesh.has_texcoords = attribute("TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, kTexcoordTypes, [](Vertex& v, glm::vec4 a, int) {
+        v.texcoord = {a.x, a.y};
+    });
     mesh.has_texcoord1 = attribute("TEXCOORD_" + std::to_string(texcoord1_set), {TINYGLTF_TYPE_VEC2}, kTexcoordTypes,
-                                   [](Vertex& v, glm::vec4 a, int) { v.texcoord1 = {a.x, a.y}; });
+                                   [](Vertex& v, glm::vec4 a, int) {
+                                       v.texcoord1 = {a.x, a.y};
+                                   });
     mesh.has_normals = attribute("NORMAL", {TINYGLTF_TYPE_VEC3}, kNormalTypes,
                                  [](Vertex& v, glm::vec4 a, int) { v.normal = glm::vec3(a); });
     attribute("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, kColorTypes,
@@ -459,7 +493,9 @@ Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, co
 // 1e39) would place everything at infinity once rounded for drawing.
 Node read_node(const tinygltf::Node& n, const std::filesystem::path& file, const std::string& field) {
     auto number = [&](double v, const char* what) {
-        if (!std::isfinite(float(v))) fail(file, field + "." + what, "value " + std::to_string(v) + " is not a finite float");
+        if (!std::isfinite(float(v))) {
+            fail(file, field + "." + what, "value " + std::to_string(v) + " is not a finite float");
+        }
         return v;
     };
     Node node;
@@ -492,20 +528,25 @@ Camera read_camera(const tinygltf::Model& m, int index, const glm::dmat4& world,
                    const std::string& node_field) {
     if (std::size_t(index) >= m.cameras.size()) fail(file, node_field + ".camera", "index out of range");
     if (!checks::places_things(glm::mat4(world))) {
-        fail(file, node_field, "the camera's transform is not finite or is degenerate (determinant " +
-                                   std::to_string(checks::determinant(glm::mat4(world))) + "): it sees nothing");
+        fail(file, node_field,
+             "the camera's transform is not finite or is degenerate (determinant " +
+                 std::to_string(checks::determinant(glm::mat4(world))) + "): it sees nothing");
     }
     const tinygltf::Camera& c = m.cameras[std::size_t(index)];
     const std::string cf = indexed("cameras", std::size_t(index));
     Camera cam;
     cam.view = glm::inverse(world);
-    if (!checks::is_finite(glm::mat4(cam.view))) fail(file, node_field, "the camera's transform cannot be inverted in float");
+    if (!checks::is_finite(glm::mat4(cam.view))) {
+        fail(file, node_field, "the camera's transform cannot be inverted in float");
+    }
     auto finite_float = [](double v) { return std::isfinite(float(v)); };
     if (c.type == "perspective") {
         cam.yfov = c.perspective.yfov;
         cam.znear = c.perspective.znear;
         cam.zfar = c.perspective.zfar > 0.0 ? c.perspective.zfar : 1e6;
-        cam.aspect_ratio = c.perspective.aspectRatio > 0.0 && finite_float(c.perspective.aspectRatio) ? c.perspective.aspectRatio : 0.0;
+        cam.aspect_ratio = c.perspective.aspectRatio > 0.0 && finite_float(c.perspective.aspectRatio)
+                               ? c.perspective.aspectRatio
+                               : 0.0;
         if (!(cam.yfov > 1e-6 && cam.yfov < 3.14159)) fail(file, cf + ".perspective.yfov", "must be in (0, pi)");
         if (!finite_float(c.perspective.znear) || !finite_float(c.perspective.zfar) ||
             !(cam.znear > 0.0 && cam.zfar > cam.znear)) {
@@ -897,7 +938,7 @@ void read_scene_extras(const tinygltf::Value& extras, const std::filesystem::pat
 
 // The glTF extensions quadshade implements; a file that requires another is refused.
 const std::set<std::string> kImplementedExtensions = {"KHR_texture_transform", "KHR_materials_unlit",
-                                                       "KHR_mesh_quantization", "EXT_mesh_gpu_instancing"};
+                                                      "KHR_mesh_quantization", "EXT_mesh_gpu_instancing"};
 
 // The problems of a file, reported together (up to kShown of them) rather than one per run.
 class Problems {
@@ -924,7 +965,8 @@ public:
         std::string all;
         for (const std::string& m : messages_) all += (all.empty() ? "" : "\n") + m;
         if (count_ > messages_.size()) {
-            all += "\n" + file_.string() + ": " + std::to_string(count_ - messages_.size()) + " more problems not shown";
+            all +=
+                "\n" + file_.string() + ": " + std::to_string(count_ - messages_.size()) + " more problems not shown";
         }
         throw SceneError(all);
     }
@@ -946,8 +988,8 @@ public:
     }
     std::size_t count() const { return count_; }
     std::string on() const {
-        return std::to_string(count_) + (count_ == 1 ? " primitive" : " primitives") + " of " + std::to_string(meshes_.size()) +
-               (meshes_.size() == 1 ? " mesh" : " meshes") + "; first: " + first_;
+        return std::to_string(count_) + (count_ == 1 ? " primitive" : " primitives") + " of " +
+               std::to_string(meshes_.size()) + (meshes_.size() == 1 ? " mesh" : " meshes") + "; first: " + first_;
     }
 
 private:
@@ -1002,13 +1044,21 @@ struct MaterialRead {
 
 class SceneLoader {
 public:
-    SceneLoader(const tinygltf::Model& m, const std::filesystem::path& path, const SceneLoadOptions& options, Scene& scene)
-        : m_(m), path_(path), options_(options), scene_(scene), problems_(path), textures_(m, path, options.paths, scene) {}
+    SceneLoader(const tinygltf::Model& m, const std::filesystem::path& path, const SceneLoadOptions& options,
+                Scene& scene)
+        : m_(m),
+          path_(path),
+          options_(options),
+          scene_(scene),
+          problems_(path),
+          textures_(m, path, options.paths, scene) {}
 
     void load() {
         check_extensions();
         const int scene_index = m_.defaultScene >= 0 ? m_.defaultScene : 0;
-        if (m_.scenes.empty() || std::size_t(scene_index) >= m_.scenes.size()) fail(path_, "scenes", "no scene to render");
+        if (m_.scenes.empty() || std::size_t(scene_index) >= m_.scenes.size()) {
+            fail(path_, "scenes", "no scene to render");
+        }
         const tinygltf::Scene& gs = m_.scenes[std::size_t(scene_index)];
         read_scene_extras(gs.extras, path_, indexed("scenes", std::size_t(scene_index)) + ".extras", scene_);
         reached_.assign(m_.nodes.size(), -1);
@@ -1027,8 +1077,9 @@ private:
         std::string unimplemented;
         for (std::size_t i = 0; i < m_.extensionsRequired.size(); ++i) {
             if (!kImplementedExtensions.count(m_.extensionsRequired[i])) {
-                problems_.add(path_.string() + ": extensionsRequired[" + std::to_string(i) + "]: '" + m_.extensionsRequired[i] +
-                              "' is required but not implemented (quadshade implements " + implemented_list() + ")");
+                problems_.add(path_.string() + ": extensionsRequired[" + std::to_string(i) + "]: '" +
+                              m_.extensionsRequired[i] + "' is required but not implemented (quadshade implements " +
+                              implemented_list() + ")");
             }
         }
         problems_.throw_if_any();
@@ -1036,8 +1087,10 @@ private:
             if (!kImplementedExtensions.count(e)) unimplemented += (unimplemented.empty() ? "" : ", ") + e;
         }
         if (!unimplemented.empty()) {
-            scene_.warnings.push_back(path_.string() + ": extensionsUsed: drawn without what these extensions add, which "
-                                      "quadshade does not implement: " + unimplemented);
+            scene_.warnings.push_back(path_.string() +
+                                      ": extensionsUsed: drawn without what these extensions add, which "
+                                      "quadshade does not implement: " +
+                                      unimplemented);
         }
     }
 
@@ -1048,13 +1101,16 @@ private:
     }
 
     void visit(int ni, int parent, const glm::dmat4& parent_world, int depth) {
-        if (ni < 0 || std::size_t(ni) >= m_.nodes.size()) fail(path_, "nodes", "node index " + std::to_string(ni) + " out of range");
+        if (ni < 0 || std::size_t(ni) >= m_.nodes.size()) {
+            fail(path_, "nodes", "node index " + std::to_string(ni) + " out of range");
+        }
         const std::string node_field = indexed("nodes", std::size_t(ni));
         if (reached_[std::size_t(ni)] >= 0) {
             fail(path_, node_field, "is reached twice (a cycle, or a child of two parents): glTF nodes form trees");
         }
         if (depth > limits::kNodeDepth) {
-            fail(path_, node_field, "lies deeper than " + std::to_string(limits::kNodeDepth) + " levels below the scene's root");
+            fail(path_, node_field,
+                 "lies deeper than " + std::to_string(limits::kNodeDepth) + " levels below the scene's root");
         }
         const tinygltf::Node& n = m_.nodes[std::size_t(ni)];
         Node node = read_node(n, path_, node_field);
@@ -1063,7 +1119,9 @@ private:
         reached_[std::size_t(ni)] = index;
         scene_.nodes.push_back(node);
         const glm::dmat4 world = parent_world * node.local();
-        if (!checks::is_finite(glm::mat4(world))) fail(path_, node_field, "its world transform is not finite (too large for float)");
+        if (!checks::is_finite(glm::mat4(world))) {
+            fail(path_, node_field, "its world transform is not finite (too large for float)");
+        }
         if (n.camera >= 0) cameras_.push_back({ni, index, n.camera, world});
         if (n.skin >= 0) ++skinned_nodes_;
         if (n.mesh >= 0) place_mesh(n, ni, index, world);
@@ -1076,7 +1134,9 @@ private:
         if (std::size_t(n.mesh) >= m_.meshes.size()) fail(path_, node_field + ".mesh", "index out of range");
         std::vector<glm::dmat4> instances = {glm::dmat4(1.0)};
         if (const auto it = n.extensions.find("EXT_mesh_gpu_instancing"); it != n.extensions.end()) {
-            if (!problems_.attempt([&] { instances = read_instances(it->second, node_field + ".extensions.EXT_mesh_gpu_instancing"); })) {
+            if (!problems_.attempt([&] {
+                    instances = read_instances(it->second, node_field + ".extensions.EXT_mesh_gpu_instancing");
+                })) {
                 return;
             }
         }
@@ -1088,7 +1148,8 @@ private:
                 if (p.mode >= TINYGLTF_MODE_POINTS && p.mode <= TINYGLTF_MODE_LINE_STRIP) {
                     points_and_lines_.add(std::size_t(n.mesh), field + " (mode " + std::to_string(p.mode) + ")");
                 } else {
-                    problems_.add(path_.string() + ": " + field + ".mode: unknown primitive mode " + std::to_string(p.mode));
+                    problems_.add(path_.string() + ": " + field + ".mode: unknown primitive mode " +
+                                  std::to_string(p.mode));
                 }
                 continue;
             }
@@ -1119,15 +1180,17 @@ private:
                 o.instance = instances[i];
                 o.world_from_object = world * instances[i];
                 if (!checks::places_things(glm::mat4(o.world_from_object))) {
-                    fail(path_, node_field, "its world transform is degenerate (determinant " +
-                                                std::to_string(checks::determinant(glm::mat4(o.world_from_object))) +
-                                                (instances.size() > 1 ? ") for instance " + std::to_string(i) : ")") +
-                                                ": its mesh would be invisible");
+                    fail(path_, node_field,
+                         "its world transform is degenerate (determinant " +
+                             std::to_string(checks::determinant(glm::mat4(o.world_from_object))) +
+                             (instances.size() > 1 ? ") for instance " + std::to_string(i) : ")") +
+                             ": its mesh would be invisible");
                 }
                 triangles_ += scene_.meshes[o.mesh].indices.size() / 3;
                 if (triangles_ > limits::kTriangles || scene_.objects.size() >= limits::kObjects) {
-                    fail(path_, node_field, "the scene draws more than " + std::to_string(limits::kTriangles) +
-                                                " triangles or " + std::to_string(limits::kObjects) + " objects");
+                    fail(path_, node_field,
+                         "the scene draws more than " + std::to_string(limits::kTriangles) + " triangles or " +
+                             std::to_string(limits::kObjects) + " objects");
                 }
                 scene_.objects.push_back(std::move(o));
             }
@@ -1145,8 +1208,11 @@ private:
             if (!attributes.Has(name)) return {};
             const tinygltf::Value& a = attributes.Get(name);
             if (!a.IsInt()) fail(path_, field + ".attributes." + name, "expected an accessor index");
-            Floats f = read_floats(m_, a.Get<int>(), path_, field + ".attributes." + name, {type}, kinds, limits::kObjects);
-            if (count && *count != f.count) fail(path_, field + ".attributes." + name, "count differs from the other attributes'");
+            Floats f =
+                read_floats(m_, a.Get<int>(), path_, field + ".attributes." + name, {type}, kinds, limits::kObjects);
+            if (count && *count != f.count) {
+                fail(path_, field + ".attributes." + name, "count differs from the other attributes'");
+            }
             count = f.count;
             return f;
         };
@@ -1161,7 +1227,10 @@ private:
             if (r.count) {
                 const glm::vec4 q = r.at(i);
                 const glm::dquat dq(q.w, q.x, q.y, q.z);
-                if (glm::length(dq) == 0.0) fail(path_, field + ".attributes.ROTATION", "instance " + std::to_string(i) + " is a zero quaternion");
+                if (glm::length(dq) == 0.0) {
+                    fail(path_, field + ".attributes.ROTATION",
+                         "instance " + std::to_string(i) + " is a zero quaternion");
+                }
                 local.rotation = glm::normalize(dq);
             }
             if (s.count) local.scale = glm::dvec3(glm::vec3(s.at(i)));
@@ -1179,7 +1248,8 @@ private:
             return &no_material_;
         }
         if (std::size_t(mi) >= m_.materials.size()) {
-            problems_.add(path_.string() + ": " + primitive + ".material: index " + std::to_string(mi) + " out of range");
+            problems_.add(path_.string() + ": " + primitive + ".material: index " + std::to_string(mi) +
+                          " out of range");
             return nullptr;
         }
         MaterialRead& r = materials_[std::size_t(mi)];
@@ -1202,7 +1272,9 @@ private:
         }
         Material& look = o.look;
         const tinygltf::PbrMetallicRoughness& pbr = gmat.pbrMetallicRoughness;
-        if (pbr.baseColorFactor.size() != 4) fail(path_, mf + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
+        if (pbr.baseColorFactor.size() != 4) {
+            fail(path_, mf + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
+        }
         for (int i = 0; i < 4; ++i) {
             const double f = pbr.baseColorFactor[std::size_t(i)];
             if (!std::isfinite(float(f))) fail(path_, mf + ".pbrMetallicRoughness.baseColorFactor", "not finite");
@@ -1224,7 +1296,9 @@ private:
         } else if (gmat.alphaMode != "OPAQUE") {
             fail(path_, mf + ".alphaMode", "'" + gmat.alphaMode + "' is none of OPAQUE, MASK, BLEND");
         }
-        if (!std::isfinite(float(gmat.alphaCutoff)) || gmat.alphaCutoff < 0.0) fail(path_, mf + ".alphaCutoff", "expected a number >= 0");
+        if (!std::isfinite(float(gmat.alphaCutoff)) || gmat.alphaCutoff < 0.0) {
+            fail(path_, mf + ".alphaCutoff", "expected a number >= 0");
+        }
         look.alpha_cutoff = gmat.alphaCutoff;
         look.unlit = gmat.extensions.count("KHR_materials_unlit") > 0;
         o.texture = textures_.of_material(mi);
@@ -1254,27 +1328,44 @@ private:
             return;
         }
         Channel c;
-        if (ch.target_path == "translation") c.path = Channel::Path::Translation;
-        else if (ch.target_path == "rotation") c.path = Channel::Path::Rotation;
-        else if (ch.target_path == "scale") c.path = Channel::Path::Scale;
-        else fail(path_, cf + ".target.path", "'" + ch.target_path + "' is none of translation, rotation, scale, weights");
-        if (ch.target_node < 0) return;  // an extension's target (KHR_animation_pointer): warned as an unimplemented extension
+        if (ch.target_path == "translation") {
+            c.path = Channel::Path::Translation;
+        } else if (ch.target_path == "rotation")
+            c.path = Channel::Path::Rotation;
+        else if (ch.target_path == "scale") {
+            c.path = Channel::Path::Scale;
+        } else {
+            fail(path_, cf + ".target.path",
+                 "'" + ch.target_path + "' is none of translation, rotation, scale, weights");
+        }
+        // An extension's target (KHR_animation_pointer): warned as an unimplemented extension.
+        if (ch.target_node < 0) return;
         if (std::size_t(ch.target_node) >= m_.nodes.size()) fail(path_, cf + ".target.node", "index out of range");
         const int node = reached_[std::size_t(ch.target_node)];
         if (node < 0) return;  // a node the scene does not show
         if (scene_.nodes[std::size_t(node)].has_matrix) {
-            fail(path_, cf + ".target.node", "nodes[" + std::to_string(ch.target_node) + "] has a matrix: glTF animates only "
-                                                  "nodes given by translation, rotation and scale");
+            fail(path_, cf + ".target.node",
+                 "nodes[" + std::to_string(ch.target_node) +
+                     "] has a matrix: glTF animates only "
+                     "nodes given by translation, rotation and scale");
         }
         c.node = node;
-        if (ch.sampler < 0 || std::size_t(ch.sampler) >= a.samplers.size()) fail(path_, cf + ".sampler", "index out of range");
+        if (ch.sampler < 0 || std::size_t(ch.sampler) >= a.samplers.size()) {
+            fail(path_, cf + ".sampler", "index out of range");
+        }
         const tinygltf::AnimationSampler& s = a.samplers[std::size_t(ch.sampler)];
         const std::string sf = "animations[" + std::to_string(ai) + "].samplers[" + std::to_string(ch.sampler) + "]";
-        if (s.interpolation == "LINEAR") c.interpolation = Channel::Interpolation::Linear;
-        else if (s.interpolation == "STEP") c.interpolation = Channel::Interpolation::Step;
-        else if (s.interpolation == "CUBICSPLINE") c.interpolation = Channel::Interpolation::CubicSpline;
-        else fail(path_, sf + ".interpolation", "'" + s.interpolation + "' is none of LINEAR, STEP, CUBICSPLINE");
-        const Floats times = read_floats(m_, s.input, path_, sf + ".input", {TINYGLTF_TYPE_SCALAR}, kFloatOnly, limits::kVertices);
+        if (s.interpolation == "LINEAR") {
+            c.interpolation = Channel::Interpolation::Linear;
+        } else if (s.interpolation == "STEP")
+            c.interpolation = Channel::Interpolation::Step;
+        else if (s.interpolation == "CUBICSPLINE") {
+            c.interpolation = Channel::Interpolation::CubicSpline;
+        } else {
+            fail(path_, sf + ".interpolation", "'" + s.interpolation + "' is none of LINEAR, STEP, CUBICSPLINE");
+        }
+        const Floats times =
+            read_floats(m_, s.input, path_, sf + ".input", {TINYGLTF_TYPE_SCALAR}, kFloatOnly, limits::kVertices);
         if (times.count == 0) fail(path_, sf + ".input", "no keyframes");
         for (std::size_t k = 0; k < times.count; ++k) {
             if (k > 0 && !(times.values[k] > times.values[k - 1])) {
@@ -1284,12 +1375,14 @@ private:
         }
         const bool cubic = c.interpolation == Channel::Interpolation::CubicSpline;
         if (cubic && times.count < 2) fail(path_, sf, "CUBICSPLINE needs at least two keyframes");
-        const Floats values = read_floats(m_, s.output, path_, sf + ".output",
-                                          {c.path == Channel::Path::Rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3},
-                                          c.path == Channel::Path::Rotation ? kRotationTypes : kPositionTypes, 3 * limits::kVertices);
+        const Floats values =
+            read_floats(m_, s.output, path_, sf + ".output",
+                        {c.path == Channel::Path::Rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3},
+                        c.path == Channel::Path::Rotation ? kRotationTypes : kPositionTypes, 3 * limits::kVertices);
         if (values.count != times.count * (cubic ? 3 : 1)) {
-            fail(path_, sf + ".output", std::to_string(values.count) + " values for " + std::to_string(times.count) +
-                                            " keyframes (" + (cubic ? "CUBICSPLINE keeps 3 per keyframe" : "one per keyframe") + ")");
+            fail(path_, sf + ".output",
+                 std::to_string(values.count) + " values for " + std::to_string(times.count) + " keyframes (" +
+                     (cubic ? "CUBICSPLINE keeps 3 per keyframe" : "one per keyframe") + ")");
         }
         c.values.assign(values.values.begin(), values.values.end());
         scene_.channels.push_back(std::move(c));
@@ -1308,7 +1401,9 @@ private:
         const CameraNode* chosen = cameras_.empty() ? nullptr : &cameras_.front();
         if (!wanted.empty()) {
             chosen = nullptr;
-            const bool is_index = !wanted.empty() && std::all_of(wanted.begin(), wanted.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+            const bool is_index = !wanted.empty() && std::all_of(wanted.begin(), wanted.end(), [](char ch) {
+                return std::isdigit(static_cast<unsigned char>(ch));
+            });
             for (const CameraNode& c : cameras_) {
                 const tinygltf::Node& n = m_.nodes[std::size_t(c.gltf_node)];
                 const bool match = is_index ? wanted.size() < 10 && c.camera == std::stoi(wanted)
@@ -1322,10 +1417,11 @@ private:
                 std::string list;
                 for (const CameraNode& c : cameras_) {
                     const std::string& name = m_.nodes[std::size_t(c.gltf_node)].name;
-                    list += (list.empty() ? "" : ", ") + std::to_string(c.camera) + (name.empty() ? "" : " '" + name + "'") +
-                            " (nodes[" + std::to_string(c.gltf_node) + "])";
+                    list += (list.empty() ? "" : ", ") + std::to_string(c.camera) +
+                            (name.empty() ? "" : " '" + name + "'") + " (nodes[" + std::to_string(c.gltf_node) + "])";
                 }
-                throw SceneError(path_.string() + ": --camera " + wanted + ": no camera node of that name or cameras[] index" +
+                throw SceneError(path_.string() + ": --camera " + wanted +
+                                 ": no camera node of that name or cameras[] index" +
                                  (list.empty() ? " (the file has no camera)" : "; the file's cameras: " + list));
             }
         }
@@ -1348,13 +1444,17 @@ private:
         if (points_and_lines_.count()) {
             scene_.warnings.push_back(file + "points and lines are not drawn: skipped " + points_and_lines_.on());
         }
-        if (morphed_.count()) scene_.warnings.push_back(file + "morph targets are not applied (drawn as the base mesh): " + morphed_.on());
+        if (morphed_.count()) {
+            scene_.warnings.push_back(file + "morph targets are not applied (drawn as the base mesh): " +
+                                      morphed_.on());
+        }
         if (skinned_nodes_) {
             scene_.warnings.push_back(file + std::to_string(skinned_nodes_) +
                                       " skinned nodes are drawn unskinned, as their meshes stand without their joints");
         }
         if (weight_channels_) {
-            scene_.warnings.push_back(file + std::to_string(weight_channels_) + " animation channels of morph target weights are not played");
+            scene_.warnings.push_back(file + std::to_string(weight_channels_) +
+                                      " animation channels of morph target weights are not played");
         }
     }
 

@@ -12,7 +12,9 @@ std::vector<UniformSetting> object_uniforms(const Scene& scene, std::size_t i, c
     const Object& o = scene.objects[i];
     const Material& m = o.look;
     const std::string origin = scene.file.string() + ": " + o.material;
-    auto setting = [&](const char* name, std::vector<double> values) { return UniformSetting{name, std::move(values), origin}; };
+    auto setting = [&](const char* name, std::vector<double> values) {
+        return UniformSetting{name, std::move(values), origin};
+    };
     auto matrix = [](const auto& mat, int n) {
         std::vector<double> v;
         for (int c = 0; c < n; ++c) {
@@ -31,7 +33,8 @@ std::vector<UniformSetting> object_uniforms(const Scene& scene, std::size_t i, c
     const glm::dmat4 p = scene.camera.projection(aspect);
     const int lighting = m.unlit ? 0 : scene.meshes[o.mesh].has_normals ? 1 : 2;
     return {
-        setting("uBaseColorFactor", {m.base_color_factor.r, m.base_color_factor.g, m.base_color_factor.b, m.base_color_factor.a}),
+        setting("uBaseColorFactor",
+                {m.base_color_factor.r, m.base_color_factor.g, m.base_color_factor.b, m.base_color_factor.a}),
         setting("uBaseColorTexCoord", {m.texcoord == 0 ? 0.0 : 1.0}),
         setting("uTextureTransform", matrix(m.texture_transform, 3)),
         setting("uAlphaMode", {double(int(m.alpha_mode))}),

@@ -121,8 +121,12 @@ Pose Scene::pose(double time) const {
         const glm::dvec4 v = sample(c, time);
         Node& n = posed[std::size_t(c.node)];
         switch (c.path) {
-            case Channel::Path::Translation: n.translation = glm::dvec3(v); break;
-            case Channel::Path::Scale: n.scale = glm::dvec3(v); break;
+            case Channel::Path::Translation:
+                n.translation = glm::dvec3(v);
+                break;
+            case Channel::Path::Scale:
+                n.scale = glm::dvec3(v);
+                break;
             case Channel::Path::Rotation: {
                 const glm::dquat q(v.w, v.x, v.y, v.z);
                 const double length = glm::length(q);

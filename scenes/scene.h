@@ -35,8 +35,8 @@ public:
 struct Vertex {
     glm::vec3 position;  // object space: POSITION, the shaders' gl_Vertex.xyz
     glm::vec2 texcoord;  // TEXCOORD_0, the shaders' gl_MultiTexCoord0.st; (0, 0) is the image's top-left
-    glm::vec3 normal{0.0f};     // NORMAL, gl_Normal; (0, 0, 0) where the mesh has none
-    glm::vec4 color{1.0f};      // COLOR_0, gl_Color; (1, 1, 1, 1) where none, alpha 1 for a vec3 colour
+    glm::vec3 normal{0.0f};  // NORMAL, gl_Normal; (0, 0, 0) where the mesh has none
+    glm::vec4 color{1.0f};   // COLOR_0, gl_Color; (1, 1, 1, 1) where none, alpha 1 for a vec3 colour
     // gl_MultiTexCoord1.st: TEXCOORD_1, or TEXCOORD_n (n >= 2) where the primitive's material reads
     // its base colour texture from set n (Material::texcoord); (0, 0) where the mesh has none.
     glm::vec2 texcoord1{0.0f};
@@ -50,25 +50,25 @@ struct Mesh {
     // (0, 0), as GL's gl_MultiTexCoord0 reads without an array bound; an atlas bake refuses the
     // mesh, and quadshade render warns when a shader reads them.
     bool has_texcoords = true;
-    bool has_normals = false;     // NORMAL
-    bool has_texcoord1 = false;   // the set Vertex::texcoord1 holds
+    bool has_normals = false;    // NORMAL
+    bool has_texcoord1 = false;  // the set Vertex::texcoord1 holds
     // The glTF primitive it was read from, for messages: "meshes[3].primitives[1]" (empty for a
     // mesh made in code).
-    std::string source;
+    std::string source{};
     // Its bounds in object space (positions), for ordering blended objects back to front.
     glm::vec3 lower{0.0f}, upper{0.0f};
 };
 
 struct Camera {
     enum class Kind { Perspective, Orthographic } kind = Kind::Perspective;
-    glm::dmat4 view{1.0};            // view_from_world
-    double yfov = 0.0;               // radians (perspective)
-    double xmag = 1.0, ymag = 1.0;   // half extents (orthographic)
+    glm::dmat4 view{1.0};           // view_from_world
+    double yfov = 0.0;              // radians (perspective)
+    double xmag = 1.0, ymag = 1.0;  // half extents (orthographic)
     double znear = 0.1, zfar = 100.0;
     // The width / height of the camera's view (glTF's perspective aspectRatio; xmag / ymag for an
     // orthographic camera); 0 where the file gives none.
     double aspect_ratio = 0.0;
-    std::string name;  // for messages and --camera: the camera node's name, else "cameras[i]"
+    std::string name{};  // for messages and --camera: the camera node's name, else "cameras[i]"
     // An orthographic camera whose view box is stretched to the image whatever its aspect (the
     // scene's extras.stretch): a full-window plane's, as the chapter's demo draws its plane.
     bool stretch = false;
@@ -160,7 +160,7 @@ struct Object {
     // Where the loaded scene has it (its nodes' own transforms, no animation applied): Scene::pose
     // gives it at a time. Composed in double.
     glm::dmat4 world_from_object{1.0};
-    std::string shader;   // catalogue name; empty when the file names none (the default material)
+    std::string shader;  // catalogue name; empty when the file names none (the default material)
     // The texture bound to the shaders' `teximage`: the material's baseColorTexture, or the file
     // its extras.teximage names. Index into Scene::textures, -1 for none.
     int texture = -1;
@@ -169,7 +169,7 @@ struct Object {
     // For messages: the glTF material that draws it ("'Red' (materials[2])"), or for a primitive
     // without one "no material (meshes[3].primitives[1])".
     std::string material;
-    Material look;  // glTF's base colour, alpha mode and unlit flag, for the default material
+    Material look{};  // glTF's base colour, alpha mode and unlit flag, for the default material
     // Values for the shader's own uniforms: the material's extras.uniforms, by name.
     std::vector<UniformSetting> uniforms;
     // The material's doubleSided. When false (glTF's default, a primitive without a material
@@ -190,7 +190,7 @@ struct Object {
 // glTF's node graph, kept for animation: each node's parent and its local transform.
 struct Node {
     std::string name;
-    int parent = -1;  // an index into Scene::nodes, always lower than the node's own
+    int parent = -1;          // an index into Scene::nodes, always lower than the node's own
     bool has_matrix = false;  // a matrix node (glTF forbids animating it)
     glm::dmat4 matrix{1.0};
     glm::dvec3 translation{0.0};
@@ -204,8 +204,8 @@ struct Node {
 struct Channel {
     enum class Path { Translation, Rotation, Scale } path = Path::Translation;
     enum class Interpolation { Linear, Step, CubicSpline } interpolation = Interpolation::Linear;
-    int node = 0;  // Scene::nodes
-    std::vector<double> times;   // increasing
+    int node = 0;               // Scene::nodes
+    std::vector<double> times;  // increasing
     // components() per value (3, or 4 for a rotation as x, y, z, w); CUBICSPLINE keeps three per
     // keyframe: in-tangent, value, out-tangent.
     std::vector<double> values;

@@ -122,7 +122,8 @@ struct GltfMaterial {
         const std::int32_t alpha_mode = int_uniform(u, uAlphaMode);
         if (alpha_mode == 1) out.discard_if(base.w < uniform<F>(u, uAlphaCutoff));
         const vec3<F> c = clamp(base.xyz(), 0.0f, 1.0f);
-        out.gl_FragColor = vec4<F>(encode_srgb(c.x), encode_srgb(c.y), encode_srgb(c.z), alpha_mode == 2 ? base.w : F(1.0f));
+        out.gl_FragColor =
+            vec4<F>(encode_srgb(c.x), encode_srgb(c.y), encode_srgb(c.z), alpha_mode == 2 ? base.w : F(1.0f));
         return out;
     }
 };

@@ -26,7 +26,7 @@ struct Case {
     const char* file;    // under scenes/assets
     const char* camera;  // --camera, empty for the first
     double time;
-    int width, height;   // 0: the scene's size
+    int width, height;  // 0: the scene's size
 };
 
 // Per case, what may differ: nothing (no documented cause has been needed yet).
@@ -52,9 +52,10 @@ void check(const Case& c) {
         << c.name << "," << width << "," << height << "," << n.covered << "," << n.coverage_mismatch << "," << n.over_1
         << "," << n.over_2 << "," << n.max_steps << "\n";
     if (n.coverage_mismatch || n.max_steps) write_comparison(q, ref, out / ("gltf-" + std::string(c.name) + ".png"));
-    std::printf("glTF scene %s at %dx%d vs llvmpipe: %zu covered, %zu coverage mismatches, %zu over 1/255, %zu over 2/255, "
-                "max %d/255\n",
-                c.name, width, height, n.covered, n.coverage_mismatch, n.over_1, n.over_2, n.max_steps);
+    std::printf(
+        "glTF scene %s at %dx%d vs llvmpipe: %zu covered, %zu coverage mismatches, %zu over 1/255, %zu over 2/255, "
+        "max %d/255\n",
+        c.name, width, height, n.covered, n.coverage_mismatch, n.over_1, n.over_2, n.max_steps);
     INFO(c.name << " at " << width << "x" << height << ": " << n.covered << " covered, " << n.coverage_mismatch
                 << " coverage mismatches, " << n.over_1 << " over 1/255, max " << n.max_steps << "/255");
     CHECK(n.covered > n.pixels / 20);
@@ -97,7 +98,8 @@ TEST_CASE("glTF scenes vs llvmpipe: KHR_mesh_quantization and normalized attribu
     check({"quantized", "gltf/quantized.gltf", "", 0.0, 0, 0});
 }
 
-TEST_CASE("glTF scenes vs llvmpipe: cameras by name and index, at sizes wider and narrower than each", "[conformance][gltf]") {
+TEST_CASE("glTF scenes vs llvmpipe: cameras by name and index, at sizes wider and narrower than each",
+          "[conformance][gltf]") {
     check({"cameras-first", "gltf/cameras.gltf", "", 0.0, 0, 0});
     check({"cameras-wide-portrait", "gltf/cameras.gltf", "Wide", 0.0, 90, 160});
     check({"cameras-top-view", "gltf/cameras.gltf", "Top view", 0.0, 0, 0});
@@ -105,11 +107,13 @@ TEST_CASE("glTF scenes vs llvmpipe: cameras by name and index, at sizes wider an
     check({"cameras-close-wide", "gltf/cameras.gltf", "2", 0.0, 200, 80});
 }
 
-TEST_CASE("glTF scenes vs llvmpipe: a modelling tool's export (interleaved, textured and not, blended)", "[conformance][gltf]") {
+TEST_CASE("glTF scenes vs llvmpipe: a modelling tool's export (interleaved, textured and not, blended)",
+          "[conformance][gltf]") {
     check({"workshop", "gltf/workshop.gltf", "", 0.0, 0, 0});
 }
 
-TEST_CASE("glTF scenes vs llvmpipe: a CAD assembly in a .glb (matrices, mirrored, flat, no camera)", "[conformance][gltf]") {
+TEST_CASE("glTF scenes vs llvmpipe: a CAD assembly in a .glb (matrices, mirrored, flat, no camera)",
+          "[conformance][gltf]") {
     check({"assembly", "gltf/assembly.glb", "", 0.0, 0, 0});
 }
 

@@ -58,7 +58,8 @@ json triangle_file(const std::vector<unsigned char>& extra = {}) {
                 {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
                 {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
                 {"bufferViews", {{{"buffer", 0}, {"byteLength", 36}}}},
-                {"buffers", {{{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + base64(bytes)}}}}};
+                {"buffers",
+                 {{{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + base64(bytes)}}}}};
 }
 
 void write(const std::filesystem::path& file, const json& doc) { std::ofstream(file) << doc.dump(1); }
@@ -72,7 +73,8 @@ TEST_CASE("glTF: triangle strips and fans are unrolled as GL draws them; points 
     REQUIRE(s.meshes.size() == 3);
     const std::vector<std::uint32_t>& strip = s.meshes[0].indices;
     REQUIRE(strip.size() == 3 * 32);  // 34 vertices: 32 triangles
-    CHECK(std::vector<std::uint32_t>(strip.begin(), strip.begin() + 9) == std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 2, 3, 4});
+    CHECK(std::vector<std::uint32_t>(strip.begin(), strip.begin() + 9) ==
+          std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3, 2, 3, 4});
     const std::vector<std::uint32_t>& fan = s.meshes[1].indices;
     REQUIRE(fan.size() == 3 * 12);  // 14 vertices, not indexed: 12 triangles around vertex 0
     CHECK(std::vector<std::uint32_t>(fan.begin(), fan.begin() + 6) == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
@@ -85,19 +87,24 @@ TEST_CASE("glTF: normalized and quantized attributes convert as glTF defines", "
     const auto dir = temp_dir("gltf-normalized");
     // TEXCOORD_0 as normalized bytes (-128, 127, 0, 64, -1, 1), COLOR_0 as normalized unsigned
     // bytes (VEC3), NORMAL as normalized shorts.
-    const std::vector<unsigned char> extra = {0x80, 0x7F, 0x00, 0x40, 0xFF, 0x01, 0, 0,  // 8 bytes of texcoords
-                                              255, 0, 51, 0, 255, 102, 127, 1, 0, 0, 0, 0,  // 9 bytes of colours, padded
+    const std::vector<unsigned char> extra = {0x80, 0x7F, 0x00, 0x40, 0xFF, 0x01, 0,   0,  // 8 bytes of texcoords
+                                              255,  0,    51,   0,    255,  102,  127, 1,
+                                              0,    0,    0,    0,                 // 9 bytes of colours, padded
                                               0xFF, 0x7F, 0x00, 0x80, 0x00, 0x00,  // 32767, -32768, 0
                                               0x01, 0x00, 0x01, 0x80, 0x00, 0x00,  // 1, -32767, 0
-                                              0x00, 0x00, 0x00, 0x00, 0xFF, 0x7F, 0, 0};  // 0, 0, 32767; padded
+                                              0x00, 0x00, 0x00, 0x00, 0xFF, 0x7F, 0,   0};  // 0, 0, 32767; padded
     json doc = triangle_file(extra);
     doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 6}});
     doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 9}});
     doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 56}, {"byteLength", 18}});
-    doc["accessors"].push_back({{"bufferView", 1}, {"componentType", 5120}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}});
-    doc["accessors"].push_back({{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}});
-    doc["accessors"].push_back({{"bufferView", 3}, {"componentType", 5122}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}});
-    doc["meshes"][0]["primitives"][0]["attributes"] = {{"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_0", 2}, {"NORMAL", 3}};
+    doc["accessors"].push_back(
+        {{"bufferView", 1}, {"componentType", 5120}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}});
+    doc["accessors"].push_back(
+        {{"bufferView", 2}, {"componentType", 5121}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}});
+    doc["accessors"].push_back(
+        {{"bufferView", 3}, {"componentType", 5122}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}});
+    doc["meshes"][0]["primitives"][0]["attributes"] = {
+        {"POSITION", 0}, {"TEXCOORD_0", 1}, {"COLOR_0", 2}, {"NORMAL", 3}};
     write(dir / "n.gltf", doc);
     const Scene s = load_scene(dir / "n.gltf");
     const std::vector<Vertex>& v = s.meshes[0].vertices;
@@ -125,7 +132,8 @@ TEST_CASE("glTF: normalized and quantized attributes convert as glTF defines", "
     // A component type glTF does not allow for an attribute is refused, naming it.
     doc["accessors"][2]["componentType"] = 5120;  // COLOR_0 as signed bytes
     write(dir / "bad.gltf", doc);
-    CHECK_THROWS_WITH(load_scene(dir / "bad.gltf"), Catch::Contains("attributes.COLOR_0") && Catch::Contains("BYTE normalized"));
+    CHECK_THROWS_WITH(load_scene(dir / "bad.gltf"),
+                      Catch::Contains("attributes.COLOR_0") && Catch::Contains("BYTE normalized"));
 }
 
 TEST_CASE("glTF: animations are posed as glTF interpolates (LINEAR, STEP, CUBICSPLINE, slerp), the camera too",
@@ -169,7 +177,8 @@ TEST_CASE("glTF: animations are posed as glTF interpolates (LINEAR, STEP, CUBICS
     CHECK(half == Approx(whole / 2).epsilon(1e-5));
     CHECK(whole < glm::pi<double>());
     // The child follows its animated parent; the camera's node moves.
-    CHECK(glm::distance(glm::dvec3(at(1.5, "Moon")[3]), glm::dvec3(at(1.5, "Spinner")[3])) == Approx(0.8).epsilon(1e-6));
+    CHECK(glm::distance(glm::dvec3(at(1.5, "Moon")[3]), glm::dvec3(at(1.5, "Spinner")[3])) ==
+          Approx(0.8).epsilon(1e-6));
     CHECK(glm::dvec3(glm::inverse(s.pose(2.0).view)[3]).z == Approx(6.0).epsilon(1e-6));
     CHECK(glm::dvec3(glm::inverse(s.pose(0.0).view)[3]).z == Approx(7.0).epsilon(1e-6));
 }
@@ -181,11 +190,13 @@ TEST_CASE("glTF: EXT_mesh_gpu_instancing draws the node's mesh once per instance
     // Instance 0's translation (-2, -2, -2) under the node's rotation.
     const glm::dmat4 node = s.objects[0].world_from_object * glm::inverse(s.objects[0].instance);
     CHECK(glm::distance(glm::dvec3(s.objects[0].instance[3]), glm::dvec3(-2.0)) < 1e-6);
-    CHECK(glm::distance(glm::dvec3(s.objects[0].world_from_object[3]), glm::dvec3(node * glm::dvec4(-2, -2, -2, 1))) < 1e-6);
+    CHECK(glm::distance(glm::dvec3(s.objects[0].world_from_object[3]), glm::dvec3(node * glm::dvec4(-2, -2, -2, 1))) <
+          1e-6);
     CHECK(s.objects[124].name == "Instances instance 124");
 }
 
-TEST_CASE("glTF: --camera picks a camera by node name, camera name or index; a wrong one lists them", "[scenes][gltf][camera]") {
+TEST_CASE("glTF: --camera picks a camera by node name, camera name or index; a wrong one lists them",
+          "[scenes][gltf][camera]") {
     const auto camera = [](const std::string& name) {
         SceneLoadOptions o;
         o.camera = name;
@@ -230,7 +241,8 @@ TEST_CASE("glTF: transforms are composed in double from the file's numbers, roun
     // float would keep 0.03125 (100000.03 is 100000.03125 in float).
     const auto dir = temp_dir("gltf-double");
     json doc = triangle_file();
-    doc["nodes"] = {{{"translation", {100000.03, 0, 0}}, {"children", {1}}}, {{"translation", {-100000.0, 0, 0}}, {"mesh", 0}}};
+    doc["nodes"] = {{{"translation", {100000.03, 0, 0}}, {"children", {1}}},
+                    {{"translation", {-100000.0, 0, 0}}, {"mesh", 0}}};
     doc["scenes"][0]["nodes"] = {0};
     write(dir / "far.gltf", doc);
     const Scene s = load_scene(dir / "far.gltf");
@@ -271,7 +283,8 @@ TEST_CASE("glTF: every bad material, accessor and texture is reported in one mes
     json doc = triangle_file();
     // Four primitives: a bad alphaMode, a bad texture reference, a normal accessor out of range,
     // and a good one.
-    doc["materials"] = {{{"alphaMode", "GLASS"}}, {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 4}}}}}}, json::object()};
+    doc["materials"] = {
+        {{"alphaMode", "GLASS"}}, {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 4}}}}}}, json::object()};
     doc["meshes"][0]["primitives"] = {{{"attributes", {{"POSITION", 0}}}, {"material", 0}},
                                       {{"attributes", {{"POSITION", 0}}}, {"material", 1}},
                                       {{"attributes", {{"POSITION", 0}, {"NORMAL", 9}}}, {"material", 2}},
@@ -284,9 +297,11 @@ TEST_CASE("glTF: every bad material, accessor and texture is reported in one mes
         const std::string m = e.what();
         INFO(m);
         CHECK(m.find("bad.gltf: materials[0].alphaMode: 'GLASS'") != std::string::npos);
-        CHECK(m.find("bad.gltf: materials[1].pbrMetallicRoughness.baseColorTexture.index: texture index out of range") !=
+        CHECK(
+            m.find("bad.gltf: materials[1].pbrMetallicRoughness.baseColorTexture.index: texture index out of range") !=
+            std::string::npos);
+        CHECK(m.find("bad.gltf: meshes[0].primitives[2].attributes.NORMAL: accessor index out of range") !=
               std::string::npos);
-        CHECK(m.find("bad.gltf: meshes[0].primitives[2].attributes.NORMAL: accessor index out of range") != std::string::npos);
         CHECK(std::count(m.begin(), m.end(), '\n') == 2);
     }
 }
@@ -326,28 +341,65 @@ TEST_CASE("glTF: the default material draws what names no shader, with the mater
           std::string::npos);
 }
 
+#if defined(QUADSHADE_HAS_RAYCAST)
+TEST_CASE("glTF: the ray caster draws the default material as the rasterizer does, posed, and refuses BLEND",
+          "[scenes][gltf][raycast]") {
+    // Within a step of 1/255 on all but a few pixels (the ray caster's own interpolation, as for
+    // every shader: tests/raycast), the flat normals from ray quads' derivatives included.
+    for (const auto& [file, time] :
+         {std::pair{"default-material.gltf", 0.0}, {"animation.gltf", 1.25}, {"instancing.glb", 0.0}}) {
+        Scene s = load_scene(kGltf / file);
+        FrameRequest raster, raycast;
+        raster.time = raycast.time = time;
+        raycast.backend = Backend::RayCaster;
+        const Framebuffer a = render_frame(s, raster), b = render_frame(s, raycast);
+        std::size_t over = 0, covered = 0;
+        for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+            covered += a.rgba[i + 3] > 0.5f;
+            for (int c = 0; c < 4; ++c) {
+                over += std::abs(int(unorm8(a.rgba[i + std::size_t(c)])) - int(unorm8(b.rgba[i + std::size_t(c)]))) > 1;
+            }
+        }
+        std::printf("ray caster against rasterizer, glTF %s at t = %g: %zu channels over 1/255, %zu covered pixels\n",
+                    file, time, over, covered);
+        INFO(file);
+        CHECK(covered > a.rgba.size() / 4 / 20);
+        CHECK(over <= covered / 200);
+    }
+    Scene blended = load_scene(kGltf / "alpha-modes.gltf");
+    FrameRequest raycast;
+    raycast.backend = Backend::RayCaster;
+    CHECK_THROWS_WITH(render_frame(blended, raycast), Catch::Contains("'Pane 0' (materials[3]): alphaMode BLEND") &&
+                                                          Catch::Contains("--backend raster"));
+}
+#endif
+
 TEST_CASE("glTF: missing texture coordinates are counted in one warning", "[scenes][gltf]") {
     Scene s = load_scene(kGltf / "assembly.glb");  // no TEXCOORD_0 anywhere
     FrameRequest r;
     r.shader_override = "dots";
     const SceneRenderer renderer(s, r);
     REQUIRE(renderer.notes().size() == 1);
-    CHECK(renderer.notes()[0].find("TEXCOORD_0 missing on 4 primitives of 3 meshes drawn by shaders that read it ('dots')") !=
+    CHECK(renderer.notes()[0].find(
+              "TEXCOORD_0 missing on 4 primitives of 3 meshes drawn by shaders that read it ('dots')") !=
           std::string::npos);
 }
 
-TEST_CASE("glTF: the command line renders every feature scene by default, and animations frame by frame", "[cli][gltf]") {
+TEST_CASE("glTF: the command line renders every feature scene by default, and animations frame by frame",
+          "[cli][gltf]") {
     const auto dir = temp_dir("gltf-cli");
-    for (const char* f : {"default-material.gltf", "alpha-modes.gltf", "texcoord-sets.gltf", "primitive-modes.gltf",
-                          "animation.gltf", "instancing.glb", "quantized.gltf", "cameras.gltf", "workshop.gltf", "assembly.glb"}) {
-        const std::string cmd = (kBin / "quadshade").string() + " render " + (kGltf / f).string() + " --size 48x32 -o " +
-                                (dir / "out.png").string() + " 2> /dev/null";
+    for (const char* f :
+         {"default-material.gltf", "alpha-modes.gltf", "texcoord-sets.gltf", "primitive-modes.gltf", "animation.gltf",
+          "instancing.glb", "quantized.gltf", "cameras.gltf", "workshop.gltf", "assembly.glb"}) {
+        const std::string cmd = (kBin / "quadshade").string() + " render " + (kGltf / f).string() +
+                                " --size 48x32 -o " + (dir / "out.png").string() + " 2> /dev/null";
         INFO(f);
         CHECK(std::system(cmd.c_str()) == 0);
     }
     // An animation's frames differ where things move.
     const std::string cmd = (kBin / "quadshade").string() + " render " + (kGltf / "animation.gltf").string() +
-                            " --size 48x36 --frames 0:2 --fps 2 -o " + (dir / "frame_%d.png").string() + " 2> /dev/null";
+                            " --size 48x36 --frames 0:2 --fps 2 -o " + (dir / "frame_%d.png").string() +
+                            " 2> /dev/null";
     REQUIRE(std::system(cmd.c_str()) == 0);
     auto slurp = [](const std::filesystem::path& p) {
         std::ifstream in(p, std::ios::binary);
