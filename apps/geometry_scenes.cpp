@@ -208,7 +208,7 @@ void write_hierarchy(const std::filesystem::path& file) {
     save_scene(s, file, nodes);
 }
 
-// The plane: 200 x 200 (8 x 8 cells), seen from 0.3 above, looking 4 degrees down: the
+// The grazing plane: 200 x 200 (8 x 8 cells), seen from 0.3 above, looking 4 degrees down: the
 // cells around the eye cross the near plane (0.1) and the screen's sides, the far ones meet
 // at the horizon. Odd size.
 Scene grazing_plane() {

@@ -1,6 +1,6 @@
 // Generates the scenes quadshade ships (scenes/assets): the Figure 1.1 scene, the solid textures'
-// sphere, the Table 1.1 plane and its texture, seed 001's spheres and the fast noise's volume,
-// seed 004's plane and its noise texture, the solids (sphere and torus), the conformance scenes
+// sphere, the Table 1.1 plane and its texture, the ProcTexGen spheres and the fast noise's volume,
+// Lawlor's plane and its noise texture, the solids (sphere and torus), the conformance scenes
 // (geometry_scenes.h, texture_scenes.h) and the meshes with UV atlases for `quadshade bake`
 // (atlas_scenes.h). The outputs are committed; a test regenerates them and compares.
 //
@@ -156,7 +156,7 @@ qs::Image test_image() {
     return img;
 }
 
-// Seed 004's tex4, which its text leaves to NetRun ("this looks better with a noisy repeating
+// Lawlor's tex4, which his text leaves to NetRun ("this looks better with a noisy repeating
 // image"): 32x32 white noise, each of red, green and blue a byte of the PCG hash of the texel and
 // channel, opaque (so that every pixel of a shader that returns the texture counts as covered).
 qs::Image8 white_noise_image() {
@@ -197,7 +197,7 @@ qs::Scene solids() {
     return s;
 }
 
-// Seed 004's plane: the Table 1.1 plane, its texture coordinates NetRun's `texcoords`, with the
+// Lawlor's plane: the Table 1.1 plane, its texture coordinates NetRun's `texcoords`, with the
 // two textures the snippets read: tex1 the Table 1.1 picture (smooth colours) and tex4 the white
 // noise, both repeating (the snippets read them far outside [0, 1]), bilinear, no mipmaps.
 qs::Scene seed_004_plane(const std::filesystem::path& dir) {
@@ -215,7 +215,7 @@ qs::Scene seed_004_plane(const std::filesystem::path& dir) {
     return s;
 }
 
-// Seed 001's fast noise volume (shading/shaders/fast_noise_volume.frag): 32^3 texels of 8^3-cell
+// The ProcTexGen fast noise's volume (shading/shaders/fast_noise_volume.frag): 32^3 texels of 8^3-cell
 // looping improved noise, R base 0 and G base 8, stored 0.5 + 0.5 n in 8 bits, as GL stores the
 // shader's colour (clamp, scale by 255, round to nearest). Texel (i, j, k) is the noise at P = 8
 // ((i, j, k) + 0.5) / 32, exact in float: the values `quadshade bake-volume --shader
@@ -241,7 +241,7 @@ qs::Image8 fast_noise_volume() {
     return img;
 }
 
-// Seed 001's solid textures on Figure 1.1's spheres and ground plane: improved noise against the
+// The ProcTexGen solid textures on Figure 1.1's spheres and ground plane: improved noise against the
 // fast noise (the blog's comparison, left and right), the looping noise, and the fast noise's
 // volume itself; fast_noise reads the volume above (REPEAT, trilinear, no mipmaps: the blog's
 // wrapped texcoord).

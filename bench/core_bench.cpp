@@ -1,9 +1,9 @@
 // quadshade-bench-core: the chapter's 2D simplex noise (Listing 1.3) over a 1024x1024 grid on every
 // number type, next to a plain loop written directly with std::experimental::simd at native
 // width, and the same noise rasterized as a full-screen quad. One run, so the ratios are fair:
-//   wide lane type / plain loop       goal >= 0.80 (the abstraction costs nothing)
-//   rasterized / plain loop, 1 thread goal >= 0.85 (rasterization keeps the throughput; #22,
-//                                     raised from 0.70)
+//   wide lane type / plain loop       target >= 0.80 (the abstraction costs nothing)
+//   rasterized / plain loop, 1 thread target >= 0.85 (rasterization keeps the throughput;
+//                                     docs/results.md, The targets across runs)
 // The same for an integer-hash shader (PCG value noise) and a loop that breaks per pixel (the
 // Mandelbrot set, 100 iterations): each rasterized at >= 0.70 of its plain loop. And GLSL sin
 // (llvmpipe's polynomial) against std::experimental::sin, with a nine-tap sine hash rasterized.
@@ -255,7 +255,7 @@ void BM_plain(benchmark::State& state) {
 
 // GLSL sin on the lanes (llvmpipe's polynomial, shading/number/sin_cos.h) against the library's
 // std::experimental::sin it replaced, on the sine hash's arguments: dot(p, (12.9898, 78.233))
-// over p in [0, 128)^2, the range of seed 003's 128 tiles.
+// over p in [0, 128)^2, the range of the OpenGL ES tutorial's 128 tiles.
 template <class F>
 [[gnu::flatten]] void BM_sin(benchmark::State& state) {
     constexpr int n = lanes_of<F>();

@@ -75,18 +75,18 @@ def throughput_sections(root):
     parts = []
     for name, title, text in (
             ("throughput.md", "Throughput against OSMesa llvmpipe (Table 1.1 plane)",
-             "Same run, same cores, in rounds that each measure every row in turn: the median over rounds of "
-             "each round's median Mfragments/s, with the rounds' min-max; llvmpipe at each vector width in its own "
-             "process; speedups taken within each round against its faster width, goal 2x."),
+             "Same run, same cores, in passes (--rounds) that each measure every row in turn: the median over the "
+             "passes of each pass's median Mfragments/s, with their min-max; llvmpipe at each vector width in its own "
+             "process; speedups taken within each pass against its faster width, target 2x."),
             ("specialisation.md", "Leaving out what a shader does not need",
              "ms per frame with the specialised pipeline against the general path (quads with helper "
-             "lanes and a depth buffer for every shader), median over rounds with their min-max."),
+             "lanes and a depth buffer for every shader), median over the passes with their min-max."),
             ("figure-1.1-frame.md", "Figure 1.1: rasterizer, ray caster and llvmpipe",
-             "One frame at 1264x400, median over rounds of each round's median frame, with the rounds' min-max; "
-             "ratios taken within each round; the BVH is built once per scene."),
+             "One frame at 1264x400, median over the passes of each pass's median frame, with their min-max; "
+             "ratios taken within each pass; the BVH is built once per scene."),
             ("scaling.md", "Thread scaling on the noise rows",
-             "quadshade alone at 1, 2 and 8 threads: median over rounds of each round's median frame time "
-             "(min-max over rounds); speedups per round against one thread."),
+             "quadshade alone at 1, 2 and 8 threads: median over the passes of each pass's median frame time "
+             "(min-max over the passes); speedups within each pass against one thread."),
             ("compare-builds.md", "This build against the previous one",
              "bench/compare-builds, quadshade-bench-core of both builds run in turn; a ratio below 1 is faster "
              "than the previous build.")):

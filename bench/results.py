@@ -7,6 +7,10 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
 `<!-- /results -->` and is replaced by what this script makes from:
   mesa         BUILD_DIR/reference-comparison-{llvmpipe,softpipe}.csv   (ctest: test_reference)
   conformance  BUILD_DIR/conformance/SCENE-{llvmpipe,softpipe}.csv      (ctest: test_conformance_*)
+  textures     BUILD_DIR/conformance/textures-{llvmpipe,softpipe}.csv   (test_conformance_* "[textures]",
+               every case in one process: bench/run-study runs them so)
+  large-coordinates
+               STUDY_DIR/stability.txt               (the [stability] tests, which bench/run-study runs)
   throughput, frame
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   scaling      STUDY_DIR/scaling.md                  (quadshade-bench-throughput --scaling)
@@ -17,8 +21,10 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
                STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
                                                                         (quadshade-bench-bake)
   host         this machine and the date
-A block whose input is missing is left as it was, and said so on stderr, so a partial run never
-blanks a table; the prose is written by hand and should be reread when the numbers move.
+Every block but `host` ends with the machine and date it was rewritten on, so that a page whose
+blocks come from different runs says which is which. A block whose input is missing is left as it
+was, and said so on stderr, so a partial run never blanks a table; the prose is written by hand and
+says how each table is measured and what it means.
 """
 import csv
 import datetime
@@ -104,6 +110,66 @@ def conformance_table(build):
     return out
 
 
+def textures_table(build):
+    """Per texture conformance scene: the shaders' sums against each driver, and which differ."""
+    paths = [os.path.join(build, "conformance", f"textures-{d}.csv") for d in ("llvmpipe", "softpipe")]
+    if not os.path.exists(paths[0]):
+        return None
+    scenes = OrderedDict()
+    for r in read_csv(paths[0]):
+        scenes.setdefault(r["scene"], []).append(r)
+    soft = OrderedDict()
+    if os.path.exists(paths[1]):
+        for r in read_csv(paths[1]):
+            soft.setdefault(r["scene"], []).append(r)
+
+    def sums(rows):
+        return (sum(int(r["over_1"]) for r in rows), sum(int(r["over_2"]) for r in rows),
+                max(int(r["max_steps"]) for r in rows), sum(int(r["coverage_mismatch"]) for r in rows))
+
+    out = ["| scene | shaders | covered pixels (each) | vs llvmpipe: >1/255 · >2/255 · max · coverage | "
+           "shaders bit-exact against llvmpipe (pixels that are not, per shader) | "
+           "vs softpipe: >1/255 · >2/255 · max · coverage |",
+           "|---|---|---|---|---|---|"]
+    for scene, rows in scenes.items():
+        inexact = [f"{r['shader']} {r['not_bit_exact']}" for r in rows if int(r["not_bit_exact"]) > 0]
+        exact = f"{len(rows) - len(inexact)} of {len(rows)}" + (f" ({', '.join(inexact)})" if inexact else "")
+        sp = soft.get(scene)
+        soft_cell = "{} · {} · {}/255 · {}".format(*sums(sp)) if sp else "-"
+        out.append(f"| {scene} | {len(rows)} | {rows[0]['covered']} | "
+                   "{} · {} · {}/255 · {}".format(*sums(rows)) + f" | {exact} | {soft_cell} |")
+    return out
+
+
+def large_coordinates_table(study):
+    """The table tests/shading/test_large_coordinates.cpp prints: per noise, the largest |float - double|
+    at each offset, plain and wrapped by the noise's period."""
+    path = os.path.join(study, "stability.txt")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        lines = f.read().splitlines()
+    try:
+        start = next(i for i, l in enumerate(lines) if l.startswith("large coordinates:"))
+    except StopIteration:
+        return None
+    offsets = lines[start + 1].split()[1:]
+    out = ["| noise | " + " | ".join(offsets) + " |", "|---|" + "---|" * len(offsets)]
+    name = None
+    for line in lines[start + 2:]:
+        label, values = line[:16].strip(), line[16:].split()
+        if line[16:].strip().startswith("float vs double"):
+            continue
+        if len(values) != len(offsets):
+            break
+        if label == "wrapped" and name:
+            out.append(f"| {name}, wrapped | " + " | ".join(values) + " |")
+        else:
+            name = label
+            out.append(f"| {name} | " + " | ".join(values) + " |")
+    return out if len(out) > 2 else None
+
+
 def markdown_file(study, name):
     path = os.path.join(study, name)
     if not os.path.exists(path):
@@ -161,6 +227,11 @@ def host_line():
             f"{platform.release()}, {datetime.date.today().isoformat()}."]
 
 
+def measured_line():
+    """The line that ends every generated table: where and when it was rewritten."""
+    return "_" + host_line()[0] + "_"
+
+
 def guard_table(study):
     """The previous build against this one, or a line saying this run had no previous build."""
     table = markdown_file(study, "compare-builds.md")
@@ -179,6 +250,8 @@ def main():
         "host": host_line,
         "mesa": lambda: mesa_table(build),
         "conformance": lambda: conformance_table(build),
+        "textures": lambda: textures_table(build),
+        "large-coordinates": lambda: large_coordinates_table(study),
         "throughput": lambda: markdown_file(study, "throughput.md"),
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
         "scaling": lambda: markdown_file(study, "scaling.md"),
@@ -201,6 +274,8 @@ def main():
         if not lines:
             print(f"results.py: {name}: no input in this run, kept as it was", file=sys.stderr)
             return m.group(0)
+        if name != "host":
+            lines = lines + ["", measured_line()]
         return m.group(1) + "\n".join(lines) + "\n" + m.group(4)
 
     new, n = block.subn(replace, text)

@@ -2,10 +2,10 @@
 // Whole cache lines: memory aligned to them, and streaming stores that write a line without
 // reading it first. A plain store to a line the cache does not hold reads the line from memory
 // before it changes it; a frame's colour (16 bytes a pixel, 16 MB at 1024x1024) is far larger
-// than the caches, so every line of it was read and written each frame, and the stores queued
-// behind those reads until the store buffer was full. The backends write the lines that nothing
-// writes again in a frame with streaming stores instead (core/block_rows.h; docs/results.md,
-// stop 46).
+// than the caches, so every line of it would be read and written each frame, and the stores queue
+// behind those reads until the store buffer is full. The backends write the lines that nothing
+// writes again in a frame with streaming stores instead (core/block_rows.h; docs/design.md, The
+// renderer core).
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The mutation run of issue #23: scenes made by breaking the shipped ones at random (a JSON value
+// The mutation run: scenes made by breaking the shipped ones at random (a JSON value
 // replaced by a hostile one, an array emptied, cut or multiplied, a key dropped, extras nested
 // deep, the buffer's bytes changed or cut), each loaded and rendered by both backends in a child
 // process under a time limit. Every scene must end in a frame or in a message (exit 0 or 1); a

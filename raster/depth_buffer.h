@@ -41,8 +41,8 @@ inline float depth24(float z) {
 
 // depth24 on every lane of a batch, to the bit.
 inline lanes16::Floats depth24(const lanes16::Floats& z) {
-    // max(z, 0) takes 0 where z is NaN (its second operand), as std::fmax; round mode 0xC is the
-    // current rounding mode without exceptions: std::nearbyint.
+    // max(z, 0) takes 0 where z is NaN (its second operand), as std::fmax; rounding control 0xC is
+    // the current rounding mode without exceptions: std::nearbyint.
 #if defined(__AVX512F__)
     // One register (as two halves, they met again through memory: a load spanning two stores
     // waits for both to be written, a stall on every block's depth test).

@@ -5,8 +5,7 @@
 //
 // Everything it reads is copied in, once per triangle, and a tile's loop keeps its own copy,
 // which the shader calls between its blocks cannot reach: read through the renderer's members,
-// every plane and choice was loaded and tested again after each (opaque) call. The rasterized
-// simplex square: 2.65-2.68 against 2.71-2.74 ms (fastest frames, rounds in turn).
+// every plane and choice would be loaded and tested again after each (opaque) call.
 
 #include <array>
 #include <cstddef>
@@ -109,8 +108,7 @@ public:
     // varying's x term at the tile's Columns columns of blocks computed once, a block's inputs
     // are then one step a varying (y's term) and the reciprocal's product, with the varyings'
     // count known to the compiler. The same numbers as fill: each lane's at<Fused> times the
-    // reciprocal. (Through fill, with its tests and its loop over the varyings, the simplex
-    // square's inputs took about 6% of its time.)
+    // reciprocal, without fill's tests and loop over the varyings (docs/design.md, Rasterizer).
     template <bool Fused, int Count, int Columns>
     class ColumnVaryings {
     public:

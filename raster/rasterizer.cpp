@@ -54,11 +54,8 @@ bool misses_tile(const TriangleSetup& t, int x0, int y0) {
 // framebuffer (no thread else writes there, so the result is the same for any thread count).
 // A whole block's colour is transposed in registers from lane order into its four pixel rows,
 // streamed past the caches (cache_lines.h) where they are final: the tile's last triangle
-// writing a block no other wrote, and the clear colour of blocks none wrote. (Streamed always,
-// rows that a later triangle writes again were read back from memory: the one-thread Figure 1.1
-// frame, spheres over ground, took 4-7% longer. Kept in a tile-local buffer and streamed at the
-// tile's end, the stores came in bursts the memory took more slowly than the shading made them:
-// the simplex square took 22-32% longer.)
+// writing a block no other wrote, and the clear colour of blocks none wrote (streaming more, or
+// from a tile buffer, measures slower: docs/design.md, The renderer core).
 // Blocks are cleared lazily: a block's first partial write clears it first, blocks never
 // written are cleared by finish(), and a block covered at once is never cleared at all.
 // Depth, when the frame needs it, stays tile-local in lane order, as the 24-bit values the
@@ -95,8 +92,7 @@ public:
             if (n <= 0) continue;
             // The block's sixteen divisions in one instruction, each lane's the scalar one's, then
             // its rows in pixel order in one shuffle: a block inside the image is stored a row at
-            // a time (stored lane by lane, a tile's work outside its triangles took 7.4% of the
-            // samples of a one-thread Figure 1.1 frame, 5.5% since).
+            // a time, not lane by lane with a bounds test per pixel.
             const lanes16::Floats d = lanes16::load(&depth_[block * kBatchLanes]) / kDepthCleared;
             alignas(64) float rows[kBatchLanes];
             lanes16::store(rows, __builtin_shufflevector(d, d, kLaneAt[0][0], kLaneAt[0][1], kLaneAt[0][2], kLaneAt[0][3],
@@ -277,9 +273,8 @@ private:
         }
     }
     // Writes batch h of a whole tile, the block at (bx, by): whole, or its lanes that did not
-    // discard. Inlined into the tile's loop whatever GCC's budget says: a variant of this file
-    // with more instantiations of the loop got it as a call per block, and the simplex square
-    // took 2.84-2.90 ms against 2.67-2.73 with it inlined.
+    // discard. Inlined into the tile's loop whatever GCC's budget says (a call per block is slower:
+    // docs/design.md, Rasterizer).
     [[gnu::always_inline]] void tile_block(int h, int bx, int by) {
         if (out_[h].discarded == 0) return write_whole(h, bx, by);
         for (int i = 0; i < kBatchLanes; ++i) {
@@ -470,12 +465,10 @@ private:
     LaneBatch pending_;
     bool frag_coord_set_ = true;  // in_[].frag_coord may hold numbers (it starts uninitialised)
     // The whole block waiting to be shaded with the next (shade_block), while waiting_: its
-    // top-left pixel packed in one word, stored and loaded whole. Kept as a struct of ints, it
-    // had bx and by stored apart and loaded as one 8-byte pair: a load the store buffer cannot
-    // forward, which waited for every older store to reach the cache, the previous pair's
-    // framebuffer rows among them (perf put 16% of a one-thread Figure 1.1 frame's samples on
-    // the instruction after it; without it, and with the triangle's inputs built in place, the
-    // frame took 3-4% less).
+    // top-left pixel packed in one word, stored and loaded whole. Stored as two ints and loaded as
+    // one 8-byte pair, it would be a load the store buffer cannot forward, waiting for every older
+    // store to reach the cache, the previous pair's framebuffer rows among them (docs/design.md,
+    // The renderer core).
     struct WaitingBlock {
         int bx, by;
         std::uint32_t mask;

@@ -47,9 +47,9 @@ struct RasterSettings {
 struct RasterOptions : ShadingSettings, RasterSettings {};
 
 // A frame's set-up triangles and tile bins, kept by a caller that renders many frames
-// (SceneRenderer) so that each reuses the memory of the last: allocated afresh, the Figure 1.1
-// frame's 1.7 MB of triangles were new pages, whose faults took a tenth of a one-thread frame,
-// all of it before the tiles run in parallel.
+// (SceneRenderer) so that each reuses the memory of the last: allocated afresh, their pages are
+// faulted in every frame, serially, before the tiles run in parallel (a tenth of a one-thread
+// Figure 1.1 frame).
 struct RasterMemory {
     std::vector<TriangleSetup> triangles;
     DepthBufferDecision depth;  // the last frame's, for a frame with the same triangles

@@ -61,8 +61,7 @@ EmbreeScene::EmbreeScene(int packet_width) : device_(std::make_unique<Device>())
     }
     rtcSetDeviceErrorFunction(device_->device, &Device::on_error, device_.get());
     // By default the widest packet this CPU traces natively: a wider one is split behind the
-    // call (on an AVX2 host a Figure 1.1 frame, one thread, took 79 ms with a 16-ray packet per
-    // block, 43 ms with two of 8).
+    // call, at about twice the cost (docs/design.md, Ray caster).
     auto native = [&](RTCDeviceProperty p) { return rtcGetDeviceProperty(device_->device, p) != 0; };
     packet_width_ = packet_width != 0                                    ? packet_width
                     : native(RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) ? 16

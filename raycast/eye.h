@@ -26,9 +26,8 @@ struct Eye {
     };
 
     // The rays through window points (xw, yw): the world points of NDC (x, y, -1) and (x, y, 1),
-    // h.xyz scaled by 1 / h.w, one division per point instead of three (sixteen-lane double
-    // divisions were half of the ray caster's block loop; measured, every ray-cast image of the
-    // shipped scenes, quad and analytic derivatives, stayed the same to the bit).
+    // h.xyz scaled by 1 / h.w, one division per point instead of three, since sixteen-lane
+    // double divisions dominate the block loop (the shipped scenes' ray-cast images are the same).
     Rays rays(const lanes16::Doubles& xw, const lanes16::Doubles& yw) const {
         using namespace lanes16;
         const Doubles x = xw * ndc_per_x - 1.0, y = yw * ndc_per_y - 1.0;

@@ -38,8 +38,7 @@ using Triangle = std::array<std::uint32_t, 3>;
 // has barycentric weights b1 = ((rel x e2) . n) / (n . n) and b2 = ((e1 x rel) . n) / (n . n)
 // (signed sub-triangle areas over the whole, e1 and e2 the edges from vertex 0), that is
 // rel . to_b1 and rel . to_b2 with the vectors below: a dot product each per ray, and no division
-// (waiting on sixteen-lane double divisions was a quarter of the fragment set-up's time, which
-// was a sixth of a ray-cast Figure 1.1 frame's).
+// (waiting on sixteen-lane double divisions would be a quarter of the fragment set-up's time).
 struct TrianglePlane {
     glm::dvec3 p0;            // vertex 0
     glm::dvec3 n;             // e1 x e2

@@ -1,9 +1,8 @@
 #pragma once
 // Where on the screen the scene's triangles may be seen, so that the ray caster writes the clear
-// colour into blocks that no ray can hit without tracing them (Figure 1.1's sky: about a
-// quarter of its blocks, whose rays took about 6% of a frame's time in Embree), and knows
-// without tracing what the rays of a block that lies well inside the only triangle seen there
-// hit (most of Figure 1.1's ground).
+// colour into blocks that no ray can hit without tracing them (Figure 1.1's sky: a quarter of
+// its blocks), and knows without tracing what the rays of a block that lies well inside the only
+// triangle seen there hit (most of Figure 1.1's ground).
 //
 // A triangle's footprint is its projection grown by the rounding of what Embree traces: float
 // vertices and float rays. Where Embree reports a hit, the exact ray through the pixel centre

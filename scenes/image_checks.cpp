@@ -66,8 +66,8 @@ std::int64_t exr_value_bytes(std::string_view type, std::span<const unsigned cha
     }
     if (type == "preview") {  // width, height, then 4 bytes a pixel
         if (value.size() < 8) return 8;
-        // Two 32-bit sizes: their product fits 64 bits, four times it may not (found by the
-        // image fuzzer, in this check's first version).
+        // Two 32-bit sizes: their product fits 64 bits, four times it may not (the image fuzzer
+        // finds such input).
         const std::uint64_t texels = std::uint64_t(little_endian_u32(&value[0])) * little_endian_u32(&value[4]);
         if (texels > (value.size() - 8) / 4) return -2;  // more than its size holds
         return 8 + 4 * std::int64_t(texels);

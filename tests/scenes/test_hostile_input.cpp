@@ -1,4 +1,4 @@
-// Hostile and careless input (issues #16 and #23): every case is refused with a message naming
+// Hostile and careless input (docs/reliability.md): every case is refused with a message naming
 // the file and the field, a non-zero exit and no partial or overwritten output; none crashes,
 // hangs, reads outside the scene's folder or allocates what the input merely claims.
 #include <catch2/catch.hpp>
@@ -463,7 +463,7 @@ TEST_CASE("output names: -o is a name, never a printf format", "[hostile][cli]")
     CHECK(frame_path("f%d-%09d.exr", 12) == "f12-000000012.exr");
     CHECK(frame_path("dir/plain.png", 3) == "dir/plain_0003.png");
     CHECK(frame_path("plain.png", 123456) == "plain_123456.png");
-    // The command line: exit 2 before anything is read or written (the issue's SIGSEGV).
+    // The command line: exit 2 before anything is read or written (a %n handed to printf would crash).
     const auto dir = temp_dir("hostile-format");
     const std::string base = kQuadshade + " render " + kPlane.string() + " --shader dots --size 16x8 --frames 3:3 -o ";
     auto [code, err] = run(base + "'" + (dir / "out_%n.png").string() + "'", dir);
