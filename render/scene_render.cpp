@@ -76,7 +76,11 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
         // The default material reads white where the material has no base colour texture, as
         // glTF asks; another shader is told once, with every material it concerns.
         if (shader != kDefaultMaterialShader) {
-            missing_samplers_[shader + "' samples '" + std::string(uniform)].push_back(o.material);
+            std::vector<std::string>& materials = missing_samplers_[shader + "' samples '" + std::string(uniform)];
+            // Objects share materials: a material is counted once, however many nodes draw it.
+            if (std::find(materials.begin(), materials.end(), o.material) == materials.end()) {
+                materials.push_back(o.material);
+            }
         }
         return white_texture(dims);
     }

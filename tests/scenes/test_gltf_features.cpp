@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -338,6 +339,18 @@ TEST_CASE("glTF: the default material draws what names no shader, with the mater
     CHECK(t.notes()[0].find("TEXCOORD_0 missing on 3 primitives of 3 meshes drawn by shaders that read it "
                             "('single_texture')") != std::string::npos);
     CHECK(t.notes()[1].find("shader 'single_texture' samples 'teximage', which 4 materials bind no texture to") !=
+          std::string::npos);
+
+    // Materials, not the objects drawing them: the workshop draws some of its untextured materials more than once.
+    Scene workshop = load_scene(kGltf / "workshop.gltf");
+    std::set<std::string> untextured;
+    for (const Object& o : workshop.objects) {
+        if (o.texture_for("teximage") < 0) untextured.insert(o.material);
+    }
+    REQUIRE(untextured.size() == 5);
+    const SceneRenderer w(workshop, single);
+    REQUIRE(w.notes().size() == 1);
+    CHECK(w.notes()[0].find("shader 'single_texture' samples 'teximage', which 5 materials bind no texture to") !=
           std::string::npos);
 }
 
