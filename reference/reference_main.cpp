@@ -134,6 +134,9 @@ int main(int argc, char** argv) {
     } catch (const qs::UniformOptionError& e) {  // a --uniform no program has
         std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
         return 2;
+    } catch (const qs::CameraOptionError& e) {  // a --camera the scene does not have
+        std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
+        return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
         return 1;

@@ -1420,7 +1420,7 @@ private:
                     list += (list.empty() ? "" : ", ") + std::to_string(c.camera) +
                             (name.empty() ? "" : " '" + name + "'") + " (nodes[" + std::to_string(c.gltf_node) + "])";
                 }
-                throw SceneError(path_.string() + ": --camera " + wanted +
+                throw CameraOptionError(path_.string() + ": --camera " + wanted +
                                  ": no camera node of that name or cameras[] index" +
                                  (list.empty() ? " (the file has no camera)" : "; the file's cameras: " + list));
             }

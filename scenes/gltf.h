@@ -59,6 +59,13 @@ struct SceneLoadOptions {
     std::string camera;
 };
 
+// A SceneLoadOptions::camera that names none of the file's cameras: the command line's fault (bad
+// usage, exit 2), where a SceneError is the file's.
+class CameraOptionError : public SceneError {
+public:
+    using SceneError::SceneError;
+};
+
 // Throws SceneError naming the file and the field at fault. Everything scenes/limits.h bounds is
 // checked before it is allocated; buffer and image URIs, and extras.teximage, are resolved by
 // resolve_scene_uri (scene_files.h) and must lie in the scene's folder unless

@@ -21,6 +21,7 @@
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "scenes/object_uniforms.h"
+#include "tests/test_command.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -210,6 +211,7 @@ TEST_CASE("glTF: --camera picks a camera by node name, camera name or index; a w
     CHECK_THROWS_WITH(camera("Side"), Catch::Contains("--camera Side") && Catch::Contains("0 'Wide'") &&
                                           Catch::Contains("1 'Top'") && Catch::Contains("2 'Close'"));
     CHECK_THROWS_WITH(camera("7"), Catch::Contains("no camera node"));
+    CHECK_THROWS_AS(camera("7"), CameraOptionError);  // the command line's fault: exit 2
 }
 
 TEST_CASE("glTF: cameras keep their height and widen, never stretch; the default camera frames the scene at any size",
@@ -424,6 +426,13 @@ TEST_CASE("glTF: the command line renders every feature scene by default, and an
                             " --camera 'Top view' --size 48x32 -o " + (dir / "top.png").string() + " 2> /dev/null";
     CHECK(std::system(cam.c_str()) == 0);
     CHECK(slurp(dir / "top.png") != slurp(dir / "out.png"));
+    // A camera the file does not have is bad usage, like any option the scene cannot take.
+    std::string err;
+    CHECK(test::run((kBin / "quadshade").string() + " render " + (kGltf / "cameras.gltf").string() +
+                        " --camera Side -o " + (dir / "side.png").string(),
+                    &err, dir / "side.err") == 2);
+    CHECK(err.find("--camera Side: no camera node of that name") != std::string::npos);
+    CHECK(!std::filesystem::exists(dir / "side.png"));
 }
 
 }  // namespace qs
