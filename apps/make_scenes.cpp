@@ -17,6 +17,7 @@
 
 #include "apps/atlas_scenes.h"
 #include "apps/geometry_scenes.h"
+#include "apps/gltf_scenes.h"
 #include "apps/texture_scenes.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
@@ -112,9 +113,10 @@ qs::Scene sphere() {
 qs::Scene table_1_1_plane(const std::filesystem::path& dir) {
     qs::Scene s;
     s.meshes = {square_mesh()};
-    // Orthographic camera at z = 1 looking down -z: the square fills the window exactly.
+    // Orthographic camera at z = 1 looking down -z: the square fills the window exactly, at any size.
     s.camera.kind = qs::Camera::Kind::Orthographic;
     s.camera.xmag = 1.0f, s.camera.ymag = 1.0f, s.camera.znear = 0.5f, s.camera.zfar = 1.5f;
+    s.camera.stretch = true;  // the plane fills any window, as the chapter's demo draws it
     s.camera.view = glm::translate(glm::mat4(1), {0, 0, -1});
     s.clear_color = {0, 0, 0, 1};
     s.width = 500, s.height = 500;
@@ -264,9 +266,10 @@ qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
 
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
-        std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,\n"
-                             "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/ and bake/.\n");
+        std::fprintf(stderr,
+                     "usage: quadshade-make-scenes OUTPUT_DIR\n"
+                     "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,\n"
+                     "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/, bake/ and gltf/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -284,6 +287,7 @@ int main(int argc, char** argv) {
         qs::write_geometry_scenes(dir);
         qs::write_texture_scenes(dir);
         qs::write_atlas_scenes(dir);
+        qs::write_gltf_scenes(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
         return 1;

@@ -23,6 +23,7 @@
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"
+#include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/output_file.h"
 #include "scenes/temporary_file.h"
@@ -425,6 +426,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const UniformOptionError& e) {  // a bad --uniform, or one no drawn shader takes
+        std::fprintf(stderr, "quadshade: %s\n", e.what());
+        return kExitUsage;
+    } catch (const CameraOptionError& e) {  // a --camera the scene does not have
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const UnsupportedRequest& e) {  // options no backend honours together

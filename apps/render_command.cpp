@@ -38,13 +38,19 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
            "--size", [&r](const std::vector<int>& v) { r.width = v[0], r.height = v[1]; },
            "image size (default: the scene's, e.g. 1264x400 for Figure 1.1)")
         ->delimiter('x')->expected(2)->check(CLI::Range(1, 1 << 15))->option_text("WxH");
-    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--time", r.time, "the `time` uniform and the animations' time, in seconds (default: the scene's)")
+        ->check(kFinite)
+        ->option_text("T");
     cmd.add_option("--frames", a.frames, "render frames A..B (inclusive) at time = frame / fps")
         ->delimiter(':')->check(CLI::Range(0, 1000000))->option_text("A:B");
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
     add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    cmd.add_option("--camera", a.load.camera,
+                   "the camera to render from: a camera node's or camera's name, or an\n"
+                   "index into the file's cameras[] (default: the first camera node)")
+        ->option_text("NAME|INDEX");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--uniform", a.uniforms,
                    "a shader's own uniform, for every object whose shader declares it\n"
@@ -266,7 +272,8 @@ int cmd_render(RenderArgs& a) {
     for (const std::string& plugin : a.plugins) load_plugin(plugin);
     const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
     Scene scene = load_scene(a.scene, a.load);
-    for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
+    for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
+    check_programs(scene, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {
         check_output(path_of(a.output, f), scene.inputs, "-o");
         if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");

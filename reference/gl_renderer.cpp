@@ -16,6 +16,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "reference/texture_image.h"
+#include "scenes/object_uniforms.h"
 
 namespace qs {
 
@@ -230,11 +231,10 @@ GlSceneRenderer::GlSceneRenderer(const Scene& scene, const GlFrameRequest& reque
 void GlSceneRenderer::prepare(GlPrograms& programs) {
     context_.make_current();
     for (const Object& o : scene_.objects) {
-        const std::string& name = request_.shader_override.empty() ? o.shader : request_.shader_override;
-        if (name.empty()) {
-            throw std::runtime_error(scene_.file.string() + ": material '" + o.material + "' of '" + o.name +
-                                     "' names no shader (extras.shader); pass --shader NAME");
-        }
+        const std::string name = !request_.shader_override.empty() ? request_.shader_override
+                                 : !o.shader.empty()               ? o.shader
+                                                                   : std::string(kDefaultMaterialShader);
+        shaders_.push_back(name);
         const GLuint p = programs.program(name, request_.atlas);
         programs_.push_back(p);
         std::vector<Binding> bindings;
@@ -256,9 +256,8 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
     for (const UniformSetting& s : request_.uniforms) {
         bool found = false;
         for (std::size_t i = 0; i < programs_.size(); ++i) {
-            const std::string& name = request_.shader_override.empty() ? scene_.objects[i].shader : request_.shader_override;
             found = found || glGetUniformLocation(programs_[i], s.name.c_str()) >= 0 ||
-                    glsl_declares(programs.glsl_dir(), name, s.name);
+                    glsl_declares(programs.glsl_dir(), shaders_[i], s.name);
         }
         if (!found) throw UniformOptionError(s.origin + ": no shader in this scene declares a uniform '" + s.name + "'");
     }
@@ -307,13 +306,9 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
 const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
                                                             const std::string& uniform, int dims) {
     const int index = o.texture_for(uniform);
-    const std::string what = scene_.file.string() + ": material '" + o.material + "': shader '" + shader + "' samples " +
+    const std::string what = scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
                              (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + uniform + "'";
-    if (index < 0) {
-        throw std::runtime_error(what + (uniform == "teximage" ? " but the material has no pbrMetallicRoughness.baseColorTexture, "
-                                                                 "extras.teximage or extras.textures.teximage"
-                                                               : " but the material's extras.textures binds no texture to it"));
-    }
+    if (index < 0) return white(dims);
     const qs::Texture& source = scene_.textures[std::size_t(index)];
     if (source.dims != dims) throw std::runtime_error(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture");
     Texture& t = textures_[std::size_t(index)];
@@ -357,8 +352,29 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
     return t;
 }
 
+const GlSceneRenderer::Texture& GlSceneRenderer::white(int dims) {
+    Texture& t = white_[dims == 3 ? 1 : 0];
+    if (t.id) return t;
+    const GLubyte texel[4] = {255, 255, 255, 255};
+    t.target = dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+    t.width = t.height = 1;
+    glGenTextures(1, &t.id);
+    glBindTexture(t.target, t.id);
+    if (dims == 3) {
+        glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    } else {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    }
+    glTexParameteri(t.target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(t.target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
 GlSceneRenderer::~GlSceneRenderer() {
     for (const Texture& t : textures_) {
+        if (t.id) glDeleteTextures(1, &t.id);
+    }
+    for (const Texture& t : white_) {
         if (t.id) glDeleteTextures(1, &t.id);
     }
 }
@@ -366,22 +382,23 @@ GlSceneRenderer::~GlSceneRenderer() {
 void GlSceneRenderer::draw() {
     context_.make_current();
     const int width = context_.width(), height = context_.height();
-    const float aspect = float(width) / float(height);
-    const float time = request_.time.value_or(scene_.time);
+    const double aspect = double(width) / double(height);
+    const double time = request_.time.value_or(double(scene_.time));
+    const Pose pose = scene_.pose(time);
     glViewport(0, 0, width, height);
     glClearColor(scene_.clear_color.r, scene_.clear_color.g, scene_.clear_color.b, scene_.clear_color.a);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glCullFace(GL_BACK);
-    glDisable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+    for (const std::size_t i : scene_.draw_order(pose)) {
         const Object& o = scene_.objects[i];
         const GLuint p = programs_[i];
         glUseProgram(p);
         // The scene model's MVP, as the projection; gl_ModelViewProjectionMatrix = P * I.
-        const glm::mat4 mvp = scene_.model_view_projection(o, aspect);
+        const glm::mat4 mvp = scene_.clip_from_object(pose, i, aspect);
         glMatrixMode(GL_PROJECTION);
         glLoadMatrixf(glm::value_ptr(mvp));
         glMatrixMode(GL_MODELVIEW);
@@ -392,11 +409,29 @@ void GlSceneRenderer::draw() {
             glDisable(GL_CULL_FACE);
         } else {
             glEnable(GL_CULL_FACE);
-            glFrontFace(o.mirrors() ? GL_CW : GL_CCW);
+            glFrontFace(mirrors(pose, i) ? GL_CW : GL_CCW);
         }
-        if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
+        // glTF's alphaMode BLEND, for the default material: blended over what is drawn, no depth writes.
+        const bool blend =
+            o.look.alpha_mode == AlphaMode::Blend && shaders_[i] == kDefaultMaterialShader && !request_.atlas;
+        if (blend) {
+            glEnable(GL_BLEND);
+        } else {
+            glDisable(GL_BLEND);
+        }
+        glDepthMask(blend ? GL_FALSE : GL_TRUE);
+        if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, float(time));
         if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
             glUniform2f(loc, float(width), float(height));
+        }
+        // The scene's values where the program has the uniform, then the material's and --uniform's.
+        const std::vector<std::pair<std::string, GLenum>> active = active_uniforms(p);
+        for (const UniformSetting& s : object_uniforms(scene_, i, pose, aspect)) {
+            for (const auto& [name, type] : active) {
+                if (name == s.name && gl_uniform_type(type).components == int(s.values.size())) {
+                    set_uniform(glGetUniformLocation(p, name.c_str()), type, s.values);
+                }
+            }
         }
         for (const UniformValue& u : uniforms_[i]) set_uniform(u.location, u.type, u.values);
         for (const Binding& b : bound_[i]) {
@@ -406,17 +441,27 @@ void GlSceneRenderer::draw() {
         }
         if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) {
             const int teximage = o.texture_for("teximage");
-            if (teximage < 0 || !textures_[std::size_t(teximage)].id) throw std::runtime_error(o.material + ": dims without teximage");
-            const Texture& t = textures_[std::size_t(teximage)];
+            const Texture& t = teximage < 0 ? white(2) : textures_[std::size_t(teximage)];
+            if (!t.id) throw std::runtime_error(o.material + ": dims without teximage");
             glUniform2f(loc, float(t.width), float(t.height));
         }
         const Mesh& mesh = scene_.meshes[o.mesh];
         glEnableClientState(GL_VERTEX_ARRAY);
-        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
         glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].position);
-        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].texcoord);
+        glNormalPointer(GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].normal);
+        glColorPointer(4, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].color);
+        for (const GLenum unit : {GL_TEXTURE0, GL_TEXTURE1}) {  // gl_MultiTexCoord0, gl_MultiTexCoord1
+            glClientActiveTexture(unit);
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+            glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex),
+                              unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
+        }
+        glClientActiveTexture(GL_TEXTURE0);
         glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
     }
+    glDepthMask(GL_TRUE);
     glFinish();
     if (GLenum e = glGetError(); e != GL_NO_ERROR) throw std::runtime_error("OpenGL error " + std::to_string(e));
 }

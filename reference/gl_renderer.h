@@ -6,10 +6,18 @@
 // are decoded here (texture_image.h) and uploaded in glTF's orientation (the image's first row at
 // t = 0; a 3D texture's slices are the image's bands of rows, glTexImage3D's own order) with the
 // sampler's wraps and filters, and glGenerateMipmap when the minification filter reads mipmaps.
+// A material that names no shader is drawn with the default material's GLSL
+// (kDefaultMaterialShader), a sampler its material binds no texture to reads a 1x1 white texture,
+// and the uniforms the scene gives (scenes/object_uniforms.h) are set by name where a program has
+// them, the material's extras.uniforms and --uniform over them. The objects are posed at the
+// frame's time (Scene::pose) and drawn in Scene::draw_order, each with gl_Vertex, gl_Normal,
+// gl_Color, gl_MultiTexCoord0 and gl_MultiTexCoord1 from the scene's vertices, and the
+// projection matrix the scene model's clip_from_object (gl_ModelViewProjectionMatrix = P * I).
 // Fixed-function state: depth test LESS against a buffer cleared to 1, back faces culled unless
 // the material is doubleSided (front faces clockwise where the node mirrors; no culling in an
-// atlas bake), no blending. Shared with the renderer: the scene model and the GLSL text, nothing
-// else.
+// atlas bake); blending (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, depth writes off) for the default
+// material's alphaMode BLEND, none otherwise. Shared with the renderer: the scene model and the
+// GLSL text, nothing else.
 
 #include <cstdint>
 #include <filesystem>
@@ -26,7 +34,7 @@ namespace qs {
 
 struct GlFrameRequest {
     int width = 0, height = 0;
-    std::optional<float> time;
+    std::optional<double> time;  // the scene's own by default
     std::string shader_override;  // draw every object with this shader's GLSL
     // --uniform values, replacing the materials' of the same name for every program that has
     // that uniform; one no program has is refused (UniformOptionError).
@@ -108,6 +116,7 @@ private:
     std::vector<UniformValue> uniform_values(unsigned program, const std::string& shader,
                                              const std::vector<UniformSetting>& settings, const std::filesystem::path& glsl_dir) const;
     const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims);
+    const Texture& white(int dims);
 
     const Scene& scene_;
     GlFrameRequest request_;
@@ -117,6 +126,8 @@ private:
     std::vector<std::vector<Binding>> bound_;  // per object, its program's samplers
     std::vector<std::vector<UniformValue>> uniforms_;  // per object
     std::vector<Texture> textures_;        // per scene texture, id 0 until uploaded
+    Texture white_[2];                     // 2D and 3D, id 0 until made
+    std::vector<std::string> shaders_;     // per object, the shader it is drawn with
 };
 
 }  // namespace qs

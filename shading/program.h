@@ -205,11 +205,11 @@ struct Uniforms {
 };
 
 struct VertexIn {
-    glm::vec3 position;                 // object space (gl_Vertex.xyz)
-    glm::vec2 texcoord;                 // gl_MultiTexCoord0.st (glTF TEXCOORD_0)
-    glm::vec3 normal{0.0f};             // gl_Normal (glTF NORMAL)
-    glm::vec4 color{1.0f};              // gl_Color (glTF COLOR_0)
-    glm::vec2 texcoord1{0.0f};          // gl_MultiTexCoord1.st (glTF TEXCOORD_1)
+    glm::vec3 position;           // object space (gl_Vertex.xyz)
+    glm::vec2 texcoord;           // gl_MultiTexCoord0.st
+    glm::vec3 normal{0.0f};       // gl_Normal: glTF's NORMAL, (0, 0, 0) where the mesh has none
+    glm::vec4 color{1.0f};        // gl_Color: COLOR_0, (1, 1, 1, 1) where none; a vec3 colour has alpha 1
+    glm::vec2 texcoord1{0.0f};    // gl_MultiTexCoord1.st: TEXCOORD_1
 };
 struct VertexOut {
     glm::vec4 clip;  // gl_Position

@@ -72,9 +72,10 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "products put one pixel on the jump's other side (measured: 1 pixel, 83/255)"}},
     // Against softpipe (coarse-lower, right-top, separately rounded interpolation, as tests/reference):
     {{"torus-rolled/*", "softpipe"}, {8, 6, 2, "softpipe's edges and interpolation (below); measured at most 5, 4, 1"}},
-    {{"overlap/*", "softpipe"}, {6, 6, 2, "softpipe's edges and interpolation (below); measured at most 4, 4, 1"}},
+    {{"overlap/*", "softpipe"}, {10, 9, 2, "softpipe's edges and interpolation (below); measured at most 8, 7, 1 (spots)"}},
     {{"overlap-reversed/*", "softpipe"}, {5, 4, 0, "softpipe's interpolation (below); measured at most 3, 2 (spots)"}},
-    {{"hierarchy/*", "softpipe"}, {4, 3, 0, "softpipe's interpolation (below); measured at most 2, 1"}},
+    {{"hierarchy/*", "softpipe"},
+     {7, 6, 0, "softpipe's interpolation (below); measured at most 5, 4 (the Manhattan 3D Worley noises)"}},
     {{"hierarchy/spots", "softpipe"}, {35, 30, 0, "softpipe's interpolation (below); measured 27, 23"}},
     {{"hierarchy/spots_length", "softpipe"}, {30, 25, 0, "softpipe's interpolation (below); measured 22, 18"}},
     {{"grazing-plane/*", "softpipe"}, {55, 30, 0, "softpipe's interpolation (below); measured at most 43, 18 (rings)"}},
