@@ -1,12 +1,12 @@
 #include "render/volume_bake.h"
 
-#include "shading/catalogue.h"
-
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "shading/catalogue.h"
 
 namespace qs {
 
