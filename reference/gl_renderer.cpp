@@ -231,6 +231,12 @@ GlSceneRenderer::GlSceneRenderer(const Scene& scene, const GlFrameRequest& reque
 void GlSceneRenderer::prepare(GlPrograms& programs) {
     context_.make_current();
     for (const Object& o : scene_.objects) {
+        if (request_.shader_override.empty() && !o.glsl_fragment.empty()) {
+            // Its vertex shader may be one quadshade's front end writes, which the reference does not include.
+            throw std::runtime_error(scene_.file.string() + ": " + o.material + ": extras.glsl: a material drawn by its own GLSL "
+                                     "file is not rendered by the reference; compare it with quadshade check --glsl " +
+                                     o.glsl_fragment.string());
+        }
         const std::string name = !request_.shader_override.empty() ? request_.shader_override
                                  : !o.shader.empty()               ? o.shader
                                                                    : std::string(kDefaultMaterialShader);

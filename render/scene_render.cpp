@@ -7,6 +7,7 @@
 #include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
 #include "render/atlas_program.h"
+#include "render/glsl_shaders.h"
 #include "render/textures.h"
 #include "render/uniform_binding.h"
 #include "scenes/object_uniforms.h"
@@ -18,6 +19,15 @@
 namespace qs {
 
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override) {
+    if (shader_override.empty() && !object.glsl_fragment.empty()) {
+        try {
+            const std::optional<std::filesystem::path> vertex =
+                object.glsl_vertex.empty() ? std::nullopt : std::optional<std::filesystem::path>(object.glsl_vertex);
+            return *load_glsl_shader(object.glsl_fragment, vertex).program;
+        } catch (const std::runtime_error& e) {
+            throw SceneError(scene.file.string() + ": " + object.material + ": extras.glsl: " + e.what());
+        }
+    }
     const std::string& name = !shader_override.empty() ? shader_override
                               : !object.shader.empty() ? object.shader
                                                        : std::string(kDefaultMaterialShader);

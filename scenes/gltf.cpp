@@ -1260,6 +1260,32 @@ private:
         return r.ok ? &r : nullptr;
     }
 
+    // extras.glsl: "FRAG" or {"fragment": "FRAG", "vertex": "VERT"}, files beside the scene.
+    void read_glsl_files(const tinygltf::Value& v, const std::string& field, Object& o) {
+        if (!o.shader.empty()) fail(path_, field, "the material names a shader too (extras.shader): give one of them");
+        auto file = [&](const tinygltf::Value& name, const std::string& f) {
+            if (!name.IsString() || name.Get<std::string>().empty()) fail(path_, f, "expected a GLSL file name");
+            std::filesystem::path resolved;
+            try {
+                resolved = resolve_scene_uri(path_, name.Get<std::string>(), options_.paths);
+            } catch (const SceneError& e) {
+                fail(path_, f, e.what());
+            }
+            scene_.inputs.push_back(resolved);
+            return resolved;
+        };
+        if (v.IsString()) {
+            o.glsl_fragment = file(v, field);
+            return;
+        }
+        if (!v.IsObject() || !v.Has("fragment")) fail(path_, field, "expected a file name or {\"fragment\": FRAG, \"vertex\": VERT}");
+        for (const std::string& key : v.Keys()) {
+            if (key != "fragment" && key != "vertex") fail(path_, field + "." + key, "unknown field (fragment, vertex)");
+        }
+        o.glsl_fragment = file(v.Get("fragment"), field + ".fragment");
+        if (v.Has("vertex")) o.glsl_vertex = file(v.Get("vertex"), field + ".vertex");
+    }
+
     Object read_material(int mi) {
         const tinygltf::Material& gmat = m_.materials[std::size_t(mi)];
         const std::string mf = indexed("materials", std::size_t(mi));
@@ -1270,6 +1296,7 @@ private:
             if (!gmat.extras.Get("shader").IsString()) fail(path_, mf + ".extras.shader", "expected a shader name");
             o.shader = gmat.extras.Get("shader").Get<std::string>();
         }
+        if (gmat.extras.IsObject() && gmat.extras.Has("glsl")) read_glsl_files(gmat.extras.Get("glsl"), mf + ".extras.glsl", o);
         Material& look = o.look;
         const tinygltf::PbrMetallicRoughness& pbr = gmat.pbrMetallicRoughness;
         if (pbr.baseColorFactor.size() != 4) {
@@ -1612,6 +1639,14 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
         mat.doubleSided = o.double_sided;
         tinygltf::Value::Object extras;
         if (!o.shader.empty()) extras["shader"] = tinygltf::Value(o.shader);
+        if (!o.glsl_fragment.empty()) {
+            auto beside = [&](const std::filesystem::path& f) {
+                return tinygltf::Value(std::filesystem::relative(f, path.parent_path()).generic_string());
+            };
+            tinygltf::Value::Object glsl{{"fragment", beside(o.glsl_fragment)}};
+            if (!o.glsl_vertex.empty()) glsl["vertex"] = beside(o.glsl_vertex);
+            extras["glsl"] = tinygltf::Value(glsl);
+        }
         if (!o.uniforms.empty()) {
             tinygltf::Value::Object uniforms;
             for (const UniformSetting& u : o.uniforms) {

@@ -161,6 +161,9 @@ struct Object {
     // gives it at a time. Composed in double.
     glm::dmat4 world_from_object{1.0};
     std::string shader;  // catalogue name; empty when the file names none (the default material)
+    // A user's GLSL that draws it instead (the material's extras.glsl), files the scene names,
+    // resolved as its textures are; empty for none. The vertex shader may be left out.
+    std::filesystem::path glsl_fragment, glsl_vertex;
     // The texture bound to the shaders' `teximage`: the material's baseColorTexture, or the file
     // its extras.teximage names. Index into Scene::textures, -1 for none.
     int texture = -1;
