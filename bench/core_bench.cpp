@@ -177,8 +177,8 @@ template <class F>
 void BM_pcg_value_noise(benchmark::State& state) {
     run_grid<F>(state, [](const vec2<F>& st) {
         const vec2<F> p = st * 16.0f;
-        return 0.5f * shaders::value_noise(p) + 0.25f * shaders::value_noise(p * 2.0f + 17.0f) +
-               0.125f * shaders::value_noise(p * 4.0f + 31.0f) + 0.0625f * shaders::value_noise(p * 8.0f + 47.0f);
+        return 0.5f * noise::value_noise(p) + 0.25f * noise::value_noise(p * 2.0f + 17.0f) +
+               0.125f * noise::value_noise(p * 4.0f + 31.0f) + 0.0625f * noise::value_noise(p * 8.0f + 47.0f);
     });
 }
 

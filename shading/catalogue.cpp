@@ -118,9 +118,10 @@ std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection() {
     return {groups.begin(), groups.end()};
 }
 
-std::filesystem::path glsl_folder(const Program& program) {
+std::filesystem::path glsl_folder(const Program& program, bool vertex_stage) {
     const std::filesystem::path& plugin = plugin_of(program);
-    return plugin.empty() ? builtin_glsl_folder() : plugin.parent_path();
+    const bool builtin = plugin.empty() || (vertex_stage && program.info().stock_vertex_glsl);
+    return builtin ? builtin_glsl_folder() : plugin.parent_path();
 }
 
 }  // namespace qs

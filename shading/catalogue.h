@@ -1,17 +1,23 @@
 #pragma once
 // The shader catalogue: every shader this process knows, built in or from a plugin, looked up by
-// the name scenes use. Shaders register themselves where they are defined, one line per file
-// (shading/shaders/*.cpp, or a user's plugin):
+// the name scenes use. Shaders register themselves where they are defined, one line after their
+// structs (a family header of shading/shaders/, or a user's plugin):
 //
-//     QUADSHADE_SHADERS(shaders::Dots, shaders::Perlin);
-//     QUADSHADE_SHADERS_IN("seed 002: Noise is Beautiful", shaders::HashPcg);  // in a collection
+//     QUADSHADE_SHADERS(Dots, Perlin)
+//     QUADSHADE_SHADERS_IN("my textures", Stripes, Checks)  // in a collection
+//
+// A line registers its shaders once however many files include it, so a header may hold it; each
+// file that includes it compiles the shaders' every instantiation, though, so a family header is
+// included by the one file that builds it (shading/CMakeLists.txt generates it).
 //
 // A collection groups shaders for listings and the gallery (the built-in ones by the text they
-// come from); a plugin's shaders outside one are grouped under the plugin's file name.
+// come from, shading/shaders/collections.h); a plugin's shaders outside one are grouped under the
+// plugin's file name.
 //
 // Each shader's GLSL files (ShaderInfo::glsl_vertex / glsl_fragment) are found under its origin's
 // GLSL folder: for the built-in shaders `share/quadshade/shading` beside the executable's `bin/`
-// (the build tree has the same layout), for a plugin the plugin's own folder.
+// (the build tree has the same layout), for a plugin the plugin's own folder; a stock vertex
+// stage's (ShaderInfo::stock_vertex_glsl) under the built-in shaders' folder.
 
 #include <cstddef>
 #include <filesystem>
@@ -31,8 +37,9 @@ using ProgramList = std::vector<const Program*>;
 const ProgramList& catalogue();
 // nullptr when no shader has that name.
 const Program* find_program(std::string_view name);
-// The folder `program`'s GLSL file names are relative to.
-std::filesystem::path glsl_folder(const Program& program);
+// The folder the GLSL file names of `program`'s fragment stage, or of its vertex stage, are
+// relative to.
+std::filesystem::path glsl_folder(const Program& program, bool vertex_stage = false);
 // The plugin `program` came from; empty for a built-in shader.
 const std::filesystem::path& plugin_of(const Program& program);
 // The collection `program` was registered in (QUADSHADE_SHADERS_IN), else its plugin's file name,
@@ -45,7 +52,7 @@ std::vector<std::pair<std::string, ProgramList>> catalogue_by_collection();
 // What crosses between quadshade and a plugin's shaders, as the plugin's headers laid it out: a
 // plugin built against other headers is refused, not run.
 struct ShaderAbi {
-    int version = 3;  // raised when program.h's contract changes in a way sizes do not show
+    int version = 4;  // raised when program.h's contract changes in a way sizes do not show
     int batch_lanes = kBatchLanes;
     int max_varyings = kMaxVaryings;
     std::size_t fragment_batch = sizeof(FragmentBatch);
@@ -80,15 +87,31 @@ struct Registrar {
     static const Program& program();  // defined by program_of.h
 };
 
+// A collection's name as a template argument: a string literal or a constexpr string_view.
+struct CollectionName {
+    char text[128] = {};
+    consteval CollectionName(std::string_view name) {  // NOLINT: the macro's argument, converted
+        if (name.size() >= sizeof text) throw "a collection's name has at most 127 characters";
+        for (std::size_t i = 0; i < name.size(); ++i) text[i] = name[i];
+    }
+    constexpr std::string_view view() const { return text; }
+};
+
+// The registration of `Shaders` in collection C: one object in the program, however many files
+// name it (an inline variable).
+template <CollectionName C, class... Shaders>
+inline const Registrar<Shaders...> registered{C.view()};
+
 }  // namespace registration
 }  // namespace qs
 
 // Registers the shader structs it names (see program_of.h for what a shader struct holds), at
 // namespace scope in a file that includes shading/program_of.h; _IN puts them in a collection.
-#define QUADSHADE_SHADERS_IN(collection, ...)                                                          \
-    namespace {                                                                                         \
-    const ::qs::registration::Registrar<__VA_ARGS__> QUADSHADE_REGISTRAR_NAME(__COUNTER__){collection}; \
+#define QUADSHADE_SHADERS_IN(collection, ...)                                                         \
+    namespace {                                                                                        \
+    [[maybe_unused]] const auto& QUADSHADE_REGISTRAR_NAME(__COUNTER__) =                               \
+        ::qs::registration::registered<::qs::registration::CollectionName{collection}, __VA_ARGS__>;  \
     }
-#define QUADSHADE_SHADERS(...) QUADSHADE_SHADERS_IN(::std::string_view(), __VA_ARGS__)
+#define QUADSHADE_SHADERS(...) QUADSHADE_SHADERS_IN("", __VA_ARGS__)
 #define QUADSHADE_REGISTRAR_NAME(n) QUADSHADE_REGISTRAR_NAME_(n)
 #define QUADSHADE_REGISTRAR_NAME_(n) quadshade_registered_shaders_##n

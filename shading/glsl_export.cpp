@@ -28,9 +28,10 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
 
 std::string glsl_source(const Program& program, bool vertex_stage) {
     const ShaderInfo& info = program.info();
-    const std::filesystem::path folder = glsl_folder(program);
-    // ShaderInfo::glsl_version; from 1.50 on the compatibility profile (gl_Vertex, gl_FragColor).
-    std::string src = "#version " + std::to_string(info.glsl_version) + (info.glsl_version >= 150 ? " compatibility\n" : "\n");
+    const std::filesystem::path folder = glsl_folder(program, vertex_stage);
+    // ShaderInfo::glsl_version (0: 120); from 1.50 on the compatibility profile (gl_Vertex, gl_FragColor).
+    const int version = info.glsl_version ? info.glsl_version : 120;
+    std::string src = "#version " + std::to_string(version) + (version >= 150 ? " compatibility\n" : "\n");
     src += info.glsl_defines;
     for (std::string_view file : vertex_stage ? info.glsl_vertex : info.glsl_fragment) {
         if (file.empty()) continue;

@@ -15,12 +15,12 @@ struct MyStripes {
         .name = "my_stripes",
         .description = "diagonal stripes anti-aliased with fwidth (examples/my-shader)",
         .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true},
-        .glsl_vertex = {"my_stripes.vert"},  // beside the plugin
-        .glsl_fragment = {"my_stripes.frag"},
+        .glsl_fragment = {"my_stripes.frag"},  // beside the plugin
     };
 
     // my_stripes.vert: what it hands the fragment stage (its `varying`s), and its main().
     struct VertexStage {
+        static constexpr GlslFiles glsl{"my_stripes.vert"};
         template <class T>
         struct Varyings {
             vec2<T> st;

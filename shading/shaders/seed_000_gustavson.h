@@ -12,17 +12,21 @@
 #include "shading/noise/simplex4d.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
+#include "shading/shaders/collections.h"
 #include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
 struct Simplex3dContourAa {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex3d_contour_aa", "seed 000, Listing 1.2: a contour line of 3D simplex noise, anti-aliased by its analytic gradient through Jacobian3",
-                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = false},
-                                                                    {"shaders/object_position.vert"},
-                                                                    {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex3d_contour_aa.frag"},
-                                                                    noise::Simplex3dDemo::glsl_defines});
+    static constexpr ShaderInfo info{
+        .name = "simplex3d_contour_aa",
+        .description = "seed 000, Listing 1.2: a contour line of 3D simplex noise, anti-aliased by its analytic gradient through Jacobian3",
+        .needs = {.coordinates = Coordinates::Object3D, .derivatives = true},
+        .glsl_fragment = {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex3d_contour_aa.frag"},
+        .glsl_defines = noise::Simplex3dDemo::glsl_defines,
+        .wide_batches = true,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -41,6 +45,7 @@ struct Simplex3dContourAa {
 
 // simplex4d_animated.vert: P = vec4(gl_Vertex.xyz * 3.0, 0.3 * time)
 struct SolidTime4 {
+    static constexpr GlslFiles glsl{"shaders/simplex4d_animated.vert"};
     template <class T>
     struct Varyings {
         glsl::vec4<T> P;
@@ -56,10 +61,13 @@ struct SolidTime4 {
 // No time period: w = 0.3 time repeats its hash every 289 / 0.3 s, but 0.3 t and 0.3 (t + 963.3)
 // are not the same floats' offsets, so the output does not repeat exactly.
 struct Simplex4dAnimated {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex4d_animated", "seed 000: 4D simplex noise of (object position, time), an animated solid texture (the noise ours: the chapter prints none)",
-                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
-                                                                    {"shaders/simplex4d_animated.vert"},
-                                                                    {"noise/simplex4d.glsl", "shaders/simplex4d_animated.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "simplex4d_animated",
+        .description = "seed 000: 4D simplex noise of (object position, time), an animated solid texture (the noise ours: the chapter prints none)",
+        .needs = {.coordinates = Coordinates::Object3D, .time = true},
+        .glsl_fragment = {"noise/simplex4d.glsl", "shaders/simplex4d_animated.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = SolidTime4;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -69,11 +77,14 @@ struct Simplex4dAnimated {
 };
 
 struct SimplexBump {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex_bump", "seed 000: a bump map of 3D simplex noise from its analytic gradient, one directional light (the normal a unit sphere's)",
-                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false},
-                                                                    {"shaders/object_position.vert"},
-                                                                    {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex_bump.frag"},
-                                                                    noise::Simplex3dDemo::glsl_defines});
+    static constexpr ShaderInfo info{
+        .name = "simplex_bump",
+        .description = "seed 000: a bump map of 3D simplex noise from its analytic gradient, one directional light (the normal a unit sphere's)",
+        .needs = {.coordinates = Coordinates::Object3D},
+        .glsl_fragment = {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex_bump.frag"},
+        .glsl_defines = noise::Simplex3dDemo::glsl_defines,
+        .wide_batches = true,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -87,5 +98,7 @@ struct SimplexBump {
         return vec4<F>(vec3<F>(0.9f, 0.8f, 0.6f) * (0.15f + 0.85f * diffuse), 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kSeed000, Simplex3dContourAa, Simplex4dAnimated, SimplexBump)
 
 }  // namespace qs::shaders

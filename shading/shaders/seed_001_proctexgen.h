@@ -10,18 +10,16 @@
 #include "shading/noise/worley3d.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
+#include "shading/shaders/collections.h"
 #include "shading/shaders/vertex_stages.h"
 #include "shading/vertex.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
-// A solid texture without derivatives or time; the integer lattice needs GLSL 1.30.
-inline constexpr Needs kSeed001SolidNeeds{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false,
-                                          .time = false};
-
 // object_position8.vert: P = gl_Vertex.xyz * 8.0
 struct ObjectPosition8 {
+    static constexpr GlslFiles glsl{"shaders/object_position8.vert"};
     template <class T>
     using Varyings = SolidVaryings<T>;
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<ObjectPosition8>& out) {
@@ -33,6 +31,7 @@ struct ObjectPosition8 {
 
 // fast_noise_volume.vert: P = (gl_Vertex.xyz * 0.5 + 0.5) * 8.0
 struct FastNoiseVolumeStage {
+    static constexpr GlslFiles glsl{"shaders/fast_noise_volume.vert"};
     template <class T>
     using Varyings = SolidVaryings<T>;
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<FastNoiseVolumeStage>& out) {
@@ -43,11 +42,13 @@ struct FastNoiseVolumeStage {
 };
 
 struct ImprovedNoise {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"improved_noise", "seed 001: Ken Perlin's improved noise (permutation table, 16 gradients), 4 cells per unit (GLSL 1.30)",
-                   kSeed001SolidNeeds, {"shaders/object_position.vert"},
-                   {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/improved_noise.frag"}},
-        130);
+    static constexpr ShaderInfo info{
+        .name = "improved_noise",
+        .description = "seed 001: Ken Perlin's improved noise (permutation table, 16 gradients), 4 cells per unit (GLSL 1.30)",
+        .needs = {.coordinates = Coordinates::Object3D},
+        .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/improved_noise.frag"},
+        .glsl_version = 130,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -56,11 +57,13 @@ struct ImprovedNoise {
 };
 
 struct ImprovedNoiseLoop {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"improved_noise_loop", "seed 001: texShaderNoise, improved noise looping every 8 cells (repeat 8, base 0), 8 cells per unit (GLSL 1.30)",
-                   kSeed001SolidNeeds, {"shaders/object_position8.vert"},
-                   {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/improved_noise_loop.frag"}},
-        130);
+    static constexpr ShaderInfo info{
+        .name = "improved_noise_loop",
+        .description = "seed 001: texShaderNoise, improved noise looping every 8 cells (repeat 8, base 0), 8 cells per unit (GLSL 1.30)",
+        .needs = {.coordinates = Coordinates::Object3D},
+        .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/improved_noise_loop.frag"},
+        .glsl_version = 130,
+    };
     using VertexStage = ObjectPosition8;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -69,11 +72,13 @@ struct ImprovedNoiseLoop {
 };
 
 struct FastNoiseVolume {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"fast_noise_volume", "seed 001: the fast noise's volume, looping noise of 8 cells (R: base 0, G: base 8) over [-1, 1]^3; bake it with bake-volume --size 32 (GLSL 1.30)",
-                   kSeed001SolidNeeds, {"shaders/fast_noise_volume.vert"},
-                   {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/fast_noise_volume.frag"}},
-        130);
+    static constexpr ShaderInfo info{
+        .name = "fast_noise_volume",
+        .description = "seed 001: the fast noise's volume, looping noise of 8 cells (R: base 0, G: base 8) over [-1, 1]^3; bake it with bake-volume --size 32 (GLSL 1.30)",
+        .needs = {.coordinates = Coordinates::Object3D},
+        .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/fast_noise_volume.frag"},
+        .glsl_version = 130,
+    };
     using VertexStage = FastNoiseVolumeStage;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -110,10 +115,14 @@ struct Worley3d {
         "#define WORLEY3D_MANHATTAN true\n#define WORLEY3D_SCALE 0.5\n#define WORLEY3D_SHOW(f1, f2) (f2)\n",
         "#define WORLEY3D_MANHATTAN true\n#define WORLEY3D_SCALE 0.5\n#define WORLEY3D_SHOW(f1, f2) (f2 - f1)\n",
         "#define WORLEY3D_MANHATTAN true\n#define WORLEY3D_SCALE 0.5\n#define WORLEY3D_SHOW(f1, f2) ((f1 + f2) / 2.0)\n"};
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{kNames[kIndex], kDescriptions[kIndex], kSeed001SolidNeeds, {"shaders/object_position.vert"},
-                   {"noise/perlin_permutation.glsl", "noise/worley3d.glsl", "shaders/worley3d.frag"}, kDefines[kIndex]},
-        130);
+    static constexpr ShaderInfo info{
+        .name = kNames[kIndex],
+        .description = kDescriptions[kIndex],
+        .needs = {.coordinates = Coordinates::Object3D},
+        .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/worley3d.glsl", "shaders/worley3d.frag"},
+        .glsl_defines = kDefines[kIndex],
+        .glsl_version = 130,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -126,11 +135,13 @@ struct Worley3d {
 };
 
 struct Worley3dFbm {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"worley3d_fbm", "seed 001: 4 octaves of 3D Worley F1 (frequencies 1 to 8, weights 1 to 1/8; GLSL 1.30)",
-                   kSeed001SolidNeeds, {"shaders/object_position.vert"},
-                   {"noise/perlin_permutation.glsl", "noise/worley3d.glsl", "shaders/worley3d_fbm.frag"}},
-        130);
+    static constexpr ShaderInfo info{
+        .name = "worley3d_fbm",
+        .description = "seed 001: 4 octaves of 3D Worley F1 (frequencies 1 to 8, weights 1 to 1/8; GLSL 1.30)",
+        .needs = {.coordinates = Coordinates::Object3D},
+        .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/worley3d.glsl", "shaders/worley3d_fbm.frag"},
+        .glsl_version = 130,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -147,5 +158,10 @@ struct Worley3dFbm {
         return vec4<F>(vec3<F>(sum / 1.875f), 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kSeed001, ImprovedNoise, ImprovedNoiseLoop, FastNoiseVolume, Worley3d<WorleyShow::F1, false>,
+                     Worley3d<WorleyShow::F2, false>, Worley3d<WorleyShow::F2MinusF1, false>, Worley3d<WorleyShow::Mean, false>,
+                     Worley3d<WorleyShow::F1, true>, Worley3d<WorleyShow::F2, true>, Worley3d<WorleyShow::F2MinusF1, true>,
+                     Worley3d<WorleyShow::Mean, true>, Worley3dFbm)
 
 }  // namespace qs::shaders

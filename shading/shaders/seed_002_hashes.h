@@ -6,7 +6,8 @@
 #include "shading/glsl.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
@@ -16,13 +17,12 @@ using namespace qs::glsl;
 // the bit (shading/number/sin_cos.h). softpipe calls the C library's sinf, half an ulp of 1 away
 // from it on many cells, which the factor 43758.5453 makes a different hash.
 struct HashSin {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-                                       .name = "hash_sin",
-                                       .description = "seed 002: the sine hash fract(sin(dot(p, (12.9898, 78.233))) * 43758.5453) of 32 cells across",
-                                       .needs = kPlaneNeeds,
-                                       .glsl_vertex = {"shaders/plane_st.vert"},
-                                       .glsl_fragment = {"shaders/hash_sin.frag"},
-                                   });
+    static constexpr ShaderInfo info{
+        .name = "hash_sin",
+        .description = "seed 002: the sine hash fract(sin(dot(p, (12.9898, 78.233))) * 43758.5453) of 32 cells across",
+        .glsl_fragment = {"shaders/hash_sin.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static F cellnoise_sin(const vec2<F>& p) {
@@ -45,8 +45,6 @@ struct HashHoskins {
     static constexpr ShaderInfo info{
         .name = "hash_hoskins",
         .description = "seed 002: Dave Hoskins' hash12 (fract of products) of 32 cells across",
-        .needs = kPlaneNeeds,
-        .glsl_vertex = {"shaders/plane_st.vert"},
         .glsl_fragment = {"shaders/hash_hoskins.frag"},
     };
     using VertexStage = PlaneSt;
@@ -61,5 +59,7 @@ struct HashHoskins {
         return vec4<F>(vec3<F>(hash12(floor(in.st * 32.0f))), 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kSeed002, HashSin, HashHoskins)
 
 }  // namespace qs::shaders

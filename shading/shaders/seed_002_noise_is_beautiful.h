@@ -5,17 +5,17 @@
 // (Fibonacci-sphere gradients), their analytic gradients (dnoise), fBm, a multifractal, domain
 // warping and the Shadertoy scattering example. The 3D noises are solid textures (P = 4 cells per
 // object unit), compared on the sphere scene. Translated from the .frag files beside this header and the noise in
-// shading/noise/ (permute_polynomial, simplex2d_skew, simplex3d_fibonacci), line for line;
-// pcg_hash and cellnoise_pcg2 are seed_patterns.h's.
+// shading/noise/ (pcg_hash, permute_polynomial, simplex2d_skew, simplex3d_fibonacci), line for
+// line.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
+#include "shading/noise/pcg_hash.h"
 #include "shading/noise/permute_polynomial.h"
 #include "shading/noise/simplex2d_skew.h"
 #include "shading/noise/simplex3d_fibonacci.h"
 #include "shading/program_of.h"
-#include "shading/shaders/seed_patterns.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
 #include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
@@ -30,23 +30,28 @@ inline constexpr CheckBound kCellHashCheckBounds[] = {
      "(measured: 1495 pixels)"}};
 
 struct HashPcg {
-    static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(
-        with_glsl_version(ShaderInfo{"hash_pcg", "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_pcg.frag"}},
-                          130),
-        kCellHashCheckBounds));
+    static constexpr ShaderInfo info{
+        .name = "hash_pcg",
+        .description = "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
+        .glsl_fragment = {"shaders/hash_pcg.frag"},
+        .glsl_version = 130,
+        .wide_batches = true,
+        .check_bounds = kCellHashCheckBounds,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
-        return vec4<F>(vec3<F>(cellnoise_pcg2(in.st * 32.0f)), 1.0f);
+        return vec4<F>(vec3<F>(noise::cellnoise_pcg2(in.st * 32.0f)), 1.0f);
     }
 };
 
 struct HashPerm289 {
-    static constexpr ShaderInfo info = with_check_bounds(
-        ShaderInfo{"hash_perm289", "seed 002: the permutation polynomial (34h + 10)h mod 289, chained over 32 cells across",
-                   kPlaneNeeds, {"shaders/plane_st.vert"}, {"shaders/hash_perm289.frag"}},
-        kCellHashCheckBounds);
+    static constexpr ShaderInfo info{
+        .name = "hash_perm289",
+        .description = "seed 002: the permutation polynomial (34h + 10)h mod 289, chained over 32 cells across",
+        .glsl_fragment = {"shaders/hash_perm289.frag"},
+        .check_bounds = kCellHashCheckBounds,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static F permute(const F& x) {
@@ -66,8 +71,11 @@ struct HashPerm289 {
 };
 
 struct Perlin2dPerm {
-    static constexpr ShaderInfo info{"perlin2d_perm", "seed 002: Perlin noise with gradients from the permutation polynomial, quintic fade, 10 cells across",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/perlin2d_perm.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "perlin2d_perm",
+        .description = "seed 002: Perlin noise with gradients from the permutation polynomial, quintic fade, 10 cells across",
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "shaders/perlin2d_perm.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec2<F> gradient(const vec2<F>& p) {
@@ -123,12 +131,15 @@ inline constexpr CheckBound kOctaveCheckBounds[] = {
      "octaves)"}};
 
 // Solid textures: the object-space position.
-inline constexpr Needs kSolidNeeds{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false};
+inline constexpr Needs kSolidNeeds{.coordinates = Coordinates::Object3D};
 
 struct Perlin3dPerm {
-    static constexpr ShaderInfo info{"perlin3d_perm", "seed 002: Perlin noise in 3D, the seed's 3D permutation-polynomial gradients, quintic fade; a solid texture",
-                                     kSolidNeeds, {"shaders/object_position.vert"},
-                                     {"noise/permute_polynomial.glsl", "shaders/perlin3d_perm.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "perlin3d_perm",
+        .description = "seed 002: Perlin noise in 3D, the seed's 3D permutation-polynomial gradients, quintic fade; a solid texture",
+        .needs = kSolidNeeds,
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "shaders/perlin3d_perm.frag"},
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec3<F> fade(const vec3<F>& t) { return ((6.0f * t - 15.0f) * t + 10.0f) * t * t * t; }
@@ -162,9 +173,12 @@ struct Perlin3dPerm {
 };
 
 struct Simplex2dSkew {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex2d_skew", "seed 002: simplex noise on the seed's xy_to_uv shear, permutation-polynomial gradients, 10 units across",
-                                                                    kPlaneNeeds, {"shaders/plane_st.vert"},
-                                                                    {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_skew.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "simplex2d_skew",
+        .description = "seed 002: simplex noise on the seed's xy_to_uv shear, permutation-polynomial gradients, 10 units across",
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_skew.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -173,9 +187,13 @@ struct Simplex2dSkew {
 };
 
 struct Simplex3dFibonacci {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex3d_fibonacci", "seed 002: 3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the seed's prose); a solid texture",
-                                                                    kSolidNeeds, {"shaders/object_position.vert"},
-                                                                    {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_fibonacci.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "simplex3d_fibonacci",
+        .description = "seed 002: 3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the seed's prose); a solid texture",
+        .needs = kSolidNeeds,
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_fibonacci.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -185,9 +203,12 @@ struct Simplex3dFibonacci {
 };
 
 struct Simplex2dDnoise {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex2d_dnoise", "seed 002: the analytic gradient of its 2D simplex noise (dnoise, ours: the seed's sum was an image) as red and green, the noise as blue",
-                                                                    kPlaneNeeds, {"shaders/plane_st.vert"},
-                                                                    {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_dnoise.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "simplex2d_dnoise",
+        .description = "seed 002: the analytic gradient of its 2D simplex noise (dnoise, ours: the seed's sum was an image) as red and green, the noise as blue",
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_dnoise.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -197,9 +218,13 @@ struct Simplex2dDnoise {
 };
 
 struct Simplex3dDnoise {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"simplex3d_dnoise", "seed 002: the analytic gradient of its 3D simplex noise as colour; a solid texture",
-                                                                    kSolidNeeds, {"shaders/object_position.vert"},
-                                                                    {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_dnoise.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "simplex3d_dnoise",
+        .description = "seed 002: the analytic gradient of its 3D simplex noise as colour; a solid texture",
+        .needs = kSolidNeeds,
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_dnoise.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = ObjectPosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -211,9 +236,13 @@ struct Simplex3dDnoise {
 
 // Octave loops: a float counter to a constant bound, the same in every lane, as in the seed.
 struct FbmSimplex2d {
-    static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(ShaderInfo{"fbm_simplex2d", "seed 002: fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
-                                                       kPlaneNeeds, {"shaders/plane_st.vert"},
-                                                       {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/fbm_simplex2d.frag"}}, kOctaveCheckBounds));
+    static constexpr ShaderInfo info{
+        .name = "fbm_simplex2d",
+        .description = "seed 002: fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/fbm_simplex2d.frag"},
+        .wide_batches = true,
+        .check_bounds = kOctaveCheckBounds,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -229,9 +258,13 @@ struct FbmSimplex2d {
 };
 
 struct MultifractalSimplex2d {
-    static constexpr ShaderInfo info = with_wide_batches(with_check_bounds(ShaderInfo{"multifractal_simplex2d", "seed 002: a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the seed's formula was an image)",
-                                                       kPlaneNeeds, {"shaders/plane_st.vert"},
-                                                       {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/multifractal_simplex2d.frag"}}, kOctaveCheckBounds));
+    static constexpr ShaderInfo info{
+        .name = "multifractal_simplex2d",
+        .description = "seed 002: a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the seed's formula was an image)",
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/multifractal_simplex2d.frag"},
+        .wide_batches = true,
+        .check_bounds = kOctaveCheckBounds,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -250,9 +283,11 @@ struct MultifractalSimplex2d {
 };
 
 struct WarpDnoise {
-    static constexpr ShaderInfo info{"warp_dnoise", "seed 002: domain warping, each octave displaced by the summed dnoise gradients of the previous ones",
-                                     kPlaneNeeds, {"shaders/plane_st.vert"},
-                                     {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/warp_dnoise.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "warp_dnoise",
+        .description = "seed 002: domain warping, each octave displaced by the summed dnoise gradients of the previous ones",
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/warp_dnoise.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -280,12 +315,15 @@ struct Scattering3d {
         {"uResolution", UniformType::Vec2, {64.0f, 64.0f}},
     };
     enum : int { uResolution };
-    static constexpr ShaderInfo info = with_wide_batches(with_uniforms(
-        ShaderInfo{"scattering3d", "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
-                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = true, .frag_coord = true},
-                   {"shaders/plane_st.vert"}, {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
-                   {}, 289.0},  // time is the lattice's z, hashed mod 289
-        kUniforms));
+    static constexpr ShaderInfo info{
+        .name = "scattering3d",
+        .description = "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
+        .needs = {.coordinates = Coordinates::None, .time = true, .frag_coord = true},
+        .glsl_fragment = {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
+        .uniforms = kUniforms,
+        .time_period = 289.0,  // time is the lattice's z, hashed mod 289
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> mainImage(const vec2<F>& fragCoord, const Uniforms& u) {
@@ -325,5 +363,8 @@ struct Scattering3d {
         return mainImage(in.gl_FragCoord.xy(), u);
     }
 };
+
+QUADSHADE_SHADERS_IN(kSeed002, HashPcg, HashPerm289, Perlin2dPerm, Perlin3dPerm, Simplex2dSkew, Simplex3dFibonacci, Simplex2dDnoise,
+                     Simplex3dDnoise, FbmSimplex2d, MultifractalSimplex2d, WarpDnoise, Scattering3d)
 
 }  // namespace qs::shaders

@@ -12,7 +12,8 @@
 #include "shading/glsl.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
@@ -24,12 +25,7 @@ struct EsTutorial {
         {"uResolution", UniformType::Vec2, {64.0f, 96.0f}},
     };
     enum : int { uResolution };
-    static constexpr Needs kNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                  .frag_coord = true};
-    static constexpr ShaderInfo shader(std::string_view name, std::string_view description, std::string_view frag) {
-        return with_uniforms(ShaderInfo{name, description, kNeeds, {"shaders/plane_st.vert"}, {"shaders/es_random_noise.glsl", frag}},
-                             kUniforms);
-    }
+    static constexpr Needs kNeeds{.coordinates = Coordinates::None, .frag_coord = true};
     using VertexStage = PlanePosition;
 
     template <class F>
@@ -46,8 +42,14 @@ struct EsTutorial {
 };
 
 struct EsTiles2 : EsTutorial {
-    static constexpr ShaderInfo info = with_wide_batches(shader("es_tiles2", "seed 003, ES tutorial: the square viewport in 2x2 random tiles",
-                                                                "shaders/es_tiles2.frag"));
+    static constexpr ShaderInfo info{
+        .name = "es_tiles2",
+        .description = "seed 003, ES tutorial: the square viewport in 2x2 random tiles",
+        .needs = kNeeds,
+        .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_tiles2.frag"},
+        .uniforms = kUniforms,
+        .wide_batches = true,
+    };
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
@@ -63,13 +65,18 @@ struct EsTiles2 : EsTutorial {
 // The square viewport in per-pixel noise, and the noise's input moved by -1 and by +1.
 template <int Shift>
 struct EsRandomSquareShifted : EsTutorial {
-    static constexpr ShaderInfo info =
-        with_wide_batches(Shift == 0 ? shader("es_random_square", "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded",
-                            "shaders/es_random_square.frag")
-        : Shift < 0 ? shader("es_random_square_minus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by -1",
-                             "shaders/es_random_square_minus1.frag")
-                    : shader("es_random_square_plus1", "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
-                             "shaders/es_random_square_plus1.frag"));
+    static constexpr ShaderInfo info{
+        .name = Shift == 0 ? "es_random_square" : Shift < 0 ? "es_random_square_minus1" : "es_random_square_plus1",
+        .description = Shift == 0  ? "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded"
+                       : Shift < 0 ? "seed 003, ES tutorial: es_random_square with the noise's input moved by -1"
+                                   : "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
+        .needs = kNeeds,
+        .glsl_fragment = {"shaders/es_random_noise.glsl", Shift == 0  ? "shaders/es_random_square.frag"
+                                                          : Shift < 0 ? "shaders/es_random_square_minus1.frag"
+                                                                      : "shaders/es_random_square_plus1.frag"},
+        .uniforms = kUniforms,
+        .wide_batches = true,
+    };
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
@@ -84,8 +91,14 @@ using EsRandomSquareMinus1 = EsRandomSquareShifted<-1>;
 using EsRandomSquarePlus1 = EsRandomSquareShifted<1>;
 
 struct EsTiles128 : EsTutorial {
-    static constexpr ShaderInfo info = with_wide_batches(shader("es_tiles128", "seed 003, ES tutorial: the square viewport in 128x128 random tiles",
-                                                                "shaders/es_tiles128.frag"));
+    static constexpr ShaderInfo info{
+        .name = "es_tiles128",
+        .description = "seed 003, ES tutorial: the square viewport in 128x128 random tiles",
+        .needs = kNeeds,
+        .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_tiles128.frag"},
+        .uniforms = kUniforms,
+        .wide_batches = true,
+    };
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
         FragmentOut<F> out;
@@ -99,8 +112,13 @@ struct EsTiles128 : EsTutorial {
 };
 
 struct EsSmooth9Tiles128 : EsTutorial {
-    static constexpr ShaderInfo info = shader("es_smooth9_tiles128", "seed 003, ES tutorial: 128 tiles, each the average of its 3x3 neighbourhood's noise (whole window)",
-                                              "shaders/es_smooth9_tiles128.frag");
+    static constexpr ShaderInfo info{
+        .name = "es_smooth9_tiles128",
+        .description = "seed 003, ES tutorial: 128 tiles, each the average of its 3x3 neighbourhood's noise (whole window)",
+        .needs = kNeeds,
+        .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_smooth9_tiles128.frag"},
+        .uniforms = kUniforms,
+    };
     template <class F>
     static F smoothNoise(const vec2<F>& p) {
         vec2<F> nn(p.x, p.y + 1.0f);
@@ -138,8 +156,14 @@ struct EsSmooth9Tiles128 : EsTutorial {
 };
 
 struct EsSmooth5Tiles8 : EsTutorial {
-    static constexpr ShaderInfo info = with_wide_batches(shader("es_smooth5_tiles8", "seed 003, ES tutorial: 8 tiles, each half its own noise and 1/8 of each edge neighbour's (whole window)",
-                                                                "shaders/es_smooth5_tiles8.frag"));
+    static constexpr ShaderInfo info{
+        .name = "es_smooth5_tiles8",
+        .description = "seed 003, ES tutorial: 8 tiles, each half its own noise and 1/8 of each edge neighbour's (whole window)",
+        .needs = kNeeds,
+        .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_smooth5_tiles8.frag"},
+        .uniforms = kUniforms,
+        .wide_batches = true,
+    };
     template <class F>
     static F smoothNoise(const vec2<F>& p) {
         vec2<F> nn(p.x, p.y + 1.0f);
@@ -166,5 +190,8 @@ struct EsSmooth5Tiles8 : EsTutorial {
         return vec4<F>(vec3<F>(n), 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kSeed003, EsRandomSquare, EsRandomSquareMinus1, EsRandomSquarePlus1, EsTiles2, EsTiles128,
+                     EsSmooth9Tiles128, EsSmooth5Tiles8)
 
 }  // namespace qs::shaders

@@ -7,14 +7,18 @@
 #include "shading/glsl.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
 struct LawlorChecker {
-    static constexpr ShaderInfo info{"lawlor_checker", "seed 004, Lawlor: a checkerboard, the xor of two comparisons",
-                                     kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_checker.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_checker",
+        .description = "seed 004, Lawlor: a checkerboard, the xor of two comparisons",
+        .glsl_fragment = {"shaders/lawlor_checker.frag"},
+    };
     using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> grid(const vec2<F>& loc) {
@@ -31,8 +35,11 @@ struct LawlorChecker {
 };
 
 struct LawlorDots {
-    static constexpr ShaderInfo info{"lawlor_dots", "seed 004, Lawlor: a grid of dots, by an if on the distance to the cell's centre",
-                                     kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_dots.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_dots",
+        .description = "seed 004, Lawlor: a grid of dots, by an if on the distance to the cell's centre",
+        .glsl_fragment = {"shaders/lawlor_dots.frag"},
+    };
     using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> grid(const vec2<F>& loc) {
@@ -52,12 +59,9 @@ struct LawlorDots {
 // scenes/assets/seed-004-plane.gltf binds the repository's (quadshade-make-scenes). Their lookups
 // inside a varying `if` are in non-uniform control flow, where GLSL leaves an implicit level of
 // detail undefined; these textures have none (no mipmaps, one filter), so nothing depends on it.
-inline constexpr Needs kTex1Needs{.derivatives = false, .texture = false, .time = false,
-                                  .samplers = {SamplerUse{"tex1", 2}}};
-inline constexpr Needs kTex4Needs{.derivatives = false, .texture = false, .time = false,
-                                  .samplers = {SamplerUse{"tex4", 2}}};
-inline constexpr Needs kTex1Tex4Needs{.derivatives = false, .texture = false, .time = false,
-                                      .samplers = {SamplerUse{"tex1", 2}, SamplerUse{"tex4", 2}}};
+inline constexpr Needs kTex1Needs{.samplers = {SamplerUse{"tex1", 2}}};
+inline constexpr Needs kTex4Needs{.samplers = {SamplerUse{"tex4", 2}}};
+inline constexpr Needs kTex1Tex4Needs{.samplers = {SamplerUse{"tex1", 2}, SamplerUse{"tex4", 2}}};
 
 // main() of every textured snippet but the octaves': grid(texcoords * 10.0). GLSL's grid(loc)
 // reads the samplers and texcoords as globals; here they come in as the first two parameters.
@@ -71,8 +75,12 @@ struct LawlorGrid {
 };
 
 struct LawlorDotsTexture : LawlorGrid<LawlorDotsTexture> {
-    static constexpr ShaderInfo info{"lawlor_dots_texture", "seed 004, Lawlor: the dots coloured by tex1 at the fragment",
-                                     kTex1Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_dots_texture.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_dots_texture",
+        .description = "seed 004, Lawlor: the dots coloured by tex1 at the fragment",
+        .needs = kTex1Needs,
+        .glsl_fragment = {"shaders/lawlor_dots_texture.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>& texcoords, const vec2<F>& loc) {
         const sampler2D& tex1 = u.sampler2D(0);
@@ -85,8 +93,12 @@ struct LawlorDotsTexture : LawlorGrid<LawlorDotsTexture> {
 };
 
 struct LawlorDotsCenterColor : LawlorGrid<LawlorDotsCenterColor> {
-    static constexpr ShaderInfo info{"lawlor_dots_center_color", "seed 004, Lawlor: each dot one colour, tex1 at its centre",
-                                     kTex1Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_dots_center_color.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_dots_center_color",
+        .description = "seed 004, Lawlor: each dot one colour, tex1 at its centre",
+        .needs = kTex1Needs,
+        .glsl_fragment = {"shaders/lawlor_dots_center_color.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         const sampler2D& tex1 = u.sampler2D(0);
@@ -99,8 +111,12 @@ struct LawlorDotsCenterColor : LawlorGrid<LawlorDotsCenterColor> {
 };
 
 struct LawlorDotsMoved : LawlorGrid<LawlorDotsMoved> {
-    static constexpr ShaderInfo info{"lawlor_dots_moved", "seed 004, Lawlor: dots moved by a shift read from tex1",
-                                     kTex1Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_dots_moved.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_dots_moved",
+        .description = "seed 004, Lawlor: dots moved by a shift read from tex1",
+        .needs = kTex1Needs,
+        .glsl_fragment = {"shaders/lawlor_dots_moved.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         const sampler2D& tex1 = u.sampler2D(0);
@@ -114,8 +130,12 @@ struct LawlorDotsMoved : LawlorGrid<LawlorDotsMoved> {
 };
 
 struct LawlorDotsSearch : LawlorGrid<LawlorDotsSearch> {
-    static constexpr ShaderInfo info{"lawlor_dots_search", "seed 004, Lawlor: dots shifted by tex4, searched over the 3x3 neighbouring cells, colours added",
-                                     kTex1Tex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_dots_search.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_dots_search",
+        .description = "seed 004, Lawlor: dots shifted by tex4, searched over the 3x3 neighbouring cells, colours added",
+        .needs = kTex1Tex4Needs,
+        .glsl_fragment = {"shaders/lawlor_dots_search.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         const sampler2D &tex1 = u.sampler2D(0), &tex4 = u.sampler2D(1);
@@ -161,8 +181,12 @@ NearestTwo<F> lawlor_voronoi(const sampler2D& tex4, const vec2<F>& loc) {
 }
 
 struct LawlorVoronoiF1 : LawlorGrid<LawlorVoronoiF1> {
-    static constexpr ShaderInfo info{"lawlor_voronoi_f1", "seed 004, Lawlor: Voronoi F1 over the 3x3 neighbouring cells' points, shifted by tex4",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_voronoi_f1.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_voronoi_f1",
+        .description = "seed 004, Lawlor: Voronoi F1 over the 3x3 neighbouring cells' points, shifted by tex4",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_voronoi_f1.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         return vec4<F>(lawlor_voronoi<1>(u.sampler2D(0), loc).dist);
@@ -170,8 +194,12 @@ struct LawlorVoronoiF1 : LawlorGrid<LawlorVoronoiF1> {
 };
 
 struct LawlorVoronoiF2 : LawlorGrid<LawlorVoronoiF2> {
-    static constexpr ShaderInfo info{"lawlor_voronoi_f2", "seed 004, Lawlor: Voronoi F2 over the 5x5 neighbouring cells' points",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_voronoi_f2.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_voronoi_f2",
+        .description = "seed 004, Lawlor: Voronoi F2 over the 5x5 neighbouring cells' points",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_voronoi_f2.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         return vec4<F>(lawlor_voronoi<2>(u.sampler2D(0), loc).second * 0.7f);
@@ -179,8 +207,12 @@ struct LawlorVoronoiF2 : LawlorGrid<LawlorVoronoiF2> {
 };
 
 struct LawlorStainedGlass : LawlorGrid<LawlorStainedGlass> {
-    static constexpr ShaderInfo info{"lawlor_stained_glass", "seed 004, Lawlor: stained glass, Voronoi F2 - F1 over the 5x5 neighbouring cells",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_stained_glass.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_stained_glass",
+        .description = "seed 004, Lawlor: stained glass, Voronoi F2 - F1 over the 5x5 neighbouring cells",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_stained_glass.frag"},
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         const NearestTwo<F> d = lawlor_voronoi<2>(u.sampler2D(0), loc);
@@ -189,8 +221,13 @@ struct LawlorStainedGlass : LawlorGrid<LawlorStainedGlass> {
 };
 
 struct LawlorTextureHigh : LawlorGrid<LawlorTextureHigh> {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"lawlor_texture_high", "seed 004, Lawlor: the repeating noise texture, ten times across",
-                                                                    kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_high.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "lawlor_texture_high",
+        .description = "seed 004, Lawlor: the repeating noise texture, ten times across",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_texture_high.frag"},
+        .wide_batches = true,
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         return texture2D(u.sampler2D(0), loc);
@@ -198,8 +235,13 @@ struct LawlorTextureHigh : LawlorGrid<LawlorTextureHigh> {
 };
 
 struct LawlorTextureLow : LawlorGrid<LawlorTextureLow> {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"lawlor_texture_low", "seed 004, Lawlor: the repeating noise texture stretched, five times across",
-                                                                    kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_low.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "lawlor_texture_low",
+        .description = "seed 004, Lawlor: the repeating noise texture stretched, five times across",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_texture_low.frag"},
+        .wide_batches = true,
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         return texture2D(u.sampler2D(0), loc * 0.5f);
@@ -207,8 +249,13 @@ struct LawlorTextureLow : LawlorGrid<LawlorTextureLow> {
 };
 
 struct LawlorTextureTwoOctaves : LawlorGrid<LawlorTextureTwoOctaves> {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"lawlor_texture_two_octaves", "seed 004, Lawlor: the high and the low octave of the noise texture, averaged",
-                                                                    kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_two_octaves.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "lawlor_texture_two_octaves",
+        .description = "seed 004, Lawlor: the high and the low octave of the noise texture, averaged",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_texture_two_octaves.frag"},
+        .wide_batches = true,
+    };
     template <class F>
     static vec4<F> grid(const Uniforms& u, const vec2<F>&, const vec2<F>& loc) {
         const sampler2D& tex4 = u.sampler2D(0);
@@ -219,8 +266,12 @@ struct LawlorTextureTwoOctaves : LawlorGrid<LawlorTextureTwoOctaves> {
 };
 
 struct LawlorTextureOctaves {
-    static constexpr ShaderInfo info{"lawlor_texture_octaves", "seed 004, Lawlor: six octaves of the noise texture, frequency 8 down to 0.25",
-                                     kTex4Needs, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_texture_octaves.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "lawlor_texture_octaves",
+        .description = "seed 004, Lawlor: six octaves of the noise texture, frequency 8 down to 0.25",
+        .needs = kTex4Needs,
+        .glsl_fragment = {"shaders/lawlor_texture_octaves.frag"},
+    };
     using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> grid(const sampler2D& tex4, const vec2<F>& loc) {
@@ -241,10 +292,13 @@ struct LawlorTextureOctaves {
 // pixels, most by ulps and 574 over 1/255 near the set's boundary, where an ulp changes the
 // escape time; Mesa's order on none.
 struct LawlorMandelbrot {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"lawlor_mandelbrot", "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
-                   kPlaneNeeds, {"shaders/plane_texcoords.vert"}, {"shaders/lawlor_mandelbrot.frag"}},
-        120));
+    static constexpr ShaderInfo info{
+        .name = "lawlor_mandelbrot",
+        .description = "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
+        .glsl_fragment = {"shaders/lawlor_mandelbrot.frag"},
+        .glsl_version = 120,
+        .wide_batches = true,
+    };
     using VertexStage = PlaneTexcoords;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -266,5 +320,9 @@ struct LawlorMandelbrot {
         return vec4<F>(x, r * 0.1f, y, 1.0f);  // the seed's alpha 0 made 1 (see the .frag)
     }
 };
+
+QUADSHADE_SHADERS_IN(kSeed004, LawlorChecker, LawlorDots, LawlorDotsTexture, LawlorDotsCenterColor, LawlorDotsMoved, LawlorDotsSearch,
+                     LawlorVoronoiF1, LawlorVoronoiF2, LawlorStainedGlass, LawlorTextureHigh, LawlorTextureLow,
+                     LawlorTextureTwoOctaves, LawlorTextureOctaves, LawlorMandelbrot)
 
 }  // namespace qs::shaders

@@ -16,11 +16,11 @@ struct MistranslatedStripes {
         .name = "mistranslated_stripes",
         .description = "my_stripes.frag translated with abs(dFdx(ramp)) for fwidth(ramp) (a test of quadshade check)",
         .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true},
-        .glsl_vertex = {"my_stripes.vert"},
         .glsl_fragment = {"my_stripes.frag"},
     };
 
     struct VertexStage {
+        static constexpr GlslFiles glsl{"my_stripes.vert"};
         template <class T>
         struct Varyings {
             vec2<T> st;

@@ -1,10 +1,12 @@
-// The error study's anti-aliasing alternatives of the aastep shaders: 0.7 fwidth instead of the
-// gradient's length, and no anti-aliasing (a plain step; the pattern supersampling filters).
-// Instantiated apart from the originals so that the two build in parallel.
+#pragma once
+// The error study's anti-aliasing alternatives of the aastep shaders (aastep_shaders.h): 0.7
+// fwidth instead of the gradient's length, and no anti-aliasing (a plain step; the pattern
+// supersampling filters). A family apart from the chapter's forms so that the two build in
+// parallel.
+
+#include "shading/program_of.h"
+#include "shading/shaders/aastep_shaders.h"
 #include "shading/shaders/collections.h"
-#include "shading/shaders/figure_1_1.h"
-#include "shading/shaders/patterns.h"
-#include "shading/shaders/table_1_1.h"
 
 namespace qs::shaders {
 
