@@ -8,6 +8,7 @@
 #include "render/atlas_program.h"
 #include "render/textures.h"
 #include "render/uniform_binding.h"
+#include "scenes/shader_inputs.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
@@ -106,7 +107,12 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.indices = mesh.indices;
         d.program = &program;
         if (request.atlas) d.program = atlas_programs_.emplace_back(std::make_unique<AtlasProgram>(program)).get();
-        d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
+        const ObjectTransforms transforms = object_transforms(scene, o, aspect);
+        d.uniforms.model_view_projection = transforms.model_view_projection;
+        d.uniforms.model = transforms.model;
+        d.uniforms.view = transforms.view;
+        d.uniforms.projection = transforms.projection;
+        d.uniforms.normal_matrix = transforms.normal;
         // An atlas bake draws every triangle in texture space, where winding says nothing of facing.
         if (!request.atlas) d.culling = {!o.double_sided, o.mirrors() ? Winding::Clockwise : Winding::CounterClockwise};
         d.uniforms.time = float(request.time.value_or(double(scene.time)));

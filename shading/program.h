@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -188,8 +189,15 @@ struct ShaderInfo {
     bool stock_vertex_glsl = false;
 };
 
+// What the scene and the frame give every shader: its transforms (a GLSL 1.30 vertex stage reads
+// them as the uniforms mvp, model, view, projection and normalMatrix: scenes/shader_inputs.h),
+// time, its textures, and its own uniforms' values.
 struct Uniforms {
-    glm::mat4 model_view_projection{1.0f};
+    glm::mat4 model_view_projection{1.0f};  // gl_ModelViewProjectionMatrix, mvp
+    glm::mat4 model{1.0f};                  // world from object
+    glm::mat4 view{1.0f};                   // view from world
+    glm::mat4 projection{1.0f};             // clip from view
+    glm::mat3 normal_matrix{1.0f};          // transpose(inverse(mat3(view * model)))
     float time = 0.0f;
     const glsl::sampler2D* teximage = nullptr;  // set when Needs::texture
     // ShaderInfo::uniforms' values, kUniformWords 32-bit words each in their order: floats' bits

@@ -23,6 +23,7 @@
 #include "render/scene_render.h"
 #include "render/volume_bake.h"
 #include "tests/reference/comparison.h"
+#include "tests/test_command.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -844,6 +845,68 @@ TEST_CASE("bake-volume: the command writes a volume that loads as a sampler3D, a
     CHECK_FALSE(std::filesystem::exists(dir / "big.png"));
     CHECK_FALSE(std::filesystem::exists(dir / "none.png"));
     CHECK_FALSE(std::filesystem::exists(dir / "tex.png"));
+}
+
+}  // namespace qs
+
+namespace qs {
+
+TEST_CASE("scene inputs by name: mvp, position and texcoord draw what the compatibility profile's names draw; "
+          "what the scene does not feed is refused by name",
+          "[reference][inputs]") {
+    using test::kBin;
+    using test::kPlane;
+    const auto dir = work_dir() / "inputs-glsl";
+    std::filesystem::create_directories(dir);
+    auto read = [](const std::filesystem::path& p) {
+        std::ifstream in(p);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    auto write = [&](const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; };
+    // dots as exported (plane_st.vert: gl_ModelViewProjectionMatrix * gl_Vertex), and its fragment
+    // stage after a GLSL 1.30 vertex stage that declares its inputs.
+    const std::string frag = read(std::filesystem::path(QUADSHADE_GLSL_DIR) / "dots.frag");
+    REQUIRE(frag.starts_with("#version 120\n"));
+    write("dots.vert", read(std::filesystem::path(QUADSHADE_GLSL_DIR) / "dots.vert"));
+    write("dots.frag", frag);
+    const std::string declared_vert = "#version 130\nuniform mat4 mvp;\nin vec3 position;\nin vec2 texcoord;\nout vec2 st;\n"
+                                      "void main() {\n    st = texcoord;\n    gl_Position = mvp * vec4(position, 1.0);\n}\n";
+    const std::string frag130 = "#version 130\n" + frag.substr(frag.find('\n') + 1);
+    write("declared.vert", declared_vert);
+    write("declared.frag", frag130);
+    auto render = [&](const std::string& shader, std::string* err = nullptr) {
+        const std::string cmd = (kBin / "quadshade-reference").string() + " " + kPlane.string() + " --glsl " + dir.string() +
+                                " --size 96x64 --shader " + shader + " -o " + (dir / (shader + ".exr")).string();
+        return test::run(cmd, err, dir / (shader + ".txt"));
+    };
+    REQUIRE(render("dots") == 0);
+    REQUIRE(render("declared") == 0);
+    const Image a = read_image(dir / "dots.exr"), b = read_image(dir / "declared.exr");
+    CHECK(a.rgba == b.rgba);
+    std::size_t covered = 0;
+    for (std::size_t p = 3; p < b.rgba.size(); p += 4) covered += b.rgba[p] > 0.5f;
+    CHECK(covered == b.rgba.size() / 4);  // the plane fills the frame: nothing left black
+
+    // A transform under a name the scene does not feed, an attribute it has no data for, a
+    // scene transform of the wrong type: refused, named, exit 1.
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"uniform mat4 modelViewMatrix;\nin vec3 position;\nvoid main() { gl_Position = modelViewMatrix * vec4(position, 1.0); }\n",
+         "uniform mat4 'modelViewMatrix' is none of the scene's transforms"},
+        {"uniform mat4 mvp;\nin vec3 position;\nin vec4 tangent;\nvoid main() { gl_Position = mvp * vec4(position + tangent.xyz, 1.0); }\n",
+         "vertex input 'tangent' is none the scene feeds"},
+        {"uniform mat3 mvp;\nin vec3 position;\nvoid main() { gl_Position = vec4(mvp * position, 1.0); }\n",
+         "uniform 'mvp' is the scene's transform: declare it mat4"},
+    };
+    for (std::size_t i = 0; i < refused.size(); ++i) {
+        const std::string name = "refused" + std::to_string(i);
+        write(name + ".vert", "#version 130\n" + refused[i].first);
+        write(name + ".frag", "#version 130\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+        std::string err;
+        CHECK(render(name, &err) == 1);
+        INFO(err);
+        CHECK(err.find(refused[i].second) != std::string::npos);
+        CHECK(err.find(name) != std::string::npos);
+    }
 }
 
 }  // namespace qs
