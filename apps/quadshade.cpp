@@ -53,19 +53,24 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
 }
 
 struct CheckArgs {
-    std::vector<std::string> shaders, rules{"fine"}, plugins;
+    std::vector<std::string> shaders, rules{"fine"}, plugins, scenes;
     bool all = false;
-    std::string scenes, output = "quadshade-check";
-    int jobs = 0;
+    std::string output = "quadshade-check";
+    int jobs = 0, width = 0, height = 0;
 };
 
 void add_check_options(CLI::App& cmd, CheckArgs& a) {
     cmd.add_option("shaders", a.shaders, "the shaders to check (catalogue names)")->option_text("SHADER...");
     cmd.add_flag("--all", a.all, "check every shader of the catalogue, plugins' included (not the\nbuilt-in probes)");
     cmd.add_option("--scenes", a.scenes,
-                   "check on every .gltf/.glb scene in DIR (default: the conformance\n"
-                   "scenes and the Table 1.1 plane)")
-        ->option_text("DIR");
+                   "check on these scenes: .gltf/.glb files, and folders standing for\n"
+                   "every scene in them (repeatable; default: the conformance scenes\n"
+                   "and the Table 1.1 plane)")
+        ->option_text("SCENE|DIR ...");
+    cmd.add_option_function<std::vector<int>>(
+           "--size", [&a](const std::vector<int>& v) { a.width = v[0], a.height = v[1]; },
+           "render every case at this size (default: each scene's own)")
+        ->delimiter('x')->expected(2)->check(CLI::Range(1, 16384))->option_text("WxH");
     cmd.add_option("--rules", a.rules,
                    "derivative rules, each against its OSMesa driver: fine (llvmpipe,\n"
                    "default), coarse-lower (softpipe)")
@@ -223,7 +228,8 @@ int cmd_check(const CheckArgs& a) {
     if (a.all == !a.shaders.empty()) throw UsageError("check: name the shaders to check, or --all (not both)");
     CheckRequest request;
     request.shaders = a.shaders;
-    request.scenes = a.scenes;
+    request.scenes.assign(a.scenes.begin(), a.scenes.end());
+    request.width = a.width, request.height = a.height;
     request.output = a.output;
     request.jobs = a.jobs;
     request.rules.clear();
@@ -332,7 +338,9 @@ int main(int argc, char** argv) {
                                                   : gallery_cmd->parsed() ? gallery.plugins
                                                   : bake_cmd->parsed()   ? bake.plugins
                                                                          : shader_plugins;
-        for (const std::string& plugin : plugins) load_plugin(plugin);
+        for (const std::string& plugin : plugins) {
+            for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+        }
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
         if (check_cmd->parsed()) return cmd_check(check);

@@ -251,7 +251,9 @@ int cmd_render(RenderArgs& a) {
     path_of(a.output, first);  // a bad pattern is refused before anything is read
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
 
-    for (const std::string& plugin : a.plugins) load_plugin(plugin);
+    for (const std::string& plugin : a.plugins) {
+        for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+    }
     Scene scene = load_scene(a.scene, a.load);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {

@@ -68,7 +68,9 @@ namespace registration {
 // Adds `program` to the catalogue, in `collection` (empty: none), from the plugin being loaded if
 // any (render/plugins.h). A name already taken, or an `abi` other than this build's, is recorded
 // and reported by the loader (or, for a built-in shader, by the first call to catalogue()).
-void add(const Program& program, const ShaderAbi& abi, std::string_view collection);
+// `optimised`: whether the code that registers it was compiled with optimisation (a plugin built
+// without renders several times slower, and the loader warns).
+void add(const Program& program, const ShaderAbi& abi, std::string_view collection, bool optimised = true);
 
 // Where registrations come from while a plugin's static constructors run; empty when built in.
 void begin_plugin(const std::filesystem::path& plugin);
@@ -76,13 +78,19 @@ void begin_plugin(const std::filesystem::path& plugin);
 struct PluginResult {
     int added = 0;
     std::vector<std::string> problems;
+    bool unoptimised = false;  // some of its shaders were compiled without optimisation
 };
 PluginResult end_plugin();
 
 // One object per registration line: its constructor registers a ProgramOf<S> for each S.
 template <class... Shaders>
 struct Registrar {
-    explicit Registrar(std::string_view collection) { (add(program<Shaders>(), ShaderAbi{}, collection), ...); }
+    explicit Registrar(std::string_view collection) { (add(program<Shaders>(), ShaderAbi{}, collection, kOptimised), ...); }
+#if defined(__OPTIMIZE__)
+    static constexpr bool kOptimised = true;  // as the file that registers them was compiled
+#else
+    static constexpr bool kOptimised = false;
+#endif
     template <class S>
     static const Program& program();  // defined by program_of.h
 };

@@ -1,4 +1,5 @@
-// Diagonal stripes whose edges are anti-aliased over the width of a pixel (fwidth).
+// Diagonal stripes whose edges are anti-aliased over the width of a pixel (fwidth). The vertex
+// stage is quadshade's plane_st.vert: st = gl_MultiTexCoord0.st.
 varying vec2 st;
 void main(void) {
     float ramp = abs(fract(8.0 * (st.x + st.y)) * 2.0 - 1.0);
