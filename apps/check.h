@@ -61,7 +61,7 @@ CaseCounts count_differences(const Image& ours, const Image& reference);
 int run_check(const CheckRequest& request);
 
 // The scenes installed beside the executable (share/quadshade/scenes beside its bin/): those
-// `check` runs on by default, the seeds' planes and the solid textures' scene.
+// `check` runs on by default, Lawlor's plane, the ProcTexGen spheres and the solid textures' scene.
 std::filesystem::path installed_scenes_folder();
 
 }  // namespace qs

@@ -116,8 +116,8 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--size", a.size, "each shader's square in pixels (default 160)")->check(CLI::Range(16, 1024))->option_text("N");
     cmd.add_option("--columns", a.columns, "squares per row, at most (default 6)")->check(CLI::Range(1, 64))->option_text("N");
     cmd.add_option("--scenes", a.scenes,
-                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, seed 004's\n"
-                   "plane, the solids, seed 001's spheres and the conformance scenes); a shader goes on the first\n"
+                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, Lawlor's\n"
+                   "plane, the solids, the ProcTexGen spheres and the conformance scenes); a shader goes on the first\n"
                    "that binds its textures")
         ->option_text("SCENE...");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
@@ -162,7 +162,7 @@ int cmd_gallery(const GalleryArgs& a) {
     request.frame.shading.threads = a.threads;
     if (a.scenes.empty()) {
         const fs::path folder = installed_scenes_folder();
-        for (const char* name : {"table-1.1-plane.gltf", "seed-004-plane.gltf", "solids.gltf", "seed-001-spheres.gltf"}) {
+        for (const char* name : {"table-1.1-plane.gltf", "lawlor-plane.gltf", "solids.gltf", "proctexgen-spheres.gltf"}) {
             if (!fs::exists(folder / name)) throw std::runtime_error((folder / name).string() + ": missing (an incomplete installation?)");
             request.scenes.push_back(folder / name);
         }
@@ -313,7 +313,7 @@ int main(int argc, char** argv) {
     add_volume_options(*volume_cmd, volume);
     GalleryArgs gallery;
     CLI::App* gallery_cmd = app.add_subcommand(
-        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (seed)");
+        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (source)");
     add_gallery_options(*gallery_cmd, gallery);
     BakeArgs bake;
     CLI::App* bake_cmd = app.add_subcommand(

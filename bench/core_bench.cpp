@@ -24,7 +24,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl.h"
 #include "shading/noise/simplex2d.h"
-#include "shading/shaders/seed_patterns.h"
+#include "shading/shaders/integer_and_loop.h"
 #include "raster/rasterizer.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
@@ -153,7 +153,7 @@ void BM_plain_stdx_loop(benchmark::State& state) {
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// ---- the integer hash and the loop with break (shading/shaders/seed_patterns.h) ---------------
+// ---- the integer hash and the loop with break (shading/shaders/integer_and_loop.h) ---------------
 // A shader's fragment function over the grid on number type F, as BM_simplex2d does.
 template <class F, class Fragment>
 [[gnu::flatten]] void run_grid(benchmark::State& state, Fragment fragment) {
@@ -255,7 +255,7 @@ void BM_plain(benchmark::State& state) {
 
 // GLSL sin on the lanes (llvmpipe's polynomial, shading/number/sin_cos.h) against the library's
 // std::experimental::sin it replaced, on the sine hash's arguments: dot(p, (12.9898, 78.233))
-// over p in [0, 128)^2, the range of seed 003's 128 tiles.
+// over p in [0, 128)^2, the range of the OpenGL ES tutorial's 128 tiles.
 template <class F>
 [[gnu::flatten]] void BM_sin(benchmark::State& state) {
     constexpr int n = lanes_of<F>();

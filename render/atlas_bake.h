@@ -1,5 +1,5 @@
 #pragma once
-// A shader baked into a mesh's texture atlas, as seed 001's ProcTexGen does it: every triangle
+// A shader baked into a mesh's texture atlas, as the ProcTexGen articles do it: every triangle
 // drawn at its TEXCOORD_0 (render/atlas_program.h) while the shader's own vertex stage gives its
 // varyings, so each texel gets the colour the live render computes at the surface point that
 // texel maps to. It is a frame like any other (quads, helper lanes, the same rasterizer), so

@@ -3,7 +3,7 @@
 // its varyings (the object position, texcoords, anything it computes) are what a live render
 // interpolates, and only gl_Position is replaced by the vertex's TEXCOORD_0:
 //     gl_Position = vec4(gl_MultiTexCoord0.st * 2.0 - 1.0, 0.0, 1.0);
-// the blog's bake (seed 001: "render the objects into the texture, using the UV coordinates as
+// the blog's bake (the ProcTexGen articles: "render the objects into the texture, using the UV coordinates as
 // the position"). The viewport then puts texcoord s at window x = s W and t at window y = t H,
 // window row y being texture row y as glTexImage2D counts rows from t = 0: a frame's bottom row
 // is the atlas's first row (t = 0). The reference's GLSL does the same (reference/gl_renderer.h).

@@ -1,5 +1,5 @@
 #pragma once
-// Skirts against seams (seed 001, "Short Skirt, Long Jacket"): a baked texture is sampled with
+// Skirts against seams (the ProcTexGen articles, "Short Skirt, Long Jacket"): a baked texture is sampled with
 // bilinear filtering and mipmaps, which blend texels across a chart's edge with the gutter beyond
 // it; drawn at a chart's border the mesh then shows a dark seam. A skirt is a strip of triangles
 // along each chart boundary, pushed out into the gutter in texcoord space while keeping the

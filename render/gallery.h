@@ -1,7 +1,7 @@
 #pragma once
 // The catalogue as contact sheets: one image per collection (shading/catalogue.h), every shader
 // of it rendered on a scene that can feed it and labelled with its name. The README shows the
-// seeds' sheets; `quadshade gallery` writes them.
+// source texts' sheets; `quadshade gallery` writes them.
 
 #include <filesystem>
 #include <string>
@@ -37,7 +37,7 @@ struct GallerySheet {
 std::vector<GallerySheet> render_gallery(const GalleryRequest& request);
 
 // The file name of a collection's sheet: its name up to a colon, lower case, spaces as dashes
-// ("seed 002: Noise is Beautiful" -> "seed-002"; separators . _ / as dashes), other characters dropped.
+// ("Noise is Beautiful: ..." -> "noise-is-beautiful"; separators . _ / as dashes), other characters dropped.
 std::string gallery_file_stem(const std::string& collection);
 
 }  // namespace qs

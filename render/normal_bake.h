@@ -1,6 +1,6 @@
 #pragma once
 // Normal maps from a shader's height (shading/height_field.h), baked into the mesh's UV atlas as
-// seed 001 does: "Generating three heights in close proximity (using (pos), (pos+tangent*scaler),
+// the ProcTexGen articles do: "Generating three heights in close proximity (using (pos), (pos+tangent*scaler),
 // (pos+bitangent*scaler)) gives me two edges which I can take the cross-product of to get a
 // pixel normal map ... in object space".
 //

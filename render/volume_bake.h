@@ -1,5 +1,5 @@
 #pragma once
-// A shader evaluated on an N^3 grid of object-space positions, as a 3D texture (seed 001's fast
+// A shader evaluated on an N^3 grid of object-space positions, as a 3D texture (the ProcTexGen articles' fast
 // noise reads such a volume). Each z slice is a frame: the square [-1, 1]^2 at the slice's depth
 // seen by an orthographic camera at N x N pixels, whose pixel centres are the slice's texel
 // centres. So a volume is made exactly as a GL application would bake it (a full-screen square

@@ -10,7 +10,7 @@
 
 namespace qs::shaders {
 
-QUADSHADE_SHADERS_IN(kSeed000, DotsAA<AAWidth::Fwidth>, DotsAA<AAWidth::Step>, BricksAA<AAWidth::Fwidth>, BricksAA<AAWidth::Step>,
+QUADSHADE_SHADERS_IN(kGustavson, DotsAA<AAWidth::Fwidth>, DotsAA<AAWidth::Step>, BricksAA<AAWidth::Fwidth>, BricksAA<AAWidth::Step>,
                      WorleyTiles<AAWidth::Fwidth>, WorleyTiles<AAWidth::Step>, Halftone<AAWidth::Fwidth>,
                      Halftone<AAWidth::Step>, Spots<AAWidth::Length>, Spots<AAWidth::Step>)
 

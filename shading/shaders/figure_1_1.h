@@ -131,6 +131,6 @@ struct Tiles3d {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed000, FlowNoise, Simplex3d, Turbulence, Spots<>, Tiles3d)
+QUADSHADE_SHADERS_IN(kGustavson, FlowNoise, Simplex3d, Turbulence, Spots<>, Tiles3d)
 
 }  // namespace qs::shaders

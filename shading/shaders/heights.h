@@ -135,7 +135,7 @@ struct BakedLit {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed001, NoiseBumps, NoiseBumpsHeightMap, NoiseBumpsLit, BakedLit)
+QUADSHADE_SHADERS_IN(kProcTexGen, NoiseBumps, NoiseBumpsHeightMap, NoiseBumpsLit, BakedLit)
 QUADSHADE_HEIGHT_FIELD(NoiseBumps, NoiseBumpsHeightMap)
 
 }  // namespace qs::shaders

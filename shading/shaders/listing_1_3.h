@@ -1,5 +1,5 @@
 #pragma once
-// Listing 1.3's 2D simplex noise, and the listing's typo: a family of its own, compiled without
+// Listing 1.3's 2D simplex noise, and the listing's typo as printed: a family of its own, compiled without
 // the other shader groups' scheduling (shading/CMakeLists.txt says why). Translated from
 // simplex2d.frag beside this header and shading/noise/simplex2d.glsl.
 
@@ -18,21 +18,21 @@ using namespace qs::glsl;
 
 // The typo makes the noise jump across simplex edges (tests/shading); Mesa's reassociated dot
 // products put one pixel of the grazing plane on the jump's other side (measured: 1 pixel, 83/255).
-inline constexpr CheckBound kSeedTypoCheckBounds[] = {
+inline constexpr CheckBound kListingTypoCheckBounds[] = {
     {"grazing-plane", "fine", 3, 3, 0,
      "the typo's jumps along simplex edges, where Mesa's reassociated dot products move a pixel across (measured 1)"}};
 
 template <noise::Simplex2dCorner corner>
 struct Simplex2d {
-    static constexpr bool typo = corner == noise::Simplex2dCorner::SeedTypo;
+    static constexpr bool typo = corner == noise::Simplex2dCorner::ListingTypo;
     static constexpr ShaderInfo info{
-        .name = typo ? "simplex2d_seed_typo" : "simplex2d",
+        .name = typo ? "simplex2d_listing_typo" : "simplex2d",
         .description =
-            typo ? "Listing 1.3 with the seed's C.xxxx typo (breaks along simplex edges)" : "Listing 1.3: 2D simplex noise",
+            typo ? "Listing 1.3 with its printed C.xxxx typo (breaks along simplex edges)" : "Listing 1.3: 2D simplex noise",
         .glsl_fragment = {"noise/simplex2d.glsl", "shaders/simplex2d.frag"},
-        .glsl_defines = typo ? "#define SIMPLEX2D_SEED_TYPO\n" : "",
+        .glsl_defines = typo ? "#define SIMPLEX2D_LISTING_TYPO\n" : "",
         .wide_batches = true,
-        .check_bounds = typo ? std::span<const CheckBound>(kSeedTypoCheckBounds) : std::span<const CheckBound>(),
+        .check_bounds = typo ? std::span<const CheckBound>(kListingTypoCheckBounds) : std::span<const CheckBound>(),
     };
     using VertexStage = PlaneSt10;
     template <class F>
@@ -41,6 +41,6 @@ struct Simplex2d {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed000, Simplex2d<noise::Simplex2dCorner::Correct>, Simplex2d<noise::Simplex2dCorner::SeedTypo>)
+QUADSHADE_SHADERS_IN(kGustavson, Simplex2d<noise::Simplex2dCorner::Correct>, Simplex2d<noise::Simplex2dCorner::ListingTypo>)
 
 }  // namespace qs::shaders

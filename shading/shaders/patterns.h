@@ -216,7 +216,7 @@ struct GradientAA {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed000, PatternS, Lines, Ridges, Checker, Wave, WaveAA, Bricks, BricksAA<>, DotsAA<>, Facets, Blobs, Rings,
+QUADSHADE_SHADERS_IN(kGustavson, PatternS, Lines, Ridges, Checker, Wave, WaveAA, Bricks, BricksAA<>, DotsAA<>, Facets, Blobs, Rings,
                      Cellular2x2, GradientAA)
 
 }  // namespace qs::shaders

@@ -109,6 +109,6 @@ struct Worley {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed000, ConstantColor, SingleTexture, Dots, Perlin, Perlin5, Worley, WorleyTiles<>, Halftone<>)
+QUADSHADE_SHADERS_IN(kGustavson, ConstantColor, SingleTexture, Dots, Perlin, Perlin5, Worley, WorleyTiles<>, Halftone<>)
 
 }  // namespace qs::shaders

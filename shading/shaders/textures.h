@@ -1,9 +1,8 @@
 #pragma once
-// Shaders that sample named textures: seed 001's fast noise from a 3D volume, and the probes that
-// compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod, textureSize
-// and texelFetch) with llvmpipe
-// (tests/reference/test_texture_conformance.cpp). Translated from the .frag files beside this
-// header.
+// Shaders that sample named textures: the ProcTexGen articles' fast noise from a 3D volume, and the
+// probes that compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod,
+// textureSize and texelFetch) with llvmpipe (tests/reference/test_texture_conformance.cpp).
+// Translated from the .frag files beside this header.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
@@ -128,11 +127,11 @@ struct TexelFetch3dProbe {
     }
 };
 
-// Seed 001's noiseFast on the object position (as improved noise, which it approximates).
+// The ProcTexGen articles' noiseFast on the object position (as improved noise, which it approximates).
 struct FastNoise {
     static constexpr ShaderInfo info{
         .name = "fast_noise",
-        .description = "seed 001: noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
+        .description = "noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
         .needs = {.coordinates = Coordinates::Object3D, .samplers = {SamplerUse{"noise3dSampler", 3}}},
         .glsl_fragment = {"shaders/fast_noise.frag"},
         .wide_batches = true,
@@ -155,6 +154,6 @@ struct FastNoise {
 
 QUADSHADE_SHADERS_IN(kProbes, TextureLodProbe, TextureBiasProbe, Texture3dProbe, Texture3dLodProbe, TexelFetchProbe,
                      TexelFetch3dProbe)
-QUADSHADE_SHADERS_IN(kSeed001, FastNoise)
+QUADSHADE_SHADERS_IN(kProcTexGen, FastNoise)
 
 }  // namespace qs::shaders

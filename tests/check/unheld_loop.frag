@@ -1,4 +1,4 @@
-// The GLSL unheld_loop translates (tests/check/mistranslated_stripes.cpp): 0.5 steps until x
+// The GLSL unheld_loop translates (tests/check/wrong_translations.cpp): 0.5 steps until x
 // passes 4 s, counted.
 varying vec2 st;
 void main(void) {

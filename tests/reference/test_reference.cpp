@@ -99,7 +99,7 @@ const std::map<std::string, const char*> kSoftpipeCountedOnly = {
      "borders each way an ulp picks the neighbouring cell's hash on 1495 pixels (0.6%)"},
     {"hash_perm289", "as hash_pcg (measured: 1495 pixels over 1/255)"},
     {"fbm_simplex2d",
-     "seed 002's simplex noise jumps where luv.x == luv.y exactly (its step() pair takes the far corner twice and "
+     "the Noise is Beautiful simplex noise jumps where luv.x == luv.y exactly (its step() pair takes the far corner twice and "
      "leaves one out), lines that pixel centres of the plane hit exactly at the finer octaves: quadshade's st is "
      "llvmpipe's to the bit and lands on them as it does, softpipe's is an ulp off (see perlin5) and misses them "
      "(measured: 706 pixels over 1/255, 539 over 2/255, along those lines)"},
@@ -123,7 +123,7 @@ const std::map<std::string, const char*> kSoftpipeCountedOnly = {
     {"lawlor_voronoi_f1", "as lawlor_dots_moved: the feature points move (515 pixels over 1/255; alpha is F1)"},
     {"lawlor_voronoi_f2", "as lawlor_voronoi_f1 (alpha is F2: 914 pixels cross 1/2)"},
     {"lawlor_stained_glass", "as lawlor_voronoi_f1 (43996 pixels over 1/255, none over 5/255)"},
-    {"seed-001-spheres",
+    {"proctexgen-spheres",
      "fast_noise's two trilinear lookups of the volume: softpipe filters with float weights where llvmpipe (and "
      "quadshade) round them to 1/256 and lerp in 8 bits, and the low octave turns the high one by up to 2 pi "
      "(3790 pixels over 1/255, 574 over 2/255, of 505600; the other shaders of the scene: its 2 silhouette pixels)"},
@@ -137,14 +137,14 @@ struct Case {
     int width, height;
 };
 
-// Seed 003's shaders discard what lies above a square viewport as wide as the window: they are
+// The OpenGL ES tutorial's shaders discard what lies above a square viewport as wide as the window: they are
 // compared in a window taller than wide (the tutorial's iPhone 5 screen, 320x568 points), where
 // the 248 rows above the square are discarded.
 bool portrait(std::string_view shader) { return shader.starts_with("es_"); }
 constexpr int kPortraitWidth = 320, kPortraitHeight = 568;
 
 std::vector<Case> cases() {
-    std::vector<Case> all = {{"figure-1.1", kFigure, "", 1264, 400}, {"seed-001-spheres", kSeed001Spheres, "", 1264, 400}};
+    std::vector<Case> all = {{"figure-1.1", kFigure, "", 1264, 400}, {"proctexgen-spheres", kProcTexGenSpheres, "", 1264, 400}};
     for (const Program* p : catalogue()) {
         const ShaderInfo& info = p->info();
         if (info.name.find("probe") != std::string_view::npos) continue;
@@ -241,7 +241,7 @@ TEST_CASE("every shader matches OSMesa softpipe under the coarse-lower rule", "[
     check_against("softpipe", Derivatives::CoarseLower, "coarse-lower");
 }
 
-TEST_CASE("seed 003's square viewport: what lies above it in a portrait window is discarded, as by llvmpipe", "[reference][discard]") {
+TEST_CASE("the OpenGL ES tutorial's square viewport: what lies above it in a portrait window is discarded, as by llvmpipe", "[reference][discard]") {
     // The plane's clear colour is black, and so is es_tiles2's tile at the origin (sin(0) = 0):
     // the other three tiles are drawn, nothing above the square (the image's first rows).
     const Case c{"es_tiles2", kPlane, "es_tiles2", kPortraitWidth, kPortraitHeight};

@@ -1,7 +1,8 @@
 #pragma once
-// Seed 002: the "Noise is Beautiful" notes' two float hashes, each shown on 32 cells across the
-// Table 1.1 plane (the seed says how to hash, not what it drew). Translated from the .frag files
-// beside this header, line for line. (The integer hashes are in seed_002_noise_is_beautiful.h.)
+// The "Noise is Beautiful" notes' two float hashes, each shown on 32 cells across the Table 1.1
+// plane (the notes say how to hash, not what they drew): a family of its own, compiled without the
+// other families' scheduling (shading/CMakeLists.txt says why). Translated from the .frag files
+// beside this header, line for line. (The integer hashes are in noise_is_beautiful.h.)
 
 #include "shading/glsl.h"
 #include "shading/program.h"
@@ -19,7 +20,7 @@ using namespace qs::glsl;
 struct HashSin {
     static constexpr ShaderInfo info{
         .name = "hash_sin",
-        .description = "seed 002: the sine hash fract(sin(dot(p, (12.9898, 78.233))) * 43758.5453) of 32 cells across",
+        .description = "the sine hash fract(sin(dot(p, (12.9898, 78.233))) * 43758.5453) of 32 cells across",
         .glsl_fragment = {"shaders/hash_sin.frag"},
         .wide_batches = true,
     };
@@ -44,7 +45,7 @@ struct HashSin {
 struct HashHoskins {
     static constexpr ShaderInfo info{
         .name = "hash_hoskins",
-        .description = "seed 002: Dave Hoskins' hash12 (fract of products) of 32 cells across",
+        .description = "Dave Hoskins' hash12 (fract of products) of 32 cells across",
         .glsl_fragment = {"shaders/hash_hoskins.frag"},
     };
     using VertexStage = PlaneSt;
@@ -60,6 +61,6 @@ struct HashHoskins {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed002, HashSin, HashHoskins)
+QUADSHADE_SHADERS_IN(kNoiseIsBeautiful, HashSin, HashHoskins)
 
 }  // namespace qs::shaders

@@ -1,9 +1,9 @@
 #pragma once
-// Seed 001: the ProcTexGen blog's solid textures. Ken Perlin's improved noise over the blog's
-// permutation and gradient tables, its looping variant, and the volume the fast noise
-// (textures.h: fast_noise) reads, baked by `quadshade bake-volume`; the blog's 3D Worley noise in
-// its eight displays and as fBm. Translated from the .frag files beside this header and
-// shading/noise/improved_noise.glsl, worley3d.glsl.
+// The ProcTexGen articles' solid textures (collections.h cites them). Ken Perlin's improved noise
+// over the articles' permutation and gradient tables, its looping variant, and the volume the fast
+// noise (textures.h: fast_noise) reads, baked by `quadshade bake-volume`; the articles' 3D Worley
+// noise in its eight displays and as fBm. Their integer lattice needs GLSL 1.30. Translated from
+// the .frag files beside this header and shading/noise/improved_noise.glsl, worley3d.glsl.
 
 #include "shading/glsl.h"
 #include "shading/noise/improved_noise.h"
@@ -44,7 +44,7 @@ struct FastNoiseVolumeStage {
 struct ImprovedNoise {
     static constexpr ShaderInfo info{
         .name = "improved_noise",
-        .description = "seed 001: Ken Perlin's improved noise (permutation table, 16 gradients), 4 cells per unit (GLSL 1.30)",
+        .description = "Ken Perlin's improved noise (permutation table, 16 gradients), 4 cells per unit (GLSL 1.30)",
         .needs = {.coordinates = Coordinates::Object3D},
         .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/improved_noise.frag"},
         .glsl_version = 130,
@@ -59,7 +59,7 @@ struct ImprovedNoise {
 struct ImprovedNoiseLoop {
     static constexpr ShaderInfo info{
         .name = "improved_noise_loop",
-        .description = "seed 001: texShaderNoise, improved noise looping every 8 cells (repeat 8, base 0), 8 cells per unit (GLSL 1.30)",
+        .description = "texShaderNoise, improved noise looping every 8 cells (repeat 8, base 0), 8 cells per unit (GLSL 1.30)",
         .needs = {.coordinates = Coordinates::Object3D},
         .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/improved_noise_loop.frag"},
         .glsl_version = 130,
@@ -74,7 +74,7 @@ struct ImprovedNoiseLoop {
 struct FastNoiseVolume {
     static constexpr ShaderInfo info{
         .name = "fast_noise_volume",
-        .description = "seed 001: the fast noise's volume, looping noise of 8 cells (R: base 0, G: base 8) over [-1, 1]^3; bake it with bake-volume --size 32 (GLSL 1.30)",
+        .description = "the fast noise's volume, looping noise of 8 cells (R: base 0, G: base 8) over [-1, 1]^3; bake it with bake-volume --size 32 (GLSL 1.30)",
         .needs = {.coordinates = Coordinates::Object3D},
         .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/improved_noise.glsl", "shaders/fast_noise_volume.frag"},
         .glsl_version = 130,
@@ -98,14 +98,14 @@ struct Worley3d {
                                               "worley3d_f1_manhattan", "worley3d_f2_manhattan",
                                               "worley3d_f2_minus_f1_manhattan", "worley3d_f1_plus_f2_half_manhattan"};
     static constexpr const char* kDescriptions[8] = {
-        "seed 001: 3D Worley noise, F1 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, F2 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, F2 - F1 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, (F1 + F2) / 2 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, F1 / 2 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, F2 / 2 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, (F2 - F1) / 2 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)",
-        "seed 001: 3D Worley noise, (F1 + F2) / 4 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)"};
+        "3D Worley noise, F1 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, F2 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, F2 - F1 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, (F1 + F2) / 2 (Euclidean, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, F1 / 2 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, F2 / 2 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, (F2 - F1) / 2 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)",
+        "3D Worley noise, (F1 + F2) / 4 (Manhattan, jitter .9, 4 cells per unit; GLSL 1.30)"};
     static constexpr const char* kDefines[8] = {
         "#define WORLEY3D_MANHATTAN false\n#define WORLEY3D_SCALE 1.0\n#define WORLEY3D_SHOW(f1, f2) (f1)\n",
         "#define WORLEY3D_MANHATTAN false\n#define WORLEY3D_SCALE 1.0\n#define WORLEY3D_SHOW(f1, f2) (f2)\n",
@@ -137,7 +137,7 @@ struct Worley3d {
 struct Worley3dFbm {
     static constexpr ShaderInfo info{
         .name = "worley3d_fbm",
-        .description = "seed 001: 4 octaves of 3D Worley F1 (frequencies 1 to 8, weights 1 to 1/8; GLSL 1.30)",
+        .description = "4 octaves of 3D Worley F1 (frequencies 1 to 8, weights 1 to 1/8; GLSL 1.30)",
         .needs = {.coordinates = Coordinates::Object3D},
         .glsl_fragment = {"noise/perlin_permutation.glsl", "noise/worley3d.glsl", "shaders/worley3d_fbm.frag"},
         .glsl_version = 130,
@@ -159,7 +159,7 @@ struct Worley3dFbm {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed001, ImprovedNoise, ImprovedNoiseLoop, FastNoiseVolume, Worley3d<WorleyShow::F1, false>,
+QUADSHADE_SHADERS_IN(kProcTexGen, ImprovedNoise, ImprovedNoiseLoop, FastNoiseVolume, Worley3d<WorleyShow::F1, false>,
                      Worley3d<WorleyShow::F2, false>, Worley3d<WorleyShow::F2MinusF1, false>, Worley3d<WorleyShow::Mean, false>,
                      Worley3d<WorleyShow::F1, true>, Worley3d<WorleyShow::F2, true>, Worley3d<WorleyShow::F2MinusF1, true>,
                      Worley3d<WorleyShow::Mean, true>, Worley3dFbm)

@@ -1,7 +1,8 @@
 #pragma once
-// Shaders from the other procedural-texture texts (shared/seeds): an integer hash and an
-// escape-time loop, on the Table 1.1 plane with st in [0,1]^2. They are the benchmark's integer
-// and loop shaders (bench/core_bench.cpp). Translated from the .frag files beside this header.
+// The benchmarks' integer and loop shaders (bench/core_bench.cpp), from two of the texts: value
+// noise from the PCG integer hash ("Noise is Beautiful") and an escape-time loop (Lawlor's
+// Mandelbrot in window coordinates), on the Table 1.1 plane. Translated from the .frag files beside
+// this header.
 
 #include "shading/glsl.h"
 #include "shading/noise/pcg_hash.h"
@@ -58,7 +59,7 @@ struct Mandelbrot {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed002, PcgValueNoise)
-QUADSHADE_SHADERS_IN(kSeed004, Mandelbrot)
+QUADSHADE_SHADERS_IN(kNoiseIsBeautiful, PcgValueNoise)
+QUADSHADE_SHADERS_IN(kLawlor, Mandelbrot)
 
 }  // namespace qs::shaders

@@ -1,12 +1,12 @@
 #pragma once
-// Seed 002: the "Noise is Beautiful" notes. Two of its cell hashes, each shown on 32 cells across
-// the Table 1.1 plane (the seed says how to hash, not what it drew); Perlin noise with gradients
-// from the permutation polynomial in 2D and 3D; simplex noise in 2D (on the seed's shear) and 3D
-// (Fibonacci-sphere gradients), their analytic gradients (dnoise), fBm, a multifractal, domain
-// warping and the Shadertoy scattering example. The 3D noises are solid textures (P = 4 cells per
-// object unit), compared on the sphere scene. Translated from the .frag files beside this header and the noise in
-// shading/noise/ (pcg_hash, permute_polynomial, simplex2d_skew, simplex3d_fibonacci), line for
-// line.
+// Notes on the book "Noise is Beautiful" (collections.h cites them). Two of their cell hashes, each
+// shown on 32 cells across the Table 1.1 plane (the notes say how to hash, not what they drew);
+// Perlin noise with gradients from the permutation polynomial in 2D and 3D; simplex noise in 2D (on
+// the notes' shear) and 3D (Fibonacci-sphere gradients), their analytic gradients (dnoise), fBm, a
+// multifractal, domain warping and the Shadertoy scattering example. The 3D noises are solid
+// textures (P = 4 cells per object unit), compared on the sphere scene. Translated from the .frag
+// files beside this header and the noise in shading/noise/ (pcg_hash, permute_polynomial,
+// simplex2d_skew, simplex3d_fibonacci), line for line.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
@@ -32,7 +32,7 @@ inline constexpr CheckBound kCellHashCheckBounds[] = {
 struct HashPcg {
     static constexpr ShaderInfo info{
         .name = "hash_pcg",
-        .description = "seed 002: the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
+        .description = "the PCG integer hash of 32 cells across (cellnoise_pcg2, GLSL 1.30)",
         .glsl_fragment = {"shaders/hash_pcg.frag"},
         .glsl_version = 130,
         .wide_batches = true,
@@ -48,7 +48,7 @@ struct HashPcg {
 struct HashPerm289 {
     static constexpr ShaderInfo info{
         .name = "hash_perm289",
-        .description = "seed 002: the permutation polynomial (34h + 10)h mod 289, chained over 32 cells across",
+        .description = "the permutation polynomial (34h + 10)h mod 289, chained over 32 cells across",
         .glsl_fragment = {"shaders/hash_perm289.frag"},
         .check_bounds = kCellHashCheckBounds,
     };
@@ -73,13 +73,13 @@ struct HashPerm289 {
 struct Perlin2dPerm {
     static constexpr ShaderInfo info{
         .name = "perlin2d_perm",
-        .description = "seed 002: Perlin noise with gradients from the permutation polynomial, quintic fade, 10 cells across",
+        .description = "Perlin noise with gradients from the permutation polynomial, quintic fade, 10 cells across",
         .glsl_fragment = {"noise/permute_polynomial.glsl", "shaders/perlin2d_perm.frag"},
     };
     using VertexStage = PlaneSt;
     template <class F>
     static vec2<F> gradient(const vec2<F>& p) {
-        using noise::seed002::permute;
+        using noise::noise_is_beautiful::permute;
         // Adjustable pseudo-random generator parameter
         float B1 = 7.f;
         float B2 = 23.f;
@@ -121,13 +121,13 @@ struct Perlin2dPerm {
     }
 };
 
-// Seed 002's simplex noise jumps where luv.x == luv.y exactly (the seed's step() pair takes the far
+// The notes' simplex noise jumps where luv.x == luv.y exactly (their step() pair takes the far
 // corner twice and leaves one out): at the finer octaves pixel centres of the Table 1.1 plane lie
 // exactly on those lines, where softpipe's st, an ulp off llvmpipe's (and quadshade's), misses
 // them (measured: fbm 531 pixels over 1/255 at 500x500, multifractal under 600).
 inline constexpr CheckBound kOctaveCheckBounds[] = {
     {"table-1.1-plane", "coarse-lower", 900, 700, 0,
-     "softpipe's st is an ulp off where the seed's noise jumps (luv.x == luv.y exactly, hit by pixel centres at fine "
+     "softpipe's st is an ulp off where the notes' noise jumps (luv.x == luv.y exactly, hit by pixel centres at fine "
      "octaves)"}};
 
 // Solid textures: the object-space position.
@@ -136,7 +136,7 @@ inline constexpr Needs kSolidNeeds{.coordinates = Coordinates::Object3D};
 struct Perlin3dPerm {
     static constexpr ShaderInfo info{
         .name = "perlin3d_perm",
-        .description = "seed 002: Perlin noise in 3D, the seed's 3D permutation-polynomial gradients, quintic fade; a solid texture",
+        .description = "Perlin noise in 3D, the notes' 3D permutation-polynomial gradients, quintic fade; a solid texture",
         .needs = kSolidNeeds,
         .glsl_fragment = {"noise/permute_polynomial.glsl", "shaders/perlin3d_perm.frag"},
     };
@@ -145,7 +145,7 @@ struct Perlin3dPerm {
     static vec3<F> fade(const vec3<F>& t) { return ((6.0f * t - 15.0f) * t + 10.0f) * t * t * t; }
     template <class F>
     static F noise(const vec3<F>& p) {
-        using noise::seed002::gradient;
+        using noise::noise_is_beautiful::gradient;
         vec3<F> f = fract(p);
         vec3<F> pf = floor(p);
         F n000 = dot(f, gradient(pf));
@@ -175,21 +175,21 @@ struct Perlin3dPerm {
 struct Simplex2dSkew {
     static constexpr ShaderInfo info{
         .name = "simplex2d_skew",
-        .description = "seed 002: simplex noise on the seed's xy_to_uv shear, permutation-polynomial gradients, 10 units across",
+        .description = "simplex noise on the notes' xy_to_uv shear, permutation-polynomial gradients, 10 units across",
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_skew.frag"},
         .wide_batches = true,
     };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
-        return vec4<F>(vec3<F>(noise::seed002::noise(in.st * 10.0f)), 1.0f);
+        return vec4<F>(vec3<F>(noise::noise_is_beautiful::noise(in.st * 10.0f)), 1.0f);
     }
 };
 
 struct Simplex3dFibonacci {
     static constexpr ShaderInfo info{
         .name = "simplex3d_fibonacci",
-        .description = "seed 002: 3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the seed's prose); a solid texture",
+        .description = "3D simplex noise with gradients on a Fibonacci sphere (the code ours, from the notes' prose); a solid texture",
         .needs = kSolidNeeds,
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_fibonacci.frag"},
         .wide_batches = true,
@@ -198,14 +198,14 @@ struct Simplex3dFibonacci {
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec3<F> grad;
-        return vec4<F>(vec3<F>(noise::seed002::noise3(in.P, grad)), 1.0f);
+        return vec4<F>(vec3<F>(noise::noise_is_beautiful::noise3(in.P, grad)), 1.0f);
     }
 };
 
 struct Simplex2dDnoise {
     static constexpr ShaderInfo info{
         .name = "simplex2d_dnoise",
-        .description = "seed 002: the analytic gradient of its 2D simplex noise (dnoise, ours: the seed's sum was an image) as red and green, the noise as blue",
+        .description = "the analytic gradient of its 2D simplex noise (dnoise, ours: the notes' sum was an image) as red and green, the noise as blue",
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/simplex2d_dnoise.frag"},
         .wide_batches = true,
     };
@@ -213,14 +213,14 @@ struct Simplex2dDnoise {
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec2<F> p = in.st * 10.0f;
-        return vec4<F>(0.5f + 0.15f * noise::seed002::dnoise(p), noise::seed002::noise(p), 1.0f);
+        return vec4<F>(0.5f + 0.15f * noise::noise_is_beautiful::dnoise(p), noise::noise_is_beautiful::noise(p), 1.0f);
     }
 };
 
 struct Simplex3dDnoise {
     static constexpr ShaderInfo info{
         .name = "simplex3d_dnoise",
-        .description = "seed 002: the analytic gradient of its 3D simplex noise as colour; a solid texture",
+        .description = "the analytic gradient of its 3D simplex noise as colour; a solid texture",
         .needs = kSolidNeeds,
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex3d_fibonacci.glsl", "shaders/simplex3d_dnoise.frag"},
         .wide_batches = true,
@@ -229,16 +229,16 @@ struct Simplex3dDnoise {
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
         vec3<F> grad;
-        noise::seed002::noise3(in.P, grad);
+        noise::noise_is_beautiful::noise3(in.P, grad);
         return vec4<F>(0.5f + 0.15f * grad, 1.0f);
     }
 };
 
-// Octave loops: a float counter to a constant bound, the same in every lane, as in the seed.
+// Octave loops: a float counter to a constant bound, the same in every lane, as in the notes.
 struct FbmSimplex2d {
     static constexpr ShaderInfo info{
         .name = "fbm_simplex2d",
-        .description = "seed 002: fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
+        .description = "fBm, 5 octaves of its 2D simplex noise summed with weights 2^-i, divided by 2",
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/fbm_simplex2d.frag"},
         .wide_batches = true,
         .check_bounds = kOctaveCheckBounds,
@@ -250,7 +250,7 @@ struct FbmSimplex2d {
         float k = 5.f;
         F c = 0.f;
         for (float i = 0.f; i < k; i++) {
-            c += pow(2.f, -i) * noise::seed002::noise(pow(2.f, i) * xy);
+            c += pow(2.f, -i) * noise::noise_is_beautiful::noise(pow(2.f, i) * xy);
         }
         c /= 2.f;
         return vec4<F>(vec3<F>(c), 1.0f);
@@ -260,7 +260,7 @@ struct FbmSimplex2d {
 struct MultifractalSimplex2d {
     static constexpr ShaderInfo info{
         .name = "multifractal_simplex2d",
-        .description = "seed 002: a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the seed's formula was an image)",
+        .description = "a multifractal, each octave weighted by 2^-i and the previous octave's noise (a reconstruction: the notes' formula was an image)",
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/multifractal_simplex2d.frag"},
         .wide_batches = true,
         .check_bounds = kOctaveCheckBounds,
@@ -273,7 +273,7 @@ struct MultifractalSimplex2d {
         F c = 0.f;
         F previous = 1.f;
         for (float i = 0.f; i < k; i++) {
-            F n = noise::seed002::noise(pow(2.f, i) * xy);
+            F n = noise::noise_is_beautiful::noise(pow(2.f, i) * xy);
             c += pow(2.f, -i) * previous * n;
             previous = n;
         }
@@ -285,7 +285,7 @@ struct MultifractalSimplex2d {
 struct WarpDnoise {
     static constexpr ShaderInfo info{
         .name = "warp_dnoise",
-        .description = "seed 002: domain warping, each octave displaced by the summed dnoise gradients of the previous ones",
+        .description = "domain warping, each octave displaced by the summed dnoise gradients of the previous ones",
         .glsl_fragment = {"noise/permute_polynomial.glsl", "noise/simplex2d_skew.glsl", "shaders/warp_dnoise.frag"},
     };
     using VertexStage = PlaneSt;
@@ -298,9 +298,9 @@ struct WarpDnoise {
         for (float i = 0.f; i < k; i++) {
             // We displace what we're sampling from the noise function here
             vec2<F> trans_xy = pow(2.f, i) * (xy + disp);
-            c += pow(2.f, -i) * noise::seed002::noise(trans_xy);
+            c += pow(2.f, -i) * noise::noise_is_beautiful::noise(trans_xy);
             // Update our displacement based on the sampled gradient
-            disp += noise::seed002::dnoise(trans_xy);
+            disp += noise::noise_is_beautiful::dnoise(trans_xy);
         }
         c /= 2.f;
         return vec4<F>(vec3<F>(c), 1.0f);
@@ -317,7 +317,7 @@ struct Scattering3d {
     enum : int { uResolution };
     static constexpr ShaderInfo info{
         .name = "scattering3d",
-        .description = "seed 002: the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
+        .description = "the scattering example (Shadertoy's mainImage): the nearest of 3x3x3 jittered points in (window x 15, time)",
         .needs = {.coordinates = Coordinates::None, .time = true, .frag_coord = true},
         .glsl_fragment = {"noise/permute_polynomial.glsl", "shaders/scattering3d.frag"},
         .uniforms = kUniforms,
@@ -343,7 +343,7 @@ struct Scattering3d {
                 for (int k = -1; k <= 1; k++) {
                     vec3<F> cell = cur_cell + vec3<F>(float(i), float(j), float(k));
                     // Compute the pseudorandom point from that cell
-                    vec3<F> jitter_vec = noise::seed002::gradient(cell) * jitter;
+                    vec3<F> jitter_vec = noise::noise_is_beautiful::gradient(cell) * jitter;
                     vec3<F> point = cell + vec3<F>(0.5f) + jitter_vec;
                     // Compute distance to this point
                     F d = length(point - xyz);
@@ -364,7 +364,7 @@ struct Scattering3d {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed002, HashPcg, HashPerm289, Perlin2dPerm, Perlin3dPerm, Simplex2dSkew, Simplex3dFibonacci, Simplex2dDnoise,
+QUADSHADE_SHADERS_IN(kNoiseIsBeautiful, HashPcg, HashPerm289, Perlin2dPerm, Perlin3dPerm, Simplex2dSkew, Simplex3dFibonacci, Simplex2dDnoise,
                      Simplex3dDnoise, FbmSimplex2d, MultifractalSimplex2d, WarpDnoise, Scattering3d)
 
 }  // namespace qs::shaders

@@ -1,8 +1,9 @@
 #pragma once
-// Seed 003: the OpenGL ES pixel shaders tutorial, page 4 (RWTNoise.fsh), drawn over the whole
-// window from gl_FragCoord and uResolution. The square viewport (gl_FragCoord over the window's
-// width) discards what lies above it in a window taller than wide. Translated from the .frag
-// files beside this header and es_random_noise.glsl, line for line.
+// Ricardo Rendon Cepeda's OpenGL ES Pixel Shaders Tutorial (2014; collections.h cites it), its
+// procedural textures ("Procedural Textures: Square Grid" and "Smooth Noise", RWTNoise.fsh), drawn
+// over the whole window from gl_FragCoord and uResolution. The square viewport (gl_FragCoord over
+// the window's width) discards what lies above it in a window taller than wide. Translated from the
+// .frag files beside this header and es_random_noise.glsl, line for line.
 //
 // randomNoise is fract(sin(x) * 43758.5453), which makes the last bits of sin the noise: it is
 // llvmpipe's because quadshade's sin on float is llvmpipe's polynomial to the bit
@@ -44,7 +45,7 @@ struct EsTutorial {
 struct EsTiles2 : EsTutorial {
     static constexpr ShaderInfo info{
         .name = "es_tiles2",
-        .description = "seed 003, ES tutorial: the square viewport in 2x2 random tiles",
+        .description = "the square viewport in 2x2 random tiles",
         .needs = kNeeds,
         .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_tiles2.frag"},
         .uniforms = kUniforms,
@@ -67,9 +68,9 @@ template <int Shift>
 struct EsRandomSquareShifted : EsTutorial {
     static constexpr ShaderInfo info{
         .name = Shift == 0 ? "es_random_square" : Shift < 0 ? "es_random_square_minus1" : "es_random_square_plus1",
-        .description = Shift == 0  ? "seed 003, ES tutorial: the square viewport in per-pixel random noise, above it discarded"
-                       : Shift < 0 ? "seed 003, ES tutorial: es_random_square with the noise's input moved by -1"
-                                   : "seed 003, ES tutorial: es_random_square with the noise's input moved by +1",
+        .description = Shift == 0  ? "the square viewport in per-pixel random noise, above it discarded"
+                       : Shift < 0 ? "es_random_square with the noise's input moved by -1"
+                                   : "es_random_square with the noise's input moved by +1",
         .needs = kNeeds,
         .glsl_fragment = {"shaders/es_random_noise.glsl", Shift == 0  ? "shaders/es_random_square.frag"
                                                           : Shift < 0 ? "shaders/es_random_square_minus1.frag"
@@ -93,7 +94,7 @@ using EsRandomSquarePlus1 = EsRandomSquareShifted<1>;
 struct EsTiles128 : EsTutorial {
     static constexpr ShaderInfo info{
         .name = "es_tiles128",
-        .description = "seed 003, ES tutorial: the square viewport in 128x128 random tiles",
+        .description = "the square viewport in 128x128 random tiles",
         .needs = kNeeds,
         .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_tiles128.frag"},
         .uniforms = kUniforms,
@@ -114,7 +115,7 @@ struct EsTiles128 : EsTutorial {
 struct EsSmooth9Tiles128 : EsTutorial {
     static constexpr ShaderInfo info{
         .name = "es_smooth9_tiles128",
-        .description = "seed 003, ES tutorial: 128 tiles, each the average of its 3x3 neighbourhood's noise (whole window)",
+        .description = "128 tiles, each the average of its 3x3 neighbourhood's noise (whole window)",
         .needs = kNeeds,
         .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_smooth9_tiles128.frag"},
         .uniforms = kUniforms,
@@ -158,7 +159,7 @@ struct EsSmooth9Tiles128 : EsTutorial {
 struct EsSmooth5Tiles8 : EsTutorial {
     static constexpr ShaderInfo info{
         .name = "es_smooth5_tiles8",
-        .description = "seed 003, ES tutorial: 8 tiles, each half its own noise and 1/8 of each edge neighbour's (whole window)",
+        .description = "8 tiles, each half its own noise and 1/8 of each edge neighbour's (whole window)",
         .needs = kNeeds,
         .glsl_fragment = {"shaders/es_random_noise.glsl", "shaders/es_smooth5_tiles8.frag"},
         .uniforms = kUniforms,
@@ -191,7 +192,7 @@ struct EsSmooth5Tiles8 : EsTutorial {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed003, EsRandomSquare, EsRandomSquareMinus1, EsRandomSquarePlus1, EsTiles2, EsTiles128,
+QUADSHADE_SHADERS_IN(kOpenGlEsTutorial, EsRandomSquare, EsRandomSquareMinus1, EsRandomSquarePlus1, EsTiles2, EsTiles128,
                      EsSmooth9Tiles128, EsSmooth5Tiles8)
 
 }  // namespace qs::shaders

@@ -1,8 +1,8 @@
 #pragma once
-// Seed 004: Orion Lawlor's procedural solid texturing notes (NetRun GLSL). Every snippet draws
-// grid(texcoords * 10.0) on the Table 1.1 plane, NetRun's `texcoords` being the plane's texture
-// coordinates. Translated from the .frag files beside this header, line for line; a GLSL if/else
-// that returns is both returns computed and selected.
+// Orion Lawlor's course notes "Procedural Solid Texturing" (2010; collections.h cites them), whose
+// snippets ran in NetRun: each draws grid(texcoords * 10.0) on the Table 1.1 plane, NetRun's
+// `texcoords` being the plane's texture coordinates. Translated from the .frag files beside this
+// header, line for line; a GLSL if/else that returns is both returns computed and selected.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
@@ -16,7 +16,7 @@ using namespace qs::glsl;
 struct LawlorChecker {
     static constexpr ShaderInfo info{
         .name = "lawlor_checker",
-        .description = "seed 004, Lawlor: a checkerboard, the xor of two comparisons",
+        .description = "a checkerboard, the xor of two comparisons",
         .glsl_fragment = {"shaders/lawlor_checker.frag"},
     };
     using VertexStage = PlaneTexcoords;
@@ -37,7 +37,7 @@ struct LawlorChecker {
 struct LawlorDots {
     static constexpr ShaderInfo info{
         .name = "lawlor_dots",
-        .description = "seed 004, Lawlor: a grid of dots, by an if on the distance to the cell's centre",
+        .description = "a grid of dots, by an if on the distance to the cell's centre",
         .glsl_fragment = {"shaders/lawlor_dots.frag"},
     };
     using VertexStage = PlaneTexcoords;
@@ -56,7 +56,7 @@ struct LawlorDots {
 };
 
 // The textured snippets read tex1 (smooth colours) and tex4 (white noise), which NetRun bound:
-// scenes/assets/seed-004-plane.gltf binds the repository's (quadshade-make-scenes). Their lookups
+// scenes/assets/lawlor-plane.gltf binds the repository's (quadshade-make-scenes). Their lookups
 // inside a varying `if` are in non-uniform control flow, where GLSL leaves an implicit level of
 // detail undefined; these textures have none (no mipmaps, one filter), so nothing depends on it.
 inline constexpr Needs kTex1Needs{.samplers = {SamplerUse{"tex1", 2}}};
@@ -77,7 +77,7 @@ struct LawlorGrid {
 struct LawlorDotsTexture : LawlorGrid<LawlorDotsTexture> {
     static constexpr ShaderInfo info{
         .name = "lawlor_dots_texture",
-        .description = "seed 004, Lawlor: the dots coloured by tex1 at the fragment",
+        .description = "the dots coloured by tex1 at the fragment",
         .needs = kTex1Needs,
         .glsl_fragment = {"shaders/lawlor_dots_texture.frag"},
     };
@@ -95,7 +95,7 @@ struct LawlorDotsTexture : LawlorGrid<LawlorDotsTexture> {
 struct LawlorDotsCenterColor : LawlorGrid<LawlorDotsCenterColor> {
     static constexpr ShaderInfo info{
         .name = "lawlor_dots_center_color",
-        .description = "seed 004, Lawlor: each dot one colour, tex1 at its centre",
+        .description = "each dot one colour, tex1 at its centre",
         .needs = kTex1Needs,
         .glsl_fragment = {"shaders/lawlor_dots_center_color.frag"},
     };
@@ -113,7 +113,7 @@ struct LawlorDotsCenterColor : LawlorGrid<LawlorDotsCenterColor> {
 struct LawlorDotsMoved : LawlorGrid<LawlorDotsMoved> {
     static constexpr ShaderInfo info{
         .name = "lawlor_dots_moved",
-        .description = "seed 004, Lawlor: dots moved by a shift read from tex1",
+        .description = "dots moved by a shift read from tex1",
         .needs = kTex1Needs,
         .glsl_fragment = {"shaders/lawlor_dots_moved.frag"},
     };
@@ -132,7 +132,7 @@ struct LawlorDotsMoved : LawlorGrid<LawlorDotsMoved> {
 struct LawlorDotsSearch : LawlorGrid<LawlorDotsSearch> {
     static constexpr ShaderInfo info{
         .name = "lawlor_dots_search",
-        .description = "seed 004, Lawlor: dots shifted by tex4, searched over the 3x3 neighbouring cells, colours added",
+        .description = "dots shifted by tex4, searched over the 3x3 neighbouring cells, colours added",
         .needs = kTex1Tex4Needs,
         .glsl_fragment = {"shaders/lawlor_dots_search.frag"},
     };
@@ -183,7 +183,7 @@ NearestTwo<F> lawlor_voronoi(const sampler2D& tex4, const vec2<F>& loc) {
 struct LawlorVoronoiF1 : LawlorGrid<LawlorVoronoiF1> {
     static constexpr ShaderInfo info{
         .name = "lawlor_voronoi_f1",
-        .description = "seed 004, Lawlor: Voronoi F1 over the 3x3 neighbouring cells' points, shifted by tex4",
+        .description = "Voronoi F1 over the 3x3 neighbouring cells' points, shifted by tex4",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_voronoi_f1.frag"},
     };
@@ -196,7 +196,7 @@ struct LawlorVoronoiF1 : LawlorGrid<LawlorVoronoiF1> {
 struct LawlorVoronoiF2 : LawlorGrid<LawlorVoronoiF2> {
     static constexpr ShaderInfo info{
         .name = "lawlor_voronoi_f2",
-        .description = "seed 004, Lawlor: Voronoi F2 over the 5x5 neighbouring cells' points",
+        .description = "Voronoi F2 over the 5x5 neighbouring cells' points",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_voronoi_f2.frag"},
     };
@@ -209,7 +209,7 @@ struct LawlorVoronoiF2 : LawlorGrid<LawlorVoronoiF2> {
 struct LawlorStainedGlass : LawlorGrid<LawlorStainedGlass> {
     static constexpr ShaderInfo info{
         .name = "lawlor_stained_glass",
-        .description = "seed 004, Lawlor: stained glass, Voronoi F2 - F1 over the 5x5 neighbouring cells",
+        .description = "stained glass, Voronoi F2 - F1 over the 5x5 neighbouring cells",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_stained_glass.frag"},
     };
@@ -223,7 +223,7 @@ struct LawlorStainedGlass : LawlorGrid<LawlorStainedGlass> {
 struct LawlorTextureHigh : LawlorGrid<LawlorTextureHigh> {
     static constexpr ShaderInfo info{
         .name = "lawlor_texture_high",
-        .description = "seed 004, Lawlor: the repeating noise texture, ten times across",
+        .description = "the repeating noise texture, ten times across",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_texture_high.frag"},
         .wide_batches = true,
@@ -237,7 +237,7 @@ struct LawlorTextureHigh : LawlorGrid<LawlorTextureHigh> {
 struct LawlorTextureLow : LawlorGrid<LawlorTextureLow> {
     static constexpr ShaderInfo info{
         .name = "lawlor_texture_low",
-        .description = "seed 004, Lawlor: the repeating noise texture stretched, five times across",
+        .description = "the repeating noise texture stretched, five times across",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_texture_low.frag"},
         .wide_batches = true,
@@ -251,7 +251,7 @@ struct LawlorTextureLow : LawlorGrid<LawlorTextureLow> {
 struct LawlorTextureTwoOctaves : LawlorGrid<LawlorTextureTwoOctaves> {
     static constexpr ShaderInfo info{
         .name = "lawlor_texture_two_octaves",
-        .description = "seed 004, Lawlor: the high and the low octave of the noise texture, averaged",
+        .description = "the high and the low octave of the noise texture, averaged",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_texture_two_octaves.frag"},
         .wide_batches = true,
@@ -268,7 +268,7 @@ struct LawlorTextureTwoOctaves : LawlorGrid<LawlorTextureTwoOctaves> {
 struct LawlorTextureOctaves {
     static constexpr ShaderInfo info{
         .name = "lawlor_texture_octaves",
-        .description = "seed 004, Lawlor: six octaves of the noise texture, frequency 8 down to 0.25",
+        .description = "six octaves of the noise texture, frequency 8 down to 0.25",
         .needs = kTex4Needs,
         .glsl_fragment = {"shaders/lawlor_texture_octaves.frag"},
     };
@@ -288,13 +288,13 @@ struct LawlorTextureOctaves {
 // The Mandelbrot set at the plane's texture coordinates. Mesa's optimizer (NIR) reassociates
 // x = (x*x - y*y) + cx into (x*x + cx) - y*y, which GLSL allows without `precise`; the
 // translation adds in Mesa's order, so the two round alike: measured on llvmpipe's own texcoords
-// (Mesa 22.3.6, 500x500), the seed's order differs from llvmpipe's result on 155583 of 250000
+// (Mesa 22.3.6, 500x500), the notes' order differs from llvmpipe's result on 155583 of 250000
 // pixels, most by ulps and 574 over 1/255 near the set's boundary, where an ulp changes the
 // escape time; Mesa's order on none.
 struct LawlorMandelbrot {
     static constexpr ShaderInfo info{
         .name = "lawlor_mandelbrot",
-        .description = "seed 004, Lawlor: the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
+        .description = "the Mandelbrot set at the texture coordinates, up to 100 iterations with break",
         .glsl_fragment = {"shaders/lawlor_mandelbrot.frag"},
         .glsl_version = 120,
         .wide_batches = true,
@@ -317,11 +317,11 @@ struct LawlorMandelbrot {
             r = x * x + y * y;  // check radius
             loop.break_if(r > 4.0f);
         }
-        return vec4<F>(x, r * 0.1f, y, 1.0f);  // the seed's alpha 0 made 1 (see the .frag)
+        return vec4<F>(x, r * 0.1f, y, 1.0f);  // the notes' alpha 0 made 1 (see the .frag)
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed004, LawlorChecker, LawlorDots, LawlorDotsTexture, LawlorDotsCenterColor, LawlorDotsMoved, LawlorDotsSearch,
+QUADSHADE_SHADERS_IN(kLawlor, LawlorChecker, LawlorDots, LawlorDotsTexture, LawlorDotsCenterColor, LawlorDotsMoved, LawlorDotsSearch,
                      LawlorVoronoiF1, LawlorVoronoiF2, LawlorStainedGlass, LawlorTextureHigh, LawlorTextureLow,
                      LawlorTextureTwoOctaves, LawlorTextureOctaves, LawlorMandelbrot)
 

@@ -1,4 +1,4 @@
-// Seed 001's noises. Improved noise (shading/noise/improved_noise.h): its gradient table is
+// The ProcTexGen articles' noises. Improved noise (shading/noise/improved_noise.h): its gradient table is
 // Perlin's grad() bit logic, SIMD lanes equal scalar code, the looping variant with a period of
 // 256 is the plain noise to the bit, and with a period of 8 it loops. Worley (worley3d.h): F1 and
 // F2 are the distances to the feature positions it returns, in order, in either metric.
@@ -24,7 +24,7 @@ float reference_grad(int hash, float x, float y, float z) {
 
 }  // namespace
 
-TEST_CASE("improved noise: the 16 gradients are the reference implementation's grad()", "[noise][seed001]") {
+TEST_CASE("improved noise: the 16 gradients are the reference implementation's grad()", "[noise][proctexgen]") {
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> d(-1.0f, 1.0f);
     for (int hash = 0; hash < 256; ++hash) {
@@ -34,7 +34,7 @@ TEST_CASE("improved noise: the 16 gradients are the reference implementation's g
     }
 }
 
-TEST_CASE("improved noise: 16 SIMD lanes equal scalar code, and texShaderNoise with period 256 is inoise", "[noise][seed001]") {
+TEST_CASE("improved noise: 16 SIMD lanes equal scalar code, and texShaderNoise with period 256 is inoise", "[noise][proctexgen]") {
     using L = Pixels<float, 16>;
     std::mt19937 rng(2);
     std::uniform_real_distribution<float> d(-300.0f, 300.0f);
@@ -57,7 +57,7 @@ TEST_CASE("improved noise: 16 SIMD lanes equal scalar code, and texShaderNoise w
     CHECK(largest > 0.5);  // not a constant
 }
 
-TEST_CASE("texShaderNoise loops at its period, on every axis, and its base picks another noise", "[noise][seed001]") {
+TEST_CASE("texShaderNoise loops at its period, on every axis, and its base picks another noise", "[noise][proctexgen]") {
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> d(0.0f, 8.0f);
     double other = 0.0;
@@ -73,7 +73,7 @@ TEST_CASE("texShaderNoise loops at its period, on every axis, and its base picks
     CHECK(other > 0.5);
 }
 
-TEST_CASE("3D Worley: F1 <= F2 are the distances to the two feature positions, on lanes as in scalar code", "[noise][seed001]") {
+TEST_CASE("3D Worley: F1 <= F2 are the distances to the two feature positions, on lanes as in scalar code", "[noise][proctexgen]") {
     using L = Pixels<float, 16>;
     std::mt19937 rng(4);
     std::uniform_real_distribution<float> d(-40.0f, 40.0f);

@@ -1,9 +1,10 @@
 #pragma once
-// Seed 000, the chapter: what the catalogue lacked of it. Listing 1.2's Jacobian3 (an analytic 3D
-// gradient taken to window space, for an anti-aliased contour), 4D simplex noise as an animated
-// solid texture, and a bump map from the noise's analytic gradient. Solid textures, compared on
-// the sphere scene. Translated from the .frag files beside this header and shading/noise/
-// (simplex3d, simplex3d_grad, simplex4d), line for line.
+// Gustavson's chapter (Procedural Textures in GLSL): what the catalogue lacked of it. Listing 1.2's
+// Jacobian3 (an analytic 3D gradient taken to window space, for an anti-aliased contour), 4D
+// simplex noise as an animated solid texture (section 1.6), and a bump map from the noise's
+// analytic gradient (section 1.1). Solid textures, compared on the sphere scene. Translated from
+// the .frag files beside this header and shading/noise/ (simplex3d, simplex3d_grad, simplex4d),
+// line for line.
 
 #include <tuple>
 
@@ -21,7 +22,7 @@ using namespace qs::glsl;
 struct Simplex3dContourAa {
     static constexpr ShaderInfo info{
         .name = "simplex3d_contour_aa",
-        .description = "seed 000, Listing 1.2: a contour line of 3D simplex noise, anti-aliased by its analytic gradient through Jacobian3",
+        .description = "a contour line of 3D simplex noise, anti-aliased by its analytic gradient through Jacobian3",
         .needs = {.coordinates = Coordinates::Object3D, .derivatives = true},
         .glsl_fragment = {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex3d_contour_aa.frag"},
         .glsl_defines = noise::Simplex3dDemo::glsl_defines,
@@ -63,7 +64,7 @@ struct SolidTime4 {
 struct Simplex4dAnimated {
     static constexpr ShaderInfo info{
         .name = "simplex4d_animated",
-        .description = "seed 000: 4D simplex noise of (object position, time), an animated solid texture (the noise ours: the chapter prints none)",
+        .description = "4D simplex noise of (object position, time), an animated solid texture (the noise ours: the chapter prints none)",
         .needs = {.coordinates = Coordinates::Object3D, .time = true},
         .glsl_fragment = {"noise/simplex4d.glsl", "shaders/simplex4d_animated.frag"},
         .wide_batches = true,
@@ -79,7 +80,7 @@ struct Simplex4dAnimated {
 struct SimplexBump {
     static constexpr ShaderInfo info{
         .name = "simplex_bump",
-        .description = "seed 000: a bump map of 3D simplex noise from its analytic gradient, one directional light (the normal a unit sphere's)",
+        .description = "a bump map of 3D simplex noise from its analytic gradient, one directional light (the normal a unit sphere's)",
         .needs = {.coordinates = Coordinates::Object3D},
         .glsl_fragment = {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/simplex_bump.frag"},
         .glsl_defines = noise::Simplex3dDemo::glsl_defines,
@@ -99,6 +100,6 @@ struct SimplexBump {
     }
 };
 
-QUADSHADE_SHADERS_IN(kSeed000, Simplex3dContourAa, Simplex4dAnimated, SimplexBump)
+QUADSHADE_SHADERS_IN(kGustavson, Simplex3dContourAa, Simplex4dAnimated, SimplexBump)
 
 }  // namespace qs::shaders
