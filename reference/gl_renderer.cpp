@@ -290,6 +290,7 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
         // The scene's transforms and vertex attributes the program reads by name.
         std::vector<MatrixBinding> matrices;
         for (const auto& [u, type] : active_uniforms(p)) {
+            if (u.starts_with("gl_")) continue;  // GL's own state (gl_ModelViewProjectionMatrix), set by GL
             if (const SceneMatrixName* m = find_scene_matrix(u)) {
                 matrices.push_back({glGetUniformLocation(p, u.c_str()), m->matrix});
             } else if (type == GL_FLOAT_MAT2 || type == GL_FLOAT_MAT3 || type == GL_FLOAT_MAT4) {
