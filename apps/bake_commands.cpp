@@ -64,7 +64,7 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
         cmd, "--normals", a.normals, {{"analytic", NormalMethod::Analytic}, {"finite", NormalMethod::FiniteDifferences}},
         "HOW",
         "the normal map from the height's gradient through Dual2 (analytic, the default) or from\n"
-        "three heights and a cross product (finite: seed 001's way)");
+        "three heights and a cross product (finite: the ProcTexGen articles' way)");
     cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-4)")
         ->check(CLI::PositiveNumber & kFinite)->option_text("E");
     a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,

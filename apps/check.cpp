@@ -109,6 +109,24 @@ std::vector<fs::path> scenes_in(const fs::path& folder) {
     return files;
 }
 
+// The scenes --scenes names: files as they are, folders as the scenes in them.
+std::vector<fs::path> named_scenes(const std::vector<fs::path>& named) {
+    std::vector<fs::path> files;
+    for (const fs::path& p : named) {
+        std::error_code ec;
+        if (fs::is_directory(p, ec)) {
+            for (const fs::path& f : scenes_in(p)) files.push_back(f);
+        } else if (!fs::is_regular_file(p, ec)) {
+            throw std::runtime_error("--scenes " + p.string() + ": no such file or folder");
+        } else if (!is_scene_file(p)) {
+            throw std::runtime_error("--scenes " + p.string() + ": not a .gltf or .glb scene");
+        } else {
+            files.push_back(p);
+        }
+    }
+    return files;
+}
+
 }  // namespace
 
 fs::path installed_scenes_folder() { return executable_folder().parent_path() / "share" / "quadshade" / "scenes"; }
@@ -251,14 +269,18 @@ struct Checker {
         r.shader_override = shader;
         r.set(raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe));
         r.shading.threads = threads;
+        r.width = request.width, r.height = request.height;
         SceneRenderer renderer(scene, r);
         const int w = renderer.width(), h = renderer.height();
         const MemoryBudget::Reservation held =
             budget->reserve(renderer.frame_bytes(h) + std::uint64_t(w) * std::uint64_t(h) * kCheckBytesPerPixel,
                             "checking " + shader + " on " + files[c.scene].string() + " (" + std::to_string(w) + "x" +
                                 std::to_string(h) + ")");
-        const std::vector<std::string> argv = {reference.string(), files[c.scene].string(), "-o", image.string(), "--glsl",
-                                               glsl.string(), "--driver", driver_of(c.rule), "--shader", shader};
+        std::vector<std::string> argv = {reference.string(), files[c.scene].string(), "-o", image.string(), "--glsl",
+                                         glsl.string(), "--driver", driver_of(c.rule), "--shader", shader};
+        if (request.width > 0) {
+            argv.insert(argv.end(), {"--size", std::to_string(request.width) + "x" + std::to_string(request.height)});
+        }
         if (const int status = run_process(argv, log); status != 0) {
             throw std::runtime_error("quadshade-reference failed on " + files[c.scene].string() + " with " + shader + " (" +
                                      driver_of(c.rule) + ", exit " + std::to_string(status) + "): " + read_text(log));
@@ -283,6 +305,30 @@ struct Checker {
             report.heat_map = f.string();
         }
         return report;
+    }
+
+    // The shader of case `c` shaded once in its checked instantiation, which throws where a
+    // Loop's body writes a variable the loop does not hold; empty when none does. A body's writes
+    // happen whichever of its lanes are live (an `if` is a select), so a frame of at most 128
+    // pixels a side finds them unless only pixels it skips run that iteration, at a fraction of
+    // the checked instantiation's cost at the case's size.
+    std::string loop_writes(const Case& c) const {
+        Scene scene = scenes[c.scene];
+        FrameRequest r;
+        r.shader_override = std::string(c.program->info().name);
+        r.set(raster_options_as(MesaDriver::Llvmpipe));
+        r.shading.threads = threads;
+        r.shading.check_undefined = true;
+        const bool sized = request.width > 0;
+        const int w = sized ? request.width : scene.width, h = sized ? request.height : scene.height;
+        const double scale = std::min(1.0, 128.0 / double(std::max(w, h)));
+        r.width = std::max(1, int(w * scale)), r.height = std::max(1, int(h * scale));
+        try {
+            render_frame(scene, r);
+        } catch (const std::logic_error& e) {
+            return e.what();
+        }
+        return {};
     }
 
     void print(const Case& c, const CaseReport& r, std::ostream& csv) const {
@@ -314,7 +360,7 @@ int run_check(const CheckRequest& request) {
                                  "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); check needs it");
     }
     const std::vector<const Program*> programs = shaders_of(request);
-    checker.files = request.scenes.empty() ? default_scenes() : scenes_in(request.scenes);
+    checker.files = request.scenes.empty() ? default_scenes() : named_scenes(request.scenes);
     std::vector<Case> cases;
     std::size_t skipped_pairs = 0;
     for (std::size_t s = 0; s < checker.files.size(); ++s) {
@@ -341,6 +387,20 @@ int run_check(const CheckRequest& request) {
     make_output_folder(request.output, FolderLink::Followed);
     output_place(report_file, Streams::Refused);
     make_output_folder(checker.glsl, FolderLink::Refused);
+
+    // Each shader's loops, on its first case.
+    std::size_t loop_failures = 0;
+    for (const Program* program : programs) {
+        for (const Case& c : cases) {
+            if (c.program != program) continue;
+            if (const std::string problem = checker.loop_writes(c); !problem.empty()) {
+                std::printf("FAIL %s: %s\n", std::string(program->info().name).c_str(), problem.c_str());
+                std::fflush(stdout);
+                ++loop_failures;
+            }
+            break;
+        }
+    }
     export_glsl(checker.glsl);  // the reference sees the GLSL as any GL application would: the text only
     // The reference images and logs are this run's own (two runs may share -o); the report is
     // written whole once every case is done.
@@ -392,13 +452,14 @@ int run_check(const CheckRequest& request) {
     std::printf("quadshade check: %zu cases (%zu shaders, %zu scenes, %zu rule%s) in %.1f s: %zu passed, %zu failed", cases.size(),
                 programs.size(), checker.files.size(), request.rules.size(), request.rules.size() == 1 ? "" : "s", seconds,
                 cases.size() - failed, failed);
+    if (loop_failures) std::printf("; %zu shader%s with a loop that does not hold what it writes", loop_failures, loop_failures == 1 ? "" : "s");
     if (skipped_pairs) {
         std::printf("; %zu shader-scene pairs left out (the scene binds no texture the shader samples%s)", skipped_pairs,
                     request.scenes.empty() ? ", or the shader samples none on a texture scene" : "");
     }
     write_output(report_file, csv.str());
     std::printf("\nquadshade check: report %s\n", report_file.string().c_str());
-    return failed ? 3 : 0;
+    return failed || loop_failures ? 3 : 0;
 }
 
 }  // namespace qs

@@ -57,20 +57,25 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
 }
 
 struct CheckArgs {
-    std::vector<std::string> shaders, rules{"fine"}, plugins;
+    std::vector<std::string> shaders, rules{"fine"}, plugins, scenes;
     bool all = false, interpret = false;
     std::string glsl, vertex_glsl;
-    std::string scenes, output = "quadshade-check", memory_limit;
-    int jobs = 0;
+    std::string output = "quadshade-check", memory_limit;
+    int jobs = 0, width = 0, height = 0;
 };
 
 void add_check_options(CLI::App& cmd, CheckArgs& a) {
     cmd.add_option("shaders", a.shaders, "the shaders to check (catalogue names)")->option_text("SHADER...");
     cmd.add_flag("--all", a.all, "check every shader of the catalogue, plugins' included (not the\nbuilt-in probes)");
     cmd.add_option("--scenes", a.scenes,
-                   "check on every .gltf/.glb scene in DIR (default: the conformance\n"
-                   "scenes and the Table 1.1 plane)")
-        ->option_text("DIR");
+                   "check on these scenes: .gltf/.glb files, and folders standing for\n"
+                   "every scene in them (repeatable; default: the conformance scenes\n"
+                   "and the Table 1.1 plane)")
+        ->option_text("SCENE|DIR ...");
+    cmd.add_option_function<std::vector<int>>(
+           "--size", [&a](const std::vector<int>& v) { a.width = v[0], a.height = v[1]; },
+           "render every case at this size (default: each scene's own)")
+        ->delimiter('x')->expected(2)->check(CLI::Range(1, 16384))->option_text("WxH");
     cmd.add_option("--rules", a.rules,
                    "derivative rules, each against its OSMesa driver: fine (llvmpipe,\n"
                    "default), coarse-lower (softpipe)")
@@ -130,8 +135,8 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--size", a.size, "each shader's square in pixels (default 160)")->check(CLI::Range(16, 1024))->option_text("N");
     cmd.add_option("--columns", a.columns, "squares per row, at most (default 6)")->check(CLI::Range(1, 64))->option_text("N");
     cmd.add_option("--scenes", a.scenes,
-                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, seed 004's\n"
-                   "plane, the solids, seed 001's spheres and the conformance scenes); a shader goes on the first\n"
+                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, Lawlor's\n"
+                   "plane, the solids, the ProcTexGen spheres and the conformance scenes); a shader goes on the first\n"
                    "that binds its textures")
         ->option_text("SCENE...");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
@@ -183,7 +188,7 @@ int cmd_gallery(const GalleryArgs& a) {
     request.frame.shading.threads = a.threads;
     if (a.scenes.empty()) {
         const fs::path folder = installed_scenes_folder();
-        for (const char* name : {"table-1.1-plane.gltf", "seed-004-plane.gltf", "solids.gltf", "seed-001-spheres.gltf"}) {
+        for (const char* name : {"table-1.1-plane.gltf", "lawlor-plane.gltf", "solids.gltf", "proctexgen-spheres.gltf"}) {
             if (!fs::exists(folder / name)) throw std::runtime_error((folder / name).string() + ": missing (an incomplete installation?)");
             request.scenes.push_back(folder / name);
         }
@@ -260,7 +265,8 @@ int cmd_check(const CheckArgs& a) {
         }
         for (std::string& name : request.shaders) name = interpreted_twin(name);
     }
-    request.scenes = a.scenes;
+    request.scenes.assign(a.scenes.begin(), a.scenes.end());
+    request.width = a.width, request.height = a.height;
     request.output = a.output;
     request.jobs = a.jobs;
     if (!a.memory_limit.empty()) request.memory_limit = memory_limit(a.memory_limit);
@@ -387,7 +393,7 @@ int main(int argc, char** argv) {
     add_volume_options(*volume_cmd, volume);
     GalleryArgs gallery;
     CLI::App* gallery_cmd = app.add_subcommand(
-        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (seed)");
+        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (source)");
     add_gallery_options(*gallery_cmd, gallery);
     BakeArgs bake;
     CLI::App* bake_cmd = app.add_subcommand(
@@ -412,7 +418,9 @@ int main(int argc, char** argv) {
                                                   : gallery_cmd->parsed() ? gallery.plugins
                                                   : bake_cmd->parsed()   ? bake.plugins
                                                                          : shader_plugins;
-        for (const std::string& plugin : plugins) load_plugin(plugin);
+        for (const std::string& plugin : plugins) {
+            for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+        }
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
         if (check_cmd->parsed()) return cmd_check(check);

@@ -269,7 +269,9 @@ int cmd_render(RenderArgs& a) {
         }
     }
 
-    for (const std::string& plugin : a.plugins) load_plugin(plugin);
+    for (const std::string& plugin : a.plugins) {
+        for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+    }
     const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
     Scene scene = load_scene(a.scene, a.load);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());

@@ -54,7 +54,7 @@ namespace fs = std::filesystem;
 struct Row {
     const char* shader;
     const char* book_name;
-    int book[4];  // Mfrag/s on NVIDIA 9600M, AMD HD6310, AMD HD4850, NVIDIA GTX260 (the chapter's Table 1.1)
+    int book[4];  // Mfrag/s on NVIDIA 9600M, AMD HD6310, AMD HD4850, NVIDIA GTX260 (Gustavson's Table 1.1)
     bool noise;   // a noise row of the scaling table
 };
 const Row kRows[] = {

@@ -17,6 +17,7 @@
 
 #include "reference/texture_image.h"
 #include "scenes/object_uniforms.h"
+#include "scenes/shader_inputs.h"
 
 namespace qs {
 
@@ -69,6 +70,21 @@ std::vector<std::pair<std::string, GLenum>> active_uniforms(GLuint p) {
         GLenum type = 0;
         glGetActiveUniform(p, GLuint(i), GLsizei(sizeof uniform), nullptr, &size, &type, uniform);
         r.emplace_back(uniform, type);
+    }
+    return r;
+}
+
+// A linked program's active vertex inputs, as (name, GL type).
+std::vector<std::pair<std::string, GLenum>> active_attributes(GLuint p) {
+    std::vector<std::pair<std::string, GLenum>> r;
+    GLint count = 0;
+    glGetProgramiv(p, GL_ACTIVE_ATTRIBUTES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char attribute[256] = {};
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveAttrib(p, GLuint(i), GLsizei(sizeof attribute), nullptr, &size, &type, attribute);
+        r.emplace_back(attribute, type);
     }
     return r;
 }
@@ -141,13 +157,32 @@ GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& na
     check(p, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, name + ": GLSL does not link");
     glDeleteShader(vs);
     glDeleteShader(fs);
-    // A uniform the reference cannot set: refuse it rather than render something else.
+    // A uniform or an attribute the reference cannot set: refuse it rather than render something else.
+    auto refuse = [&](const std::string& why) {
+        glDeleteProgram(p);
+        throw std::runtime_error(name + ": " + why);
+    };
     for (const auto& [u, type] : active_uniforms(p)) {
         const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;  // bound per object, by name
-        if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u) && gl_uniform_type(type).components == 0) {
-            glDeleteProgram(p);
-            throw std::runtime_error(name + ": uniform '" + u + "' is none the reference binds (time, dims, " +
-                                     "sampler2D/sampler3D uniforms, or a float, vec, int, ivec, uint or mat of the shader's own)");
+        if (const SceneMatrixName* m = find_scene_matrix(u)) {
+            if (type != (m->columns == 4 ? GL_FLOAT_MAT4 : GL_FLOAT_MAT3)) {
+                refuse("uniform '" + u + "' is the scene's transform: declare it " + (m->columns == 4 ? "mat4" : "mat3"));
+            }
+        } else if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u) && gl_uniform_type(type).components == 0) {
+            refuse("uniform '" + u + "' is none the reference binds (time, dims, the scene's transforms " +
+                   std::string(scene_matrix_names()) +
+                   ", sampler2D/sampler3D uniforms, or a float, vec, int, ivec, uint or mat of the shader's own)");
+        }
+    }
+    for (const auto& [a, type] : active_attributes(p)) {
+        if (a.rfind("gl_", 0) == 0) continue;
+        if (!find_vertex_attribute(a)) {
+            refuse("vertex input '" + a + "' is none the scene feeds (" + std::string(vertex_attribute_names()) +
+                   ": scenes/shader_inputs.h)");
+        }
+        if (type != GL_FLOAT && type != GL_FLOAT_VEC2 && type != GL_FLOAT_VEC3 && type != GL_FLOAT_VEC4) {
+            refuse("vertex input '" + a + "' is the scene's " + std::string(find_vertex_attribute(a)->gltf) +
+                   ": declare it float, vec2, vec3 or vec4");
         }
     }
     return p;
@@ -258,6 +293,39 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
             });
         }
         uniforms_.push_back(uniform_values(p, name, settings, programs.glsl_dir()));
+        // The scene's transforms and vertex attributes the program reads by name.
+        std::vector<MatrixBinding> matrices;
+        for (const auto& [u, type] : active_uniforms(p)) {
+            if (u.starts_with("gl_")) continue;  // GL's own state (gl_ModelViewProjectionMatrix), set by GL
+            if (const SceneMatrixName* m = find_scene_matrix(u)) {
+                matrices.push_back({glGetUniformLocation(p, u.c_str()), m->matrix});
+            } else if (type == GL_FLOAT_MAT2 || type == GL_FLOAT_MAT3 || type == GL_FLOAT_MAT4) {
+                // A matrix of the shader's own that nothing sets is all zeros: never a transform
+                // it means (a vertex stage reading one under a name the scene does not feed would
+                // draw nothing), so it is refused rather than drawn.
+                bool set = false;
+                for (const UniformValue& v : uniforms_.back()) set = set || v.location == glGetUniformLocation(p, u.c_str());
+                float value[16] = {};
+                glGetUniformfv(p, glGetUniformLocation(p, u.c_str()), value);
+                bool zero = true;
+                for (float x : value) zero = zero && x == 0.0f;
+                if (!set && zero) {
+                    throw std::runtime_error(name + ": uniform " + (type == GL_FLOAT_MAT4 ? "mat4" : type == GL_FLOAT_MAT3 ? "mat3" : "mat2") +
+                                             " '" + u + "' is none of the scene's transforms (" + std::string(scene_matrix_names()) +
+                                             ") and nothing sets it (no initializer, material extras.uniforms or --uniform): it "
+                                             "would be all zeros");
+                }
+            }
+        }
+        matrices_.push_back(std::move(matrices));
+        std::vector<AttributeBinding> attributes;
+        for (const auto& [a, type] : active_attributes(p)) {
+            if (const VertexAttributeName* v = find_vertex_attribute(a)) {
+                attributes.push_back({glGetAttribLocation(p, a.c_str()), v->attribute});
+                attribute_array(scene_.meshes[o.mesh], v->attribute, name, a);  // refuses what the scene cannot feed
+            }
+        }
+        attributes_.push_back(std::move(attributes));
     }
     for (const UniformSetting& s : request_.uniforms) {
         bool found = false;
@@ -280,6 +348,7 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
             throw std::runtime_error(s.origin + ": " + what);
         };
         if (s.name == kResolutionUniform) refuse("uResolution is the frame's size, set by the renderer");
+        if (find_scene_matrix(s.name)) refuse(s.name + " is the scene's transform, set by the renderer");
         const GLint location = glGetUniformLocation(program, s.name.c_str());
         if (location < 0) {
             // Declared but compiled away: nothing to set. A command line's may be another program's.
@@ -307,6 +376,24 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
         out.push_back({location, type, s.values});
     }
     return out;
+}
+
+GlSceneRenderer::AttributeArray GlSceneRenderer::attribute_array(const Mesh& mesh, VertexAttribute attribute,
+                                                                 const std::string& shader, const std::string& name) const {
+    const Vertex& first = mesh.vertices.front();
+    switch (attribute) {
+        case VertexAttribute::Position: return {&first.position.x, 3};
+        case VertexAttribute::Texcoord0: return {&first.texcoord.x, 2};
+        case VertexAttribute::Normal:
+        case VertexAttribute::Texcoord1:
+        case VertexAttribute::Color: break;
+    }
+    std::string gltf;
+    for (const VertexAttributeName& a : kVertexAttributes) {
+        if (a.attribute == attribute) gltf = a.gltf;
+    }
+    throw std::runtime_error(scene_.file.string() + ": mesh '" + mesh.name + "': shader '" + shader + "' reads vertex input '" + name +
+                             "' (glTF " + gltf + "), which the scene model does not carry");
 }
 
 const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
@@ -427,6 +514,20 @@ void GlSceneRenderer::draw() {
         }
         glDepthMask(blend ? GL_FALSE : GL_TRUE);
         if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, float(time));
+        const ObjectTransforms transforms = object_transforms(scene_, pose, i, aspect);
+        for (const MatrixBinding& m : matrices_[i]) {
+            switch (m.matrix) {
+                case SceneMatrix::ModelViewProjection:
+                    glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model_view_projection));
+                    break;
+                case SceneMatrix::Model: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model)); break;
+                case SceneMatrix::View: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.view)); break;
+                case SceneMatrix::Projection:
+                    glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.projection));
+                    break;
+                case SceneMatrix::Normal: glUniformMatrix3fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.normal)); break;
+            }
+        }
         if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
             glUniform2f(loc, float(width), float(height));
         }
@@ -465,7 +566,14 @@ void GlSceneRenderer::draw() {
                               unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
         }
         glClientActiveTexture(GL_TEXTURE0);
+        const std::string& shader = shaders_[i];
+        for (const AttributeBinding& a : attributes_[i]) {
+            const AttributeArray array = attribute_array(mesh, a.attribute, shader, "");
+            glEnableVertexAttribArray(GLuint(a.location));
+            glVertexAttribPointer(GLuint(a.location), array.components, GL_FLOAT, GL_FALSE, sizeof(Vertex), array.first);
+        }
         glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
+        for (const AttributeBinding& a : attributes_[i]) glDisableVertexAttribArray(GLuint(a.location));
     }
     glDepthMask(GL_TRUE);
     glFinish();

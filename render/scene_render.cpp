@@ -11,6 +11,7 @@
 #include "render/textures.h"
 #include "render/uniform_binding.h"
 #include "scenes/object_uniforms.h"
+#include "scenes/shader_inputs.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
@@ -259,7 +260,12 @@ void SceneRenderer::pose(double time) {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
         const Object& o = scene_.objects[i];
         DrawCall& d = object_draws_[i];
-        d.uniforms.model_view_projection = scene_.clip_from_object(pose, i, aspect);
+        const ObjectTransforms transforms = object_transforms(scene_, pose, i, aspect);
+        d.uniforms.model_view_projection = transforms.model_view_projection;
+        d.uniforms.model = transforms.model;
+        d.uniforms.view = transforms.view;
+        d.uniforms.projection = transforms.projection;
+        d.uniforms.normal_matrix = transforms.normal;
         // An atlas bake draws every triangle in texture space, where winding says nothing of facing.
         if (!request_.atlas) {
             d.culling = {!o.double_sided, mirrors(pose, i) ? Winding::Clockwise : Winding::CounterClockwise};

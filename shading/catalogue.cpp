@@ -25,6 +25,7 @@ struct Registry {
     std::vector<std::string> problems;  // the loading plugin's
     std::vector<std::string> builtin_problems;
     int added = 0;
+    bool unoptimised = false;  // the loading plugin's
 };
 
 Registry& registry() {
@@ -73,8 +74,9 @@ const Entry& entry_of(const Program& program) {
 
 namespace registration {
 
-void add(const Program& program, const ShaderAbi& abi, std::string_view collection) {
+void add(const Program& program, const ShaderAbi& abi, std::string_view collection, bool optimised) {
     Registry& r = registry();
+    if (!r.loading.empty() && !optimised) r.unoptimised = true;
     std::vector<std::string>& problems = r.loading.empty() ? r.builtin_problems : r.problems;
     const std::string name(program.info().name);
     if (!(abi == ShaderAbi{})) {
@@ -104,14 +106,16 @@ void begin_plugin(const std::filesystem::path& plugin) {
     r.loading = plugin;
     r.problems.clear();
     r.added = 0;
+    r.unoptimised = false;
 }
 
 PluginResult end_plugin() {
     Registry& r = registry();
-    PluginResult result{r.added, std::move(r.problems)};
+    PluginResult result{r.added, std::move(r.problems), r.unoptimised};
     r.loading.clear();
     r.problems.clear();
     r.added = 0;
+    r.unoptimised = false;
     return result;
 }
 
@@ -163,9 +167,10 @@ const std::string* compiled_glsl(const Program& program, bool vertex_stage) {
     return vertex_stage ? &e.vertex_glsl : &e.fragment_glsl;
 }
 
-std::filesystem::path glsl_folder(const Program& program) {
+std::filesystem::path glsl_folder(const Program& program, bool vertex_stage) {
     const std::filesystem::path& plugin = plugin_of(program);
-    return plugin.empty() ? builtin_glsl_folder() : plugin.parent_path();
+    const bool builtin = plugin.empty() || (vertex_stage && program.info().stock_vertex_glsl);
+    return builtin ? builtin_glsl_folder() : plugin.parent_path();
 }
 
 }  // namespace qs

@@ -388,7 +388,7 @@ TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": 3D textures 
     }
 }
 
-TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": seed 001's fast noise from a 32^3 volume",
+TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": the ProcTexGen fast noise from a 32^3 volume",
           "[conformance][textures]") {
     const auto dir = temp_dir("fast-noise-" + kDriverName);
     const auto volume = write_volume(dir, 32, 32, 32);

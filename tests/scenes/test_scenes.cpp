@@ -494,10 +494,10 @@ TEST_CASE("leaving out what a shader does not use (gl_FragCoord, helper lanes, d
 
 TEST_CASE("scenes drawn in painter's order, without a depth buffer, are the depth-tested frames to the bit",
           "[scenes][depth]") {
-    // Figure 1.1 and seed 001's spheres: culled spheres drawn after the ground behind them, which
+    // Figure 1.1 and the ProcTexGen spheres: culled spheres drawn after the ground behind them, which
     // the rasterizer proves needs no depth buffer (raster/depth_buffer.h); the general path tests
     // every depth. Several sizes, so that the spheres' silhouettes snap differently.
-    for (const auto& path : {kFigure, kSeed001Spheres}) {
+    for (const auto& path : {kFigure, kProcTexGenSpheres}) {
         Scene scene = load_scene(path);
         for (const auto& [w, h] : {std::pair{632, 200}, std::pair{1264, 400}, std::pair{701, 333}}) {
             INFO(path.filename().string() << " at " << w << "x" << h);
