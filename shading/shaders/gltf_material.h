@@ -49,7 +49,6 @@ struct GltfMaterial {
                        "Lambert-lit by a light fixed to the camera, alphaMode, KHR_materials_unlit",
         .needs = Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = true, .time = false,
                        .frag_coord = true},
-        .glsl_vertex = {"shaders/gltf_material.glsl", "shaders/gltf_material.vert"},
         .glsl_fragment = {"shaders/gltf_material.glsl", "shaders/gltf_material.frag"},
         .uniforms = kUniforms,
     };
@@ -76,6 +75,7 @@ struct GltfMaterial {
 
     // gltf_material.vert
     struct VertexStage {
+        static constexpr GlslFiles glsl{"shaders/gltf_material.glsl", "shaders/gltf_material.vert"};
         template <class T>
         struct Varyings {
             vec4<T> color;
@@ -127,5 +127,7 @@ struct GltfMaterial {
         return out;
     }
 };
+
+QUADSHADE_SHADERS_IN("glTF: the default material", GltfMaterial)
 
 }  // namespace qs::shaders
