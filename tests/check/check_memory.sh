@@ -11,11 +11,11 @@ fail() { echo "check_memory.sh: $*" >&2; exit 1; }
 sed 's/^\( *\)500,$/\132768,/; s/^\( *\)500$/\132768/' "$scenes/table-1.1-plane.gltf" >huge/plane.gltf || exit 1
 cp "$scenes/table-1.1-plane.bin" huge/ && cp -r "$scenes/textures" huge/ || exit 1
 grep -q 32768 huge/plane.gltf || fail "the scene's size was not found to change"
-"$quadshade" check my_stripes --plugin "$plugin" --scenes huge --memory-limit 1G -o out >out.txt 2>&1
+"$quadshade" check stripes --plugin "$plugin" --scenes huge --memory-limit 1G -o out >out.txt 2>&1
 status=$?
 cat out.txt
 [ "$status" -eq 1 ] || fail "exit $status, expected 1"
-grep -Eq "checking my_stripes on .*plane.gltf \(32768x32768\) needs [0-9.]+ GiB, more than the 1.0 GiB available" \
+grep -Eq "checking stripes on .*plane.gltf \(32768x32768\) needs [0-9.]+ GiB, more than the 1.0 GiB available" \
     out.txt || fail "the message does not name the case, its size and the memory it needs"
 [ ! -e out/report.csv ] || fail "a report was written"
 [ -z "$(find out -name 'reference-*' -o -name '.*' | head -1)" ] || fail "a reference image, log or scratch folder was left"

@@ -9,7 +9,7 @@ rm -rf "$work" && mkdir -p "$work" || exit 1
 cd "$work" || exit 1
 fail() { echo "concurrent_check.sh: $*" >&2; exit 1; }
 run() {
-    "$quadshade" check my_stripes --plugin "$plugin" --scenes "$scenes" --jobs 2 -o shared >"run$1.txt" 2>&1
+    "$quadshade" check stripes --plugin "$plugin" --scenes "$scenes" --jobs 2 -o shared >"run$1.txt" 2>&1
     echo $? >"status$1"
 }
 run 1 &
