@@ -65,6 +65,8 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "the un-anti-aliased variant: a plain step turns the last-ulp difference of a value lying on its "
       "threshold into a full flip, which aastep's ramp absorbs (measured: 1 pixel, 178/255)"}},
     {{"halftone_step", "softpipe"}, {6, 6, 0, "as against llvmpipe (measured: 3 pixels)"}},
+    {{"scene_inputs", "softpipe"},
+     {2, 2, 0, "measured: 1 pixel, 6/255, since the scene's transforms are composed in double; its cause is not yet isolated"}},
     {{"spots", "softpipe"},
      {4, 4, 0,
       "on the sphere scene: softpipe interpolates P with its own arithmetic (see perlin5), and 2 pixels on the rings' "
