@@ -541,7 +541,7 @@ TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "
     CHECK(draw(8, 8, near_tri, kFlat).depth.empty());  // one triangle occludes nothing: no depth buffer
 }
 
-TEST_CASE("derivative-free shaders run per pixel with no helper lanes; derivative shaders in quads", "[raster][specialisation]") {
+TEST_CASE("derivative-free shaders run per pixel with no helper lanes, derivative shaders in quads", "[raster][specialisation]") {
     const std::vector<glm::vec3> tri = {{0.5f, 0.5f, 0}, {30.2f, 3.1f, 0}, {7.7f, 29.9f, 0}};
     RenderStats flat, slopes, general;
     draw(32, 32, tri, kFlat, {}, &flat);

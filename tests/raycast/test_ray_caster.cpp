@@ -79,7 +79,7 @@ constexpr std::size_t kFigureOver1WhereCoverageAgrees = 3;
 
 }  // namespace
 
-TEST_CASE("ray caster: Figure 1.1 with quad derivatives matches the rasterizer; coverage differs only on silhouettes",
+TEST_CASE("ray caster: Figure 1.1 with quad derivatives matches the rasterizer, coverage differs only on silhouettes",
           "[raycast]") {
     Scene scene = load_scene(kFigure);
     const int w = scene.width, h = scene.height;

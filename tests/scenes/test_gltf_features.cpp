@@ -68,7 +68,7 @@ void write(const std::filesystem::path& file, const json& doc) { std::ofstream(f
 
 }  // namespace
 
-TEST_CASE("glTF: triangle strips and fans are unrolled as GL draws them; points and lines skipped, counted once",
+TEST_CASE("glTF: triangle strips and fans are unrolled as GL draws them, points and lines skipped, counted once",
           "[scenes][gltf]") {
     const Scene s = load_scene(kGltf / "primitive-modes.gltf");
     // The strip, the fan and the box; the points, the lines and the line loop are skipped.
@@ -197,7 +197,7 @@ TEST_CASE("glTF: EXT_mesh_gpu_instancing draws the node's mesh once per instance
     CHECK(s.objects[124].name == "Instances instance 124");
 }
 
-TEST_CASE("glTF: --camera picks a camera by node name, camera name or index; a wrong one lists them",
+TEST_CASE("glTF: --camera picks a camera by node name, camera name or index, a wrong one lists them",
           "[scenes][gltf][camera]") {
     const auto camera = [](const std::string& name) {
         SceneLoadOptions o;
@@ -214,7 +214,7 @@ TEST_CASE("glTF: --camera picks a camera by node name, camera name or index; a w
     CHECK_THROWS_AS(camera("7"), CameraOptionError);  // the command line's fault: exit 2
 }
 
-TEST_CASE("glTF: cameras keep their height and widen, never stretch; the default camera frames the scene at any size",
+TEST_CASE("glTF: cameras keep their height and widen, never stretch, the default camera frames the scene at any size",
           "[scenes][gltf][camera]") {
     Camera ortho;
     ortho.kind = Camera::Kind::Orthographic;

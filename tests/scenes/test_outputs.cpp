@@ -114,7 +114,7 @@ TEST_CASE("outputs: a link is replaced, a stream written into, a folder, socket 
     CHECK_FALSE(has_hidden(dir));
 }
 
-TEST_CASE("outputs: folders a command fills are never links; copies read only regular files", "[outputs]") {
+TEST_CASE("outputs: folders a command fills are never links, copies read only regular files", "[outputs]") {
     const fs::path dir = temp_dir("outputs-folders");
     fs::create_directories(dir / "elsewhere");
     fs::create_symlink(dir / "elsewhere", dir / "images");

@@ -635,7 +635,7 @@ TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") 
 
 namespace qs {
 
-TEST_CASE("long animations: float time freezes and jumps near 1e6 s; --stable-time keeps every frame", "[animation][stability]") {
+TEST_CASE("long animations: float time freezes and jumps near 1e6 s, --stable-time keeps every frame", "[animation][stability]") {
     Scene scene = load_scene(kFigure);
     FrameRequest r;
     r.width = 158, r.height = 50;  // an eighth of the figure: enough to see every object move
@@ -887,7 +887,7 @@ std::filesystem::path uniform_scene(const std::filesystem::path& dir, const std:
 
 }  // namespace
 
-TEST_CASE("uniforms: the material's extras.uniforms round-trip through glTF; bad ones name the file and field", "[scenes][uniforms]") {
+TEST_CASE("uniforms: the material's extras.uniforms round-trip through glTF, bad ones name the file and field", "[scenes][uniforms]") {
     const auto dir = temp_dir("uniforms-gltf");
     const auto file = uniform_scene(dir, "set.gltf", {{"uScale", {6.5}, ""}, {"uTint", {0.25, 1.0, 0.75}, ""}});
     const Scene s = load_scene(file);

@@ -20,7 +20,7 @@ TEST_CASE("a stage's first file keeps its own #version line, first, its other li
         "#  version 330 compatibility\n#line 1\n\nvoid main() {}"));
 }
 
-TEST_CASE("without a #version line, ShaderInfo's (120 when unset; the compatibility profile from 150)", "[glsl]") {
+TEST_CASE("without a #version line, ShaderInfo's (120 when unset, the compatibility profile from 150)", "[glsl]") {
     CHECK(stage_source({{"a.glsl", "float f();\n"}, {"a.frag", "void main() {}\n"}}, 0, "") ==
           "#version 120\n#line 1\nfloat f();\n#line 1\nvoid main() {}\n");
     CHECK(stage_source({{"a.frag", "void main() {}\n"}}, 150, "#define Y\n") ==

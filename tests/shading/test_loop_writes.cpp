@@ -82,7 +82,7 @@ TEST_CASE("a loop body writing a variable its Loop does not hold fails the check
     CHECK(differ > 0);
 }
 
-TEST_CASE("the checked loop rule: floats, vectors, bools and discards named; what the rule allows passes", "[loops][undefined]") {
+TEST_CASE("the checked loop rule: floats, vectors, bools and discards named, what the rule allows passes", "[loops][undefined]") {
     using F = Checked16;
     const F v = ramp<F>(0.0f, 0.5f);
 

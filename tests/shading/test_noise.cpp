@@ -109,7 +109,7 @@ TEST_CASE("flow noise's analytic gradient matches central differences", "[noise]
     }
 }
 
-TEST_CASE("Listing 1.3 with its printed C.xxxx jumps across simplex edges; with C.xxzz it is continuous", "[noise]") {
+TEST_CASE("Listing 1.3 with its printed C.xxxx jumps across simplex edges, with C.xxzz it is continuous", "[noise]") {
     // March along a line in small steps; the largest step-to-step change shows a discontinuity.
     auto largest_jump = [](auto noise) {
         double worst = 0.0, prev = noise(vec2<double>(0.0, 0.05));
