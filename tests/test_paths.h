@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -38,6 +39,12 @@ inline bool plane_binds_samplers(const ShaderInfo& info) {
     }
     return true;
 }
+
+// Translations written in the order Mesa's optimiser reassociates a sum to rather than as their
+// GLSL reads (each one's comment says which sum), so that they match llvmpipe: their GLSL run as
+// written by the interpreter rounds as written, an ulp away, which a hash or an escape time turns
+// into whole steps.
+inline const std::set<std::string, std::less<>> kReassociatedByMesa = {"hash_hoskins", "lawlor_mandelbrot"};
 
 // A fresh, empty folder under the system's temporary directory, unique to this process.
 inline std::filesystem::path temp_dir(const std::string& name) {

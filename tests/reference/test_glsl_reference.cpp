@@ -160,6 +160,30 @@ void main() {
 })"},
 };
 
+// `fragment` (with the vertex shader the front end writes for it) drawn on the Table 1.1 plane by
+// the interpreter and by llvmpipe, held to the bar with `over_1` pixels allowed past 1/255.
+void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context, GlPrograms& programs, int size,
+                            const std::string& name, const std::string& fragment, std::size_t over_1, const char* cause) {
+    const std::filesystem::path frag = dir / (name + ".frag"), vert = dir / (name + ".vert");
+    std::ofstream(frag) << fragment;
+    std::ofstream(vert) << frontend::default_vertex_shader({frag.string(), fragment}).text;
+    const GlslShader shader = load_glsl_shader(frag, vert);
+
+    Scene scene = load_scene(kPlane);
+    FrameRequest r;
+    r.width = r.height = size;
+    r.shader_override = std::string(shader.program->info().name);
+    r.set(raster_options_as(GlDriver::Llvmpipe));
+    const Framebuffer ours = render_frame(scene, r);
+    const Image reference = GlSceneRenderer(scene, {size, size, {}, name, {}}, context, programs).render();
+    const Counts n = count(ours, reference);
+    INFO(name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, coverage differs on "
+              << n.coverage_mismatch << (cause ? std::string(" (") + cause + ")" : std::string()));
+    CHECK(n.coverage_mismatch == 0);
+    CHECK(n.over_1 <= over_1);
+    if (n.over_1 > 0) write_comparison(ours, reference, dir / (name + "-comparison.png"));
+}
+
 }  // namespace
 
 TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interpreter][reference]") {
@@ -170,28 +194,9 @@ TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interp
     for (const Case& c : kCases) {
         const std::string fragment = "#version 120\n" + library(c.file) + "\nvarying vec2 st;\nvoid main() {\n    vec3 c;\n    " +
                                      c.main + "\n    gl_FragColor = vec4(c, 1.0);\n}\n";
-        const std::filesystem::path frag = dir / (std::string(c.name) + ".frag");
-        std::ofstream(frag) << fragment;
-        const frontend::GlslSource vertex = frontend::default_vertex_shader({frag.string(), fragment});
-        std::ofstream(dir / (std::string(c.name) + ".vert")) << vertex.text;
-        const GlslShader shader = load_glsl_shader(frag, dir / (std::string(c.name) + ".vert"));
-
-        Scene scene = load_scene(kPlane);
-        FrameRequest r;
-        r.width = r.height = size;
-        r.shader_override = std::string(shader.program->info().name);
-        r.set(raster_options_as(GlDriver::Llvmpipe));
-        const Framebuffer ours = render_frame(scene, r);
-        const Image reference = GlSceneRenderer(scene, {size, size, {}, c.name, {}}, *context, programs).render();
-        const Counts n = count(ours, reference);
-        INFO(c.name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, coverage differs on "
-                    << n.coverage_mismatch << (c.cause ? std::string(" (") + c.cause + ")" : std::string()));
-        CHECK(n.coverage_mismatch == 0);
-        CHECK(n.over_1 <= c.over_1);
-        if (n.over_1 > 0) write_comparison(ours, reference, dir / (std::string(c.name) + "-comparison.png"));
+        check_against_llvmpipe(dir, *context, programs, size, c.name, fragment, c.over_1, c.cause);
     }
 }
-
 
 TEST_CASE("the language where lanes diverge, run by the interpreter, matches OSMesa llvmpipe", "[interpreter][reference]") {
     const std::filesystem::path dir = temp_dir("glsl-language");
@@ -199,26 +204,8 @@ TEST_CASE("the language where lanes diverge, run by the interpreter, matches OSM
     auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
     GlPrograms programs(dir);
     for (const LanguageCase& c : kLanguage) {
-        const std::string fragment = std::string("#version 130") + c.source + "\n";
-        const std::filesystem::path frag = dir / (std::string(c.name) + ".frag");
-        std::ofstream(frag) << fragment;
-        const frontend::GlslSource vertex = frontend::default_vertex_shader({frag.string(), fragment});
-        std::ofstream(dir / (std::string(c.name) + ".vert")) << vertex.text;
-        const GlslShader shader = load_glsl_shader(frag, dir / (std::string(c.name) + ".vert"));
-
-        Scene scene = load_scene(kPlane);
-        FrameRequest r;
-        r.width = r.height = size;
-        r.shader_override = std::string(shader.program->info().name);
-        r.set(raster_options_as(GlDriver::Llvmpipe));
-        const Framebuffer ours = render_frame(scene, r);
-        const Image reference = GlSceneRenderer(scene, {size, size, {}, c.name, {}}, *context, programs).render();
-        const Counts n = count(ours, reference);
-        INFO(c.name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, coverage differs on "
-                    << n.coverage_mismatch << (c.cause ? std::string(" (") + c.cause + ")" : std::string()));
-        CHECK(n.coverage_mismatch == 0);
-        CHECK(n.over_1 <= c.over_1);
-        if (n.over_1 > 0) write_comparison(ours, reference, dir / (std::string(c.name) + "-comparison.png"));
+        check_against_llvmpipe(dir, *context, programs, size, c.name, std::string("#version 130") + c.source + "\n", c.over_1,
+                               c.cause);
     }
 }
 

@@ -216,11 +216,6 @@ void record(const std::string& driver, const std::string& line) {
     it->second << line << "\n" << std::flush;
 }
 
-// Translations written in the order Mesa's optimiser reassociates sums to, where an ulp becomes a
-// different hash or escape time (their comments say which sums): their GLSL, run as written by
-// the interpreter, rounds as written and is counted here, not held to the bar.
-const std::set<std::string> kReassociatedByMesa = {"hash_hoskins", "lawlor_mandelbrot"};
-
 // The case's GLSL run by the interpreter (render/glsl_shaders.h) against the same llvmpipe
 // image, held to the translation's bound; recorded as driver "llvmpipe-interpreted".
 void check_interpreted(const Case& c, const Image& ref) {
@@ -235,7 +230,7 @@ void check_interpreted(const Case& c, const Image& ref) {
     auto it = kBounds.find({c.name, "llvmpipe"});
     const Bound bound = it == kBounds.end() ? Bound{} : it->second;
     CHECK(n.coverage_mismatch <= bound.coverage_mismatch);
-    if (kReassociatedByMesa.count(c.name)) return;
+    if (test::kReassociatedByMesa.contains(c.name)) return;  // counted, not held to the bar
     CHECK(n.over_1 <= bound.over_1);
     CHECK(double(n.over_1) <= kMaxFractionOver1 * double(n.pixels));
     CHECK(n.over_2 <= bound.over_2);
