@@ -104,7 +104,7 @@ TEST_CASE("bake: memory is checked before any work, a missing folder reported fi
     CHECK_FALSE(has_hidden(dir));
 }
 
-TEST_CASE("bake: SIGINT removes the staging folder; the previous baked scene stays whole", "[bake][signals]") {
+TEST_CASE("bake: SIGINT removes the staging folder, the previous baked scene stays whole", "[bake][signals]") {
     const fs::path dir = temp_dir("bake-signal");
     const std::string bake =
         kQuadshade + " bake " + kAtlasSphere.string() + " --shader noise_bumps --maps color,normal ";

@@ -123,7 +123,7 @@ TEST_CASE("test reports: a link is replaced, a stream is written into, nothing i
     CHECK_FALSE(has_hidden(dir));
 }
 
-TEST_CASE("test: a passing case removes only its own stale images; cases sharing a file are refused",
+TEST_CASE("test: a passing case removes only its own stale images, cases sharing a file are refused",
           "[suites][outputs]") {
     const fs::path dir = plane_folder("suite-shared-files");
     // Cases p, p.actual and p.diff: p's failure images would be the other two cases' goldens.

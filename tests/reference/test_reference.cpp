@@ -680,7 +680,7 @@ TEST_CASE("sin and cos probe: llvmpipe's polynomial bit for bit, softpipe's C li
     CHECK(worst <= 0x1p-24);
 }
 
-TEST_CASE("discard probe: discarded fragments write nothing; derivatives after discard as llvmpipe", "[reference][discard]") {
+TEST_CASE("discard probe: discarded fragments write nothing, derivatives after discard as llvmpipe", "[reference][discard]") {
     // 17x15: quads stick out of the image, so helper lanes discard too.
     const Case probe{"discard_probe", kPlane, "discard_probe", 17, 15};
     const Framebuffer q = ours(probe, Derivatives::Fine, 17, 15);
@@ -882,7 +882,7 @@ TEST_CASE("bake-volume: the command writes a volume that loads as a sampler3D, a
 
 namespace qs {
 
-TEST_CASE("scene inputs by name: mvp, position and texcoord draw what the compatibility profile's names draw; "
+TEST_CASE("scene inputs by name: mvp, position and texcoord draw what the compatibility profile's names draw, "
           "what the scene does not feed is refused by name",
           "[reference][inputs]") {
     using test::kBin;
