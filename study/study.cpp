@@ -1,0 +1,274 @@
+#include "study/study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include "core/tile_grid.h"
+#include "render/frame_image.h"
+#include "render/reference_process.h"
+#include "scenes/gltf.h"
+#include "shading/catalogue.h"
+#include "shading/glsl_export.h"
+#include "study/image_error.h"
+#include "study/study_csv.h"
+
+namespace qs::study {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+#if defined(QUADSHADE_HAS_RAYCAST)
+constexpr bool kRaycast = true;
+#else
+constexpr bool kRaycast = false;
+#endif
+
+// A name as a file name: letters, digits, '.', '-' and '_' kept, anything else '_'.
+std::string file_name(const std::string& name) {
+    std::string s = name;
+    for (char& c : s) {
+        if (!std::isalnum((unsigned char)c) && c != '.' && c != '-' && c != '_') c = '_';
+    }
+    if (s.empty() || s[0] == '.') s.insert(s.begin(), '_');
+    return s;
+}
+
+// Writes a view's scene for the reference, its texture files copied beside it (a scene may only
+// read files in its own folder).
+void save_view(const Scene& scene, const fs::path& file) {
+    Scene copy = scene;
+    for (std::size_t i = 0; i < copy.textures.size(); ++i) {
+        ImageSource& image = copy.textures[i].image;
+        if (image.kind != ImageSource::Kind::File || image.file.empty()) continue;
+        const fs::path local = file.parent_path() / (file.stem().string() + "-" + std::to_string(i) + "-" +
+                                                      file_name(image.file.filename().string()));
+        fs::copy_file(image.file, local, fs::copy_options::overwrite_existing);
+        image.file = local;
+    }
+    save_scene(copy, file);
+}
+
+struct Timing {
+    double median = 0.0, min = 0.0, max = 0.0;
+};
+
+class Study {
+public:
+    explicit Study(const Request& r) : r_(r) {}
+
+    void run(bool append) {
+        const std::vector<Mode> modes = chosen_modes();
+        std::vector<const View*> views;
+        for (const std::string& v : r_.views) views.push_back(&generated_view(v));
+        if (views.empty()) throw std::invalid_argument("no view to study");
+        for (const std::string& name : {r_.shaders.shader, r_.shaders.unfiltered, r_.shaders.alternative}) {
+            if (!name.empty() && !find_program(name)) {
+                throw std::runtime_error("unknown shader '" + name +
+                                         "' (quadshade shaders lists the catalogue; --plugin LIB adds a plugin's)");
+            }
+        }
+        const Scene original = load_scene(r_.scene);
+        const std::string label = r_.label.empty() ? r_.shaders.shader : r_.label;
+        fs::create_directories(r_.output / "images");
+        if (r_.reference) {
+            reference_ = reference_executable("study");
+            export_glsl(r_.output / "glsl");  // the reference sees the GLSL as any GL application would: the text only
+        }
+        const bool header = !append || !fs::exists(r_.output / "study.csv");
+        std::ofstream csv(r_.output / "study.csv", append ? std::ios::app : std::ios::trunc);
+        std::ofstream views_csv(r_.output / "views.csv", append ? std::ios::app : std::ios::trunc);
+        if (header) {
+            csv << csv_line(kStudyColumns);
+            views_csv << csv_line({"shader", "view", "description", "width", "height", "truth"});
+        }
+        std::size_t total = views.size() * (modes.size() + 1), done = 0;
+        for (const View* v : views) {
+            const std::string id = file_name(label) + "-" + v->name;
+            const fs::path dir = r_.output / "images" / id;
+            fs::create_directories(dir);
+            Scene scene = original;
+            if (!r_.keep_shader.empty()) {
+                std::erase_if(scene.objects, [&](const Object& o) { return o.shader != r_.keep_shader; });
+                if (scene.objects.empty()) {
+                    throw std::invalid_argument(r_.scene.string() + ": no object's material names the shader '" +
+                                                r_.keep_shader + "'");
+                }
+            }
+            apply_view(*v, scene);
+            size_for(scene);
+            // The reference reads the view from a file, written unless the scene is as loaded.
+            fs::path scene_file = r_.scene;
+            if (r_.reference && (v->zoom != 1.0f || v->texcoord_scale != 1.0f || v->grazing || !r_.keep_shader.empty())) {
+                fs::create_directories(r_.output / "views");
+                scene_file = r_.output / "views" / (id + ".gltf");
+                save_view(scene, scene_file);
+            }
+            const std::string& truth_shader = r_.shaders.unfiltered.empty() ? r_.shaders.shader : r_.shaders.unfiltered;
+            const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" + std::to_string(r_.truth) +
+                                           " samples per pixel in double, box-filtered";
+            views_csv << csv_line({label, v->name, v->description, std::to_string(scene.width), std::to_string(scene.height),
+                                   truth_text});
+            progress(++done, total, id + ": truth");
+            const Image truth = ground_truth(scene, truth_shader);
+            write_image(dir / "truth.png", truth);
+            std::map<std::pair<std::string, int>, std::string> llvmpipe_files;  // (variant, supersample)
+            std::map<std::pair<std::string, int>, Image> llvmpipe;
+            for (const Mode& m : modes) {
+                progress(++done, total, id + ": " + m.name);
+                const auto [image, time] = render(scene, m);
+                const std::string name = file_name(m.name) + ".png", heat = file_name(m.name) + "-heat.png";
+                write_image(dir / name, image);
+                write_image(dir / heat, difference_heat_map(image, truth, 0.25f));
+                const Error vs_truth = error_of(image, truth);
+                Error vs_gl{NAN, NAN};
+                std::string gl_file;
+                if (r_.reference) {
+                    const auto key = std::make_pair(m.shader, m.supersample);
+                    if (!llvmpipe.count(key)) {
+                        gl_file = "llvmpipe-" + file_name(m.shader) + "-ss" + std::to_string(m.supersample) + ".png";
+                        llvmpipe[key] = reference(scene_file, scene, m, dir);
+                        llvmpipe_files[key] = gl_file;
+                        write_image(dir / gl_file, llvmpipe[key]);
+                    }
+                    gl_file = llvmpipe_files[key];
+                    vs_gl = error_of(image, llvmpipe[key]);
+                }
+                const std::string images = "images/" + id + "/";
+                csv << csv_line({label, v->name, m.name, m.group, m.shader, number(time.median), number(time.min),
+                                 number(time.max), number(vs_gl.rms), number(vs_gl.max), number(vs_truth.rms),
+                                 number(vs_truth.max), std::to_string(image.width), std::to_string(image.height),
+                                 images + name, gl_file.empty() ? "" : images + gl_file, images + "truth.png",
+                                 images + heat, truth_shader});
+                csv.flush();
+            }
+        }
+        std::fprintf(stderr, "\n");
+    }
+
+private:
+    std::vector<Mode> chosen_modes() const {
+        const std::vector<Mode> all = all_modes(r_.shaders, kRaycast);
+        if (r_.modes.empty()) return all;
+        std::vector<Mode> chosen;
+        for (const std::string& name : r_.modes) {
+            auto it = std::find_if(all.begin(), all.end(), [&](const Mode& m) { return m.name == name; });
+            if (it == all.end()) {
+                throw std::invalid_argument("no mode '" + name + "' for this shader (its modes: " +
+                                            mode_names(r_.shaders, kRaycast) + ")");
+            }
+            chosen.push_back(*it);
+        }
+        return chosen;
+    }
+
+    // The longer side `size`, the scene's aspect kept.
+    void size_for(Scene& scene) const {
+        const double aspect = double(scene.width) / double(scene.height);
+        if (aspect >= 1.0) {
+            scene.width = r_.size, scene.height = std::max(1, int(std::lround(r_.size / aspect)));
+        } else {
+            scene.height = r_.size, scene.width = std::max(1, int(std::lround(r_.size * aspect)));
+        }
+    }
+
+    FrameRequest request(const Scene& scene, const Mode& m, int k) const {
+        FrameRequest f;
+        f.width = scene.width * k, f.height = scene.height * k;
+        f.time = r_.time;
+        f.shader_override = m.shader;
+        f.backend = m.backend;
+        f.shading.derivatives = m.rule;
+        f.shading.precision = m.precision;
+        f.shading.threads = r_.threads;
+        return f;
+    }
+
+    // The mode's image at the scene's size and its time per frame (supersampled modes include
+    // the filter).
+    std::pair<Image, Timing> render(Scene& scene, const Mode& m) const {
+        SceneRenderer renderer(scene, request(scene, m, m.supersample));
+        Framebuffer fb;
+        Image image;
+        std::vector<double> ms;
+        constexpr int kWarmUp = 3;  // untimed: thread pool, caches, first touch of the framebuffer
+        const int warm_up = r_.repeat > 1 ? kWarmUp : 0;
+        for (int i = 0; i < r_.repeat + warm_up; ++i) {
+            const auto t0 = Clock::now();
+            renderer.render_into(fb, std::nullopt);
+            image = m.supersample > 1 ? box_filter(fb.rgba, fb.width, fb.height, m.supersample) : colour_image(fb);
+            if (i >= warm_up) ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+        }
+        std::sort(ms.begin(), ms.end());
+        return {image, {ms[ms.size() / 2], ms.front(), ms.back()}};
+    }
+
+    Image reference(const fs::path& scene_file, const Scene& scene, const Mode& m, const fs::path& dir) const {
+        const int k = m.supersample;
+        const fs::path image = dir / "reference.exr", log = dir / "reference.log";
+        std::vector<std::string> argv = {reference_.string(), scene_file.string(), "-o", image.string(), "--glsl",
+                                         (r_.output / "glsl").string(), "--driver", "llvmpipe", "--shader", m.shader,
+                                         "--size", std::to_string(scene.width * k) + "x" + std::to_string(scene.height * k),
+                                         "--threads", std::to_string(r_.threads)};
+        if (r_.time) argv.insert(argv.end(), {"--time", number(*r_.time)});
+        if (const int status = run_process(argv, log); status != 0) {
+            throw std::runtime_error("quadshade-reference failed on " + scene_file.string() + " with " + m.shader +
+                                     " (exit " + std::to_string(status) + "): " + read_text(log));
+        }
+        Image gl = read_image(image);
+        fs::remove(image), fs::remove(log);
+        return k > 1 ? box_filter(gl.rgba, gl.width, gl.height, k) : gl;
+    }
+
+    // `shader` at truth x truth samples per pixel in double, box-filtered; rendered in bands of
+    // rows so that a large rate never holds the whole supersampled frame.
+    Image ground_truth(Scene& scene, const std::string& shader) const {
+        Mode m{"truth", "", shader};
+        m.precision = Precision::Double;
+        const int k = r_.truth;
+        const FrameRequest f = request(scene, m, k);
+        SceneRenderer renderer(scene, f);
+        std::vector<double> sum(std::size_t(scene.width) * std::size_t(scene.height) * 4, 0.0);
+        constexpr int kBandPixels = 1 << 22;
+        const int max_rows = std::max(1, kBandPixels / f.width);
+        Framebuffer fb;
+        for (const RowBand band : image_bands(f.height, f.shading.pairing, max_rows)) {
+            renderer.render_into(fb, std::nullopt, nullptr, band);
+            for (int row = 0; row < fb.rows; ++row) {
+                const int y = (fb.first_row + row) / k;
+                const float* in = &fb.rgba[std::size_t(row) * std::size_t(fb.width) * 4];
+                for (int x = 0; x < fb.width; ++x) {
+                    for (int c = 0; c < 4; ++c) sum[(std::size_t(y) * std::size_t(scene.width) + std::size_t(x / k)) * 4 + c] += in[x * 4 + c];
+                }
+            }
+        }
+        Image out{scene.width, scene.height, std::vector<float>(sum.size())};
+        for (std::size_t i = 0; i < sum.size(); ++i) out.rgba[i] = float(sum[i] / double(k * k));
+        return out;
+    }
+
+    static void progress(std::size_t done, std::size_t total, const std::string& what) {
+        const int width = 30, filled = int(done * width / total);
+        std::fprintf(stderr, "\r[%s%s] %3zu/%zu %-48.48s", std::string(std::size_t(filled), '#').c_str(),
+                     std::string(std::size_t(width - filled), '.').c_str(), done, total, what.c_str());
+        std::fflush(stderr);
+    }
+
+    const Request& r_;
+    fs::path reference_;
+};
+
+}  // namespace
+
+void run_study(const Request& request, bool append) {
+    if (request.size < 1 || request.truth < 1 || request.repeat < 1) throw std::invalid_argument("size, truth and repeat must be positive");
+    Study(request).run(append);
+}
+
+}  // namespace qs::study

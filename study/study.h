@@ -1,0 +1,49 @@
+#pragma once
+// `quadshade study`: error against run time for one shader on one scene. For each view
+// (study_views.h) and mode (study_modes.h) it renders the shader, timed (the median and range of
+// `repeat` frames after warm-up ones), and measures the image's RMS and largest error
+//   against the truth: the shader's unfiltered variant where it names one, else the shader
+//     itself, rendered at truth x truth samples per pixel in double and box-filtered;
+//   against OSMesa llvmpipe running the same GLSL (quadshade-reference, a separate process),
+//     supersampled alike for the supersampled modes.
+// It writes, in the output folder: study.csv (one row per view and mode), views.csv, the images
+// (images/VIEW/MODE.png, its heat map against the truth, llvmpipe's and the truth's), the Pareto
+// plots (plots/VIEW.png, drawn by python3-matplotlib where it is installed) and report.html,
+// which holds every image and plot itself.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "study/study_modes.h"
+#include "study/study_views.h"
+
+namespace qs::study {
+
+struct Request {
+    std::filesystem::path scene;
+    Shaders shaders;
+    std::vector<std::string> views{"camera", "magnified", "minified", "grazing"};
+    std::vector<std::string> modes;  // empty: every mode
+    std::string keep_shader;         // draw only the objects whose material names this shader
+    int size = 256;                  // the image's longer side; the scene's aspect is kept
+    int truth = 32;                  // samples per pixel along each axis for the truth
+    int repeat = 5, threads = 2;
+    std::optional<double> time;      // the `time` uniform; default: the scene's
+    bool reference = true;           // measure against llvmpipe
+    std::filesystem::path output;
+    // The case's name in the CSV's `shader` column and the report (default: the shader's).
+    std::string label;
+};
+
+// Runs the study and writes its files into request.output (study.csv is appended to when
+// `append`, so that several studies share one report). Progress on stderr. Throws
+// std::invalid_argument for a request it cannot honour (an unknown view or mode, a truth rate the
+// size cannot take), std::runtime_error for a scene, shader or reference that fails.
+void run_study(const Request& request, bool append = false);
+
+// Writes report.html (and the plots) from the output folder's study.csv and views.csv.
+void write_report(const std::filesystem::path& output);
+
+}  // namespace qs::study

@@ -1,0 +1,24 @@
+#pragma once
+// The study's CSV files: RFC 4180 fields (quoted where they hold a comma, a quote or a line
+// break), numbers in full precision.
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace qs::study {
+
+// study.csv's columns, in order.
+inline const std::vector<std::string> kStudyColumns = {
+    "shader", "view", "mode", "group", "variant", "ms", "ms_min", "ms_max", "rms_vs_llvmpipe", "max_vs_llvmpipe",
+    "rms_vs_truth", "max_vs_truth", "width", "height", "image", "llvmpipe_image", "truth_image", "heat_image", "truth"};
+
+std::string csv_line(const std::vector<std::string>& fields);
+std::string number(double v);  // "nan" for NaN
+
+// The rows of a CSV file with a header line, each a map from column to field. Throws
+// std::runtime_error naming the file and line of a malformed row.
+std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::path& file);
+
+}  // namespace qs::study

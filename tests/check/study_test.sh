@@ -1,0 +1,95 @@
+#!/bin/sh
+# study_test.sh QUADSHADE SOURCE_DIR OUT CASE [PLUGIN]: `quadshade study` as a user runs it, on
+# small sizes, for one CASE:
+#   catalogue  a catalogue shader with its unfiltered variant on two views, three modes: the rows,
+#              the truth each names, the errors' bounds, the report with its images in it
+#   plugin     a plugin's shader (PLUGIN), one view, one mode
+#   glsl       a user's .frag (examples/my-shader/my_stripes.frag), one view, two modes
+#   refused    bad usage and bad input: a clear message, a non-zero exit, no report
+# The report is checked in headless Chromium where it is installed (every image loaded).
+set -u
+qs=$1 src=$2 out=$3 case=$4 plugin=${5:-}
+plane=$src/scenes/assets/table-1.1-plane.gltf
+small="--size 24 --truth 4 --repeat 2 --threads 1"
+rm -rf "$out" && mkdir -p "$out"
+fail() { echo "study_test.sh ($case): $*" >&2; exit 1; }
+
+# field CSV ROW_MATCH COLUMN: the column's value on the first row whose line matches ROW_MATCH.
+field() {
+    awk -F, -v m="$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == c) k = i; next }
+                                 $0 ~ m { print $k; exit }' "$1"
+}
+# below A B: A < B as numbers.
+below() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 < b + 0) }'; }
+
+check_report() {
+    [ -s "$1/report.html" ] || fail "no report.html"
+    images=$(grep -o "src='data:image/png;base64," "$1/report.html" | wc -l)
+    [ "$images" -ge "$2" ] || fail "report.html holds $images images, expected at least $2"
+    grep -q "src='images/\|src='plots/" "$1/report.html" && fail "report.html points at files outside itself"
+    if grep -q "class='no-plot'" "$1/report.html"; then
+        grep -o "<p class='no-plot'>[^<]*" "$1/report.html" | head -1
+    else
+        ls "$1"/plots/*.png > /dev/null || fail "plots drawn but not written"
+    fi
+    if command -v chromium > /dev/null; then
+        dom=$(chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=10000 --dump-dom "file://$1/report.html" 2>/dev/null)
+        check=$(printf '%s' "$dom" | sed -n 's/.*<p id="image-check">images: \([0-9]*\)\/\([0-9]*\) loaded.*/\1 \2/p')
+        set -- $check
+        [ $# -eq 2 ] && [ "$1" = "$2" ] && [ "$2" -gt 0 ] || fail "Chromium: not every image loaded ($check)"
+        echo "Chromium: $1/$2 images loaded"
+    else
+        echo "Chromium is not installed: the report's images were checked in its text only"
+    fi
+}
+
+case $case in
+catalogue)
+    "$qs" study "$plane" --shader dots_aa --unfiltered dots_aa_step --views camera,grazing --modes fine,dual2,ss2x2 \
+        $small -o "$out" || fail "exit $?"
+    csv=$out/study.csv
+    [ "$(tail -n +2 "$csv" | wc -l)" -eq 6 ] || fail "expected 6 rows (2 views x 3 modes)"
+    [ "$(field "$csv" '^dots_aa,camera,ss2x2,' variant)" = dots_aa_step ] || fail "ss2x2 does not render the unfiltered variant"
+    [ "$(field "$csv" '^dots_aa,camera,fine,' truth)" = dots_aa_step ] || fail "the truth is not the unfiltered variant"
+    grep -q 'dots_aa_step at 4x4 samples per pixel in double, box-filtered' "$out/views.csv" || fail "views.csv names no truth"
+    # The fine rule is llvmpipe's: the same image but for float rounding; the truth differs from
+    # every mode, and supersampling the step pattern as llvmpipe does matches llvmpipe's.
+    below "$(field "$csv" '^dots_aa,camera,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
+    below "$(field "$csv" '^dots_aa,camera,ss2x2,' max_vs_llvmpipe)" 0.01 || fail "ss2x2 departs from llvmpipe's ss2x2"
+    below 0.001 "$(field "$csv" '^dots_aa,grazing,fine,' rms_vs_truth)" || fail "the grazing view matches the truth exactly"
+    below "$(field "$csv" '^dots_aa,camera,fine,' ms_min)" "$(field "$csv" '^dots_aa,camera,fine,' ms_max)" ||
+        [ "$(field "$csv" '^dots_aa,camera,fine,' ms_min)" = "$(field "$csv" '^dots_aa,camera,fine,' ms_max)" ] ||
+        fail "the time's range is reversed"
+    [ -s "$out/images/dots_aa-grazing/fine-heat.png" ] || fail "no heat map"
+    check_report "$out" 12
+    ;;
+plugin)
+    "$qs" study "$plane" --plugin "$plugin" --shader my_stripes --views magnified --modes fine $small -o "$out" ||
+        fail "exit $?"
+    below "$(field "$out/study.csv" '^my_stripes,magnified,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
+    check_report "$out" 3
+    ;;
+glsl)
+    "$qs" study "$plane" --glsl "$src/examples/my-shader/my_stripes.frag" --views minified --modes fine,dual2 $small \
+        -o "$out" || fail "exit $?"
+    csv=$out/study.csv
+    below "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
+    # Minified stripes: the analytic width filters them, the quads' fwidth of a folded ramp does not.
+    below "$(field "$csv" '^my_stripes.frag,minified,dual2,' rms_vs_truth)" \
+        "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_truth)" || fail "dual2 is not closer to the truth than fine"
+    check_report "$out" 5
+    ;;
+refused)
+    expect=$src/tests/check/expect_exit.sh
+    "$expect" 2 'name the shader with --shader NAME or --glsl FRAG' "$qs" study "$plane" -o "$out/a" &&
+    "$expect" 2 "no view 'sideways'" "$qs" study "$plane" --shader dots_aa --views sideways -o "$out/b" &&
+    "$expect" 2 "no mode 'ss3x3' for this shader" "$qs" study "$plane" --shader dots_aa --modes ss3x3 -o "$out/c" &&
+    "$expect" 2 "no mode 'step'" "$qs" study "$plane" --shader dots_aa --modes step -o "$out/d" &&
+    "$expect" 1 "unknown shader 'no_such_shader'" "$qs" study "$plane" --shader no_such_shader -o "$out/e" &&
+    "$expect" 2 'exists and is not a folder' "$qs" study "$plane" --shader dots_aa -o "$plane" &&
+    "$expect" 1 'no_such.gltf' "$qs" study "$src/no_such.gltf" --shader dots_aa -o "$out/f" || fail "not refused as expected"
+    ls "$out"/*/report.html 2> /dev/null && fail "a refused study wrote a report"
+    ;;
+*) fail "unknown case" ;;
+esac
+echo "study_test.sh ($case): passed"
