@@ -42,6 +42,7 @@ void add_study_options(CLI::App& cmd, StudyArgs& a) {
         ->check(CLI::Range(1, 1024))->option_text("N");
     cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
     cmd.add_flag("--no-reference", a.no_reference, "do not render llvmpipe's images (no OSMesa needed)");
+    cmd.add_flag("--no-derivative-maps", a.no_derivative_maps, "do not map the inputs' derivatives under each rule");
 }
 
 int cmd_study(StudyArgs& a) {
@@ -60,6 +61,7 @@ int cmd_study(StudyArgs& a) {
     r.scene = a.scene;
     r.output = a.output;
     r.reference = !a.no_reference;
+    r.derivative_maps = !a.no_derivative_maps;
     try {
         study::run_study(r);
     } catch (const std::invalid_argument& e) {

@@ -15,7 +15,7 @@ struct StudyArgs {
     std::string scene, output;
     std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
     std::vector<std::string> plugins;
-    bool no_reference = false;
+    bool no_reference = false, no_derivative_maps = false;
 };
 
 void add_study_options(CLI::App& cmd, StudyArgs& a);

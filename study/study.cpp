@@ -14,6 +14,8 @@
 #include "scenes/gltf.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
+#include "scenes/image_io.h"
+#include "study/derivative_maps.h"
 #include "study/image_error.h"
 #include "study/study_csv.h"
 
@@ -79,14 +81,16 @@ public:
         fs::create_directories(r_.output / "images");
         if (r_.reference) {
             reference_ = reference_executable("study");
-            export_glsl(r_.output / "glsl");  // the reference sees the GLSL as any GL application would: the text only
+            write_glsl();  // the reference sees the GLSL as any GL application would: the text only
         }
         const bool header = !append || !fs::exists(r_.output / "study.csv");
         std::ofstream csv(r_.output / "study.csv", append ? std::ios::app : std::ios::trunc);
         std::ofstream views_csv(r_.output / "views.csv", append ? std::ios::app : std::ios::trunc);
+        std::ofstream derivatives_csv(r_.output / "derivatives.csv", append ? std::ios::app : std::ios::trunc);
         if (header) {
             csv << csv_line(kStudyColumns);
             views_csv << csv_line({"shader", "view", "description", "width", "height", "truth"});
+            derivatives_csv << csv_line(kDerivativeColumns);
         }
         std::size_t total = views.size() * (modes.size() + 1), done = 0;
         for (const View* v : views) {
@@ -115,6 +119,15 @@ public:
                                            " samples per pixel in double, box-filtered";
             views_csv << csv_line({label, v->name, v->description, std::to_string(scene.width), std::to_string(scene.height),
                                    truth_text});
+            if (r_.derivative_maps) {
+                progress(done, total, id + ": derivative maps");
+                for (const DerivativeRow& d : derivative_maps(scene, r_.shaders.shader, r_.threads, dir, "images/" + id)) {
+                    derivatives_csv << csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
+                                                 number(d.rms_dy), number(d.max_dy), number(d.scale),
+                                                 std::to_string(d.covered), d.map_image, d.heat_image,
+                                                 d.analytic_image});
+                }
+            }
             progress(++done, total, id + ": truth");
             const Image truth = ground_truth(scene, truth_shader);
             write_image(dir / "truth.png", truth);
@@ -166,6 +179,21 @@ private:
             chosen.push_back(*it);
         }
         return chosen;
+    }
+
+    // Each variant's GLSL, for the reference: output/glsl/NAME.vert and NAME.frag.
+    void write_glsl() const {
+        const fs::path dir = r_.output / "glsl";
+        fs::create_directories(dir);
+        for (const std::string& name : {r_.shaders.shader, r_.shaders.unfiltered, r_.shaders.alternative}) {
+            if (name.empty()) continue;
+            const Program& p = *find_program(name);
+            for (const bool vertex : {true, false}) {
+                std::ofstream f(dir / (name + (vertex ? ".vert" : ".frag")), std::ios::binary);
+                f << glsl_source(p, vertex);
+                if (!f) throw std::runtime_error((dir / name).string() + ": cannot write the GLSL");
+            }
+        }
     }
 
     // The longer side `size`, the scene's aspect kept.

@@ -6,8 +6,11 @@
 //     itself, rendered at truth x truth samples per pixel in double and box-filtered;
 //   against OSMesa llvmpipe running the same GLSL (quadshade-reference, a separate process),
 //     supersampled alike for the supersampled modes.
-// It writes, in the output folder: study.csv (one row per view and mode), views.csv, the images
-// (images/VIEW/MODE.png, its heat map against the truth, llvmpipe's and the truth's), the Pareto
+// On each view it also maps the derivatives of the shader's inputs under each quad rule against
+// the analytic ones (derivative_maps.h).
+// It writes, in the output folder: study.csv (one row per view and mode), views.csv,
+// derivatives.csv (one row per view, input and rule), the images (images/CASE/MODE.png, its heat
+// map against the truth, llvmpipe's, the truth's, the derivative maps), the Pareto
 // plots (plots/VIEW.png, drawn by python3-matplotlib where it is installed) and report.html,
 // which holds every image and plot itself.
 
@@ -32,6 +35,7 @@ struct Request {
     int repeat = 5, threads = 2;
     std::optional<double> time;      // the `time` uniform; default: the scene's
     bool reference = true;           // measure against llvmpipe
+    bool derivative_maps = true;     // map the inputs' derivatives under each rule (derivative_maps.h)
     std::filesystem::path output;
     // The case's name in the CSV's `shader` column and the report (default: the shader's).
     std::string label;

@@ -14,6 +14,11 @@ inline const std::vector<std::string> kStudyColumns = {
     "shader", "view", "mode", "group", "variant", "ms", "ms_min", "ms_max", "rms_vs_llvmpipe", "max_vs_llvmpipe",
     "rms_vs_truth", "max_vs_truth", "width", "height", "image", "llvmpipe_image", "truth_image", "heat_image", "truth"};
 
+// derivatives.csv's columns (derivative_maps.h).
+inline const std::vector<std::string> kDerivativeColumns = {
+    "shader", "view", "input", "rule", "rms_dx", "max_dx", "rms_dy", "max_dy", "analytic_rms", "covered", "map_image",
+    "heat_image", "analytic_image"};
+
 std::string csv_line(const std::vector<std::string>& fields);
 std::string number(double v);  // "nan" for NaN
 

@@ -90,6 +90,40 @@ std::string draw_plots(const fs::path& root) {
     return {};
 }
 
+// The inputs' derivatives under each rule against the analytic ones: a table, then per input
+// the analytic map and each rule's map and heat map.
+std::string derivative_section(const fs::path& root, const std::vector<Row>& rows) {
+    if (rows.empty()) return {};
+    std::ostringstream out;
+    out << "<h3>Derivative maps</h3>\n<p>dFdx and dFdy of each input under each quad rule against the analytic partials "
+           "(Dual2), over the covered pixels; in brackets, relative to the RMS of the analytic gradient. Maps: dFdx "
+           "red, dFdy green, mid-grey 0; heat maps full scale a quarter of the largest analytic derivative.</p>\n"
+           "<table><tr><th>input</th><th>rule</th><th>RMS dFdx error</th><th>max dFdx error</th><th>RMS dFdy error</th>"
+           "<th>max dFdy error</th><th>analytic RMS</th></tr>\n";
+    for (const Row& d : rows) {
+        const double scale = value(d, "analytic_rms");
+        auto cell = [&](const char* column) {
+            const double v = value(d, column);
+            return format("%.2e", v) + (scale > 0 ? " (" + format("%.1e", v / scale) + ")" : "");
+        };
+        out << "<tr><td class='l'>" << escape(d.at("input")) << "</td><td class='l'>" << escape(d.at("rule")) << "</td><td>"
+            << cell("rms_dx") << "</td><td>" << cell("max_dx") << "</td><td>" << cell("rms_dy") << "</td><td>"
+            << cell("max_dy") << "</td><td>" << format("%.2e", scale) << "</td></tr>\n";
+    }
+    out << "</table>\n";
+    std::string input;
+    for (const Row& d : rows) {
+        if (d.at("input") != input) {
+            input = d.at("input");
+            out << (&d == &rows.front() ? "" : "</div>") << "<div><b>" << escape(input) << "</b><br>"
+                << figure(root, d.at("analytic_image"), "analytic (Dual2)");
+        }
+        out << figure(root, d.at("map_image"), d.at("rule")) << figure(root, d.at("heat_image"), "|" + d.at("rule") + " - analytic|");
+    }
+    out << "</div>\n";
+    return out.str();
+}
+
 }  // namespace
 
 void write_report(const fs::path& root) {
@@ -120,6 +154,10 @@ void write_report(const fs::path& root) {
         }
     }
     const std::string no_plots = draw_plots(root);
+    std::map<std::pair<std::string, std::string>, std::vector<Row>> maps;
+    if (fs::exists(root / "derivatives.csv")) {
+        for (Row& d : read_csv(root / "derivatives.csv")) maps[{d.at("shader"), d.at("view")}].push_back(std::move(d));
+    }
 
     std::ostringstream out;
     out << "<!DOCTYPE html><html><head><meta charset='utf-8'><title>quadshade study</title><style>"
@@ -173,6 +211,7 @@ void write_report(const fs::path& root) {
                                         fs::path(gl).stem().string().rfind('-') + 1));
         }
         out << "</div>\n";
+        out << derivative_section(root, maps[key]);
         for (const Row* r : rs) {
             out << "<div><b>" << escape(r->at("mode")) << "</b><br>" << figure(root, r->at("image"), "quadshade")
                 << figure(root, r->at("heat_image"), "|quadshade - truth|") << "</div>\n";

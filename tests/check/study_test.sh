@@ -2,7 +2,8 @@
 # study_test.sh QUADSHADE SOURCE_DIR OUT CASE [PLUGIN]: `quadshade study` as a user runs it, on
 # small sizes, for one CASE:
 #   catalogue  a catalogue shader with its unfiltered variant on two views, three modes: the rows,
-#              the truth each names, the errors' bounds, the report with its images in it
+#              the truth each names, the errors' bounds, the derivative maps of its inputs, the
+#              report with its images in it
 #   plugin     a plugin's shader (PLUGIN), one view, one mode
 #   glsl       a user's .frag (examples/my-shader/my_stripes.frag), one view, two modes
 #   refused    bad usage and bad input: a clear message, a non-zero exit, no report
@@ -61,7 +62,17 @@ catalogue)
         [ "$(field "$csv" '^dots_aa,camera,fine,' ms_min)" = "$(field "$csv" '^dots_aa,camera,fine,' ms_max)" ] ||
         fail "the time's range is reversed"
     [ -s "$out/images/dots_aa-grazing/fine-heat.png" ] || fail "no heat map"
-    check_report "$out" 12
+    # Derivative maps of st: exact under every rule in the orthographic camera's affine view; in
+    # perspective the quads' one-sided differences depart from the analytic partials, the coarse
+    # rules' shared dFdx the more.
+    d=$out/derivatives.csv
+    [ "$(tail -n +2 "$d" | wc -l)" -eq 12 ] || fail "expected 12 derivative rows (2 views x 2 inputs x 3 rules)"
+    below "$(field "$d" '^dots_aa,camera,st.s,coarse-lower,' max_dx)" 1e-6 || fail "camera: coarse dFdx(st.s) is not exact"
+    below 1e-4 "$(field "$d" '^dots_aa,grazing,st.t,fine,' rms_dy)" || fail "grazing: fine dFdy(st.t) is exact"
+    below "$(field "$d" '^dots_aa,grazing,st.s,fine,' rms_dx)" "$(field "$d" '^dots_aa,grazing,st.s,coarse-upper,' rms_dx)" ||
+        fail "grazing: coarse-upper dFdx(st.s) is no worse than fine"
+    grep -q '<h3>Derivative maps</h3>' "$out/report.html" || fail "the report has no derivative maps"
+    check_report "$out" 40
     ;;
 plugin)
     "$qs" study "$plane" --plugin "$plugin" --shader my_stripes --views magnified --modes fine $small -o "$out" ||
