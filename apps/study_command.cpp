@@ -41,6 +41,11 @@ void add_study_options(CLI::App& cmd, StudyArgs& a) {
     cmd.add_option("--threads", r.threads, "worker threads, quadshade's and llvmpipe's (default 2)")
         ->check(CLI::Range(1, 1024))->option_text("N");
     cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option_function<std::vector<double>>(
+           "--offset", [&r](const std::vector<double>& v) { r.offset = {v[0], v[1], v[2]}; },
+           "add X,Y,Z to the shader's coordinates (TEXCOORD_0's x, y and the\nobject positions; the geometry "
+           "stays where it was): the pattern far\nfrom its origin")
+        ->delimiter(',')->expected(3)->check(kFinite)->option_text("X,Y,Z");
     cmd.add_flag("--no-reference", a.no_reference, "do not render llvmpipe's images (no OSMesa needed)");
     cmd.add_flag("--no-derivative-maps", a.no_derivative_maps, "do not map the inputs' derivatives under each rule");
 }

@@ -27,11 +27,13 @@ Error error_of(const Image& a, const Image& b) {
         throw std::invalid_argument("images of different sizes: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                                     " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
     }
+    // NaN as 0, as unorm8 (core/framebuffer.h) stores it.
+    auto stored = [](float v) { return std::isnan(v) ? 0.0 : std::clamp(double(v), 0.0, 1.0); };
     double sum = 0.0, worst = 0.0;
     const std::size_t n = std::size_t(a.width) * std::size_t(a.height);
     for (std::size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c) {
-            const double d = std::clamp(double(a.rgba[i * 4 + c]), 0.0, 1.0) - std::clamp(double(b.rgba[i * 4 + c]), 0.0, 1.0);
+            const double d = stored(a.rgba[i * 4 + c]) - stored(b.rgba[i * 4 + c]);
             sum += d * d, worst = std::max(worst, std::abs(d));
         }
     }

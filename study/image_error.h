@@ -15,7 +15,7 @@ Image box_filter(std::span<const float> rgba, int width, int height, int k);
 struct Error {
     double rms = 0.0, max = 0.0;
 };
-// Over RGB, in [0, 1] units, each image clamped to [0, 1] as an 8-bit target clamps it. Throws
+// Over RGB, in [0, 1] units, each image clamped to [0, 1] as an 8-bit target clamps it (NaN as 0). Throws
 // std::invalid_argument for images of different sizes.
 Error error_of(const Image& a, const Image& b);
 

@@ -17,6 +17,7 @@
 #include "scenes/image_io.h"
 #include "study/derivative_maps.h"
 #include "study/image_error.h"
+#include "study/stability.h"
 #include "study/study_csv.h"
 
 namespace qs::study {
@@ -87,9 +88,11 @@ public:
         std::ofstream csv(r_.output / "study.csv", append ? std::ios::app : std::ios::trunc);
         std::ofstream views_csv(r_.output / "views.csv", append ? std::ios::app : std::ios::trunc);
         std::ofstream derivatives_csv(r_.output / "derivatives.csv", append ? std::ios::app : std::ios::trunc);
+        std::ofstream stability_csv(r_.output / "stability.csv", append ? std::ios::app : std::ios::trunc);
         if (header) {
             csv << csv_line(kStudyColumns);
-            views_csv << csv_line({"shader", "view", "description", "width", "height", "truth"});
+            views_csv << csv_line({"shader", "view", "description", "width", "height", "truth", "offset", "time"});
+            stability_csv << csv_line(kStabilityColumns);
             derivatives_csv << csv_line(kDerivativeColumns);
         }
         std::size_t total = views.size() * (modes.size() + 1), done = 0;
@@ -106,10 +109,13 @@ public:
                 }
             }
             apply_view(*v, scene);
+            const bool offset = r_.offset != glm::dvec3(0.0);
+            if (offset) offset_coordinates(scene, r_.offset);
             size_for(scene);
             // The reference reads the view from a file, written unless the scene is as loaded.
             fs::path scene_file = r_.scene;
-            if (r_.reference && (v->zoom != 1.0f || v->texcoord_scale != 1.0f || v->grazing || !r_.keep_shader.empty())) {
+            if (r_.reference && (v->zoom != 1.0f || v->texcoord_scale != 1.0f || v->grazing || offset ||
+                                 !r_.keep_shader.empty())) {
                 fs::create_directories(r_.output / "views");
                 scene_file = r_.output / "views" / (id + ".gltf");
                 save_view(scene, scene_file);
@@ -118,7 +124,16 @@ public:
             const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" + std::to_string(r_.truth) +
                                            " samples per pixel in double, box-filtered";
             views_csv << csv_line({label, v->name, v->description, std::to_string(scene.width), std::to_string(scene.height),
-                                   truth_text});
+                                   truth_text, number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
+                                   r_.time ? number(*r_.time) : number(scene.time)});
+            progress(done, total, id + ": float against double, undefined cases");
+            const Stability st = stability(scene, r_.shaders.shader, r_.time, r_.threads, dir, "images/" + id);
+            const auto& u = st.undefined;
+            stability_csv << csv_line({label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
+                                       std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
+                                       st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
+                                       st.checked ? std::to_string(u.per_case[1]) : "", st.checked ? std::to_string(u.per_case[2]) : "",
+                                       st.note, st.float_image, st.double_image, st.heat_image, st.mask_image});
             if (r_.derivative_maps) {
                 progress(done, total, id + ": derivative maps");
                 for (const DerivativeRow& d : derivative_maps(scene, r_.shaders.shader, r_.threads, dir, "images/" + id)) {

@@ -7,9 +7,10 @@
 //   against OSMesa llvmpipe running the same GLSL (quadshade-reference, a separate process),
 //     supersampled alike for the supersampled modes.
 // On each view it also maps the derivatives of the shader's inputs under each quad rule against
-// the analytic ones (derivative_maps.h).
+// the analytic ones (derivative_maps.h), and measures its float image against its double one
+// and marks the undefined GLSL cases it meets (stability.h).
 // It writes, in the output folder: study.csv (one row per view and mode), views.csv,
-// derivatives.csv (one row per view, input and rule), the images (images/CASE/MODE.png, its heat
+// derivatives.csv (one row per view, input and rule), stability.csv (one per view), the images (images/CASE/MODE.png, its heat
 // map against the truth, llvmpipe's, the truth's, the derivative maps), the Pareto
 // plots (plots/VIEW.png, drawn by python3-matplotlib where it is installed) and report.html,
 // which holds every image and plot itself.
@@ -18,6 +19,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "study/study_modes.h"
 #include "study/study_views.h"
@@ -34,6 +37,7 @@ struct Request {
     int truth = 32;                  // samples per pixel along each axis for the truth
     int repeat = 5, threads = 2;
     std::optional<double> time;      // the `time` uniform; default: the scene's
+    glm::dvec3 offset{0.0};          // added to the shaders' coordinates (stability.h)
     bool reference = true;           // measure against llvmpipe
     bool derivative_maps = true;     // map the inputs' derivatives under each rule (derivative_maps.h)
     std::filesystem::path output;

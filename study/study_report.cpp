@@ -90,6 +90,28 @@ std::string draw_plots(const fs::path& root) {
     return {};
 }
 
+// Float against double, and the undefined cases, on one view.
+std::string stability_section(const fs::path& root, const Row& s, const Row* view) {
+    std::ostringstream out;
+    out << "<h3>Numerical stability</h3>\n<p>";
+    if (view) out << "Coordinates offset by (" << escape(view->at("offset")) << "), time " << escape(view->at("time")) << ". ";
+    out << "The fine rule's float image against its double one: RMS " << format("%.2e", value(s, "rms_float_vs_double"))
+        << ", max " << format("%.3f", value(s, "max_float_vs_double")) << ", " << escape(s.at("over_1_255")) << " of "
+        << escape(s.at("pixels")) << " pixels more than 1/255 apart (heat map full scale 8/255). ";
+    if (s.at("undefined_pixels").empty()) {
+        out << "Undefined cases not checked: " << escape(s.at("undefined_note")) << ".</p>\n";
+    } else {
+        out << "Undefined GLSL cases the colour depends on, in " << escape(s.at("undefined_pixels"))
+            << " pixels: NaN produced " << escape(s.at("nan")) << ", division by zero " << escape(s.at("division_by_zero"))
+            << ", a built-in outside its domain " << escape(s.at("domain"))
+            << " (the mask: red NaN, green division by zero, blue outside the domain).</p>\n";
+    }
+    out << "<div>" << figure(root, s.at("float_image"), "float") << figure(root, s.at("double_image"), "double")
+        << figure(root, s.at("heat_image"), "|float - double|") << figure(root, s.at("mask_image"), "undefined cases")
+        << "</div>\n";
+    return out.str();
+}
+
 // The inputs' derivatives under each rule against the analytic ones: a table, then per input
 // the analytic map and each rule's map and heat map.
 std::string derivative_section(const fs::path& root, const std::vector<Row>& rows) {
@@ -154,6 +176,10 @@ void write_report(const fs::path& root) {
         }
     }
     const std::string no_plots = draw_plots(root);
+    std::map<std::pair<std::string, std::string>, Row> stable;
+    if (fs::exists(root / "stability.csv")) {
+        for (Row& st : read_csv(root / "stability.csv")) stable[{st.at("shader"), st.at("view")}] = std::move(st);
+    }
     std::map<std::pair<std::string, std::string>, std::vector<Row>> maps;
     if (fs::exists(root / "derivatives.csv")) {
         for (Row& d : read_csv(root / "derivatives.csv")) maps[{d.at("shader"), d.at("view")}].push_back(std::move(d));
@@ -211,6 +237,7 @@ void write_report(const fs::path& root) {
                                         fs::path(gl).stem().string().rfind('-') + 1));
         }
         out << "</div>\n";
+        if (stable.count(key)) out << stability_section(root, stable[key], v);
         out << derivative_section(root, maps[key]);
         for (const Row* r : rs) {
             out << "<div><b>" << escape(r->at("mode")) << "</b><br>" << figure(root, r->at("image"), "quadshade")

@@ -6,6 +6,8 @@
 #              report with its images in it
 #   plugin     a plugin's shader (PLUGIN), one view, one mode
 #   glsl       a user's .frag (examples/my-shader/my_stripes.frag), one view, two modes
+#   stability  float against double with the coordinates far from the origin (--offset), and the
+#              undefined cases a probe meets, marked per pixel
 #   refused    bad usage and bad input: a clear message, a non-zero exit, no report
 # The report is checked in headless Chromium where it is installed (every image loaded).
 set -u
@@ -89,6 +91,22 @@ glsl)
     below "$(field "$csv" '^my_stripes.frag,minified,dual2,' rms_vs_truth)" \
         "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_truth)" || fail "dual2 is not closer to the truth than fine"
     check_report "$out" 5
+    ;;
+stability)
+    tiny="--views camera --modes fine --no-reference --no-derivative-maps --time 1000"
+    "$qs" study "$plane" --shader dots_aa $tiny $small -o "$out/near" || fail "exit $?"
+    "$qs" study "$plane" --shader dots_aa $tiny $small --offset 100000,100000,0 -o "$out/far" || fail "exit $?"
+    "$qs" study "$plane" --shader float_env_probe $tiny $small -o "$out/probe" || fail "exit $?"
+    grep -q ',100000 100000 0,1000$' "$out/far/views.csv" || fail "views.csv does not record the offset and the time"
+    below "$(field "$out/near/stability.csv" '^dots_aa,camera,' rms_float_vs_double)" 1e-4 || fail "float departs near the origin"
+    below 0.01 "$(field "$out/far/stability.csv" '^dots_aa,camera,' rms_float_vs_double)" ||
+        fail "float does not depart from double 100000 from the origin"
+    below 0 "$(field "$out/far/stability.csv" '^dots_aa,camera,' over_1_255)" || fail "no pixel counted over 1/255"
+    below 0 "$(field "$out/probe/stability.csv" '^float_env_probe,camera,' nan)" || fail "the probe's NaNs are not marked"
+    below 0 "$(field "$out/probe/stability.csv" '^float_env_probe,camera,' division_by_zero)" ||
+        fail "the probe's divisions by zero are not marked"
+    [ -s "$out/probe/images/float_env_probe-camera/undefined.png" ] || fail "no undefined-case mask"
+    grep -q 'Undefined GLSL cases the colour depends on' "$out/probe/report.html" || fail "the report says nothing of them"
     ;;
 refused)
     expect=$src/tests/check/expect_exit.sh
