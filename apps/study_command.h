@@ -16,9 +16,12 @@ struct StudyArgs {
     std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
     std::vector<std::string> plugins;
     bool no_reference = false, no_derivative_maps = false;
+    std::string study_file;         // --study FILE: one study per line
+    const CLI::App* app = nullptr;  // what parsed these (which options were given)
 };
 
-void add_study_options(CLI::App& cmd, StudyArgs& a);
+// The options of `quadshade study`; those of a study file's line when `line` (no -o, no --study).
+void add_study_options(CLI::App& cmd, StudyArgs& a, bool line = false);
 int cmd_study(StudyArgs& a);
 
 }  // namespace qs::app

@@ -8,6 +8,9 @@
 #   glsl       a user's .frag (examples/my-shader/my_stripes.frag), one view, two modes
 #   stability  float against double with the coordinates far from the origin (--offset), and the
 #              undefined cases a probe meets, marked per pixel
+#   bench      bench/study.txt, bench/run-study's study, through `quadshade study --study` with
+#              its rows in every case, and bench/results.py rewriting docs/results.md's error
+#              table (on a copy) from it
 #   refused    bad usage and bad input: a clear message, a non-zero exit, no report
 # The report is checked in headless Chromium where it is installed (every image loaded).
 set -u
@@ -108,7 +111,23 @@ stability)
     [ -s "$out/probe/images/float_env_probe-camera/undefined.png" ] || fail "no undefined-case mask"
     grep -q 'Undefined GLSL cases the colour depends on' "$out/probe/report.html" || fail "the report says nothing of them"
     ;;
+bench)
+    "$qs" study --study "$src/bench/study.txt" -o "$out" --size 16 --truth 2 --repeat 1 --modes fine,step,ss2x2 \
+        --no-reference --no-derivative-maps || fail "exit $?"
+    [ "$(tail -n +2 "$out/study.csv" | wc -l)" -eq 39 ] || fail "expected 39 rows (13 cases x 3 modes)"
+    [ "$(field "$out/study.csv" '^spots,camera,step,' variant)" = spots_step ] || fail "no spots row"
+    cp "$src/docs/results.md" "$out/results.md"
+    /usr/bin/python3 "$src/bench/results.py" "$out/no-build" "$out" "$out/results.md" > /dev/null 2>&1 ||
+        fail "results.py failed"
+    sed -n '/<!-- results:error -->/,/<!-- \/results -->/p' "$out/results.md" > "$out/error-table.md"
+    grep -q '^| case | fine | step | ss2x2 | Pareto front |$' "$out/error-table.md" || fail "the error table's header"
+    for row in "dots_aa magnified" "bricks_aa minified" "worley_tiles grazing" "halftone grazing" "spots camera"; do
+        grep -q "^| $row | " "$out/error-table.md" || fail "the error table has no row '$row'"
+    done
+    ;;
 refused)
+    printf '%s\n' "# one good line, one bad" "plane.gltf --shader dots_aa" "plane.gltf --shader dots_aa --sharpness 3" \
+        > "$out/bad-study.txt"
     expect=$src/tests/check/expect_exit.sh
     "$expect" 2 'name the shader with --shader NAME or --glsl FRAG' "$qs" study "$plane" -o "$out/a" &&
     "$expect" 2 "no view 'sideways'" "$qs" study "$plane" --shader dots_aa --views sideways -o "$out/b" &&
@@ -116,7 +135,10 @@ refused)
     "$expect" 2 "no mode 'step'" "$qs" study "$plane" --shader dots_aa --modes step -o "$out/d" &&
     "$expect" 1 "unknown shader 'no_such_shader'" "$qs" study "$plane" --shader no_such_shader -o "$out/e" &&
     "$expect" 2 'exists and is not a folder' "$qs" study "$plane" --shader dots_aa -o "$plane" &&
-    "$expect" 1 'no_such.gltf' "$qs" study "$src/no_such.gltf" --shader dots_aa -o "$out/f" || fail "not refused as expected"
+    "$expect" 1 'no_such.gltf' "$qs" study "$src/no_such.gltf" --shader dots_aa -o "$out/f" &&
+    "$expect" 2 'bad-study.txt:3: .*--sharpness' "$qs" study --study "$out/bad-study.txt" -o "$out/g" &&
+    "$expect" 2 '--study: --shader goes on the file' "$qs" study --study "$out/bad-study.txt" --shader dots_aa -o "$out/h" ||
+        fail "not refused as expected"
     ls "$out"/*/report.html 2> /dev/null && fail "a refused study wrote a report"
     ;;
 *) fail "unknown case" ;;
