@@ -20,7 +20,8 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
     add_plugin_option(cmd, a.plugins);
     if (!line) {
         cmd.add_option("-o,--output", a.output, "the folder for study.csv, the images, the plots and report.html")
-            ->required()->option_text("DIR");
+            ->required()
+            ->option_text("DIR");
         cmd.add_option("--study", a.study_file,
                        "a study file: on each line a scene and its options as this command\ntakes them (paths relative "
                        "to the file; # starts a comment, \\ at\nthe end goes on on the next line); the options "
@@ -29,33 +30,52 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
     }
     cmd.add_option("--unfiltered", r.shaders.unfiltered,
                    "the shader's unfiltered variant: the truth and the supersampled modes\nrender it "
-                   "(default: the shader itself)")->option_text("NAME");
+                   "(default: the shader itself)")
+        ->option_text("NAME");
     cmd.add_option("--alternative", r.shaders.alternative, "a variant filtered another way, measured as a mode")
         ->option_text("NAME");
     cmd.add_option("--alternative-mode", r.shaders.alternative_mode, "that mode's name (default: alternative)")
         ->option_text("MODE");
-    cmd.add_option("--views", r.views, "camera, magnified, minified, grazing (default: all four)")
-        ->delimiter(',')->option_text("VIEW,...");
+    cmd.add_option("--views", r.views,
+                   "camera, magnified, minified, grazing (default: all four), or\nscene files whose camera is a view "
+                   "(CAMERA.gltf)")
+        ->delimiter(',')
+        ->option_text("VIEW,...");
     cmd.add_option("--modes", r.modes,
                    "fine, coarse-lower, coarse-upper, dual2, raycast-quads,\nray-differentials, double, step, ss2x2, "
                    "ss4x4, ss8x8, the\nalternative's (default: all the shader has)")
-        ->delimiter(',')->option_text("MODE,...");
+        ->delimiter(',')
+        ->option_text("MODE,...");
+    cmd.add_option("--label", r.label, "the study's name in the CSV and the report (default: the shader's)")
+        ->option_text("NAME");
     cmd.add_option("--keep-objects", r.keep_shader, "draw only the objects whose material names this shader")
         ->option_text("NAME");
     cmd.add_option("--size", r.size, "the image's longer side in pixels, the scene's aspect kept (default 256)")
-        ->check(CLI::Range(8, 4096))->option_text("N");
+        ->check(CLI::Range(8, 4096))
+        ->option_text("N");
     cmd.add_option("--truth", r.truth, "the truth's samples per pixel along each axis (default 32)")
-        ->check(CLI::Range(2, 64))->option_text("K");
+        ->check(CLI::Range(2, 64))
+        ->option_text("K");
     cmd.add_option("--repeat", r.repeat, "timed frames per mode, after 3 untimed ones (default 5)")
-        ->check(CLI::Range(1, 1000))->option_text("N");
+        ->check(CLI::Range(1, 1000))
+        ->option_text("N");
     cmd.add_option("--threads", r.threads, "worker threads, quadshade's and llvmpipe's (default 2)")
-        ->check(CLI::Range(1, 1024))->option_text("N");
-    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+        ->check(CLI::Range(1, 1024))
+        ->option_text("N");
+    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")
+        ->check(kFinite)
+        ->option_text("T");
     cmd.add_option_function<std::vector<double>>(
-           "--offset", [&r](const std::vector<double>& v) { r.offset = {v[0], v[1], v[2]}; },
+           "--offset",
+           [&r](const std::vector<double>& v) {
+               r.offset = {v[0], v[1], v[2]};
+           },
            "add X,Y,Z to the shader's coordinates (TEXCOORD_0's x, y and the\nobject positions; the geometry "
            "stays where it was): the pattern far\nfrom its origin")
-        ->delimiter(',')->expected(3)->check(kFinite)->option_text("X,Y,Z");
+        ->delimiter(',')
+        ->expected(3)
+        ->check(kFinite)
+        ->option_text("X,Y,Z");
     cmd.add_flag("--no-reference", a.no_reference, "do not render llvmpipe's images (no OSMesa needed)");
     cmd.add_flag("--no-derivative-maps", a.no_derivative_maps, "do not map the inputs' derivatives under each rule");
 }
@@ -69,10 +89,14 @@ study::Request prepared(StudyArgs& a, const fs::path& base) {
         if (!p.empty() && fs::path(p).is_relative()) p = (base / p).string();
     };
     resolve(a.scene), resolve(a.glsl), resolve(a.vertex_glsl);
+    for (std::string& view : r.views) {
+        if (view.ends_with(".gltf") || view.ends_with(".glb")) resolve(view);  // a camera's scene file
+    }
     use_glsl_options(a.glsl, a.vertex_glsl, r.shaders.shader);
     if (a.scene.empty()) throw UsageError("study: give the scene (or a study file with --study)");
     if (r.shaders.shader.empty()) throw UsageError("study: name the shader with --shader NAME or --glsl FRAG");
-    if (!r.shaders.alternative.empty() && r.shaders.alternative_mode.empty()) r.shaders.alternative_mode = "alternative";
+    if (!r.shaders.alternative.empty() && r.shaders.alternative_mode.empty())
+        r.shaders.alternative_mode = "alternative";
     if (r.shaders.alternative.empty() && !r.shaders.alternative_mode.empty()) {
         throw UsageError("--alternative-mode: name the variant with --alternative");
     }

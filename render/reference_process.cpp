@@ -27,8 +27,10 @@ fs::path executable_folder() {
 fs::path reference_executable(const std::string& command) {
     const fs::path reference = executable_folder() / "quadshade-reference";
     if (::access(reference.c_str(), X_OK) != 0) {
-        throw std::runtime_error(reference.string() + ": quadshade-reference is not beside quadshade (built with "
-                                 "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); " + command + " needs it");
+        throw std::runtime_error(reference.string() +
+                                 ": quadshade-reference is not beside quadshade (built with "
+                                 "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); " +
+                                 command + " needs it");
     }
     return reference;
 }

@@ -6,6 +6,7 @@
 #include "render/frame_image.h"
 #include "render/scene_render.h"
 #include "shading/catalogue.h"
+#include "study/file_name.h"
 #include "study/input_derivatives.h"
 
 namespace qs::study {
@@ -21,17 +22,10 @@ std::string map_program(const Program& shader, int v) {
     return name;
 }
 
-std::string file_part(std::string s) {
-    for (char& c : s) {
-        if (!std::isalnum((unsigned char)c) && c != '.' && c != '-' && c != '_') c = '_';
-    }
-    return s;
-}
-
 }  // namespace
 
-std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::string& shader, int threads, const fs::path& dir,
-                                           const std::string& relative) {
+std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::string& shader, int threads,
+                                           const fs::path& dir, const std::string& relative) {
     const Program* program = find_program(shader);
     if (!program) throw std::runtime_error("unknown shader '" + shader + "'");
     Scene scene = original;
@@ -39,7 +33,9 @@ std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::str
     const struct {
         const char* name;
         Derivatives rule;
-    } rules[] = {{"fine", Derivatives::Fine}, {"coarse-lower", Derivatives::CoarseLower}, {"coarse-upper", Derivatives::CoarseUpper}};
+    } rules[] = {{"fine", Derivatives::Fine},
+                 {"coarse-lower", Derivatives::CoarseLower},
+                 {"coarse-upper", Derivatives::CoarseUpper}};
     std::vector<DerivativeRow> rows;
     for (int v = 0; v < program->info().needs.varyings; ++v) {
         if (program->info().needs.flat_varyings & (1u << v)) continue;
@@ -74,7 +70,7 @@ std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::str
             }
             return out;
         };
-        const std::string stem = "d-" + file_part(input);
+        const std::string stem = "d-" + file_name(input);
         write_image(dir / (stem + "-analytic.png"), shown(exact));
         for (const auto& r : rules) {
             const Image map = render(r.rule);

@@ -14,7 +14,7 @@ namespace qs::study {
 struct DerivativeRow {
     std::string input, rule;
     double rms_dx = 0, max_dx = 0, rms_dy = 0, max_dy = 0;  // |rule - analytic|, per pixel
-    double scale = 0;            // the analytic |(dx, dy)|'s RMS: what the errors are relative to
+    double scale = 0;  // the analytic |(dx, dy)|'s RMS: what the errors are relative to
     std::size_t covered = 0;
     std::string map_image, heat_image, analytic_image;  // relative to the study's folder
 };

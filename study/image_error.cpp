@@ -24,8 +24,9 @@ Image box_filter(std::span<const float> rgba, int width, int height, int k) {
 
 Error error_of(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height) {
-        throw std::invalid_argument("images of different sizes: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                                    " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
+        throw std::invalid_argument("images of different sizes: " + std::to_string(a.width) + "x" +
+                                    std::to_string(a.height) + " and " + std::to_string(b.width) + "x" +
+                                    std::to_string(b.height));
     }
     // NaN as 0, as unorm8 (core/framebuffer.h) stores it.
     auto stored = [](float v) { return std::isnan(v) ? 0.0 : std::clamp(double(v), 0.0, 1.0); };

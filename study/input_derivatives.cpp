@@ -27,14 +27,18 @@ public:
         }
         switch (mode.derivatives) {
             case Derivatives::None:
-            case Derivatives::Fine: return run<Quads<float, kBatchQuads, DerivativeRule::Fine>>(in, out);
-            case Derivatives::CoarseLower: return run<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>(in, out);
-            case Derivatives::CoarseUpper: return run<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>(in, out);
-            case Derivatives::Analytic: return run<Dual2<Pixels<float, kBatchLanes>>>(in, out);
+            case Derivatives::Fine:
+                return run<Quads<float, kBatchQuads, DerivativeRule::Fine>>(in, out);
+            case Derivatives::CoarseLower:
+                return run<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>(in, out);
+            case Derivatives::CoarseUpper:
+                return run<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>(in, out);
+            case Derivatives::Analytic:
+                return run<Dual2<Pixels<float, kBatchLanes>>>(in, out);
         }
     }
-    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u, ColorBatch& out_a,
-                    ColorBatch& out_b) const override {
+    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u,
+                    ColorBatch& out_a, ColorBatch& out_b) const override {
         shade(mode, a, u, out_a);
         shade(mode, b, u, out_b);
     }
@@ -75,7 +79,8 @@ std::string varying_name(const ShaderInfo& info, int v) {
         case Coordinates::Object3D:
             if (v < 3) return std::string("P.") + "xyz"[v];
             break;
-        case Coordinates::None: break;
+        case Coordinates::None:
+            break;
     }
     return "varying " + std::to_string(v);
 }

@@ -60,7 +60,8 @@ void offset_coordinates(Scene& scene, const glm::dvec3& offset) {
     for (Mesh& m : scene.meshes) {
         for (Vertex& v : m.vertices) v.position += o, v.texcoord += glm::vec2(o);
     }
-    for (Object& object : scene.objects) object.world_from_object = object.world_from_object * glm::translate(glm::mat4(1.0f), -o);
+    for (Object& object : scene.objects)
+        object.world_from_object = object.world_from_object * glm::translate(glm::mat4(1.0f), -o);
 }
 
 }  // namespace qs::study

@@ -14,11 +14,11 @@
 namespace qs::study {
 
 struct Stability {
-    double rms = 0, max = 0;     // float against double over RGB in [0, 1]
-    std::size_t over_1 = 0;      // pixels more than 1/255 apart
-    bool checked = false;        // the undefined cases were checked
+    double rms = 0, max = 0;  // float against double over RGB in [0, 1]
+    std::size_t over_1 = 0;   // pixels more than 1/255 apart
+    bool checked = false;     // the undefined cases were checked
     UndefinedCounts undefined;
-    std::string note;            // why they were not
+    std::string note;                                               // why they were not
     std::string float_image, double_image, heat_image, mask_image;  // relative to the study's folder
 };
 

@@ -12,10 +12,11 @@
 #include "render/frame_image.h"
 #include "render/reference_process.h"
 #include "scenes/gltf.h"
+#include "scenes/image_io.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
-#include "scenes/image_io.h"
 #include "study/derivative_maps.h"
+#include "study/file_name.h"
 #include "study/image_error.h"
 #include "study/stability.h"
 #include "study/study_csv.h"
@@ -33,16 +34,6 @@ constexpr bool kRaycast = true;
 constexpr bool kRaycast = false;
 #endif
 
-// A name as a file name: letters, digits, '.', '-' and '_' kept, anything else '_'.
-std::string file_name(const std::string& name) {
-    std::string s = name;
-    for (char& c : s) {
-        if (!std::isalnum((unsigned char)c) && c != '.' && c != '-' && c != '_') c = '_';
-    }
-    if (s.empty() || s[0] == '.') s.insert(s.begin(), '_');
-    return s;
-}
-
 // Writes a view's scene for the reference, its texture files copied beside it (a scene may only
 // read files in its own folder).
 void save_view(const Scene& scene, const fs::path& file) {
@@ -51,7 +42,7 @@ void save_view(const Scene& scene, const fs::path& file) {
         ImageSource& image = copy.textures[i].image;
         if (image.kind != ImageSource::Kind::File || image.file.empty()) continue;
         const fs::path local = file.parent_path() / (file.stem().string() + "-" + std::to_string(i) + "-" +
-                                                      file_name(image.file.filename().string()));
+                                                     file_name(image.file.filename().string()));
         fs::copy_file(image.file, local, fs::copy_options::overwrite_existing);
         image.file = local;
     }
@@ -68,8 +59,8 @@ public:
 
     void run(bool append) {
         const std::vector<Mode> modes = chosen_modes();
-        std::vector<const View*> views;
-        for (const std::string& v : r_.views) views.push_back(&generated_view(v));
+        std::vector<View> views;
+        for (const std::string& v : r_.views) views.push_back(view_named(v));
         if (views.empty()) throw std::invalid_argument("no view to study");
         for (const std::string& name : {r_.shaders.shader, r_.shaders.unfiltered, r_.shaders.alternative}) {
             if (!name.empty() && !find_program(name)) {
@@ -96,7 +87,8 @@ public:
             derivatives_csv << csv_line(kDerivativeColumns);
         }
         std::size_t total = views.size() * (modes.size() + 1), done = 0;
-        for (const View* v : views) {
+        for (const View& view : views) {
+            const View* v = &view;
             const std::string id = file_name(label) + "-" + v->name;
             const fs::path dir = r_.output / "images" / id;
             fs::create_directories(dir);
@@ -114,29 +106,31 @@ public:
             size_for(scene);
             // The reference reads the view from a file, written unless the scene is as loaded.
             fs::path scene_file = r_.scene;
-            if (r_.reference && (v->zoom != 1.0f || v->texcoord_scale != 1.0f || v->grazing || offset ||
-                                 !r_.keep_shader.empty())) {
+            if (r_.reference && (v->changes_scene() || offset || !r_.keep_shader.empty())) {
                 fs::create_directories(r_.output / "views");
                 scene_file = r_.output / "views" / (id + ".gltf");
                 save_view(scene, scene_file);
             }
             const std::string& truth_shader = r_.shaders.unfiltered.empty() ? r_.shaders.shader : r_.shaders.unfiltered;
-            const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" + std::to_string(r_.truth) +
-                                           " samples per pixel in double, box-filtered";
-            views_csv << csv_line({label, v->name, v->description, std::to_string(scene.width), std::to_string(scene.height),
-                                   truth_text, number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
+            const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" +
+                                           std::to_string(r_.truth) + " samples per pixel in double, box-filtered";
+            views_csv << csv_line({label, v->name, v->description, std::to_string(scene.width),
+                                   std::to_string(scene.height), truth_text,
+                                   number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
                                    r_.time ? number(*r_.time) : number(scene.time)});
             progress(done, total, id + ": float against double, undefined cases");
             const Stability st = stability(scene, r_.shaders.shader, r_.time, r_.threads, dir, "images/" + id);
             const auto& u = st.undefined;
-            stability_csv << csv_line({label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
-                                       std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
-                                       st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
-                                       st.checked ? std::to_string(u.per_case[1]) : "", st.checked ? std::to_string(u.per_case[2]) : "",
-                                       st.note, st.float_image, st.double_image, st.heat_image, st.mask_image});
+            stability_csv << csv_line(
+                {label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
+                 std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
+                 st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
+                 st.checked ? std::to_string(u.per_case[1]) : "", st.checked ? std::to_string(u.per_case[2]) : "",
+                 st.note, st.float_image, st.double_image, st.heat_image, st.mask_image});
             if (r_.derivative_maps) {
                 progress(done, total, id + ": derivative maps");
-                for (const DerivativeRow& d : derivative_maps(scene, r_.shaders.shader, r_.threads, dir, "images/" + id)) {
+                for (const DerivativeRow& d :
+                     derivative_maps(scene, r_.shaders.shader, r_.threads, dir, "images/" + id)) {
                     derivatives_csv << csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
                                                  number(d.rms_dy), number(d.max_dy), number(d.scale),
                                                  std::to_string(d.covered), d.map_image, d.heat_image,
@@ -188,8 +182,8 @@ private:
         for (const std::string& name : r_.modes) {
             auto it = std::find_if(all.begin(), all.end(), [&](const Mode& m) { return m.name == name; });
             if (it == all.end()) {
-                throw std::invalid_argument("no mode '" + name + "' for this shader (its modes: " +
-                                            mode_names(r_.shaders, kRaycast) + ")");
+                throw std::invalid_argument("no mode '" + name +
+                                            "' for this shader (its modes: " + mode_names(r_.shaders, kRaycast) + ")");
             }
             chosen.push_back(*it);
         }
@@ -255,10 +249,20 @@ private:
     Image reference(const fs::path& scene_file, const Scene& scene, const Mode& m, const fs::path& dir) const {
         const int k = m.supersample;
         const fs::path image = dir / "reference.exr", log = dir / "reference.log";
-        std::vector<std::string> argv = {reference_.string(), scene_file.string(), "-o", image.string(), "--glsl",
-                                         (r_.output / "glsl").string(), "--driver", "llvmpipe", "--shader", m.shader,
-                                         "--size", std::to_string(scene.width * k) + "x" + std::to_string(scene.height * k),
-                                         "--threads", std::to_string(r_.threads)};
+        std::vector<std::string> argv = {reference_.string(),
+                                         scene_file.string(),
+                                         "-o",
+                                         image.string(),
+                                         "--glsl",
+                                         (r_.output / "glsl").string(),
+                                         "--driver",
+                                         "llvmpipe",
+                                         "--shader",
+                                         m.shader,
+                                         "--size",
+                                         std::to_string(scene.width * k) + "x" + std::to_string(scene.height * k),
+                                         "--threads",
+                                         std::to_string(r_.threads)};
         if (r_.time) argv.insert(argv.end(), {"--time", number(*r_.time)});
         if (const int status = run_process(argv, log); status != 0) {
             throw std::runtime_error("quadshade-reference failed on " + scene_file.string() + " with " + m.shader +
@@ -287,7 +291,8 @@ private:
                 const int y = (fb.first_row + row) / k;
                 const float* in = &fb.rgba[std::size_t(row) * std::size_t(fb.width) * 4];
                 for (int x = 0; x < fb.width; ++x) {
-                    for (int c = 0; c < 4; ++c) sum[(std::size_t(y) * std::size_t(scene.width) + std::size_t(x / k)) * 4 + c] += in[x * 4 + c];
+                    for (int c = 0; c < 4; ++c)
+                        sum[(std::size_t(y) * std::size_t(scene.width) + std::size_t(x / k)) * 4 + c] += in[x * 4 + c];
                 }
             }
         }
@@ -310,7 +315,8 @@ private:
 }  // namespace
 
 void run_study(const Request& request, bool append) {
-    if (request.size < 1 || request.truth < 1 || request.repeat < 1) throw std::invalid_argument("size, truth and repeat must be positive");
+    if (request.size < 1 || request.truth < 1 || request.repeat < 1)
+        throw std::invalid_argument("size, truth and repeat must be positive");
     Study(request).run(append);
 }
 

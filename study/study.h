@@ -10,10 +10,10 @@
 // the analytic ones (derivative_maps.h), and measures its float image against its double one
 // and marks the undefined GLSL cases it meets (stability.h).
 // It writes, in the output folder: study.csv (one row per view and mode), views.csv,
-// derivatives.csv (one row per view, input and rule), stability.csv (one per view), the images (images/CASE/MODE.png, its heat
-// map against the truth, llvmpipe's, the truth's, the derivative maps), the Pareto
-// plots (plots/VIEW.png, drawn by python3-matplotlib where it is installed) and report.html,
-// which holds every image and plot itself.
+// derivatives.csv (one row per view, input and rule), stability.csv (one per view), the images
+// (images/CASE/MODE.png, its heat map against the truth, llvmpipe's, the truth's, the derivative
+// maps and the stability images), the Pareto plots (plots/CASE.png, drawn by python3-matplotlib
+// where it is installed) and report.html, which holds every image and plot itself.
 
 #include <filesystem>
 #include <optional>
@@ -36,10 +36,10 @@ struct Request {
     int size = 256;                  // the image's longer side; the scene's aspect is kept
     int truth = 32;                  // samples per pixel along each axis for the truth
     int repeat = 5, threads = 2;
-    std::optional<double> time;      // the `time` uniform; default: the scene's
-    glm::dvec3 offset{0.0};          // added to the shaders' coordinates (stability.h)
-    bool reference = true;           // measure against llvmpipe
-    bool derivative_maps = true;     // map the inputs' derivatives under each rule (derivative_maps.h)
+    std::optional<double> time;   // the `time` uniform; default: the scene's
+    glm::dvec3 offset{0.0};       // added to the shaders' coordinates (stability.h)
+    bool reference = true;        // measure against llvmpipe
+    bool derivative_maps = true;  // map the inputs' derivatives under each rule (derivative_maps.h)
     std::filesystem::path output;
     // The case's name in the CSV's `shader` column and the report (default: the shader's).
     std::string label;

@@ -43,9 +43,12 @@ std::vector<std::vector<std::string>> records(const std::string& text, const std
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
         if (quoted) {
-            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') field += '"', ++i;
-            else if (c == '"') quoted = false;
-            else field += c;
+            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"')
+                field += '"', ++i;
+            else if (c == '"')
+                quoted = false;
+            else
+                field += c;
         } else if (c == '"') {
             quoted = any = true;
         } else if (c == ',') {
@@ -74,8 +77,9 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::
     std::vector<std::map<std::string, std::string>> out;
     for (std::size_t r = 1; r < rows.size(); ++r) {
         if (rows[r].size() != rows[0].size()) {
-            throw std::runtime_error(file.string() + ": record " + std::to_string(r + 1) + " has " + std::to_string(rows[r].size()) +
-                                     " fields, the header " + std::to_string(rows[0].size()));
+            throw std::runtime_error(file.string() + ": record " + std::to_string(r + 1) + " has " +
+                                     std::to_string(rows[r].size()) + " fields, the header " +
+                                     std::to_string(rows[0].size()));
         }
         std::map<std::string, std::string> row;
         for (std::size_t c = 0; c < rows[0].size(); ++c) row[rows[0][c]] = rows[r][c];

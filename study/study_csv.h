@@ -10,19 +10,37 @@
 namespace qs::study {
 
 // study.csv's columns, in order.
-inline const std::vector<std::string> kStudyColumns = {
-    "shader", "view", "mode", "group", "variant", "ms", "ms_min", "ms_max", "rms_vs_llvmpipe", "max_vs_llvmpipe",
-    "rms_vs_truth", "max_vs_truth", "width", "height", "image", "llvmpipe_image", "truth_image", "heat_image", "truth"};
+inline const std::vector<std::string> kStudyColumns = {"shader",
+                                                       "view",
+                                                       "mode",
+                                                       "group",
+                                                       "variant",
+                                                       "ms",
+                                                       "ms_min",
+                                                       "ms_max",
+                                                       "rms_vs_llvmpipe",
+                                                       "max_vs_llvmpipe",
+                                                       "rms_vs_truth",
+                                                       "max_vs_truth",
+                                                       "width",
+                                                       "height",
+                                                       "image",
+                                                       "llvmpipe_image",
+                                                       "truth_image",
+                                                       "heat_image",
+                                                       "truth"};
 
 // derivatives.csv's columns (derivative_maps.h).
 inline const std::vector<std::string> kDerivativeColumns = {
-    "shader", "view", "input", "rule", "rms_dx", "max_dx", "rms_dy", "max_dy", "analytic_rms", "covered", "map_image",
-    "heat_image", "analytic_image"};
+    "shader", "view",         "input",   "rule",      "rms_dx",     "max_dx",        "rms_dy",
+    "max_dy", "analytic_rms", "covered", "map_image", "heat_image", "analytic_image"};
 
 // stability.csv's columns (stability.h).
 inline const std::vector<std::string> kStabilityColumns = {
-    "shader", "view", "rms_float_vs_double", "max_float_vs_double", "over_1_255", "pixels", "undefined_pixels", "nan",
-    "division_by_zero", "domain", "undefined_note", "float_image", "double_image", "heat_image", "mask_image"};
+    "shader",           "view",       "rms_float_vs_double", "max_float_vs_double",
+    "over_1_255",       "pixels",     "undefined_pixels",    "nan",
+    "division_by_zero", "domain",     "undefined_note",      "float_image",
+    "double_image",     "heat_image", "mask_image"};
 
 std::string csv_line(const std::vector<std::string>& fields);
 std::string number(double v);  // "nan" for NaN

@@ -26,12 +26,23 @@ std::string escape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -50,7 +61,8 @@ std::string format(const char* f, double v) {
 // faster mode's is no improvement.
 std::vector<std::string> pareto_front(std::vector<const Row*> rows) {
     std::sort(rows.begin(), rows.end(), [](const Row* a, const Row* b) {
-        return std::pair(value(*a, "ms"), value(*a, "rms_vs_truth")) < std::pair(value(*b, "ms"), value(*b, "rms_vs_truth"));
+        return std::pair(value(*a, "ms"), value(*a, "rms_vs_truth")) <
+               std::pair(value(*b, "ms"), value(*b, "rms_vs_truth"));
     });
     std::vector<std::string> front;
     double best = INFINITY;
@@ -71,8 +83,8 @@ std::string data_uri(const fs::path& file) {
 
 std::string figure(const fs::path& root, const std::string& relative, const std::string& caption) {
     if (relative.empty()) return {};
-    return "<figure><img class='px' src='" + data_uri(root / relative) + "' alt='" + escape(caption) + "'><figcaption>" +
-           escape(caption) + "</figcaption></figure>";
+    return "<figure><img class='px' src='" + data_uri(root / relative) + "' alt='" + escape(caption) +
+           "'><figcaption>" + escape(caption) + "</figcaption></figure>";
 }
 
 // Draws plots/CASE.png from each plots/CASE.csv with python3-matplotlib; returns why not, or empty.
@@ -86,7 +98,8 @@ std::string draw_plots(const fs::path& root) {
     const std::string text = read_text(log);
     fs::remove(log);
     if (status == 3) return "no plots: " + text;
-    if (status != 0) throw std::runtime_error(script.string() + " failed (exit " + std::to_string(status) + "): " + text);
+    if (status != 0)
+        throw std::runtime_error(script.string() + " failed (exit " + std::to_string(status) + "): " + text);
     return {};
 }
 
@@ -94,7 +107,9 @@ std::string draw_plots(const fs::path& root) {
 std::string stability_section(const fs::path& root, const Row& s, const Row* view) {
     std::ostringstream out;
     out << "<h3>Numerical stability</h3>\n<p>";
-    if (view) out << "Coordinates offset by (" << escape(view->at("offset")) << "), time " << escape(view->at("time")) << ". ";
+    if (view)
+        out << "Coordinates offset by (" << escape(view->at("offset")) << "), time " << escape(view->at("time"))
+            << ". ";
     out << "The fine rule's float image against its double one: RMS " << format("%.2e", value(s, "rms_float_vs_double"))
         << ", max " << format("%.3f", value(s, "max_float_vs_double")) << ", " << escape(s.at("over_1_255")) << " of "
         << escape(s.at("pixels")) << " pixels more than 1/255 apart (heat map full scale 8/255). ";
@@ -102,8 +117,8 @@ std::string stability_section(const fs::path& root, const Row& s, const Row* vie
         out << "Undefined cases not checked: " << escape(s.at("undefined_note")) << ".</p>\n";
     } else {
         out << "Undefined GLSL cases the colour depends on, in " << escape(s.at("undefined_pixels"))
-            << " pixels: NaN produced " << escape(s.at("nan")) << ", division by zero " << escape(s.at("division_by_zero"))
-            << ", a built-in outside its domain " << escape(s.at("domain"))
+            << " pixels: NaN produced " << escape(s.at("nan")) << ", division by zero "
+            << escape(s.at("division_by_zero")) << ", a built-in outside its domain " << escape(s.at("domain"))
             << " (the mask: red NaN, green division by zero, blue outside the domain).</p>\n";
     }
     out << "<div>" << figure(root, s.at("float_image"), "float") << figure(root, s.at("double_image"), "double")
@@ -117,7 +132,8 @@ std::string stability_section(const fs::path& root, const Row& s, const Row* vie
 std::string derivative_section(const fs::path& root, const std::vector<Row>& rows) {
     if (rows.empty()) return {};
     std::ostringstream out;
-    out << "<h3>Derivative maps</h3>\n<p>dFdx and dFdy of each input under each quad rule against the analytic partials "
+    out << "<h3>Derivative maps</h3>\n<p>dFdx and dFdy of each input under each quad rule against the analytic "
+           "partials "
            "(Dual2), over the covered pixels; in brackets, relative to the RMS of the analytic gradient. Maps: dFdx "
            "red, dFdy green, mid-grey 0; heat maps full scale a quarter of the largest analytic derivative.</p>\n"
            "<table><tr><th>input</th><th>rule</th><th>RMS dFdx error</th><th>max dFdx error</th><th>RMS dFdy error</th>"
@@ -128,9 +144,9 @@ std::string derivative_section(const fs::path& root, const std::vector<Row>& row
             const double v = value(d, column);
             return format("%.2e", v) + (scale > 0 ? " (" + format("%.1e", v / scale) + ")" : "");
         };
-        out << "<tr><td class='l'>" << escape(d.at("input")) << "</td><td class='l'>" << escape(d.at("rule")) << "</td><td>"
-            << cell("rms_dx") << "</td><td>" << cell("max_dx") << "</td><td>" << cell("rms_dy") << "</td><td>"
-            << cell("max_dy") << "</td><td>" << format("%.2e", scale) << "</td></tr>\n";
+        out << "<tr><td class='l'>" << escape(d.at("input")) << "</td><td class='l'>" << escape(d.at("rule"))
+            << "</td><td>" << cell("rms_dx") << "</td><td>" << cell("max_dx") << "</td><td>" << cell("rms_dy")
+            << "</td><td>" << cell("max_dy") << "</td><td>" << format("%.2e", scale) << "</td></tr>\n";
     }
     out << "</table>\n";
     std::string input;
@@ -140,7 +156,8 @@ std::string derivative_section(const fs::path& root, const std::vector<Row>& row
             out << (&d == &rows.front() ? "" : "</div>") << "<div><b>" << escape(input) << "</b><br>"
                 << figure(root, d.at("analytic_image"), "analytic (Dual2)");
         }
-        out << figure(root, d.at("map_image"), d.at("rule")) << figure(root, d.at("heat_image"), "|" + d.at("rule") + " - analytic|");
+        out << figure(root, d.at("map_image"), d.at("rule"))
+            << figure(root, d.at("heat_image"), "|" + d.at("rule") + " - analytic|");
     }
     out << "</div>\n";
     return out.str();
@@ -171,8 +188,8 @@ void write_report(const fs::path& root) {
         points << csv_line({"case", "mode", "group", "ms", "rms_vs_truth", "front"});
         for (const Row* r : of_case[key]) {
             const bool on = std::count(fronts[key].begin(), fronts[key].end(), r->at("mode")) > 0;
-            points << csv_line({key.first + ", " + key.second, r->at("mode"), r->at("group"), r->at("ms"), r->at("rms_vs_truth"),
-                                on ? "1" : "0"});
+            points << csv_line({key.first + ", " + key.second, r->at("mode"), r->at("group"), r->at("ms"),
+                                r->at("rms_vs_truth"), on ? "1" : "0"});
         }
     }
     const std::string no_plots = draw_plots(root);
@@ -192,25 +209,30 @@ void write_report(const fs::path& root) {
            "tr.front td{background:#fde8e8}img.px{image-rendering:pixelated;width:256px}"
            "figure{display:inline-block;margin:2px}figcaption{font-size:11px;text-align:center}</style></head><body>\n"
            "<h1>quadshade study: error against run time</h1>\n"
-           "<p>Each mode renders the shader on each view, timed (median of the frames, their range in brackets), and is "
-           "measured over RGB in [0, 1] against the truth (each view says which: the shader's unfiltered variant where it "
-           "names one, else the shader itself, supersampled in double and box-filtered) and against OSMesa llvmpipe "
-           "running the same GLSL (supersampled modes: llvmpipe supersampled alike). Rows on the Pareto front (nothing is "
-           "both faster and more accurate) are shaded. Heat maps show |mode - truth|, full scale 0.25.</p>\n"
+           "<p>Each mode renders the shader on each view, timed (median of the frames, their range in brackets), "
+           "and is measured over RGB in [0, 1] against the truth (each view says which: the shader's unfiltered "
+           "variant where it names one, else the shader itself, supersampled in double and box-filtered) and "
+           "against OSMesa llvmpipe running the same GLSL (supersampled modes: llvmpipe supersampled alike). Rows "
+           "on the Pareto front (nothing is both faster and more accurate) are shaded. Heat maps show "
+           "|mode - truth|, full scale 0.25.</p>\n"
            "<p id='image-check'>images: not checked</p>\n<ul>";
     for (const auto& [shader, view] : cases) {
-        out << "<li><a href='#" << escape(plot_names[{shader, view}]) << "'>" << escape(shader) << ", " << escape(view) << "</a></li>";
+        out << "<li><a href='#" << escape(plot_names[{shader, view}]) << "'>" << escape(shader) << ", " << escape(view)
+            << "</a></li>";
     }
     out << "</ul>\n";
     for (const auto& key : cases) {
         const std::vector<const Row*>& rs = of_case[key];
         const Row* v = views.count(key) ? &views[key] : nullptr;
-        out << "<h2 id='" << escape(plot_names[key]) << "'>" << escape(key.first) << ", " << escape(key.second) << "</h2>\n<p>";
-        if (v) out << escape(v->at("description")) << "; " << escape(v->at("width")) << "x" << escape(v->at("height"))
-                   << " pixels. Truth: " << escape(v->at("truth")) << ".";
+        out << "<h2 id='" << escape(plot_names[key]) << "'>" << escape(key.first) << ", " << escape(key.second)
+            << "</h2>\n<p>";
+        if (v)
+            out << escape(v->at("description")) << "; " << escape(v->at("width")) << "x" << escape(v->at("height"))
+                << " pixels. Truth: " << escape(v->at("truth")) << ".";
         out << "</p>\n";
         if (no_plots.empty()) {
-            out << "<img src='" << data_uri(root / "plots" / (plot_names[key] + ".png")) << "' alt='error against time'>\n";
+            out << "<img src='" << data_uri(root / "plots" / (plot_names[key] + ".png"))
+                << "' alt='error against time'>\n";
         } else {
             out << "<p class='no-plot'>" << escape(no_plots) << "</p>\n";
         }
@@ -219,9 +241,9 @@ void write_report(const fs::path& root) {
         const std::vector<std::string>& front = fronts[key];
         for (const Row* r : rs) {
             const bool on = std::count(front.begin(), front.end(), r->at("mode")) > 0;
-            out << "<tr" << (on ? " class='front'" : "") << "><td class='l'>" << escape(r->at("mode")) << "</td><td class='l'>"
-                << escape(r->at("group")) << "</td><td class='l'>" << escape(r->at("variant")) << "</td><td>"
-                << format("%.3f", value(*r, "ms")) << " (" << format("%.3f", value(*r, "ms_min")) << "-"
+            out << "<tr" << (on ? " class='front'" : "") << "><td class='l'>" << escape(r->at("mode"))
+                << "</td><td class='l'>" << escape(r->at("group")) << "</td><td class='l'>" << escape(r->at("variant"))
+                << "</td><td>" << format("%.3f", value(*r, "ms")) << " (" << format("%.3f", value(*r, "ms_min")) << "-"
                 << format("%.3f", value(*r, "ms_max")) << ")</td><td>" << format("%.2e", value(*r, "rms_vs_llvmpipe"))
                 << "</td><td>" << format("%.3f", value(*r, "max_vs_llvmpipe")) << "</td><td>"
                 << format("%.2e", value(*r, "rms_vs_truth")) << "</td><td>" << format("%.3f", value(*r, "max_vs_truth"))
@@ -233,8 +255,9 @@ void write_report(const fs::path& root) {
             const std::string& gl = r->at("llvmpipe_image");
             if (gl.empty() || std::count(shown.begin(), shown.end(), gl)) continue;
             shown.push_back(gl);
-            out << figure(root, gl, "OSMesa llvmpipe: " + r->at("variant") + " " + fs::path(gl).stem().string().substr(
-                                        fs::path(gl).stem().string().rfind('-') + 1));
+            out << figure(root, gl,
+                          "OSMesa llvmpipe: " + r->at("variant") + " " +
+                              fs::path(gl).stem().string().substr(fs::path(gl).stem().string().rfind('-') + 1));
         }
         out << "</div>\n";
         if (stable.count(key)) out << stability_section(root, stable[key], v);

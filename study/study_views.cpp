@@ -1,32 +1,54 @@
 #include "study/study_views.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scenes/gltf.h"
+
 namespace qs::study {
 
 const std::vector<View>& generated_views() {
+    auto view = [](std::string name, std::string description, float zoom, float texcoord_scale, bool grazing) {
+        View v;
+        v.name = std::move(name), v.description = std::move(description);
+        v.zoom = zoom, v.texcoord_scale = texcoord_scale, v.grazing = grazing;
+        return v;
+    };
     static const std::vector<View> views = {
-        {"camera", "the scene's camera"},
-        {"magnified", "the camera's extent 0.3 times as wide: pattern edges span many pixels", 0.3f},
-        {"minified", "TEXCOORD_0 scaled by 4: a texture-coordinate pattern repeats 4 times as often", 1.0f, 4.0f},
-        {"grazing", "perspective over the scene stretched 4 times along its widest axes, TEXCOORD_0 scaled by 8, eye "
-                    "just beyond its edge: minification grows to the horizon", 1.0f, 8.0f, true},
+        view("camera", "the scene's camera", 1.0f, 1.0f, false),
+        view("magnified", "the camera's extent 0.3 times as wide: pattern edges span many pixels", 0.3f, 1.0f, false),
+        view("minified", "TEXCOORD_0 scaled by 4: a texture-coordinate pattern repeats 4 times as often", 1.0f, 4.0f,
+             false),
+        view("grazing",
+             "perspective over the scene stretched 4 times along its widest axes, TEXCOORD_0 scaled by 8, eye just "
+             "beyond its edge: minification grows to the horizon",
+             1.0f, 8.0f, true),
     };
     return views;
 }
 
-const View& generated_view(const std::string& name) {
+View view_named(const std::string& name) {
+    const std::filesystem::path file = name;
+    std::string ext = file.extension().string();
+    for (char& c : ext) c = char(std::tolower((unsigned char)c));
+    if (ext == ".gltf" || ext == ".glb") {
+        View v;
+        v.name = file.stem().string(), v.description = "the camera of " + file.filename().string();
+        v.camera_file = file;
+        return v;
+    }
     std::string names;
     for (const View& v : generated_views()) {
         if (v.name == name) return v;
         names += (names.empty() ? "" : ", ") + v.name;
     }
-    throw std::invalid_argument("no view '" + name + "' (the views are " + names + ")");
+    throw std::invalid_argument("no view '" + name + "' (the views are " + names +
+                                ", or a .gltf or .glb file's camera)");
 }
 
 namespace {
@@ -57,7 +79,8 @@ void zoom_camera(Camera& c, float zoom) {
 // Stretches the scene along its two widest axes and puts a perspective camera low over it.
 void graze(Scene& scene) {
     const Box b = world_box(scene);
-    if (scene.objects.empty() || !(b.hi.x >= b.lo.x)) throw std::invalid_argument("grazing view: the scene draws nothing");
+    if (scene.objects.empty() || !(b.hi.x >= b.lo.x))
+        throw std::invalid_argument("grazing view: the scene draws nothing");
     const glm::vec3 centre = (b.lo + b.hi) * 0.5f, half = (b.hi - b.lo) * 0.5f;
     // The thinnest axis is up (ties: the later axis, z before y before x); the eye looks along the
     // wider of the other two (ties: the later).
@@ -90,6 +113,7 @@ void graze(Scene& scene) {
 }  // namespace
 
 void apply_view(const View& view, Scene& scene) {
+    if (!view.camera_file.empty()) scene.camera = load_scene(view.camera_file).camera;
     if (view.texcoord_scale != 1.0f) {
         for (Mesh& m : scene.meshes) {
             for (Vertex& v : m.vertices) v.texcoord *= view.texcoord_scale;

@@ -4,7 +4,7 @@
 #   catalogue  a catalogue shader with its unfiltered variant on two views, three modes: the rows,
 #              the truth each names, the errors' bounds, the derivative maps of its inputs, the
 #              report with its images in it
-#   plugin     a plugin's shader (PLUGIN), one view, one mode
+#   plugin     a plugin's shader (PLUGIN), one mode, on the scene's camera and on a camera file
 #   glsl       a user's .frag (examples/my-shader/my_stripes.frag), one view, two modes
 #   stability  float against double with the coordinates far from the origin (--offset), and the
 #              undefined cases a probe meets, marked per pixel
@@ -39,7 +39,8 @@ check_report() {
         ls "$1"/plots/*.png > /dev/null || fail "plots drawn but not written"
     fi
     if command -v chromium > /dev/null; then
-        dom=$(chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=10000 --dump-dom "file://$1/report.html" 2>/dev/null)
+        dom=$(chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=10000 \
+            --dump-dom "file://$1/report.html" 2>/dev/null)
         check=$(printf '%s' "$dom" | sed -n 's/.*<p id="image-check">images: \([0-9]*\)\/\([0-9]*\) loaded.*/\1 \2/p')
         set -- $check
         [ $# -eq 2 ] && [ "$1" = "$2" ] && [ "$2" -gt 0 ] || fail "Chromium: not every image loaded ($check)"
@@ -55,14 +56,17 @@ catalogue)
         $small -o "$out" || fail "exit $?"
     csv=$out/study.csv
     [ "$(tail -n +2 "$csv" | wc -l)" -eq 6 ] || fail "expected 6 rows (2 views x 3 modes)"
-    [ "$(field "$csv" '^dots_aa,camera,ss2x2,' variant)" = dots_aa_step ] || fail "ss2x2 does not render the unfiltered variant"
+    [ "$(field "$csv" '^dots_aa,camera,ss2x2,' variant)" = dots_aa_step ] ||
+        fail "ss2x2 does not render the unfiltered variant"
     [ "$(field "$csv" '^dots_aa,camera,fine,' truth)" = dots_aa_step ] || fail "the truth is not the unfiltered variant"
-    grep -q 'dots_aa_step at 4x4 samples per pixel in double, box-filtered' "$out/views.csv" || fail "views.csv names no truth"
+    grep -q 'dots_aa_step at 4x4 samples per pixel in double, box-filtered' "$out/views.csv" ||
+        fail "views.csv names no truth"
     # The fine rule is llvmpipe's: the same image but for float rounding; the truth differs from
     # every mode, and supersampling the step pattern as llvmpipe does matches llvmpipe's.
     below "$(field "$csv" '^dots_aa,camera,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
     below "$(field "$csv" '^dots_aa,camera,ss2x2,' max_vs_llvmpipe)" 0.01 || fail "ss2x2 departs from llvmpipe's ss2x2"
-    below 0.001 "$(field "$csv" '^dots_aa,grazing,fine,' rms_vs_truth)" || fail "the grazing view matches the truth exactly"
+    below 0.001 "$(field "$csv" '^dots_aa,grazing,fine,' rms_vs_truth)" ||
+        fail "the grazing view matches the truth exactly"
     below "$(field "$csv" '^dots_aa,camera,fine,' ms_min)" "$(field "$csv" '^dots_aa,camera,fine,' ms_max)" ||
         [ "$(field "$csv" '^dots_aa,camera,fine,' ms_min)" = "$(field "$csv" '^dots_aa,camera,fine,' ms_max)" ] ||
         fail "the time's range is reversed"
@@ -72,18 +76,27 @@ catalogue)
     # rules' shared dFdx the more.
     d=$out/derivatives.csv
     [ "$(tail -n +2 "$d" | wc -l)" -eq 12 ] || fail "expected 12 derivative rows (2 views x 2 inputs x 3 rules)"
-    below "$(field "$d" '^dots_aa,camera,st.s,coarse-lower,' max_dx)" 1e-6 || fail "camera: coarse dFdx(st.s) is not exact"
+    below "$(field "$d" '^dots_aa,camera,st.s,coarse-lower,' max_dx)" 1e-6 ||
+        fail "camera: coarse dFdx(st.s) is not exact"
     below 1e-4 "$(field "$d" '^dots_aa,grazing,st.t,fine,' rms_dy)" || fail "grazing: fine dFdy(st.t) is exact"
-    below "$(field "$d" '^dots_aa,grazing,st.s,fine,' rms_dx)" "$(field "$d" '^dots_aa,grazing,st.s,coarse-upper,' rms_dx)" ||
+    below "$(field "$d" '^dots_aa,grazing,st.s,fine,' rms_dx)" \
+        "$(field "$d" '^dots_aa,grazing,st.s,coarse-upper,' rms_dx)" ||
         fail "grazing: coarse-upper dFdx(st.s) is no worse than fine"
     grep -q '<h3>Derivative maps</h3>' "$out/report.html" || fail "the report has no derivative maps"
     check_report "$out" 40
     ;;
 plugin)
-    "$qs" study "$plane" --plugin "$plugin" --shader my_stripes --views magnified --modes fine $small -o "$out" ||
+    # Its views: the scene's camera, and the same camera given as a user's camera file.
+    "$qs" study "$plane" --plugin "$plugin" --shader my_stripes --views camera,"$plane" --modes fine $small -o "$out" ||
         fail "exit $?"
-    below "$(field "$out/study.csv" '^my_stripes,magnified,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
-    check_report "$out" 3
+    csv=$out/study.csv
+    below "$(field "$csv" '^my_stripes,camera,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
+    below "$(field "$csv" '^my_stripes,table-1.1-plane,fine,' rms_vs_llvmpipe)" 0.002 ||
+        fail "the camera file's view departs"
+    own=$(field "$csv" '^my_stripes,camera,fine,' rms_vs_truth)
+    [ "$own" = "$(field "$csv" '^my_stripes,table-1.1-plane,fine,' rms_vs_truth)" ] ||
+        fail "the scene's own camera, given as a file, sees another image"
+    check_report "$out" 6
     ;;
 glsl)
     "$qs" study "$plane" --glsl "$src/examples/my-shader/my_stripes.frag" --views minified --modes fine,dual2 $small \
@@ -92,7 +105,8 @@ glsl)
     below "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
     # Minified stripes: the analytic width filters them, the quads' fwidth of a folded ramp does not.
     below "$(field "$csv" '^my_stripes.frag,minified,dual2,' rms_vs_truth)" \
-        "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_truth)" || fail "dual2 is not closer to the truth than fine"
+        "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_truth)" ||
+            fail "dual2 is not closer to the truth than fine"
     check_report "$out" 5
     ;;
 stability)
@@ -101,15 +115,18 @@ stability)
     "$qs" study "$plane" --shader dots_aa $tiny $small --offset 100000,100000,0 -o "$out/far" || fail "exit $?"
     "$qs" study "$plane" --shader float_env_probe $tiny $small -o "$out/probe" || fail "exit $?"
     grep -q ',100000 100000 0,1000$' "$out/far/views.csv" || fail "views.csv does not record the offset and the time"
-    below "$(field "$out/near/stability.csv" '^dots_aa,camera,' rms_float_vs_double)" 1e-4 || fail "float departs near the origin"
+    below "$(field "$out/near/stability.csv" '^dots_aa,camera,' rms_float_vs_double)" 1e-4 ||
+        fail "float departs near the origin"
     below 0.01 "$(field "$out/far/stability.csv" '^dots_aa,camera,' rms_float_vs_double)" ||
         fail "float does not depart from double 100000 from the origin"
     below 0 "$(field "$out/far/stability.csv" '^dots_aa,camera,' over_1_255)" || fail "no pixel counted over 1/255"
-    below 0 "$(field "$out/probe/stability.csv" '^float_env_probe,camera,' nan)" || fail "the probe's NaNs are not marked"
+    below 0 "$(field "$out/probe/stability.csv" '^float_env_probe,camera,' nan)" ||
+        fail "the probe's NaNs are not marked"
     below 0 "$(field "$out/probe/stability.csv" '^float_env_probe,camera,' division_by_zero)" ||
         fail "the probe's divisions by zero are not marked"
     [ -s "$out/probe/images/float_env_probe-camera/undefined.png" ] || fail "no undefined-case mask"
-    grep -q 'Undefined GLSL cases the colour depends on' "$out/probe/report.html" || fail "the report says nothing of them"
+    grep -q 'Undefined GLSL cases the colour depends on' "$out/probe/report.html" ||
+        fail "the report says nothing of them"
     ;;
 bench)
     "$qs" study --study "$src/bench/study.txt" -o "$out" --size 16 --truth 2 --repeat 1 --modes fine,step,ss2x2 \
@@ -137,7 +154,8 @@ refused)
     "$expect" 2 'exists and is not a folder' "$qs" study "$plane" --shader dots_aa -o "$plane" &&
     "$expect" 1 'no_such.gltf' "$qs" study "$src/no_such.gltf" --shader dots_aa -o "$out/f" &&
     "$expect" 2 'bad-study.txt:3: .*--sharpness' "$qs" study --study "$out/bad-study.txt" -o "$out/g" &&
-    "$expect" 2 '--study: --shader goes on the file' "$qs" study --study "$out/bad-study.txt" --shader dots_aa -o "$out/h" ||
+    "$expect" 2 '--study: --shader goes on the file' "$qs" study --study "$out/bad-study.txt" --shader dots_aa \
+        -o "$out/h" ||
         fail "not refused as expected"
     ls "$out"/*/report.html 2> /dev/null && fail "a refused study wrote a report"
     ;;
