@@ -6,6 +6,7 @@
 #include "interpreter/glsl_program.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
+#include "scenes/output_file.h"
 
 namespace qs::app {
 
@@ -17,12 +18,24 @@ fs::path resolved(const fs::path& p) {
     return ec ? p.lexically_normal() : folder / p.filename();
 }
 
-void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option) {
-    if (fs::is_directory(output)) throw UsageError(std::string(option) + " " + output.string() + ": is a folder; give a file name");
+void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option, Streams streams) {
+    try {
+        output_place(output, streams);
+    } catch (const OutputError& e) {
+        throw UsageError(std::string(option) + " " + e.what());
+    }
     for (const fs::path& in : inputs) {
         if (output.filename() == in.filename() && resolved(output) == in) {
             throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
         }
+    }
+}
+
+void check_output(const fs::path& output, const InputFiles& inputs, const char* option, Streams streams) {
+    check_output(output, std::vector<fs::path>{}, option, streams);
+    if (inputs.contains(output)) {
+        throw UsageError(std::string(option) + " " + output.string() +
+                         ": is an input of this command; it would be overwritten");
     }
 }
 

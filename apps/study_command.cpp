@@ -176,14 +176,31 @@ int cmd_study(StudyArgs& a) {
     if (fs::exists(a.output, ec) && !fs::is_directory(a.output, ec)) {
         throw UsageError("-o " + a.output + ": exists and is not a folder");
     }
-    for (std::size_t i = 0; i < requests.size(); ++i) {
-        requests[i].output = a.output;
+    // Every study's inputs, refused as outputs before any is run.
+    std::vector<fs::path> inputs;
+    for (const std::string& file : {a.study_file, a.glsl, a.vertex_glsl}) {
+        if (!file.empty()) inputs.push_back(file);
+    }
+    try {
+        for (const study::Request& r : requests) {
+            const std::vector<fs::path> theirs = study::study_inputs(r);
+            inputs.insert(inputs.end(), theirs.begin(), theirs.end());
+        }
+        study::refuse_outputs_over(a.output, inputs);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("study: ") + e.what());
+    }
+    make_output_folder(a.output, FolderLink::Followed);
+    study::Tables tables;
+    for (study::Request& r : requests) {
+        r.output = a.output;
         try {
-            study::run_study(requests[i], i > 0);
+            study::run_study(r, tables);
         } catch (const std::invalid_argument& e) {
             throw UsageError(std::string("study: ") + e.what());
         }
     }
+    study::write_tables(a.output, tables);
     study::write_report(a.output);
     std::printf("quadshade study: %s\n", (fs::path(a.output) / "report.html").string().c_str());
     return 0;

@@ -11,6 +11,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/binding_names.h"
+#include "frontend/bounded_preprocess.h"
 #include "frontend/float_literals.h"
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
@@ -84,6 +85,7 @@ ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::
     initialise_glslang();
     ParsedStage p;
     p.text = float_literals_as_float(join_continued_lines(source.text));
+    check_macro_expansion(source.file, p.text, stage == EShLangFragment);
     p.shader = std::make_unique<glslang::TShader>(stage);
     const char* text = p.text.c_str();
     const int length = int(p.text.size());

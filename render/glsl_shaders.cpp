@@ -32,7 +32,7 @@ GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::op
     std::vector<std::string> warnings = compiled.warnings;
     std::string vertex_text = compiled.vertex.text;
     auto program = std::make_unique<interpreter::GlslProgram>(name, std::move(compiled));
-    const Program& p = add_compiled_program(std::move(program), "GLSL", std::move(vertex_text), f.text);
+    const Program& p = add_compiled_program(std::move(program), kGlslCollection, std::move(vertex_text), f.text);
     GlslShader shader{&p, std::move(warnings)};
     loaded.emplace(key, shader);
     return shader;
@@ -47,7 +47,7 @@ std::string interpreted_twin(const std::string& name) {
     frontend::CompiledProgram compiled = frontend::compile_glsl({name + ".frag", fragment}, frontend::GlslSource{name + ".vert", vertex});
     auto program = std::make_unique<interpreter::GlslProgram>(twin, std::move(compiled));
     program->adopt_check_bounds(translation->info().check_bounds);
-    add_compiled_program(std::move(program), "GLSL", vertex, fragment);
+    add_compiled_program(std::move(program), kGlslCollection, vertex, fragment);
     return twin;
 }
 

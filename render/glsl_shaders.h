@@ -13,6 +13,9 @@
 
 namespace qs {
 
+// The catalogue collection the shaders loaded here are listed under (quadshade gallery draws it).
+inline constexpr const char* kGlslCollection = "GLSL";
+
 struct GlslShader {
     const Program* program;
     std::vector<std::string> warnings;  // glslang's, FILE:LINE: prefixed

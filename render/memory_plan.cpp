@@ -71,8 +71,9 @@ std::uint64_t parse_byte_size(const std::string& text) {
     if (!(in >> number) || !std::isfinite(number) || number < 0.0) {
         throw std::invalid_argument("expected a size such as 512M or 8G, got '" + text + "'");
     }
-    std::string unit;
+    std::string unit, rest;
     in >> unit;
+    if (in >> rest) throw std::invalid_argument("expected a size such as 512M or 8G, got '" + text + "'");
     std::transform(unit.begin(), unit.end(), unit.begin(), [](unsigned char c) { return char(std::toupper(c)); });
     static const std::pair<const char*, double> units[] = {{"", 1.0}, {"B", 1.0}, {"K", 0x1p10}, {"KB", 0x1p10},
                                                            {"KIB", 0x1p10}, {"M", 0x1p20}, {"MB", 0x1p20}, {"MIB", 0x1p20},
@@ -107,6 +108,35 @@ std::vector<RowBand> plan_bands(const MemoryPlanInput& in) {
         (in.bytes_for_rows(mid * kTileSize) <= budget ? lo : hi) = mid;
     }
     return image_bands(in.height, in.pairing, lo * kTileSize);
+}
+
+MemoryBudget::MemoryBudget(std::uint64_t limit) : limit_(limit) {}
+
+MemoryBudget::Reservation MemoryBudget::reserve(std::uint64_t bytes, const std::string& what) {
+    if (bytes > limit_) {
+        throw MemoryError(what + " needs " + byte_size_text(bytes) + ", more than the " + byte_size_text(limit_) +
+                          " available (--memory-limit sets it)");
+    }
+    std::unique_lock lock(mutex_);
+    released_.wait(lock, [&] { return limit_ - held_ >= bytes; });
+    held_ += bytes;
+    return Reservation(this, bytes);
+}
+
+void MemoryBudget::release(std::uint64_t bytes) {
+    {
+        const std::lock_guard lock(mutex_);
+        held_ -= bytes;
+    }
+    released_.notify_all();
+}
+
+MemoryBudget::Reservation::Reservation(Reservation&& r) noexcept : budget_(r.budget_), bytes_(r.bytes_) {
+    r.budget_ = nullptr;
+}
+
+MemoryBudget::Reservation::~Reservation() {
+    if (budget_) budget_->release(bytes_);
 }
 
 }  // namespace qs

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Draws the Pareto plots of a `quadshade study`: for each DIR/plots/CASE.csv (mode, group, ms,
-rms_vs_truth, front), DIR/plots/CASE.png, the RMS error against the truth over the time per frame,
+"""Draws the Pareto plots of a `quadshade study`: for each POINTS/CASE.csv (mode, group, ms,
+rms_vs_truth, front), PLOTS/CASE.png, the RMS error against the truth over the time per frame,
 log-log, one point per mode, the Pareto front (which `quadshade study` marks) drawn through its
 points. Exits 3, saying why, where matplotlib (Debian's python3-matplotlib) is not installed.
 
-usage: pareto_plot.py DIR
+usage: pareto_plot.py POINTS PLOTS
 """
 import csv
 import glob
@@ -49,13 +49,14 @@ def plot(title, rows, path):
 
 
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) != 3:
         sys.exit(__doc__)
-    for path in sorted(glob.glob(os.path.join(sys.argv[1], "plots", "*.csv"))):
+    for path in sorted(glob.glob(os.path.join(sys.argv[1], "*.csv"))):
         with open(path, newline="") as f:
             rows = list(csv.DictReader(f))
         if rows:
-            plot(rows[0]["case"], rows, path[:-4] + ".png")
+            name = os.path.splitext(os.path.basename(path))[0]
+            plot(rows[0]["case"], rows, os.path.join(sys.argv[2], name + ".png"))
 
 
 if __name__ == "__main__":

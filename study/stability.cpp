@@ -61,7 +61,7 @@ void offset_coordinates(Scene& scene, const glm::dvec3& offset) {
         for (Vertex& v : m.vertices) v.position += o, v.texcoord += glm::vec2(o);
     }
     for (Object& object : scene.objects)
-        object.world_from_object = object.world_from_object * glm::translate(glm::mat4(1.0f), -o);
+        object.world_from_object = object.world_from_object * glm::translate(glm::dmat4(1.0), -glm::dvec3(o));
 }
 
 }  // namespace qs::study

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <stdexcept>
 
@@ -13,6 +12,8 @@
 #include "render/reference_process.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "scenes/output_file.h"
+#include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "study/derivative_maps.h"
@@ -35,18 +36,27 @@ constexpr bool kRaycast = false;
 #endif
 
 // Writes a view's scene for the reference, its texture files copied beside it (a scene may only
-// read files in its own folder).
+// read files in its own folder): the glTF, its buffer and the copies committed together.
 void save_view(const Scene& scene, const fs::path& file) {
+    OutputSet out(file);
     Scene copy = scene;
     for (std::size_t i = 0; i < copy.textures.size(); ++i) {
         ImageSource& image = copy.textures[i].image;
         if (image.kind != ImageSource::Kind::File || image.file.empty()) continue;
-        const fs::path local = file.parent_path() / (file.stem().string() + "-" + std::to_string(i) + "-" +
-                                                     file_name(image.file.filename().string()));
-        fs::copy_file(image.file, local, fs::copy_options::overwrite_existing);
+        const std::string name =
+            file.stem().string() + "-" + std::to_string(i) + "-" + file_name(image.file.filename().string());
+        const fs::path local = out.staged(name);
+        copy_to_output(image.file, local);
         image.file = local;
     }
-    save_scene(copy, file);
+    save_scene(copy, out.staged(file.filename().string()));
+    out.commit(file.filename().string());
+}
+
+// Whether `file`'s entry is `folder` or lies inside it (both entries, their folders resolved).
+bool inside(const fs::path& file, const fs::path& folder) {
+    const fs::path f = entry_path(file), d = entry_path(folder);
+    return std::mismatch(d.begin(), d.end(), f.begin(), f.end()).first == d.end();
 }
 
 struct Timing {
@@ -57,7 +67,7 @@ class Study {
 public:
     explicit Study(const Request& r) : r_(r) {}
 
-    void run(bool append) {
+    void run(Tables& tables) {
         const std::vector<Mode> modes = chosen_modes();
         std::vector<View> views;
         for (const std::string& v : r_.views) views.push_back(view_named(v));
@@ -70,28 +80,25 @@ public:
         }
         const Scene original = load_scene(r_.scene);
         const std::string label = r_.label.empty() ? r_.shaders.shader : r_.label;
-        fs::create_directories(r_.output / "images");
+        make_output_folder(r_.output / "images", FolderLink::Refused);
+        // The reference's images and logs are this run's own (two runs may share the folder).
+        std::optional<ScratchFolder> scratch;
         if (r_.reference) {
             reference_ = reference_executable("study");
             write_glsl();  // the reference sees the GLSL as any GL application would: the text only
+            scratch.emplace(r_.output / "reference");
+            scratch_ = scratch->path();
         }
-        const bool header = !append || !fs::exists(r_.output / "study.csv");
-        std::ofstream csv(r_.output / "study.csv", append ? std::ios::app : std::ios::trunc);
-        std::ofstream views_csv(r_.output / "views.csv", append ? std::ios::app : std::ios::trunc);
-        std::ofstream derivatives_csv(r_.output / "derivatives.csv", append ? std::ios::app : std::ios::trunc);
-        std::ofstream stability_csv(r_.output / "stability.csv", append ? std::ios::app : std::ios::trunc);
-        if (header) {
-            csv << csv_line(kStudyColumns);
-            views_csv << csv_line({"shader", "view", "description", "width", "height", "truth", "offset", "time"});
-            stability_csv << csv_line(kStabilityColumns);
-            derivatives_csv << csv_line(kDerivativeColumns);
-        }
+        std::string& csv = tables.study;
+        std::string& views_csv = tables.views;
+        std::string& derivatives_csv = tables.derivatives;
+        std::string& stability_csv = tables.stability;
         std::size_t total = views.size() * (modes.size() + 1), done = 0;
         for (const View& view : views) {
             const View* v = &view;
             const std::string id = file_name(label) + "-" + v->name;
             const fs::path dir = r_.output / "images" / id;
-            fs::create_directories(dir);
+            make_output_folder(dir, FolderLink::Refused);
             Scene scene = original;
             if (!r_.keep_shader.empty()) {
                 std::erase_if(scene.objects, [&](const Object& o) { return o.shader != r_.keep_shader; });
@@ -107,21 +114,21 @@ public:
             // The reference reads the view from a file, written unless the scene is as loaded.
             fs::path scene_file = r_.scene;
             if (r_.reference && (v->changes_scene() || offset || !r_.keep_shader.empty())) {
-                fs::create_directories(r_.output / "views");
+                make_output_folder(r_.output / "views", FolderLink::Refused);
                 scene_file = r_.output / "views" / (id + ".gltf");
                 save_view(scene, scene_file);
             }
             const std::string& truth_shader = r_.shaders.unfiltered.empty() ? r_.shaders.shader : r_.shaders.unfiltered;
             const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" +
                                            std::to_string(r_.truth) + " samples per pixel in double, box-filtered";
-            views_csv << csv_line({label, v->name, v->description, std::to_string(scene.width),
+            views_csv += csv_line({label, v->name, v->description, std::to_string(scene.width),
                                    std::to_string(scene.height), truth_text,
                                    number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
                                    r_.time ? number(*r_.time) : number(scene.time)});
             progress(done, total, id + ": float against double, undefined cases");
             const Stability st = stability(scene, r_.shaders.shader, r_.time, r_.threads, dir, "images/" + id);
             const auto& u = st.undefined;
-            stability_csv << csv_line(
+            stability_csv += csv_line(
                 {label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
                  std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
                  st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
@@ -131,7 +138,7 @@ public:
                 progress(done, total, id + ": derivative maps");
                 for (const DerivativeRow& d :
                      derivative_maps(scene, r_.shaders.shader, r_.threads, dir, "images/" + id)) {
-                    derivatives_csv << csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
+                    derivatives_csv += csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
                                                  number(d.rms_dy), number(d.max_dy), number(d.scale),
                                                  std::to_string(d.covered), d.map_image, d.heat_image,
                                                  d.analytic_image});
@@ -155,7 +162,7 @@ public:
                     const auto key = std::make_pair(m.shader, m.supersample);
                     if (!llvmpipe.count(key)) {
                         gl_file = "llvmpipe-" + file_name(m.shader) + "-ss" + std::to_string(m.supersample) + ".png";
-                        llvmpipe[key] = reference(scene_file, scene, m, dir);
+                        llvmpipe[key] = reference(scene_file, scene, m);
                         llvmpipe_files[key] = gl_file;
                         write_image(dir / gl_file, llvmpipe[key]);
                     }
@@ -163,12 +170,11 @@ public:
                     vs_gl = error_of(image, llvmpipe[key]);
                 }
                 const std::string images = "images/" + id + "/";
-                csv << csv_line({label, v->name, m.name, m.group, m.shader, number(time.median), number(time.min),
+                csv += csv_line({label, v->name, m.name, m.group, m.shader, number(time.median), number(time.min),
                                  number(time.max), number(vs_gl.rms), number(vs_gl.max), number(vs_truth.rms),
                                  number(vs_truth.max), std::to_string(image.width), std::to_string(image.height),
                                  images + name, gl_file.empty() ? "" : images + gl_file, images + "truth.png",
                                  images + heat, truth_shader});
-                csv.flush();
             }
         }
         std::fprintf(stderr, "\n");
@@ -193,15 +199,12 @@ private:
     // Each variant's GLSL, for the reference: output/glsl/NAME.vert and NAME.frag.
     void write_glsl() const {
         const fs::path dir = r_.output / "glsl";
-        fs::create_directories(dir);
+        make_output_folder(dir, FolderLink::Refused);
         for (const std::string& name : {r_.shaders.shader, r_.shaders.unfiltered, r_.shaders.alternative}) {
             if (name.empty()) continue;
             const Program& p = *find_program(name);
-            for (const bool vertex : {true, false}) {
-                std::ofstream f(dir / (name + (vertex ? ".vert" : ".frag")), std::ios::binary);
-                f << glsl_source(p, vertex);
-                if (!f) throw std::runtime_error((dir / name).string() + ": cannot write the GLSL");
-            }
+            for (const bool vertex : {true, false})
+                write_output(dir / (name + (vertex ? ".vert" : ".frag")), glsl_source(p, vertex));
         }
     }
 
@@ -246,9 +249,9 @@ private:
         return {image, {ms[ms.size() / 2], ms.front(), ms.back()}};
     }
 
-    Image reference(const fs::path& scene_file, const Scene& scene, const Mode& m, const fs::path& dir) const {
+    Image reference(const fs::path& scene_file, const Scene& scene, const Mode& m) const {
         const int k = m.supersample;
-        const fs::path image = dir / "reference.exr", log = dir / "reference.log";
+        const fs::path image = scratch_ / "reference.exr", log = scratch_ / "reference.log";
         std::vector<std::string> argv = {reference_.string(),
                                          scene_file.string(),
                                          "-o",
@@ -268,8 +271,9 @@ private:
             throw std::runtime_error("quadshade-reference failed on " + scene_file.string() + " with " + m.shader +
                                      " (exit " + std::to_string(status) + "): " + read_text(log));
         }
-        Image gl = read_image(image);
-        fs::remove(image), fs::remove(log);
+        ImageReadLimits limits;  // the size asked for, checked on the header
+        limits.width = scene.width * k, limits.height = scene.height * k;
+        Image gl = read_image(image, limits);
         return k > 1 ? box_filter(gl.rgba, gl.width, gl.height, k) : gl;
     }
 
@@ -309,15 +313,47 @@ private:
     }
 
     const Request& r_;
-    fs::path reference_;
+    fs::path reference_, scratch_;  // quadshade-reference; where its images and logs go
 };
 
 }  // namespace
 
-void run_study(const Request& request, bool append) {
+void run_study(const Request& request, Tables& tables) {
     if (request.size < 1 || request.truth < 1 || request.repeat < 1)
         throw std::invalid_argument("size, truth and repeat must be positive");
-    Study(request).run(append);
+    Study(request).run(tables);
+}
+
+std::vector<fs::path> study_inputs(const Request& request) {
+    std::vector<fs::path> inputs = load_scene(request.scene).inputs;
+    inputs.push_back(request.scene);
+    for (const std::string& v : request.views) {
+        const View view = view_named(v);
+        if (view.camera_file.empty()) continue;
+        const std::vector<fs::path> theirs = load_scene(view.camera_file).inputs;
+        inputs.insert(inputs.end(), theirs.begin(), theirs.end());
+        inputs.push_back(view.camera_file);
+    }
+    return inputs;
+}
+
+void refuse_outputs_over(const fs::path& output, const std::vector<fs::path>& inputs) {
+    InputFiles files;
+    for (const fs::path& input : inputs) files.add(input);
+    for (const char* name : {"study.csv", "views.csv", "derivatives.csv", "stability.csv", "report.html"}) {
+        if (files.contains(output / name))
+            throw std::invalid_argument((output / name).string() + ": an input of this study; it would be overwritten");
+    }
+    for (const fs::path& input : inputs) {
+        std::error_code ec;
+        const fs::path target = fs::is_symlink(input, ec) ? fs::weakly_canonical(input, ec) : input;
+        for (const char* folder : {"images", "plots", "glsl", "views"}) {
+            if (inside(input, output / folder) || inside(target, output / folder)) {
+                throw std::invalid_argument(input.string() + ": an input of this study, in " +
+                                            (output / folder).string() + ", which the study fills");
+            }
+        }
+    }
 }
 
 }  // namespace qs::study

@@ -9,7 +9,8 @@
 // On each view it also maps the derivatives of the shader's inputs under each quad rule against
 // the analytic ones (derivative_maps.h), and measures its float image against its double one
 // and marks the undefined GLSL cases it meets (stability.h).
-// It writes, in the output folder: study.csv (one row per view and mode), views.csv,
+// It writes, in the output folder, by scenes/output_file.h's rule: study.csv (one row per view and
+// mode), views.csv,
 // derivatives.csv (one row per view, input and rule), stability.csv (one per view), the images
 // (images/CASE/MODE.png, its heat map against the truth, llvmpipe's, the truth's, the derivative
 // maps and the stability images), the Pareto plots (plots/CASE.png, drawn by python3-matplotlib
@@ -22,6 +23,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "study/study_csv.h"
 #include "study/study_modes.h"
 #include "study/study_views.h"
 
@@ -45,11 +47,21 @@ struct Request {
     std::string label;
 };
 
-// Runs the study and writes its files into request.output (study.csv is appended to when
-// `append`, so that several studies share one report). Progress on stderr. Throws
-// std::invalid_argument for a request it cannot honour (an unknown view or mode, a truth rate the
-// size cannot take), std::runtime_error for a scene, shader or reference that fails.
-void run_study(const Request& request, bool append = false);
+// Runs the study: writes its images, views and GLSL into request.output (an existing folder) and
+// adds its rows to `tables` (write_tables writes them), so that several studies share one report.
+// Progress on stderr. Throws std::invalid_argument for a request it cannot honour (an unknown view
+// or mode, a truth rate the size cannot take), std::runtime_error for a scene, shader or
+// reference that fails, OutputError for an output that cannot be written.
+void run_study(const Request& request, Tables& tables);
+
+// The files a study reads: its scene and every file the scene names, and the camera files its
+// views name with theirs. Throws as loading the scene does.
+std::vector<std::filesystem::path> study_inputs(const Request& request);
+
+// Refuses (std::invalid_argument naming both) an output folder where a study would write over
+// one of `inputs`: its tables, report.html, or a file in the folders it fills (images/, plots/,
+// glsl/, views/).
+void refuse_outputs_over(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs);
 
 // Writes report.html (and the plots) from the output folder's study.csv and views.csv.
 void write_report(const std::filesystem::path& output);

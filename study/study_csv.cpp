@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "scenes/output_file.h"
+
 namespace qs::study {
 
 std::string csv_line(const std::vector<std::string>& fields) {
@@ -29,6 +31,19 @@ std::string number(double v) {
     char s[32];
     std::snprintf(s, sizeof s, "%.9g", v);
     return s;
+}
+
+Tables::Tables()
+    : study(csv_line(kStudyColumns)),
+      views(csv_line({"shader", "view", "description", "width", "height", "truth", "offset", "time"})),
+      derivatives(csv_line(kDerivativeColumns)),
+      stability(csv_line(kStabilityColumns)) {}
+
+void write_tables(const std::filesystem::path& output, const Tables& tables) {
+    write_output(output / "study.csv", tables.study);
+    write_output(output / "views.csv", tables.views);
+    write_output(output / "derivatives.csv", tables.derivatives);
+    write_output(output / "stability.csv", tables.stability);
 }
 
 namespace {

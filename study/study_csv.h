@@ -45,6 +45,18 @@ inline const std::vector<std::string> kStabilityColumns = {
 std::string csv_line(const std::vector<std::string>& fields);
 std::string number(double v);  // "nan" for NaN
 
+// The four CSV files' text, each from its header line: every study of a run adds its rows, and
+// write_tables writes them whole once every study is done (so that a failed run leaves no table
+// that reads as complete).
+struct Tables {
+    Tables();
+    std::string study, views, derivatives, stability;
+};
+
+// study.csv, views.csv, derivatives.csv and stability.csv in `output`, by scenes/output_file.h's
+// rule. Throws OutputError naming the file that could not be written.
+void write_tables(const std::filesystem::path& output, const Tables& tables);
+
 // The rows of a CSV file with a header line, each a map from column to field. Throws
 // std::runtime_error naming the file and line of a malformed row.
 std::vector<std::map<std::string, std::string>> read_csv(const std::filesystem::path& file);

@@ -11,6 +11,8 @@
 #include <OpenImageIO/strutil.h>
 
 #include "render/reference_process.h"
+#include "scenes/output_file.h"
+#include "scenes/temporary_file.h"
 #include "study/study.h"
 #include "study/study_csv.h"
 
@@ -87,19 +89,23 @@ std::string figure(const fs::path& root, const std::string& relative, const std:
            "'><figcaption>" + escape(caption) + "</figcaption></figure>";
 }
 
-// Draws plots/CASE.png from each plots/CASE.csv with python3-matplotlib; returns why not, or empty.
-std::string draw_plots(const fs::path& root) {
+// Draws plots/CASE.png for each of `cases` from its plots/CASE.csv with python3-matplotlib;
+// returns why not, or empty. The script draws into a scratch folder; each plot is then copied
+// into place by the output rule, as every output is.
+std::string draw_plots(const fs::path& root, const std::vector<std::string>& cases) {
     const fs::path python = "/usr/bin/python3";
     const fs::path script = executable_folder().parent_path() / "share" / "quadshade" / "study" / "pareto_plot.py";
     if (!fs::exists(python)) return "no plots: /usr/bin/python3 is not installed";
     if (!fs::exists(script)) return "no plots: " + script.string() + " is missing (an incomplete installation?)";
-    const fs::path log = root / "plots" / "pareto_plot.log";
-    const int status = run_process({python.string(), script.string(), root.string()}, log);
+    const ScratchFolder scratch(root / "plots");
+    const fs::path log = scratch.path() / "pareto_plot.log";
+    const int status =
+        run_process({python.string(), script.string(), (root / "plots").string(), scratch.path().string()}, log);
     const std::string text = read_text(log);
-    fs::remove(log);
     if (status == 3) return "no plots: " + text;
     if (status != 0)
         throw std::runtime_error(script.string() + " failed (exit " + std::to_string(status) + "): " + text);
+    for (const std::string& c : cases) copy_to_output(scratch.path() / (c + ".png"), root / "plots" / (c + ".png"));
     return {};
 }
 
@@ -177,22 +183,24 @@ void write_report(const fs::path& root) {
         of_case[key].push_back(&r);
     }
     // Each case's points for the plot script, named as its images' folder is.
-    fs::create_directories(root / "plots");
+    make_output_folder(root / "plots", FolderLink::Refused);
     std::map<std::pair<std::string, std::string>, std::vector<std::string>> fronts;
     std::map<std::pair<std::string, std::string>, std::string> plot_names;
     for (const auto& key : cases) {
         fronts[key] = pareto_front(of_case[key]);
         const std::string folder = fs::path(of_case[key].front()->at("image")).parent_path().filename().string();
         plot_names[key] = folder;
-        std::ofstream points(root / "plots" / (folder + ".csv"));
-        points << csv_line({"case", "mode", "group", "ms", "rms_vs_truth", "front"});
+        std::string points = csv_line({"case", "mode", "group", "ms", "rms_vs_truth", "front"});
         for (const Row* r : of_case[key]) {
             const bool on = std::count(fronts[key].begin(), fronts[key].end(), r->at("mode")) > 0;
-            points << csv_line({key.first + ", " + key.second, r->at("mode"), r->at("group"), r->at("ms"),
+            points += csv_line({key.first + ", " + key.second, r->at("mode"), r->at("group"), r->at("ms"),
                                 r->at("rms_vs_truth"), on ? "1" : "0"});
         }
+        write_output(root / "plots" / (folder + ".csv"), points);
     }
-    const std::string no_plots = draw_plots(root);
+    std::vector<std::string> plotted;
+    for (const auto& key : cases) plotted.push_back(plot_names[key]);
+    const std::string no_plots = draw_plots(root, plotted);
     std::map<std::pair<std::string, std::string>, Row> stable;
     if (fs::exists(root / "stability.csv")) {
         for (Row& st : read_csv(root / "stability.csv")) stable[{st.at("shader"), st.at("view")}] = std::move(st);
@@ -273,13 +281,7 @@ void write_report(const fs::path& root) {
            "  const ok = images.filter(i => i.complete && i.naturalWidth > 0).length;\n"
            "  document.getElementById('image-check').textContent = `images: ${ok}/${images.length} loaded`;\n"
            "});\n</script></body></html>\n";
-    const fs::path report = root / "report.html", temporary = root / "report.html.partial";
-    {
-        std::ofstream f(temporary, std::ios::binary);
-        f << out.str();
-        if (!f) throw std::runtime_error(temporary.string() + ": cannot write");
-    }
-    fs::rename(temporary, report);
+    write_output(root / "report.html", out.str());
 }
 
 }  // namespace qs::study

@@ -61,7 +61,7 @@ Box world_box(const Scene& scene) {
     Box b;
     for (const Object& o : scene.objects) {
         for (const Vertex& v : scene.meshes.at(o.mesh).vertices) {
-            const glm::vec3 p = glm::vec3(o.world_from_object * glm::vec4(v.position, 1.0f));
+            const glm::vec3 p = glm::vec3(o.world_from_object * glm::dvec4(glm::dvec3(v.position), 1.0));
             b.lo = glm::min(b.lo, p), b.hi = glm::max(b.hi, p);
         }
     }
@@ -98,7 +98,7 @@ void graze(Scene& scene) {
     stretch[up] = 1.0f;
     const glm::mat4 about_centre = glm::translate(glm::mat4(1.0f), centre) * glm::scale(glm::mat4(1.0f), stretch) *
                                    glm::translate(glm::mat4(1.0f), -centre);
-    for (Object& o : scene.objects) o.world_from_object = about_centre * o.world_from_object;
+    for (Object& o : scene.objects) o.world_from_object = glm::dmat4(about_centre) * o.world_from_object;
     glm::vec3 eye = centre, axis_up(0.0f);
     eye[along] -= 4.2f * reach;
     eye[up] += half[up] + 0.5f * reach;

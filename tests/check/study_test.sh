@@ -5,13 +5,13 @@
 #              the truth each names, the errors' bounds, the derivative maps of its inputs, the
 #              report with its images in it
 #   plugin     a plugin's shader (PLUGIN), one mode, on the scene's camera and on a camera file
-#   glsl       a user's .frag (examples/my-shader/my_stripes.frag), one view, two modes
+#   glsl       a user's .frag (examples/minimal/stripes.frag), one view, two modes
 #   stability  float against double with the coordinates far from the origin (--offset), and the
 #              undefined cases a probe meets, marked per pixel
 #   bench      bench/study.txt, bench/run-study's study, through `quadshade study --study` with
 #              its rows in every case, and bench/results.py rewriting docs/results.md's error
 #              table (on a copy) from it
-#   refused    bad usage and bad input: a clear message, a non-zero exit, no report
+#   refused    bad usage, bad input and outputs over inputs: a clear message, a non-zero exit, no report
 # The report is checked in headless Chromium where it is installed (every image loaded).
 set -u
 qs=$1 src=$2 out=$3 case=$4 plugin=${5:-}
@@ -84,28 +84,31 @@ catalogue)
         fail "grazing: coarse-upper dFdx(st.s) is no worse than fine"
     grep -q '<h3>Derivative maps</h3>' "$out/report.html" || fail "the report has no derivative maps"
     check_report "$out" 40
+    # Every output by the output rule: no temporary, staging or scratch folder is left behind.
+    leftover=$(find "$out" -name '.*')
+    [ -z "$leftover" ] || fail "left behind: $leftover"
     ;;
 plugin)
     # Its views: the scene's camera, and the same camera given as a user's camera file.
-    "$qs" study "$plane" --plugin "$plugin" --shader my_stripes --views camera,"$plane" --modes fine $small -o "$out" ||
+    "$qs" study "$plane" --plugin "$plugin" --shader stripes --views camera,"$plane" --modes fine $small -o "$out" ||
         fail "exit $?"
     csv=$out/study.csv
-    below "$(field "$csv" '^my_stripes,camera,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
-    below "$(field "$csv" '^my_stripes,table-1.1-plane,fine,' rms_vs_llvmpipe)" 0.002 ||
+    below "$(field "$csv" '^stripes,camera,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
+    below "$(field "$csv" '^stripes,table-1.1-plane,fine,' rms_vs_llvmpipe)" 0.002 ||
         fail "the camera file's view departs"
-    own=$(field "$csv" '^my_stripes,camera,fine,' rms_vs_truth)
-    [ "$own" = "$(field "$csv" '^my_stripes,table-1.1-plane,fine,' rms_vs_truth)" ] ||
+    own=$(field "$csv" '^stripes,camera,fine,' rms_vs_truth)
+    [ "$own" = "$(field "$csv" '^stripes,table-1.1-plane,fine,' rms_vs_truth)" ] ||
         fail "the scene's own camera, given as a file, sees another image"
     check_report "$out" 6
     ;;
 glsl)
-    "$qs" study "$plane" --glsl "$src/examples/my-shader/my_stripes.frag" --views minified --modes fine,dual2 $small \
+    "$qs" study "$plane" --glsl "$src/examples/minimal/stripes.frag" --views minified --modes fine,dual2 $small \
         -o "$out" || fail "exit $?"
     csv=$out/study.csv
-    below "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
+    below "$(field "$csv" '^stripes.frag,minified,fine,' rms_vs_llvmpipe)" 0.002 || fail "fine departs from llvmpipe"
     # Minified stripes: the analytic width filters them, the quads' fwidth of a folded ramp does not.
-    below "$(field "$csv" '^my_stripes.frag,minified,dual2,' rms_vs_truth)" \
-        "$(field "$csv" '^my_stripes.frag,minified,fine,' rms_vs_truth)" ||
+    below "$(field "$csv" '^stripes.frag,minified,dual2,' rms_vs_truth)" \
+        "$(field "$csv" '^stripes.frag,minified,fine,' rms_vs_truth)" ||
             fail "dual2 is not closer to the truth than fine"
     check_report "$out" 5
     ;;
@@ -157,6 +160,13 @@ refused)
     "$expect" 2 '--study: --shader goes on the file' "$qs" study --study "$out/bad-study.txt" --shader dots_aa \
         -o "$out/h" ||
         fail "not refused as expected"
+    # An output over an input, and a link where the study makes a folder of its own.
+    mkdir -p "$out/i" "$out/j" "$out/elsewhere" && ln -s "$out/elsewhere" "$out/j/images" &&
+    printf '%s\n' "$plane --shader dots_aa" > "$out/i/study.csv" &&
+    "$expect" 2 'study.csv: an input of this study' "$qs" study --study "$out/i/study.csv" -o "$out/i" &&
+    "$expect" 1 'images: is a symbolic link' "$qs" study "$plane" --shader dots_aa --no-reference $small -o "$out/j" ||
+        fail "outputs over inputs not refused"
+    [ -z "$(ls -A "$out/elsewhere")" ] || fail "written through a link"
     ls "$out"/*/report.html 2> /dev/null && fail "a refused study wrote a report"
     ;;
 *) fail "unknown case" ;;

@@ -91,7 +91,7 @@ const std::set<std::string> kReassociatedByMesa = {"hash_hoskins", "lawlor_mande
 
 TEST_CASE("every catalogue shader's GLSL renders as its translation does, under each rule", "[interpreter]") {
     std::vector<Scene> scenes;
-    for (const auto& f : {test::kPlane, test::kSeed004Plane, test::kSphere, test::kSeed001Spheres}) scenes.push_back(load_scene(f));
+    for (const auto& f : {test::kPlane, test::kLawlorPlane, test::kSphere, test::kProcTexGenSpheres}) scenes.push_back(load_scene(f));
     struct Mode {
         const char* what;
         Derivatives derivatives;
