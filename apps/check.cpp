@@ -1,10 +1,5 @@
 #include "apps/check.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -22,14 +17,13 @@
 #include "raster/driver_settings.h"
 #include "render/frame_image.h"
 #include "render/memory_plan.h"
+#include "render/reference_process.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "scenes/output_file.h"
 #include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
-
-extern char** environ;
 
 namespace qs {
 
@@ -83,13 +77,6 @@ bool meets(const CaseCounts& n, const Bar& bar) {
 
 // ---- where things are ------------------------------------------------------------------------
 
-fs::path executable_folder() {
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) throw std::runtime_error("cannot find the quadshade executable (/proc/self/exe): " + ec.message());
-    return exe.parent_path();
-}
-
 bool is_scene_file(const fs::path& p) {
     std::string ext = p.extension().string();
     for (char& c : ext) c = char(std::tolower((unsigned char)c));
@@ -140,37 +127,6 @@ std::vector<fs::path> default_scenes() {
     if (!fs::exists(plane)) throw std::runtime_error(plane.string() + ": the Table 1.1 plane is missing (an incomplete installation?)");
     files.push_back(plane);
     return files;
-}
-
-// ---- the reference, a separate process -------------------------------------------------------
-
-// Runs `argv` with its output going to `log`; returns its exit status (or 128 + the signal).
-int run_process(const std::vector<std::string>& argv, const fs::path& log) {
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_t pid = 0;
-    const int err = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (err != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(err));
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) throw std::runtime_error("waiting for " + argv[0] + ": " + std::strerror(errno));
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-std::string read_text(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    std::string text = s.str();
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    return text;
 }
 
 // ---- cases -----------------------------------------------------------------------------------
@@ -353,12 +309,7 @@ struct Checker {
 }  // namespace
 
 int run_check(const CheckRequest& request) {
-    Checker checker{request, executable_folder() / "quadshade-reference", request.output / "glsl", {}, {}, {}, nullptr,
-                    1};
-    if (::access(checker.reference.c_str(), X_OK) != 0) {
-        throw std::runtime_error(checker.reference.string() + ": quadshade-reference is not beside quadshade (built with "
-                                 "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); check needs it");
-    }
+    Checker checker{request, reference_executable("check"), request.output / "glsl", {}, {}, {}, nullptr, 1};
     const std::vector<const Program*> programs = shaders_of(request);
     checker.files = request.scenes.empty() ? default_scenes() : named_scenes(request.scenes);
     std::vector<Case> cases;

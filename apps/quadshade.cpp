@@ -17,6 +17,7 @@
 
 #include "apps/bake_commands.h"
 #include "apps/check.h"
+#include "apps/study_command.h"
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
@@ -400,6 +401,11 @@ int main(int argc, char** argv) {
         "bake", "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
                 "mesh drawn with the baked texture");
     add_bake_options(*bake_cmd, bake);
+    StudyArgs study;
+    CLI::App* study_cmd = app.add_subcommand(
+        "study", "measure a shader's error against its run time under every derivative, anti-aliasing\n"
+                 "and precision mode, on the scene's camera and generated views; writes CSV and a report");
+    add_study_options(*study_cmd, study);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -417,6 +423,7 @@ int main(int argc, char** argv) {
                                                   : volume_cmd->parsed() ? volume.plugins
                                                   : gallery_cmd->parsed() ? gallery.plugins
                                                   : bake_cmd->parsed()   ? bake.plugins
+                                                  : study_cmd->parsed()  ? study.plugins
                                                                          : shader_plugins;
         for (const std::string& plugin : plugins) {
             for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
@@ -428,6 +435,7 @@ int main(int argc, char** argv) {
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
         if (gallery_cmd->parsed()) return cmd_gallery(gallery);
         if (bake_cmd->parsed()) return cmd_bake(bake);
+        if (study_cmd->parsed()) return cmd_study(study);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

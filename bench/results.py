@@ -18,7 +18,7 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   interpreter  STUDY_DIR/interpreter.md              (quadshade-bench-throughput --interpreted)
   guard        STUDY_DIR/compare-builds.md           (bench/compare-builds, run-study --previous);
                a study run without --previous says so in the block
-  error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
+  error        STUDY_DIR/study.csv              (quadshade study --study bench/study.txt)
   bake, bake-seams, bake-normals, bake-lit
                STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
                                                                         (quadshade-bench-bake)
