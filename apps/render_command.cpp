@@ -252,6 +252,9 @@ int cmd_render(RenderArgs& a) {
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
 
     for (const std::string& plugin : a.plugins) load_plugin(plugin);
+    // The libraries first, so that the frames' times are the render's own.
+    load_image_library();
+    load_libraries(req);
     Scene scene = load_scene(a.scene, a.load);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {

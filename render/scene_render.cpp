@@ -202,6 +202,14 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ren
                    &raster_memory_);
 }
 
+void load_libraries(const FrameRequest& request) {
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (request.backend == Backend::RayCaster) EmbreeScene::load_library();
+#else
+    (void)request;  // the SceneRenderer refuses the ray caster
+#endif
+}
+
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats) {
     Framebuffer fb;
     render_frame_into(fb, scene, request, stats);

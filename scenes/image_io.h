@@ -1,5 +1,5 @@
 #pragma once
-// Image files through OpenImageIO (the only file that includes it is image_io.cpp): reading
+// Image files through OpenImageIO (behind image_library.h, loaded on first use): reading
 // textures and images to compare (regular files only, their size checked on the header before
 // anything is decoded), writing renders safely (a temporary file, every write checked, renamed
 // into place: see temporary_file.h), in one piece or row band by row band, and comparing images.
@@ -38,6 +38,12 @@ struct ImageReadLimits {
     std::uint64_t max_file_bytes = std::uint64_t(1) << 31;
     bool follow_symlink = true;  // false for files a scene names (their links are resolved already)
 };
+
+// Loads OpenImageIO (a module of its own: image_library.h), as the first image read or written
+// does. Throws ImageError naming it when it cannot be loaded. A command that will write an image
+// calls it first, so that its frame times and memory measurements do not count the library's
+// own start-up.
+void load_image_library();
 
 // Reads PNG, JPEG, OpenEXR, TIFF and HDR files, the format named by the extension;
 // grey/RGB are expanded to RGBA (alpha 1). Only regular files are opened (never a FIFO or
