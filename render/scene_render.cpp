@@ -11,9 +11,18 @@
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
+#include "raycast/screen_footprint.h"
 #endif
 
 namespace qs {
+
+namespace {
+
+// What the ray caster holds per triangle: world positions, planes, the footprint on screen and
+// Embree's BVH. Measured, rounded up (docs/results.md, "The cost of one call").
+constexpr std::uint64_t kRayCastBytesPerTriangle = 512;
+
+}  // namespace
 
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override) {
     const std::string& name = shader_override.empty() ? object.shader : shader_override;
@@ -70,7 +79,11 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
                          (dims == 3 ? " (a 3D texture's binding gives its depth)" : ""));
     }
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
-    if (!t) t = load_texture(scene_, source);
+    if (!t) {
+        std::uint64_t loading = 0;
+        t = load_texture(scene_, source, &loading);
+        texture_loading_ = std::max(texture_loading_, loading);
+    }
     return *t;
 }
 
@@ -179,7 +192,29 @@ std::uint64_t SceneRenderer::frame_bytes(int rows) const {
     // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
     // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
     constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
-    return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+    std::uint64_t bytes = pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (caster_) bytes += BlockCoverage::bytes(width_, rows);  // what the rays of each 4x4 block may hit
+#endif
+    return bytes;
+}
+
+SceneRenderer::HeldBytes SceneRenderer::held_bytes() const {
+    HeldBytes held;
+    std::uint64_t triangles = 0;
+    for (const Mesh& m : scene_.meshes) {
+        held.scene += m.vertices.capacity() * sizeof(Vertex) + m.indices.capacity() * sizeof(std::uint32_t);
+    }
+    for (const DrawCall& d : draws_) triangles += d.indices.size() / 3;
+    for (const Texture& t : scene_.textures) held.scene += t.image.bytes.capacity();
+    for (const std::vector<VertexIn>& v : vertices_) held.scene += v.capacity() * sizeof(VertexIn);
+    for (const std::vector<std::uint32_t>& words : uniform_words_) held.scene += words.capacity() * sizeof(std::uint32_t);
+    if (caster_) held.scene += triangles * kRayCastBytesPerTriangle;
+    for (const std::unique_ptr<glsl::Texture>& t : textures_) {
+        if (t) held.textures += t->texels.capacity() * sizeof(std::uint32_t) + t->levels.capacity() * sizeof(glsl::Texture::Level);
+    }
+    held.texture_loading = texture_loading_;
+    return held;
 }
 
 void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RenderStats* stats, RowBand band) {

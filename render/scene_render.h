@@ -75,8 +75,16 @@ public:
 
     // Bytes a render of `rows` rows holds while it runs: the framebuffer's colour, depth (where
     // a draw tests it) and undefined-case mask, and the vertex stage's and triangle setup's
-    // working memory. Textures are loaded (and counted by the caller) already.
+    // working memory. What the renderer holds for every frame is held_bytes().
     std::uint64_t frame_bytes(int rows) const;
+    // What the renderer holds beside its frames, counted from what it loaded: the scene (its
+    // meshes and embedded images, the draw calls' vertices, the ray caster's BVH) and the
+    // sampled textures with their mipmaps; and the most that loading a texture held beside
+    // those (its file, the decoded image and its RGBA copy), freed since.
+    struct HeldBytes {
+        std::uint64_t scene = 0, textures = 0, texture_loading = 0;
+    };
+    HeldBytes held_bytes() const;
     // What the scene asks that renders, but probably not as its author meant (a shader reading
     // texture coordinates on a mesh without them), one line each, for the command line to warn.
     const std::vector<std::string>& notes() const { return notes_; }
@@ -91,6 +99,7 @@ private:
     int width_, height_;
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
+    std::uint64_t texture_loading_ = 0;                     // held_bytes().texture_loading
     std::vector<DrawCall> draws_;
     std::vector<std::unique_ptr<Program>> atlas_programs_;  // per draw with FrameRequest::atlas
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user

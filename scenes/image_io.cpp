@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iterator>
 #include <memory>
+#include <thread>
 
 #include "modules/module_loader.h"
 #include "scenes/image_checks.h"
@@ -159,7 +160,7 @@ Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::
     return img;
 }
 
-Image8 read_texture_image(const ImageSource& source) {
+Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes) {
     ImageReadLimits limits;
     limits.max_side = limits::kTextureSide;
     limits.max_pixels = limits::kTextureTexels;
@@ -199,6 +200,10 @@ Image8 read_texture_image(const ImageSource& source) {
         d[1] = nc >= 3 ? s[1] : s[0];
         d[2] = nc >= 3 ? s[2] : s[0];
         d[3] = nc >= 4 ? s[3] : (nc == 2 ? s[1] : 255);
+    }
+    if (decoding_bytes) {
+        const std::uint64_t stored = spec.channel_bytes == 1 ? 0 : pixels * std::uint64_t(spec.channels * spec.channel_bytes);
+        *decoding_bytes = file_bytes.size() + stored + data.size() + img.rgba.size();
     }
     return img;
 }
@@ -244,8 +249,16 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
 ImageWriter::~ImageWriter() = default;
 
 std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha) {
-    const std::uint64_t values = std::uint64_t(width) * std::uint64_t(rows) * (alpha ? 4u : 3u);
-    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1));
+    const std::uint64_t channels = alpha ? 4u : 3u, values = std::uint64_t(width) * std::uint64_t(rows) * channels;
+    std::uint64_t encoder = 0;
+    if (lowercase_extension(path) == ".exr") {
+        // OpenEXR keeps two line buffers per thread of its pool (one thread per core), each of 16
+        // rows of the file's pixels, and its ZIP compressor two more of that size for each:
+        // 8192x64 float RGB took 13.3 MiB more than as TIFF.
+        const std::uint64_t buffers = 2 * std::max(1u, std::thread::hardware_concurrency());
+        encoder = buffers * 3 * 16 * std::uint64_t(width) * channels * sizeof(float);
+    }
+    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1)) + encoder;
 }
 
 void ImageWriter::write_rows(int rows, const float* rgba) {

@@ -65,8 +65,10 @@ struct Image8 {
 // RGBA (alpha 255), deeper channels rounded to 8 bits. A file is read as read_image reads one
 // (a regular file, the reader its extension names) and embedded bytes by their MIME type; both
 // within the texture limits of scenes/limits.h, checked on the header. Throws ImageError naming
-// the file (or the embedded image's kind) when it cannot be read.
-Image8 read_texture_image(const ImageSource& source);
+// the file (or the embedded image's kind) when it cannot be read. `decoding_bytes`, when given,
+// receives the most the decoding held at once: the file, the samples as stored (when not 8-bit)
+// and as 8-bit, and the RGBA image.
+Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes = nullptr);
 
 // Bytes an image of width x height takes as read_image's result at its peak (decoded channels
 // and the RGBA copy), for checking memory before reading.
@@ -89,7 +91,7 @@ public:
     void commit();
 
     // Bytes write_rows needs beside its input for `rows` rows (the conversion to the file's
-    // channels and type).
+    // channels and type), and the encoder's own buffers.
     static std::uint64_t conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha);
 
 private:

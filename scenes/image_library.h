@@ -21,6 +21,7 @@ namespace qs::image_library {
 // An image's header: its size and channels.
 struct ImageShape {
     int width = 0, height = 0, depth = 0, channels = 0;
+    int channel_bytes = 0;  // of one sample as stored: 1 (8-bit), 2 (16-bit, half), 4 (float)
 };
 
 // An image opened from bytes in memory (which must outlive it), its header read, no pixel decoded.

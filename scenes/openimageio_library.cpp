@@ -24,7 +24,7 @@ public:
         : memory_(std::move(memory)), in_(std::move(in)) {}
     ImageShape shape() const override {
         const OIIO::ImageSpec& s = in_->spec();
-        return {s.width, s.height, s.depth, s.nchannels};
+        return {s.width, s.height, s.depth, s.nchannels, int(s.format.size())};
     }
     bool read(int channels, float* out) override {
         return in_->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, out);
