@@ -20,6 +20,7 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   bake, bake-seams, bake-normals, bake-lit
                STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
                                                                         (quadshade-bench-bake)
+  startup      STUDY_DIR/startup.md                                     (quadshade-bench-startup)
   host         this machine and the date
 Every block but `host` ends with the machine and date it was rewritten on, so that a page whose
 blocks come from different runs says which is which. A block whose input is missing is left as it
@@ -261,6 +262,7 @@ def main():
         "bake-seams": lambda: markdown_file(study, "bake-seams.md"),
         "bake-normals": lambda: markdown_file(study, "bake-normals.md"),
         "bake-lit": lambda: markdown_file(study, "bake-lit.md"),
+        "startup": lambda: markdown_file(study, "startup.md"),
     }
     with open(doc) as f:
         text = f.read()
