@@ -6,6 +6,7 @@
 
 #include "apps/command_line.h"
 #include "render/atlas_bake.h"
+#include "render/memory_plan.h"
 #include "render/volume_bake.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
@@ -65,6 +66,10 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,
                                                {{"float", Precision::Float}, {"double", Precision::Double}}, "P",
                                                "the height's evaluations for the normal map in float (default) or double");
+    cmd.add_option("--memory-limit", a.memory_limit,
+                   "memory the bake may use (e.g. 4G; default what the system has available): a larger one is\n"
+                   "refused before it starts")
+        ->option_text("SIZE");
     cmd.add_option("--skirt", a.skirt, "skirts around each UV chart, in texels (default 0: none)")
         ->check(CLI::Range(0, kMaxSkirt))->option_text("PIXELS");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
@@ -143,6 +148,11 @@ int cmd_bake(const BakeArgs& a) {
                              "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
         }
     }
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
+    load_image_library();  // the bake's memory is measured from here
+    const std::uint64_t limit = memory_limit(a.memory_limit);
+    reset_peak_resident();
+    const std::uint64_t resident_before = resident_bytes();
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
@@ -156,6 +166,22 @@ int cmd_bake(const BakeArgs& a) {
     if (normal) check_output(output.parent_path() / normal_file, scene.inputs, "-o (its normal map)");
     const Program* program = find_program(a.shader);
     if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+
+    // The scene is held three times: as loaded, as the atlas's scene and as the draw calls' vertices.
+    std::uint64_t scene_bytes = 0;
+    for (const Mesh& m : scene.meshes) {
+        scene_bytes += m.vertices.capacity() * sizeof(Vertex) + m.indices.capacity() * sizeof(std::uint32_t);
+    }
+    for (const Texture& t : scene.textures) scene_bytes += t.image.bytes.capacity();
+    AtlasBakePlanInput plan;
+    plan.size = a.size, plan.height = height, plan.normal = normal, plan.skirt = a.skirt;
+    plan.conversion_bytes = ImageWriter::conversion_bytes(color_file, a.size, a.size, true);
+    const std::uint64_t planned = kRenderOverheadBytes + 3 * scene_bytes + atlas_bake_bytes(plan);
+    if (planned > limit) {
+        throw MemoryError("a " + std::to_string(a.size) + "x" + std::to_string(a.size) + " bake of " + a.mesh +
+                          " needs " + byte_size_text(planned) + ", more than the " + byte_size_text(limit) +
+                          " it may use (--memory-limit, or what the system has available): bake it smaller");
+    }
 
     AtlasRequest req;
     req.size = a.size;
@@ -222,7 +248,10 @@ int cmd_bake(const BakeArgs& a) {
                  a.size, a.size, color_ms, color_file.c_str());
     if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
     if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
-    std::fputc('\n', stderr);
+    const std::uint64_t peak = peak_resident_bytes();
+    std::fprintf(stderr, ", peak memory %s (planned %s)\n",
+                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
+                 byte_size_text(planned).c_str());
     return 0;
 }
 

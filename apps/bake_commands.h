@@ -36,6 +36,7 @@ struct BakeArgs {
     Derivatives derivatives = Derivatives::Fine;
     int threads = 0;
     bool allow_outside = false;
+    std::string memory_limit;  // empty: what the system has available
     // The normal map (--maps normal): how, and the finite differences' step.
     CLI::Option* normals_option = nullptr;
     NormalMethod normals = NormalMethod::Analytic;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "render/normal_bake.h"
 #include "scenes/scene_files.h"
 
 namespace qs {
@@ -107,6 +108,22 @@ std::uint64_t parse_byte_size(const std::string& text) {
         }
     }
     throw std::invalid_argument("unknown unit in size '" + text + "' (use K, M, G or T)");
+}
+
+std::uint64_t atlas_bake_bytes(const AtlasBakePlanInput& in) {
+    const std::uint64_t texels = std::uint64_t(in.size) * std::uint64_t(in.size);
+    const std::uint64_t map = 4 * sizeof(float);
+    // render_frame's colour and depth, and flip_rows's copy of the colour.
+    const std::uint64_t atlas = sizeof(float) * 5 + map;
+    const std::uint64_t normal_texel = sizeof(std::uint32_t) + 4 * sizeof(glm::dvec3)  // AtlasTexels
+                                       + sizeof(glm::dvec3)                             // surface_normals
+                                       + map * (in.skirt > 0 ? 2 : 1);                  // the map, its skirt pass
+    std::uint64_t per_texel = atlas;                                  // the colour
+    if (in.height) per_texel = std::max(per_texel, map + atlas);      // the height beside it
+    const std::uint64_t held = map * (in.height ? 2 : 1);
+    if (in.normal) per_texel = std::max(per_texel, held + normal_texel);
+    const std::uint64_t maps = 1 + (in.height ? 1 : 0) + (in.normal ? 1 : 0);
+    return std::max(texels * per_texel, texels * map * maps + in.conversion_bytes);
 }
 
 std::vector<RowBand> plan_bands(const MemoryPlanInput& in) {

@@ -49,6 +49,19 @@ struct MemoryPlanInput {
     bool can_band = false;                                  // the outputs can be written band by band
 };
 
+// The most a bake of a size x size atlas holds at once beside the scene and kRenderOverheadBytes:
+// the colour atlas's frame and its flipped copy, then the height's beside it, then the normal
+// map's texels (atlas_texels, every texel taken as covered), normals, image and its skirt copy,
+// then the maps held while each is converted for its file (`conversion_bytes` of one map). A bake
+// is not banded: one larger than its limit is refused.
+struct AtlasBakePlanInput {
+    int size = 0;
+    bool height = false, normal = false;
+    int skirt = 0;
+    std::uint64_t conversion_bytes = 0;
+};
+std::uint64_t atlas_bake_bytes(const AtlasBakePlanInput& in);
+
 // The bands to render a frame in: one for the whole image when it fits in band_budget (or can
 // only be written whole and fits in what `held` leaves of limit), else the fewest bands whose rows
 // each fit in min(limit - held, band_budget). Throws MemoryError giving the size needed (held

@@ -41,6 +41,10 @@ AtlasTexels atlas_texels(const Scene& scene, int size) {
     AtlasTexels out;
     out.size = size;
     std::vector<bool> owned(std::size_t(size) * std::size_t(size), false);
+    // Room for every texel, so that growing never holds two copies (what a bake's memory plan
+    // counts: atlas_bake_bytes); the pages of texels not covered are never touched.
+    for (auto* v : {&out.position, &out.normal, &out.tangent, &out.bitangent}) v->reserve(owned.size());
+    out.texel.reserve(owned.size());
     for (const Object& o : scene.objects) {
         const Mesh& mesh = scene.meshes[o.mesh];
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {

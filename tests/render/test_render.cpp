@@ -237,6 +237,39 @@ TEST_CASE("a render's measured peak memory is within its plan, and a banded one 
     }
 }
 
+TEST_CASE("a bake's measured peak memory is within its plan; one over --memory-limit is refused with nothing written",
+          "[render][memory][bake]") {
+    const auto dir = temp_dir("bake-memory-plan");
+    const std::string bake = (kBin / "quadshade").string() + " bake " +
+                             (kSource / "scenes/assets/bake/atlas-sphere.gltf").string() + " --shader noise_bumps";
+    auto run = [&](const std::string& args) {
+        const std::string cmd = bake + " " + args + " 2> " + (dir / "err.txt").string();
+        const int status = std::system(cmd.c_str());
+        std::ifstream in(dir / "err.txt");
+        return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                              std::string((std::istreambuf_iterator<char>(in)), {}));
+    };
+    static const std::regex memory(R"(peak memory ([0-9.]+ [A-Za-z]+) \(planned ([0-9.]+ [A-Za-z]+)\))");
+    for (const char* maps : {"color", "color,height,normal"}) {
+        const auto [status, summary] = run(std::string("--size 512 --skirt 1 --maps ") + maps + " -o " +
+                                           (dir / "baked.gltf").string());
+        INFO(summary);
+        REQUIRE(status == 0);
+        std::smatch m;
+        REQUIRE(std::regex_search(summary, m, memory));
+        const double measured = size_in_bytes(m[1]), planned = size_in_bytes(m[2]);
+        CHECK(measured > 4e6);  // the atlas was measured
+        CHECK(planned >= measured);
+        CHECK(planned <= 1.5 * measured + 2e6);
+    }
+    const auto [status, message] = run("--size 512 --memory-limit 4M -o " + (dir / "refused.gltf").string());
+    CHECK(status == 1);
+    CHECK(message.find("a 512x512 bake of") != std::string::npos);
+    CHECK(message.find("more than the 4.0 MiB it may use") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "refused.gltf"));
+    CHECK_FALSE(std::filesystem::exists(dir / "refused-color.png"));
+}
+
 #endif
 
 TEST_CASE("a 2000-frame animation holds its resident memory flat", "[render][soak]") {
