@@ -179,6 +179,15 @@ def markdown_file(study, name):
         return [l.rstrip() for l in f if l.strip().startswith("|")]
 
 
+def table_and_notes(study, name):
+    """A table with the lines after it that say how it was measured (runs, load)."""
+    path = os.path.join(study, name)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return [l.rstrip() for l in f.read().strip().splitlines()]
+
+
 def pareto_front(rows):
     front = []
     for r in sorted(rows, key=lambda r: (r["ms"], r["rms_vs_truth"])):
@@ -262,7 +271,7 @@ def main():
         "bake-seams": lambda: markdown_file(study, "bake-seams.md"),
         "bake-normals": lambda: markdown_file(study, "bake-normals.md"),
         "bake-lit": lambda: markdown_file(study, "bake-lit.md"),
-        "startup": lambda: markdown_file(study, "startup.md"),
+        "startup": lambda: table_and_notes(study, "startup.md"),
     }
     with open(doc) as f:
         text = f.read()
