@@ -15,6 +15,7 @@ namespace qs::app {
 
 struct VolumeArgs {
     std::string shader, output, scene;
+    std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
     int size = 32;
     std::optional<double> time;
     std::vector<std::string> uniforms, plugins;
@@ -24,10 +25,11 @@ struct VolumeArgs {
 };
 
 void add_volume_options(CLI::App& cmd, VolumeArgs& a);
-int cmd_bake_volume(const VolumeArgs& a);
+int cmd_bake_volume(VolumeArgs a);
 
 struct BakeArgs {
     std::string mesh, shader, output;
+    std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
     int size = 1024;
     std::vector<std::string> maps{"color"};
     int skirt = 0;
@@ -36,16 +38,16 @@ struct BakeArgs {
     Derivatives derivatives = Derivatives::Fine;
     int threads = 0;
     bool allow_outside = false;
-    std::string memory_limit;  // empty: what the system has available
     // The normal map (--maps normal): how, and the finite differences' step.
     CLI::Option* normals_option = nullptr;
     NormalMethod normals = NormalMethod::Analytic;
     CLI::Option* precision_option = nullptr;
     Precision normal_precision = Precision::Float;
     std::optional<double> normal_step;
+    std::string memory_limit;  // empty: what the system has available
 };
 
 void add_bake_options(CLI::App& cmd, BakeArgs& a);
-int cmd_bake(const BakeArgs& a);
+int cmd_bake(BakeArgs a);
 
 }  // namespace qs::app

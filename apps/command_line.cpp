@@ -1,8 +1,12 @@
 #include "apps/command_line.h"
 
 #include <cmath>
+#include <cstdio>
 
+#include "interpreter/glsl_program.h"
+#include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
+#include "scenes/output_file.h"
 
 namespace qs::app {
 
@@ -14,12 +18,24 @@ fs::path resolved(const fs::path& p) {
     return ec ? p.lexically_normal() : folder / p.filename();
 }
 
-void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option) {
-    if (fs::is_directory(output)) throw UsageError(std::string(option) + " " + output.string() + ": is a folder; give a file name");
+void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option, Streams streams) {
+    try {
+        output_place(output, streams);
+    } catch (const OutputError& e) {
+        throw UsageError(std::string(option) + " " + e.what());
+    }
     for (const fs::path& in : inputs) {
         if (output.filename() == in.filename() && resolved(output) == in) {
             throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
         }
+    }
+}
+
+void check_output(const fs::path& output, const InputFiles& inputs, const char* option, Streams streams) {
+    check_output(output, std::vector<fs::path>{}, option, streams);
+    if (inputs.contains(output)) {
+        throw UsageError(std::string(option) + " " + output.string() +
+                         ": is an input of this command; it would be overwritten");
     }
 }
 
@@ -33,6 +49,34 @@ const CLI::Validator kFinite(
 void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins) {
     cmd.add_option("--plugin", plugins, "load a shader plugin (quadshade_add_shader_plugin) first; repeatable")
         ->option_text("LIB")->allow_extra_args(false);
+}
+
+void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex) {
+    cmd.add_option("--glsl", fragment,
+                   "draw every object with this GLSL fragment shader, run as written\n"
+                   "(docs/glsl.md); its vertex shader is --vert's, or one written for it")
+        ->option_text("FRAG");
+    cmd.add_option("--vert", vertex, "the GLSL vertex shader for --glsl")->option_text("VERT");
+}
+
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, std::string& shader) {
+    if (fragment.empty()) {
+        if (!vertex.empty()) throw UsageError("--vert: give the fragment shader with --glsl");
+        return nullptr;
+    }
+    if (!shader.empty()) throw UsageError("--glsl and --shader: give one shader to draw with");
+    const GlslShader s = load_glsl_shader(fragment, vertex.empty() ? std::nullopt : std::optional<fs::path>(vertex));
+    for (const std::string& w : s.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
+    shader = std::string(s.program->info().name);
+    return s.program;
+}
+
+void warn_loop_limit(const Program* program) {
+    const auto* glsl = dynamic_cast<const interpreter::GlslProgram*>(program);
+    if (glsl && glsl->reached_loop_limit()) {
+        std::fprintf(stderr, "quadshade: warning: %s: a loop ran 65535 iterations and was left there, as llvmpipe leaves it\n",
+                     std::string(program->info().name).c_str());
+    }
 }
 
 std::uint64_t memory_limit(const std::string& option) {

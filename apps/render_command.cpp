@@ -40,12 +40,19 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
            "--size", [&r](const std::vector<int>& v) { r.width = v[0], r.height = v[1]; },
            "image size (default: the scene's, e.g. 1264x400 for Figure 1.1)")
         ->delimiter('x')->expected(2)->check(CLI::Range(1, 1 << 15))->option_text("WxH");
-    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--time", r.time, "the `time` uniform and the animations' time, in seconds (default: the scene's)")
+        ->check(kFinite)
+        ->option_text("T");
     cmd.add_option("--frames", a.frames, "render frames A..B (inclusive) at time = frame / fps")
         ->delimiter(':')->check(CLI::Range(0, 1000000))->option_text("A:B");
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    cmd.add_option("--camera", a.load.camera,
+                   "the camera to render from: a camera node's or camera's name, or an\n"
+                   "index into the file's cameras[] (default: the first camera node)")
+        ->option_text("NAME|INDEX");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--uniform", a.uniforms,
                    "a shader's own uniform, for every object whose shader declares it\n"
@@ -250,7 +257,7 @@ int cmd_render(RenderArgs& a) {
     FrameRequest& req = a.request;
     if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
     req.shading.check_undefined = !a.mask_output.empty();
-    if (req.shading.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
+    if (req.shading.check_undefined && !a.animated() && resolved(a.mask_output) == resolved(a.output)) {
         throw UsageError("--undefined-mask: the same file as -o");
     }
     refuse_unsupported(a);
@@ -266,8 +273,22 @@ int cmd_render(RenderArgs& a) {
     };
     path_of(a.output, first);  // a bad pattern is refused before anything is read
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
+    if (!a.mask_output.empty() && a.animated()) {
+        // Every frame's name under both patterns: no mask may be written over any frame's image.
+        const std::string image = resolved_pattern(a.output), mask = resolved_pattern(a.mask_output);
+        for (int f = first; f <= last; ++f) {
+            if (const std::optional<int> g = frame_named(mask, frame_path(image, f), first, last)) {
+                throw UsageError("--undefined-mask: frame " + std::to_string(*g) +
+                                 "'s mask would be written over frame " + std::to_string(f) + "'s image " +
+                                 path_of(a.output, f));
+            }
+        }
+    }
 
-    for (const std::string& plugin : a.plugins) load_plugin(plugin);
+    for (const std::string& plugin : a.plugins) {
+        for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+    }
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
     // The libraries first: the render's memory is measured from here, and its plan is checked
     // against what is left.
     load_image_library();
@@ -276,7 +297,8 @@ int cmd_render(RenderArgs& a) {
     reset_peak_resident();
     const std::uint64_t resident_before = resident_bytes();
     Scene scene = load_scene(a.scene, a.load);
-    for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
+    for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
+    check_programs(scene, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {
         check_output(path_of(a.output, f), scene.inputs, "-o");
         if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");
@@ -320,6 +342,7 @@ int cmd_render(RenderArgs& a) {
     std::fprintf(stderr, ", peak memory %s (planned %s)\n",
                  byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
                  byte_size_text(plan.peak_bytes).c_str());
+    warn_loop_limit(glsl);
     if (!a.mask_output.empty()) {
         std::fprintf(stderr,
                      "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "

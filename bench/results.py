@@ -5,7 +5,8 @@ usage: bench/results.py BUILD_DIR STUDY_DIR RESULTS_MD
 
 docs/results.md is prose around tables; each table sits between `<!-- results:NAME -->` and
 `<!-- /results -->` and is replaced by what this script makes from:
-  mesa         BUILD_DIR/reference-comparison-{llvmpipe,softpipe}.csv   (ctest: test_reference)
+  mesa         BUILD_DIR/reference-comparison-{llvmpipe,llvmpipe-interpreted,softpipe}.csv
+                                                                        (ctest: test_reference)
   conformance  BUILD_DIR/conformance/SCENE-{llvmpipe,softpipe}.csv      (ctest: test_conformance_*)
   textures     BUILD_DIR/conformance/textures-{llvmpipe,softpipe}.csv   (test_conformance_* "[textures]",
                every case in one process: bench/run-study runs them so)
@@ -14,6 +15,7 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   throughput, frame
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   scaling      STUDY_DIR/scaling.md                  (quadshade-bench-throughput --scaling)
+  interpreter  STUDY_DIR/interpreter.md              (quadshade-bench-throughput --interpreted)
   guard        STUDY_DIR/compare-builds.md           (bench/compare-builds, run-study --previous);
                a study run without --previous says so in the block
   error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
@@ -62,13 +64,18 @@ def mesa_table(build):
         return None
     lp = OrderedDict((r["case"], r) for r in read_csv(paths[0]))
     sp = {r["case"]: r for r in read_csv(paths[1])}
+    interpreted_path = os.path.join(build, "reference-comparison-llvmpipe-interpreted.csv")
+    ip = {r["case"]: r for r in read_csv(interpreted_path)} if os.path.exists(interpreted_path) else {}
     out = ["| case | pixels | vs llvmpipe, `fine`: >1/255 · >2/255 · max · coverage | "
+           "its GLSL run by the interpreter vs llvmpipe: >1/255 · >2/255 · max · coverage | "
            "vs softpipe, `coarse-lower` + `right-top` + `separate`: >1/255 · >2/255 · max · coverage |",
-           "|---|---|---|---|"]
+           "|---|---|---|---|---|"]
     for case, r in lp.items():
         s = sp.get(case)
         soft = f"{counts(s)} · {s['coverage_mismatch']}" if s else "-"
-        out.append(f"| {case} | {r['pixels']} | {counts(r)} · {r['coverage_mismatch']} | {soft} |")
+        i = ip.get(case)
+        interpreted = f"{counts(i)} · {i['coverage_mismatch']}" if i else "-"
+        out.append(f"| {case} | {r['pixels']} | {counts(r)} · {r['coverage_mismatch']} | {interpreted} | {soft} |")
     return out
 
 
@@ -265,6 +272,7 @@ def main():
         "throughput": lambda: markdown_file(study, "throughput.md"),
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
         "scaling": lambda: markdown_file(study, "scaling.md"),
+        "interpreter": lambda: markdown_file(study, "interpreter.md"),
         "guard": lambda: guard_table(study),
         "error": lambda: error_table(study),
         "bake": lambda: markdown_file(study, "bake.md"),

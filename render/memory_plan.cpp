@@ -11,7 +11,7 @@
 #include <optional>
 #include <sstream>
 
-#include "render/normal_bake.h"
+#include "scenes/scene.h"
 #include "scenes/scene_files.h"
 
 namespace qs {
@@ -93,8 +93,9 @@ std::uint64_t parse_byte_size(const std::string& text) {
     if (!(in >> number) || !std::isfinite(number) || number < 0.0) {
         throw std::invalid_argument("expected a size such as 512M or 8G, got '" + text + "'");
     }
-    std::string unit;
+    std::string unit, rest;
     in >> unit;
+    if (in >> rest) throw std::invalid_argument("expected a size such as 512M or 8G, got '" + text + "'");
     std::transform(unit.begin(), unit.end(), unit.begin(), [](unsigned char c) { return char(std::toupper(c)); });
     static const std::pair<const char*, double> units[] = {{"", 1.0}, {"B", 1.0}, {"K", 0x1p10}, {"KB", 0x1p10},
                                                            {"KIB", 0x1p10}, {"M", 0x1p20}, {"MB", 0x1p20}, {"MIB", 0x1p20},
@@ -110,20 +111,13 @@ std::uint64_t parse_byte_size(const std::string& text) {
     throw std::invalid_argument("unknown unit in size '" + text + "' (use K, M, G or T)");
 }
 
-std::uint64_t atlas_bake_bytes(const AtlasBakePlanInput& in) {
-    const std::uint64_t texels = std::uint64_t(in.size) * std::uint64_t(in.size);
-    const std::uint64_t map = 4 * sizeof(float);
-    // render_frame's colour and depth, and flip_rows's copy of the colour.
-    const std::uint64_t atlas = sizeof(float) * 5 + map;
-    const std::uint64_t normal_texel = sizeof(std::uint32_t) + 4 * sizeof(glm::dvec3)  // AtlasTexels
-                                       + sizeof(glm::dvec3)                             // surface_normals
-                                       + map * (in.skirt > 0 ? 2 : 1);                  // the map, its skirt pass
-    std::uint64_t per_texel = atlas;                                  // the colour
-    if (in.height) per_texel = std::max(per_texel, map + atlas);      // the height beside it
-    const std::uint64_t held = map * (in.height ? 2 : 1);
-    if (in.normal) per_texel = std::max(per_texel, held + normal_texel);
-    const std::uint64_t maps = 1 + (in.height ? 1 : 0) + (in.normal ? 1 : 0);
-    return std::max(texels * per_texel, texels * map * maps + in.conversion_bytes);
+std::uint64_t scene_bytes(const Scene& scene) {
+    std::uint64_t bytes = 0;
+    for (const Mesh& m : scene.meshes) {
+        bytes += m.vertices.capacity() * sizeof(Vertex) + m.indices.capacity() * sizeof(std::uint32_t);
+    }
+    for (const Texture& t : scene.textures) bytes += t.image.bytes.capacity();
+    return bytes;
 }
 
 std::vector<RowBand> plan_bands(const MemoryPlanInput& in) {
@@ -147,6 +141,35 @@ std::vector<RowBand> plan_bands(const MemoryPlanInput& in) {
         (in.bytes_for_rows(mid * kTileSize) <= budget ? lo : hi) = mid;
     }
     return image_bands(in.height, in.pairing, lo * kTileSize);
+}
+
+MemoryBudget::MemoryBudget(std::uint64_t limit) : limit_(limit) {}
+
+MemoryBudget::Reservation MemoryBudget::reserve(std::uint64_t bytes, const std::string& what) {
+    if (bytes > limit_) {
+        throw MemoryError(what + " needs " + byte_size_text(bytes) + ", more than the " + byte_size_text(limit_) +
+                          " available (--memory-limit sets it)");
+    }
+    std::unique_lock lock(mutex_);
+    released_.wait(lock, [&] { return limit_ - held_ >= bytes; });
+    held_ += bytes;
+    return Reservation(this, bytes);
+}
+
+void MemoryBudget::release(std::uint64_t bytes) {
+    {
+        const std::lock_guard lock(mutex_);
+        held_ -= bytes;
+    }
+    released_.notify_all();
+}
+
+MemoryBudget::Reservation::Reservation(Reservation&& r) noexcept : budget_(r.budget_), bytes_(r.bytes_) {
+    r.budget_ = nullptr;
+}
+
+MemoryBudget::Reservation::~Reservation() {
+    if (budget_) budget_->release(bytes_);
 }
 
 }  // namespace qs

@@ -3,8 +3,10 @@
 // or is rendered in row bands (image_bands, rasterizer.h) when its output can be written band by
 // band, or is refused with a message giving the size it needs.
 
+#include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,6 +14,8 @@
 #include "raster/rasterizer.h"
 
 namespace qs {
+
+struct Scene;
 
 // What this process can still allocate without swapping or being killed: the system's
 // MemAvailable, less where a cgroup memory limit or an address-space/data rlimit is tighter.
@@ -25,7 +29,7 @@ std::uint64_t peak_resident_bytes();
 void reset_peak_resident();
 
 // A size such as "512M", "8G", "1.5GiB", "1000000" (bytes; K, M, G, T in binary units, an
-// optional "iB" or "B" after them). Throws std::invalid_argument.
+// optional "iB" or "B" after them), nothing after it. Throws std::invalid_argument.
 std::uint64_t parse_byte_size(const std::string& text);
 
 class MemoryError : public std::runtime_error {
@@ -39,6 +43,9 @@ public:
 // cost of one call"), rounded up.
 inline constexpr std::uint64_t kRenderOverheadBytes = std::uint64_t(8) << 20;
 
+// What a scene holds as loaded: its meshes' vertices and indices and its embedded images.
+std::uint64_t scene_bytes(const Scene& scene);
+
 struct MemoryPlanInput {
     int height = 0;
     QuadPairing pairing = QuadPairing::TopDown;
@@ -49,23 +56,46 @@ struct MemoryPlanInput {
     bool can_band = false;                                  // the outputs can be written band by band
 };
 
-// The most a bake of a size x size atlas holds at once beside the scene and kRenderOverheadBytes:
-// the colour atlas's frame and its flipped copy, then the height's beside it, then the normal
-// map's texels (atlas_texels, every texel taken as covered), normals, image and its skirt copy,
-// then the maps held while each is converted for its file (`conversion_bytes` of one map). A bake
-// is not banded: one larger than its limit is refused.
-struct AtlasBakePlanInput {
-    int size = 0;
-    bool height = false, normal = false;
-    int skirt = 0;
-    std::uint64_t conversion_bytes = 0;
-};
-std::uint64_t atlas_bake_bytes(const AtlasBakePlanInput& in);
-
 // The bands to render a frame in: one for the whole image when it fits in band_budget (or can
 // only be written whole and fits in what `held` leaves of limit), else the fewest bands whose rows
 // each fit in min(limit - held, band_budget). Throws MemoryError giving the size needed (held
 // included) and the limit otherwise.
 std::vector<RowBand> plan_bands(const MemoryPlanInput& in);
+
+// Memory shared by tasks that run at once (a suite's cases, check's cases): each reserves what it
+// needs before allocating it and waits while the others hold too much of it, so that N jobs
+// never need N times what one may use; a task that could not fit even alone is refused.
+class MemoryBudget {
+public:
+    explicit MemoryBudget(std::uint64_t limit);
+    MemoryBudget(const MemoryBudget&) = delete;
+    MemoryBudget& operator=(const MemoryBudget&) = delete;
+
+    // Held bytes, given back when destroyed.
+    class Reservation {
+    public:
+        Reservation(Reservation&& r) noexcept;
+        Reservation& operator=(Reservation&&) = delete;
+        ~Reservation();
+
+    private:
+        friend class MemoryBudget;
+        Reservation(MemoryBudget* budget, std::uint64_t bytes) : budget_(budget), bytes_(bytes) {}
+        MemoryBudget* budget_;
+        std::uint64_t bytes_;
+    };
+
+    // Waits until `bytes` are free, then holds them. Throws MemoryError ("WHAT needs ..., more
+    // than the ... available") when `bytes` exceed the whole limit.
+    Reservation reserve(std::uint64_t bytes, const std::string& what);
+    std::uint64_t limit() const { return limit_; }
+
+private:
+    void release(std::uint64_t bytes);
+    const std::uint64_t limit_;
+    std::uint64_t held_ = 0;
+    std::mutex mutex_;
+    std::condition_variable released_;
+};
 
 }  // namespace qs

@@ -22,4 +22,8 @@ glsl::SamplerState sampler_state(const Sampler& sampler);
 std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture,
                                             std::uint64_t* loading_bytes = nullptr);
 
+// A 1x1 (x1) opaque white texture of `dims` dimensions: what a sampler reads where the material
+// binds no texture to it (a lookup gives (1, 1, 1, 1) at any coordinate, level and filter).
+const glsl::Texture& white_texture(int dims);
+
 }  // namespace qs

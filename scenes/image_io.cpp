@@ -133,7 +133,39 @@ std::unique_ptr<image_library::Decoder> open_image(std::span<const unsigned char
                          std::to_string(limits.max_pixels) + " pixels read here (it would take " +
                          byte_size_text(image_read_bytes(std::uint64_t(spec.width), std::uint64_t(spec.height))) + ")");
     }
+    if ((limits.width && spec.width != limits.width) || (limits.height && spec.height != limits.height)) {
+        throw ImageError(name + ": image is " + size_text(spec.width, spec.height) + ", not the " +
+                         size_text(limits.width, limits.height) + " it is compared with");
+    }
     return in;
+}
+
+// The opened image decoded to 8-bit RGBA. `decoding_bytes`, when given, receives the most the
+// decoding held beside the image it returns: the samples as stored (when not 8-bit) and as 8-bit.
+Image8 decode8(image_library::Decoder& in, const std::string& name, std::uint64_t* decoding_bytes = nullptr) {
+    const image_library::ImageShape spec = in.shape();
+    const int nc = std::min(spec.channels, 4);  // channels past RGBA are not needed
+    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<std::uint8_t> data(pixels * std::size_t(nc));
+    if (!in.read(nc, data.data())) {
+        throw ImageError(name + ": cannot decode image: " + in.error());
+    }
+    if (decoding_bytes) {
+        const std::uint64_t stored =
+            spec.channel_bytes == 1 ? 0 : pixels * std::uint64_t(spec.channels * spec.channel_bytes);
+        *decoding_bytes = stored + (nc == 4 ? 0 : data.size());
+    }
+    if (nc == 4) return Image8{spec.width, spec.height, std::move(data)};
+    Image8 img{spec.width, spec.height, std::vector<std::uint8_t>(pixels * 4)};
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const std::uint8_t* s = &data[p * std::size_t(nc)];
+        std::uint8_t* d = &img.rgba[p * 4];
+        d[0] = s[0];
+        d[1] = nc >= 3 ? s[1] : s[0];
+        d[2] = nc >= 3 ? s[2] : s[0];
+        d[3] = nc == 2 ? s[1] : 255;
+    }
+    return img;
 }
 
 }  // namespace
@@ -185,27 +217,20 @@ Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_byt
     }
     // PNG alpha stays as stored (unassociated), as GL uploads it.
     const auto in = open_image(bytes, name, ext, limits, /*unassociated_alpha=*/true);
-    const image_library::ImageShape spec = in->shape();
-    const int nc = std::min(spec.channels, 4);  // channels past RGBA are not needed
-    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
-    std::vector<std::uint8_t> data(pixels * std::size_t(nc));
-    if (!in->read(nc, data.data())) {
-        throw ImageError(name + ": cannot decode image: " + in->error());
-    }
-    Image8 img{spec.width, spec.height, std::vector<std::uint8_t>(pixels * 4)};
-    for (std::size_t p = 0; p < pixels; ++p) {
-        const std::uint8_t* s = &data[p * std::size_t(nc)];
-        std::uint8_t* d = &img.rgba[p * 4];
-        d[0] = s[0];
-        d[1] = nc >= 3 ? s[1] : s[0];
-        d[2] = nc >= 3 ? s[2] : s[0];
-        d[3] = nc >= 4 ? s[3] : (nc == 2 ? s[1] : 255);
-    }
-    if (decoding_bytes) {
-        const std::uint64_t stored = spec.channel_bytes == 1 ? 0 : pixels * std::uint64_t(spec.channels * spec.channel_bytes);
-        *decoding_bytes = file_bytes.size() + stored + data.size() + img.rgba.size();
-    }
+    Image8 img = decode8(*in, name, decoding_bytes);
+    if (decoding_bytes) *decoding_bytes += file_bytes.size() + img.rgba.size();
     return img;
+}
+
+Image8 read_image8(const std::filesystem::path& path, const ImageReadLimits& limits) {
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = read_scene_file(path, limits.max_file_bytes, limits.follow_symlink);
+    } catch (const SceneError& e) {
+        throw ImageError(e.what());
+    }
+    const auto in = open_image(bytes, path.string(), lowercase_extension(path), limits);
+    return decode8(*in, path.string());
 }
 
 bool is_float_format(const std::filesystem::path& path) {
@@ -261,6 +286,31 @@ std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, i
     return values * (sizeof(float) + (is_float_format(path) ? 0 : 1)) + encoder;
 }
 
+void ImageWriter::write_rows(int rows, const std::uint8_t* rgba) {
+    State& s = *state_;
+    if (rows <= 0 || s.next_row + rows > s.height) throw std::logic_error("ImageWriter: more rows than the image has");
+    const std::size_t n = std::size_t(s.width) * std::size_t(rows);
+    const std::size_t nc = std::size_t(s.channels);
+    const void* pixels = nullptr;
+    if (s.is_float) {
+        s.floats.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = float(rgba[p * 4 + c]) / 255.0f;
+        }
+        pixels = s.floats.data();
+    } else {
+        s.bytes.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) s.bytes[p * nc + c] = rgba[p * 4 + c];
+        }
+        pixels = s.bytes.data();
+    }
+    if (!s.out->write_rows(s.next_row, s.next_row + rows, s.is_float, pixels)) {
+        throw ImageError(s.path.string() + ": cannot write image (" + s.out->error() + ")");
+    }
+    s.next_row += rows;
+}
+
 void ImageWriter::write_rows(int rows, const float* rgba) {
     State& s = *state_;
     if (rows <= 0 || s.next_row + rows > s.height) throw std::logic_error("ImageWriter: more rows than the image has");
@@ -301,17 +351,33 @@ void ImageWriter::commit() {
     }
 }
 
-void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
-    ImageWriter writer(path, image.width, image.height, alpha, metadata);
-    writer.write_rows(image.height, image.rgba.data());
+namespace {
+
+// Writes `image` (RGBA rows of T) a few rows at a time, so that the conversion for the file
+// stays small whatever the image's size.
+template <class T>
+void write_in_chunks(const std::filesystem::path& path, int width, int height, const std::vector<T>& rgba,
+                     const Metadata& metadata, bool alpha) {
+    ImageWriter writer(path, width, height, alpha, metadata);
+    // What one more row adds (the encoder's own buffers are there whatever the chunk).
+    const std::uint64_t row_bytes = std::max<std::uint64_t>(
+        1, ImageWriter::conversion_bytes(path, width, 2, alpha) - ImageWriter::conversion_bytes(path, width, 1, alpha));
+    const int chunk =
+        int(std::clamp<std::uint64_t>(ImageWriter::kChunkBytes / row_bytes, 1, std::uint64_t(std::max(height, 1))));
+    for (int y = 0; y < height; y += chunk) {
+        writer.write_rows(std::min(chunk, height - y), rgba.data() + std::size_t(y) * std::size_t(width) * 4);
+    }
     writer.commit();
 }
 
+}  // namespace
+
+void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
+    write_in_chunks(path, image.width, image.height, image.rgba, metadata, alpha);
+}
+
 void write_image(const std::filesystem::path& path, const Image8& image, const Metadata& metadata, bool alpha) {
-    // Through the float rows: v / 255 converts back to v exactly in write_rows.
-    Image wide{image.width, image.height, std::vector<float>(image.rgba.size())};
-    for (std::size_t i = 0; i < image.rgba.size(); ++i) wide.rgba[i] = float(image.rgba[i]) / 255.0f;
-    write_image(path, wide, metadata, alpha);
+    write_in_chunks(path, image.width, image.height, image.rgba, metadata, alpha);
 }
 
 Comparison compare_images(const Image& a, const Image& b, float fail_threshold, float warn_threshold) {

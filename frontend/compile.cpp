@@ -1,0 +1,205 @@
+#include "frontend/compile.h"
+
+#include <atomic>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#include <glslang/Include/ResourceLimits.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include "frontend/binding_names.h"
+#include "frontend/bounded_preprocess.h"
+#include "frontend/float_literals.h"
+#include "frontend/glsl_types.h"
+#include "frontend/ir_operands.h"
+#include "frontend/lowering.h"
+
+namespace qs::frontend {
+
+namespace {
+
+void initialise_glslang() {
+    static std::once_flag once;
+    std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+// Line continuations removed as Mesa's preprocessor removes them, in every GLSL version (glslang
+// takes them from 4.20 on only), with the lines they joined kept as empty lines after the
+// joined one, so that messages name the lines of the file.
+std::string join_continued_lines(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    int pending = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\\' && i + 1 < text.size() && (text[i + 1] == '\n' || (text[i + 1] == '\r' && i + 2 < text.size() && text[i + 2] == '\n'))) {
+            i += text[i + 1] == '\r' ? 2 : 1;
+            ++pending;
+            continue;
+        }
+        out += text[i];
+        if (text[i] == '\n') {
+            out.append(std::size_t(pending), '\n');
+            pending = 0;
+        }
+    }
+    out.append(std::size_t(pending), '\n');
+    return out;
+}
+
+// glslang's "ERROR: FILE:LINE: message" lines as FILE:LINE: error: message.
+std::string reword(const std::string& log, std::vector<std::string>* warnings) {
+    std::istringstream in(log);
+    std::string line, errors;
+    while (std::getline(in, line)) {
+        for (const char* kind : {"ERROR: ", "WARNING: "}) {
+            if (line.rfind(kind, 0) != 0) continue;
+            std::string rest = line.substr(std::string(kind).size());
+            if (rest.find("compilation errors.") != std::string::npos || rest.find("compilation terminated") != std::string::npos) break;
+            // "FILE:LINE: 'token' : message" -> "FILE:LINE: error: 'token': message"
+            const std::size_t colon = rest.find(": ");
+            std::string where = colon == std::string::npos ? "" : rest.substr(0, colon + 2);
+            std::string what = colon == std::string::npos ? rest : rest.substr(colon + 2);
+            for (std::size_t at; (at = what.find(" : ")) != std::string::npos;) what.replace(at, 3, ": ");
+            const bool error = kind[0] == 'E';
+            const std::string message = where + (error ? "error: " : "warning: ") + what;
+            if (error) {
+                errors += (errors.empty() ? "" : "\n") + message;
+            } else if (warnings) {
+                warnings->push_back(message);
+            }
+        }
+    }
+    return errors;
+}
+
+struct ParsedStage {
+    std::string text;  // what glslang parsed (kept alive with the shader)
+    std::unique_ptr<glslang::TShader> shader;
+    int version = 110;
+};
+
+ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings) {
+    initialise_glslang();
+    ParsedStage p;
+    p.text = float_literals_as_float(join_continued_lines(source.text));
+    check_macro_expansion(source.file, p.text, stage == EShLangFragment);
+    p.shader = std::make_unique<glslang::TShader>(stage);
+    const char* text = p.text.c_str();
+    const int length = int(p.text.size());
+    const char* name = source.file.c_str();
+    p.shader->setStringsWithLengthsAndNames(&text, &length, &name, 1);
+    p.shader->setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientNone, 100);
+    p.shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+    p.shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+    const auto messages = EShMessages(EShMsgDefault | EShMsgEnhanced);
+    const bool ok = p.shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, messages);
+    const std::string log = std::string(p.shader->getInfoLog()) + p.shader->getInfoDebugLog();
+    const std::string errors = reword(log, &warnings);
+    if (!ok) throw GlslError(errors.empty() ? source.file + ": error: the shader does not compile" : errors);
+    if (glslang::TIntermediate* ast = p.shader->getIntermediate()) p.version = ast->getVersion();
+    return p;
+}
+
+// The GLSL type of a varying, for the vertex shader written for a fragment shader.
+std::string glsl_type(int components) { return components == 1 ? "float" : "vec" + std::to_string(components); }
+
+}  // namespace
+
+GlslSource read_glsl_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) throw GlslError(path.string() + ": cannot read: " + ec.message());
+    if (size > kMaxGlslBytes) {
+        throw GlslError(path.string() + ": " + std::to_string(size) + " bytes: larger than a GLSL shader can be here (" +
+                        std::to_string(kMaxGlslBytes) + ")");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw GlslError(path.string() + ": cannot read");
+    std::ostringstream s;
+    s << in.rdbuf();
+    GlslSource src{path.string(), s.str()};
+    if (src.text.find('\0') != std::string::npos) throw GlslError(path.string() + ": not a text file (it holds a NUL byte)");
+    return src;
+}
+
+GlslSource default_vertex_shader(const GlslSource& fragment) {
+    std::vector<std::string> warnings;
+    ParsedStage f = parse(fragment, EShLangFragment, warnings);
+    // The fragment stage's inputs, in the order the code reads them.
+    ir::Program scratch;
+    ProgramInterface interface{scratch, {}};
+    StageLowering lowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface);
+    (void)lowering.run();
+    const int version = f.version;
+    const bool modern = version >= 130;
+    std::string text = "#version " + std::to_string(version) + (version >= 150 ? " compatibility\n" : "\n");
+    text += "// Written by quadshade for " + std::filesystem::path(fragment.file).filename().string() +
+            ": each varying from the vertex attribute of its name.\n";
+    std::string body;
+    for (const VaryingSlot& v : interface.varyings) {
+        const std::string& n = v.name;
+        if (n.rfind("gl_", 0) == 0) {
+            if (n == "gl_Color") body += "    gl_FrontColor = gl_Color;\n";
+            else if (n.rfind("gl_TexCoord[", 0) == 0) body += "    " + n + " = gl_MultiTexCoord" + n.substr(12, n.size() - 13) + ";\n";
+            else throw GlslError(v.where + "'" + n + "' has no vertex shader to write it: pass one with --vert");
+            continue;
+        }
+        if (v.bank != ir::Bank::Float || v.components > 4) {
+            throw GlslError(v.where + "varying '" + n + "' has no vertex shader to write it: pass one with --vert");
+        }
+        std::string value;
+        const std::string swizzle = std::string("xyzw").substr(0, std::size_t(v.components));
+        if (n == "st" || n == "uv" || n == "texcoord" || n == "texcoord0" || n == "texCoord") {
+            value = "gl_MultiTexCoord0";
+        } else if (n == "texcoord1" || n == "uv1") {
+            value = "gl_MultiTexCoord1";
+        } else if (n == "normal" || n == "N") {
+            value = "vec4(gl_Normal, 0.0)";
+        } else if (n == "color") {
+            value = "gl_Color";
+        } else if (n == "position" || n == "P") {
+            value = "gl_Vertex";
+        } else {
+            throw GlslError(v.where + "varying '" + n + "' has no vertex shader to write it: pass one with --vert, or name it "
+                            "st, uv or texcoord (texture coordinates), texcoord1, normal, color, or position or P (the "
+                            "object-space position)");
+        }
+        text += std::string(modern ? (v.flat ? "flat out " : "out ") : "varying ") + glsl_type(v.components) + " " + n + ";\n";
+        body += "    " + n + " = " + value + (v.components == 4 ? "" : "." + swizzle) + ";\n";
+    }
+    text += "void main() {\n" + body + "    gl_Position = ftransform();\n}\n";
+    const std::filesystem::path f_path(fragment.file);
+    return {(f_path.parent_path() / (f_path.stem().string() + ".default.vert")).string(), text};
+}
+
+CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex) {
+    CompiledProgram out;
+    out.vertex = vertex ? *vertex : default_vertex_shader(fragment);
+    ParsedStage f = parse(fragment, EShLangFragment, out.warnings);
+    ParsedStage v = parse(out.vertex, EShLangVertex, out.warnings);
+    ir::Program& program = out.program;
+    program.version = f.version;
+    ProgramInterface interface{program, {}};
+    program.fragment = StageLowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface).run();
+    program.vertex = StageLowering(StageKind::Vertex, out.vertex.file, *v.shader->getIntermediate(), interface).run();
+    for (const VaryingSlot& s : interface.varyings) {
+        if (!s.written) {
+            throw GlslError(s.where + "error: varying '" + s.name + "' is read here but the vertex shader (" + out.vertex.file +
+                            ") does not write it");
+        }
+    }
+    bool position = false;
+    for (const ir::Binding& b : program.vertex.outputs) position = position || b.source == ir::Source::Position;
+    if (!position) throw GlslError(out.vertex.file + ": error: the vertex shader does not write gl_Position");
+    static std::atomic<std::uint64_t> serials{0};
+    program.vertex.serial = ++serials;
+    program.fragment.serial = ++serials;
+    ir::validate(program.vertex, int(program.samplers.size()));
+    ir::validate(program.fragment, int(program.samplers.size()));
+    return out;
+}
+
+}  // namespace qs::frontend

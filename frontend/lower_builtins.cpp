@@ -1,0 +1,338 @@
+// GLSL's built-in functions (lowering.h): each becomes the interpreter operation that calls the
+// vocabulary's function of the same name (shading/glsl/), component by component where GLSL
+// defines it so, on whole vectors and matrices where it does not.
+
+#include "frontend/glsl_types.h"
+#include "frontend/lowering.h"
+
+namespace qs::frontend {
+
+using glslang::TIntermTyped;
+using B = ir::Bank;
+
+Place StageLowering::unary(ir::Op op, const Place& a, B bank, B result) {
+    Place r;
+    for (const Slot& s : a) r.push_back({result, emit1(op, result, s.reg, 0, 0, bank)});
+    return r;
+}
+
+Place StageLowering::broadcast(const Place& p, std::size_t n) { return p.size() == 1 && n > 1 ? Place(n, p[0]) : p; }
+
+namespace {
+
+ir::Op float_unary(glslang::TOperator op) {
+    switch (op) {
+        case glslang::EOpRadians: return ir::Op::FRadians;
+        case glslang::EOpDegrees: return ir::Op::FDegrees;
+        case glslang::EOpSin: return ir::Op::FSin;
+        case glslang::EOpCos: return ir::Op::FCos;
+        case glslang::EOpTan: return ir::Op::FTan;
+        case glslang::EOpAsin: return ir::Op::FAsin;
+        case glslang::EOpAcos: return ir::Op::FAcos;
+        case glslang::EOpAtan: return ir::Op::FAtan;
+        case glslang::EOpSinh: return ir::Op::FSinh;
+        case glslang::EOpCosh: return ir::Op::FCosh;
+        case glslang::EOpTanh: return ir::Op::FTanh;
+        case glslang::EOpAsinh: return ir::Op::FAsinh;
+        case glslang::EOpAcosh: return ir::Op::FAcosh;
+        case glslang::EOpAtanh: return ir::Op::FAtanh;
+        case glslang::EOpExp: return ir::Op::FExp;
+        case glslang::EOpLog: return ir::Op::FLog;
+        case glslang::EOpExp2: return ir::Op::FExp2;
+        case glslang::EOpLog2: return ir::Op::FLog2;
+        case glslang::EOpSqrt: return ir::Op::FSqrt;
+        case glslang::EOpInverseSqrt: return ir::Op::FInverseSqrt;
+        case glslang::EOpFloor: return ir::Op::FFloor;
+        case glslang::EOpTrunc: return ir::Op::FTrunc;
+        // GLSL lets round() take halves either way; Mesa takes them to even.
+        case glslang::EOpRound: return ir::Op::FRoundEven;
+        case glslang::EOpRoundEven: return ir::Op::FRoundEven;
+        case glslang::EOpCeil: return ir::Op::FCeil;
+        case glslang::EOpFract: return ir::Op::FFract;
+        case glslang::EOpDPdx: return ir::Op::FDdx;
+        case glslang::EOpDPdy: return ir::Op::FDdy;
+        case glslang::EOpFwidth: return ir::Op::FFwidth;
+        case glslang::EOpDPdxFine: return ir::Op::FDdxFine;
+        case glslang::EOpDPdyFine: return ir::Op::FDdyFine;
+        case glslang::EOpFwidthFine: return ir::Op::FFwidthFine;
+        case glslang::EOpDPdxCoarse: return ir::Op::FDdxCoarse;
+        case glslang::EOpDPdyCoarse: return ir::Op::FDdyCoarse;
+        case glslang::EOpFwidthCoarse: return ir::Op::FFwidthCoarse;
+        default: return ir::Op::Mov;
+    }
+}
+
+bool is_derivative(glslang::TOperator op) {
+    return op == glslang::EOpDPdx || op == glslang::EOpDPdy || op == glslang::EOpFwidth || op == glslang::EOpDPdxFine ||
+           op == glslang::EOpDPdyFine || op == glslang::EOpFwidthFine || op == glslang::EOpDPdxCoarse ||
+           op == glslang::EOpDPdyCoarse || op == glslang::EOpFwidthCoarse;
+}
+
+}  // namespace
+
+Place StageLowering::eval_builtin(glslang::TOperator op, TIntermTyped* node, const std::vector<TIntermTyped*>& args,
+                                  const std::vector<Place>& v) {
+    const glslang::TType& type = node->getType();
+    B bank = B::Float;
+    bank_of(type.getBasicType(), bank);
+    const std::size_t n = std::size_t(type.isMatrix() ? type.getMatrixCols() * type.getMatrixRows() : type.getVectorSize());
+    const auto arg_bank = [&](std::size_t i) { return v[i].empty() ? B::Float : v[i][0].bank; };
+    // (Operands are made consecutive before the operation is emitted: the copies come first.)
+    const auto composite = [&](ir::Op o, int result_components, int width) {
+        const std::uint32_t a = consecutive(v[0]);
+        const std::uint32_t b = v.size() > 1 ? consecutive(v[1]) : 0;
+        const std::uint32_t c = v.size() > 2 ? consecutive(v[2]) : 0;
+        Place r = temps(B::Float, result_components);
+        ir::Instr& e = emit(o);
+        e.d = r[0].reg, e.a = a, e.b = b, e.c = c, e.n = std::uint8_t(width);
+        return r;
+    };
+
+    if (const ir::Op f = float_unary(op); f != ir::Op::Mov && v.size() == 1) {
+        if (is_derivative(op)) {
+            if (kind_ != StageKind::Fragment) refuse(node, "derivatives exist in fragment shaders only");
+            stage_.derivatives = true;
+        }
+        return unary(f, v[0], B::Float, B::Float);
+    }
+    switch (op) {
+        case glslang::EOpAtan:  // atan(y, x)
+            return componentwise(ir::Op::FAtan2, B::Float, v[0], v[1], B::Float);
+        case glslang::EOpAbs:
+            return arg_bank(0) == B::Float ? unary(ir::Op::FAbs, v[0], B::Float, B::Float) : unary(ir::Op::IAbs, v[0], bank, bank);
+        case glslang::EOpSign:
+            return arg_bank(0) == B::Float ? unary(ir::Op::FSign, v[0], B::Float, B::Float) : unary(ir::Op::ISign, v[0], bank, bank);
+        case glslang::EOpIsNan: return unary(ir::Op::FIsNan, v[0], B::Float, B::Bool);
+        case glslang::EOpIsInf: return unary(ir::Op::FIsInf, v[0], B::Float, B::Bool);
+        case glslang::EOpPow: return componentwise(ir::Op::FPow, B::Float, v[0], v[1], B::Float);
+        case glslang::EOpMod: return arithmetic(op, type, v[0], v[1]);
+        case glslang::EOpMin: case glslang::EOpMax: {
+            const bool fl = bank == B::Float;
+            const ir::Op o = op == glslang::EOpMin ? (fl ? ir::Op::FMin : ir::Op::IMin) : (fl ? ir::Op::FMax : ir::Op::IMax);
+            return componentwise(o, bank, v[0], v[1], bank);
+        }
+        case glslang::EOpStep: {  // step(edge, x)
+            const Place e = broadcast(v[0], n), x = broadcast(v[1], n);
+            return componentwise(ir::Op::FStep, B::Float, e, x, B::Float);
+        }
+        case glslang::EOpClamp: case glslang::EOpSmoothStep: case glslang::EOpMix: case glslang::EOpFma: {
+            if (op == glslang::EOpMix && arg_bank(2) == B::Bool) {
+                // mix(x, y, b): y where b (GLSL 1.30), for floats, and integers and bools (4.50)
+                Place r;
+                for (std::size_t i = 0; i < n; ++i) {
+                    const std::uint32_t d = allocate(bank, Space::Temp);
+                    ir::Instr& e = emit(ir::Op::Select, bank);
+                    e.d = d, e.a = broadcast(v[2], n)[i].reg, e.b = v[1][i].reg, e.c = v[0][i].reg;
+                    r.push_back({bank, d});
+                }
+                return r;
+            }
+            ir::Op o = ir::Op::FClamp;
+            if (op == glslang::EOpClamp && bank != B::Float) o = ir::Op::IClamp;
+            if (op == glslang::EOpSmoothStep) o = ir::Op::FSmoothStep;
+            if (op == glslang::EOpMix) o = ir::Op::FMix;
+            if (op == glslang::EOpFma) o = ir::Op::FFma;
+            const Place a = broadcast(v[0], n), b = broadcast(v[1], n), c = broadcast(v[2], n);
+            Place r;
+            for (std::size_t i = 0; i < n; ++i) r.push_back({bank, emit1(o, bank, a[i].reg, b[i].reg, c[i].reg, bank)});
+            return r;
+        }
+        case glslang::EOpModf: case glslang::EOpFrexp: {
+            // the second result through the out parameter
+            const LValue out = lvalue(args[1]);
+            const B second = op == glslang::EOpModf ? B::Float : B::Int;
+            Place r = temps(B::Float, int(n)), s = temps(second, int(n));
+            for (std::size_t i = 0; i < n; ++i) {
+                ir::Instr& e = emit(op == glslang::EOpModf ? ir::Op::FModf : ir::Op::FFrexp);
+                e.d = r[i].reg, e.a = v[0][i].reg, e.c = s[i].reg;
+            }
+            store(out, s);
+            return r;
+        }
+        case glslang::EOpLdexp: return componentwise(ir::Op::FLdexp, B::Float, v[0], v[1], B::Float);
+        case glslang::EOpLength: return composite(ir::Op::Length, 1, int(v[0].size()));
+        case glslang::EOpDistance: return composite(ir::Op::Distance, 1, int(v[0].size()));
+        case glslang::EOpDot: return composite(ir::Op::Dot, 1, int(v[0].size()));
+        case glslang::EOpNormalize: return composite(ir::Op::Normalize, int(v[0].size()), int(v[0].size()));
+        case glslang::EOpCross: return composite(ir::Op::Cross, 3, 3);
+        case glslang::EOpReflect: return composite(ir::Op::Reflect, int(v[0].size()), int(v[0].size()));
+        case glslang::EOpRefract: return composite(ir::Op::Refract, int(v[0].size()), int(v[0].size()));
+        case glslang::EOpFaceForward: return composite(ir::Op::FaceForward, int(v[0].size()), int(v[0].size()));
+        case glslang::EOpLessThan: case glslang::EOpLessThanEqual: case glslang::EOpGreaterThan:
+        case glslang::EOpGreaterThanEqual: case glslang::EOpVectorEqual: case glslang::EOpVectorNotEqual:
+            return compare(op, v[0], v[1]);
+        case glslang::EOpAny: case glslang::EOpAll: {
+            std::uint32_t r = v[0][0].reg;
+            for (std::size_t i = 1; i < v[0].size(); ++i) r = emit1(op == glslang::EOpAny ? ir::Op::BOr : ir::Op::BAnd, B::Bool, r, v[0][i].reg);
+            if (v[0].size() == 1) {
+                const std::uint32_t d = allocate(B::Bool, Space::Temp);
+                move({B::Bool, d}, v[0][0], false);
+                r = d;
+            }
+            return {{B::Bool, r}};
+        }
+        case glslang::EOpVectorLogicalNot: return unary(ir::Op::BNot, v[0], B::Bool, B::Bool);
+        case glslang::EOpMul: return componentwise(bank == B::Float ? ir::Op::FMul : ir::Op::IMul, bank, v[0], v[1], bank);
+        case glslang::EOpOuterProduct: {  // column k = c * r[k]
+            const Place& c = v[0];
+            const Place& rv = v[1];
+            Place r;
+            for (const Slot& rk : rv) {
+                for (const Slot& ci : c) r.push_back({B::Float, emit1(ir::Op::FMul, B::Float, ci.reg, rk.reg)});
+            }
+            return r;
+        }
+        case glslang::EOpTranspose: {
+            const glslang::TType& m = args[0]->getType();
+            const int cols = m.getMatrixCols(), rows = m.getMatrixRows();
+            Place r;
+            for (int c = 0; c < rows; ++c) {
+                for (int k = 0; k < cols; ++k) r.push_back(v[0][std::size_t(k * rows + c)]);
+            }
+            return r;
+        }
+        case glslang::EOpDeterminant: case glslang::EOpMatrixInverse: {
+            const int size = args[0]->getType().getMatrixCols();
+            const bool inverse = op == glslang::EOpMatrixInverse;
+            const std::uint32_t a = consecutive(v[0]);
+            Place r = temps(B::Float, inverse ? size * size : 1);
+            ir::Instr& e = emit(inverse ? ir::Op::Inverse : ir::Op::Determinant);
+            e.d = r[0].reg, e.a = a, e.n = std::uint8_t(size);
+            return r;
+        }
+        case glslang::EOpFloatBitsToInt: return unary(ir::Op::FloatBitsToInt, v[0], B::Float, B::Int);
+        case glslang::EOpFloatBitsToUint: return unary(ir::Op::FloatBitsToUint, v[0], B::Float, B::Uint);
+        case glslang::EOpIntBitsToFloat: return unary(ir::Op::IntBitsToFloat, v[0], B::Int, B::Float);
+        case glslang::EOpUintBitsToFloat: return unary(ir::Op::UintBitsToFloat, v[0], B::Uint, B::Float);
+        case glslang::EOpBitFieldReverse: return unary(ir::Op::IBitfieldReverse, v[0], bank, bank);
+        case glslang::EOpBitCount: return unary(ir::Op::IBitCount, v[0], arg_bank(0), B::Int);
+        case glslang::EOpFindLSB: return unary(ir::Op::IFindLsb, v[0], arg_bank(0), B::Int);
+        case glslang::EOpFindMSB: return unary(ir::Op::IFindMsb, v[0], arg_bank(0), B::Int);
+        case glslang::EOpBitfieldExtract: {
+            Place r;
+            const Slot offset = convert_bits(v[1], B::Int)[0], bits = convert_bits(v[2], B::Int)[0];
+            for (const Slot& s : v[0]) r.push_back({bank, emit1(ir::Op::IBitfieldExtract, bank, s.reg, offset.reg, bits.reg, bank)});
+            return r;
+        }
+        case glslang::EOpBitfieldInsert: {
+            const Place ob = temps(B::Int, 2);
+            move(ob[0], convert_bits(v[2], B::Int)[0], false);
+            move(ob[1], convert_bits(v[3], B::Int)[0], false);
+            Place r;
+            for (std::size_t i = 0; i < v[0].size(); ++i) {
+                r.push_back({bank, emit1(ir::Op::IBitfieldInsert, bank, v[0][i].reg, v[1][i].reg, ob[0].reg, bank)});
+            }
+            return r;
+        }
+        case glslang::EOpAddCarry: case glslang::EOpSubBorrow: case glslang::EOpUMulExtended:
+        case glslang::EOpIMulExtended: {
+            const bool mul = op == glslang::EOpUMulExtended || op == glslang::EOpIMulExtended;
+            const B k = arg_bank(0);
+            const ir::Op o = op == glslang::EOpAddCarry ? ir::Op::IAddCarry : op == glslang::EOpSubBorrow ? ir::Op::ISubBorrow : ir::Op::IMulExtended;
+            Place first = temps(k, int(v[0].size())), second = temps(k, int(v[0].size()));
+            for (std::size_t i = 0; i < v[0].size(); ++i) {
+                ir::Instr& e = emit(o, k);
+                e.d = first[i].reg, e.a = v[0][i].reg, e.b = v[1][i].reg, e.c = second[i].reg;
+            }
+            if (mul) {
+                // umulExtended(x, y, out msb, out lsb)
+                store(lvalue(args[2]), first);
+                store(lvalue(args[3]), second);
+                return {};
+            }
+            store(lvalue(args[2]), second);  // the carry or borrow
+            return first;
+        }
+        case glslang::EOpFtransform: return ftransform();
+        case glslang::EOpNoise: {
+            // Mesa's noise1..noise4 return 0.
+            Place r;
+            for (std::size_t i = 0; i < n; ++i) r.push_back({B::Float, float_constant(0.0f)});
+            return r;
+        }
+        default: break;
+    }
+    refuse(node, "this built-in function is not supported");
+}
+
+int StageLowering::sampler_of(TIntermTyped* node) {
+    if (auto* s = node->getAsSymbolNode()) {
+        for (auto f = frames_.rbegin(); f != frames_.rend(); ++f) {
+            if (auto it = f->samplers.find(s->getId()); it != f->samplers.end()) return it->second;
+            break;  // a sampler parameter belongs to the innermost call
+        }
+        if (auto it = global_samplers_.find(s->getId()); it != global_samplers_.end()) return it->second;
+        return sampler_uniform(s, s->getName().c_str(), s->getType());
+    }
+    if (auto* b = node->getAsBinaryNode(); b && b->getOp() == glslang::EOpIndexDirect) {
+        auto* array = b->getLeft()->getAsSymbolNode();
+        if (array && array->getQualifier().storage == glslang::EvqUniform) {
+            const int k = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+            return sampler_uniform(array, std::string(array->getName().c_str()) + "[" + std::to_string(k) + "]",
+                                   element_type(array->getType()));
+        }
+    }
+    refuse(node, "a sampler must be a uniform, an element of a uniform array at a constant index, or a parameter");
+}
+
+Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, const std::vector<TIntermTyped*>& args) {
+    const int slot = sampler_of(args[0]);
+    const int dims = interface_.program.samplers[std::size_t(slot)].dims;
+    std::vector<Place> v;
+    for (std::size_t i = 1; i < args.size(); ++i) v.push_back(eval(args[i]));
+    const auto lookup = [&](ir::Op o, const Place& coords, const Place* extra) {
+        const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
+        Place r = temps(B::Float, 4);
+        ir::Instr& e = emit(o);
+        e.d = r[0].reg, e.a = a, e.n = std::uint8_t(dims);
+        e.count = std::uint16_t(slot);
+        if (extra) e.b = (*extra)[0].reg;
+        return r;
+    };
+    const bool vertex = kind_ == StageKind::Vertex;
+    const Place zero{{B::Float, float_constant(0.0f)}};
+    switch (op) {
+        case glslang::EOpTexture:
+            // A vertex shader's lookups read level 0 (it has no neighbours to take a level from).
+            if (v.size() == 2) return lookup(vertex ? ir::Op::TextureLod : ir::Op::TextureBias, v[0], vertex ? &zero : &v[1]);
+            return lookup(vertex ? ir::Op::TextureLod : ir::Op::Texture, v[0], vertex ? &zero : nullptr);
+        case glslang::EOpTextureProj: {
+            // coordinates times the reciprocal of the last one, as Mesa lowers a projective lookup
+            const Place& p = v[0];
+            const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
+            Place coords;
+            for (int i = 0; i < dims; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
+            if (v.size() == 2) return lookup(vertex ? ir::Op::TextureLod : ir::Op::TextureBias, coords, vertex ? &zero : &v[1]);
+            return lookup(vertex ? ir::Op::TextureLod : ir::Op::Texture, coords, vertex ? &zero : nullptr);
+        }
+        case glslang::EOpTextureLod: return lookup(ir::Op::TextureLod, v[0], &v[1]);
+        case glslang::EOpTextureProjLod: {
+            const Place& p = v[0];
+            const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
+            Place coords;
+            for (int i = 0; i < dims; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
+            return lookup(ir::Op::TextureLod, coords, &v[1]);
+        }
+        case glslang::EOpTextureFetch: {
+            const Place coords = convert_bits(v[0], B::Int);
+            const Place lod = v.size() > 1 ? convert_bits(v[1], B::Int) : Place{{B::Int, int_constant(0)}};
+            const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
+            Place r = temps(B::Float, 4);
+            ir::Instr& e = emit(ir::Op::TexelFetch);
+            e.d = r[0].reg, e.a = a, e.b = lod[0].reg, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+            return r;
+        }
+        case glslang::EOpTextureQuerySize: {
+            Place r = temps(B::Int, dims);
+            const Place lod = v.empty() ? Place{{B::Int, int_constant(0)}} : convert_bits(v[0], B::Int);
+            ir::Instr& e = emit(ir::Op::TextureSize);
+            e.d = r[0].reg, e.b = lod[0].reg, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+            return r;
+        }
+        default: break;
+    }
+    refuse(node, "this texture function is not supported (supported: texture, texture2D, texture3D with or without a "
+                 "bias, their Proj and Lod forms, texelFetch, textureSize)");
+}
+
+}  // namespace qs::frontend

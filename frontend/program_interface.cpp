@@ -1,0 +1,63 @@
+#include "frontend/program_interface.h"
+
+namespace qs::frontend {
+
+namespace {
+
+const char* bank_name(ir::Bank b) {
+    switch (b) {
+        case ir::Bank::Float: return "float";
+        case ir::Bank::Int: return "int";
+        case ir::Bank::Uint: return "uint";
+        case ir::Bank::Bool: return "bool";
+    }
+    return "?";
+}
+
+}  // namespace
+
+int ProgramInterface::uniform(const ir::Uniform& u, const std::string& where) {
+    for (std::size_t i = 0; i < program.uniforms.size(); ++i) {
+        const ir::Uniform& have = program.uniforms[i];
+        if (have.name != u.name) continue;
+        if (have.bank != u.bank || have.components != u.components || have.columns != u.columns) {
+            throw GlslError(where + "uniform '" + u.name + "' is declared with another type in the other stage");
+        }
+        return int(i);
+    }
+    program.uniforms.push_back(u);
+    return int(program.uniforms.size() - 1);
+}
+
+int ProgramInterface::sampler(const std::string& name, int dims, const std::string& where) {
+    for (std::size_t i = 0; i < program.samplers.size(); ++i) {
+        if (program.samplers[i].name != name) continue;
+        if (program.samplers[i].dims != dims) {
+            throw GlslError(where + "sampler '" + name + "' is declared with another type in the other stage");
+        }
+        return int(i);
+    }
+    program.samplers.push_back({name, dims});
+    return int(program.samplers.size() - 1);
+}
+
+VaryingSlot& ProgramInterface::fragment_varying(const std::string& name, int components, ir::Bank bank, bool flat,
+                                                const std::string& where) {
+    if (VaryingSlot* v = find_varying(name)) return *v;
+    VaryingSlot v{name, int(program.varyings.size()), components, bank, flat, where, false};
+    for (int i = 0; i < components; ++i) {
+        program.varyings.push_back({components == 1 ? name : name + "[" + std::to_string(i) + "]", flat});
+    }
+    (void)bank_name;
+    varyings.push_back(v);
+    return varyings.back();
+}
+
+VaryingSlot* ProgramInterface::find_varying(const std::string& name) {
+    for (VaryingSlot& v : varyings) {
+        if (v.name == name) return &v;
+    }
+    return nullptr;
+}
+
+}  // namespace qs::frontend

@@ -1,0 +1,645 @@
+#pragma once
+// Executor<F>::run (executor.h): included by the one .cpp per number type that instantiates it.
+// The hot loop dispatches the scalar operations inline; the composite ones (vectors, matrices,
+// textures, indexing) and control flow are functions of their own, so that the loop keeps its
+// values in registers.
+
+#include "interpreter/executor.h"
+
+namespace qs::interpreter {
+
+namespace executor_detail {
+
+template <class T, class M>
+T choose(const M& m, const T& a, const T& b) {
+    if constexpr (std::is_same_v<T, M> && !std::is_same_v<M, bool>) {
+        return (m && a) || (!m && b);
+    } else {
+        return select(m, a, b);
+    }
+}
+
+// f.template operator()<N>() for N = n in 2..4.
+template <class Fn>
+void with_size(int n, Fn f) {
+    switch (n) {
+        case 2: return f.template operator()<2>();
+        case 3: return f.template operator()<3>();
+        case 4: return f.template operator()<4>();
+        default: throw std::logic_error("GLSL interpreter: a vector or matrix of " + std::to_string(n) + " components");
+    }
+}
+
+// The machine state of one run: registers, the masks of divergent control flow (llvmpipe's
+// lp_exec_mask), and the loop limiters.
+template <class F>
+class Machine {
+public:
+    using I = int_t<F>;
+    using U = uint_t<F>;
+    using M = Bool<F>;
+
+    Machine(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures)
+        : stage_(stage), f_(r.f.data()), i_(r.i.data()), u_(r.u.data()), b_(r.b.data()), textures_(textures) {
+        cond_ = brk_ = cnt_ = sw_ = ret_ = exec_ = M(true);
+        killed_ = M(false);
+        budget_.fill(kLoopLimit);
+        if constexpr (kVectors > 1) {
+            for (int v = 0; v < kVectors; ++v) vector_[std::size_t(v)] = lane_range<F>(v * kVectorLanes, kVectorLanes);
+        }
+    }
+
+    RunResult run();
+
+private:
+    static constexpr int kVectors = std::max(1, lanes_of<F>() / kVectorLanes);
+    static_assert(kVectors <= kMaxVectors);
+
+    // Writes value to dst, keeping the lanes outside the running mask for variables.
+    template <class T, class V>
+    [[gnu::always_inline]] void put(const ir::Instr& in, T& dst, const V& value) {
+        if (!in.masked || all_) {
+            dst = value;
+        } else {
+            dst = choose(exec_, T(value), dst);
+        }
+    }
+    void update() {
+        exec_ = cond_ && brk_ && cnt_ && sw_ && ret_;
+        all_ = all_lanes(exec_);
+    }
+    template <int N>
+    glsl::vec<F, N> vector_at(std::uint32_t first) const {
+        glsl::vec<F, N> v;
+        for (int i = 0; i < N; ++i) v[i] = f_[first + std::uint32_t(i)];
+        return v;
+    }
+    template <int C, int R>
+    glsl::mat<F, C, R> matrix_at(std::uint32_t first) const {
+        glsl::mat<F, C, R> m;
+        for (int c = 0; c < C; ++c) {
+            for (int r = 0; r < R; ++r) m[c][r] = f_[first + std::uint32_t(c * R + r)];
+        }
+        return m;
+    }
+
+    [[gnu::noinline]] void derivative(const ir::Instr& in);
+    [[gnu::noinline]] void geometric(const ir::Instr& in);
+    [[gnu::noinline]] void matrix(const ir::Instr& in);
+    [[gnu::noinline]] void texture(const ir::Instr& in);
+    [[gnu::noinline]] void indexed(const ir::Instr& in);
+    [[gnu::noinline]] void integer(const ir::Instr& in);
+    [[gnu::noinline]] void rare_float(const ir::Instr& in);
+    // Control flow: returns the next instruction's index.
+    [[gnu::noinline]] std::size_t control(const ir::Instr& in, std::size_t pc);
+
+    const ir::Stage& stage_;
+    F* const f_;
+    I* const i_;
+    U* const u_;
+    M* const b_;
+    const TextureSlots& textures_;
+
+    M cond_, brk_, cnt_, sw_, ret_, exec_, killed_;
+    bool all_ = true;  // every lane runs: writes need no select
+    std::array<std::int32_t, kMaxVectors> budget_{};
+    std::array<M, kMaxVectors> vector_{};
+    struct Saved {
+        M a, b;
+    };
+    std::vector<Saved> cond_stack_, loop_stack_, switch_stack_, call_stack_;
+    std::vector<bool> breaks_loop_;  // the innermost breakable construct at the back: loop or switch
+    RunResult result_;
+};
+
+template <class F>
+RunResult Machine<F>::run() {
+    const ir::Instr* const code = stage_.code.data();
+    const std::size_t size = stage_.code.size();
+    F* const f = f_;
+    M* const b = b_;
+    for (std::size_t pc = 0; pc < size; ++pc) {
+        const ir::Instr& in = code[pc];
+#define QS_F1(expr) { const F& x = f[in.a]; put(in, f[in.d], (expr)); } break
+#define QS_F2(expr) { const F& x = f[in.a]; const F& y = f[in.b]; put(in, f[in.d], (expr)); } break
+#define QS_F3(expr) { const F& x = f[in.a]; const F& y = f[in.b]; const F& z = f[in.c]; put(in, f[in.d], (expr)); } break
+#define QS_FCMP(op) put(in, b[in.d], M(f[in.a] op f[in.b])); break
+        switch (in.op) {
+            case ir::Op::Mov:
+                switch (in.bank) {
+                    case ir::Bank::Float: put(in, f[in.d], f[in.a]); break;
+                    case ir::Bank::Int: put(in, i_[in.d], i_[in.a]); break;
+                    case ir::Bank::Uint: put(in, u_[in.d], u_[in.a]); break;
+                    case ir::Bank::Bool: put(in, b[in.d], b[in.a]); break;
+                }
+                break;
+            case ir::Op::Select:
+                switch (in.bank) {
+                    case ir::Bank::Float: put(in, f[in.d], choose(b[in.a], f[in.b], f[in.c])); break;
+                    case ir::Bank::Int: put(in, i_[in.d], choose(b[in.a], i_[in.b], i_[in.c])); break;
+                    case ir::Bank::Uint: put(in, u_[in.d], choose(b[in.a], u_[in.b], u_[in.c])); break;
+                    case ir::Bank::Bool: put(in, b[in.d], choose(b[in.a], b[in.b], b[in.c])); break;
+                }
+                break;
+            case ir::Op::FNeg: QS_F1(-x);
+            case ir::Op::FAdd: QS_F2(x + y);
+            case ir::Op::FSub: QS_F2(x - y);
+            case ir::Op::FMul: QS_F2(x * y);
+            case ir::Op::FDiv: QS_F2(x / y);
+            case ir::Op::FMod: QS_F2(glsl::mod(x, y));
+            case ir::Op::FMin: QS_F2(min(x, y));
+            case ir::Op::FMax: QS_F2(max(x, y));
+            case ir::Op::FClamp: QS_F3(glsl::clamp(x, y, z));
+            case ir::Op::FMix: QS_F3(glsl::mix(x, y, z));
+            case ir::Op::FStep: QS_F2(glsl::step(x, y));
+            case ir::Op::FSmoothStep: QS_F3(glsl::smoothstep(x, y, z));
+            case ir::Op::FAbs: QS_F1(abs(x));
+            case ir::Op::FSign: QS_F1(glsl::sign(x));
+            case ir::Op::FFloor: QS_F1(floor(x));
+            case ir::Op::FCeil: QS_F1(ceil(x));
+            case ir::Op::FTrunc: QS_F1(trunc(x));
+            case ir::Op::FRoundEven: QS_F1(roundEven(x));
+            case ir::Op::FFract: QS_F1(glsl::fract(x));
+            case ir::Op::FSqrt: QS_F1(sqrt(x));
+            case ir::Op::FInverseSqrt: QS_F1(glsl::inversesqrt(x));
+            case ir::Op::FMixBool: put(in, f[in.d], choose(b[in.c], f[in.b], f[in.a])); break;
+            case ir::Op::FLess: QS_FCMP(<);
+            case ir::Op::FLessEqual: QS_FCMP(<=);
+            case ir::Op::FGreater: QS_FCMP(>);
+            case ir::Op::FGreaterEqual: QS_FCMP(>=);
+            case ir::Op::FEqual: QS_FCMP(==);
+            case ir::Op::FNotEqual: QS_FCMP(!=);
+            case ir::Op::BNot: put(in, b[in.d], M(!b[in.a])); break;
+            case ir::Op::BAnd: put(in, b[in.d], M(b[in.a] && b[in.b])); break;
+            case ir::Op::BOr: put(in, b[in.d], M(b[in.a] || b[in.b])); break;
+            case ir::Op::BXor: case ir::Op::BNotEqual: put(in, b[in.d], M(b[in.a] != b[in.b])); break;
+            case ir::Op::BEqual: put(in, b[in.d], M(b[in.a] == b[in.b])); break;
+            case ir::Op::FloatFromInt: put(in, f[in.d], F(i_[in.a])); break;
+            case ir::Op::FloatFromBool: put(in, f[in.d], F(b[in.a])); break;
+            case ir::Op::IntFromFloat: put(in, i_[in.d], I(f[in.a])); break;
+            case ir::Op::FDdx: case ir::Op::FDdy: case ir::Op::FDdxFine: case ir::Op::FDdyFine: case ir::Op::FDdxCoarse:
+            case ir::Op::FDdyCoarse: case ir::Op::FFwidth: case ir::Op::FFwidthFine: case ir::Op::FFwidthCoarse:
+                derivative(in);
+                break;
+            case ir::Op::Dot: case ir::Op::Length: case ir::Op::Distance: case ir::Op::Normalize: case ir::Op::Reflect:
+            case ir::Op::Refract: case ir::Op::FaceForward: case ir::Op::Cross:
+                geometric(in);
+                break;
+            case ir::Op::MatTimesVec: case ir::Op::VecTimesMat: case ir::Op::MatTimesMat: case ir::Op::Determinant:
+            case ir::Op::Inverse:
+                matrix(in);
+                break;
+            case ir::Op::Texture: case ir::Op::TextureBias: case ir::Op::TextureLod: case ir::Op::TexelFetch:
+            case ir::Op::TextureSize:
+                texture(in);
+                break;
+            case ir::Op::LoadIndexed: case ir::Op::StoreIndexed: indexed(in); break;
+            case ir::Op::If: case ir::Op::Else: case ir::Op::EndIf: case ir::Op::LoopBegin: case ir::Op::LoopContinue:
+            case ir::Op::LoopEnd: case ir::Op::Break: case ir::Op::BreakUnless: case ir::Op::Continue:
+            case ir::Op::SwitchBegin: case ir::Op::SwitchEnd: case ir::Op::CallBegin: case ir::Op::CallEnd:
+            case ir::Op::Return: case ir::Op::Discard:
+                pc = control(in, pc);
+                break;
+            case ir::Op::INeg: case ir::Op::IAdd: case ir::Op::ISub: case ir::Op::IMul: case ir::Op::IDiv: case ir::Op::IMod:
+            case ir::Op::IAnd: case ir::Op::IOr: case ir::Op::IXor: case ir::Op::INot: case ir::Op::IShl: case ir::Op::IShr:
+            case ir::Op::IMin: case ir::Op::IMax: case ir::Op::IClamp: case ir::Op::IAbs: case ir::Op::ISign:
+            case ir::Op::ILess: case ir::Op::ILessEqual: case ir::Op::IGreater: case ir::Op::IGreaterEqual:
+            case ir::Op::IEqual: case ir::Op::INotEqual: case ir::Op::IBitfieldExtract: case ir::Op::IBitfieldInsert:
+            case ir::Op::IBitfieldReverse: case ir::Op::IBitCount: case ir::Op::IFindLsb: case ir::Op::IFindMsb:
+            case ir::Op::IAddCarry: case ir::Op::ISubBorrow: case ir::Op::IMulExtended: case ir::Op::FloatFromUint:
+            case ir::Op::UintFromFloat: case ir::Op::IntFromUint: case ir::Op::UintFromInt: case ir::Op::IntFromBool:
+            case ir::Op::UintFromBool: case ir::Op::BoolFromFloat: case ir::Op::BoolFromInt: case ir::Op::BoolFromUint:
+            case ir::Op::FloatBitsToInt: case ir::Op::FloatBitsToUint: case ir::Op::IntBitsToFloat:
+            case ir::Op::UintBitsToFloat:
+                integer(in);
+                break;
+            default: rare_float(in); break;
+        }
+#undef QS_F1
+#undef QS_F2
+#undef QS_F3
+#undef QS_FCMP
+    }
+    result_.discarded = bits_of(killed_);
+    return result_;
+}
+
+template <class F>
+void Machine<F>::rare_float(const ir::Instr& in) {
+    F* const f = f_;
+    const F& x = f[in.a];
+    switch (in.op) {
+        case ir::Op::FExp: return put(in, f[in.d], exp(x));
+        case ir::Op::FLog: return put(in, f[in.d], log(x));
+        case ir::Op::FExp2: return put(in, f[in.d], exp2(x));
+        case ir::Op::FLog2: return put(in, f[in.d], log2(x));
+        case ir::Op::FPow: return put(in, f[in.d], pow(x, f[in.b]));
+        case ir::Op::FSin: return put(in, f[in.d], sin(x));
+        case ir::Op::FCos: return put(in, f[in.d], cos(x));
+        case ir::Op::FTan: return put(in, f[in.d], tan(x));
+        case ir::Op::FAsin: return put(in, f[in.d], asin(x));
+        case ir::Op::FAcos: return put(in, f[in.d], acos(x));
+        case ir::Op::FAtan: return put(in, f[in.d], atan(x));
+        case ir::Op::FAtan2: return put(in, f[in.d], atan(x, f[in.b]));
+        case ir::Op::FSinh: return put(in, f[in.d], glsl::sinh(x));
+        case ir::Op::FCosh: return put(in, f[in.d], glsl::cosh(x));
+        case ir::Op::FTanh: return put(in, f[in.d], glsl::tanh(x));
+        case ir::Op::FAsinh: return put(in, f[in.d], glsl::asinh(x));
+        case ir::Op::FAcosh: return put(in, f[in.d], glsl::acosh(x));
+        case ir::Op::FAtanh: return put(in, f[in.d], glsl::atanh(x));
+        case ir::Op::FRadians: return put(in, f[in.d], glsl::radians(x));
+        case ir::Op::FDegrees: return put(in, f[in.d], glsl::degrees(x));
+        case ir::Op::FFma: return put(in, f[in.d], glsl::fma(x, f[in.b], f[in.c]));
+        case ir::Op::FModf: {
+            F whole;
+            const F fraction = glsl::modf(x, whole);
+            put(in, f[in.d], fraction);
+            f[in.c] = whole;
+            return;
+        }
+        case ir::Op::FFrexp: {
+            I e;
+            const F s = glsl::frexp(x, e);
+            put(in, f[in.d], s);
+            i_[in.c] = e;
+            return;
+        }
+        case ir::Op::FLdexp: return put(in, f[in.d], glsl::ldexp(x, i_[in.b]));
+        case ir::Op::FIsNan: return put(in, b_[in.d], M(isnan(x)));
+        case ir::Op::FIsInf: return put(in, b_[in.d], M(isinf(x)));
+        default: throw std::logic_error(std::string("GLSL interpreter: operation ") + ir::name(in.op) + " has no handler");
+    }
+}
+
+template <class F>
+void Machine<F>::derivative(const ir::Instr& in) {
+    if constexpr (has_derivatives_v<F>) {
+        const F& x = f_[in.a];
+        F v;
+        switch (in.op) {
+            case ir::Op::FDdx: v = dFdx(x); break;
+            case ir::Op::FDdy: v = dFdy(x); break;
+            case ir::Op::FDdxFine: v = dFdxFine(x); break;
+            case ir::Op::FDdyFine: v = dFdyFine(x); break;
+            case ir::Op::FDdxCoarse: v = dFdxCoarse(x); break;
+            case ir::Op::FDdyCoarse: v = dFdyCoarse(x); break;
+            case ir::Op::FFwidth: v = fwidth(x); break;
+            case ir::Op::FFwidthFine: v = fwidthFine(x); break;
+            default: v = fwidthCoarse(x); break;
+        }
+        put(in, f_[in.d], v);
+    } else {
+        (void)in;
+        throw std::logic_error("GLSL interpreter: a derivative on independent pixels");
+    }
+}
+
+template <class F>
+void Machine<F>::integer(const ir::Instr& in) {
+    // In the instruction's bank (int or uint) where the operation takes either.
+    const auto run = [&](auto* R) {
+        using T = std::remove_pointer_t<decltype(R)>;
+        T& d = R[in.d];
+        const T& a = R[in.a];
+        switch (in.op) {
+            case ir::Op::INeg: return put(in, d, -a);
+            case ir::Op::IAdd: return put(in, d, a + R[in.b]);
+            case ir::Op::ISub: return put(in, d, a - R[in.b]);
+            case ir::Op::IMul: return put(in, d, a * R[in.b]);
+            case ir::Op::IDiv: return put(in, d, a / R[in.b]);
+            case ir::Op::IMod: return put(in, d, a % R[in.b]);
+            case ir::Op::IAnd: return put(in, d, a & R[in.b]);
+            case ir::Op::IOr: return put(in, d, a | R[in.b]);
+            case ir::Op::IXor: return put(in, d, a ^ R[in.b]);
+            case ir::Op::INot: return put(in, d, ~a);
+            case ir::Op::IShl: return put(in, d, a << R[in.b]);
+            case ir::Op::IShr: return put(in, d, a >> R[in.b]);
+            case ir::Op::IMin: return put(in, d, min(a, R[in.b]));
+            case ir::Op::IMax: return put(in, d, max(a, R[in.b]));
+            case ir::Op::IClamp: return put(in, d, glsl::clamp(a, R[in.b], R[in.c]));
+            case ir::Op::ILess: return put(in, b_[in.d], M(a < R[in.b]));
+            case ir::Op::ILessEqual: return put(in, b_[in.d], M(a <= R[in.b]));
+            case ir::Op::IGreater: return put(in, b_[in.d], M(a > R[in.b]));
+            case ir::Op::IGreaterEqual: return put(in, b_[in.d], M(a >= R[in.b]));
+            case ir::Op::IEqual: return put(in, b_[in.d], M(a == R[in.b]));
+            case ir::Op::INotEqual: return put(in, b_[in.d], M(a != R[in.b]));
+            case ir::Op::IBitfieldExtract: return put(in, d, glsl::bitfieldExtract(a, i_[in.b], i_[in.c]));
+            case ir::Op::IBitfieldInsert: return put(in, d, glsl::bitfieldInsert(a, R[in.b], i_[in.c], i_[in.c + 1]));
+            case ir::Op::IBitfieldReverse: return put(in, d, glsl::bitfieldReverse(a));
+            case ir::Op::IBitCount: return put(in, i_[in.d], glsl::bitCount(a));
+            case ir::Op::IFindLsb: return put(in, i_[in.d], glsl::findLSB(a));
+            case ir::Op::IFindMsb: return put(in, i_[in.d], glsl::findMSB(a));
+            case ir::Op::IMulExtended: {
+                T low;
+                const T high = glsl::mulExtended(a, R[in.b], low);
+                put(in, d, high);
+                R[in.c] = low;
+                return;
+            }
+            default: break;
+        }
+        throw std::logic_error(std::string("GLSL interpreter: operation ") + ir::name(in.op) + " has no handler");
+    };
+    switch (in.op) {
+        case ir::Op::IAbs: return put(in, i_[in.d], abs(i_[in.a]));
+        case ir::Op::ISign: return put(in, i_[in.d], glsl::sign(i_[in.a]));
+        case ir::Op::IAddCarry: case ir::Op::ISubBorrow: {
+            U second;
+            const U first = in.op == ir::Op::IAddCarry ? glsl::uaddCarry(u_[in.a], u_[in.b], second)
+                                                       : glsl::usubBorrow(u_[in.a], u_[in.b], second);
+            put(in, u_[in.d], first);
+            u_[in.c] = second;
+            return;
+        }
+        case ir::Op::FloatFromUint: return put(in, f_[in.d], F(u_[in.a]));
+        case ir::Op::UintFromFloat: return put(in, u_[in.d], U(f_[in.a]));
+        case ir::Op::IntFromUint: return put(in, i_[in.d], I(u_[in.a]));
+        case ir::Op::UintFromInt: return put(in, u_[in.d], U(i_[in.a]));
+        case ir::Op::IntFromBool: return put(in, i_[in.d], I(b_[in.a]));
+        case ir::Op::UintFromBool: return put(in, u_[in.d], U(b_[in.a]));
+        case ir::Op::BoolFromFloat: return put(in, b_[in.d], M(f_[in.a] != F(0.0f)));
+        case ir::Op::BoolFromInt: return put(in, b_[in.d], M(i_[in.a] != I(0)));
+        case ir::Op::BoolFromUint: return put(in, b_[in.d], M(u_[in.a] != U(0u)));
+        case ir::Op::FloatBitsToInt: return put(in, i_[in.d], glsl::floatBitsToInt(f_[in.a]));
+        case ir::Op::FloatBitsToUint: return put(in, u_[in.d], glsl::floatBitsToUint(f_[in.a]));
+        case ir::Op::IntBitsToFloat: return put(in, f_[in.d], F(glsl::intBitsToFloat(i_[in.a])));
+        case ir::Op::UintBitsToFloat: return put(in, f_[in.d], F(glsl::uintBitsToFloat(u_[in.a])));
+        default: break;
+    }
+    if (in.bank == ir::Bank::Int) return run(i_);
+    return run(u_);
+}
+
+template <class F>
+void Machine<F>::geometric(const ir::Instr& in) {
+    F* const f = f_;
+    if (in.op == ir::Op::Cross) {
+        const glsl::vec<F, 3> v = glsl::cross(vector_at<3>(in.a), vector_at<3>(in.b));
+        for (int i = 0; i < 3; ++i) put(in, f[in.d + std::uint32_t(i)], v[i]);
+        return;
+    }
+    if (in.n == 1) {  // GLSL's geometric functions of one float
+        const F& x = f[in.a];
+        F v;
+        switch (in.op) {
+            case ir::Op::Dot: v = x * f[in.b]; break;
+            case ir::Op::Length: v = glsl::length(x); break;
+            case ir::Op::Distance: v = glsl::length(x - f[in.b]); break;
+            case ir::Op::Normalize: v = x / glsl::length(x); break;
+            case ir::Op::Reflect: v = x - F(2.0f) * (f[in.b] * x * f[in.b]); break;
+            case ir::Op::FaceForward: v = select(f[in.c] * f[in.b] < F(0.0f), x, -x); break;
+            default: {  // refract
+                const F& n = f[in.b];
+                const F& eta = f[in.c];
+                const F d = n * x;
+                const F k = F(1.0f) - eta * (eta * (F(1.0f) - d * d));
+                v = select(k < F(0.0f), F(0.0f), eta * x - (eta * d + sqrt(k)) * n);
+            }
+        }
+        return put(in, f[in.d], v);
+    }
+    with_size(in.n, [&]<int N>() {
+        const glsl::vec<F, N> a = vector_at<N>(in.a);
+        switch (in.op) {
+            case ir::Op::Dot: return put(in, f[in.d], glsl::dot(a, vector_at<N>(in.b)));
+            case ir::Op::Length: return put(in, f[in.d], glsl::length(a));
+            case ir::Op::Distance: return put(in, f[in.d], glsl::distance(a, vector_at<N>(in.b)));
+            default: break;
+        }
+        glsl::vec<F, N> v;
+        switch (in.op) {
+            case ir::Op::Normalize: v = glsl::normalize(a); break;
+            case ir::Op::Reflect: v = glsl::reflect(a, vector_at<N>(in.b)); break;
+            case ir::Op::Refract: v = glsl::refract(a, vector_at<N>(in.b), f[in.c]); break;
+            default: v = glsl::faceforward(a, vector_at<N>(in.b), vector_at<N>(in.c)); break;
+        }
+        for (int i = 0; i < N; ++i) put(in, f[in.d + std::uint32_t(i)], v[i]);
+    });
+}
+
+template <class F>
+void Machine<F>::matrix(const ir::Instr& in) {
+    F* const f = f_;
+    switch (in.op) {
+        case ir::Op::MatTimesVec: case ir::Op::VecTimesMat:
+            return with_size(in.n, [&]<int C>() {
+                with_size(in.m, [&]<int R>() {
+                    if (in.op == ir::Op::MatTimesVec) {
+                        const glsl::vec<F, R> v = matrix_at<C, R>(in.a) * vector_at<C>(in.b);
+                        for (int i = 0; i < R; ++i) put(in, f[in.d + std::uint32_t(i)], v[i]);
+                    } else {
+                        const glsl::vec<F, C> v = vector_at<R>(in.a) * matrix_at<C, R>(in.b);
+                        for (int i = 0; i < C; ++i) put(in, f[in.d + std::uint32_t(i)], v[i]);
+                    }
+                });
+            });
+        case ir::Op::MatTimesMat:
+            return with_size(in.count, [&]<int Kc>() {
+                with_size(in.m, [&]<int R>() {
+                    with_size(in.n, [&]<int C>() {
+                        const glsl::mat<F, C, R> p = matrix_at<Kc, R>(in.a) * matrix_at<C, Kc>(in.b);
+                        for (int c = 0; c < C; ++c) {
+                            for (int i = 0; i < R; ++i) put(in, f[in.d + std::uint32_t(c * R + i)], p[c][i]);
+                        }
+                    });
+                });
+            });
+        default:
+            return with_size(in.n, [&]<int N>() {
+                const glsl::mat<F, N, N> m = matrix_at<N, N>(in.a);
+                if (in.op == ir::Op::Determinant) return put(in, f[in.d], glsl::determinant(m));
+                const glsl::mat<F, N, N> v = glsl::inverse(m);
+                for (int c = 0; c < N; ++c) {
+                    for (int i = 0; i < N; ++i) put(in, f[in.d + std::uint32_t(c * N + i)], v[c][i]);
+                }
+            });
+    }
+}
+
+template <class F>
+void Machine<F>::texture(const ir::Instr& in) {
+    F* const f = f_;
+    const glsl::Texture& t = *textures_[in.count];
+    glsl::vec<F, 4> c;
+    switch (in.op) {
+        case ir::Op::TextureSize:
+            if (in.n == 2) {
+                const glsl::ivec2<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler2D&>(t), i_[in.b]);
+                for (int i = 0; i < 2; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
+            } else {
+                const glsl::ivec3<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler3D&>(t), i_[in.b]);
+                for (int i = 0; i < 3; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
+            }
+            return;
+        case ir::Op::TexelFetch:
+            if (in.n == 2) {
+                c = glsl::texelFetch<F>(static_cast<const glsl::sampler2D&>(t), glsl::ivec2<F>(i_[in.a], i_[in.a + 1]), i_[in.b]);
+            } else {
+                c = glsl::texelFetch<F>(static_cast<const glsl::sampler3D&>(t),
+                                        glsl::ivec3<F>(i_[in.a], i_[in.a + 1], i_[in.a + 2]), i_[in.b]);
+            }
+            break;
+        default:
+            if (in.n == 2) {
+                const auto& s = static_cast<const glsl::sampler2D&>(t);
+                const glsl::vec<F, 2> p = vector_at<2>(in.a);
+                if (in.op == ir::Op::Texture) c = glsl::texture2D(s, p);
+                else if (in.op == ir::Op::TextureBias) c = glsl::texture2D(s, p, f[in.b]);
+                else c = glsl::textureLod(s, p, f[in.b]);
+            } else {
+                const auto& s = static_cast<const glsl::sampler3D&>(t);
+                const glsl::vec<F, 3> p = vector_at<3>(in.a);
+                if (in.op == ir::Op::Texture) c = glsl::texture3D(s, p);
+                else if (in.op == ir::Op::TextureBias) c = glsl::texture3D(s, p, f[in.b]);
+                else c = glsl::textureLod(s, p, f[in.b]);
+            }
+            break;
+    }
+    for (int i = 0; i < 4; ++i) put(in, f[in.d + std::uint32_t(i)], c[i]);
+}
+
+template <class F>
+void Machine<F>::indexed(const ir::Instr& in) {
+    const I index = i_[in.b];
+    if (in.op == ir::Op::LoadIndexed) {
+        // Element I[b] of the array at a (stride c): a select per element, which any lane
+        // layout and number type takes alike; an index outside reads 0.
+        const auto load = [&](auto* bank, auto zero) {
+            auto v = zero;
+            for (std::uint32_t e = 0; e < in.count; ++e) v = choose(M(index == I(std::int32_t(e))), bank[in.a + e * in.c], v);
+            put(in, bank[in.d], v);
+        };
+        switch (in.bank) {
+            case ir::Bank::Float: return load(f_, F(0.0f));
+            case ir::Bank::Int: return load(i_, I(0));
+            case ir::Bank::Uint: return load(u_, U(0u));
+            case ir::Bank::Bool: return load(b_, M(false));
+        }
+        return;
+    }
+    const auto store = [&](auto* bank) {
+        for (std::uint32_t e = 0; e < in.count; ++e) {
+            auto& dst = bank[in.d + e * in.c];
+            dst = choose(M(exec_ && M(index == I(std::int32_t(e)))), bank[in.a], dst);
+        }
+    };
+    switch (in.bank) {
+        case ir::Bank::Float: return store(f_);
+        case ir::Bank::Int: return store(i_);
+        case ir::Bank::Uint: return store(u_);
+        case ir::Bank::Bool: return store(b_);
+    }
+}
+
+template <class F>
+std::size_t Machine<F>::control(const ir::Instr& in, std::size_t pc) {
+    const auto jump = [&] { return std::size_t(in.target) - 1; };  // the loop's ++pc lands on target
+    switch (in.op) {
+        case ir::Op::If:
+            cond_stack_.push_back({cond_, M(false)});
+            cond_ = cond_ && b_[in.a];
+            update();
+            return any_lane(exec_) ? pc : jump();  // on to the Else or EndIf
+        case ir::Op::Else:
+            cond_ = !cond_ && cond_stack_.back().a;
+            update();
+            return any_lane(exec_) ? pc : jump();  // on to the EndIf
+        case ir::Op::EndIf:
+            cond_ = cond_stack_.back().a;
+            cond_stack_.pop_back();
+            update();
+            return pc;
+        case ir::Op::LoopBegin:
+            loop_stack_.push_back({brk_, cnt_});
+            breaks_loop_.push_back(true);
+            return any_lane(exec_) ? pc : jump();  // one pass with no lane, as llvmpipe's
+        case ir::Op::BreakUnless:
+            brk_ = brk_ && !(exec_ && !b_[in.a]);
+            update();
+            return pc;
+        case ir::Op::Break:
+            if (breaks_loop_.back()) brk_ = brk_ && !exec_;
+            else sw_ = sw_ && !exec_;
+            update();
+            return pc;
+        case ir::Op::Continue:
+            cnt_ = cnt_ && !exec_;
+            update();
+            return pc;
+        case ir::Op::LoopContinue:
+            cnt_ = loop_stack_.back().b;
+            update();
+            return pc;
+        case ir::Op::LoopEnd: {
+            cnt_ = loop_stack_.back().b;
+            update();
+            // Each 8-lane vector goes round while a lane of it that has not discarded runs and
+            // its limiter lasts, as llvmpipe's does.
+            const M alive = exec_ && !killed_;
+            if constexpr (kVectors > 1) {
+                for (int v = 0; v < kVectors; ++v) {
+                    const M& lanes = vector_[std::size_t(v)];
+                    if (!any_lane(M(exec_ && lanes))) continue;  // left this loop already
+                    const bool living = any_lane(M(alive && lanes));
+                    const bool going = living && --budget_[std::size_t(v)] > 0;
+                    if (!going) {
+                        if (living) result_.loop_limit = true;
+                        brk_ = brk_ && !lanes;
+                    }
+                }
+            } else {
+                const bool living = any_lane(alive);
+                const bool going = living && --budget_[0] > 0;
+                if (!going) {
+                    if (living) result_.loop_limit = true;
+                    brk_ = M(false);
+                }
+            }
+            update();
+            if (any_lane(exec_)) return jump();
+            brk_ = loop_stack_.back().a;
+            cnt_ = loop_stack_.back().b;
+            loop_stack_.pop_back();
+            breaks_loop_.pop_back();
+            update();
+            return pc;
+        }
+        case ir::Op::SwitchBegin:
+            switch_stack_.push_back({sw_, M(false)});
+            breaks_loop_.push_back(false);
+            return pc;
+        case ir::Op::SwitchEnd:
+            sw_ = switch_stack_.back().a;
+            switch_stack_.pop_back();
+            breaks_loop_.pop_back();
+            update();
+            return pc;
+        case ir::Op::CallBegin:
+            call_stack_.push_back({ret_, M(false)});
+            return pc;
+        case ir::Op::CallEnd:
+            ret_ = call_stack_.back().a;
+            call_stack_.pop_back();
+            update();
+            return pc;
+        case ir::Op::Return:
+            ret_ = ret_ && !exec_;
+            update();
+            return pc;
+        case ir::Op::Discard:
+            killed_ = killed_ || exec_;
+            return pc;
+        default: break;
+    }
+    throw std::logic_error(std::string("GLSL interpreter: operation ") + ir::name(in.op) + " is not control flow");
+}
+
+}  // namespace executor_detail
+
+template <class F>
+RunResult Executor<F>::run(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures) {
+    executor_detail::Machine<F> machine(stage, r, textures);
+    return machine.run();
+}
+
+}  // namespace qs::interpreter

@@ -1,0 +1,52 @@
+#pragma once
+// A user's GLSL shader pair as a Program (shading/program.h), run by the interpreter: the
+// renderer draws it like any catalogue shader, under every derivative rule, in double, with
+// Dual2's analytic derivatives and with the undefined-case mask. Built from the front end's
+// compiled program (frontend/compile.h).
+
+#include <atomic>
+#include <deque>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "frontend/compile.h"
+#include "shading/program.h"
+
+namespace qs::interpreter {
+
+class GlslProgram final : public Program {
+public:
+    // `name` as listings and messages name the shader. Throws frontend::GlslError for a
+    // program the renderer cannot bind: more samplers, varyings or uniforms than it passes.
+    GlslProgram(std::string name, frontend::CompiledProgram compiled);
+
+    const ShaderInfo& info() const override { return info_; }
+    void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const override;
+    void shade(ShadeMode mode, const FragmentBatch& in, const Uniforms& u, ColorBatch& out) const override;
+    void shade_pair(ShadeMode mode, const FragmentBatch& a, const FragmentBatch& b, const Uniforms& u, ColorBatch& out_a,
+                    ColorBatch& out_b) const override;
+
+    // The documented departures from `check`'s bar of the translation this GLSL is the source of
+    // (their texts outlive the program: they are the translation's).
+    void adopt_check_bounds(std::span<const CheckBound> bounds) { info_.check_bounds = bounds; }
+
+    const ir::Program& program() const { return compiled_.program; }
+    const frontend::GlslSource& vertex_source() const { return compiled_.vertex; }
+    const std::vector<std::string>& warnings() const { return compiled_.warnings; }
+    // Whether a loop of some fragment was left at llvmpipe's iteration limit (65,535).
+    bool reached_loop_limit() const { return loop_limit_.load(std::memory_order_relaxed); }
+
+private:
+    void shade_batches(ShadeMode mode, const FragmentBatch* const* in, int count, const Uniforms& u, ColorBatch* const* out) const;
+
+    frontend::CompiledProgram compiled_;
+    std::deque<std::string> strings_;  // what info_'s string_views point into
+    std::vector<UniformDecl> uniforms_;
+    ShaderInfo info_;
+    int teximage_ = -1;                           // the sampler slot bound to Uniforms::teximage
+    std::array<int, kMaxSamplers> samplers_{};    // Needs::samplers[i]'s sampler slot
+    mutable std::atomic<bool> loop_limit_{false};
+};
+
+}  // namespace qs::interpreter

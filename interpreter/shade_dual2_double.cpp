@@ -1,0 +1,7 @@
+// The interpreter instantiated for one number type: Dual2<Pixels<double, kBatchLanes>>.
+#include "interpreter/run_stage_impl.h"
+
+namespace qs::interpreter {
+template RunResult shade_batches<Dual2<Pixels<double, kBatchLanes>>>(const ir::Program&, const FragmentBatch* const*, int, const Uniforms&,
+                                        const TextureSlots&, ColorBatch* const*);
+}  // namespace qs::interpreter

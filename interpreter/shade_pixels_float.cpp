@@ -1,0 +1,7 @@
+// The interpreter instantiated for one number type: Pixels<float, kBatchLanes>.
+#include "interpreter/run_stage_impl.h"
+
+namespace qs::interpreter {
+template RunResult shade_batches<Pixels<float, kBatchLanes>>(const ir::Program&, const FragmentBatch* const*, int, const Uniforms&,
+                                        const TextureSlots&, ColorBatch* const*);
+}  // namespace qs::interpreter

@@ -1,0 +1,7 @@
+// The interpreter instantiated for one number type: Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>, two batches as one.
+#include "interpreter/run_stage_impl.h"
+
+namespace qs::interpreter {
+template RunResult shade_batches<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(const ir::Program&, const FragmentBatch* const*, int, const Uniforms&,
+                                        const TextureSlots&, ColorBatch* const*);
+}  // namespace qs::interpreter

@@ -1,0 +1,222 @@
+// GLSL run as written by the interpreter, against OSMesa llvmpipe running the same GLSL on the
+// Table 1.1 plane: every noise function of Stefan Gustavson's and Ashima Arts' webgl-noise
+// (tests/glsl/webgl-noise, MIT), which nobody here wrote, each called from a small main; and the
+// language's constructs where lanes diverge (loops each lane leaves on its own, returns, switch,
+// discard beside derivatives, a loop that never ends). The bar is the catalogue's: llvmpipe's
+// coverage, and no pixel more than 1/255 off unless a bound below names the pixels and the cause.
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "frontend/compile.h"
+#include "reference/gl_renderer.h"
+#include "render/glsl_shaders.h"
+#include "render/scene_render.h"
+#include "tests/reference/comparison.h"
+#include "tests/test_paths.h"
+
+namespace qs {
+
+namespace {
+
+using namespace test;
+
+std::string read_text(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The file's functions under the #version a caller needs, its own #version line dropped.
+std::string library(const std::string& file) {
+    std::string text = read_text(kSource / "tests/glsl/webgl-noise" / file);
+    if (text.rfind("#version", 0) == 0) text = "//" + text;  // a comment now, the line count kept
+    return text;
+}
+
+struct Case {
+    const char* name;  // also the file name the test writes
+    const char* file;
+    const char* main;  // the body of main(): reads `st`, writes `c` (vec3)
+    std::size_t over_1 = 0;  // pixels the bound allows over 1/255
+    const char* cause = nullptr;
+};
+
+const Case kCases[] = {
+    {"noise2D", "noise2D.glsl", "c = vec3(0.5 + 0.5 * snoise(st * 8.0));"},
+    {"noise3D", "noise3D.glsl", "c = vec3(0.5 + 0.5 * snoise(vec3(st * 8.0, 0.7)));"},
+    {"noise3Dgrad", "noise3Dgrad.glsl", "vec3 g; float n = snoise(vec3(st * 8.0, 0.7), g); c = 0.5 + 0.5 * vec3(n, 0.1 * g.xy);"},
+    {"noise4D", "noise4D.glsl", "c = vec3(0.5 + 0.5 * snoise(vec4(st * 8.0, 0.3, 0.9)));"},
+    {"classicnoise2D", "classicnoise2D.glsl", "c = 0.5 + 0.5 * vec3(cnoise(st * 8.0), pnoise(st * 8.0, vec2(4.0)), 0.0);"},
+    {"classicnoise3D", "classicnoise3D.glsl",
+     "c = 0.5 + 0.5 * vec3(cnoise(vec3(st * 8.0, 0.7)), pnoise(vec3(st * 8.0, 0.7), vec3(4.0)), 0.0);"},
+    {"classicnoise4D", "classicnoise4D.glsl",
+     "c = 0.5 + 0.5 * vec3(cnoise(vec4(st * 8.0, 0.3, 0.9)), pnoise(vec4(st * 8.0, 0.3, 0.9), vec4(4.0)), 0.0);"},
+    {"cellular2D", "cellular2D.glsl", "vec2 F = cellular(st * 8.0); c = vec3(F, F.y - F.x);"},
+    {"cellular2x2", "cellular2x2.glsl", "vec2 F = cellular2x2(st * 8.0); c = vec3(F, F.y - F.x);"},
+    {"cellular2x2x2", "cellular2x2x2.glsl", "vec2 F = cellular2x2x2(vec3(st * 8.0, 0.7)); c = vec3(F, F.y - F.x);"},
+    {"cellular3D", "cellular3D.glsl", "vec2 F = cellular(vec3(st * 8.0, 0.7)); c = vec3(F, F.y - F.x);"},
+    {"psrdnoise2D", "psrdnoise2D.glsl",
+     "vec3 n = psrdnoise(st * 8.0, vec2(4.0, 6.0), 0.5); c = vec3(0.5 + 0.5 * n.x, 0.5 + 0.05 * n.yz);"},
+    {"psnoise2D", "psrdnoise2D.glsl", "c = vec3(0.5 + 0.5 * psnoise(st * 8.0, vec2(4.0, 6.0)), 0.5 + 0.5 * srnoise(st * 8.0, 1.5), 0.0);"},
+};
+
+
+// Whole fragment shaders (GLSL 1.30: integers, switch) that read `st` and write `color`.
+struct LanguageCase {
+    const char* name;
+    const char* source;
+};
+
+const LanguageCase kLanguage[] = {
+    {"divergent_loops", R"(
+in vec2 st;
+out vec4 color;
+void main() {
+    int n = 0;
+    float x = 0.0;
+    for (int i = 0; i < 64; ++i) {
+        if (i % 3 == 1) continue;
+        x += sin(float(i) * st.x * 7.0);
+        if (x > 2.0 * st.y + 0.5) break;
+        n++;
+    }
+    int m = 0;
+    do { m += 2; } while (float(m) < st.y * 20.0);
+    color = vec4(float(n) / 64.0, fract(x), float(m) / 20.0, 1.0);
+})"},
+    {"functions_and_returns", R"(
+in vec2 st;
+out vec4 color;
+struct Ring { vec2 centre; float radius; };
+float rings(in Ring r, inout int visits, out bool inside) {
+    visits += 1;
+    float d = distance(st, r.centre);
+    inside = d < r.radius;
+    if (inside) return d / r.radius;
+    for (int k = 0; k < 8; k++) {
+        if (d < r.radius * float(k + 2)) return float(k) / 8.0;
+    }
+    return 1.0;
+}
+void main() {
+    Ring r[3] = Ring[3](Ring(vec2(0.3), 0.1), Ring(vec2(0.7, 0.4), 0.05), Ring(vec2(0.5, 0.8), 0.08));
+    int visits = 0;
+    bool inside;
+    int pick = int(floor(st.x * 3.0)) % 3;
+    float a = rings(r[pick], visits, inside);
+    float b = rings(r[(pick + 1) % 3], visits, inside);
+    color = vec4(a, b, inside ? 1.0 : 0.0, float(visits) / 4.0);
+})"},
+    {"switch_and_integers", R"(
+in vec2 st;
+out vec4 color;
+void main() {
+    ivec2 cell = ivec2(st * 16.0);
+    uint h = uint(cell.x * 73856093 ^ cell.y * 19349663);
+    h = (h >> 13u) * 2654435761u + (h << 7u);
+    vec3 c;
+    switch (int(h % 5u)) {
+    case 0: c = vec3(1.0, 0.2, 0.2); break;
+    case 1:
+    case 2: c = vec3(0.2, float(bitCount(h)) / 32.0, 0.2); break;
+    case 3: c = vec3(float(findMSB(h)) / 31.0); break;
+    default: c = vec3(float(h & 255u) / 255.0, 0.0, 1.0);
+    }
+    color = vec4(c, 1.0);
+})"},
+    {"discard_beside_derivatives", R"(
+in vec2 st;
+out vec4 color;
+void main() {
+    vec2 p = st * 12.0;
+    if (fract(p.x + p.y) < 0.3) discard;
+    float w = 0.0;
+    for (int i = 0; i < 4; i++) {
+        if (fract(p.x * float(i + 1)) > 0.8) break;
+        w += fwidth(p.x * p.y * float(i + 1));
+    }
+    color = vec4(w, dFdx(p.y * p.y), dFdy(sin(p.x)) * 0.5 + 0.5, 1.0);
+})"},
+    {"loop_that_never_ends", R"(
+in vec2 st;
+out vec4 color;
+void main() {
+    // llvmpipe leaves a loop after 65,535 iterations of the shader's loops together; the lanes
+    // that would never leave it end with x whatever that many iterations left.
+    float x = 0.0;
+    int i = 0;
+    while (x < 2.0 * st.x) {
+        x += st.y < 0.5 ? 0.0 : 0.001;
+        i++;
+    }
+    color = vec4(x, float(i % 256) / 255.0, float(i) / 65535.0, 1.0);
+})"},
+};
+
+}  // namespace
+
+TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interpreter][reference]") {
+    const std::filesystem::path dir = temp_dir("glsl-reference");
+    const int size = 128;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    for (const Case& c : kCases) {
+        const std::string fragment = "#version 120\n" + library(c.file) + "\nvarying vec2 st;\nvoid main() {\n    vec3 c;\n    " +
+                                     c.main + "\n    gl_FragColor = vec4(c, 1.0);\n}\n";
+        const std::filesystem::path frag = dir / (std::string(c.name) + ".frag");
+        std::ofstream(frag) << fragment;
+        const frontend::GlslSource vertex = frontend::default_vertex_shader({frag.string(), fragment});
+        std::ofstream(dir / (std::string(c.name) + ".vert")) << vertex.text;
+        const GlslShader shader = load_glsl_shader(frag, dir / (std::string(c.name) + ".vert"));
+
+        Scene scene = load_scene(kPlane);
+        FrameRequest r;
+        r.width = r.height = size;
+        r.shader_override = std::string(shader.program->info().name);
+        r.set(raster_options_as(GlDriver::Llvmpipe));
+        const Framebuffer ours = render_frame(scene, r);
+        const Image reference = GlSceneRenderer(scene, {size, size, {}, c.name, {}}, *context, programs).render();
+        const Counts n = count(ours, reference);
+        INFO(c.name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, coverage differs on "
+                    << n.coverage_mismatch << (c.cause ? std::string(" (") + c.cause + ")" : std::string()));
+        CHECK(n.coverage_mismatch == 0);
+        CHECK(n.over_1 <= c.over_1);
+        if (n.over_1 > 0) write_comparison(ours, reference, dir / (std::string(c.name) + "-comparison.png"));
+    }
+}
+
+
+TEST_CASE("the language where lanes diverge, run by the interpreter, matches OSMesa llvmpipe", "[interpreter][reference]") {
+    const std::filesystem::path dir = temp_dir("glsl-language");
+    const int size = 64;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    for (const LanguageCase& c : kLanguage) {
+        const std::string fragment = std::string("#version 130") + c.source + "\n";
+        const std::filesystem::path frag = dir / (std::string(c.name) + ".frag");
+        std::ofstream(frag) << fragment;
+        const frontend::GlslSource vertex = frontend::default_vertex_shader({frag.string(), fragment});
+        std::ofstream(dir / (std::string(c.name) + ".vert")) << vertex.text;
+        const GlslShader shader = load_glsl_shader(frag, dir / (std::string(c.name) + ".vert"));
+
+        Scene scene = load_scene(kPlane);
+        FrameRequest r;
+        r.width = r.height = size;
+        r.shader_override = std::string(shader.program->info().name);
+        r.set(raster_options_as(GlDriver::Llvmpipe));
+        const Framebuffer ours = render_frame(scene, r);
+        const Image reference = GlSceneRenderer(scene, {size, size, {}, c.name, {}}, *context, programs).render();
+        const Counts n = count(ours, reference);
+        INFO(c.name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, coverage differs on "
+                    << n.coverage_mismatch);
+        CHECK(n.coverage_mismatch == 0);
+        CHECK(n.over_1 == 0);
+        if (n.over_1 > 0) write_comparison(ours, reference, dir / (std::string(c.name) + "-comparison.png"));
+    }
+}
+
+}  // namespace qs
