@@ -128,4 +128,6 @@ struct GltfMaterial {
     }
 };
 
+QUADSHADE_SHADERS_IN("glTF: the default material", GltfMaterial)
+
 }  // namespace qs::shaders

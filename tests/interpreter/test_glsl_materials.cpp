@@ -27,6 +27,7 @@ void main() {
 // The Table 1.1 plane saved into `dir` with its material drawn by `glsl` (a file name in dir).
 std::filesystem::path plane_with_glsl(const std::filesystem::path& dir, const std::string& glsl) {
     Scene s = load_scene(test::kPlane);
+    test::copy_textures_into(s, dir);
     s.objects[0].shader.clear();
     s.objects[0].glsl_fragment = dir / glsl;
     const auto file = dir / "plane.gltf";
@@ -75,6 +76,7 @@ TEST_CASE("a material's GLSL files: outside the scene's folder, beside a shader,
     // Edited as JSON: save_scene writes only what a loaded scene can hold.
     auto scene_naming = [&](const std::string& extras) {
         Scene s = load_scene(test::kPlane);
+        test::copy_textures_into(s, dir / "scene");
         save_scene(s, dir / "scene" / "plane.gltf");
         std::ifstream in(dir / "scene" / "plane.gltf");
         nlohmann::json gltf = nlohmann::json::parse(in);

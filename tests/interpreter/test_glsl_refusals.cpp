@@ -34,7 +34,7 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
     };
     const Case cases[] = {
         {"#version 130\nuniform samplerCube sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = texture(sky, vec3(st, 1.0));\n}\n",
-         "user.frag:2", "samplerCube"},
+         "user.frag:6", "samplerCube"},
         {"#version 110\nfloat f(float x) { return x < 1.0 ? x : f(x - 1.0); }\nvoid main() { gl_FragColor = vec4(f(2.0)); }\n",
          "user.frag:2", "recurs"},
         {"#version 130\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = vec4(gl_FrontFacing ? 1.0 : 0.0);\n}\n",
@@ -42,7 +42,7 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
         {"#version 130\nuniform sampler2D t;\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = textureGrad(t, st, vec2(0.1), vec2(0.1));\n}\n",
          "user.frag:6", "textureGrad"},
         {"#version 130\nin vec2 unknown_varying;\nout vec4 c;\nvoid main() { c = vec4(unknown_varying, 0.0, 1.0); }\n",
-         "user.frag:2", "unknown_varying"},
+         "user.frag:4", "unknown_varying"},
         // glslang's own message for GLSL that does not compile
         {"#version 110\nvoid main() {\n  gl_FragColor = vec4(1.0) +;\n}\n", "user.frag:3", "error: "},
     };

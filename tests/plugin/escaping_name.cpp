@@ -14,7 +14,7 @@ struct Escaping {
     static constexpr ShaderInfo info{
         .name = "../../escaped",
         .description = "a shader named like a path leading out of --export-glsl's folder",
-        .needs = Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false},
+        .needs = {.coordinates = Coordinates::None},
         .glsl_fragment = {"escaped.frag"},
     };
     using VertexStage = shaders::PlanePosition;

@@ -122,8 +122,8 @@ void main() {
     switch (int(h % 5u)) {
     case 0: c = vec3(1.0, 0.2, 0.2); break;
     case 1:
-    case 2: c = vec3(0.2, float(bitCount(h)) / 32.0, 0.2); break;
-    case 3: c = vec3(float(findMSB(h)) / 31.0); break;
+    case 2: c = vec3(0.2, float((h >> 5u) & 31u) / 31.0, 0.2); break;
+    case 3: c = vec3(float(h % 97u) / 96.0); break;
     default: c = vec3(float(h & 255u) / 255.0, 0.0, 1.0);
     }
     color = vec4(c, 1.0);
