@@ -237,7 +237,7 @@ TEST_CASE("a render's measured peak memory is within its plan, and a banded one 
     }
 }
 
-TEST_CASE("a bake's measured peak memory is within its plan; one over --memory-limit is refused with nothing written",
+TEST_CASE("a bake's measured peak memory is within its plan, and one over --memory-limit is refused with nothing written",
           "[render][memory][bake]") {
     const auto dir = temp_dir("bake-memory-plan");
     const std::string bake = (kBin / "quadshade").string() + " bake " +
