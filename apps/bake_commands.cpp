@@ -170,6 +170,10 @@ int cmd_bake(BakeArgs a) {
                              "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
         }
     }
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
+    load_image_library();  // the bake's memory is measured from here
+    reset_peak_resident();
+    const std::uint64_t resident_before = resident_bytes();
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
@@ -197,19 +201,30 @@ int cmd_bake(BakeArgs a) {
     if (a.normal_step) n.step = *a.normal_step;
 
     // Before any work: the folder the files go to (their staging folder is made in it now), and
-    // the memory of the largest map (each map is written, and its memory freed, before the next).
+    // the memory of the largest map (each map is written, and its memory freed, before the next)
+    // beside what the bake holds throughout: the scene as loaded and kRenderOverheadBytes.
     OutputSet out(output);
     const std::uint64_t limit = memory_limit(a.memory_limit);
+    const std::uint64_t held = kRenderOverheadBytes + scene_bytes(scene);
     const std::string side = std::to_string(a.size) + "x" + std::to_string(a.size);
-    std::vector<std::pair<std::string, std::uint64_t>> needs = {{"the colour atlas", atlas_bake_bytes(scene, req)}};
-    if (height) needs.emplace_back("the height map", needs.front().second);
-    if (normal) needs.emplace_back("the normal map", normal_bake_bytes(scene, n));
+    // An atlas is written a row at a time; the normal map as a whole image once it is made.
+    const std::uint64_t atlas = atlas_bake_bytes(scene, req) + ImageWriter::conversion_bytes(color_file, a.size, 1, true);
+    std::vector<std::pair<std::string, std::uint64_t>> needs = {{"the colour atlas", atlas}};
+    if (height) needs.emplace_back("the height map", atlas);
+    if (normal) {
+        const std::uint64_t image = std::uint64_t(a.size) * std::uint64_t(a.size) * 4 * sizeof(float);
+        needs.emplace_back("the normal map",
+                           std::max(normal_bake_bytes(scene, n),
+                                    image + ImageWriter::conversion_bytes(normal_file, a.size, a.size, true)));
+    }
+    std::uint64_t planned = 0;
     for (const auto& [map, bytes] : needs) {
-        if (bytes > limit) {
-            throw MemoryError("bake: " + map + " at " + side + " needs " + byte_size_text(bytes) + ", more than the " +
-                              byte_size_text(limit) +
+        if (held + bytes > limit) {
+            throw MemoryError("bake: " + map + " at " + side + " needs " + byte_size_text(held + bytes) +
+                              ", more than the " + byte_size_text(limit) +
                               " available (--memory-limit sets it; a smaller --size needs less)");
         }
+        planned = std::max(planned, held + bytes);
     }
 
     auto clock = std::chrono::steady_clock::now;
@@ -257,7 +272,10 @@ int cmd_bake(BakeArgs a) {
                  a.size, a.size, color_ms, color_file.c_str());
     if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
     if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
-    std::fputc('\n', stderr);
+    const std::uint64_t peak = peak_resident_bytes();
+    std::fprintf(stderr, ", peak memory %s (planned %s)\n",
+                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
+                 byte_size_text(planned).c_str());
     warn_loop_limit(glsl);
     return 0;
 }

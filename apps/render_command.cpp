@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "render/plugins.h"
 #include "render/undefined_mask.h"
 #include "scenes/image_io.h"
+#include "scenes/scene_files.h"
 #include "scenes/uniforms.h"
 
 namespace qs::app {
@@ -159,13 +161,22 @@ bool writes_in_bands(const fs::path& file) {
     return ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
 }
 
-// What a render of the whole frame, or of bands of it, needs beside the loaded scene.
-std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs& a, std::uint64_t limit) {
+struct RenderPlan {
+    std::vector<RowBand> bands;
+    std::uint64_t peak_bytes = 0;  // the most the render holds at once, by the plan
+};
+
+// The bands a render of the whole frame, or of bands of it, is made in, within `limit` beside
+// what the render holds throughout (the scene, its textures, kRenderOverheadBytes), and the
+// render's planned peak.
+RenderPlan plan_render(const SceneRenderer& renderer, const RenderArgs& a, std::uint64_t limit) {
     const int w = renderer.width();
+    const SceneRenderer::HeldBytes held = renderer.held_bytes();
     MemoryPlanInput in;
     in.height = renderer.height();
     in.pairing = a.request.shading.pairing;
     in.limit = limit;
+    in.held = kRenderOverheadBytes + held.scene + held.textures;
     in.can_band = writes_in_bands(a.output) && (a.mask_output.empty() || writes_in_bands(a.mask_output));
     in.bytes_for_rows = [&](int rows) {
         std::uint64_t bytes = renderer.frame_bytes(rows) + ImageWriter::conversion_bytes(a.output, w, rows, a.alpha);
@@ -175,7 +186,12 @@ std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs
         }
         return bytes;
     };
-    return plan_bands(in);
+    RenderPlan plan{plan_bands(in)};
+    int rows = 0;
+    for (const RowBand& b : plan.bands) rows = std::max(rows, b.end - b.begin);
+    // Loading a texture held its decoding beside the scene; the frames come after.
+    plan.peak_bytes = in.held + std::max(held.texture_loading, in.bytes_for_rows(rows));
+    return plan;
 }
 
 struct FrameTotals {
@@ -246,7 +262,7 @@ int cmd_render(RenderArgs& a) {
     }
     refuse_unsupported(a);
     for (const std::string& u : a.uniforms) req.uniforms.push_back(parse_uniform_option(u));
-    const std::uint64_t limit = memory_limit(a.memory_limit);
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
     const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
     auto path_of = [&](const std::string& pattern, int f) {
         try {
@@ -273,6 +289,13 @@ int cmd_render(RenderArgs& a) {
         for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
     }
     const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
+    // The libraries first: the render's memory is measured from here, and its plan is checked
+    // against what is left.
+    load_image_library();
+    load_libraries(req);
+    const std::uint64_t limit = memory_limit(a.memory_limit);
+    reset_peak_resident();
+    const std::uint64_t resident_before = resident_bytes();
     Scene scene = load_scene(a.scene, a.load);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
     check_programs(scene, req.shader_override);  // fail before any work
@@ -282,7 +305,8 @@ int cmd_render(RenderArgs& a) {
     }
     SceneRenderer renderer(scene, req);
     for (const std::string& note : renderer.notes()) std::fprintf(stderr, "quadshade: warning: %s\n", note.c_str());
-    const std::vector<RowBand> bands = plan_render(renderer, a, limit);
+    const RenderPlan plan = plan_render(renderer, a, limit);
+    const std::vector<RowBand>& bands = plan.bands;
 
     const bool progress = last > first && ::isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
@@ -314,7 +338,10 @@ int cmd_render(RenderArgs& a) {
     } else {
         std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (drawn in order, each pixel's nearest surface comes last)", stderr);
     }
-    std::fputc('\n', stderr);
+    const std::uint64_t peak = peak_resident_bytes();
+    std::fprintf(stderr, ", peak memory %s (planned %s)\n",
+                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
+                 byte_size_text(plan.peak_bytes).c_str());
     warn_loop_limit(glsl);
     if (!a.mask_output.empty()) {
         std::fprintf(stderr,

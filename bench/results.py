@@ -22,6 +22,7 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   bake, bake-seams, bake-normals, bake-lit
                STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
                                                                         (quadshade-bench-bake)
+  startup      STUDY_DIR/startup.md                                     (quadshade-bench-startup)
   host         this machine and the date
 Every block but `host` ends with the machine and date it was rewritten on, so that a page whose
 blocks come from different runs says which is which. A block whose input is missing is left as it
@@ -185,6 +186,15 @@ def markdown_file(study, name):
         return [l.rstrip() for l in f if l.strip().startswith("|")]
 
 
+def table_and_notes(study, name):
+    """A table with the lines after it that say how it was measured (runs, load)."""
+    path = os.path.join(study, name)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return [l.rstrip() for l in f.read().strip().splitlines()]
+
+
 def pareto_front(rows):
     front = []
     for r in sorted(rows, key=lambda r: (r["ms"], r["rms_vs_truth"])):
@@ -269,6 +279,7 @@ def main():
         "bake-seams": lambda: markdown_file(study, "bake-seams.md"),
         "bake-normals": lambda: markdown_file(study, "bake-normals.md"),
         "bake-lit": lambda: markdown_file(study, "bake-lit.md"),
+        "startup": lambda: table_and_notes(study, "startup.md"),
     }
     with open(doc) as f:
         text = f.read()

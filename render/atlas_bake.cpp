@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 
 #include "render/atlas_skirts.h"
+#include "render/memory_plan.h"
 
 namespace qs {
 
@@ -167,13 +168,23 @@ std::uint64_t atlas_bake_bytes(const Scene& scene, const AtlasRequest& request) 
         vertices += scene.meshes[o.mesh].vertices.size();
         triangles += scene.meshes[o.mesh].indices.size() / 3;
     }
-    // Skirts: at most two triangles and four vertices on each of a chart's boundary edges.
-    const std::uint64_t skirt_triangles = request.skirt > 0 ? 6 * triangles : 0;
-    const std::uint64_t skirt_vertices = request.skirt > 0 ? 12 * triangles : 0;
+    // Skirts: made as atlas_scene makes them, to count them (a small part of the frame's memory).
+    std::uint64_t skirt_triangles = 0, skirt_vertices = 0;
+    if (request.skirt > 0) {
+        for (const Object& o : scene.objects) {
+            const Mesh strips = skirt_mesh(scene.meshes[o.mesh], float(request.skirt) / float(request.size));
+            skirt_triangles += strips.indices.size() / 3;
+            skirt_vertices += strips.vertices.size();
+        }
+    }
     constexpr std::uint64_t kCheckPerTriangle = 160;  // check_atlas's triangles, events and sweep
     const std::uint64_t texels = std::uint64_t(request.size) * std::uint64_t(request.size);
+    // The atlas's scene is a copy of the scene with the skirts' meshes, and the draw calls hold
+    // each drawn vertex again as a vertex stage input.
+    const std::uint64_t skirt_meshes = skirt_vertices * sizeof(Vertex) + skirt_triangles * 3 * sizeof(std::uint32_t);
+    const std::uint64_t draws = (vertices + skirt_vertices) * sizeof(VertexIn);
     return render_working_bytes(texels, vertices + skirt_vertices, triangles + skirt_triangles, true, false) +
-           triangles * kCheckPerTriangle;
+           triangles * kCheckPerTriangle + scene_bytes(scene) + skirt_meshes + draws;
 }
 
 Scene atlas_scene(const Scene& scene, int size, int skirt) {

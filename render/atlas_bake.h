@@ -40,7 +40,8 @@ struct AtlasRequest {
 std::size_t check_atlas(const Scene& scene);
 
 // Bytes render_atlas_frame holds at its peak beside the scene: the frame (colour and depth of
-// size x size texels), the skirts, the vertex and triangle working memory, check_atlas's sweep.
+// size x size texels), the atlas's copy of the scene with its skirts, the draw calls' vertices, the
+// vertex and triangle working memory, check_atlas's sweep.
 std::uint64_t atlas_bake_bytes(const Scene& scene, const AtlasRequest& request);
 
 // The scene an atlas is drawn from: `scene` with a transparent black clear colour (the gutter

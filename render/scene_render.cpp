@@ -7,6 +7,7 @@
 #include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
 #include "render/atlas_program.h"
+#include "render/memory_plan.h"
 #include "render/glsl_shaders.h"
 #include "render/textures.h"
 #include "render/uniform_binding.h"
@@ -15,9 +16,18 @@
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
+#include "raycast/screen_footprint.h"
 #endif
 
 namespace qs {
+
+namespace {
+
+// What the ray caster holds per triangle: world positions, planes, the footprint on screen and
+// Embree's BVH. Measured, rounded up (docs/results.md, "The cost of one call").
+constexpr std::uint64_t kRayCastBytesPerTriangle = 512;
+
+}  // namespace
 
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override) {
     if (shader_override.empty() && !object.glsl_fragment.empty()) {
@@ -105,7 +115,9 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
     if (!t) {
         try {
-            t = load_texture(scene_, source);
+            std::uint64_t loading = 0;
+            t = load_texture(scene_, source, &loading);
+            texture_loading_ = std::max(texture_loading_, loading);
         } catch (const SceneError& e) {
             // Every texture that cannot be read is reported, not only the first; the draw reads
             // white meanwhile and the constructor throws them all.
@@ -318,8 +330,27 @@ std::uint64_t SceneRenderer::frame_bytes(int rows) const {
         vertices += d.vertices.size();
         triangles += d.indices.size() / 3;
     }
-    return render_working_bytes(std::uint64_t(width_) * std::uint64_t(rows), vertices, triangles, depth,
-                                request_.shading.check_undefined);
+    std::uint64_t bytes = render_working_bytes(std::uint64_t(width_) * std::uint64_t(rows), vertices, triangles, depth,
+                                               request_.shading.check_undefined);
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (caster_) bytes += BlockCoverage::bytes(width_, rows);  // what the rays of each 4x4 block may hit
+#endif
+    return bytes;
+}
+
+SceneRenderer::HeldBytes SceneRenderer::held_bytes() const {
+    HeldBytes held;
+    std::uint64_t triangles = 0;
+    held.scene = scene_bytes(scene_);
+    for (const DrawCall& d : draws_) triangles += d.indices.size() / 3;
+    for (const std::vector<VertexIn>& v : vertices_) held.scene += v.capacity() * sizeof(VertexIn);
+    for (const std::vector<std::uint32_t>& words : uniform_words_) held.scene += words.capacity() * sizeof(std::uint32_t);
+    if (caster_) held.scene += triangles * kRayCastBytesPerTriangle;
+    for (const std::unique_ptr<glsl::Texture>& t : textures_) {
+        if (t) held.textures += t->texels.capacity() * sizeof(std::uint32_t) + t->levels.capacity() * sizeof(glsl::Texture::Level);
+    }
+    held.texture_loading = texture_loading_;
+    return held;
 }
 
 void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RenderStats* stats, RowBand band) {
@@ -353,6 +384,14 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ren
 #endif
     rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster_options(), stats, band,
                    &raster_memory_);
+}
+
+void load_libraries(const FrameRequest& request) {
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (request.backend == Backend::RayCaster) EmbreeScene::load_library();
+#else
+    (void)request;  // the SceneRenderer refuses the ray caster
+#endif
 }
 
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats) {

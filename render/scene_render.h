@@ -80,8 +80,16 @@ public:
 
     // Bytes a render of `rows` rows holds while it runs: the framebuffer's colour, depth (where
     // a draw tests it) and undefined-case mask, and the vertex stage's and triangle setup's
-    // working memory. Textures are loaded (and counted by the caller) already.
+    // working memory. What the renderer holds for every frame is held_bytes().
     std::uint64_t frame_bytes(int rows) const;
+    // What the renderer holds beside its frames, counted from what it loaded: the scene (its
+    // meshes and embedded images, the draw calls' vertices, the ray caster's BVH) and the
+    // sampled textures with their mipmaps; and the most that loading a texture held beside
+    // those (its file, the decoded image and its RGBA copy), freed since.
+    struct HeldBytes {
+        std::uint64_t scene = 0, textures = 0, texture_loading = 0;
+    };
+    HeldBytes held_bytes() const;
     // What the scene asks that renders, but probably not as its author meant (a shader reading
     // texture coordinates on meshes without them, a shader sampling a texture materials lack),
     // one line for each kind, counted over what it concerns, for the command line to warn.
@@ -102,6 +110,7 @@ private:
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
     std::vector<DrawCall> object_draws_;                    // per scene object
     std::vector<DrawCall> draws_;                           // this frame's, in drawing order
+    std::uint64_t texture_loading_ = 0;                     // held_bytes().texture_loading
     std::vector<std::unique_ptr<Program>> atlas_programs_;  // per draw with FrameRequest::atlas
     std::vector<std::vector<std::uint32_t>> uniform_words_;  // per object: its Uniforms::user
     std::vector<std::string> notes_;
@@ -113,6 +122,12 @@ private:
     struct Caster;
     std::unique_ptr<Caster> caster_;
 };
+
+// Loads the outside libraries a render of `request` uses, as its first frame would: Embree for
+// the ray caster (OpenImageIO, for its textures and its output, is scenes/image_io.h's). A caller
+// that measures a render's time or memory calls it first, to count the render's own. Throws
+// std::runtime_error naming the library when it cannot be loaded.
+void load_libraries(const FrameRequest& request);
 
 // Bytes a render of `pixels` pixels holds while it runs (SceneRenderer::frame_bytes counts its own
 // with it): colour, depth, the undefined-case mask, and the vertex stage's and triangle setup's

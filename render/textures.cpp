@@ -29,10 +29,10 @@ glsl::SamplerState sampler_state(const Sampler& s) {
     return r;
 }
 
-std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture) {
+std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture, std::uint64_t* loading_bytes) {
     const std::string where = scene.file.string() + ": " + texture.field + ": ";
     try {
-        const Image8 image = read_texture_image(texture.image);
+        const Image8 image = read_texture_image(texture.image, loading_bytes);
         if (texture.dims == 2) {
             return std::make_unique<glsl::sampler2D>(image.width, image.height, image.rgba.data(), sampler_state(texture.sampler));
         }

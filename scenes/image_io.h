@@ -1,5 +1,5 @@
 #pragma once
-// Image files through OpenImageIO (the only file that includes it is image_io.cpp): reading
+// Image files through OpenImageIO (behind image_library.h, loaded on first use): reading
 // textures and images to compare (regular files only, their size checked on the header before
 // anything is decoded), writing renders safely (a temporary file, every write checked, renamed
 // into place: see temporary_file.h), in one piece or row band by row band, and comparing images.
@@ -42,6 +42,12 @@ struct ImageReadLimits {
     int width = 0, height = 0;
 };
 
+// Loads OpenImageIO (a module of its own: image_library.h), as the first image read or written
+// does. Throws ImageError naming it when it cannot be loaded. A command that will write an image
+// calls it first, so that its frame times and memory measurements do not count the library's
+// own start-up.
+void load_image_library();
+
 // Reads PNG, JPEG, OpenEXR, TIFF and HDR files, the format named by the extension;
 // grey/RGB are expanded to RGBA (alpha 1). Only regular files are opened (never a FIFO or
 // device); the image is decoded from memory.
@@ -67,8 +73,10 @@ Image8 read_image8(const std::filesystem::path& path, const ImageReadLimits& lim
 // RGBA (alpha 255), deeper channels rounded to 8 bits. A file is read as read_image reads one
 // (a regular file, the reader its extension names) and embedded bytes by their MIME type; both
 // within the texture limits of scenes/limits.h, checked on the header. Throws ImageError naming
-// the file (or the embedded image's kind) when it cannot be read.
-Image8 read_texture_image(const ImageSource& source);
+// the file (or the embedded image's kind) when it cannot be read. `decoding_bytes`, when given,
+// receives the most the decoding held at once: the file, the samples as stored (when not 8-bit)
+// and as 8-bit, and the RGBA image.
+Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes = nullptr);
 
 // Bytes an image of width x height takes as read_image's result at its peak (decoded channels
 // and the RGBA copy), for checking memory before reading.
@@ -93,7 +101,7 @@ public:
     void commit();
 
     // Bytes write_rows needs beside its input for `rows` rows (the conversion to the file's
-    // channels and type).
+    // channels and type), and the encoder's own buffers.
     static std::uint64_t conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha);
     // The most write_image converts at once.
     static constexpr std::uint64_t kChunkBytes = std::uint64_t(16) << 20;
