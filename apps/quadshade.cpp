@@ -56,7 +56,7 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
 
 struct CheckArgs {
     std::vector<std::string> shaders, rules{"fine"}, plugins;
-    bool all = false, interpret = false;
+    bool all = false, interpret = false, compile_glsl = false;
     std::string glsl, vertex_glsl;
     std::string scenes, output = "quadshade-check";
     int jobs = 0;
@@ -78,7 +78,7 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
         ->option_text("DIR");
     cmd.add_option("--jobs", a.jobs, "cases checked at once, each a reference process and a render\n(default: one per core)")
         ->check(CLI::Range(1, 1024))->option_text("N");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_flag("--interpret", a.interpret,
                  "check the shaders' GLSL run by the interpreter (as --glsl runs a\nfile) instead of their translations");
     add_plugin_option(cmd, a.plugins);
@@ -229,7 +229,7 @@ int cmd_check(const CheckArgs& a) {
     CheckRequest request;
     request.shaders = a.shaders;
     std::string glsl;
-    if (use_glsl_options(a.glsl, a.vertex_glsl, glsl)) request.shaders.push_back(glsl);
+    if (use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, glsl)) request.shaders.push_back(glsl);
     if (a.all == !request.shaders.empty()) throw UsageError("check: name the shaders to check, or --all, or --glsl (one of them)");
     if (a.interpret) {
         // The GLSL of each shader to check, run by the interpreter, in its translation's place.

@@ -44,7 +44,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--uniform", a.uniforms,
                    "a shader's own uniform, for every object whose shader declares it\n"
@@ -253,7 +253,7 @@ int cmd_render(RenderArgs& a) {
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
 
     for (const std::string& plugin : a.plugins) load_plugin(plugin);
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, req.shader_override);
     Scene scene = load_scene(a.scene, a.load);
     for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {

@@ -887,7 +887,7 @@ void StageWriter::assignment(TIntermBinary* b) {
     if (op == glslang::EOpAssign) {
         if (auto* s = target->getAsSymbolNode()) {
             auto it = locals_.find(s->getId());
-            if (it != locals_.end() && !it->second.declared && it->second.declaring == b) {
+                if (it != locals_.end() && !it->second.declared && it->second.declaring == b) {
                 it->second.declared = true;
                 it->second.mask_depth = int(masks_.size());
                 Expr v = it->second.plain_counter ? expr(b->getRight()) : as_typed(b->getRight(), b->getType());
@@ -918,8 +918,10 @@ void StageWriter::assignment(TIntermBinary* b) {
     Expr r = expr(b->getRight());
     if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat) r = as_typed(b->getRight(), b->getRight()->getType());
     const std::string lv = lvalue(target);
-    if (masked_target(target)) {
-        assign_to(target, lv + " " + o + " " + parens(r, kMultiplicative + 1), b);
+    const bool widened = !target->getType().isScalar() && b->getRight()->getType().isScalar();
+    if (masked_target(target) || widened) {
+        assign_to(target, (lv.back() == ')' ? type(target->getType(), b) + "(" + lv + ")" : lv) + " " + o + " " +
+                              parens(r, kMultiplicative + 1), b);
     } else {
         line(lv + " " + o + "= " + r.text + ";", b);
     }
@@ -930,7 +932,7 @@ void StageWriter::block(TIntermNode* n) {
     if (n) {
         write_zeroes(n);
         auto* a = n->getAsAggregate();
-        if (a && a->getOp() == glslang::EOpSequence) {
+        if (a && a->getOp() == glslang::EOpSequence && !is_for_sequence(a)) {
             for (TIntermNode* s : statements_of(a)) statement(s);
         } else {
             statement(n);
@@ -1086,7 +1088,11 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     if (TIntermTyped* t = l->getTerminal()) {
         if (auto* u = t->getAsUnaryNode(); u && u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) {
             const bool inc = u->getOp() == glslang::EOpPostIncrement || u->getOp() == glslang::EOpPreIncrement;
-            step = lvalue(u->getOperand()) + (inc ? "++" : "--");
+            auto* sym = u->getOperand()->getAsSymbolNode();
+            const bool plain = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            const glslang::TBasicType bt = u->getOperand()->getType().getBasicType();
+            const std::string one = bt == glslang::EbtFloat ? "1.0f" : scalar_type(bt, u) + "(1)";
+            step = plain ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
         } else if (auto* b = t->getAsBinaryNode(); b && b->getOp() > glslang::EOpAssign && b->getOp() <= glslang::EOpSubAssign) {
             Expr r = expr(b->getRight());
             if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !locals_[b->getLeft()->getAsSymbolNode() ? b->getLeft()->getAsSymbolNode()->getId() : 0].plain_counter) {
@@ -1172,7 +1178,7 @@ void StageWriter::statement(TIntermNode* n) {
             const std::string lv = lvalue(t);
             const std::string one = t->getType().getBasicType() == glslang::EbtFloat ? "1.0f" : scalar_type(t->getType().getBasicType(), u) + "(1)";
             if (masked_target(t)) assign_to(t, lv + (inc ? " + " : " - ") + one, u);
-            else line(lv + (inc ? "++;" : "--;"), u);
+            else line(lv + (inc ? " += " : " -= ") + one + ";", u);
             return;
         }
         refuse(n, "an expression statement with no effect");
@@ -1194,7 +1200,7 @@ void StageWriter::declare_locals(TIntermNode* body) {
         std::map<long long, TIntermSymbol*> symbol;
         std::map<long long, TIntermNode*> first_statement;  // in the common block
         std::vector<TIntermNode*> blocks;
-        std::map<long long, bool> counter_ok;
+        Finder() : glslang::TIntermTraverser(true, false, true) {}
         void use(TIntermSymbol* s) {
             const long long id = s->getId();
             if (!path.contains(id)) {
@@ -1474,7 +1480,8 @@ std::string to_camel(const std::string& snake) {
 
 }  // namespace
 
-Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name) {
+Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name,
+                           const std::string& shader_name) {
     if (!is_identifier(name) || name.find("__") != std::string::npos || name[0] == '_') {
         throw GlslError("'" + comment_text(name) + "' cannot name a translation: letters, digits and single underscores, "
                         "a letter first");
@@ -1575,7 +1582,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
         h << "    };\n";
     }
     h << "    static constexpr ShaderInfo info = " << (p.uniforms.empty() ? "" : "with_uniforms(") << "with_glsl_version(\n"
-      << "        ShaderInfo{.name = " << string_literal(name) << ",\n"
+      << "        ShaderInfo{.name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
       << "                   .description = " << string_literal("translated from " + frag_file) << ",\n"
       << "                   .needs = Needs{.coordinates = Coordinates::" << coordinates
       << ", .derivatives = " << (p.fragment.derivatives ? "true" : "false");

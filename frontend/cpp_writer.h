@@ -31,7 +31,9 @@ struct Translation {
 // The translation of `fragment` (with `vertex`, or the vertex shader quadshade writes for it),
 // registered under `name` (a C identifier). Throws GlslError as compile_glsl does, and for what
 // the writer does not translate.
-Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name);
+// `shader_name`, where given, is the name the shader registers under (ShaderInfo::name) instead.
+Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name,
+                           const std::string& shader_name = {});
 
 // `text` made safe inside a C++ // comment: no line break, no character outside printable ASCII.
 std::string comment_text(const std::string& text);
