@@ -190,6 +190,7 @@ private:
     };
     std::vector<LoopScope> loops_;
     int counter_ = 0;
+    int loops_in_function_ = 0;
     bool uses_return_ = false;
     std::string return_type_;
 
@@ -965,22 +966,23 @@ void StageWriter::if_statement(glslang::TIntermSelection* s) {
         return;
     }
     // A condition that varies per fragment: both sides run, each write keeps the lanes of the other.
+    // The condition is taken once, before either side writes what it reads.
     const std::string name = fresh("if");
+    line("const Bool<F> " + name + " = " + and_mask(parens(c, kAnd + 1)) + ";  // if", s);
     line("{", nullptr);
-    ++indent_;
-    line("const Bool<F> " + name + " = " + and_mask(parens(c, kAnd + 1)) + ";  // if (...)", s);
     masks_.push_back(name);
     block(s->getTrueBlock());
     masks_.pop_back();
+    line("}", nullptr);
     if (s->getFalseBlock()) {
         const std::string other = fresh("else");
-        line("const Bool<F> " + other + " = " + and_mask("!" + parens(c, kUnary)) + ";  // else", nullptr);
+        line("const Bool<F> " + other + " = " + and_mask("!" + name) + ";  // else", nullptr);
+        line("{", nullptr);
         masks_.push_back(other);
         block(s->getFalseBlock());
         masks_.pop_back();
+        line("}", nullptr);
     }
-    --indent_;
-    line("}", nullptr);
 }
 
 void StageWriter::branch(glslang::TIntermBranch* b) {
@@ -1065,7 +1067,8 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         if (locals_.contains(id) && locals_[id].plain_counter) continue;
         list += ", " + n;
     }
-    const std::string name = loops_.empty() ? "loop" : fresh("loop");
+    // Each loop of a function has its own name: loop, loop2, ...
+    const std::string name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
     std::string head;
     if (!loops_.empty()) head = "Loop " + name + "(" + loops_.back().name + list + ");";
     else if (!masks_.empty()) head = "Loop " + name + "(inside(" + mask() + ")" + list + ");";
@@ -1328,6 +1331,7 @@ void StageWriter::function(TIntermAggregate* f) {
     locals_.clear();
     masks_.clear();
     loops_.clear();
+    loops_in_function_ = 0;
     uses_return_ = false;
     pending_zero_.clear();
     const std::string mangled = f->getName().c_str();

@@ -19,6 +19,7 @@
 
 #include "translated_lawlor_mandelbrot/translated_lawlor_mandelbrot.h"
 #include "translated_bricks_aa/translated_bricks_aa.h"
+#include "translated_lawlor_stained_glass/translated_lawlor_stained_glass.h"
 
 namespace {
 
@@ -78,10 +79,13 @@ TEST_CASE("a translation names GLSL's identifiers safely and keeps file names ou
 }
 
 TEST_CASE("compiled translations draw what the interpreter draws, to the bit, under each rule", "[translate]") {
-    // A loop with a break that varies per fragment; a function of derivatives.
+    // A loop with a break that varies per fragment; a function of derivatives; nested loops
+    // around an if and else that vary per fragment, with a texture.
     const std::pair<std::unique_ptr<Program> (*)(), std::string> cases[] = {
         {[] { return std::unique_ptr<Program>(new ProgramOf<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>); }, "lawlor_mandelbrot"},
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_bricks_aa::TranslatedBricksAa>); }, "bricks_aa"}};
+        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_bricks_aa::TranslatedBricksAa>); }, "bricks_aa"},
+        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_lawlor_stained_glass::TranslatedLawlorStainedGlass>); },
+         "lawlor_stained_glass"}};
     struct Mode {
         const char* what;
         Derivatives derivatives;
