@@ -1482,6 +1482,27 @@ std::string to_camel(const std::string& snake) {
     return out.empty() || !((out[0] >= 'A' && out[0] <= 'Z') || (out[0] >= 'a' && out[0] <= 'z')) ? "Shader" + out : out;
 }
 
+// The GLSL as the plugin's files hold it: ShaderInfo::glsl_version gives the #version line (the
+// export writes it first, shading/glsl_export.h), so the file's own is blanked, its lines kept.
+std::string without_version_line(const std::string& text) {
+    std::string out;
+    std::istringstream in(text);
+    std::string line;
+    bool first = true;
+    while (std::getline(in, line)) {
+        std::size_t k = line.find_first_not_of(" \t");
+        bool version = false;
+        if (k != std::string::npos && line[k] == '#') {
+            k = line.find_first_not_of(" \t", k + 1);
+            version = k != std::string::npos && line.compare(k, 7, "version") == 0;
+        }
+        out += (first ? "" : "\n") + (version ? std::string() : line);
+        first = false;
+    }
+    if (!text.empty() && text.back() == '\n') out += "\n";
+    return out;
+}
+
 }  // namespace
 
 Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name,
@@ -1626,8 +1647,8 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
     t.source = "// The plugin's registration of " + name + ": quadshade render --plugin lib" + name + ".so --shader " + name + "\n" +
                "#include \"" + name + ".h\"\n\n" + "namespace " + name + " {\n\nQUADSHADE_SHADERS(" + struct_name +
                ")\n\n}  // namespace " + name + "\n";
-    t.vertex_glsl = compiled.vertex.text;
-    t.fragment_glsl = fragment.text;
+    t.vertex_glsl = without_version_line(compiled.vertex.text);
+    t.fragment_glsl = without_version_line(fragment.text);
     const std::string glsl_files = name + ".vert " + name + ".frag";
     t.cmake = "# " + name + " as a plugin, built against the installed quadshade package:\n"
               "#   cmake -S . -B build -DCMAKE_PREFIX_PATH=<quadshade's install prefix> && cmake --build build\n"

@@ -24,8 +24,10 @@ struct Translation {
     std::string source;       // <name>.cpp: its registration as a plugin
     std::string cmake;        // CMakeLists.txt: the plugin built against the installed package
     std::string struct_name;  // the shader struct's name, in namespace `name`
-    std::string vertex_glsl;    // <name>.vert: the vertex shader given, or the one quadshade wrote
-    std::string fragment_glsl;  // <name>.frag
+    // <name>.vert and <name>.frag: the vertex shader given (or the one quadshade wrote) and the
+    // fragment shader, their #version lines blank (ShaderInfo::glsl_version writes it)
+    std::string vertex_glsl;
+    std::string fragment_glsl;
 };
 
 // The translation of `fragment` (with `vertex`, or the vertex shader quadshade writes for it),
