@@ -229,6 +229,9 @@ private:
     Expr constructor(TIntermAggregate* a);
     Expr conversion(TIntermTyped* from, const TType& to, TIntermTyped* at);
     std::string swizzle(TIntermBinary* b);
+    // A constant array read at a run-time index: a table member (glsl/table.h), one per contents.
+    std::string constant_table(TIntermConstantUnion* c);
+    std::map<std::string, std::string> tables_;  // contents -> name
     std::string lvalue(TIntermTyped* n);
 
     // ---- statements ----------------------------------------------------------------------------
@@ -479,6 +482,33 @@ Expr StageWriter::constant_value(const glslang::TConstUnionArray& a, int first, 
     return {text + ")", kPrimary, false};
 }
 
+std::string StageWriter::constant_table(TIntermConstantUnion* c) {
+    const TType& t = c->getType();
+    if (!t.isArray() || t.getArraySizes()->getNumDims() != 1 || !TType(t, 0).isScalar()) {
+        refuse(c, "a constant array of vectors, matrices or structs read at a run-time index");
+    }
+    const int n = t.getOuterArraySize();
+    const glslang::TConstUnionArray& a = c->getConstArray();
+    std::string element, values;
+    for (int i = 0; i < n; ++i) {
+        std::string v;
+        switch (t.getBasicType()) {
+            case glslang::EbtFloat: element = "float", v = float_literal(a[i].getDConst()); break;
+            case glslang::EbtInt: element = "int", v = std::to_string(a[i].getIConst()); break;
+            case glslang::EbtUint: element = "unsigned", v = std::to_string(a[i].getUConst()) + "u"; break;
+            default: refuse(c, "a constant array of bools read at a run-time index");
+        }
+        values += (i ? ", " : "") + v;
+    }
+    const std::string key = element + ":" + values;
+    if (auto it = tables_.find(key); it != tables_.end()) return it->second;
+    const std::string name = "table" + std::to_string(tables_.size() + 1);
+    tables_[key] = name;
+    member_lines_.push_back("// the constant array of GLSL line " + std::to_string(c->getLoc().line) + ", read per fragment");
+    member_lines_.push_back("static constexpr table<" + element + ", " + std::to_string(n) + "> " + name + "{{" + values + "}};");
+    return name;
+}
+
 Expr StageWriter::constant(TIntermConstantUnion* c) { return constant_value(c->getConstArray(), 0, c->getType(), c); }
 
 // A plain C++ value as a value of its GLSL type over F.
@@ -575,6 +605,7 @@ Expr StageWriter::binary(TIntermBinary* b) {
             return {parens(base, kPostfix) + lv, kPostfix, false};
         }
         case glslang::EOpIndexIndirect: {
+            if (auto* c = b->getLeft()->getAsConstantUnion()) return Expr{constant_table(c) + "[" + as_typed(b->getRight(), b->getRight()->getType()).text + "]", kPostfix, false};
             Expr base = expr(b->getLeft());
             Expr i = expr(b->getRight());
             if (!i.plain) refuse(b, "an index that varies per fragment");
