@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
     cmd.add_option("--shader", a.shader, "the catalogue shader to evaluate (its object-space position is the grid's)")
         ->option_text("NAME");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_option("-o,--output", a.output,
                    "the volume as a 3D texture: N x N^2 pixels, slice k in rows [kN, (k+1)N)\n"
                    "(.png: 8-bit, loadable as a sampler3D; .exr/.tif: float)")
@@ -49,7 +49,7 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
         ->required()->option_text("MESH.gltf");
     cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
         ->option_text("NAME");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_option("-o,--output", a.output,
                    "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
                    "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
@@ -104,7 +104,7 @@ void write_atlas(const fs::path& file, const Framebuffer& frame, const Metadata&
 }  // namespace
 
 int cmd_bake_volume(VolumeArgs a) {
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.shader);
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, a.shader);
     if (a.shader.empty()) throw UsageError("bake-volume: give the shader to evaluate: --shader NAME or --glsl FRAG");
     VolumeRequest req;
     req.shader = a.shader, req.size = a.size;
@@ -140,7 +140,7 @@ int cmd_bake_volume(VolumeArgs a) {
 }
 
 int cmd_bake(BakeArgs a) {
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.shader);
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, a.shader);
     if (a.shader.empty()) throw UsageError("bake: give the shader to bake: --shader NAME or --glsl FRAG");
     const fs::path output(a.output);
     if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");

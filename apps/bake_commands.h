@@ -16,6 +16,7 @@ namespace qs::app {
 struct VolumeArgs {
     std::string shader, output, scene;
     std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
+    bool compile_glsl = false;      // --compile
     int size = 32;
     std::optional<double> time;
     std::vector<std::string> uniforms, plugins;
@@ -30,6 +31,7 @@ int cmd_bake_volume(VolumeArgs a);
 struct BakeArgs {
     std::string mesh, shader, output;
     std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
+    bool compile_glsl = false;      // --compile
     int size = 1024;
     std::vector<std::string> maps{"color"};
     int skirt = 0;

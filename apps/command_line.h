@@ -68,10 +68,11 @@ CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::
 void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins);
 
 // --glsl FRAG and --vert VERT: a user's GLSL drawn on every object (render/glsl_shaders.h).
-void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex);
+// --compile: run it as its compiled C++ translation (render/compiled_glsl.h).
+void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex, bool& compile);
 // Compiles the shaders --glsl and --vert name, if any, and names their program in `shader`
 // (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings.
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, std::string& shader);
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader);
 // The warning, once, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's limit.
 void warn_loop_limit(const Program* program);
 

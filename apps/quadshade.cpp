@@ -21,6 +21,7 @@
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
+#include "apps/translate_command.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"
@@ -59,7 +60,7 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
 
 struct CheckArgs {
     std::vector<std::string> shaders, rules{"fine"}, plugins, scenes;
-    bool all = false, interpret = false;
+    bool all = false, interpret = false, compile_glsl = false;
     std::string glsl, vertex_glsl;
     std::string output = "quadshade-check", memory_limit;
     int jobs = 0, width = 0, height = 0;
@@ -86,7 +87,7 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
         ->option_text("DIR");
     cmd.add_option("--jobs", a.jobs, "cases checked at once, each a reference process and a render\n(default: one per core)")
         ->check(CLI::Range(1, 1024))->option_text("N");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_flag("--interpret", a.interpret,
                  "check the shaders' GLSL run by the interpreter (as --glsl runs a\nfile) instead of their translations");
     cmd.add_option(
@@ -255,7 +256,7 @@ int cmd_check(const CheckArgs& a) {
     CheckRequest request;
     request.shaders = a.shaders;
     std::string glsl;
-    if (use_glsl_options(a.glsl, a.vertex_glsl, glsl)) request.shaders.push_back(glsl);
+    if (use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, glsl)) request.shaders.push_back(glsl);
     if (a.all == !request.shaders.empty()) throw UsageError("check: name the shaders to check, or --all, or --glsl (one of them)");
     if (a.interpret) {
         // The GLSL of each shader to check, run by the interpreter, in its translation's place.
@@ -406,6 +407,11 @@ int main(int argc, char** argv) {
         "study", "measure a shader's error against its run time under every derivative, anti-aliasing\n"
                  "and precision mode, on the scene's camera and generated views; writes CSV and a report");
     add_study_options(*study_cmd, study);
+    TranslateArgs translate;
+    CLI::App* translate_cmd = app.add_subcommand(
+        "translate", "write a GLSL shader as a C++ translation to read, edit and build as a plugin (with a\n"
+                     "CMakeLists.txt that builds it against the installed quadshade)");
+    add_translate_options(*translate_cmd, translate);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -436,6 +442,7 @@ int main(int argc, char** argv) {
         if (gallery_cmd->parsed()) return cmd_gallery(gallery);
         if (bake_cmd->parsed()) return cmd_bake(bake);
         if (study_cmd->parsed()) return cmd_study(study);
+        if (translate_cmd->parsed()) return cmd_translate(translate);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

@@ -48,7 +48,7 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_option("--camera", a.load.camera,
                    "the camera to render from: a camera node's or camera's name, or an\n"
                    "index into the file's cameras[] (default: the first camera node)")
@@ -288,7 +288,7 @@ int cmd_render(RenderArgs& a) {
     for (const std::string& plugin : a.plugins) {
         for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
     }
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, req.shader_override);
     // The libraries first: the render's memory is measured from here, and its plan is checked
     // against what is left.
     load_image_library();

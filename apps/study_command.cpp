@@ -16,7 +16,7 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
     cmd.add_option("scene", a.scene, "the glTF scene (.gltf or .glb)")->option_text("SCENE");
     cmd.add_option("--shader", r.shaders.shader, "the catalogue shader to study (quadshade shaders lists them)")
         ->option_text("NAME");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     add_plugin_option(cmd, a.plugins);
     if (!line) {
         cmd.add_option("-o,--output", a.output, "the folder for study.csv, the images, the plots and report.html")
@@ -92,7 +92,7 @@ study::Request prepared(StudyArgs& a, const fs::path& base) {
     for (std::string& view : r.views) {
         if (view.ends_with(".gltf") || view.ends_with(".glb")) resolve(view);  // a camera's scene file
     }
-    use_glsl_options(a.glsl, a.vertex_glsl, r.shaders.shader);
+    use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, r.shaders.shader);
     if (a.scene.empty()) throw UsageError("study: give the scene (or a study file with --study)");
     if (r.shaders.shader.empty()) throw UsageError("study: name the shader with --shader NAME or --glsl FRAG");
     if (!r.shaders.alternative.empty() && r.shaders.alternative_mode.empty())

@@ -14,6 +14,7 @@ struct StudyArgs {
     study::Request request;
     std::string scene, output;
     std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
+    bool compile_glsl = false;      // --compile
     std::vector<std::string> plugins;
     bool no_reference = false, no_derivative_maps = false;
     std::string study_file;         // --study FILE: one study per line

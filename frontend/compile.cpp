@@ -16,6 +16,7 @@
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
 #include "frontend/lowering.h"
+#include "frontend/parse_stage.h"
 
 namespace qs::frontend {
 
@@ -75,11 +76,7 @@ std::string reword(const std::string& log, std::vector<std::string>* warnings) {
     return errors;
 }
 
-struct ParsedStage {
-    std::string text;  // what glslang parsed (kept alive with the shader)
-    std::unique_ptr<glslang::TShader> shader;
-    int version = 110;
-};
+}  // namespace
 
 ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings) {
     initialise_glslang();
@@ -102,6 +99,8 @@ ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::
     if (glslang::TIntermediate* ast = p.shader->getIntermediate()) p.version = ast->getVersion();
     return p;
 }
+
+namespace {
 
 // The GLSL type of a varying, for the vertex shader written for a fragment shader.
 std::string glsl_type(int components) { return components == 1 ? "float" : "vec" + std::to_string(components); }
