@@ -367,6 +367,18 @@ void StageWriter::uniform_member(TIntermSymbol* s, const std::string& name) {
             case ir::TransformUniform::Normal:
                 member_lines_.push_back("const mat3<F> " + name + " = mat3<F>(F(1.0f));  // the model-view is the identity");
                 return;
+            case ir::TransformUniform::Model:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.model);  // the scene's");
+                return;
+            case ir::TransformUniform::View:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.view);  // the scene's");
+                return;
+            case ir::TransformUniform::SceneProjection:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.projection);  // the scene's");
+                return;
+            case ir::TransformUniform::SceneNormal:
+                member_lines_.push_back("const mat3<F> " + name + " = transform<F>(u.normal_matrix);  // the scene's");
+                return;
         }
     }
     if (glsl == "time" && t.getBasicType() == glslang::EbtFloat && t.isScalar() && !t.isArray()) {
@@ -1591,6 +1603,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << vertex_body << "};\n\n";
     h << "// What the vertex stage hands the fragment stage, one vertex at a time in float.\n"
       << "struct VertexStage {\n"
+      << "    static constexpr GlslFiles glsl{" << string_literal(name + ".vert") << "};  // beside the plugin\n"
       << "    template <class T>\n"
       << "    struct Varyings {\n";
     std::string tie;
@@ -1637,10 +1650,10 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
         }
         h << "    };\n";
     }
-    h << "    static constexpr ShaderInfo info = " << (p.uniforms.empty() ? "" : "with_uniforms(") << "with_glsl_version(\n"
-      << "        ShaderInfo{.name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
-      << "                   .description = " << string_literal("translated from " + frag_file) << ",\n"
-      << "                   .needs = Needs{.coordinates = Coordinates::" << coordinates
+    h << "    static constexpr ShaderInfo info{\n"
+      << "        .name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
+      << "        .description = " << string_literal("translated from " + frag_file) << ",\n"
+      << "        .needs = {.coordinates = Coordinates::" << coordinates
       << ", .derivatives = " << (p.fragment.derivatives ? "true" : "false");
     bool texture = false;
     std::vector<std::pair<std::string, int>> samplers;
@@ -1658,13 +1671,14 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
         h << "}}";
     }
     h << "},\n"
-      << "                   .glsl_vertex = {" << string_literal(name + ".vert") << "},  // beside the plugin\n"
-      << "                   .glsl_fragment = {" << string_literal(name + ".frag") << "}},\n"
-      << "        " << p.version << ")" << (p.uniforms.empty() ? "" : ", kUniforms)") << ";\n"
+      << "        .glsl_fragment = {" << string_literal(name + ".frag") << "},  // beside the plugin\n"
+      << "        .glsl_version = " << p.version << ",\n";
+    if (!p.uniforms.empty()) h << "        .uniforms = kUniforms,\n";
+    h << "    };\n"
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
       << "    static auto fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {\n"
-      << "        FragmentShader<F> shader{in, u};\n"
+      << "        FragmentShader<F> shader{in, u, {}};\n"
       << "        shader.main();\n"
       << "        return shader.out" << (fw.discards() ? "" : ".gl_FragColor") << ";\n"
       << "    }\n"
