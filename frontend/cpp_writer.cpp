@@ -148,6 +148,8 @@ std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
     return out;
 }
 
+bool is_assignment(TOperator op) { return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign; }
+
 // A for loop as glslang nests it: its initialiser (one declarator) and the loop.
 bool is_for_sequence(TIntermAggregate* a) {
     if (!a || a->getOp() != glslang::EOpSequence) return false;
@@ -626,7 +628,7 @@ Expr StageWriter::binary(TIntermBinary* b) {
         default: break;
     }
     if (b->getAsBinaryNode() && (op == glslang::EOpAssign || b->getType().getQualifier().storage == glslang::EvqTemporary) &&
-        (op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign)) {
+        is_assignment(op)) {
         refuse(b, "an assignment inside an expression");
     }
     Expr l = expr(b->getLeft());
@@ -928,20 +930,26 @@ void StageWriter::assign_to(TIntermTyped* target, const std::string& value, cons
 void StageWriter::assignment(TIntermBinary* b) {
     const TOperator op = b->getOp();
     TIntermTyped* target = b->getLeft();
+    // `a = b = v`, `a += b *= v`: the inner assignment first, then the outer reads its target.
+    TIntermTyped* value = b->getRight();
+    if (auto* inner = value->getAsBinaryNode(); inner && is_assignment(inner->getOp())) {
+        assignment(inner);
+        value = inner->getLeft();
+    }
     if (op == glslang::EOpAssign) {
         if (auto* s = target->getAsSymbolNode()) {
             auto it = locals_.find(s->getId());
                 if (it != locals_.end() && !it->second.declared && it->second.declaring == b) {
                 it->second.declared = true;
                 it->second.mask_depth = int(masks_.size());
-                Expr v = it->second.plain_counter ? expr(b->getRight()) : as_typed(b->getRight(), b->getType());
+                Expr v = it->second.plain_counter ? expr(value) : as_typed(value, b->getType());
                 const std::string t = it->second.plain_counter ? "int" : type(s->getType(), b);
                 const std::string v_text = s->getType().isArray() ? v.text : v.text;
                 line(t + " " + it->second.name + " = " + v_text + ";", b);
                 return;
             }
         }
-        assign_to(target, as_typed(b->getRight(), b->getType()).text, b);
+        assign_to(target, as_typed(value, b->getType()).text, b);
         return;
     }
     const char* o = nullptr;
@@ -959,10 +967,10 @@ void StageWriter::assignment(TIntermBinary* b) {
         case glslang::EOpRightShiftAssign: o = ">>"; break;
         default: refuse(b, "this assignment");
     }
-    Expr r = expr(b->getRight());
-    if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat) r = as_typed(b->getRight(), b->getRight()->getType());
+    Expr r = expr(value);
+    if (r.plain && value->getType().getBasicType() != glslang::EbtFloat) r = as_typed(value, value->getType());
     const std::string lv = lvalue(target);
-    const bool widened = !target->getType().isScalar() && b->getRight()->getType().isScalar();
+    const bool widened = !target->getType().isScalar() && value->getType().isScalar();
     if (masked_target(target) || widened) {
         assign_to(target, (lv.back() == ')' ? type(target->getType(), b) + "(" + lv + ")" : lv) + " " + o + " " +
                               parens(r, kMultiplicative + 1), b);
@@ -1071,7 +1079,7 @@ std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
             if (auto* s = n->getAsSymbolNode()) ids.push_back(s->getId());
         }
         bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) add(b->getLeft());
+            if (is_assignment(b->getOp())) add(b->getLeft());
             return true;
         }
         bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
@@ -1213,7 +1221,7 @@ void StageWriter::statement(TIntermNode* n) {
         refuse(n, "this statement");
     }
     if (auto* b = n->getAsBinaryNode()) {
-        if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) return assignment(b);
+        if (is_assignment(b->getOp())) return assignment(b);
         refuse(n, "an expression statement with no effect");
     }
     if (auto* u = n->getAsUnaryNode()) {
@@ -1332,7 +1340,7 @@ bool StageWriter::plain_counter(TIntermAggregate* seq, long long id) {
             if (auto* s = x->getAsSymbolNode(); s && s->getId() == id) ++n;
         }
         bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) check(b->getLeft());
+            if (is_assignment(b->getOp())) check(b->getLeft());
             return true;
         }
         bool visitUnary(glslang::TVisit, TIntermUnary* u) override {

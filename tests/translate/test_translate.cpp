@@ -7,6 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include <bit>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <regex>
 
 #include "frontend/cpp_writer.h"
@@ -20,6 +23,7 @@
 #include "translated_lawlor_mandelbrot/translated_lawlor_mandelbrot.h"
 #include "translated_bricks_aa/translated_bricks_aa.h"
 #include "translated_lawlor_stained_glass/translated_lawlor_stained_glass.h"
+#include "translated_chained_assignment/translated_chained_assignment.h"
 
 namespace {
 
@@ -40,6 +44,15 @@ std::size_t differing_pixels(const Framebuffer& a, const Framebuffer& b) {
         n += differs;
     }
     return n;
+}
+
+// A frame of the first pixel's colour everywhere.
+Framebuffer uniform_like(const Framebuffer& f) {
+    Framebuffer u = f;
+    for (std::size_t p = 0; p < u.rgba.size() / 4; ++p) {
+        for (std::size_t c = 0; c < 4; ++c) u.rgba[p * 4 + c] = f.rgba[c];
+    }
+    return u;
 }
 
 }  // namespace
@@ -78,14 +91,38 @@ TEST_CASE("a translation names GLSL's identifiers safely and keeps file names ou
     CHECK_THROWS_AS(frontend::translate_glsl(frag, std::nullopt, "bad name"), frontend::GlslError);
 }
 
+namespace {
+
+// A compiled translation and the GLSL it was written from: a catalogue shader's, or a file of
+// tests/translate (with the default vertex stage) on the Table 1.1 plane.
+struct TranslatedCase {
+    std::unique_ptr<Program> (*make)();
+    std::string name;
+    bool catalogue = true;
+};
+
+std::string read_text(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+template <class Shader>
+std::unique_ptr<Program> make_program() {
+    return std::make_unique<ProgramOf<Shader>>();
+}
+
+}  // namespace
+
 TEST_CASE("compiled translations draw what the interpreter draws, to the bit, under each rule", "[translate]") {
     // A loop with a break that varies per fragment; a function of derivatives; nested loops
-    // around an if and else that vary per fragment, with a texture.
-    const std::pair<std::unique_ptr<Program> (*)(), std::string> cases[] = {
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>); }, "lawlor_mandelbrot"},
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_bricks_aa::TranslatedBricksAa>); }, "bricks_aa"},
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_lawlor_stained_glass::TranslatedLawlorStainedGlass>); },
-         "lawlor_stained_glass"}};
+    // around an if and else that vary per fragment, with a texture; chained assignments.
+    const TranslatedCase cases[] = {
+        {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
+        {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
+        {make_program<translated_lawlor_stained_glass::TranslatedLawlorStainedGlass>, "lawlor_stained_glass"},
+        {make_program<translated_chained_assignment::TranslatedChainedAssignment>, "chained_assignment", false}};
     struct Mode {
         const char* what;
         Derivatives derivatives;
@@ -96,15 +133,25 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
                           {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
                           {"analytic", Derivatives::Analytic, Precision::Float},
                           {"double", Derivatives::Fine, Precision::Double}};
-    for (const auto& [make, name] : cases) {
-        const Program& catalogue_shader = *find_program(name);
-        frontend::CompiledProgram c = frontend::compile_glsl({name + ".frag", glsl_source(catalogue_shader, false)},
-                                                             frontend::GlslSource{name + ".vert", glsl_source(catalogue_shader, true)});
-        const std::string vertex = c.vertex.text;
-        const Program& interpreted = add_compiled_program(std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(c)),
-                                                          "interpreted", vertex, glsl_source(catalogue_shader, false));
-        const Program& compiled = add_compiled_program(make(), "translated", vertex, glsl_source(catalogue_shader, false));
-        Scene scene = load_scene(test::plane_for(name));
+    for (const TranslatedCase& c : cases) {
+        const std::string& name = c.name;
+        std::optional<frontend::GlslSource> vert;
+        frontend::GlslSource frag;
+        if (c.catalogue) {
+            const Program& catalogue_shader = *find_program(name);
+            frag = {name + ".frag", glsl_source(catalogue_shader, false)};
+            vert = frontend::GlslSource{name + ".vert", glsl_source(catalogue_shader, true)};
+        } else {
+            const std::filesystem::path file = test::kSource / "tests/translate" / (name + ".frag");
+            frag = {file.string(), read_text(file)};
+        }
+        frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, vert);
+        const std::string vertex = compiled_glsl.vertex.text;
+        const Program& interpreted = add_compiled_program(
+            std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(compiled_glsl)), "interpreted", vertex,
+            frag.text);
+        const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
+        Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
         for (const Mode& m : modes) {
             FrameRequest r;
             r.width = 64, r.height = 48;
@@ -116,6 +163,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
             const Framebuffer got = render_frame(scene, r);
             INFO(name << ", " << m.what);
             CHECK(differing_pixels(expected, got) == 0);
+            CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
         }
     }
 }
