@@ -210,6 +210,7 @@ private:
     // ---- types ---------------------------------------------------------------------------------
     std::string type(const TType& t, const TIntermNode* at) const;
     std::string scalar_type(glslang::TBasicType b, const TIntermNode* at) const;
+    std::string sampler_type(const TType& t, const TIntermNode* at) const;
 
     // ---- names ---------------------------------------------------------------------------------
     std::string symbol_name(TIntermSymbol* s);
@@ -267,6 +268,16 @@ std::string StageWriter::scalar_type(glslang::TBasicType b, const TIntermNode* a
         case glslang::EbtVoid: return "void";
         default: refuse(at, "a value of this type");
     }
+}
+
+// A sampler's texture (shading/glsl/texture.h): one of the kinds the renderer binds.
+std::string StageWriter::sampler_type(const TType& t, const TIntermNode* at) const {
+    const glslang::TSampler& s = t.getSampler();
+    const bool plain = !t.isArray() && s.isCombined() && !s.isShadow() && !s.isArrayed() && !s.isMultiSample() &&
+                       s.getBasicType() == glslang::EbtFloat;
+    if (plain && s.dim == glslang::Esd2D) return "sampler2D";
+    if (plain && s.dim == glslang::Esd3D) return "sampler3D";
+    refuse(at, "a sampler of this kind");
 }
 
 std::string StageWriter::type(const TType& t, const TIntermNode* at) const {
@@ -1396,13 +1407,15 @@ void StageWriter::function(TIntermAggregate* f) {
             TIntermSymbol* s = p->getAsSymbolNode();
             if (!s) continue;
             const glslang::TStorageQualifier q = s->getQualifier().storage;
-            if (s->getType().getBasicType() == glslang::EbtSampler) refuse(s, "a sampler parameter");
             Local l;
             l.name = s->getName().empty() ? fresh("unnamed") : cpp_identifier(s->getName().c_str(), where(s));
             l.declared = true;
             locals_[s->getId()] = l;
             const bool ref = q == glslang::EvqOut || q == glslang::EvqInOut;
-            params += (params.empty() ? "" : ", ") + type(s->getType(), s) + (ref ? "& " : " ") + l.name;
+            const std::string t = s->getType().getBasicType() == glslang::EbtSampler ? "const " + sampler_type(s->getType(), s) + "&"
+                                  : ref ? type(s->getType(), s) + "&"
+                                        : type(s->getType(), s);
+            params += (params.empty() ? "" : ", ") + t + " " + l.name;
         }
     }
     return_type_ = type(f->getType(), f);
