@@ -133,9 +133,11 @@ std::optional<std::string> plugin_cache_dir() {
 const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const std::optional<frontend::GlslSource>& vertex,
                                      const std::string& name, GlslWay way) {
     if (way == GlslWay::Interpret) return nullptr;
+    // A plugin's shader is named as a catalogue shader is: "marble.frag" is "marble_frag".
+    const std::string shader_name = identifier_from(name);
     frontend::Translation t;
     try {
-        t = frontend::translate_glsl(fragment, vertex, identifier_from(fs::path(fragment.file).stem().string()), name);
+        t = frontend::translate_glsl(fragment, vertex, identifier_from(fs::path(fragment.file).stem().string()), shader_name);
     } catch (const frontend::GlslError& e) {
         // The interpreter runs what the writer does not write yet.
         if (way == GlslWay::Compile) std::fprintf(stderr, "quadshade: not compiled: %s\n", e.what());
@@ -202,7 +204,7 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
         warn_once(std::string("a cached plugin does not load (") + e.what() + ")");
         return nullptr;
     }
-    return find_program(name);
+    return find_program(shader_name);
 }
 
 }  // namespace qs

@@ -23,7 +23,8 @@ enum class GlslWay {
     Compile,    // the compiled translation, compiled now where the cache lacks it (--compile)
 };
 
-// The compiled translation of the pair, registered in the catalogue as `name`, or nullptr where
+// The compiled translation of the pair, registered in the catalogue as `name` made a shader's
+// name ("marble.frag (2)" as "marble_frag_2"), or nullptr where
 // the cache lacks it (way Cached), the writer does not translate the shader, or the cache is
 // unusable (with a warning on stderr, once per process). Says on stderr when it compiles and how
 // long it took.
