@@ -182,7 +182,7 @@ SuiteCase read_case(const Reader& in, const json& c, const std::string& field, c
         std::optional<fs::path> vertex;
         if (c.contains("vert")) vertex = in.entry(in.text(c["vert"], field + ".vert"), field + ".vert", options);
         try {
-            r.shader_override = std::string(load_glsl_shader(fragment, vertex).program->info().name);
+            r.shader_override = std::string(load_glsl_shader(fragment, vertex, options.glsl_way).program->info().name);
         } catch (const std::runtime_error& e) {
             in.fail(field + ".glsl", e.what());
         }

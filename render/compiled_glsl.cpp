@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "frontend/cpp_writer.h"
+#include "render/glsl_shaders.h"
 #include "render/plugin_compiler.h"
 #include "render/plugins.h"
 #include "shading/catalogue.h"
@@ -143,6 +144,9 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
         if (way == GlslWay::Compile) std::fprintf(stderr, "quadshade: not compiled: %s\n", e.what());
         return nullptr;
     }
+    // Listed with the GLSL run by the interpreter (quadshade gallery --glsl draws that collection).
+    t.source = "#include \"" + t.name + ".h\"\n\nnamespace " + t.name + " {\n\nQUADSHADE_SHADERS_IN(\"" + kGlslCollection +
+               "\", " + t.struct_name + ")\n\n}  // namespace " + t.name + "\n";
     const std::optional<std::string> cache = plugin_cache_dir();
     if (!cache) {
         if (way == GlslWay::Compile) warn_once("no plugin cache: neither XDG_CACHE_HOME nor HOME is set");
