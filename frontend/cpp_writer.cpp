@@ -232,8 +232,10 @@ private:
     Expr constructor(TIntermAggregate* a);
     Expr conversion(TIntermTyped* from, const TType& to, TIntermTyped* at);
     std::string swizzle(TIntermBinary* b);
-    // A constant array read at a run-time index: a table member (glsl/table.h), one per contents.
-    std::string constant_table(TIntermConstantUnion* c);
+    // A constant array read at a run-time index: table members (glsl/table.h), one per contents,
+    // a vector's components each a table of its own.
+    std::string constant_table(TIntermConstantUnion* c, int component);
+    Expr table_read(TIntermConstantUnion* c, TIntermTyped* index);
     std::map<std::string, std::string> tables_;  // contents -> name
     std::string lvalue(TIntermTyped* n);
 
@@ -507,20 +509,22 @@ Expr StageWriter::constant_value(const glslang::TConstUnionArray& a, int first, 
     return {text + ")", kPrimary, false};
 }
 
-std::string StageWriter::constant_table(TIntermConstantUnion* c) {
+std::string StageWriter::constant_table(TIntermConstantUnion* c, int component) {
     const TType& t = c->getType();
-    if (!t.isArray() || t.getArraySizes()->getNumDims() != 1 || !TType(t, 0).isScalar()) {
-        refuse(c, "a constant array of vectors, matrices or structs read at a run-time index");
+    const TType element_type(t, 0);
+    if (!t.isArray() || t.getArraySizes()->getNumDims() != 1 || element_type.isMatrix() || element_type.isStruct()) {
+        refuse(c, "a constant array of arrays, matrices or structs read at a run-time index");
     }
-    const int n = t.getOuterArraySize();
+    const int n = t.getOuterArraySize(), size = element_type.getVectorSize();
     const glslang::TConstUnionArray& a = c->getConstArray();
     std::string element, values;
     for (int i = 0; i < n; ++i) {
+        const glslang::TConstUnion& x = a[i * size + component];
         std::string v;
         switch (t.getBasicType()) {
-            case glslang::EbtFloat: element = "float", v = float_literal(a[i].getDConst()); break;
-            case glslang::EbtInt: element = "int", v = std::to_string(a[i].getIConst()); break;
-            case glslang::EbtUint: element = "unsigned", v = std::to_string(a[i].getUConst()) + "u"; break;
+            case glslang::EbtFloat: element = "float", v = float_literal(x.getDConst()); break;
+            case glslang::EbtInt: element = "int", v = std::to_string(x.getIConst()); break;
+            case glslang::EbtUint: element = "unsigned", v = std::to_string(x.getUConst()) + "u"; break;
             default: refuse(c, "a constant array of bools read at a run-time index");
         }
         values += (i ? ", " : "") + v;
@@ -529,9 +533,19 @@ std::string StageWriter::constant_table(TIntermConstantUnion* c) {
     if (auto it = tables_.find(key); it != tables_.end()) return it->second;
     const std::string name = "table" + std::to_string(tables_.size() + 1);
     tables_[key] = name;
-    member_lines_.push_back("// the constant array of GLSL line " + std::to_string(c->getLoc().line) + ", read per fragment");
+    const std::string what = size == 1 ? "" : std::string(" (its ") + "xyzw"[component] + "s)";
+    member_lines_.push_back("// the constant array of GLSL line " + std::to_string(c->getLoc().line) + what + ", read per fragment");
     member_lines_.push_back("static constexpr table<" + element + ", " + std::to_string(n) + "> " + name + "{{" + values + "}};");
     return name;
+}
+
+Expr StageWriter::table_read(TIntermConstantUnion* c, TIntermTyped* index) {
+    const std::string i = "[" + as_typed(index, index->getType()).text + "]";
+    const TType element_type(c->getType(), 0);
+    if (element_type.isScalar()) return {constant_table(c, 0) + i, kPostfix, false};
+    std::string text = type(element_type, c) + "(";
+    for (int k = 0; k < element_type.getVectorSize(); ++k) text += (k ? ", " : "") + constant_table(c, k) + i;
+    return {text + ")", kPrimary, false};
 }
 
 Expr StageWriter::constant(TIntermConstantUnion* c) { return constant_value(c->getConstArray(), 0, c->getType(), c); }
@@ -630,7 +644,7 @@ Expr StageWriter::binary(TIntermBinary* b) {
             return {parens(base, kPostfix) + lv, kPostfix, false};
         }
         case glslang::EOpIndexIndirect: {
-            if (auto* c = b->getLeft()->getAsConstantUnion()) return Expr{constant_table(c) + "[" + as_typed(b->getRight(), b->getRight()->getType()).text + "]", kPostfix, false};
+            if (auto* c = b->getLeft()->getAsConstantUnion()) return table_read(c, b->getRight());
             Expr base = expr(b->getLeft());
             Expr i = expr(b->getRight());
             if (!i.plain) refuse(b, "an index that varies per fragment");
