@@ -60,14 +60,15 @@ void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex,
     cmd.add_flag("--compile", compile, kCompileHelp);
 }
 
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader) {
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader,
+                                const std::vector<ShadeRequest>& shading) {
     if (fragment.empty()) {
         if (!vertex.empty()) throw UsageError("--vert: give the fragment shader with --glsl");
         return nullptr;
     }
     if (!shader.empty()) throw UsageError("--glsl and --shader: give one shader to draw with");
     const GlslShader s = load_glsl_shader(fragment, vertex.empty() ? std::nullopt : std::optional<fs::path>(vertex),
-                                          glsl_way(compile));
+                                          glsl_way(compile), shading);
     for (const std::string& w : s.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
     shader = std::string(s.program->info().name);
     return s.program;

@@ -78,8 +78,10 @@ inline constexpr const char* kCompileHelp =
 // The way GLSL files run: the cached translation where there is one, compiled first with --compile.
 inline GlslWay glsl_way(bool compile) { return compile ? GlslWay::Compile : GlslWay::Cached; }
 // Compiles the shaders --glsl and --vert name, if any, and names their program in `shader`
-// (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings.
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader);
+// (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings. The
+// compiled translation, where it is used, shades what `shading` asks (all ways without it).
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader,
+                                const std::vector<ShadeRequest>& shading = {});
 // The warning, once, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's limit.
 void warn_loop_limit(const Program* program);
 

@@ -184,7 +184,7 @@ int cmd_shaders(const std::string& export_dir) {
 int cmd_gallery(const GalleryArgs& a) {
     GalleryRequest request;
     for (const std::string& file : a.glsl) {
-        const GlslShader shader = load_glsl_shader(file, std::nullopt, glsl_way(a.compile_glsl));
+        const GlslShader shader = load_glsl_shader(file, std::nullopt, glsl_way(a.compile_glsl), {shade_request(request.frame)});
         for (const std::string& w : shader.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
         request.collections = {kGlslCollection};
     }

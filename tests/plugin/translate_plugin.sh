@@ -36,6 +36,14 @@ XDG_CACHE_HOME=$work/cache "$bin/quadshade" render "$scene" $size --glsl "$frag"
 if grep -q "compil\|warning" "$work/cached.txt"; then cat "$work/cached.txt" >&2; exit 1; fi  # loaded, not compiled again
 same "$work/interpreted.png" "$work/cached.png"
 [ "$(ls "$work/cache/quadshade/plugins" | wc -l)" = 1 ]
+# The plugin holds what that render shades (llvmpipe's rule, float): a render by softpipe's rule is
+# the interpreter's, without compiling or a warning.
+XDG_CACHE_HOME=$work/cache "$bin/quadshade" render "$scene" $size --glsl "$frag" --derivatives coarse-lower \
+    -o "$work/coarse.png" 2> "$work/coarse.txt"
+if grep -q "compil\|warning" "$work/coarse.txt"; then cat "$work/coarse.txt" >&2; exit 1; fi
+XDG_CACHE_HOME=$work/no-cache "$bin/quadshade" render "$scene" $size --glsl "$frag" --derivatives coarse-lower \
+    -o "$work/coarse-interpreted.png" 2> /dev/null
+same "$work/coarse-interpreted.png" "$work/coarse.png"
 
 # A cache that cannot be written: the interpreter's picture, and one warning.
 touch "$work/not-a-folder"

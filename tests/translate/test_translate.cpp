@@ -127,7 +127,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_lawlor_stained_glass::TranslatedLawlorStainedGlass>, "lawlor_stained_glass"},
         {make_program<translated_chained_assignment::TranslatedChainedAssignment>, "chained_assignment", false},
         {make_program<translated_sampler_parameter::TranslatedSamplerParameter>, "sampler_parameter", false},
-        {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table", false}};
+        {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
+         false}};
     struct Mode {
         const char* what;
         Derivatives derivatives;
@@ -152,9 +153,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         }
         frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, vert);
         const std::string vertex = compiled_glsl.vertex.text;
-        const Program& interpreted = add_compiled_program(
-            std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(compiled_glsl)), "interpreted", vertex,
-            frag.text);
+        auto glsl_program = std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(compiled_glsl));
+        const Program& interpreted = add_compiled_program(std::move(glsl_program), "interpreted", vertex, frag.text);
         const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
         for (const Mode& m : modes) {
@@ -171,4 +171,52 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
             CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
         }
     }
+}
+
+namespace {
+
+// bricks_aa compiled for llvmpipe's rule in float only, as a plugin compiled for one render is.
+struct BricksAaFineOnly : translated_bricks_aa::TranslatedBricksAa {
+    static constexpr ShadeModes compiled_modes{1u << ShadeModes::bit({Derivatives::Fine, Precision::Float, false})};
+};
+
+}  // namespace
+
+TEST_CASE("a translation compiled for some ways of shading shades them as the whole one does, refuses others",
+          "[translate]") {
+    const ProgramOf<translated_bricks_aa::TranslatedBricksAa> whole;
+    const ProgramOf<BricksAaFineOnly> fine_only;
+    FragmentBatch in{};
+    for (int i = 0; i < kBatchLanes; ++i) {
+        in.frag_coord[0][i] = float(i % 2 + 2 * (i / 4)), in.frag_coord[1][i] = float(i / 2 % 2);
+        in.frag_coord[2][i] = 0.5f, in.frag_coord[3][i] = 1.0f;
+        for (int v = 0; v < whole.info().needs.varyings; ++v) in.varying[v][i] = 0.37f * float(i) + 0.11f * float(v);
+    }
+    ColorBatch expected{}, got{};
+    whole.shade({Derivatives::Fine, Precision::Float, false}, in, Uniforms{}, expected);
+    fine_only.shade({Derivatives::Fine, Precision::Float, false}, in, Uniforms{}, got);
+    for (int c = 0; c < 4; ++c) {
+        for (int i = 0; i < kBatchLanes; ++i) {
+            CHECK(std::bit_cast<std::uint32_t>(got.rgba[c][i]) == std::bit_cast<std::uint32_t>(expected.rgba[c][i]));
+        }
+    }
+    for (const ShadeMode other : {ShadeMode{Derivatives::CoarseLower, Precision::Float, false},
+                                  ShadeMode{Derivatives::Fine, Precision::Double, false},
+                                  ShadeMode{Derivatives::Fine, Precision::Float, true}}) {
+        CHECK_THROWS_AS(fine_only.shade(other, in, Uniforms{}, got), std::logic_error);
+    }
+}
+
+TEST_CASE("a render's modes: those of a draw with and without a texture's level of detail", "[translate]") {
+    const auto bit = [](Derivatives d, Precision p = Precision::Float, bool checked = false) {
+        return 1u << ShadeModes::bit({d, p, checked});
+    };
+    CHECK(modes_for(Needs{.derivatives = true}, ShadeRequest{}).bits == bit(Derivatives::Fine));
+    CHECK(modes_for(Needs{}, ShadeRequest{}).bits == (bit(Derivatives::None) | bit(Derivatives::Fine)));
+    CHECK(modes_for(Needs{}, ShadeRequest{.derivatives = Derivatives::Analytic, .precision = Precision::Double}).bits ==
+          (bit(Derivatives::None, Precision::Double) | bit(Derivatives::Analytic, Precision::Double)));
+    CHECK(modes_for(Needs{.derivatives = true}, ShadeRequest{.check_undefined = true}).bits ==
+          bit(Derivatives::Fine, Precision::Float, true));
+    CHECK(ShadeModes{}.covers(modes_for(Needs{}, ShadeRequest{})));
+    CHECK_FALSE(ShadeModes{bit(Derivatives::Fine)}.covers(ShadeModes{bit(Derivatives::Fine) | bit(Derivatives::None)}));
 }
