@@ -99,7 +99,7 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
 
 struct TestArgs {
     std::vector<std::string> inputs, plugins;
-    bool update = false, merge = false, allow_outside = false;
+    bool update = false, merge = false, allow_outside = false, compile_glsl = false;
     int jobs = 0;
     std::string junit, html, shard, report, memory_limit;
 };
@@ -117,6 +117,7 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
     cmd.add_flag("--allow-outside-paths", a.allow_outside,
                  "let the suite name scenes and expected images outside its own folder (and --merge --html\n"
                  "read images outside each fragment's folder); by default only files beside it");
+    cmd.add_flag("--compile", a.compile_glsl, kCompileHelp);
     cmd.add_option("--memory-limit", a.memory_limit,
                    "memory the cases rendered at once may use together, e.g. 4G (default: what the system\n"
                    "has available)")
@@ -127,6 +128,7 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
 struct GalleryArgs {
     std::string output;
     std::vector<std::string> scenes, plugins, glsl;
+    bool compile_glsl = false;
     int size = 160, columns = 6, threads = 0;
     double time = 1.0;
 };
@@ -144,6 +146,7 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
     cmd.add_option("--glsl", a.glsl, "GLSL fragment shaders to draw instead of the catalogue, on one sheet (docs/glsl.md)")
         ->option_text("FRAG...");
+    cmd.add_flag("--compile", a.compile_glsl, kCompileHelp);
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
 }
@@ -181,7 +184,7 @@ int cmd_shaders(const std::string& export_dir) {
 int cmd_gallery(const GalleryArgs& a) {
     GalleryRequest request;
     for (const std::string& file : a.glsl) {
-        const GlslShader shader = load_glsl_shader(file, std::nullopt);
+        const GlslShader shader = load_glsl_shader(file, std::nullopt, glsl_way(a.compile_glsl), {shade_request(request.frame)});
         for (const std::string& w : shader.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
         request.collections = {kGlslCollection};
     }
@@ -339,6 +342,7 @@ int cmd_test(const TestArgs& a) {
         request.jobs = a.jobs;
         request.load.allow_outside = a.allow_outside;
         request.load.memory_limit = memory;
+        request.load.glsl_way = glsl_way(a.compile_glsl);
         if (!a.shard.empty() && !parse_shard(a.shard, request.shard, request.shards)) {
             throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kSuiteShards) + ", got '" +
                              a.shard + "'");
