@@ -30,6 +30,8 @@ struct DrawCall {
     // even if the shader takes no derivatives of its own, as a GL driver does for texture2D.
     bool texture_lod = false;
     FaceCulling culling = {};  // none by default: a bake draws every triangle
+    // Bit i: keep only what has VertexOut::clip_distances[i] >= 0 (GL_CLIP_PLANEi enabled).
+    unsigned clip_distances = 0;
 };
 
 }  // namespace qs

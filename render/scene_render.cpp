@@ -100,7 +100,11 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         std::vector<VertexIn>& vertices = vertices_[o.mesh];
         if (vertices.empty()) {
             vertices.reserve(mesh.vertices.size());
-            for (const Vertex& v : mesh.vertices) vertices.push_back({v.position, v.texcoord});
+            for (const Vertex& v : mesh.vertices) {
+                VertexIn in{v.position, v.texcoord};
+                in.id = std::uint32_t(vertices.size());  // gl_VertexID
+                vertices.push_back(in);
+            }
         }
         d.vertices = vertices;
         d.indices = mesh.indices;
