@@ -19,6 +19,7 @@
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
+#include "apps/shader_test_command.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"
@@ -330,6 +331,11 @@ int main(int argc, char** argv) {
         "bake", "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
                 "mesh drawn with the baked texture");
     add_bake_options(*bake_cmd, bake);
+    ShaderTestArgs shader_test;
+    CLI::App* shader_test_cmd = app.add_subcommand(
+        "shader-test", "run piglit's .shader_test files with quadshade as the GL driver: a line per test, a\n"
+                       "summary by folder and skip reason (exit 3 when a test fails or crashes)");
+    add_shader_test_options(*shader_test_cmd, shader_test);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -356,6 +362,7 @@ int main(int argc, char** argv) {
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
         if (gallery_cmd->parsed()) return cmd_gallery(gallery);
         if (bake_cmd->parsed()) return cmd_bake(bake);
+        if (shader_test_cmd->parsed()) return cmd_shader_test(shader_test);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {
