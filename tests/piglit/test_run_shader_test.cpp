@@ -191,7 +191,8 @@ void main() { gl_FragColor = gl_Color; }
 ortho
 color 0.0 1.0 0.0 1.0
 draw rect 10 10 20 20
-# At z = -2 in front of this frustum, x and y in [-1, 0] are halved: window pixels 63 to 124.
+# At z = -2 in front of this frustum, x and y in [-1, 0] are halved: window 62.5 to 125, pixels 62
+# (its centre on the left edge, which GL's fill rule draws) to 124.
 frustum -1 1 -1 1 1 10
 uniform float z -2
 color 1.0 0.0 1.0 1.0
@@ -200,8 +201,8 @@ probe rect rgba (10, 10, 20, 20) (0, 1, 0, 1)
 probe rgba 9 9 0 0 0 0
 probe rgba 125 125 0 0 0 0
 probe rgba 124 124 1 0 1 1
-probe rgba 63 70 1 0 1 1
-probe rgba 62 70 0 0 0 0
+probe rgba 62 70 1 0 1 1
+probe rgba 61 70 0 0 0 0
 )");
     INFO(describe(r));
     CHECK(r.status == Status::Pass);

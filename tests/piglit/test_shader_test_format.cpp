@@ -58,7 +58,7 @@ TEST_CASE("a shader_test's sections keep their text and line numbers", "[piglit]
     // Everything after [test] is its script, a line that looks like a section included.
     REQUIRE(t.test.size() == 4);
     CHECK(t.test[3].text == "[not a section]");
-    CHECK(t.test[0].number == 21);
+    CHECK(t.test[0].number == 20);
 }
 
 TEST_CASE("a shader_test without [require] or with an unknown section is refused at its line", "[piglit]") {
