@@ -5,10 +5,13 @@
 #include <filesystem>
 
 #include "apps/command_line.h"
+#include "core/framebuffer.h"
 #include "render/atlas_bake.h"
+#include "render/memory_plan.h"
 #include "render/volume_bake.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "scenes/scene_files.h"
 #include "scenes/temporary_file.h"
 #include "scenes/uniforms.h"
 #include "shading/catalogue.h"
@@ -20,7 +23,8 @@ namespace fs = std::filesystem;
 
 void add_volume_options(CLI::App& cmd, VolumeArgs& a) {
     cmd.add_option("--shader", a.shader, "the catalogue shader to evaluate (its object-space position is the grid's)")
-        ->required()->option_text("NAME");
+        ->option_text("NAME");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_option("-o,--output", a.output,
                    "the volume as a 3D texture: N x N^2 pixels, slice k in rows [kN, (k+1)N)\n"
                    "(.png: 8-bit, loadable as a sampler3D; .exr/.tif: float)")
@@ -44,7 +48,8 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     cmd.add_option("mesh", a.mesh, "a glTF scene whose meshes have a UV atlas in TEXCOORD_0 (in [0, 1], no overlaps)")
         ->required()->option_text("MESH.gltf");
     cmd.add_option("--shader", a.shader, "the catalogue shader to bake (its own vertex stage gives its varyings)")
-        ->required()->option_text("NAME");
+        ->option_text("NAME");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_option("-o,--output", a.output,
                    "the baked scene: OUT.gltf and OUT.bin, its maps beside them (OUT-color.png, and\n"
                    "OUT-height.png and OUT-normal.png as --maps asks), drawn with a shader that samples them")
@@ -59,7 +64,7 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
         cmd, "--normals", a.normals, {{"analytic", NormalMethod::Analytic}, {"finite", NormalMethod::FiniteDifferences}},
         "HOW",
         "the normal map from the height's gradient through Dual2 (analytic, the default) or from\n"
-        "three heights and a cross product (finite: seed 001's way)");
+        "three heights and a cross product (finite: the ProcTexGen articles' way)");
     cmd.add_option("--normal-step", a.normal_step, "--normals finite's step along the tangents, in object units (default 1e-4)")
         ->check(CLI::PositiveNumber & kFinite)->option_text("E");
     a.precision_option = add_choice<Precision>(cmd, "--normal-precision", a.normal_precision,
@@ -79,9 +84,28 @@ void add_bake_options(CLI::App& cmd, BakeArgs& a) {
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
     cmd.add_flag("--allow-outside-paths", a.allow_outside, "let the scene read files outside its own folder");
+    cmd.add_option("--memory-limit", a.memory_limit,
+                   "memory the bake may use, e.g. 4G (default: what the system has available); checked\n"
+                   "before any work, map by map (each is written before the next is made)")
+        ->option_text("SIZE");
 }
 
-int cmd_bake_volume(const VolumeArgs& a) {
+namespace {
+
+// The atlas frame written as the texture it is: rows in the opposite order (row 0 is t = 0), a
+// row at a time, so that no flipped copy of the frame is made.
+void write_atlas(const fs::path& file, const Framebuffer& frame, const Metadata& metadata) {
+    ImageWriter writer(file, frame.width, frame.height, true, metadata);
+    const std::size_t row = std::size_t(frame.width) * 4;
+    for (int y = frame.height - 1; y >= 0; --y) writer.write_rows(1, frame.rgba.data() + std::size_t(y) * row);
+    writer.commit();
+}
+
+}  // namespace
+
+int cmd_bake_volume(VolumeArgs a) {
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, a.shader);
+    if (a.shader.empty()) throw UsageError("bake-volume: give the shader to evaluate: --shader NAME or --glsl FRAG");
     VolumeRequest req;
     req.shader = a.shader, req.size = a.size;
     req.frame.time = a.time.value_or(0.0);
@@ -111,10 +135,13 @@ int cmd_bake_volume(const VolumeArgs& a) {
                 true);
     std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
                  a.size, a.shader.c_str(), seconds * 1e3, a.size);
+    warn_loop_limit(glsl);
     return 0;
 }
 
-int cmd_bake(const BakeArgs& a) {
+int cmd_bake(BakeArgs a) {
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, a.shader);
+    if (a.shader.empty()) throw UsageError("bake: give the shader to bake: --shader NAME or --glsl FRAG");
     const fs::path output(a.output);
     if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
     bool height = false, normal = false, color = false;
@@ -143,6 +170,10 @@ int cmd_bake(const BakeArgs& a) {
                              "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
         }
     }
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
+    load_image_library();  // the bake's memory is measured from here
+    reset_peak_resident();
+    const std::uint64_t resident_before = resident_bytes();
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
@@ -165,44 +196,61 @@ int cmd_bake(const BakeArgs& a) {
     req.frame.shading.derivatives = a.derivatives;
     req.frame.shading.threads = a.threads;
     for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
-    auto clock = std::chrono::steady_clock::now;
-    auto ms_since = [](auto t0) { return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    auto t0 = clock();
-    const Image atlas = bake_atlas(scene, req);
-    const double color_ms = ms_since(t0);
-    // Every map is made before any file is written: an error leaves no output.
-    Image height_map, normal_map;
-    double height_ms = 0.0, normal_ms = 0.0;
-    if (height) {
-        AtlasRequest h = req;
-        h.frame.shader_override = std::string(field->height_shader());
-        t0 = clock();
-        height_map = bake_atlas(scene, h);
-        height_ms = ms_since(t0);
-    }
     NormalBakeRequest n;
     n.size = a.size, n.skirt = a.skirt, n.method = a.normals, n.precision = a.normal_precision, n.threads = a.threads;
     if (a.normal_step) n.step = *a.normal_step;
+
+    // Before any work: the folder the files go to (their staging folder is made in it now), and
+    // the memory of the largest map (each map is written, and its memory freed, before the next)
+    // beside what the bake holds throughout: the scene as loaded and kRenderOverheadBytes.
+    OutputSet out(output);
+    const std::uint64_t limit = memory_limit(a.memory_limit);
+    const std::uint64_t held = kRenderOverheadBytes + scene_bytes(scene);
+    const std::string side = std::to_string(a.size) + "x" + std::to_string(a.size);
+    // An atlas is written a row at a time; the normal map as a whole image once it is made.
+    const std::uint64_t atlas = atlas_bake_bytes(scene, req) + ImageWriter::conversion_bytes(color_file, a.size, 1, true);
+    std::vector<std::pair<std::string, std::uint64_t>> needs = {{"the colour atlas", atlas}};
+    if (height) needs.emplace_back("the height map", atlas);
     if (normal) {
-        t0 = clock();
-        normal_map = bake_normal_map(scene, *field, n);
-        normal_ms = ms_since(t0);
+        const std::uint64_t image = std::uint64_t(a.size) * std::uint64_t(a.size) * 4 * sizeof(float);
+        needs.emplace_back("the normal map",
+                           std::max(normal_bake_bytes(scene, n),
+                                    image + ImageWriter::conversion_bytes(normal_file, a.size, a.size, true)));
+    }
+    std::uint64_t planned = 0;
+    for (const auto& [map, bytes] : needs) {
+        if (held + bytes > limit) {
+            throw MemoryError("bake: " + map + " at " + side + " needs " + byte_size_text(held + bytes) +
+                              ", more than the " + byte_size_text(limit) +
+                              " available (--memory-limit sets it; a smaller --size needs less)");
+        }
+        planned = std::max(planned, held + bytes);
     }
 
-    OutputSet out(output);
+    auto clock = std::chrono::steady_clock::now;
+    auto ms_since = [](auto t0) {
+        return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
     const Metadata common = {{"quadshade:shader", a.shader},
                              {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
                              {"quadshade:skirt", std::to_string(a.skirt)}};
     Metadata meta = common;
     meta.push_back({"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"});
     meta.push_back({"quadshade:derivatives", rule_name(a.derivatives)});
-    write_image(out.staged(color_file), atlas, meta, true);
+    auto t0 = clock();
+    write_atlas(out.staged(color_file), render_atlas_frame(scene, req), meta);
+    const double color_ms = ms_since(t0);
+    double height_ms = 0.0, normal_ms = 0.0;
     if (height) {
+        AtlasRequest h = req;
+        h.frame.shader_override = std::string(field->height_shader());
         meta = common;
         meta.push_back({"quadshade:atlas", "the height of " + a.shader + " (" + std::string(field->height_shader()) +
                                                "), 0 to 1 for 0 to " + std::to_string(field->amplitude()) +
                                                " object units of relief; row 0 is t = 0"});
-        write_image(out.staged(height_file), height_map, meta, true);
+        t0 = clock();
+        write_atlas(out.staged(height_file), render_atlas_frame(scene, h), meta);
+        height_ms = ms_since(t0);
     }
     if (normal) {
         meta = common;
@@ -212,7 +260,9 @@ int cmd_bake(const BakeArgs& a) {
                                                  ? "analytic (Dual2)"
                                                  : "finite differences, step " + std::to_string(n.step) + " object units"});
         meta.push_back({"quadshade:precision", n.precision == Precision::Double ? "double" : "float"});
-        write_image(out.staged(normal_file), normal_map, meta, true);
+        t0 = clock();
+        write_image(out.staged(normal_file), bake_normal_map(scene, *field, n), meta, true);
+        normal_ms = ms_since(t0);
     }
     const Scene baked = baked_scene(scene, out.staged(color_file), normal ? out.staged(normal_file) : fs::path(),
                                     height ? out.staged(height_file) : fs::path());
@@ -222,7 +272,11 @@ int cmd_bake(const BakeArgs& a) {
                  a.size, a.size, color_ms, color_file.c_str());
     if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
     if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
-    std::fputc('\n', stderr);
+    const std::uint64_t peak = peak_resident_bytes();
+    std::fprintf(stderr, ", peak memory %s (planned %s)\n",
+                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
+                 byte_size_text(planned).c_str());
+    warn_loop_limit(glsl);
     return 0;
 }
 

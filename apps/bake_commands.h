@@ -15,6 +15,8 @@ namespace qs::app {
 
 struct VolumeArgs {
     std::string shader, output, scene;
+    std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
+    bool compile_glsl = false;      // --compile
     int size = 32;
     std::optional<double> time;
     std::vector<std::string> uniforms, plugins;
@@ -24,10 +26,12 @@ struct VolumeArgs {
 };
 
 void add_volume_options(CLI::App& cmd, VolumeArgs& a);
-int cmd_bake_volume(const VolumeArgs& a);
+int cmd_bake_volume(VolumeArgs a);
 
 struct BakeArgs {
     std::string mesh, shader, output;
+    std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
+    bool compile_glsl = false;      // --compile
     int size = 1024;
     std::vector<std::string> maps{"color"};
     int skirt = 0;
@@ -42,9 +46,10 @@ struct BakeArgs {
     CLI::Option* precision_option = nullptr;
     Precision normal_precision = Precision::Float;
     std::optional<double> normal_step;
+    std::string memory_limit;  // empty: what the system has available
 };
 
 void add_bake_options(CLI::App& cmd, BakeArgs& a);
-int cmd_bake(const BakeArgs& a);
+int cmd_bake(BakeArgs a);
 
 }  // namespace qs::app

@@ -1,10 +1,5 @@
 #include "apps/check.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -21,12 +16,14 @@
 #include "core/framebuffer.h"
 #include "raster/driver_settings.h"
 #include "render/frame_image.h"
+#include "render/memory_plan.h"
+#include "render/reference_process.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
+#include "scenes/output_file.h"
+#include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
-
-extern char** environ;
 
 namespace qs {
 
@@ -80,13 +77,6 @@ bool meets(const CaseCounts& n, const Bar& bar) {
 
 // ---- where things are ------------------------------------------------------------------------
 
-fs::path executable_folder() {
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) throw std::runtime_error("cannot find the quadshade executable (/proc/self/exe): " + ec.message());
-    return exe.parent_path();
-}
-
 bool is_scene_file(const fs::path& p) {
     std::string ext = p.extension().string();
     for (char& c : ext) c = char(std::tolower((unsigned char)c));
@@ -106,6 +96,24 @@ std::vector<fs::path> scenes_in(const fs::path& folder) {
     return files;
 }
 
+// The scenes --scenes names: files as they are, folders as the scenes in them.
+std::vector<fs::path> named_scenes(const std::vector<fs::path>& named) {
+    std::vector<fs::path> files;
+    for (const fs::path& p : named) {
+        std::error_code ec;
+        if (fs::is_directory(p, ec)) {
+            for (const fs::path& f : scenes_in(p)) files.push_back(f);
+        } else if (!fs::is_regular_file(p, ec)) {
+            throw std::runtime_error("--scenes " + p.string() + ": no such file or folder");
+        } else if (!is_scene_file(p)) {
+            throw std::runtime_error("--scenes " + p.string() + ": not a .gltf or .glb scene");
+        } else {
+            files.push_back(p);
+        }
+    }
+    return files;
+}
+
 }  // namespace
 
 fs::path installed_scenes_folder() { return executable_folder().parent_path() / "share" / "quadshade" / "scenes"; }
@@ -119,37 +127,6 @@ std::vector<fs::path> default_scenes() {
     if (!fs::exists(plane)) throw std::runtime_error(plane.string() + ": the Table 1.1 plane is missing (an incomplete installation?)");
     files.push_back(plane);
     return files;
-}
-
-// ---- the reference, a separate process -------------------------------------------------------
-
-// Runs `argv` with its output going to `log`; returns its exit status (or 128 + the signal).
-int run_process(const std::vector<std::string>& argv, const fs::path& log) {
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_t pid = 0;
-    const int err = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (err != 0) throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(err));
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) throw std::runtime_error("waiting for " + argv[0] + ": " + std::strerror(errno));
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
-std::string read_text(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    std::string text = s.str();
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    return text;
 }
 
 // ---- cases -----------------------------------------------------------------------------------
@@ -224,11 +201,18 @@ struct CaseReport {
     std::string heat_map, error;
 };
 
+// Bytes a case holds per pixel beside its render, at most: our image and the reference's (16
+// each), the reference's decoding (16 more), the heat map and its intermediates (80), the
+// side-by-side strip (48), and the reference process (56: 55 measured at 2048x2048).
+constexpr std::uint64_t kCheckBytesPerPixel = 232;
+
 struct Checker {
     const CheckRequest& request;
     fs::path reference, glsl;
     std::vector<fs::path> files;
     std::vector<Scene> scenes;
+    InputFiles inputs;  // the scenes and the files they read: never written over
+    MemoryBudget* budget = nullptr;
     int threads = 1;  // per render
 
     // One case, its reference rendered by a quadshade-reference process writing `image`.
@@ -236,31 +220,71 @@ struct Checker {
         CaseReport report;
         const ShaderInfo& info = c.program->info();
         const std::string shader(info.name), scene_name = files[c.scene].stem().string();
-        const std::vector<std::string> argv = {reference.string(), files[c.scene].string(), "-o", image.string(), "--glsl",
-                                               glsl.string(), "--driver", driver_of(c.rule), "--shader", shader};
-        if (const int status = run_process(argv, log); status != 0) {
-            throw std::runtime_error("quadshade-reference failed on " + files[c.scene].string() + " with " + shader + " (" +
-                                     driver_of(c.rule) + ", exit " + std::to_string(status) + "): " + read_text(log));
-        }
-        const Image theirs = read_image(image);
         Scene scene = scenes[c.scene];
         FrameRequest r;
         r.shader_override = shader;
         r.set(raster_options_as(c.rule == CheckRule::Fine ? MesaDriver::Llvmpipe : MesaDriver::Softpipe));
         r.shading.threads = threads;
-        const Framebuffer fb = render_frame(scene, r);
+        r.width = request.width, r.height = request.height;
+        SceneRenderer renderer(scene, r);
+        const int w = renderer.width(), h = renderer.height();
+        const MemoryBudget::Reservation held =
+            budget->reserve(renderer.frame_bytes(h) + std::uint64_t(w) * std::uint64_t(h) * kCheckBytesPerPixel,
+                            "checking " + shader + " on " + files[c.scene].string() + " (" + std::to_string(w) + "x" +
+                                std::to_string(h) + ")");
+        std::vector<std::string> argv = {reference.string(), files[c.scene].string(), "-o", image.string(), "--glsl",
+                                         glsl.string(), "--driver", driver_of(c.rule), "--shader", shader};
+        if (request.width > 0) {
+            argv.insert(argv.end(), {"--size", std::to_string(request.width) + "x" + std::to_string(request.height)});
+        }
+        if (const int status = run_process(argv, log); status != 0) {
+            throw std::runtime_error("quadshade-reference failed on " + files[c.scene].string() + " with " + shader + " (" +
+                                     driver_of(c.rule) + ", exit " + std::to_string(status) + "): " + read_text(log));
+        }
+        ImageReadLimits limits;  // the scene's size, checked on the header
+        limits.width = w, limits.height = h;
+        const Image theirs = read_image(image, limits);
+        Framebuffer fb;
+        renderer.render_into(fb, std::nullopt);
         const Image ours = colour_image(fb);
-        report.width = fb.width, report.height = fb.height;
+        fb = {};
+        report.width = w, report.height = h;
         report.counts = count_differences(ours, theirs);
         report.bar = bar_for(info, scene_name, c.rule, report.counts);
         report.ok = meets(report.counts, report.bar);
         if (report.counts.coverage || report.counts.max_steps) {
             const fs::path f = request.output / (scene_name + "-" + shader + "-" + rule_name(c.rule) + ".png");
+            if (inputs.contains(f))
+                throw std::runtime_error(f.string() + ": a file a scene reads; check's heat map would overwrite it");
             const Image diff = difference_heat_map(ours, theirs, 8.0f / 255.0f);
             write_image(f, side_by_side({&ours, &theirs, &diff}));
             report.heat_map = f.string();
         }
         return report;
+    }
+
+    // The shader of case `c` shaded once in its checked instantiation, which throws where a
+    // Loop's body writes a variable the loop does not hold; empty when none does. A body's writes
+    // happen whichever of its lanes are live (an `if` is a select), so a frame of at most 128
+    // pixels a side finds them unless only pixels it skips run that iteration, at a fraction of
+    // the checked instantiation's cost at the case's size.
+    std::string loop_writes(const Case& c) const {
+        Scene scene = scenes[c.scene];
+        FrameRequest r;
+        r.shader_override = std::string(c.program->info().name);
+        r.set(raster_options_as(MesaDriver::Llvmpipe));
+        r.shading.threads = threads;
+        r.shading.check_undefined = true;
+        const bool sized = request.width > 0;
+        const int w = sized ? request.width : scene.width, h = sized ? request.height : scene.height;
+        const double scale = std::min(1.0, 128.0 / double(std::max(w, h)));
+        r.width = std::max(1, int(w * scale)), r.height = std::max(1, int(h * scale));
+        try {
+            render_frame(scene, r);
+        } catch (const std::logic_error& e) {
+            return e.what();
+        }
+        return {};
     }
 
     void print(const Case& c, const CaseReport& r, std::ostream& csv) const {
@@ -285,17 +309,14 @@ struct Checker {
 }  // namespace
 
 int run_check(const CheckRequest& request) {
-    Checker checker{request, executable_folder() / "quadshade-reference", request.output / "glsl", {}, {}, 1};
-    if (::access(checker.reference.c_str(), X_OK) != 0) {
-        throw std::runtime_error(checker.reference.string() + ": quadshade-reference is not beside quadshade (built with "
-                                 "-DQUADSHADE_REFERENCE=OFF, without OSMesa?); check needs it");
-    }
+    Checker checker{request, reference_executable("check"), request.output / "glsl", {}, {}, {}, nullptr, 1};
     const std::vector<const Program*> programs = shaders_of(request);
-    checker.files = request.scenes.empty() ? default_scenes() : scenes_in(request.scenes);
+    checker.files = request.scenes.empty() ? default_scenes() : named_scenes(request.scenes);
     std::vector<Case> cases;
     std::size_t skipped_pairs = 0;
     for (std::size_t s = 0; s < checker.files.size(); ++s) {
         checker.scenes.push_back(load_scene(checker.files[s]));
+        for (const fs::path& input : checker.scenes.back().inputs) checker.inputs.add(input);
         for (const Program* program : programs) {
             // The default set's texture scenes (apps/texture_scenes.h) test sampling: they are for
             // the shaders that sample a texture; the others are checked on the geometry scenes.
@@ -309,9 +330,35 @@ int run_check(const CheckRequest& request) {
         }
     }
     if (cases.empty()) throw std::runtime_error("no case to check: no scene binds the textures the shaders sample");
-    fs::create_directories(request.output);
+    const fs::path report_file = request.output / "report.csv";
+    for (const fs::path& output : {report_file, checker.glsl}) {
+        if (checker.inputs.contains(output))
+            throw std::runtime_error(output.string() + ": a file a scene reads; check would overwrite it");
+    }
+    make_output_folder(request.output, FolderLink::Followed);
+    output_place(report_file, Streams::Refused);
+    make_output_folder(checker.glsl, FolderLink::Refused);
+
+    // Each shader's loops, on its first case.
+    std::size_t loop_failures = 0;
+    for (const Program* program : programs) {
+        for (const Case& c : cases) {
+            if (c.program != program) continue;
+            if (const std::string problem = checker.loop_writes(c); !problem.empty()) {
+                std::printf("FAIL %s: %s\n", std::string(program->info().name).c_str(), problem.c_str());
+                std::fflush(stdout);
+                ++loop_failures;
+            }
+            break;
+        }
+    }
     export_glsl(checker.glsl);  // the reference sees the GLSL as any GL application would: the text only
-    std::ofstream csv(request.output / "report.csv");
+    // The reference images and logs are this run's own (two runs may share -o); the report is
+    // written whole once every case is done.
+    const ScratchFolder scratch(request.output / "reference");
+    MemoryBudget budget(request.memory_limit ? request.memory_limit : available_memory());
+    checker.budget = &budget;
+    std::ostringstream csv;
     csv << "scene,shader,rule,driver,width,height,covered,coverage_mismatch,over_1,over_2,max_steps,max_x,max_y,"
            "bar_over_1,bar_over_2,bar_coverage,result\n";
 
@@ -326,8 +373,8 @@ int run_check(const CheckRequest& request) {
     std::size_t printed = 0, failed = 0;
     const auto start = std::chrono::steady_clock::now();
     auto worker = [&](int id) {
-        const fs::path image = request.output / ("reference-" + std::to_string(id) + ".exr");
-        const fs::path log = request.output / ("reference-" + std::to_string(id) + ".log");
+        const fs::path image = scratch.path() / ("reference-" + std::to_string(id) + ".exr");
+        const fs::path log = scratch.path() / ("reference-" + std::to_string(id) + ".log");
         for (std::size_t k = next++; k < cases.size() && !stop; k = next++) {
             CaseReport r;
             try {
@@ -344,9 +391,6 @@ int run_check(const CheckRequest& request) {
                 failed += !reports[printed].ok;
             }
         }
-        std::error_code ec;
-        fs::remove(image, ec);
-        fs::remove(log, ec);
     };
     std::vector<std::thread> pool;
     for (int j = 1; j < jobs; ++j) pool.emplace_back(worker, j);
@@ -359,12 +403,14 @@ int run_check(const CheckRequest& request) {
     std::printf("quadshade check: %zu cases (%zu shaders, %zu scenes, %zu rule%s) in %.1f s: %zu passed, %zu failed", cases.size(),
                 programs.size(), checker.files.size(), request.rules.size(), request.rules.size() == 1 ? "" : "s", seconds,
                 cases.size() - failed, failed);
+    if (loop_failures) std::printf("; %zu shader%s with a loop that does not hold what it writes", loop_failures, loop_failures == 1 ? "" : "s");
     if (skipped_pairs) {
         std::printf("; %zu shader-scene pairs left out (the scene binds no texture the shader samples%s)", skipped_pairs,
                     request.scenes.empty() ? ", or the shader samples none on a texture scene" : "");
     }
-    std::printf("\nquadshade check: report %s\n", (request.output / "report.csv").string().c_str());
-    return failed ? 3 : 0;
+    write_output(report_file, csv.str());
+    std::printf("\nquadshade check: report %s\n", report_file.string().c_str());
+    return failed || loop_failures ? 3 : 0;
 }
 
 }  // namespace qs

@@ -13,6 +13,7 @@
 // exactly"): see kCoarseLowerBar in check.cpp.
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,16 +28,22 @@ struct CheckRequest {
     // Empty: every shader of the catalogue, plugins' included, but the built-in probes (*_probe:
     // tests of their own, drawn for one window); a probe is checked when named.
     std::vector<std::string> shaders;
-    // A folder of .gltf/.glb scenes, each checked with every shader it can feed (it binds the
-    // textures the shader samples). Empty: the default set, installed in share/quadshade/scenes
-    // beside the executable's bin/: the geometry conformance scenes and the Table 1.1 plane with
-    // every shader, the texture conformance scenes (texture-*) with the shaders that sample one.
-    std::filesystem::path scenes;
+    // .gltf/.glb scenes, and folders standing for every scene in them, each checked with every
+    // shader it can feed (it binds the textures the shader samples). Empty: the default set,
+    // installed in share/quadshade/scenes beside the executable's bin/: the geometry conformance
+    // scenes and the Table 1.1 plane with every shader, the texture conformance scenes
+    // (texture-*) with the shaders that sample one.
+    std::vector<std::filesystem::path> scenes;
+    // Every case's size in pixels; 0: each scene's own.
+    int width = 0, height = 0;
     std::vector<CheckRule> rules{CheckRule::Fine};
     // Where the exported GLSL, report.csv and a quadshade | OSMesa | heat map image of every case
     // that differs at all are written.
     std::filesystem::path output = "quadshade-check";
     int jobs = 0;  // cases at once (a reference process and a render each); 0: one per core
+    // What the cases checked at once may use together (each reserves its render's and images'
+    // memory first: render/memory_plan.h's MemoryBudget); 0: what the system has available.
+    std::uint64_t memory_limit = 0;
 };
 
 // One case's differences. A pixel's difference is its largest RGB channel difference in 8-bit
@@ -50,8 +57,10 @@ struct CaseCounts {
 };
 CaseCounts count_differences(const Image& ours, const Image& reference);
 
-// Runs every case and prints a line for each and a summary (stdout). Returns 0 when every case
-// meets its bar, 3 when one does not. Throws on bad input (an unknown shader, a folder without
+// Runs every case and prints a line for each and a summary (stdout). Before the cases, each
+// shader is shaded once on its first case in its checked instantiation, which finds a Loop's
+// body writing a variable the loop does not hold (shading/glsl/control.h): that fails the shader
+// with a line naming the loop. Returns 0 when every case meets its bar, 3 when one does not. Throws on bad input (an unknown shader, a folder without
 // scenes, quadshade-reference missing or failing: its message is in the exception).
 int run_check(const CheckRequest& request);
 

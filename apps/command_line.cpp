@@ -6,6 +6,7 @@
 #include "interpreter/glsl_program.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
+#include "scenes/output_file.h"
 
 namespace qs::app {
 
@@ -17,12 +18,24 @@ fs::path resolved(const fs::path& p) {
     return ec ? p.lexically_normal() : folder / p.filename();
 }
 
-void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option) {
-    if (fs::is_directory(output)) throw UsageError(std::string(option) + " " + output.string() + ": is a folder; give a file name");
+void check_output(const fs::path& output, const std::vector<fs::path>& inputs, const char* option, Streams streams) {
+    try {
+        output_place(output, streams);
+    } catch (const OutputError& e) {
+        throw UsageError(std::string(option) + " " + e.what());
+    }
     for (const fs::path& in : inputs) {
         if (output.filename() == in.filename() && resolved(output) == in) {
             throw UsageError(std::string(option) + " " + output.string() + ": is an input of this command; it would be overwritten");
         }
+    }
+}
+
+void check_output(const fs::path& output, const InputFiles& inputs, const char* option, Streams streams) {
+    check_output(output, std::vector<fs::path>{}, option, streams);
+    if (inputs.contains(output)) {
+        throw UsageError(std::string(option) + " " + output.string() +
+                         ": is an input of this command; it would be overwritten");
     }
 }
 
@@ -38,21 +51,25 @@ void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins) {
         ->option_text("LIB")->allow_extra_args(false);
 }
 
-void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex) {
+void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex, bool& compile) {
     cmd.add_option("--glsl", fragment,
                    "draw every object with this GLSL fragment shader, run as written\n"
                    "(docs/glsl.md); its vertex shader is --vert's, or one written for it")
         ->option_text("FRAG");
     cmd.add_option("--vert", vertex, "the GLSL vertex shader for --glsl")->option_text("VERT");
+    cmd.add_flag("--compile", compile,
+                 "run --glsl as its C++ translation, compiled now if the plugin cache lacks it (once\n"
+                 "cached it is used without --compile; docs/glsl.md)");
 }
 
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, std::string& shader) {
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader) {
     if (fragment.empty()) {
         if (!vertex.empty()) throw UsageError("--vert: give the fragment shader with --glsl");
         return nullptr;
     }
     if (!shader.empty()) throw UsageError("--glsl and --shader: give one shader to draw with");
-    const GlslShader s = load_glsl_shader(fragment, vertex.empty() ? std::nullopt : std::optional<fs::path>(vertex));
+    const GlslShader s = load_glsl_shader(fragment, vertex.empty() ? std::nullopt : std::optional<fs::path>(vertex),
+                                          compile ? GlslWay::Compile : GlslWay::Cached);
     for (const std::string& w : s.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
     shader = std::string(s.program->info().name);
     return s.program;

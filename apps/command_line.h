@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "scenes/output_file.h"
 #include "shading/program.h"
 
 namespace qs::app {
@@ -28,10 +29,14 @@ struct UsageError : std::runtime_error {
 // output replaces that entry (written beside it, renamed over it), never what a link there points to.
 std::filesystem::path resolved(const std::filesystem::path& p);
 
-// Refuses (UsageError) an output that is a folder or one of the scene's own files. Cheap for a
-// million frames: only an output named like an input has its folder resolved.
+// Refuses (UsageError) an output that cannot be written where it is named (a folder, a device,
+// a stream unless `streams` allows one: scenes/output_file.h) or is one of `inputs` (the scene's
+// own files, a suite's...). Cheap for a million frames: only an output named like an input has
+// its folder resolved.
 void check_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs,
-                  const char* option);
+                  const char* option, Streams streams = Streams::Refused);
+void check_output(const std::filesystem::path& output, const InputFiles& inputs, const char* option,
+                  Streams streams = Streams::Refused);
 
 // A CLI11 check that a number is finite (CLI11 reads "nan", "inf" and 1e400 as numbers).
 extern const CLI::Validator kFinite;
@@ -63,10 +68,11 @@ CLI::Option* add_choice(CLI::App& app, const std::string& name, T& target, std::
 void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins);
 
 // --glsl FRAG and --vert VERT: a user's GLSL drawn on every object (render/glsl_shaders.h).
-void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex);
+// --compile: run it as its compiled C++ translation (render/compiled_glsl.h).
+void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex, bool& compile);
 // Compiles the shaders --glsl and --vert name, if any, and names their program in `shader`
 // (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings.
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, std::string& shader);
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader);
 // The warning, once, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's limit.
 void warn_loop_limit(const Program* program);
 

@@ -5,14 +5,25 @@
 // `fail_percent` of its pixels do; likewise `warn`). Cases run in parallel; a shard (K/N) runs
 // every N-th case; each run can write a report fragment, and fragments merge into one report.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "render/scene_render.h"
+#include "scenes/output_file.h"
 
 namespace qs {
+
+// What a suite or fragment file may hold, checked before anything is allocated for it.
+inline constexpr std::uint64_t kSuiteFileBytes = std::uint64_t(256) << 20;
+inline constexpr std::size_t kSuiteCases = 1000000;
+inline constexpr int kSuiteShards = 100000;
+inline constexpr int kSuiteJsonDepth = 64;  // objects and arrays nested, as a scene's JSON
+// Memory reading a suite or fragment takes, per byte of its JSON (the parsed document), with room.
+inline constexpr std::uint64_t kJsonBytesPerByte = 16;
 
 // Differences in 8-bit steps of the largest RGB channel difference (images are 8-bit RGB PNG, as
 // `quadshade render -o FILE.png` writes them).
@@ -24,8 +35,11 @@ struct Tolerance {
 
 struct SuiteCase {
     std::string name;
-    std::filesystem::path scene, expected;  // resolved against the suite's folder
-    FrameRequest request;                   // size, time, shader, rule, backend, precision, uniforms
+    std::filesystem::path scene;
+    // The expected image and, beside it, what a failure keeps: NAME.actual.png and NAME.diff.png.
+    // Each is the entry the suite names (its folder resolved, a link kept: replaced on a write).
+    std::filesystem::path expected, actual, diff;
+    FrameRequest request;  // size, time, shader, rule, backend, precision, uniforms
     Tolerance tolerance;
 };
 
@@ -33,10 +47,27 @@ struct Suite {
     std::filesystem::path file;
     std::string name;
     std::vector<SuiteCase> cases;
+    // What the suite reads beside its expected images: its file, its scenes and the files they name
+    // (add_scene_inputs); no output of the run may be one of them.
+    InputFiles inputs;
 };
 
-// Reads a suite file; throws std::runtime_error naming the file and the field of anything wrong.
-Suite load_suite(const std::filesystem::path& file);
+struct SuiteLoadOptions {
+    // Scenes and expected images outside the suite's folder (absolute paths, ../, links leading
+    // out); by default a suite names only files in its own folder, and its scenes read only
+    // theirs (--allow-outside-paths).
+    bool allow_outside = false;
+    std::uint64_t memory_limit = 0;  // what reading it may take; 0: what the system has available
+};
+
+// Reads a suite file; throws std::runtime_error naming the file and the field of anything wrong
+// (MemoryError when its JSON would not fit).
+Suite load_suite(const std::filesystem::path& file, const SuiteLoadOptions& options = {});
+// The same from the file's text, `file` naming it (its folder is where its paths lead from).
+Suite parse_suite(std::string_view text, const std::filesystem::path& file, const SuiteLoadOptions& options = {});
+// Loads each of the suite's scenes once and adds the files it reads to suite.inputs (a scene
+// that does not load adds itself only: its cases fail with its message).
+void add_scene_inputs(Suite& suite, const SuiteLoadOptions& options);
 
 enum class CaseStatus { Pass, Warn, Fail, Updated };
 const char* status_name(CaseStatus s);  // PASS, WARN, FAIL, UPDATED
@@ -60,23 +91,54 @@ struct SuiteRun {
 };
 
 struct SuiteRequest {
-    std::filesystem::path suite;
     bool update = false;  // re-bless: write each case's image as its expected image
     int jobs = 0;         // cases rendered at once; 0: one per core
     int shard = 1, shards = 1;
+    SuiteLoadOptions load;  // also how the scenes load
 };
 
-// Runs the suite's cases of the shard, printing progress and a summary (stdout).
-SuiteRun run_suite(const SuiteRequest& request);
+// Runs the suite's cases of the shard, printing progress and a summary (stdout). The cases share
+// one memory budget (load.memory_limit): each renders in bands of rows as `render` does and holds
+// its images as 8 bits per channel, and waits while the others hold what it needs; a case that
+// cannot fit alone fails with the size it needs. Throws std::runtime_error, before any case runs,
+// when a case would write over a file the suite reads.
+SuiteRun run_suite(const Suite& suite, const SuiteRequest& request);
 
-// Report fragments (JSON) and their merge; the JUnit XML and HTML reports of a run.
+// Report fragments (JSON) and their merge; the JUnit XML and HTML reports of a run. Reports are
+// written by scenes/output_file.h's rule; a report may be streamed into /dev/stdout, a FIFO or a
+// character device.
 void write_fragment(const SuiteRun& run, const std::filesystem::path& file);
-// Throws std::runtime_error naming the file when fragments are unreadable, of other suites, or
-// do not hold every shard 1..N exactly once.
-SuiteRun merge_fragments(const std::vector<std::filesystem::path>& files);
+
+struct MergeOptions {
+    // Whether the fragments' images will be read (an HTML report copies them): then each must lie
+    // in its fragment's folder unless allow_outside.
+    bool reads_images = false;
+    bool allow_outside = false;
+    std::uint64_t memory_limit = 0;  // 0: what the system has available
+};
+// Throws std::runtime_error naming the file (and the field) when fragments are unreadable, of
+// other suites, break their limits or do not hold every shard 1..N and every case exactly once.
+SuiteRun merge_fragments(const std::vector<std::filesystem::path>& files, const MergeOptions& options = {});
+// One fragment from its text, `file` naming it: what merge_fragments reads of each (fuzz/).
+SuiteRun parse_fragment(std::string_view text, const std::filesystem::path& file, const MergeOptions& options = {});
+
 void write_junit(const SuiteRun& run, const std::filesystem::path& file);
 void write_html(const SuiteRun& run, const std::filesystem::path& folder);
+// The files write_html writes in `folder`, to check before the run that none is an input.
+std::vector<std::filesystem::path> html_files(const SuiteRun& run, const std::filesystem::path& folder);
+std::vector<std::filesystem::path> html_files(const Suite& suite, const std::filesystem::path& folder);
 // Prints the summary line and the failures; returns 0, or 3 when a case failed.
 int summarize(const SuiteRun& run);
+
+// The JSON of a suite or fragment file, for load_suite and merge_fragments: a regular file of
+// at most kSuiteFileBytes whose parsed form (kJsonBytesPerByte per byte) fits in `memory_limit`
+// (0: what the system has available), nested at most kSuiteJsonDepth deep (checked on the text:
+// a parser would recurse into it). Throws std::runtime_error (MemoryError) naming the file.
+std::string read_suite_json(const std::filesystem::path& file, std::uint64_t memory_limit);
+void check_json_depth(std::string_view text, const std::string& file);
+
+// Whether `name` may name a case: letters, digits, '-', '_' and '.', not starting with '.', at
+// most 200 characters (it names files).
+bool is_case_name(std::string_view name);
 
 }  // namespace qs

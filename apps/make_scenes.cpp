@@ -17,6 +17,7 @@
 
 #include "apps/atlas_scenes.h"
 #include "apps/geometry_scenes.h"
+#include "apps/gltf_scenes.h"
 #include "apps/texture_scenes.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
@@ -112,9 +113,10 @@ qs::Scene sphere() {
 qs::Scene table_1_1_plane(const std::filesystem::path& dir) {
     qs::Scene s;
     s.meshes = {square_mesh()};
-    // Orthographic camera at z = 1 looking down -z: the square fills the window exactly.
+    // Orthographic camera at z = 1 looking down -z: the square fills the window exactly, at any size.
     s.camera.kind = qs::Camera::Kind::Orthographic;
     s.camera.xmag = 1.0f, s.camera.ymag = 1.0f, s.camera.znear = 0.5f, s.camera.zfar = 1.5f;
+    s.camera.stretch = true;  // the plane fills any window, as the chapter's demo draws it
     s.camera.view = glm::translate(glm::mat4(1), {0, 0, -1});
     s.clear_color = {0, 0, 0, 1};
     s.width = 500, s.height = 500;
@@ -154,7 +156,7 @@ qs::Image test_image() {
     return img;
 }
 
-// Lawlor's tex4, which his text leaves to NetRun ("this looks better with a noisy repeating
+// Lawlor's tex4, which his notes leave to NetRun ("this looks better with a noisy repeating
 // image"): 32x32 white noise, each of red, green and blue a byte of the PCG hash of the texel and
 // channel, opaque (so that every pixel of a shader that returns the texture counts as covered).
 qs::Image8 white_noise_image() {
@@ -198,12 +200,12 @@ qs::Scene solids() {
 // Lawlor's plane: the Table 1.1 plane, its texture coordinates NetRun's `texcoords`, with the
 // two textures the snippets read: tex1 the Table 1.1 picture (smooth colours) and tex4 the white
 // noise, both repeating (the snippets read them far outside [0, 1]), bilinear, no mipmaps.
-qs::Scene seed_004_plane(const std::filesystem::path& dir) {
+qs::Scene lawlor_plane(const std::filesystem::path& dir) {
     qs::Scene s = table_1_1_plane(dir);
     const qs::Sampler repeat{qs::Filter::Linear, qs::Filter::Linear, qs::Wrap::Repeat, qs::Wrap::Repeat};
     s.textures[0].sampler = repeat;
     qs::Texture noise;
-    noise.image.file = dir / "textures" / "seed-004-noise.png";
+    noise.image.file = dir / "textures" / "lawlor-noise.png";
     noise.sampler = repeat;
     s.textures.push_back(noise);
     qs::Object& o = s.objects[0];
@@ -213,7 +215,7 @@ qs::Scene seed_004_plane(const std::filesystem::path& dir) {
     return s;
 }
 
-// The ProcTexGen fast noise's volume (shading/shaders/fast_noise_volume.frag): 32^3 texels of 8^3-cell
+// The ProcTexGen articles' fast noise volume (shading/shaders/fast_noise_volume.frag): 32^3 texels of 8^3-cell
 // looping improved noise, R base 0 and G base 8, stored 0.5 + 0.5 n in 8 bits, as GL stores the
 // shader's colour (clamp, scale by 255, round to nearest). Texel (i, j, k) is the noise at P = 8
 // ((i, j, k) + 0.5) / 32, exact in float: the values `quadshade bake-volume --shader
@@ -239,11 +241,11 @@ qs::Image8 fast_noise_volume() {
     return img;
 }
 
-// The ProcTexGen solid textures on Figure 1.1's spheres and ground plane: improved noise against the
+// The ProcTexGen articles' solid textures on Figure 1.1's spheres and ground plane: improved noise against the
 // fast noise (the blog's comparison, left and right), the looping noise, and the fast noise's
 // volume itself; fast_noise reads the volume above (REPEAT, trilinear, no mipmaps: the blog's
 // wrapped texcoord).
-qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
+qs::Scene proctexgen_spheres(const std::filesystem::path& dir) {
     qs::Scene s = figure_1_1();
     qs::Texture volume;
     volume.image.file = dir / "textures" / "fast-noise-volume.png";
@@ -265,8 +267,8 @@ qs::Scene seed_001_spheres(const std::filesystem::path& dir) {
 int main(int argc, char** argv) {
     if (argc != 2 || std::string(argv[1]) == "--help") {
         std::fprintf(stderr, "usage: quadshade-make-scenes OUTPUT_DIR\n"
-                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, seed-001-spheres.gltf,\n"
-                             "seed-004-plane.gltf, solids.gltf (+ .bin), textures/, conformance/ and bake/.\n");
+                             "Writes figure-1.1.gltf, sphere.gltf, table-1.1-plane.gltf, proctexgen-spheres.gltf,\n"
+                             "lawlor-plane.gltf, solids.gltf (+ .bin), textures/, conformance/, bake/ and gltf/.\n");
         return argc == 2 ? 0 : 2;
     }
     try {
@@ -276,14 +278,15 @@ int main(int argc, char** argv) {
         qs::save_scene(figure_1_1(), dir / "figure-1.1.gltf");
         qs::save_scene(sphere(), dir / "sphere.gltf");
         qs::save_scene(table_1_1_plane(dir), dir / "table-1.1-plane.gltf");
-        qs::write_image(dir / "textures" / "seed-004-noise.png", white_noise_image());
-        qs::save_scene(seed_004_plane(dir), dir / "seed-004-plane.gltf");
+        qs::write_image(dir / "textures" / "lawlor-noise.png", white_noise_image());
+        qs::save_scene(lawlor_plane(dir), dir / "lawlor-plane.gltf");
         qs::save_scene(solids(), dir / "solids.gltf");
         qs::write_image(dir / "textures" / "fast-noise-volume.png", fast_noise_volume());
-        qs::save_scene(seed_001_spheres(dir), dir / "seed-001-spheres.gltf");
+        qs::save_scene(proctexgen_spheres(dir), dir / "proctexgen-spheres.gltf");
         qs::write_geometry_scenes(dir);
         qs::write_texture_scenes(dir);
         qs::write_atlas_scenes(dir);
+        qs::write_gltf_scenes(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade-make-scenes: %s\n", e.what());
         return 1;

@@ -7,6 +7,7 @@
 // case failed.
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -16,14 +17,18 @@
 
 #include "apps/bake_commands.h"
 #include "apps/check.h"
+#include "apps/study_command.h"
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
 #include "apps/shader_test_command.h"
+#include "apps/translate_command.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"
+#include "scenes/gltf.h"
 #include "scenes/image_io.h"
+#include "scenes/output_file.h"
 #include "scenes/temporary_file.h"
 #include "scenes/uniforms.h"
 #include "shading/catalogue.h"
@@ -55,20 +60,25 @@ void add_compare_options(CLI::App& cmd, CompareArgs& a) {
 }
 
 struct CheckArgs {
-    std::vector<std::string> shaders, rules{"fine"}, plugins;
-    bool all = false, interpret = false;
+    std::vector<std::string> shaders, rules{"fine"}, plugins, scenes;
+    bool all = false, interpret = false, compile_glsl = false;
     std::string glsl, vertex_glsl;
-    std::string scenes, output = "quadshade-check";
-    int jobs = 0;
+    std::string output = "quadshade-check", memory_limit;
+    int jobs = 0, width = 0, height = 0;
 };
 
 void add_check_options(CLI::App& cmd, CheckArgs& a) {
     cmd.add_option("shaders", a.shaders, "the shaders to check (catalogue names)")->option_text("SHADER...");
     cmd.add_flag("--all", a.all, "check every shader of the catalogue, plugins' included (not the\nbuilt-in probes)");
     cmd.add_option("--scenes", a.scenes,
-                   "check on every .gltf/.glb scene in DIR (default: the conformance\n"
-                   "scenes and the Table 1.1 plane)")
-        ->option_text("DIR");
+                   "check on these scenes: .gltf/.glb files, and folders standing for\n"
+                   "every scene in them (repeatable; default: the conformance scenes\n"
+                   "and the Table 1.1 plane)")
+        ->option_text("SCENE|DIR ...");
+    cmd.add_option_function<std::vector<int>>(
+           "--size", [&a](const std::vector<int>& v) { a.width = v[0], a.height = v[1]; },
+           "render every case at this size (default: each scene's own)")
+        ->delimiter('x')->expected(2)->check(CLI::Range(1, 16384))->option_text("WxH");
     cmd.add_option("--rules", a.rules,
                    "derivative rules, each against its OSMesa driver: fine (llvmpipe,\n"
                    "default), coarse-lower (softpipe)")
@@ -78,17 +88,21 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
         ->option_text("DIR");
     cmd.add_option("--jobs", a.jobs, "cases checked at once, each a reference process and a render\n(default: one per core)")
         ->check(CLI::Range(1, 1024))->option_text("N");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
     cmd.add_flag("--interpret", a.interpret,
                  "check the shaders' GLSL run by the interpreter (as --glsl runs a\nfile) instead of their translations");
+    cmd.add_option(
+           "--memory-limit", a.memory_limit,
+           "memory the cases checked at once may use together, e.g. 4G (default: what the\nsystem has available)")
+        ->option_text("SIZE");
     add_plugin_option(cmd, a.plugins);
 }
 
 struct TestArgs {
     std::vector<std::string> inputs, plugins;
-    bool update = false, merge = false;
+    bool update = false, merge = false, allow_outside = false;
     int jobs = 0;
-    std::string junit, html, shard, report;
+    std::string junit, html, shard, report, memory_limit;
 };
 
 void add_test_options(CLI::App& cmd, TestArgs& a) {
@@ -101,12 +115,19 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
     cmd.add_flag("--merge", a.merge, "merge the report fragments of every shard (1..N, each once) instead of running");
     cmd.add_option("--junit", a.junit, "write a JUnit XML report")->option_text("FILE");
     cmd.add_option("--html", a.html, "write an HTML report, images side by side, to DIR/index.html")->option_text("DIR");
+    cmd.add_flag("--allow-outside-paths", a.allow_outside,
+                 "let the suite name scenes and expected images outside its own folder (and --merge --html\n"
+                 "read images outside each fragment's folder); by default only files beside it");
+    cmd.add_option("--memory-limit", a.memory_limit,
+                   "memory the cases rendered at once may use together, e.g. 4G (default: what the system\n"
+                   "has available)")
+        ->option_text("SIZE");
     add_plugin_option(cmd, a.plugins);
 }
 
 struct GalleryArgs {
     std::string output;
-    std::vector<std::string> scenes, plugins;
+    std::vector<std::string> scenes, plugins, glsl;
     int size = 160, columns = 6, threads = 0;
     double time = 1.0;
 };
@@ -117,11 +138,13 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--size", a.size, "each shader's square in pixels (default 160)")->check(CLI::Range(16, 1024))->option_text("N");
     cmd.add_option("--columns", a.columns, "squares per row, at most (default 6)")->check(CLI::Range(1, 64))->option_text("N");
     cmd.add_option("--scenes", a.scenes,
-                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, seed 004's\n"
-                   "plane, the solids, seed 001's spheres and the conformance scenes); a shader goes on the first\n"
+                   "scenes to draw on, in order of preference (default: the installed Table 1.1 plane, Lawlor's\n"
+                   "plane, the solids, the ProcTexGen spheres and the conformance scenes); a shader goes on the first\n"
                    "that binds its textures")
         ->option_text("SCENE...");
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
+    cmd.add_option("--glsl", a.glsl, "GLSL fragment shaders to draw instead of the catalogue, on one sheet (docs/glsl.md)")
+        ->option_text("FRAG...");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
 }
@@ -158,12 +181,17 @@ int cmd_shaders(const std::string& export_dir) {
 
 int cmd_gallery(const GalleryArgs& a) {
     GalleryRequest request;
+    for (const std::string& file : a.glsl) {
+        const GlslShader shader = load_glsl_shader(file, std::nullopt);
+        for (const std::string& w : shader.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
+        request.collections = {kGlslCollection};
+    }
     request.tile = a.size, request.columns = a.columns;
     request.frame.time = a.time;
     request.frame.shading.threads = a.threads;
     if (a.scenes.empty()) {
         const fs::path folder = installed_scenes_folder();
-        for (const char* name : {"table-1.1-plane.gltf", "seed-004-plane.gltf", "solids.gltf", "seed-001-spheres.gltf"}) {
+        for (const char* name : {"table-1.1-plane.gltf", "lawlor-plane.gltf", "solids.gltf", "proctexgen-spheres.gltf"}) {
             if (!fs::exists(folder / name)) throw std::runtime_error((folder / name).string() + ": missing (an incomplete installation?)");
             request.scenes.push_back(folder / name);
         }
@@ -229,7 +257,7 @@ int cmd_check(const CheckArgs& a) {
     CheckRequest request;
     request.shaders = a.shaders;
     std::string glsl;
-    if (use_glsl_options(a.glsl, a.vertex_glsl, glsl)) request.shaders.push_back(glsl);
+    if (use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, glsl)) request.shaders.push_back(glsl);
     if (a.all == !request.shaders.empty()) throw UsageError("check: name the shaders to check, or --all, or --glsl (one of them)");
     if (a.interpret) {
         // The GLSL of each shader to check, run by the interpreter, in its translation's place.
@@ -240,9 +268,11 @@ int cmd_check(const CheckArgs& a) {
         }
         for (std::string& name : request.shaders) name = interpreted_twin(name);
     }
-    request.scenes = a.scenes;
+    request.scenes.assign(a.scenes.begin(), a.scenes.end());
+    request.width = a.width, request.height = a.height;
     request.output = a.output;
     request.jobs = a.jobs;
+    if (!a.memory_limit.empty()) request.memory_limit = memory_limit(a.memory_limit);
     request.rules.clear();
     for (const std::string& rule : a.rules) {
         if (rule == "fine") request.rules.push_back(CheckRule::Fine);
@@ -252,33 +282,75 @@ int cmd_check(const CheckArgs& a) {
     return run_check(request);
 }
 
+// "K/N" with 1 <= K <= N <= kSuiteShards, nothing else (no wrapping: 4294967297 is not 1).
+bool parse_shard(const std::string& text, int& k, int& n) {
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos) return false;
+    auto number = [](std::string_view t, int& v) {
+        const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+        return !t.empty() && ec == std::errc() && end == t.data() + t.size();
+    };
+    return number(std::string_view(text).substr(0, slash), k) && number(std::string_view(text).substr(slash + 1), n) &&
+           k >= 1 && k <= n && n <= kSuiteShards;
+}
+
 int cmd_test(const TestArgs& a) {
-    std::vector<fs::path> inputs;  // the suite or the fragments, and what a link among them points to
-    for (const std::string& input : a.inputs) {
-        std::error_code ec;
-        inputs.insert(inputs.end(), {resolved(input), fs::weakly_canonical(input, ec)});
-    }
-    if (!a.junit.empty()) check_output(a.junit, inputs, "--junit");
-    if (!a.report.empty()) check_output(a.report, inputs, "--report");
+    const std::uint64_t memory = a.memory_limit.empty() ? 0 : memory_limit(a.memory_limit);
+    // What no report may be written over: the suite or fragments, what the suite reads, and every
+    // file a case reads or writes (expected images, a failure's actual and difference images).
+    InputFiles taken;
+    for (const std::string& input : a.inputs) taken.add(input);
+    auto take_case_files = [&](const fs::path& expected, const fs::path& actual, const fs::path& diff) {
+        for (const fs::path* f : {&expected, &actual, &diff}) {
+            if (!f->empty()) taken.add(*f);
+        }
+    };
+    // The reports, each checked against those and against the reports before it.
+    auto check_reports = [&](const std::vector<fs::path>& html) {
+        InputFiles reports;
+        auto check = [&](const fs::path& file, const char* option, Streams streams) {
+            check_output(file, taken, option, streams);
+            if (output_place(file, streams) == OutputPlace::File && reports.contains(file)) {
+                throw UsageError(std::string(option) + " " + file.string() +
+                                 ": another report of this run is written there");
+            }
+            reports.add(file);
+        };
+        if (!a.junit.empty()) check(a.junit, "--junit", Streams::Allowed);
+        if (!a.report.empty()) check(a.report, "--report", Streams::Allowed);
+        if (std::error_code ec; !a.html.empty() && fs::exists(a.html, ec) && !fs::is_directory(a.html, ec)) {
+            throw UsageError("--html " + a.html + ": is not a folder");
+        }
+        for (const fs::path& file : html) check(file, "--html", Streams::Refused);
+    };
     SuiteRun run;
     if (a.merge) {
         if (a.update || !a.shard.empty() || !a.report.empty() || a.jobs) throw UsageError("--merge: only with --junit and --html");
-        run = merge_fragments({a.inputs.begin(), a.inputs.end()});
+        MergeOptions options;
+        options.reads_images = !a.html.empty();
+        options.allow_outside = a.allow_outside;
+        options.memory_limit = memory;
+        run = merge_fragments({a.inputs.begin(), a.inputs.end()}, options);
+        for (const CaseResult& r : run.results) take_case_files(r.expected, r.actual, r.diff);
+        check_reports(a.html.empty() ? std::vector<fs::path>{} : html_files(run, a.html));
     } else {
         if (a.inputs.size() != 1) throw UsageError("test: one suite file (or --merge FRAGMENT...)");
         SuiteRequest request;
-        request.suite = a.inputs[0];
         request.update = a.update;
         request.jobs = a.jobs;
-        if (!a.shard.empty()) {
-            int k = 0, n = 0;
-            char slash = 0, rest = 0;
-            if (std::sscanf(a.shard.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' || n < 1 || k < 1 || k > n || n > 100000) {
-                throw UsageError("--shard: expected K/N with 1 <= K <= N, got '" + a.shard + "'");
-            }
-            request.shard = k, request.shards = n;
+        request.load.allow_outside = a.allow_outside;
+        request.load.memory_limit = memory;
+        if (!a.shard.empty() && !parse_shard(a.shard, request.shard, request.shards)) {
+            throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kSuiteShards) + ", got '" +
+                             a.shard + "'");
         }
-        run = run_suite(request);
+        Suite suite = load_suite(a.inputs[0], request.load);
+        add_scene_inputs(suite, request.load);
+        for (const std::string& input : a.inputs) suite.inputs.add(input);
+        taken = suite.inputs;
+        for (const SuiteCase& c : suite.cases) take_case_files(c.expected, c.actual, c.diff);
+        check_reports(a.html.empty() ? std::vector<fs::path>{} : html_files(suite, a.html));
+        run = run_suite(suite, request);
         if (!a.report.empty()) write_fragment(run, a.report);
     }
     if (!a.junit.empty()) write_junit(run, a.junit);
@@ -324,13 +396,23 @@ int main(int argc, char** argv) {
     add_volume_options(*volume_cmd, volume);
     GalleryArgs gallery;
     CLI::App* gallery_cmd = app.add_subcommand(
-        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (seed)");
+        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (source)");
     add_gallery_options(*gallery_cmd, gallery);
     BakeArgs bake;
     CLI::App* bake_cmd = app.add_subcommand(
         "bake", "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
                 "mesh drawn with the baked texture");
     add_bake_options(*bake_cmd, bake);
+    StudyArgs study;
+    CLI::App* study_cmd = app.add_subcommand(
+        "study", "measure a shader's error against its run time under every derivative, anti-aliasing\n"
+                 "and precision mode, on the scene's camera and generated views; writes CSV and a report");
+    add_study_options(*study_cmd, study);
+    TranslateArgs translate;
+    CLI::App* translate_cmd = app.add_subcommand(
+        "translate", "write a GLSL shader as a C++ translation to read, edit and build as a plugin (with a\n"
+                     "CMakeLists.txt that builds it against the installed quadshade)");
+    add_translate_options(*translate_cmd, translate);
     ShaderTestArgs shader_test;
     CLI::App* shader_test_cmd = app.add_subcommand(
         "shader-test", "run piglit's .shader_test files with quadshade as the GL driver: a line per test, a\n"
@@ -353,8 +435,11 @@ int main(int argc, char** argv) {
                                                   : volume_cmd->parsed() ? volume.plugins
                                                   : gallery_cmd->parsed() ? gallery.plugins
                                                   : bake_cmd->parsed()   ? bake.plugins
+                                                  : study_cmd->parsed()  ? study.plugins
                                                                          : shader_plugins;
-        for (const std::string& plugin : plugins) load_plugin(plugin);
+        for (const std::string& plugin : plugins) {
+            for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+        }
         if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
         if (compare_cmd->parsed()) return cmd_compare(compare);
         if (check_cmd->parsed()) return cmd_check(check);
@@ -362,6 +447,8 @@ int main(int argc, char** argv) {
         if (volume_cmd->parsed()) return cmd_bake_volume(volume);
         if (gallery_cmd->parsed()) return cmd_gallery(gallery);
         if (bake_cmd->parsed()) return cmd_bake(bake);
+        if (study_cmd->parsed()) return cmd_study(study);
+        if (translate_cmd->parsed()) return cmd_translate(translate);
         if (shader_test_cmd->parsed()) return cmd_shader_test(shader_test);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
@@ -369,6 +456,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const UniformOptionError& e) {  // a bad --uniform, or one no drawn shader takes
+        std::fprintf(stderr, "quadshade: %s\n", e.what());
+        return kExitUsage;
+    } catch (const CameraOptionError& e) {  // a --camera the scene does not have
         std::fprintf(stderr, "quadshade: %s\n", e.what());
         return kExitUsage;
     } catch (const UnsupportedRequest& e) {  // options no backend honours together

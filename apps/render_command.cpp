@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "render/plugins.h"
 #include "render/undefined_mask.h"
 #include "scenes/image_io.h"
+#include "scenes/scene_files.h"
 #include "scenes/uniforms.h"
 
 namespace qs::app {
@@ -38,13 +40,19 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
            "--size", [&r](const std::vector<int>& v) { r.width = v[0], r.height = v[1]; },
            "image size (default: the scene's, e.g. 1264x400 for Figure 1.1)")
         ->delimiter('x')->expected(2)->check(CLI::Range(1, 1 << 15))->option_text("WxH");
-    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")->check(kFinite)->option_text("T");
+    cmd.add_option("--time", r.time, "the `time` uniform and the animations' time, in seconds (default: the scene's)")
+        ->check(kFinite)
+        ->option_text("T");
     cmd.add_option("--frames", a.frames, "render frames A..B (inclusive) at time = frame / fps")
         ->delimiter(':')->check(CLI::Range(0, 1000000))->option_text("A:B");
     cmd.add_option("--fps", a.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)->option_text("N");
     cmd.add_option("--shader", r.shader_override, "draw every object with this catalogue shader")->option_text("NAME");
-    add_glsl_options(cmd, a.glsl, a.vertex_glsl);
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
+    cmd.add_option("--camera", a.load.camera,
+                   "the camera to render from: a camera node's or camera's name, or an\n"
+                   "index into the file's cameras[] (default: the first camera node)")
+        ->option_text("NAME|INDEX");
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--uniform", a.uniforms,
                    "a shader's own uniform, for every object whose shader declares it\n"
@@ -153,13 +161,22 @@ bool writes_in_bands(const fs::path& file) {
     return ext == ".png" || ext == ".exr" || ext == ".tif" || ext == ".tiff";
 }
 
-// What a render of the whole frame, or of bands of it, needs beside the loaded scene.
-std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs& a, std::uint64_t limit) {
+struct RenderPlan {
+    std::vector<RowBand> bands;
+    std::uint64_t peak_bytes = 0;  // the most the render holds at once, by the plan
+};
+
+// The bands a render of the whole frame, or of bands of it, is made in, within `limit` beside
+// what the render holds throughout (the scene, its textures, kRenderOverheadBytes), and the
+// render's planned peak.
+RenderPlan plan_render(const SceneRenderer& renderer, const RenderArgs& a, std::uint64_t limit) {
     const int w = renderer.width();
+    const SceneRenderer::HeldBytes held = renderer.held_bytes();
     MemoryPlanInput in;
     in.height = renderer.height();
     in.pairing = a.request.shading.pairing;
     in.limit = limit;
+    in.held = kRenderOverheadBytes + held.scene + held.textures;
     in.can_band = writes_in_bands(a.output) && (a.mask_output.empty() || writes_in_bands(a.mask_output));
     in.bytes_for_rows = [&](int rows) {
         std::uint64_t bytes = renderer.frame_bytes(rows) + ImageWriter::conversion_bytes(a.output, w, rows, a.alpha);
@@ -169,7 +186,12 @@ std::vector<RowBand> plan_render(const SceneRenderer& renderer, const RenderArgs
         }
         return bytes;
     };
-    return plan_bands(in);
+    RenderPlan plan{plan_bands(in)};
+    int rows = 0;
+    for (const RowBand& b : plan.bands) rows = std::max(rows, b.end - b.begin);
+    // Loading a texture held its decoding beside the scene; the frames come after.
+    plan.peak_bytes = in.held + std::max(held.texture_loading, in.bytes_for_rows(rows));
+    return plan;
 }
 
 struct FrameTotals {
@@ -235,12 +257,12 @@ int cmd_render(RenderArgs& a) {
     FrameRequest& req = a.request;
     if (a.animated() && a.frames.second < a.frames.first) throw UsageError("--frames: B must not be less than A");
     req.shading.check_undefined = !a.mask_output.empty();
-    if (req.shading.check_undefined && resolved(a.mask_output) == resolved(a.output)) {
+    if (req.shading.check_undefined && !a.animated() && resolved(a.mask_output) == resolved(a.output)) {
         throw UsageError("--undefined-mask: the same file as -o");
     }
     refuse_unsupported(a);
     for (const std::string& u : a.uniforms) req.uniforms.push_back(parse_uniform_option(u));
-    const std::uint64_t limit = memory_limit(a.memory_limit);
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
     const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
     auto path_of = [&](const std::string& pattern, int f) {
         try {
@@ -251,18 +273,40 @@ int cmd_render(RenderArgs& a) {
     };
     path_of(a.output, first);  // a bad pattern is refused before anything is read
     if (!a.mask_output.empty()) path_of(a.mask_output, first);
+    if (!a.mask_output.empty() && a.animated()) {
+        // Every frame's name under both patterns: no mask may be written over any frame's image.
+        const std::string image = resolved_pattern(a.output), mask = resolved_pattern(a.mask_output);
+        for (int f = first; f <= last; ++f) {
+            if (const std::optional<int> g = frame_named(mask, frame_path(image, f), first, last)) {
+                throw UsageError("--undefined-mask: frame " + std::to_string(*g) +
+                                 "'s mask would be written over frame " + std::to_string(f) + "'s image " +
+                                 path_of(a.output, f));
+            }
+        }
+    }
 
-    for (const std::string& plugin : a.plugins) load_plugin(plugin);
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, req.shader_override);
+    for (const std::string& plugin : a.plugins) {
+        for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+    }
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, req.shader_override);
+    // The libraries first: the render's memory is measured from here, and its plan is checked
+    // against what is left.
+    load_image_library();
+    load_libraries(req);
+    const std::uint64_t limit = memory_limit(a.memory_limit);
+    reset_peak_resident();
+    const std::uint64_t resident_before = resident_bytes();
     Scene scene = load_scene(a.scene, a.load);
-    for (const Object& o : scene.objects) program_for(scene, o, req.shader_override);  // fail before any work
+    for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
+    check_programs(scene, req.shader_override);  // fail before any work
     for (int f = first; f <= last; ++f) {
         check_output(path_of(a.output, f), scene.inputs, "-o");
         if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");
     }
     SceneRenderer renderer(scene, req);
     for (const std::string& note : renderer.notes()) std::fprintf(stderr, "quadshade: warning: %s\n", note.c_str());
-    const std::vector<RowBand> bands = plan_render(renderer, a, limit);
+    const RenderPlan plan = plan_render(renderer, a, limit);
+    const std::vector<RowBand>& bands = plan.bands;
 
     const bool progress = last > first && ::isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
@@ -294,7 +338,10 @@ int cmd_render(RenderArgs& a) {
     } else {
         std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (drawn in order, each pixel's nearest surface comes last)", stderr);
     }
-    std::fputc('\n', stderr);
+    const std::uint64_t peak = peak_resident_bytes();
+    std::fprintf(stderr, ", peak memory %s (planned %s)\n",
+                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
+                 byte_size_text(plan.peak_bytes).c_str());
     warn_loop_limit(glsl);
     if (!a.mask_output.empty()) {
         std::fprintf(stderr,

@@ -22,6 +22,7 @@ struct RenderArgs {
     std::string memory_limit;  // empty: what the system has available
     std::vector<std::string> plugins;
     std::string glsl, vertex_glsl;  // --glsl FRAG, --vert VERT
+    bool compile_glsl = false;      // --compile
     std::vector<std::string> uniforms;  // --uniform NAME=VALUE, read by parse_uniform_option
     std::vector<std::string> raster_only;  // the rasterizer's own options given (note_raster_only)
     bool animated() const { return frames.first >= 0; }

@@ -1,14 +1,17 @@
 // The reports of a golden-image suite run: the terminal summary, report fragments (one per shard)
 // and their merge, JUnit XML (as CI systems read it) and an HTML page with the images side by side.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/golden_suite.h"
+#include "scenes/scene.h"
+#include "scenes/scene_files.h"
 
 namespace qs {
 
@@ -17,7 +20,8 @@ using nlohmann::json;
 
 namespace {
 
-constexpr const char* kFragmentFormat = "quadshade-test-fragment/1";
+// Version 2: image paths relative to the fragment's own folder (absolute when it was streamed).
+constexpr const char* kFragmentFormat = "quadshade-test-fragment/2";
 
 std::size_t count(const SuiteRun& run, CaseStatus s) {
     return std::size_t(std::count_if(run.results.begin(), run.results.end(), [s](const CaseResult& r) { return r.status == s; }));
@@ -45,23 +49,74 @@ std::string escaped(const std::string& s) {
     return out;
 }
 
-// Writes `text` to `file` whole or not at all.
-void write_text(const fs::path& file, const std::string& text) {
-    if (!file.parent_path().empty()) fs::create_directories(file.parent_path());
-    const fs::path temporary = file.parent_path() / ("." + file.filename().string() + ".partial");
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << text;
-        if (!out.flush()) throw std::runtime_error(file.string() + ": cannot be written");
-    }
-    fs::rename(temporary, file);
+// A report: written whole by output_file.h's rule (its folder made if missing), or streamed
+// into a standard stream, FIFO or character device.
+void write_report(const fs::path& file, const std::string& text) {
+    if (output_place(file, Streams::Allowed) == OutputPlace::File)
+        make_output_folder(file.parent_path(), FolderLink::Followed);
+    write_output(file, text, Streams::Allowed);
 }
 
-CaseStatus status_from(const std::string& s, const std::string& file) {
+// A fragment's fields, each checked: its kind, its range, no control character in a string (a
+// NUL would cut the names and messages made of it); errors name the field.
+struct FragmentReader {
+    std::string file;
+    fs::path folder;  // where its relative paths lead from
+    const MergeOptions& options;
+
+    [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+        throw std::runtime_error(file + ": " + field + ": " + what);
+    }
+    const json& at(const json& object, const char* key, const std::string& field) const {
+        if (!object.is_object()) fail(field, "expected an object");
+        const auto it = object.find(key);
+        if (it == object.end()) fail(field + "." + key, "missing");
+        return *it;
+    }
+    long long integer(const json& object, const char* key, const std::string& field, long long lo, long long hi) const {
+        const json& v = at(object, key, field);
+        const std::string f = field.empty() ? key : field + "." + key;
+        if (!v.is_number_integer()) fail(f, "expected a whole number");
+        if (v.is_number_unsigned() ? v.get<unsigned long long>() > (unsigned long long)hi
+                                   : v.get<long long>() < lo || v.get<long long>() > hi) {
+            fail(f, "expected a whole number within " + std::to_string(lo) + ".." + std::to_string(hi));
+        }
+        return v.get<long long>();
+    }
+    std::string text(const json& object, const char* key, const std::string& field, bool lines = false) const {
+        const json& v = at(object, key, field);
+        const std::string f = field.empty() ? key : field + "." + key;
+        if (!v.is_string()) fail(f, "expected a string");
+        std::string s = v.get<std::string>();
+        for (const char c : s) {
+            if (((unsigned char)c < 0x20 && !(lines && (c == '\n' || c == '\t'))) || c == 0x7f) {
+                fail(f, "holds a control character (such as NUL)");
+            }
+        }
+        return s;
+    }
+    // An image's path: relative to the fragment's folder; inside it when the images are read,
+    // unless allowed.
+    fs::path image(const json& object, const char* key, const std::string& field) const {
+        const std::string s = text(object, key, field);
+        if (s.empty()) return {};
+        if (options.reads_images) {
+            try {
+                return resolve_scene_uri(file, s, {options.allow_outside}, "report fragment");
+            } catch (const SceneError& e) {
+                fail(field + "." + key, e.what());
+            }
+        }
+        const fs::path p(s);
+        return p.is_absolute() ? p : (folder / p).lexically_normal();
+    }
+};
+
+CaseStatus status_from(const std::string& s, const FragmentReader& in, const std::string& field) {
     for (CaseStatus c : {CaseStatus::Pass, CaseStatus::Warn, CaseStatus::Fail, CaseStatus::Updated}) {
         if (s == status_name(c)) return c;
     }
-    throw std::runtime_error(file + ": results[].status: unknown status '" + s + "'");
+    in.fail(field, "unknown status '" + s + "' (PASS, WARN, FAIL, UPDATED)");
 }
 
 }  // namespace
@@ -96,66 +151,122 @@ int summarize(const SuiteRun& run) {
 }
 
 void write_fragment(const SuiteRun& run, const fs::path& file) {
+    // Paths relative to the fragment's folder, so that a results folder moves with its images; a
+    // streamed fragment has no folder of its own and names them in full.
+    const bool streamed = output_place(file, Streams::Allowed) == OutputPlace::Stream;
+    const fs::path home = entry_path(file).parent_path();
+    auto named = [&](const fs::path& p) -> std::string {
+        if (p.empty()) return "";
+        const fs::path full = entry_path(p);
+        return streamed ? full.string() : full.lexically_relative(home).string();
+    };
     json results = json::array();
     for (const CaseResult& r : run.results) {
-        results.push_back({{"name", r.name}, {"index", r.index}, {"status", status_name(r.status)}, {"message", r.message},
-                           {"pixels", r.pixels}, {"failing", r.failing}, {"warning", r.warning}, {"max_steps", r.max_steps},
-                           {"seconds", r.seconds}, {"expected", fs::absolute(r.expected).string()},
-                           {"actual", r.actual.empty() ? "" : fs::absolute(r.actual).string()},
-                           {"diff", r.diff.empty() ? "" : fs::absolute(r.diff).string()}});
+        results.push_back({{"name", r.name},
+                           {"index", r.index},
+                           {"status", status_name(r.status)},
+                           {"message", r.message},
+                           {"pixels", r.pixels},
+                           {"failing", r.failing},
+                           {"warning", r.warning},
+                           {"max_steps", r.max_steps},
+                           {"seconds", r.seconds},
+                           {"expected", named(r.expected)},
+                           {"actual", named(r.actual)},
+                           {"diff", named(r.diff)}});
     }
     const json doc = {{"format", kFragmentFormat}, {"suite", run.suite},         {"shard", run.shard},
                       {"shards", run.shards},      {"suite_cases", run.suite_cases}, {"results", results}};
-    write_text(file, doc.dump(1) + "\n");
+    write_report(file, doc.dump(1, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
-SuiteRun merge_fragments(const std::vector<fs::path>& files) {
+SuiteRun parse_fragment(std::string_view text, const fs::path& file, const MergeOptions& options) {
+    const std::string name = file.string();
+    check_json_depth(text, name);
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::exception& e) {
+        throw std::runtime_error(name + ": not a report fragment: " + e.what());
+    }
+    const FragmentReader in{name, file.parent_path(), options};
+    if (!doc.is_object() || !doc.contains("format") || doc["format"] != kFragmentFormat) {
+        in.fail("format", "not " + std::string(kFragmentFormat) + " (a report fragment of this quadshade)");
+    }
+    SuiteRun part;
+    part.suite = in.text(doc, "suite", "");
+    part.shards = int(in.integer(doc, "shards", "", 1, kSuiteShards));
+    part.shard = int(in.integer(doc, "shard", "", 1, part.shards));
+    part.suite_cases = std::size_t(in.integer(doc, "suite_cases", "", 1, (long long)kSuiteCases));
+    const json& results = in.at(doc, "results", "");
+    if (!results.is_array()) in.fail("results", "expected an array");
+    if (results.size() > part.suite_cases)
+        in.fail("results", "more results than the suite's " + std::to_string(part.suite_cases) + " cases");
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const json& j = results[i];
+        const std::string field = "results[" + std::to_string(i) + "]";
+        CaseResult r;
+        r.name = in.text(j, "name", field);
+        if (!is_case_name(r.name)) in.fail(field + ".name", "not a case's name (letters, digits, '-', '_' and '.')");
+        if (!names.insert(r.name).second) in.fail(field + ".name", "'" + r.name + "' is an earlier result's name");
+        r.index = std::size_t(in.integer(j, "index", field, 0, (long long)part.suite_cases - 1));
+        r.status = status_from(in.text(j, "status", field), in, field + ".status");
+        r.message = in.text(j, "message", field, /*lines=*/true);
+        constexpr long long kPixels = 1LL << 32;  // 32768 x 32768 is 2^30
+        r.pixels = in.integer(j, "pixels", field, 0, kPixels);
+        r.failing = in.integer(j, "failing", field, 0, r.pixels);
+        r.warning = in.integer(j, "warning", field, 0, r.pixels);
+        r.max_steps = int(in.integer(j, "max_steps", field, 0, 255));
+        const json& seconds = in.at(j, "seconds", field);
+        if (!seconds.is_number() || !std::isfinite(seconds.get<double>()) || seconds.get<double>() < 0.0) {
+            in.fail(field + ".seconds", "expected a number of seconds");
+        }
+        r.seconds = seconds.get<double>();
+        r.expected = in.image(j, "expected", field);
+        r.actual = in.image(j, "actual", field);
+        r.diff = in.image(j, "diff", field);
+        part.results.push_back(std::move(r));
+    }
+    return part;
+}
+
+SuiteRun merge_fragments(const std::vector<fs::path>& files, const MergeOptions& options) {
     SuiteRun merged;
     std::map<int, std::string> shards_seen;
+    std::map<std::string, std::string> names_seen;  // case name -> the fragment holding it
     for (const fs::path& file : files) {
         const std::string name = file.string();
-        std::ifstream in(file);
-        if (!in) throw std::runtime_error(name + ": cannot be read");
-        json doc;
-        try {
-            doc = json::parse(in);
-            if (doc.value("format", "") != kFragmentFormat) throw std::runtime_error("format: not " + std::string(kFragmentFormat));
-            const std::string suite = doc.at("suite").get<std::string>();
-            const int shard = doc.at("shard").get<int>(), shards = doc.at("shards").get<int>();
-            const std::size_t cases = doc.at("suite_cases").get<std::size_t>();
-            if (shards_seen.empty()) {
-                merged.suite = suite, merged.shards = shards, merged.suite_cases = cases;
-            } else if (suite != merged.suite || shards != merged.shards || cases != merged.suite_cases) {
-                throw std::runtime_error("suite, shards or suite_cases: not those of " + files.front().string());
+        SuiteRun part = parse_fragment(read_suite_json(file, options.memory_limit), file, options);
+        if (shards_seen.empty()) {
+            merged.suite = part.suite, merged.shards = part.shards, merged.suite_cases = part.suite_cases;
+        } else if (part.suite != merged.suite || part.shards != merged.shards ||
+                   part.suite_cases != merged.suite_cases) {
+            throw std::runtime_error(name + ": suite, shards or suite_cases: not those of " + files.front().string());
+        }
+        if (const auto [it, added] = shards_seen.emplace(part.shard, name); !added) {
+            throw std::runtime_error(name + ": shard " + std::to_string(part.shard) + " is also " + it->second);
+        }
+        for (CaseResult& r : part.results) {
+            if (const auto [it, added] = names_seen.emplace(r.name, name); !added) {
+                throw std::runtime_error(name + ": case '" + r.name + "' is also in " + it->second);
             }
-            if (shard < 1 || shard > shards) throw std::runtime_error("shard: " + std::to_string(shard) + " is not within 1.." + std::to_string(shards));
-            if (const auto [it, added] = shards_seen.emplace(shard, name); !added) {
-                throw std::runtime_error("shard " + std::to_string(shard) + " is also " + it->second);
+            if (merged.results.size() == merged.suite_cases) {
+                throw std::runtime_error(name + ": the fragments hold more results than the suite's " +
+                                         std::to_string(merged.suite_cases) + " cases");
             }
-            for (const json& j : doc.at("results")) {
-                CaseResult r;
-                r.name = j.at("name").get<std::string>();
-                r.index = j.at("index").get<std::size_t>();
-                r.status = status_from(j.at("status").get<std::string>(), name);
-                r.message = j.at("message").get<std::string>();
-                r.pixels = j.at("pixels").get<long long>(), r.failing = j.at("failing").get<long long>();
-                r.warning = j.at("warning").get<long long>(), r.max_steps = j.at("max_steps").get<int>();
-                r.seconds = j.at("seconds").get<double>();
-                r.expected = j.at("expected").get<std::string>();
-                r.actual = j.at("actual").get<std::string>(), r.diff = j.at("diff").get<std::string>();
-                merged.results.push_back(std::move(r));
-            }
-        } catch (const json::exception& e) {
-            throw std::runtime_error(name + ": not a report fragment: " + e.what());
-        } catch (const std::runtime_error& e) {
-            throw std::runtime_error(name + ": " + e.what());
+            merged.results.push_back(std::move(r));
         }
     }
     if (int(shards_seen.size()) != merged.shards) {
+        // The first few missing, and how many: a fragment may claim any number of shards.
         std::string missing;
-        for (int k = 1; k <= merged.shards; ++k) {
-            if (!shards_seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+        int listed = 0;
+        for (int k = 1; k <= merged.shards && listed < 10; ++k) {
+            if (!shards_seen.count(k)) missing += (listed++ ? ", " : "") + std::to_string(k);
         }
+        const int absent = merged.shards - int(shards_seen.size());
+        if (absent > listed) missing += " and " + std::to_string(absent - listed) + " more";
         throw std::runtime_error("the fragments lack shard " + missing + " of " + std::to_string(merged.shards));
     }
     merged.shard = 0;  // all of them
@@ -194,17 +305,46 @@ void write_junit(const SuiteRun& run, const fs::path& file) {
         }
     }
     x += "  </testsuite>\n</testsuites>\n";
-    write_text(file, x);
+    write_report(file, x);
+}
+
+namespace {
+
+const char* const kHtmlImages[] = {"expected", "actual", "diff"};
+
+fs::path html_image(const fs::path& folder, const std::string& case_name, const char* what) {
+    return folder / "images" / (case_name + "." + what + ".png");  // case names are file names (is_case_name)
+}
+
+}  // namespace
+
+std::vector<fs::path> html_files(const SuiteRun& run, const fs::path& folder) {
+    std::vector<fs::path> files{folder / "index.html"};
+    for (const CaseResult& r : run.results) {
+        for (const char* what : kHtmlImages) files.push_back(html_image(folder, r.name, what));
+    }
+    return files;
+}
+
+std::vector<fs::path> html_files(const Suite& suite, const fs::path& folder) {
+    std::vector<fs::path> files{folder / "index.html"};
+    for (const SuiteCase& c : suite.cases) {
+        for (const char* what : kHtmlImages) files.push_back(html_image(folder, c.name, what));
+    }
+    return files;
 }
 
 void write_html(const SuiteRun& run, const fs::path& folder) {
-    fs::create_directories(folder / "images");
-    // The images are copied beside the page, so that it stays whole when the run's folder goes.
+    make_output_folder(folder, FolderLink::Followed);
+    // The images are copied beside the page, so that it stays whole when the run's folder goes;
+    // into a folder of the page's own (a link planted there is refused, never followed).
+    make_output_folder(folder / "images", FolderLink::Refused);
     auto image = [&](const fs::path& file, const CaseResult& r, const char* what) -> std::string {
         std::error_code ec;
         if (file.empty() || !fs::exists(file, ec)) return "<td class=\"none\">-</td>";
-        const std::string name = r.name + "." + what + ".png";
-        fs::copy_file(file, folder / "images" / name, fs::copy_options::overwrite_existing);
+        const fs::path copy = html_image(folder, r.name, what);
+        copy_to_output(file, copy);
+        const std::string name = copy.filename().string();
         return "<td><a href=\"images/" + escaped(name) + "\"><img src=\"images/" + escaped(name) + "\" alt=\"" + what + "\"></a></td>";
     };
     const std::size_t failed = count(run, CaseStatus::Fail);
@@ -227,7 +367,7 @@ void write_html(const SuiteRun& run, const fs::path& folder) {
              image(r.actual, r, "actual") + image(r.diff, r, "diff") + "</tr>\n";
     }
     h += "</table>\n</body></html>\n";
-    write_text(folder / "index.html", h);
+    write_output(folder / "index.html", h);
 }
 
 }  // namespace qs

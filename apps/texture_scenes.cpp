@@ -64,6 +64,7 @@ Scene flat_scene(int width, int height, glm::vec2 lo, glm::vec2 hi, const Textur
     Scene s = base_scene(width, height, square(lo, hi), texture);
     s.camera.kind = Camera::Kind::Orthographic;
     s.camera.xmag = s.camera.ymag = 1.0f;
+    s.camera.stretch = true;
     s.camera.znear = 0.5f, s.camera.zfar = 1.5f;
     s.camera.view = glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -1.0f});
     return s;

@@ -3,10 +3,12 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
 
@@ -62,6 +64,7 @@ ChildOutput run_child(const std::vector<std::string>& argv, const std::vector<st
     posix_spawn_file_actions_adddup2(&actions, out.write, 1);
     posix_spawn_file_actions_adddup2(&actions, err.write, 2);
     std::vector<char*> args = c_strings(argv), envp = c_strings(env);
+    const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
     const int rc = ::posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, args.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
@@ -92,9 +95,14 @@ ChildOutput run_child(const std::vector<std::string>& argv, const std::vector<st
         }
     }
     int wstatus = 0;
-    while (::waitpid(pid, &wstatus, 0) < 0) {
-        if (errno != EINTR) throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
+    rusage usage{};
+    while (::wait4(pid, &wstatus, 0, &usage) < 0) {
+        if (errno != EINTR) throw std::runtime_error(std::string("wait4: ") + std::strerror(errno));
     }
+    result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.cpu_seconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    result.peak_rss_bytes = std::uint64_t(usage.ru_maxrss) * 1024;  // kilobytes
     if (WIFEXITED(wstatus)) result.exit_code = WEXITSTATUS(wstatus);
     if (WIFSIGNALED(wstatus)) result.signal = WTERMSIG(wstatus);
     return result;

@@ -4,6 +4,7 @@
 // bench runs llvmpipe this way, once per vector width: Mesa reads LP_NATIVE_VECTOR_WIDTH once
 // per process.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@ struct ChildOutput {
     int exit_code = -1;     // the child's exit status, or -1 when a signal ended it
     int signal = 0;         // the signal that ended it, 0 when it exited
     std::string out, err;   // everything it wrote to stdout and stderr
+    double wall_seconds = 0.0;         // from before it was started until it was reaped
+    double cpu_seconds = 0.0;          // its user and system time, on every core
+    std::uint64_t peak_rss_bytes = 0;  // its peak resident memory (getrusage's ru_maxrss)
     bool ok() const { return exit_code == 0; }
     // "exit status 3", "killed by signal 6 (Aborted)".
     std::string status() const;

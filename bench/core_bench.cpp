@@ -24,7 +24,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl.h"
 #include "shading/noise/simplex2d.h"
-#include "shading/shaders/seed_patterns.h"
+#include "shading/shaders/integer_and_loop.h"
 #include "raster/rasterizer.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
@@ -153,7 +153,7 @@ void BM_plain_stdx_loop(benchmark::State& state) {
     state.counters["Mfrag/s"] = benchmark::Counter(double(kFragments) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// ---- the integer hash and the loop with break (shading/shaders/seed_patterns.h) ---------------
+// ---- the integer hash and the loop with break (shading/shaders/integer_and_loop.h) ---------------
 // A shader's fragment function over the grid on number type F, as BM_simplex2d does.
 template <class F, class Fragment>
 [[gnu::flatten]] void run_grid(benchmark::State& state, Fragment fragment) {
@@ -177,8 +177,8 @@ template <class F>
 void BM_pcg_value_noise(benchmark::State& state) {
     run_grid<F>(state, [](const vec2<F>& st) {
         const vec2<F> p = st * 16.0f;
-        return 0.5f * shaders::value_noise(p) + 0.25f * shaders::value_noise(p * 2.0f + 17.0f) +
-               0.125f * shaders::value_noise(p * 4.0f + 31.0f) + 0.0625f * shaders::value_noise(p * 8.0f + 47.0f);
+        return 0.5f * noise::value_noise(p) + 0.25f * noise::value_noise(p * 2.0f + 17.0f) +
+               0.125f * noise::value_noise(p * 4.0f + 31.0f) + 0.0625f * noise::value_noise(p * 8.0f + 47.0f);
     });
 }
 

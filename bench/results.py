@@ -5,7 +5,8 @@ usage: bench/results.py BUILD_DIR STUDY_DIR RESULTS_MD
 
 docs/results.md is prose around tables; each table sits between `<!-- results:NAME -->` and
 `<!-- /results -->` and is replaced by what this script makes from:
-  mesa         BUILD_DIR/reference-comparison-{llvmpipe,softpipe}.csv   (ctest: test_reference)
+  mesa         BUILD_DIR/reference-comparison-{llvmpipe,llvmpipe-interpreted,softpipe}.csv
+                                                                        (ctest: test_reference)
   conformance  BUILD_DIR/conformance/SCENE-{llvmpipe,softpipe}.csv      (ctest: test_conformance_*)
   textures     BUILD_DIR/conformance/textures-{llvmpipe,softpipe}.csv   (test_conformance_* "[textures]",
                every case in one process: bench/run-study runs them so)
@@ -14,12 +15,14 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
   throughput, frame
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   scaling      STUDY_DIR/scaling.md                  (quadshade-bench-throughput --scaling)
+  interpreter  STUDY_DIR/interpreter.md              (quadshade-bench-throughput --interpreted)
   guard        STUDY_DIR/compare-builds.md           (bench/compare-builds, run-study --previous);
                a study run without --previous says so in the block
-  error        STUDY_DIR/study.csv                                      (quadshade-bench-error)
+  error        STUDY_DIR/study.csv              (quadshade study --study bench/study.txt)
   bake, bake-seams, bake-normals, bake-lit
                STUDY_DIR/bake.md, bake-seams.md, bake-normals.md, bake-lit.md
                                                                         (quadshade-bench-bake)
+  startup      STUDY_DIR/startup.md                                     (quadshade-bench-startup)
   host         this machine and the date
 Every block but `host` ends with the machine and date it was rewritten on, so that a page whose
 blocks come from different runs says which is which. A block whose input is missing is left as it
@@ -61,13 +64,18 @@ def mesa_table(build):
         return None
     lp = OrderedDict((r["case"], r) for r in read_csv(paths[0]))
     sp = {r["case"]: r for r in read_csv(paths[1])}
+    interpreted_path = os.path.join(build, "reference-comparison-llvmpipe-interpreted.csv")
+    ip = {r["case"]: r for r in read_csv(interpreted_path)} if os.path.exists(interpreted_path) else {}
     out = ["| case | pixels | vs llvmpipe, `fine`: >1/255 · >2/255 · max · coverage | "
+           "its GLSL run by the interpreter vs llvmpipe: >1/255 · >2/255 · max · coverage | "
            "vs softpipe, `coarse-lower` + `right-top` + `separate`: >1/255 · >2/255 · max · coverage |",
-           "|---|---|---|---|"]
+           "|---|---|---|---|---|"]
     for case, r in lp.items():
         s = sp.get(case)
         soft = f"{counts(s)} · {s['coverage_mismatch']}" if s else "-"
-        out.append(f"| {case} | {r['pixels']} | {counts(r)} · {r['coverage_mismatch']} | {soft} |")
+        i = ip.get(case)
+        interpreted = f"{counts(i)} · {i['coverage_mismatch']}" if i else "-"
+        out.append(f"| {case} | {r['pixels']} | {counts(r)} · {r['coverage_mismatch']} | {interpreted} | {soft} |")
     return out
 
 
@@ -178,6 +186,15 @@ def markdown_file(study, name):
         return [l.rstrip() for l in f if l.strip().startswith("|")]
 
 
+def table_and_notes(study, name):
+    """A table with the lines after it that say how it was measured (runs, load)."""
+    path = os.path.join(study, name)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return [l.rstrip() for l in f.read().strip().splitlines()]
+
+
 def pareto_front(rows):
     front = []
     for r in sorted(rows, key=lambda r: (r["ms"], r["rms_vs_truth"])):
@@ -255,12 +272,14 @@ def main():
         "throughput": lambda: markdown_file(study, "throughput.md"),
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
         "scaling": lambda: markdown_file(study, "scaling.md"),
+        "interpreter": lambda: markdown_file(study, "interpreter.md"),
         "guard": lambda: guard_table(study),
         "error": lambda: error_table(study),
         "bake": lambda: markdown_file(study, "bake.md"),
         "bake-seams": lambda: markdown_file(study, "bake-seams.md"),
         "bake-normals": lambda: markdown_file(study, "bake-normals.md"),
         "bake-lit": lambda: markdown_file(study, "bake-lit.md"),
+        "startup": lambda: table_and_notes(study, "startup.md"),
     }
     with open(doc) as f:
         text = f.read()

@@ -40,6 +40,7 @@
 #include "bench/child_process.h"
 #include "bench/peer_report.h"
 #include "reference/gl_renderer.h"
+#include "render/glsl_shaders.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "shading/catalogue.h"
@@ -53,7 +54,7 @@ namespace fs = std::filesystem;
 struct Row {
     const char* shader;
     const char* book_name;
-    int book[4];  // Mfrag/s on NVIDIA 9600M, AMD HD6310, AMD HD4850, NVIDIA GTX260 (the chapter's Table 1.1)
+    int book[4];  // Mfrag/s on NVIDIA 9600M, AMD HD6310, AMD HD4850, NVIDIA GTX260 (Gustavson's Table 1.1)
     bool noise;   // a noise row of the scaling table
 };
 const Row kRows[] = {
@@ -78,6 +79,7 @@ struct Options {
     std::vector<std::string> shaders;  // these rows only, and no Figure 1.1 frame
     std::vector<int> widths = {256, 512};
     bool scaling = false;
+    bool interpreted = false;
     std::vector<int> scaling_threads = {1, 2, 8};
     int rounds = 3;
     // A peer child's job (--peer-only): one llvmpipe row, or the Figure 1.1 frame.
@@ -587,6 +589,78 @@ int run_scaling(const Options& o) {
     return 0;
 }
 
+
+// The immediate way against the translations: each Table 1.1 row's GLSL run by the interpreter
+// (render/glsl_shaders.h) beside its hand translation, the two in turn within each round, with
+// the time the front end took to compile the GLSL. The goal: the interpreter within 4x of the
+// translation's frame time by the median over the rows.
+int run_interpreted(const Options& o) {
+    struct Series {
+        const Row* row;
+        int size;
+        std::string twin;
+        double compile_ms = 0;
+        std::size_t lines = 0;
+        std::vector<double> hand, interpreted;  // per round: median ms
+    };
+    std::vector<Series> series;
+    for (int size : o.sizes) {
+        for (const Row& row : kRows) {
+            if (!o.shaders.empty() && std::find(o.shaders.begin(), o.shaders.end(), row.shader) == o.shaders.end()) continue;
+            Series s{&row, size, "", 0, 0, {}, {}};
+            const auto t0 = Clock::now();
+            s.twin = qs::interpreted_twin(row.shader);
+            s.compile_ms = ms_since(t0);
+            const std::string text = qs::glsl_source(*qs::find_program(row.shader), false);
+            s.lines = std::size_t(std::count(text.begin(), text.end(), '\n'));
+            series.push_back(std::move(s));
+        }
+    }
+    qs::Scene scene = qs::load_scene(kPlane);
+    for (int round = 0; round < o.rounds; ++round) {
+        for (Series& s : series) {
+            std::fprintf(stderr, "\rround %d/%d %-16s %4d ...", round + 1, o.rounds, s.row->shader, s.size);
+            auto time_shader = [&](const std::string& shader) {
+                qs::FrameRequest req;
+                req.width = req.height = s.size;
+                req.shader_override = shader;
+                req.shading.threads = o.threads;
+                qs::SceneRenderer renderer(scene, req);
+                qs::Framebuffer fb;
+                return time_frames(o.repeat, [&] { renderer.render_into(fb, std::nullopt); }).median;
+            };
+            // Alternating which goes first, so that neither always meets a warmer machine.
+            if (round % 2 == 0) {
+                s.hand.push_back(time_shader(s.row->shader));
+                s.interpreted.push_back(time_shader(s.twin));
+            } else {
+                s.interpreted.push_back(time_shader(s.twin));
+                s.hand.push_back(time_shader(s.row->shader));
+            }
+        }
+    }
+    std::fprintf(stderr, "\r%50s\r", "");
+    std::ostringstream md;
+    md << "| shader | size | GLSL lines | front end ms | translation ms | interpreter ms | interpreter / translation |\n"
+          "|---|---|---|---|---|---|---|\n";
+    std::vector<double> row_ratios;
+    for (const Series& s : series) {
+        std::vector<double> ratio;
+        for (int r = 0; r < o.rounds; ++r) ratio.push_back(s.interpreted[std::size_t(r)] / s.hand[std::size_t(r)]);
+        const Stats h = stats_of(s.hand), i = stats_of(s.interpreted), q = stats_of(ratio);
+        row_ratios.push_back(q.median);
+        md << format("| %s | %d | %zu | %.1f | %.2f (%.2f-%.2f) | %.2f (%.2f-%.2f) | %.2fx (%.2f-%.2f) |\n", s.row->book_name, s.size,
+                     s.lines, s.compile_ms, h.median, h.min, h.max, i.median, i.min, i.max, q.median, q.min, q.max);
+    }
+    const double median_ratio = stats_of(row_ratios).median;
+    md << format("\nBy the median over the rows: the interpreter takes %.2fx the translation's time (goal <= 4).\n", median_ratio);
+    std::ofstream(fs::path(o.out) / "interpreter.md") << md.str();
+    std::printf("Each Table 1.1 row's GLSL run by the interpreter beside its translation, %d threads, ms per frame: median over %d "
+                "rounds of each round's median of %d frames (min-max over rounds)\n\n%s",
+                o.threads, o.rounds, o.repeat, md.str().c_str());
+    return median_ratio <= 4.0 ? 0 : 3;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -603,6 +677,8 @@ int main(int argc, char** argv) {
         ->delimiter(',')->check(CLI::IsMember({128, 256, 512}));
     app.add_option("--out", o.out, "folder for the tables and CSV");
     app.add_flag("--scaling", o.scaling, "quadshade alone on the noise rows at --scaling-threads (writes scaling.md)");
+    app.add_flag("--interpreted", o.interpreted, "each row's GLSL run by the interpreter beside its translation (writes "
+                                                 "interpreter.md; exit 3 past the goal)");
     app.add_option("--scaling-threads", o.scaling_threads, "thread counts of --scaling, the first the baseline")
         ->delimiter(',')->check(CLI::Range(1, 256));
     app.add_option("--rounds", o.rounds, "rounds, each measuring every row in turn (median and min-max over them)")
@@ -622,7 +698,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade-bench-throughput: %s (--help lists the options)\n", e.what());
         return 2;
     }
-    if (o.scaling && app.count("--sizes") == 0) o.sizes = {1024};
+    if ((o.scaling || o.interpreted) && app.count("--sizes") == 0) o.sizes = {1024};
+    if (o.scaling && o.interpreted) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling and --interpreted are two different runs\n");
+        return 2;
+    }
 
     const bool peer_job = o.vector_width || o.size || !o.shader.empty() || o.figure || !o.glsl.empty();
     if (o.peer_only != peer_job || (o.peer_only && (!o.vector_width || o.glsl.empty() ||
@@ -639,6 +719,10 @@ int main(int argc, char** argv) {
                                  "--scaling-threads)\n", opt);
             return 2;
         }
+    }
+    if (o.interpreted && app.count("--widths") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --widths is not an option of --interpreted (quadshade alone)\n");
+        return 2;
     }
     if (!o.scaling && app.count("--scaling-threads") > 0) {
         std::fprintf(stderr, "quadshade-bench-throughput: --scaling-threads only with --scaling\n");
@@ -667,6 +751,7 @@ int main(int argc, char** argv) {
         if (o.peer_only) return run_peer_child(o);
         fs::create_directories(o.out);
         if (o.scaling) return run_scaling(o);
+        if (o.interpreted) return run_interpreted(o);
         qs::export_glsl(fs::path(o.out) / "glsl");  // what llvmpipe compiles
         return run_throughput(o);
     } catch (const std::exception& e) {

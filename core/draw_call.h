@@ -30,6 +30,10 @@ struct DrawCall {
     // even if the shader takes no derivatives of its own, as a GL driver does for texture2D.
     bool texture_lod = false;
     FaceCulling culling = {};  // none by default: a bake draws every triangle
+    // GL's blending with glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) into the float buffer,
+    // every channel alpha included: src * a + dst * (1 - a), each product rounded (llvmpipe's
+    // arithmetic, measured), and no depth writes (the depth test still applies).
+    bool blend = false;
     // Bit i: keep only what has VertexOut::clip_distances[i] >= 0 (GL_CLIP_PLANEi enabled).
     unsigned clip_distances = 0;
 };

@@ -1,16 +1,8 @@
 #pragma once
 // The names by which a shader's own attributes and matrix uniforms are bound to what a scene
-// provides, so that GLSL written for other engines runs without quadshade's built-in names:
-//
-//   attribute (vertex input)   scene data (glTF)        uniform (mat4, mat3)   matrix
-//   position                   POSITION                 mvp,                   projection * view * model
-//   normal                     NORMAL                   modelViewProjection
-//   texcoord, texcoord0, uv    TEXCOORD_0               modelView              view * model
-//   texcoord1, uv1             TEXCOORD_1               projection             projection
-//   color                      COLOR_0                  normalMatrix (mat3)    the normal matrix
-//
-// gl_Vertex, gl_Normal, gl_Color, gl_MultiTexCoord0/1 and the gl_*Matrix uniforms are the same
-// data under GL's names. Any other attribute is refused by name.
+// provides: scenes/shader_inputs.h's, the same for the reference and every renderer. gl_Vertex,
+// gl_Normal, gl_Color, gl_MultiTexCoord0/1 and the gl_*Matrix uniforms are the same data under
+// GL's names. Any other attribute is refused by name.
 
 #include <optional>
 #include <string>

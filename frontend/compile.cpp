@@ -11,10 +11,12 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/binding_names.h"
+#include "frontend/bounded_preprocess.h"
 #include "frontend/float_literals.h"
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
 #include "frontend/lowering.h"
+#include "frontend/parse_stage.h"
 
 namespace qs::frontend {
 
@@ -74,16 +76,13 @@ std::string reword(const std::string& log, std::vector<std::string>* warnings) {
     return errors;
 }
 
-struct ParsedStage {
-    std::string text;  // what glslang parsed (kept alive with the shader)
-    std::unique_ptr<glslang::TShader> shader;
-    int version = 110;
-};
+}  // namespace
 
 ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings) {
     initialise_glslang();
     ParsedStage p;
     p.text = float_literals_as_float(join_continued_lines(source.text));
+    check_macro_expansion(source.file, p.text, stage == EShLangFragment);
     p.shader = std::make_unique<glslang::TShader>(stage);
     const char* text = p.text.c_str();
     const int length = int(p.text.size());
@@ -100,6 +99,8 @@ ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::
     if (glslang::TIntermediate* ast = p.shader->getIntermediate()) p.version = ast->getVersion();
     return p;
 }
+
+namespace {
 
 // The GLSL type of a varying, for the vertex shader written for a fragment shader.
 std::string glsl_type(int components) { return components == 1 ? "float" : "vec" + std::to_string(components); }

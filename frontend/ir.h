@@ -148,8 +148,19 @@ enum class Source : std::uint8_t {
 // The vertex inputs quadshade's scenes provide (VertexIn, shading/program.h).
 enum class Attribute : std::uint8_t { Position, Normal, Color, Texcoord0, Texcoord1 };
 
-// The matrices the renderer knows, as built-in or mapped uniforms.
-enum class TransformUniform : std::uint8_t { ModelViewProjection, ModelView, Projection, Normal };
+// The matrices the renderer knows: GL's built-in ones as the reference sets them (the scene's
+// model-view-projection as the projection, the model-view the identity), and the scene's own
+// transforms a shader declares by name (scenes/shader_inputs.h).
+enum class TransformUniform : std::uint8_t {
+    ModelViewProjection,  // gl_ModelViewProjectionMatrix, mvp
+    ModelView,            // gl_ModelViewMatrix
+    Projection,           // gl_ProjectionMatrix
+    Normal,               // gl_NormalMatrix
+    Model,                // model
+    View,                 // view
+    SceneProjection,      // projection
+    SceneNormal,          // normalMatrix
+};
 
 struct Binding {
     Source source;

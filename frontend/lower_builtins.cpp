@@ -331,7 +331,25 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         }
         default: break;
     }
-    refuse(node, "this texture function is not supported (supported: texture, texture2D, texture3D with or without a "
+    const char* name = "this texture function";
+    switch (op) {
+        case glslang::EOpTextureGrad: name = "textureGrad"; break;
+        case glslang::EOpTextureProjGrad: name = "textureProjGrad"; break;
+        case glslang::EOpTextureOffset: name = "textureOffset"; break;
+        case glslang::EOpTextureProjOffset: name = "textureProjOffset"; break;
+        case glslang::EOpTextureLodOffset: name = "textureLodOffset"; break;
+        case glslang::EOpTextureProjLodOffset: name = "textureProjLodOffset"; break;
+        case glslang::EOpTextureGradOffset: name = "textureGradOffset"; break;
+        case glslang::EOpTextureProjGradOffset: name = "textureProjGradOffset"; break;
+        case glslang::EOpTextureFetchOffset: name = "texelFetchOffset"; break;
+        case glslang::EOpTextureGather: name = "textureGather"; break;
+        case glslang::EOpTextureGatherOffset: name = "textureGatherOffset"; break;
+        case glslang::EOpTextureGatherOffsets: name = "textureGatherOffsets"; break;
+        case glslang::EOpTextureQueryLod: name = "textureQueryLod"; break;
+        case glslang::EOpTextureQueryLevels: name = "textureQueryLevels"; break;
+        default: break;
+    }
+    refuse(node, std::string(name) + " is not supported (supported: texture, texture2D, texture3D with or without a "
                  "bias, their Proj and Lod forms, texelFetch, textureSize)");
 }
 

@@ -266,7 +266,7 @@ Place StageLowering::uniform_variable(TIntermSymbol* node) {
         return p;
     }
     if (const std::optional<ir::TransformUniform> t = transform_named(name)) {
-        const int size = *t == ir::TransformUniform::Normal ? 3 : 4;
+        const int size = *t == ir::TransformUniform::SceneNormal ? 3 : 4;
         if (!type.isMatrix() || type.getMatrixCols() != size || type.getMatrixRows() != size || type.isArray()) {
             refuse(node, "uniform '" + name + "' is bound to the scene's " + transform_description(*t) + ": declare it mat" +
                              std::to_string(size));

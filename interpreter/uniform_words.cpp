@@ -6,15 +6,20 @@ namespace qs::interpreter {
 
 namespace {
 
-// Component `index` of a transform as the reference sets GL's matrices: the scene's
-// model-view-projection matrix as the projection, the model-view matrix the identity (and so the
-// normal matrix).
+// Component `index` of a transform. GL's built-in matrices as the reference sets them: the
+// scene's model-view-projection matrix as the projection, the model-view matrix the identity (and
+// so the normal matrix); the scene's own transforms, by name, as they are.
 float transform_component(const Uniforms& u, ir::TransformUniform which, int index) {
+    const int column4 = index / 4, row4 = index % 4, column3 = index / 3, row3 = index % 3;
     switch (which) {
         case ir::TransformUniform::ModelViewProjection:
-        case ir::TransformUniform::Projection: return u.model_view_projection[index / 4][index % 4];
-        case ir::TransformUniform::ModelView: return index / 4 == index % 4 ? 1.0f : 0.0f;
-        case ir::TransformUniform::Normal: return index / 3 == index % 3 ? 1.0f : 0.0f;
+        case ir::TransformUniform::Projection: return u.model_view_projection[column4][row4];
+        case ir::TransformUniform::ModelView: return column4 == row4 ? 1.0f : 0.0f;
+        case ir::TransformUniform::Normal: return column3 == row3 ? 1.0f : 0.0f;
+        case ir::TransformUniform::Model: return u.model[column4][row4];
+        case ir::TransformUniform::View: return u.view[column4][row4];
+        case ir::TransformUniform::SceneProjection: return u.projection[column4][row4];
+        case ir::TransformUniform::SceneNormal: return u.normal_matrix[column3][row3];
     }
     return 0.0f;
 }

@@ -286,6 +286,10 @@ private:
     // Writes every lane of batch h, the block at (bx, by): its colour, and its depth where the
     // frame has a depth buffer.
     [[gnu::always_inline]] void write_whole(int h, int bx, int by) {
+        if (draw_->call->blend) [[unlikely]] {  // each pixel read back and blended
+            for (int i = 0; i < kBatchLanes; ++i) write_lane(h, i, bx + kLaneDx[i], by + kLaneDy[i]);
+            return;
+        }
         const int block = block_base(bx, by) / kBatchLanes;
         const bool final = last_ && !touched_[std::size_t(block)];
         store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined, final ? RowStores::Streamed : RowStores::Cached);
@@ -405,9 +409,15 @@ private:
             touched_[std::size_t(t / kBatchLanes)] = true;
         }
         float* p = fb_.pixel(x, y);
-        for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i];
+        const bool blend = draw_->call->blend;
+        if (blend) {
+            const float a = out_[h].rgba[3][i];
+            for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i] * a + p[c] * (1.0f - a);
+        } else {
+            for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i];
+        }
         if (draw_->mode.check_undefined) *undefined_at(x, y) = out_[h].undefined[i];
-        if (depth_test_) depth_[t] = depth24(in_[h].frag_coord[2][i]);
+        if (depth_test_ && !blend) depth_[t] = depth24(in_[h].frag_coord[2][i]);
         ++written_;
     }
 

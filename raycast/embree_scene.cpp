@@ -1,3 +1,6 @@
+// The one file that includes Embree: EmbreeScene over an Embree device, built into the module
+// libquadshade-embree.so (modules/module_loader.h), whose one exported symbol is
+// quadshade_embree_scene.
 #include "raycast/embree_scene.h"
 
 #include <cmath>
@@ -24,11 +27,9 @@ const char* error_name(RTCError code) {
     return "error";
 }
 
-}  // namespace
-
 // The device and its scene. Embree reports errors through a C callback, which must not throw:
 // it records the first message and the next check() throws it.
-struct EmbreeScene::Device {
+struct Device {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::mutex mutex;
@@ -51,36 +52,49 @@ struct EmbreeScene::Device {
     }
 };
 
-EmbreeScene::EmbreeScene(int packet_width) : device_(std::make_unique<Device>()) {
+class EmbreeDeviceScene final : public EmbreeScene {
+public:
+    explicit EmbreeDeviceScene(int packet_width);
+    std::uint32_t add_mesh(std::span<const glm::vec3> positions,
+                           std::span<const std::array<std::uint32_t, 3>> triangles) override;
+    void commit() override;
+    void intersect(const RayPacket& rays, RayHits& hits) const override;
+
+private:
+    Device device_;
+    std::uint32_t meshes_ = 0;
+    bool committed_ = false;
+    int packet_width_ = 4;
+};
+
+EmbreeDeviceScene::EmbreeDeviceScene(int packet_width) {
     if (packet_width != 0 && packet_width != 4 && packet_width != 8 && packet_width != 16) {
         throw std::invalid_argument("EmbreeScene: packets of " + std::to_string(packet_width) + " rays (4, 8 or 16)");
     }
-    device_->device = rtcNewDevice(nullptr);
-    if (!device_->device) {
+    device_.device = rtcNewDevice(nullptr);
+    if (!device_.device) {
         throw RayCastError(std::string("Embree: cannot create a device: ") + error_name(rtcGetDeviceError(nullptr)));
     }
-    rtcSetDeviceErrorFunction(device_->device, &Device::on_error, device_.get());
+    rtcSetDeviceErrorFunction(device_.device, &Device::on_error, &device_);
     // By default the widest packet this CPU traces natively: a wider one is split behind the
     // call, at about twice the cost (docs/design.md, Ray caster).
-    auto native = [&](RTCDeviceProperty p) { return rtcGetDeviceProperty(device_->device, p) != 0; };
+    auto native = [&](RTCDeviceProperty p) { return rtcGetDeviceProperty(device_.device, p) != 0; };
     packet_width_ = packet_width != 0                                    ? packet_width
                     : native(RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) ? 16
                     : native(RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)  ? 8
                                                                          : 4;
-    device_->scene = rtcNewScene(device_->device);
+    device_.scene = rtcNewScene(device_.device);
     // Robust: no shortcuts that trade accuracy for speed, so that rays through shared edges and
     // vertices never fall between two triangles.
-    rtcSetSceneFlags(device_->scene, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(device_->scene, RTC_BUILD_QUALITY_HIGH);
-    device_->check("scene creation");
+    rtcSetSceneFlags(device_.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(device_.scene, RTC_BUILD_QUALITY_HIGH);
+    device_.check("scene creation");
 }
 
-EmbreeScene::~EmbreeScene() = default;
-
-std::uint32_t EmbreeScene::add_mesh(std::span<const glm::vec3> positions,
-                                    std::span<const std::array<std::uint32_t, 3>> triangles) {
+std::uint32_t EmbreeDeviceScene::add_mesh(std::span<const glm::vec3> positions,
+                                          std::span<const std::array<std::uint32_t, 3>> triangles) {
     if (committed_) throw std::logic_error("EmbreeScene::add_mesh after commit");
-    RTCGeometry g = rtcNewGeometry(device_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry g = rtcNewGeometry(device_.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree may read 16 bytes at the last vertex: one float3 of padding.
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), positions.size() + 1));
@@ -92,20 +106,18 @@ std::uint32_t EmbreeScene::add_mesh(std::span<const glm::vec3> positions,
         }
         if (!triangles.empty()) std::memcpy(t, triangles.data(), triangles.size_bytes());
         rtcCommitGeometry(g);
-        rtcAttachGeometryByID(device_->scene, g, meshes_);
+        rtcAttachGeometryByID(device_.scene, g, meshes_);
     }
     rtcReleaseGeometry(g);
-    device_->check("mesh");
+    device_.check("mesh");
     return meshes_++;
 }
 
-void EmbreeScene::commit() {
-    rtcCommitScene(device_->scene);
-    device_->check("BVH build");
+void EmbreeDeviceScene::commit() {
+    rtcCommitScene(device_.scene);
+    device_.check("BVH build");
     committed_ = true;
 }
-
-namespace {
 
 // Embree's ray packets of K rays, and the call that traces one.
 template <int K>
@@ -171,15 +183,19 @@ void trace(RTCScene scene, const RayPacket& rays, RayHits& hits) {
     }
 }
 
-}  // namespace
-
-void EmbreeScene::intersect(const RayPacket& rays, RayHits& hits) const {
+void EmbreeDeviceScene::intersect(const RayPacket& rays, RayHits& hits) const {
     static_assert(kBatchLanes % 16 == 0);
     switch (packet_width_) {
-        case 16: return trace<16>(device_->scene, rays, hits);
-        case 8: return trace<8>(device_->scene, rays, hits);
-        default: return trace<4>(device_->scene, rays, hits);
+        case 16: return trace<16>(device_.scene, rays, hits);
+        case 8: return trace<8>(device_.scene, rays, hits);
+        default: return trace<4>(device_.scene, rays, hits);
     }
 }
 
+}  // namespace
+
 }  // namespace qs
+
+extern "C" __attribute__((visibility("default"))) qs::EmbreeScene* quadshade_embree_scene(int packet_width) {
+    return new qs::EmbreeDeviceScene(packet_width);
+}

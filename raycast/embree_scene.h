@@ -1,7 +1,9 @@
 #pragma once
 // Embree 3 behind one small interface: a static scene of triangle meshes and packets of
 // kBatchLanes rays. embree_scene.cpp is the only file that includes Embree; every rtc* call is
-// there, and the device's errors come back as RayCastError.
+// there, and the device's errors come back as RayCastError. It is built into a module of its own
+// (modules/module_loader.h), loaded by the first EmbreeScene::create: a rasterized frame never
+// loads Embree.
 
 #include <array>
 #include <cstdint>
@@ -40,27 +42,22 @@ struct RayHits {
 
 class EmbreeScene {
 public:
+    // Loads the Embree module on the first call (RayCastError naming Embree when it cannot).
     // packet_width: rays per Embree call, 4, 8 or 16; 0 for the widest the CPU traces natively
     // (a wider packet is split into pieces of that width behind the call, at twice the cost).
-    explicit EmbreeScene(int packet_width = 0);
-    ~EmbreeScene();
-    EmbreeScene(const EmbreeScene&) = delete;
-    EmbreeScene& operator=(const EmbreeScene&) = delete;
+    static std::unique_ptr<EmbreeScene> create(int packet_width = 0);
+    // Loads the Embree module now, as the first create() would.
+    static void load_library();
+    virtual ~EmbreeScene() = default;
 
     // Adds a mesh; its geometry id is the number of meshes added before it. Triangles index
     // `positions`; both are copied.
-    std::uint32_t add_mesh(std::span<const glm::vec3> positions, std::span<const std::array<std::uint32_t, 3>> triangles);
+    virtual std::uint32_t add_mesh(std::span<const glm::vec3> positions,
+                                   std::span<const std::array<std::uint32_t, 3>> triangles) = 0;
     // Builds the BVH; no meshes may be added afterwards.
-    void commit();
+    virtual void commit() = 0;
     // Thread-safe after commit().
-    void intersect(const RayPacket& rays, RayHits& hits) const;
-
-private:
-    struct Device;
-    std::unique_ptr<Device> device_;
-    std::uint32_t meshes_ = 0;
-    bool committed_ = false;
-    int packet_width_ = 4;
+    virtual void intersect(const RayPacket& rays, RayHits& hits) const = 0;
 };
 
 }  // namespace qs

@@ -58,6 +58,10 @@ BlockCoverage::BlockCoverage(int width, int height, int top, int bottom)
     : width_(width), height_(height), top_(top), bottom_(bottom), columns_((width + kBlock - 1) / kBlock),
       rows_((bottom - top + kBlock - 1) / kBlock), blocks_(std::size_t(columns_) * std::size_t(rows_), Block{Rays::Miss, {}}) {}
 
+std::uint64_t BlockCoverage::bytes(int width, int rows) {
+    return std::uint64_t((width + kBlock - 1) / kBlock) * std::uint64_t((rows + kBlock - 1) / kBlock + 1) * sizeof(Block);
+}
+
 void BlockCoverage::cover(const TriangleFootprint& f) {
     // Window coordinates, y down the framebuffer's top-down rows: pixel (column, row) has its
     // centre at (column + 0.5, row + 0.5). One pixel of margin for the rounding of the rays' own

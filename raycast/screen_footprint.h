@@ -49,6 +49,9 @@ public:
     // The blocks of framebuffer rows [top, bottom) of a width x height frame, whose block rows
     // start at `top` (a tile's top: TileGrid::y0), none covered.
     BlockCoverage(int width, int height, int top, int bottom);
+    // What the blocks of `rows` framebuffer rows of a frame `width` wide take (one block row more:
+    // a band's top may fall inside a block row).
+    static std::uint64_t bytes(int width, int rows);
     void cover_all() { std::fill(blocks_.begin(), blocks_.end(), Block{Rays::Traced, {}}); }
     // Covers the blocks with a pixel centre that may lie in `f`.
     void cover(const TriangleFootprint& f);

@@ -16,6 +16,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "reference/texture_image.h"
+#include "scenes/object_uniforms.h"
+#include "scenes/shader_inputs.h"
 
 namespace qs {
 
@@ -68,6 +70,21 @@ std::vector<std::pair<std::string, GLenum>> active_uniforms(GLuint p) {
         GLenum type = 0;
         glGetActiveUniform(p, GLuint(i), GLsizei(sizeof uniform), nullptr, &size, &type, uniform);
         r.emplace_back(uniform, type);
+    }
+    return r;
+}
+
+// A linked program's active vertex inputs, as (name, GL type).
+std::vector<std::pair<std::string, GLenum>> active_attributes(GLuint p) {
+    std::vector<std::pair<std::string, GLenum>> r;
+    GLint count = 0;
+    glGetProgramiv(p, GL_ACTIVE_ATTRIBUTES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char attribute[256] = {};
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveAttrib(p, GLuint(i), GLsizei(sizeof attribute), nullptr, &size, &type, attribute);
+        r.emplace_back(attribute, type);
     }
     return r;
 }
@@ -140,13 +157,32 @@ GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& na
     check(p, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, name + ": GLSL does not link");
     glDeleteShader(vs);
     glDeleteShader(fs);
-    // A uniform the reference cannot set: refuse it rather than render something else.
+    // A uniform or an attribute the reference cannot set: refuse it rather than render something else.
+    auto refuse = [&](const std::string& why) {
+        glDeleteProgram(p);
+        throw std::runtime_error(name + ": " + why);
+    };
     for (const auto& [u, type] : active_uniforms(p)) {
         const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;  // bound per object, by name
-        if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u) && gl_uniform_type(type).components == 0) {
-            glDeleteProgram(p);
-            throw std::runtime_error(name + ": uniform '" + u + "' is none the reference binds (time, dims, " +
-                                     "sampler2D/sampler3D uniforms, or a float, vec, int, ivec, uint or mat of the shader's own)");
+        if (const SceneMatrixName* m = find_scene_matrix(u)) {
+            if (type != (m->columns == 4 ? GL_FLOAT_MAT4 : GL_FLOAT_MAT3)) {
+                refuse("uniform '" + u + "' is the scene's transform: declare it " + (m->columns == 4 ? "mat4" : "mat3"));
+            }
+        } else if (u.rfind("gl_", 0) != 0 && !sampler && !kKnownUniforms.count(u) && gl_uniform_type(type).components == 0) {
+            refuse("uniform '" + u + "' is none the reference binds (time, dims, the scene's transforms " +
+                   std::string(scene_matrix_names()) +
+                   ", sampler2D/sampler3D uniforms, or a float, vec, int, ivec, uint or mat of the shader's own)");
+        }
+    }
+    for (const auto& [a, type] : active_attributes(p)) {
+        if (a.rfind("gl_", 0) == 0) continue;
+        if (!find_vertex_attribute(a)) {
+            refuse("vertex input '" + a + "' is none the scene feeds (" + std::string(vertex_attribute_names()) +
+                   ": scenes/shader_inputs.h)");
+        }
+        if (type != GL_FLOAT && type != GL_FLOAT_VEC2 && type != GL_FLOAT_VEC3 && type != GL_FLOAT_VEC4) {
+            refuse("vertex input '" + a + "' is the scene's " + std::string(find_vertex_attribute(a)->gltf) +
+                   ": declare it float, vec2, vec3 or vec4");
         }
     }
     return p;
@@ -230,11 +266,16 @@ GlSceneRenderer::GlSceneRenderer(const Scene& scene, const GlFrameRequest& reque
 void GlSceneRenderer::prepare(GlPrograms& programs) {
     context_.make_current();
     for (const Object& o : scene_.objects) {
-        const std::string& name = request_.shader_override.empty() ? o.shader : request_.shader_override;
-        if (name.empty()) {
-            throw std::runtime_error(scene_.file.string() + ": material '" + o.material + "' of '" + o.name +
-                                     "' names no shader (extras.shader); pass --shader NAME");
+        if (request_.shader_override.empty() && !o.glsl_fragment.empty()) {
+            // Its vertex shader may be one quadshade's front end writes, which the reference does not include.
+            throw std::runtime_error(scene_.file.string() + ": " + o.material + ": extras.glsl: a material drawn by its own GLSL "
+                                     "file is not rendered by the reference; compare it with quadshade check --glsl " +
+                                     o.glsl_fragment.string());
         }
+        const std::string name = !request_.shader_override.empty() ? request_.shader_override
+                                 : !o.shader.empty()               ? o.shader
+                                                                   : std::string(kDefaultMaterialShader);
+        shaders_.push_back(name);
         const GLuint p = programs.program(name, request_.atlas);
         programs_.push_back(p);
         std::vector<Binding> bindings;
@@ -252,13 +293,45 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
             });
         }
         uniforms_.push_back(uniform_values(p, name, settings, programs.glsl_dir()));
+        // The scene's transforms and vertex attributes the program reads by name.
+        std::vector<MatrixBinding> matrices;
+        for (const auto& [u, type] : active_uniforms(p)) {
+            if (u.starts_with("gl_")) continue;  // GL's own state (gl_ModelViewProjectionMatrix), set by GL
+            if (const SceneMatrixName* m = find_scene_matrix(u)) {
+                matrices.push_back({glGetUniformLocation(p, u.c_str()), m->matrix});
+            } else if (type == GL_FLOAT_MAT2 || type == GL_FLOAT_MAT3 || type == GL_FLOAT_MAT4) {
+                // A matrix of the shader's own that nothing sets is all zeros: never a transform
+                // it means (a vertex stage reading one under a name the scene does not feed would
+                // draw nothing), so it is refused rather than drawn.
+                bool set = false;
+                for (const UniformValue& v : uniforms_.back()) set = set || v.location == glGetUniformLocation(p, u.c_str());
+                float value[16] = {};
+                glGetUniformfv(p, glGetUniformLocation(p, u.c_str()), value);
+                bool zero = true;
+                for (float x : value) zero = zero && x == 0.0f;
+                if (!set && zero) {
+                    throw std::runtime_error(name + ": uniform " + (type == GL_FLOAT_MAT4 ? "mat4" : type == GL_FLOAT_MAT3 ? "mat3" : "mat2") +
+                                             " '" + u + "' is none of the scene's transforms (" + std::string(scene_matrix_names()) +
+                                             ") and nothing sets it (no initializer, material extras.uniforms or --uniform): it "
+                                             "would be all zeros");
+                }
+            }
+        }
+        matrices_.push_back(std::move(matrices));
+        std::vector<AttributeBinding> attributes;
+        for (const auto& [a, type] : active_attributes(p)) {
+            if (const VertexAttributeName* v = find_vertex_attribute(a)) {
+                attributes.push_back({glGetAttribLocation(p, a.c_str()), v->attribute});
+                attribute_array(scene_.meshes[o.mesh], v->attribute, name, a);  // refuses what the scene cannot feed
+            }
+        }
+        attributes_.push_back(std::move(attributes));
     }
     for (const UniformSetting& s : request_.uniforms) {
         bool found = false;
         for (std::size_t i = 0; i < programs_.size(); ++i) {
-            const std::string& name = request_.shader_override.empty() ? scene_.objects[i].shader : request_.shader_override;
             found = found || glGetUniformLocation(programs_[i], s.name.c_str()) >= 0 ||
-                    glsl_declares(programs.glsl_dir(), name, s.name);
+                    glsl_declares(programs.glsl_dir(), shaders_[i], s.name);
         }
         if (!found) throw UniformOptionError(s.origin + ": no shader in this scene declares a uniform '" + s.name + "'");
     }
@@ -275,6 +348,7 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
             throw std::runtime_error(s.origin + ": " + what);
         };
         if (s.name == kResolutionUniform) refuse("uResolution is the frame's size, set by the renderer");
+        if (find_scene_matrix(s.name)) refuse(s.name + " is the scene's transform, set by the renderer");
         const GLint location = glGetUniformLocation(program, s.name.c_str());
         if (location < 0) {
             // Declared but compiled away: nothing to set. A command line's may be another program's.
@@ -304,16 +378,30 @@ std::vector<GlSceneRenderer::UniformValue> GlSceneRenderer::uniform_values(unsig
     return out;
 }
 
+GlSceneRenderer::AttributeArray GlSceneRenderer::attribute_array(const Mesh& mesh, VertexAttribute attribute,
+                                                                 const std::string& shader, const std::string& name) const {
+    const Vertex& first = mesh.vertices.front();
+    switch (attribute) {
+        case VertexAttribute::Position: return {&first.position.x, 3};
+        case VertexAttribute::Texcoord0: return {&first.texcoord.x, 2};
+        case VertexAttribute::Normal:
+        case VertexAttribute::Texcoord1:
+        case VertexAttribute::Color: break;
+    }
+    std::string gltf;
+    for (const VertexAttributeName& a : kVertexAttributes) {
+        if (a.attribute == attribute) gltf = a.gltf;
+    }
+    throw std::runtime_error(scene_.file.string() + ": mesh '" + mesh.name + "': shader '" + shader + "' reads vertex input '" + name +
+                             "' (glTF " + gltf + "), which the scene model does not carry");
+}
+
 const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
                                                             const std::string& uniform, int dims) {
     const int index = o.texture_for(uniform);
-    const std::string what = scene_.file.string() + ": material '" + o.material + "': shader '" + shader + "' samples " +
+    const std::string what = scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
                              (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + uniform + "'";
-    if (index < 0) {
-        throw std::runtime_error(what + (uniform == "teximage" ? " but the material has no pbrMetallicRoughness.baseColorTexture, "
-                                                                 "extras.teximage or extras.textures.teximage"
-                                                               : " but the material's extras.textures binds no texture to it"));
-    }
+    if (index < 0) return white(dims);
     const qs::Texture& source = scene_.textures[std::size_t(index)];
     if (source.dims != dims) throw std::runtime_error(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture");
     Texture& t = textures_[std::size_t(index)];
@@ -357,8 +445,29 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
     return t;
 }
 
+const GlSceneRenderer::Texture& GlSceneRenderer::white(int dims) {
+    Texture& t = white_[dims == 3 ? 1 : 0];
+    if (t.id) return t;
+    const GLubyte texel[4] = {255, 255, 255, 255};
+    t.target = dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+    t.width = t.height = 1;
+    glGenTextures(1, &t.id);
+    glBindTexture(t.target, t.id);
+    if (dims == 3) {
+        glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    } else {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    }
+    glTexParameteri(t.target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(t.target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+}
+
 GlSceneRenderer::~GlSceneRenderer() {
     for (const Texture& t : textures_) {
+        if (t.id) glDeleteTextures(1, &t.id);
+    }
+    for (const Texture& t : white_) {
         if (t.id) glDeleteTextures(1, &t.id);
     }
 }
@@ -366,22 +475,23 @@ GlSceneRenderer::~GlSceneRenderer() {
 void GlSceneRenderer::draw() {
     context_.make_current();
     const int width = context_.width(), height = context_.height();
-    const float aspect = float(width) / float(height);
-    const float time = request_.time.value_or(scene_.time);
+    const double aspect = double(width) / double(height);
+    const double time = request_.time.value_or(double(scene_.time));
+    const Pose pose = scene_.pose(time);
     glViewport(0, 0, width, height);
     glClearColor(scene_.clear_color.r, scene_.clear_color.g, scene_.clear_color.b, scene_.clear_color.a);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glCullFace(GL_BACK);
-    glDisable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+    for (const std::size_t i : scene_.draw_order(pose)) {
         const Object& o = scene_.objects[i];
         const GLuint p = programs_[i];
         glUseProgram(p);
         // The scene model's MVP, as the projection; gl_ModelViewProjectionMatrix = P * I.
-        const glm::mat4 mvp = scene_.model_view_projection(o, aspect);
+        const glm::mat4 mvp = scene_.clip_from_object(pose, i, aspect);
         glMatrixMode(GL_PROJECTION);
         glLoadMatrixf(glm::value_ptr(mvp));
         glMatrixMode(GL_MODELVIEW);
@@ -392,11 +502,43 @@ void GlSceneRenderer::draw() {
             glDisable(GL_CULL_FACE);
         } else {
             glEnable(GL_CULL_FACE);
-            glFrontFace(o.mirrors() ? GL_CW : GL_CCW);
+            glFrontFace(mirrors(pose, i) ? GL_CW : GL_CCW);
         }
-        if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, time);
+        // glTF's alphaMode BLEND, for the default material: blended over what is drawn, no depth writes.
+        const bool blend =
+            o.look.alpha_mode == AlphaMode::Blend && shaders_[i] == kDefaultMaterialShader && !request_.atlas;
+        if (blend) {
+            glEnable(GL_BLEND);
+        } else {
+            glDisable(GL_BLEND);
+        }
+        glDepthMask(blend ? GL_FALSE : GL_TRUE);
+        if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, float(time));
+        const ObjectTransforms transforms = object_transforms(scene_, pose, i, aspect);
+        for (const MatrixBinding& m : matrices_[i]) {
+            switch (m.matrix) {
+                case SceneMatrix::ModelViewProjection:
+                    glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model_view_projection));
+                    break;
+                case SceneMatrix::Model: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model)); break;
+                case SceneMatrix::View: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.view)); break;
+                case SceneMatrix::Projection:
+                    glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.projection));
+                    break;
+                case SceneMatrix::Normal: glUniformMatrix3fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.normal)); break;
+            }
+        }
         if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
             glUniform2f(loc, float(width), float(height));
+        }
+        // The scene's values where the program has the uniform, then the material's and --uniform's.
+        const std::vector<std::pair<std::string, GLenum>> active = active_uniforms(p);
+        for (const UniformSetting& s : object_uniforms(scene_, i, pose, aspect)) {
+            for (const auto& [name, type] : active) {
+                if (name == s.name && gl_uniform_type(type).components == int(s.values.size())) {
+                    set_uniform(glGetUniformLocation(p, name.c_str()), type, s.values);
+                }
+            }
         }
         for (const UniformValue& u : uniforms_[i]) set_uniform(u.location, u.type, u.values);
         for (const Binding& b : bound_[i]) {
@@ -406,17 +548,34 @@ void GlSceneRenderer::draw() {
         }
         if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) {
             const int teximage = o.texture_for("teximage");
-            if (teximage < 0 || !textures_[std::size_t(teximage)].id) throw std::runtime_error(o.material + ": dims without teximage");
-            const Texture& t = textures_[std::size_t(teximage)];
+            const Texture& t = teximage < 0 ? white(2) : textures_[std::size_t(teximage)];
+            if (!t.id) throw std::runtime_error(o.material + ": dims without teximage");
             glUniform2f(loc, float(t.width), float(t.height));
         }
         const Mesh& mesh = scene_.meshes[o.mesh];
         glEnableClientState(GL_VERTEX_ARRAY);
-        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glEnableClientState(GL_NORMAL_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
         glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].position);
-        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].texcoord);
+        glNormalPointer(GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].normal);
+        glColorPointer(4, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].color);
+        for (const GLenum unit : {GL_TEXTURE0, GL_TEXTURE1}) {  // gl_MultiTexCoord0, gl_MultiTexCoord1
+            glClientActiveTexture(unit);
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+            glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex),
+                              unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
+        }
+        glClientActiveTexture(GL_TEXTURE0);
+        const std::string& shader = shaders_[i];
+        for (const AttributeBinding& a : attributes_[i]) {
+            const AttributeArray array = attribute_array(mesh, a.attribute, shader, "");
+            glEnableVertexAttribArray(GLuint(a.location));
+            glVertexAttribPointer(GLuint(a.location), array.components, GL_FLOAT, GL_FALSE, sizeof(Vertex), array.first);
+        }
         glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
+        for (const AttributeBinding& a : attributes_[i]) glDisableVertexAttribArray(GLuint(a.location));
     }
+    glDepthMask(GL_TRUE);
     glFinish();
     if (GLenum e = glGetError(); e != GL_NO_ERROR) throw std::runtime_error("OpenGL error " + std::to_string(e));
 }

@@ -1,15 +1,25 @@
 #pragma once
 // Renders a scene as any OpenGL application would, from the glTF alone: each object's shader is
 // the GLSL pair NAME.vert / NAME.frag in a folder (`quadshade shaders --export-glsl DIR` writes
-// it), its uniforms are bound by name (`time`, `dims`, and each sampler the program declares to
-// the texture the object's material binds to that name: teximage, extras.textures), its textures
+// it), its uniforms are bound by name (`time`, `dims`, the scene's transforms and vertex inputs of
+// scenes/shader_inputs.h, and each sampler the program declares to the texture the object's
+// material binds to that name: teximage, extras.textures; any other vertex input is refused, and
+// so is a matrix uniform nothing sets), its textures
 // are decoded here (texture_image.h) and uploaded in glTF's orientation (the image's first row at
 // t = 0; a 3D texture's slices are the image's bands of rows, glTexImage3D's own order) with the
 // sampler's wraps and filters, and glGenerateMipmap when the minification filter reads mipmaps.
+// A material that names no shader is drawn with the default material's GLSL
+// (kDefaultMaterialShader), a sampler its material binds no texture to reads a 1x1 white texture,
+// and the uniforms the scene gives (scenes/object_uniforms.h) are set by name where a program has
+// them, the material's extras.uniforms and --uniform over them. The objects are posed at the
+// frame's time (Scene::pose) and drawn in Scene::draw_order, each with gl_Vertex, gl_Normal,
+// gl_Color, gl_MultiTexCoord0 and gl_MultiTexCoord1 from the scene's vertices, and the
+// projection matrix the scene model's clip_from_object (gl_ModelViewProjectionMatrix = P * I).
 // Fixed-function state: depth test LESS against a buffer cleared to 1, back faces culled unless
 // the material is doubleSided (front faces clockwise where the node mirrors; no culling in an
-// atlas bake), no blending. Shared with the renderer: the scene model and the GLSL text, nothing
-// else.
+// atlas bake); blending (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, depth writes off) for the default
+// material's alphaMode BLEND, none otherwise. Shared with the renderer: the scene model and the
+// GLSL text, nothing else.
 
 #include <cstdint>
 #include <filesystem>
@@ -21,12 +31,13 @@
 #include "reference/gl_context.h"
 #include "scenes/image_io.h"
 #include "scenes/scene.h"
+#include "scenes/shader_inputs.h"
 
 namespace qs {
 
 struct GlFrameRequest {
     int width = 0, height = 0;
-    std::optional<float> time;
+    std::optional<double> time;  // the scene's own by default
     std::string shader_override;  // draw every object with this shader's GLSL
     // --uniform values, replacing the materials' of the same name for every program that has
     // that uniform; one no program has is refused (UniformOptionError).
@@ -104,10 +115,28 @@ private:
         unsigned type = 0;  // GL_FLOAT_VEC3, GL_INT, GL_FLOAT_MAT2, ...
         std::vector<double> values;
     };
+    // A scene transform a program reads by name (scenes/shader_inputs.h), and a vertex input.
+    struct MatrixBinding {
+        int location = -1;
+        SceneMatrix matrix;
+    };
+    struct AttributeBinding {
+        int location = -1;
+        VertexAttribute attribute;
+    };
+    // Where a mesh keeps an attribute: its first component (the stride is Vertex's) and how many
+    // there are. Throws naming the scene, mesh and shader for one the scene model does not carry.
+    struct AttributeArray {
+        const float* first;
+        int components;
+    };
+    AttributeArray attribute_array(const Mesh& mesh, VertexAttribute attribute, const std::string& shader,
+                                   const std::string& name) const;
     void prepare(GlPrograms& programs);
     std::vector<UniformValue> uniform_values(unsigned program, const std::string& shader,
                                              const std::vector<UniformSetting>& settings, const std::filesystem::path& glsl_dir) const;
     const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims);
+    const Texture& white(int dims);
 
     const Scene& scene_;
     GlFrameRequest request_;
@@ -116,7 +145,11 @@ private:
     std::vector<unsigned> programs_;       // per object
     std::vector<std::vector<Binding>> bound_;  // per object, its program's samplers
     std::vector<std::vector<UniformValue>> uniforms_;  // per object
+    std::vector<std::vector<MatrixBinding>> matrices_;       // per object
+    std::vector<std::vector<AttributeBinding>> attributes_;  // per object
     std::vector<Texture> textures_;        // per scene texture, id 0 until uploaded
+    Texture white_[2];                     // 2D and 3D, id 0 until made
+    std::vector<std::string> shaders_;     // per object, the shader it is drawn with
 };
 
 }  // namespace qs

@@ -15,6 +15,7 @@
 
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
+#include "scenes/temporary_file.h"
 
 namespace {
 
@@ -22,7 +23,8 @@ struct Options {
     std::string scene, shader, glsl, size;
     std::vector<std::string> outputs, uniforms;
     qs::GlDriver driver = qs::GlDriver::Llvmpipe;
-    std::optional<float> time;
+    std::optional<double> time;
+    std::string camera;
     int threads = 0, repeat = 1;
     bool atlas = false;
 };
@@ -30,6 +32,7 @@ struct Options {
 }  // namespace
 
 int main(int argc, char** argv) {
+    qs::remove_temporaries_on_signals();
     Options o;
     CLI::App app("quadshade-reference: renders a glTF scene through OSMesa from the shaders' original GLSL, as any "
                  "OpenGL application would. The outputs record the driver, renderer string and Mesa version in their "
@@ -45,7 +48,11 @@ int main(int argc, char** argv) {
     std::string driver = "llvmpipe";
     app.add_option("--driver", driver, "llvmpipe (default) or softpipe")->check(CLI::IsMember({"llvmpipe", "softpipe"}));
     app.add_option("--size", o.size, "image size WxH (default: the scene's)");
-    app.add_option("--time", o.time, "the `time` uniform (default: the scene's)");
+    app.add_option("--time", o.time, "the `time` uniform and the time animations are posed at (default: the scene's)");
+    app.add_option("--camera", o.camera,
+                   "the camera to render from: a camera node's or camera's name, or an index into "
+                   "the file's cameras[] (default: the first camera node)")
+        ->option_text("NAME|INDEX");
     app.add_option("--shader", o.shader, "draw every object with this shader's GLSL");
     app.add_option("--uniform", o.uniforms,
                    "NAME=VALUE: a shader's own uniform for every program that has it, replacing the material's "
@@ -90,7 +97,12 @@ int main(int argc, char** argv) {
         }
     }
     try {
-        const qs::Scene scene = qs::load_scene(o.scene);
+        qs::SceneLoadOptions load;
+        load.camera = o.camera;
+        const qs::Scene scene = qs::load_scene(o.scene, load);
+        for (const std::string& w : scene.warnings) {
+            std::fprintf(stderr, "quadshade-reference: warning: %s\n", w.c_str());
+        }
         if (width == 0) width = scene.width, height = scene.height;
         const auto t0 = std::chrono::steady_clock::now();
         auto context = qs::create_osmesa_context(width, height, o.driver, o.threads);
@@ -122,6 +134,9 @@ int main(int argc, char** argv) {
         }
         std::fputc('\n', stderr);
     } catch (const qs::UniformOptionError& e) {  // a --uniform no program has
+        std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
+        return 2;
+    } catch (const qs::CameraOptionError& e) {  // a --camera the scene does not have
         std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
         return 2;
     } catch (const std::exception& e) {

@@ -4,12 +4,15 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <iterator>
+#include <set>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "render/atlas_skirts.h"
+#include "render/memory_plan.h"
 
 namespace qs {
 
@@ -51,7 +54,7 @@ bool overlap_in_uv(const UvTriangle& a, const UvTriangle& b, double slack) {
 
 }  // namespace
 
-void check_atlas(const Scene& scene) {
+std::size_t check_atlas(const Scene& scene) {
     std::vector<AtlasTriangle> triangles;
     for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
         const Object& o = scene.objects[oi];
@@ -84,44 +87,104 @@ void check_atlas(const Scene& scene) {
             }
         }
     }
-    // Triangles binned by their bounds on a grid, each pair that shares a cell tested once
-    // (in the first cell both bounds share).
-    constexpr int kCells = 64;
-    auto cell = [](double x) { return std::clamp(int(x * kCells), 0, kCells - 1); };
-    std::vector<std::vector<std::size_t>> bins(std::size_t(kCells) * kCells);
-    struct Bounds { int x0, y0, x1, y1; };
-    std::vector<Bounds> bounds;
-    bounds.reserve(triangles.size());
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
-        const UvTriangle& uv = triangles[i].uv;
-        const Bounds b{cell(std::min({uv[0].x, uv[1].x, uv[2].x})), cell(std::min({uv[0].y, uv[1].y, uv[2].y})),
-                       cell(std::max({uv[0].x, uv[1].x, uv[2].x})), cell(std::max({uv[0].y, uv[1].y, uv[2].y}))};
-        bounds.push_back(b);
-        for (int y = b.y0; y <= b.y1; ++y) {
-            for (int x = b.x0; x <= b.x1; ++x) bins[std::size_t(y) * kCells + std::size_t(x)].push_back(i);
-        }
+    // A sweep over s (Shamos and Hoey's, for polygons): the triangles the sweep line crosses are
+    // kept in the order of their cross-sections, which cannot change between two triangles until
+    // they overlap, so the first overlap is between two triangles that are neighbours in that
+    // order at some event (one starts, or one between them ends); only neighbours are tested.
+    // O(n log n) whatever the mesh (a fan of triangles around one vertex included).
+    const std::size_t n = triangles.size();
+    struct Extent {
+        double x0, x1;
+    };
+    std::vector<Extent> extent(n);
+    std::vector<double> xs;
+    xs.reserve(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        UvTriangle& uv = triangles[i].uv;
+        std::sort(uv.begin(), uv.end(), [](Uv a, Uv b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        extent[i] = {uv[0].x, uv[2].x};  // x0 < x1: the triangle has an area
+        xs.push_back(uv[0].x), xs.push_back(uv[2].x);
     }
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    std::vector<std::size_t> by_start(n), by_end(n);
+    for (std::size_t i = 0; i < n; ++i) by_start[i] = by_end[i] = i;
+    std::sort(by_start.begin(), by_start.end(),
+              [&](std::size_t a, std::size_t b) { return extent[a].x0 < extent[b].x0; });
+    std::sort(by_end.begin(), by_end.end(), [&](std::size_t a, std::size_t b) { return extent[a].x1 < extent[b].x1; });
+    // The sweep line's s: strictly between two events, where every active triangle's
+    // cross-section has a length (vertices lie only on events).
+    double sweep = 0.0;
+    auto middle = [&](std::size_t i) {
+        const UvTriangle& t = triangles[i].uv;  // sorted by s; t[0].x < sweep < t[2].x
+        auto y_at = [&](Uv p, Uv q) { return p.y + (q.y - p.y) * ((sweep - p.x) / (q.x - p.x)); };
+        const double long_edge = y_at(t[0], t[2]), short_edge = sweep < t[1].x ? y_at(t[0], t[1]) : y_at(t[1], t[2]);
+        return 0.5 * (long_edge + short_edge);
+    };
+    auto below = [&](std::size_t a, std::size_t b) {
+        const double ma = middle(a), mb = middle(b);
+        return ma < mb || (ma == mb && a < b);
+    };
+    std::set<std::size_t, decltype(below)> active(below);
+    std::vector<std::set<std::size_t, decltype(below)>::iterator> where(n);
     constexpr double kSlack = 1e-7;  // texcoord units: well under a texel of the largest atlas
-    for (int y = 0; y < kCells; ++y) {
-        for (int x = 0; x < kCells; ++x) {
-            const std::vector<std::size_t>& bin = bins[std::size_t(y) * kCells + std::size_t(x)];
-            for (std::size_t i = 0; i < bin.size(); ++i) {
-                for (std::size_t j = i + 1; j < bin.size(); ++j) {
-                    const Bounds &a = bounds[bin[i]], &b = bounds[bin[j]];
-                    if (x != std::max(a.x0, b.x0) || y != std::max(a.y0, b.y0)) continue;
-                    const AtlasTriangle &p = triangles[bin[i]], &q = triangles[bin[j]];
-                    if (!overlap_in_uv(p.uv, q.uv, kSlack)) continue;
-                    const Object &op = scene.objects[p.object], &oq = scene.objects[q.object];
-                    const Uv c = (p.uv[0] + p.uv[1] + p.uv[2]) / 3.0;
-                    throw SceneError(scene.file.string() + ": mesh '" + scene.meshes[op.mesh].name + "' (object '" + op.name +
-                                     "') triangle " + std::to_string(p.index) + " and mesh '" + scene.meshes[oq.mesh].name +
-                                     "' (object '" + oq.name + "') triangle " + std::to_string(q.index) +
-                                     " overlap in TEXCOORD_0 (near (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
-                                     ")): an atlas bake needs every texel to belong to one surface point");
-                }
-            }
+    std::size_t compared = 0;
+    auto test = [&](std::size_t a, std::size_t b) {
+        ++compared;
+        const AtlasTriangle &p = triangles[a], &q = triangles[b];
+        if (!overlap_in_uv(p.uv, q.uv, kSlack)) return;
+        const Object &op = scene.objects[p.object], &oq = scene.objects[q.object];
+        const Uv c = (p.uv[0] + p.uv[1] + p.uv[2]) / 3.0;
+        throw SceneError(scene.file.string() + ": mesh '" + scene.meshes[op.mesh].name + "' (object '" + op.name +
+                         "') triangle " + std::to_string(p.index) + " and mesh '" + scene.meshes[oq.mesh].name +
+                         "' (object '" + oq.name + "') triangle " + std::to_string(q.index) +
+                         " overlap in TEXCOORD_0 (near (" + std::to_string(c.x) + ", " + std::to_string(c.y) +
+                         ")): an atlas bake needs every texel to belong to one surface point");
+    };
+    std::size_t next_start = 0, next_end = 0;
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+        for (; next_end < n && extent[by_end[next_end]].x1 == xs[k]; ++next_end) {
+            const auto it = where[by_end[next_end]];
+            const auto after = std::next(it);
+            if (it != active.begin() && after != active.end()) test(*std::prev(it), *after);
+            active.erase(it);
+        }
+        if (k + 1 == xs.size()) break;
+        sweep = xs[k] + 0.5 * (xs[k + 1] - xs[k]);
+        for (; next_start < n && extent[by_start[next_start]].x0 == xs[k]; ++next_start) {
+            const std::size_t i = by_start[next_start];
+            const auto it = active.insert(i).first;
+            where[i] = it;
+            if (it != active.begin()) test(*std::prev(it), i);
+            if (const auto after = std::next(it); after != active.end()) test(i, *after);
         }
     }
+    return compared;
+}
+
+std::uint64_t atlas_bake_bytes(const Scene& scene, const AtlasRequest& request) {
+    std::uint64_t vertices = 0, triangles = 0;
+    for (const Object& o : scene.objects) {
+        vertices += scene.meshes[o.mesh].vertices.size();
+        triangles += scene.meshes[o.mesh].indices.size() / 3;
+    }
+    // Skirts: made as atlas_scene makes them, to count them (a small part of the frame's memory).
+    std::uint64_t skirt_triangles = 0, skirt_vertices = 0;
+    if (request.skirt > 0) {
+        for (const Object& o : scene.objects) {
+            const Mesh strips = skirt_mesh(scene.meshes[o.mesh], float(request.skirt) / float(request.size));
+            skirt_triangles += strips.indices.size() / 3;
+            skirt_vertices += strips.vertices.size();
+        }
+    }
+    constexpr std::uint64_t kCheckPerTriangle = 160;  // check_atlas's triangles, events and sweep
+    const std::uint64_t texels = std::uint64_t(request.size) * std::uint64_t(request.size);
+    // The atlas's scene is a copy of the scene with the skirts' meshes, and the draw calls hold
+    // each drawn vertex again as a vertex stage input.
+    const std::uint64_t skirt_meshes = skirt_vertices * sizeof(Vertex) + skirt_triangles * 3 * sizeof(std::uint32_t);
+    const std::uint64_t draws = (vertices + skirt_vertices) * sizeof(VertexIn);
+    return render_working_bytes(texels, vertices + skirt_vertices, triangles + skirt_triangles, true, false) +
+           triangles * kCheckPerTriangle + scene_bytes(scene) + skirt_meshes + draws;
 }
 
 Scene atlas_scene(const Scene& scene, int size, int skirt) {

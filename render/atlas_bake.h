@@ -11,6 +11,7 @@
 // from helper lanes extrapolated past the chart; Derivatives::Analytic (Dual2) gives the exact
 // per-texel partials of the interpolated varyings everywhere, chart edges included.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -33,8 +34,15 @@ struct AtlasRequest {
 // Throws SceneError, naming the scene's file and the mesh and object, unless every drawn mesh has
 // TEXCOORD_0 within [0, 1], every triangle with an area in POSITION has one in TEXCOORD_0, and no
 // two triangles (of one mesh or of different objects) overlap there with positive area: each
-// texel must belong to one surface point, and each surface point to a texel.
-void check_atlas(const Scene& scene);
+// texel must belong to one surface point, and each surface point to a texel. Takes O(n log n)
+// for n triangles, each tested only against its neighbours in a sweep; returns how many pairs it
+// tested (at most 3n: for tests and benches).
+std::size_t check_atlas(const Scene& scene);
+
+// Bytes render_atlas_frame holds at its peak beside the scene: the frame (colour and depth of
+// size x size texels), the atlas's copy of the scene with its skirts, the draw calls' vertices, the
+// vertex and triangle working memory, check_atlas's sweep.
+std::uint64_t atlas_bake_bytes(const Scene& scene, const AtlasRequest& request);
 
 // The scene an atlas is drawn from: `scene` with a transparent black clear colour (the gutter
 // between charts) at size x size and, with `skirt` texels, each object's skirts drawn after all

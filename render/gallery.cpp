@@ -61,6 +61,8 @@ std::vector<GallerySheet> render_gallery(const GalleryRequest& request) {
     const int tile = request.tile, label = std::max(10, tile / 12), strip = label + 8;
     std::vector<GallerySheet> sheets;
     for (const auto& [collection, programs] : catalogue_by_collection()) {
+        const auto& only = request.collections;
+        if (!only.empty() && std::find(only.begin(), only.end(), collection) == only.end()) continue;
         GallerySheet sheet{collection, {}, {}};
         const int n = int(programs.size()), columns = std::clamp(request.columns, 1, n), rows = (n + columns - 1) / columns;
         Image& image = sheet.image;

@@ -1,7 +1,7 @@
 #pragma once
 // The catalogue as contact sheets: one image per collection (shading/catalogue.h), every shader
-// of it rendered on a scene that can feed it and labelled with its name. docs/usage.md shows the
-// sheets; `quadshade gallery` writes them.
+// of it rendered on a scene that can feed it and labelled with its name. The README shows the
+// source texts' sheets; `quadshade gallery` writes them.
 
 #include <filesystem>
 #include <string>
@@ -21,6 +21,7 @@ struct GalleryRequest {
     int tile = 160;    // each shader's square, in pixels
     int columns = 6;   // squares per row, at most
     FrameRequest frame;  // time, derivative rule, threads; its size and shader are set per tile
+    std::vector<std::string> collections;  // the catalogue's collections to draw (empty: all)
 };
 
 struct GallerySheet {
@@ -37,7 +38,7 @@ struct GallerySheet {
 std::vector<GallerySheet> render_gallery(const GalleryRequest& request);
 
 // The file name of a collection's sheet: its name up to a colon, lower case, spaces as dashes
-// ("Gustavson: Procedural Textures" -> "gustavson"; separators . _ / as dashes), other characters dropped.
+// ("Noise is Beautiful: ..." -> "noise-is-beautiful"; separators . _ / as dashes), other characters dropped.
 std::string gallery_file_stem(const std::string& collection);
 
 }  // namespace qs

@@ -11,7 +11,8 @@
 
 namespace qs {
 
-GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::optional<std::filesystem::path>& vertex) {
+GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::optional<std::filesystem::path>& vertex,
+                            GlslWay way) {
     static std::mutex mutex;
     static std::map<std::pair<std::string, std::string>, GlslShader> loaded;
     const std::lock_guard lock(mutex);
@@ -30,9 +31,14 @@ GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::op
     std::string name = fragment.filename().string();
     for (int n = 2; find_program(name); ++n) name = fragment.filename().string() + " (" + std::to_string(n) + ")";
     std::vector<std::string> warnings = compiled.warnings;
+    if (const Program* p = compiled_glsl_program(f, v, name, way)) {
+        GlslShader shader{p, std::move(warnings)};
+        loaded.emplace(key, shader);
+        return shader;
+    }
     std::string vertex_text = compiled.vertex.text;
     auto program = std::make_unique<interpreter::GlslProgram>(name, std::move(compiled));
-    const Program& p = add_compiled_program(std::move(program), "GLSL", std::move(vertex_text), f.text);
+    const Program& p = add_compiled_program(std::move(program), kGlslCollection, std::move(vertex_text), f.text);
     GlslShader shader{&p, std::move(warnings)};
     loaded.emplace(key, shader);
     return shader;
@@ -47,7 +53,7 @@ std::string interpreted_twin(const std::string& name) {
     frontend::CompiledProgram compiled = frontend::compile_glsl({name + ".frag", fragment}, frontend::GlslSource{name + ".vert", vertex});
     auto program = std::make_unique<interpreter::GlslProgram>(twin, std::move(compiled));
     program->adopt_check_bounds(translation->info().check_bounds);
-    add_compiled_program(std::move(program), "GLSL", vertex, fragment);
+    add_compiled_program(std::move(program), kGlslCollection, vertex, fragment);
     return twin;
 }
 

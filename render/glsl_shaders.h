@@ -9,9 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "render/compiled_glsl.h"
 #include "shading/program.h"
 
 namespace qs {
+
+// The catalogue collection the shaders loaded here are listed under (quadshade gallery draws it).
+inline constexpr const char* kGlslCollection = "GLSL";
 
 struct GlslShader {
     const Program* program;
@@ -19,9 +23,11 @@ struct GlslShader {
 };
 
 // Compiles FRAG with VERT, or with the vertex shader the front end writes for it, once per pair
-// of files in a process. Throws frontend::GlslError (a std::runtime_error) with the file, line
-// and column of what it cannot take.
-GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::optional<std::filesystem::path>& vertex);
+// of files in a process, for the interpreter, or as the compiled translation `way` asks for where
+// it can (render/compiled_glsl.h). Throws frontend::GlslError (a std::runtime_error) with the
+// file, line and column of what it cannot take.
+GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::optional<std::filesystem::path>& vertex,
+                            GlslWay way = GlslWay::Interpret);
 
 // The catalogue shader `name`'s own GLSL, compiled and run by the interpreter, added to the
 // catalogue as "NAME.interpreted" (once) with the translation's documented departures from

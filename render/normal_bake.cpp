@@ -36,10 +36,32 @@ void set(PointBatch& b, int lane, const glm::dvec3& v) { b.x[lane] = v.x, b.y[la
 
 }  // namespace
 
+std::uint64_t covered_texels_bound(const Scene& scene, int size) {
+    // A convex region of area A and perimeter P holds at most A + P / 2 + 1 points of the unit
+    // lattice (in texels): the texel centres a triangle covers.
+    const double side = size;
+    double covered = 0.0;
+    for (const Object& o : scene.objects) {
+        const Mesh& mesh = scene.meshes[o.mesh];
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const glm::dvec2 s0(mesh.vertices[mesh.indices[t]].texcoord),
+                s1(mesh.vertices[mesh.indices[t + 1]].texcoord), s2(mesh.vertices[mesh.indices[t + 2]].texcoord);
+            const double area = 0.5 * std::abs(cross2(s1 - s0, s2 - s0)) * side * side;
+            const double perimeter = (glm::length(s1 - s0) + glm::length(s2 - s1) + glm::length(s0 - s2)) * side;
+            covered += area + 0.5 * perimeter + 1.0;
+        }
+    }
+    return std::uint64_t(std::min(covered, side * side));
+}
+
 AtlasTexels atlas_texels(const Scene& scene, int size) {
     check_atlas(scene);
     AtlasTexels out;
     out.size = size;
+    // Reserved once for as many texels as the triangles can cover: no copies while they grow.
+    const std::size_t bound = std::size_t(covered_texels_bound(scene, size));
+    out.texel.reserve(bound), out.position.reserve(bound), out.normal.reserve(bound);
+    out.tangent.reserve(bound), out.bitangent.reserve(bound);
     std::vector<bool> owned(std::size_t(size) * std::size_t(size), false);
     for (const Object& o : scene.objects) {
         const Mesh& mesh = scene.meshes[o.mesh];
@@ -136,6 +158,14 @@ std::vector<glm::dvec3> surface_normals(const HeightField& field, const AtlasTex
     parallel_chunks<std::size_t>(0, batches, 64,
                                  [&](const tbb::blocked_range<std::size_t>& r) { shade(r.begin(), r.end()); });
     return normals;
+}
+
+std::uint64_t normal_bake_bytes(const Scene& scene, const NormalBakeRequest& request) {
+    // Per covered texel: index, position, normal, tangent, bitangent and the normal made (124
+    // bytes, in vectors reserved once); per texel of the map: the image and a skirt pass's copy.
+    constexpr std::uint64_t kPerCovered = 128, kPerTexel = 2 * 4 * sizeof(float) + 1;
+    const std::uint64_t texels = std::uint64_t(request.size) * std::uint64_t(request.size);
+    return covered_texels_bound(scene, request.size) * kPerCovered + texels * kPerTexel;
 }
 
 Image bake_normal_map(const Scene& scene, const HeightField& field, const NormalBakeRequest& request) {

@@ -29,6 +29,7 @@
 // neighbours, one ring per pass (a dilation: a normal map has no surface point outside its
 // charts to evaluate, and the colour's skirts repeat the boundary's points anyway).
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -62,6 +63,14 @@ AtlasTexels atlas_texels(const Scene& scene, int size);
 
 // The unit normal at each of `texels`, by `request`'s method, step and precision.
 std::vector<glm::dvec3> surface_normals(const HeightField& field, const AtlasTexels& texels, const NormalBakeRequest& request);
+
+// At most how many texel centres of a size x size atlas the scene's triangles cover (area +
+// perimeter / 2 + 1 per triangle, in texels; no more than the atlas has).
+std::uint64_t covered_texels_bound(const Scene& scene, int size);
+
+// Bytes bake_normal_map holds at its peak: per texel the charts may cover (covered_texels_bound:
+// its surface point, frame and normal) and per texel of the map (the image, a skirt pass's copy).
+std::uint64_t normal_bake_bytes(const Scene& scene, const NormalBakeRequest& request);
 
 // The object-space normal map, encoded as above. Throws std::invalid_argument for a size outside
 // [1, kMaxAtlasSide], a skirt outside [0, kMaxSkirt] or, for finite differences, a step that is

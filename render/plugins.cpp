@@ -10,7 +10,7 @@
 
 namespace qs {
 
-void load_plugin(const std::filesystem::path& plugin) {
+std::vector<std::string> load_plugin(const std::filesystem::path& plugin) {
     std::error_code ec;
     const std::filesystem::path path = std::filesystem::canonical(plugin, ec);
     if (ec) throw std::runtime_error(plugin.string() + ": cannot open the plugin: " + ec.message());
@@ -18,7 +18,7 @@ void load_plugin(const std::filesystem::path& plugin) {
         throw std::runtime_error(plugin.string() + ": the plugin is not a file");
     }
     static std::set<std::filesystem::path> loaded;  // a second --plugin of the same file adds nothing
-    if (!loaded.insert(path).second) return;
+    if (!loaded.insert(path).second) return {};
     registration::begin_plugin(path);
     // RTLD_LOCAL: two plugins' own symbols never meet; RTLD_NOW: a missing symbol is reported
     // here, not in the middle of a frame.
@@ -38,6 +38,11 @@ void load_plugin(const std::filesystem::path& plugin) {
                                  ": the plugin registers no shader (QUADSHADE_SHADERS in its sources, built with "
                                  "quadshade_add_shader_plugin)");
     }
+    if (result.unoptimised) {
+        return {plugin.string() + ": compiled without optimisation, its shaders render several times slower (its "
+                "pixels are the same): configure it with -DCMAKE_BUILD_TYPE=Release, or with none"};
+    }
+    return {};
 }
 
 }  // namespace qs

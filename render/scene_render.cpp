@@ -2,33 +2,68 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "raster/triangle_setup.h"
 #include "shading/catalogue.h"
 #include "render/atlas_program.h"
+#include "render/memory_plan.h"
+#include "render/glsl_shaders.h"
 #include "render/textures.h"
 #include "render/uniform_binding.h"
+#include "scenes/object_uniforms.h"
+#include "scenes/shader_inputs.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
 #include "raycast/embree_scene.h"
 #include "raycast/ray_caster.h"
+#include "raycast/screen_footprint.h"
 #endif
 
 namespace qs {
 
+namespace {
+
+// What the ray caster holds per triangle: world positions, planes, the footprint on screen and
+// Embree's BVH. Measured, rounded up (docs/results.md, "The cost of one call").
+constexpr std::uint64_t kRayCastBytesPerTriangle = 512;
+
+}  // namespace
+
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override) {
-    const std::string& name = shader_override.empty() ? object.shader : shader_override;
-    if (name.empty()) {
-        throw SceneError(scene.file.string() + ": material '" + object.material + "' of '" + object.name +
-                         "' names no shader (extras.shader); pass --shader NAME");
+    if (shader_override.empty() && !object.glsl_fragment.empty()) {
+        try {
+            const std::optional<std::filesystem::path> vertex =
+                object.glsl_vertex.empty() ? std::nullopt : std::optional<std::filesystem::path>(object.glsl_vertex);
+            return *load_glsl_shader(object.glsl_fragment, vertex).program;
+        } catch (const std::runtime_error& e) {
+            throw SceneError(scene.file.string() + ": " + object.material + ": extras.glsl: " + e.what());
+        }
     }
+    const std::string& name = !shader_override.empty() ? shader_override
+                              : !object.shader.empty() ? object.shader
+                                                       : std::string(kDefaultMaterialShader);
     const Program* p = find_program(name);
     if (!p) {
-        throw SceneError((shader_override.empty() ? scene.file.string() + ": material '" + object.material +
-                                                        "' extras.shader"
+        throw SceneError((shader_override.empty() ? scene.file.string() + ": " + object.material + ": extras.shader"
                                                   : std::string("--shader")) +
                          ": unknown shader '" + name + "' (quadshade shaders lists them)");
     }
     return *p;
+}
+
+void check_programs(const Scene& scene, const std::string& shader_override) {
+    std::vector<std::string> problems;
+    for (const Object& o : scene.objects) {
+        try {
+            program_for(scene, o, shader_override);
+        } catch (const SceneError& e) {
+            if (std::find(problems.begin(), problems.end(), e.what()) == problems.end()) problems.push_back(e.what());
+        }
+    }
+    if (problems.empty()) return;
+    std::string all;
+    for (const std::string& p : problems) all += (all.empty() ? "" : "\n") + p;
+    throw SceneError(all);
 }
 
 bool binds_samplers(const Scene& scene, const ShaderInfo& info) {
@@ -54,23 +89,44 @@ void check_supported(const FrameRequest& request) {
     }
 }
 
-const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& program, std::string_view uniform, int dims) {
-    const std::string what = scene_.file.string() + ": material '" + o.material + "': shader '" +
-                             std::string(program.info().name) + "' samples " + (dims == 3 ? "a sampler3D" : "a sampler2D") +
-                             " '" + std::string(uniform) + "'";
+const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& program, std::string_view uniform,
+                                                int dims) {
     const int index = o.texture_for(uniform);
+    const std::string shader(program.info().name);
     if (index < 0) {
-        throw SceneError(what + (uniform == "teximage" ? " but the material has no pbrMetallicRoughness.baseColorTexture, "
-                                                         "extras.teximage or extras.textures.teximage"
-                                                       : " but the material's extras.textures binds no texture to it"));
+        // The default material reads white where the material has no base colour texture, as
+        // glTF asks; another shader is told once, with every material it concerns.
+        if (shader != kDefaultMaterialShader) {
+            std::vector<std::string>& materials = missing_samplers_[shader + "' samples '" + std::string(uniform)];
+            // Objects share materials: a material is counted once, however many nodes draw it.
+            if (std::find(materials.begin(), materials.end(), o.material) == materials.end()) {
+                materials.push_back(o.material);
+            }
+        }
+        return white_texture(dims);
     }
     const Texture& source = scene_.textures[std::size_t(index)];
     if (source.dims != dims) {
-        throw SceneError(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture" +
+        throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
+                         (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + std::string(uniform) + "' but " +
+                         source.field + " is a " + std::to_string(source.dims) + "D texture" +
                          (dims == 3 ? " (a 3D texture's binding gives its depth)" : ""));
     }
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
-    if (!t) t = load_texture(scene_, source);
+    if (!t) {
+        try {
+            std::uint64_t loading = 0;
+            t = load_texture(scene_, source, &loading);
+            texture_loading_ = std::max(texture_loading_, loading);
+        } catch (const SceneError& e) {
+            // Every texture that cannot be read is reported, not only the first; the draw reads
+            // white meanwhile and the constructor throws them all.
+            if (std::find(failures_.begin(), failures_.end(), e.what()) == failures_.end()) {
+                failures_.push_back(e.what());
+            }
+            return white_texture(dims);
+        }
+    }
     return *t;
 }
 
@@ -83,25 +139,59 @@ struct SceneRenderer::Caster {
 struct SceneRenderer::Caster {};
 #endif
 
+namespace {
+
+// The glTF mesh a scene mesh was read from ("meshes[3]" of "meshes[3].primitives[1]"), for counts.
+std::string gltf_mesh_of(const Mesh& mesh) {
+    const std::string& s = mesh.source.empty() ? mesh.name : mesh.source;
+    return s.substr(0, s.find('.'));
+}
+
+// One line for a kind of note: `what` on N primitives of M meshes; first: ...
+std::string counted(const std::string& what, const std::vector<const Mesh*>& meshes, const std::string& after) {
+    std::set<std::string> gltf_meshes;
+    for (const Mesh* m : meshes) gltf_meshes.insert(gltf_mesh_of(*m));
+    const Mesh& first = *meshes.front();
+    const std::string name =
+        first.source.empty() || first.name == first.source ? first.name : first.source + " '" + first.name + "'";
+    return what + " on " + std::to_string(meshes.size()) + (meshes.size() == 1 ? " primitive" : " primitives") +
+           " of " + std::to_string(gltf_meshes.size()) + (gltf_meshes.size() == 1 ? " mesh" : " meshes") + after +
+           "; first: " + name;
+}
+
+}  // namespace
+
 SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
     : scene_(scene),
       request_(request),
       width_(request.width > 0 ? request.width : scene.width),
       height_(request.height > 0 ? request.height : scene.height) {
     check_supported(request);
-    const float aspect = float(width_) / float(height_);
+    check_programs(scene, request.shader_override);
     vertices_.resize(scene.meshes.size());
     textures_.resize(scene.textures.size());
-    draws_.reserve(scene.objects.size());
-    for (const Object& o : scene.objects) {
+    object_draws_.resize(scene.objects.size());
+    uniform_words_.resize(scene.objects.size());
+    std::map<std::string, std::vector<const Mesh*>> missing_coordinates;  // per TEXCOORD_n: the meshes
+    std::map<std::string, std::set<std::string>> reading_shaders;         // per TEXCOORD_n: who reads it
+    std::vector<bool> counted_mesh(scene.meshes.size() * 2, false);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
         const Program& program = program_for(scene, o, request.shader_override);
-        DrawCall d;
+        const ShaderInfo& info = program.info();
+        if (request.backend == Backend::RayCaster && o.look.alpha_mode == AlphaMode::Blend &&
+            info.name == kDefaultMaterialShader) {
+            throw SceneError(scene.file.string() + ": " + o.material +
+                             ": alphaMode BLEND: the ray caster shades the "
+                             "nearest surface only and blends nothing; render with the rasterizer (--backend raster)");
+        }
+        DrawCall& d = object_draws_[i];
         const Mesh& mesh = scene.meshes[o.mesh];
         std::vector<VertexIn>& vertices = vertices_[o.mesh];
         if (vertices.empty()) {
             vertices.reserve(mesh.vertices.size());
             for (const Vertex& v : mesh.vertices) {
-                VertexIn in{v.position, v.texcoord};
+                VertexIn in{v.position, v.texcoord, v.normal, v.color, v.texcoord1};
                 in.id = std::uint32_t(vertices.size());  // gl_VertexID
                 vertices.push_back(in);
             }
@@ -110,31 +200,53 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         d.indices = mesh.indices;
         d.program = &program;
         if (request.atlas) d.program = atlas_programs_.emplace_back(std::make_unique<AtlasProgram>(program)).get();
-        d.uniforms.model_view_projection = scene.model_view_projection(o, aspect);
-        // An atlas bake draws every triangle in texture space, where winding says nothing of facing.
-        if (!request.atlas) d.culling = {!o.double_sided, o.mirrors() ? Winding::Clockwise : Winding::CounterClockwise};
-        d.uniforms.time = float(request.time.value_or(double(scene.time)));
-        const Needs& needs = program.info().needs;
-        if (needs.coordinates == Coordinates::Texcoord2D && !mesh.has_texcoords) {
-            const std::string note = scene.file.string() + ": mesh '" + mesh.name + "' has no TEXCOORD_0: shader '" +
-                                     std::string(program.info().name) +
-                                     "' reads texture coordinates, (0, 0) at every vertex (as in GL)";
-            if (std::find(notes_.begin(), notes_.end(), note) == notes_.end()) notes_.push_back(note);
+        const Needs& needs = info.needs;
+        // The texture coordinates the draw reads: TEXCOORD_0 for a shader of them, the base colour
+        // texture's set for the default material with a texture.
+        const bool default_material = info.name == kDefaultMaterialShader;
+        const bool reads_set0 = needs.coordinates == Coordinates::Texcoord2D &&
+                                (!default_material || (o.texture >= 0 && o.look.texcoord == 0));
+        const bool reads_set1 = default_material && o.texture >= 0 && o.look.texcoord != 0;
+        if ((reads_set0 && !mesh.has_texcoords) || (reads_set1 && !mesh.has_texcoord1)) {
+            const std::string set = "TEXCOORD_" + std::to_string(reads_set0 ? 0 : o.look.texcoord);
+            const std::size_t key = o.mesh * 2 + (reads_set0 ? 0 : 1);
+            if (!counted_mesh[key]) {
+                counted_mesh[key] = true;
+                missing_coordinates[set].push_back(&mesh);
+            }
+            std::string quoted(1, '\'');
+            quoted.append(info.name).push_back('\'');
+            reading_shaders[set].insert(std::move(quoted));
         }
         if (needs.texture) {
             d.uniforms.teximage = static_cast<const glsl::sampler2D*>(&texture_for(o, program, "teximage", 2));
             d.texture_lod = d.uniforms.teximage->needs_lod();
         }
-        for (std::size_t i = 0; i < needs.samplers.size() && !needs.samplers[i].name.empty(); ++i) {
-            const glsl::Texture& t = texture_for(o, program, needs.samplers[i].name, needs.samplers[i].dims);
-            d.uniforms.samplers[i] = &t;
+        for (std::size_t k = 0; k < needs.samplers.size() && !needs.samplers[k].name.empty(); ++k) {
+            const glsl::Texture& t = texture_for(o, program, needs.samplers[k].name, needs.samplers[k].dims);
+            d.uniforms.samplers[k] = &t;
             d.texture_lod = d.texture_lod || t.needs_lod();
         }
-        uniform_words_.push_back(bind_uniforms(program.info(), merge_uniforms(o.uniforms, request.uniforms), width_,
-                                               height_, !request.shader_override.empty()));
-        d.uniforms.user = uniform_words_.back().data();  // its buffer stays put as the outer vector grows
-        draws_.push_back(d);
+        d.blend = o.look.alpha_mode == AlphaMode::Blend && default_material && !request.atlas;
     }
+    if (!failures_.empty()) {
+        std::string all;
+        for (const std::string& f : failures_) all += (all.empty() ? "" : "\n") + f;
+        throw SceneError(all);
+    }
+    for (const auto& [set, meshes] : missing_coordinates) {
+        std::string shaders;
+        for (const std::string& name : reading_shaders[set]) shaders += (shaders.empty() ? "" : ", ") + name;
+        notes_.push_back(scene.file.string() + ": " +
+                         counted(set + " missing", meshes,
+                                 " drawn by shaders that read it (" + shaders + "): (0, 0) at every vertex, as in GL"));
+    }
+    for (const auto& [what, materials] : missing_samplers_) {
+        notes_.push_back(scene.file.string() + ": shader '" + what + "', which " + std::to_string(materials.size()) +
+                         (materials.size() == 1 ? " material binds" : " materials bind") +
+                         " no texture to: it reads white (1, 1, 1, 1) there; first: " + materials.front());
+    }
+    pose(request.time.value_or(double(scene.time)));
     for (const UniformSetting& s : request.uniforms) {
         bool declared = false;
         for (const DrawCall& d : draws_) declared = declared || declares_uniform(d.program->info(), s.name);
@@ -142,9 +254,10 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
     }
     if (request.backend == Backend::RayCaster) {
 #if defined(QUADSHADE_HAS_RAYCAST)
-        const Camera& c = scene.camera;
+        const double aspect = double(width_) / double(height_);
+        caster_view_ = scene.pose(*posed_at_).view;
         try {
-            caster_ = std::make_unique<Caster>(draws_, c.projection(aspect) * c.view);
+            caster_ = std::make_unique<Caster>(draws_, glm::mat4(scene.camera.projection(aspect) * caster_view_));
         } catch (const RayCastError& e) {
             throw SceneError(scene.file.string() + ": " + e.what());
         }
@@ -154,9 +267,41 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
     }
 }
 
+void SceneRenderer::pose(double time) {
+    if (posed_at_ && (*posed_at_ == time || !scene_.animated())) return;
+    const Pose pose = scene_.pose(time);
+    const double aspect = double(width_) / double(height_);
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+        const Object& o = scene_.objects[i];
+        DrawCall& d = object_draws_[i];
+        const ObjectTransforms transforms = object_transforms(scene_, pose, i, aspect);
+        d.uniforms.model_view_projection = transforms.model_view_projection;
+        d.uniforms.model = transforms.model;
+        d.uniforms.view = transforms.view;
+        d.uniforms.projection = transforms.projection;
+        d.uniforms.normal_matrix = transforms.normal;
+        // An atlas bake draws every triangle in texture space, where winding says nothing of facing.
+        if (!request_.atlas) {
+            d.culling = {!o.double_sided, mirrors(pose, i) ? Winding::Clockwise : Winding::CounterClockwise};
+        }
+        // The scene's values for the uniforms the shader declares, replaced by the material's
+        // extras.uniforms, then by --uniform.
+        const ShaderInfo& info = d.program->info();
+        std::vector<UniformSetting> given = object_uniforms(scene_, i, pose, aspect);
+        std::erase_if(given, [&](const UniformSetting& s) { return !declares_uniform(info, s.name); });
+        uniform_words_[i] = bind_uniforms(info, merge_uniforms(merge_uniforms(given, o.uniforms), request_.uniforms),
+                                          width_, height_, !request_.shader_override.empty());
+        d.uniforms.user = uniform_words_[i].data();
+    }
+    draws_.clear();
+    for (std::size_t i : scene_.draw_order(pose)) draws_.push_back(object_draws_[i]);
+    posed_at_ = time;
+}
+
 SceneRenderer::~SceneRenderer() = default;
 
 bool SceneRenderer::depends_on_time() const {
+    if (scene_.animated()) return true;
     for (const DrawCall& d : draws_) {
         if (d.program->info().needs.time) return true;
     }
@@ -170,6 +315,15 @@ double SceneRenderer::bvh_build_seconds() const {
     return 0.0;
 }
 
+std::uint64_t render_working_bytes(std::uint64_t pixels, std::uint64_t vertices, std::uint64_t triangles, bool depth,
+                                   bool undefined) {
+    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (undefined ? 1 : 0);
+    // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
+    // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
+    constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
+    return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+}
+
 std::uint64_t SceneRenderer::frame_bytes(int rows) const {
     // The rasterizer decides on a depth buffer per frame (depth_buffer.h): counted whenever it may.
     const bool depth = request_.backend == Backend::Rasterizer;
@@ -178,16 +332,44 @@ std::uint64_t SceneRenderer::frame_bytes(int rows) const {
         vertices += d.vertices.size();
         triangles += d.indices.size() / 3;
     }
-    const std::uint64_t pixels = std::uint64_t(width_) * std::uint64_t(rows);
-    const std::uint64_t per_pixel = 4 * sizeof(float) + (depth ? sizeof(float) : 0) + (request_.shading.check_undefined ? 1 : 0);
-    // Clipped vertices (vertex stage output) and triangle setups with their tile bins; a
-    // triangle clipped into a fan counts about twice. Measured sizes, rounded up.
-    constexpr std::uint64_t kPerVertex = 128, kPerTriangle = 2 * (sizeof(TriangleSetup) + 64);
-    return pixels * per_pixel + vertices * kPerVertex + triangles * kPerTriangle;
+    std::uint64_t bytes = render_working_bytes(std::uint64_t(width_) * std::uint64_t(rows), vertices, triangles, depth,
+                                               request_.shading.check_undefined);
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (caster_) bytes += BlockCoverage::bytes(width_, rows);  // what the rays of each 4x4 block may hit
+#endif
+    return bytes;
+}
+
+SceneRenderer::HeldBytes SceneRenderer::held_bytes() const {
+    HeldBytes held;
+    std::uint64_t triangles = 0;
+    held.scene = scene_bytes(scene_);
+    for (const DrawCall& d : draws_) triangles += d.indices.size() / 3;
+    for (const std::vector<VertexIn>& v : vertices_) held.scene += v.capacity() * sizeof(VertexIn);
+    for (const std::vector<std::uint32_t>& words : uniform_words_) held.scene += words.capacity() * sizeof(std::uint32_t);
+    if (caster_) held.scene += triangles * kRayCastBytesPerTriangle;
+    for (const std::unique_ptr<glsl::Texture>& t : textures_) {
+        if (t) held.textures += t->texels.capacity() * sizeof(std::uint32_t) + t->levels.capacity() * sizeof(glsl::Texture::Level);
+    }
+    held.texture_loading = texture_loading_;
+    return held;
 }
 
 void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, RenderStats* stats, RowBand band) {
     const double t = time.value_or(request_.time.value_or(double(scene_.time)));
+    if (scene_.animated() && posed_at_ != t) {
+        pose(t);
+#if defined(QUADSHADE_HAS_RAYCAST)
+        const glm::dmat4 view = scene_.pose(t).view;
+        if (caster_ && view != caster_view_) {  // the camera moved: rays from its new place
+            const double aspect = double(width_) / double(height_);
+            caster_view_ = view;
+            try {
+                caster_ = std::make_unique<Caster>(draws_, glm::mat4(scene_.camera.projection(aspect) * view));
+            } catch (const RayCastError& e) { throw SceneError(scene_.file.string() + ": " + e.what()); }
+        }
+#endif
+    }
     for (DrawCall& d : draws_) {
         const double period = d.program->info().time_period;
         d.uniforms.time = float(request_.stable_time && period > 0.0 ? t - period * std::floor(t / period) : t);
@@ -204,6 +386,14 @@ void SceneRenderer::render_into(Framebuffer& fb, std::optional<double> time, Ren
 #endif
     rasterize_into(fb, width_, height_, scene_.clear_color, draws_, request_.raster_options(), stats, band,
                    &raster_memory_);
+}
+
+void load_libraries(const FrameRequest& request) {
+#if defined(QUADSHADE_HAS_RAYCAST)
+    if (request.backend == Backend::RayCaster) EmbreeScene::load_library();
+#else
+    (void)request;  // the SceneRenderer refuses the ray caster
+#endif
 }
 
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats) {

@@ -4,6 +4,7 @@
 // command line, the reference comparisons and the benchmarks.
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -52,10 +53,14 @@ bool binds_samplers(const Scene& scene, const ShaderInfo& info);
 void check_supported(const FrameRequest& request);
 
 // A scene made ready for frames: shaders resolved, textures loaded, draw calls built and, for the
-// ray caster, the BVH built; each frame then only changes the time. Throws UnsupportedRequest as
-// check_supported does, before anything is loaded; SceneError for an
-// unknown or missing shader (naming the scene file and material), a shader that samples a
-// texture its material lacks, or a texture that cannot be read (naming the file and the field),
+// ray caster, the BVH built; each frame then changes the time and, in an animated scene, where
+// the objects and the camera are (Scene::pose) and the blended objects' order. Objects whose
+// material names no shader are drawn with the default material (kDefaultMaterialShader); a
+// sampler the material binds no texture to reads white (white_texture), said once per shader
+// in notes() for a catalogue shader. Throws UnsupportedRequest as check_supported does, before
+// anything is loaded; SceneError for an unknown shader (naming the scene file and material),
+// textures that cannot be read (naming the file and the field of each), a 2D texture bound where
+// a shader declares a sampler3D or the reverse, alpha blending with the ray caster;
 // std::runtime_error when the ray caster was not built in.
 class SceneRenderer {
 public:
@@ -75,30 +80,60 @@ public:
 
     // Bytes a render of `rows` rows holds while it runs: the framebuffer's colour, depth (where
     // a draw tests it) and undefined-case mask, and the vertex stage's and triangle setup's
-    // working memory. Textures are loaded (and counted by the caller) already.
+    // working memory. What the renderer holds for every frame is held_bytes().
     std::uint64_t frame_bytes(int rows) const;
+    // What the renderer holds beside its frames, counted from what it loaded: the scene (its
+    // meshes and embedded images, the draw calls' vertices, the ray caster's BVH) and the
+    // sampled textures with their mipmaps; and the most that loading a texture held beside
+    // those (its file, the decoded image and its RGBA copy), freed since.
+    struct HeldBytes {
+        std::uint64_t scene = 0, textures = 0, texture_loading = 0;
+    };
+    HeldBytes held_bytes() const;
     // What the scene asks that renders, but probably not as its author meant (a shader reading
-    // texture coordinates on a mesh without them), one line each, for the command line to warn.
+    // texture coordinates on meshes without them, a shader sampling a texture materials lack),
+    // one line for each kind, counted over what it concerns, for the command line to warn.
     const std::vector<std::string>& notes() const { return notes_; }
 
 private:
     // The texture an object binds to `uniform` (teximage or one of the program's Needs::samplers),
-    // of the kind the program declares, loaded on first use.
+    // of the kind the program declares, loaded on first use; white where it binds none.
     const glsl::Texture& texture_for(const Object& object, const Program& program, std::string_view uniform, int dims);
+    // Each object's transforms, culling and scene-given uniforms at `time`, and the draws in the
+    // order of the pose (Scene::draw_order).
+    void pose(double time);
 
     Scene& scene_;
     FrameRequest request_;
     int width_, height_;
     std::vector<std::vector<VertexIn>> vertices_;              // per scene mesh, empty until drawn
     std::vector<std::unique_ptr<glsl::Texture>> textures_;  // per scene texture, null until sampled
-    std::vector<DrawCall> draws_;
+    std::vector<DrawCall> object_draws_;                    // per scene object
+    std::vector<DrawCall> draws_;                           // this frame's, in drawing order
+    std::uint64_t texture_loading_ = 0;                     // held_bytes().texture_loading
     std::vector<std::unique_ptr<Program>> atlas_programs_;  // per draw with FrameRequest::atlas
-    std::vector<std::vector<std::uint32_t>> uniform_words_;  // per draw: its Uniforms::user
+    std::vector<std::vector<std::uint32_t>> uniform_words_;  // per object: its Uniforms::user
     std::vector<std::string> notes_;
+    std::vector<std::string> failures_;  // textures that could not be read, each said once
+    std::map<std::string, std::vector<std::string>> missing_samplers_;  // per shader and sampler: the materials
+    std::optional<double> posed_at_;                                    // the time of the pose the draws hold
+    glm::dmat4 caster_view_{1.0};  // the camera's view the ray caster was built for
     RasterMemory raster_memory_;  // the last frame's triangles and bins, reused
     struct Caster;
     std::unique_ptr<Caster> caster_;
 };
+
+// Loads the outside libraries a render of `request` uses, as its first frame would: Embree for
+// the ray caster (OpenImageIO, for its textures and its output, is scenes/image_io.h's). A caller
+// that measures a render's time or memory calls it first, to count the render's own. Throws
+// std::runtime_error naming the library when it cannot be loaded.
+void load_libraries(const FrameRequest& request);
+
+// Bytes a render of `pixels` pixels holds while it runs (SceneRenderer::frame_bytes counts its own
+// with it): colour, depth, the undefined-case mask, and the vertex stage's and triangle setup's
+// working memory for that many vertices and triangles drawn.
+std::uint64_t render_working_bytes(std::uint64_t pixels, std::uint64_t vertices, std::uint64_t triangles, bool depth,
+                                   bool undefined);
 
 // One frame, for callers that render a scene once.
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);
@@ -106,5 +141,7 @@ void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& reques
 
 // The shader each object is drawn with under `shader_override`, checked against the catalogue.
 const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override);
+// Throws one SceneError naming every material whose shader the catalogue lacks (program_for).
+void check_programs(const Scene& scene, const std::string& shader_override);
 
 }  // namespace qs

@@ -1,5 +1,7 @@
 #include "render/textures.h"
 
+#include <cstdint>
+
 #include "scenes/image_io.h"
 
 namespace qs {
@@ -27,10 +29,10 @@ glsl::SamplerState sampler_state(const Sampler& s) {
     return r;
 }
 
-std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture) {
+std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture, std::uint64_t* loading_bytes) {
     const std::string where = scene.file.string() + ": " + texture.field + ": ";
     try {
-        const Image8 image = read_texture_image(texture.image);
+        const Image8 image = read_texture_image(texture.image, loading_bytes);
         if (texture.dims == 2) {
             return std::make_unique<glsl::sampler2D>(image.width, image.height, image.rgba.data(), sampler_state(texture.sampler));
         }
@@ -45,6 +47,14 @@ std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& t
     } catch (const std::invalid_argument& e) {
         throw SceneError(where + e.what());
     }
+}
+
+const glsl::Texture& white_texture(int dims) {
+    static const std::uint8_t white[4] = {255, 255, 255, 255};
+    static const glsl::sampler2D flat(1, 1, white, glsl::SamplerState{});
+    static const glsl::sampler3D volume(1, 1, 1, white, glsl::SamplerState{});
+    if (dims == 3) return volume;
+    return flat;
 }
 
 }  // namespace qs

@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string_view>
 
 #include "scenes/scene.h"
+#include "scenes/shader_inputs.h"
 
 namespace qs {
 
@@ -43,8 +45,14 @@ bool declares_uniform(const ShaderInfo& info, const std::string& name) {
 std::vector<std::uint32_t> bind_uniforms(const ShaderInfo& info, const std::vector<UniformSetting>& settings, int width,
                                          int height, bool ignore_unknown_material) {
     std::vector<std::uint32_t> words(info.uniforms.size() * kUniformWords, 0u);
+    std::vector<bool> set(info.uniforms.size(), false);
     for (std::size_t u = 0; u < info.uniforms.size(); ++u) {
         const UniformDecl& d = info.uniforms[u];
+        if (find_scene_matrix(d.name)) {
+            throw std::logic_error("shader '" + std::string(info.name) + "' declares uniform '" + std::string(d.name) +
+                                   "', which is the scene's transform: read it from Uniforms (u.model_view_projection, "
+                                   "u.model, u.view, u.projection, u.normal_matrix), not from ShaderInfo::uniforms");
+        }
         std::uint32_t* w = &words[u * kUniformWords];
         for (int i = 0; i < components(d.type); ++i) w[i] = uniform_word(d.type, double(d.initial[std::size_t(i)]));
         if (d.name == kResolutionUniform) {
@@ -55,6 +63,7 @@ std::vector<std::uint32_t> bind_uniforms(const ShaderInfo& info, const std::vect
     for (const UniformSetting& s : settings) {
         const std::string shader(info.name);
         if (s.name == kResolutionUniform) refuse(s, std::string(kResolutionUniform) + " is the frame's size, set by the renderer");
+        if (find_scene_matrix(s.name)) refuse(s, s.name + " is the scene's transform, set by the renderer");
         std::size_t u = 0;
         while (u < info.uniforms.size() && info.uniforms[u].name != s.name) ++u;
         if (u == info.uniforms.size()) {
@@ -81,6 +90,22 @@ std::vector<std::uint32_t> bind_uniforms(const ShaderInfo& info, const std::vect
                 }
             }
             words[u * kUniformWords + i] = uniform_word(d.type, v);
+        }
+        set[u] = true;
+    }
+    // A matrix nothing sets is all zeros: never a transform a shader means, and what a vertex
+    // stage reading a transform under a name the scene does not feed would get. Refused, as the
+    // reference refuses it.
+    for (std::size_t u = 0; u < info.uniforms.size(); ++u) {
+        const UniformDecl& d = info.uniforms[u];
+        if (set[u] || d.type < UniformType::Mat2) continue;
+        bool zero = true;
+        for (int i = 0; i < components(d.type); ++i) zero = zero && d.initial[std::size_t(i)] == 0.0f;
+        if (zero) {
+            throw SceneError("shader '" + std::string(info.name) + "': uniform " + std::string(glsl_name(d.type)) + " '" +
+                             std::string(d.name) + "' is none of the scene's transforms (" + std::string(scene_matrix_names()) +
+                             ") and nothing sets it (no initializer, material extras.uniforms or --uniform): it would be "
+                             "all zeros");
         }
     }
     return words;

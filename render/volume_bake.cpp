@@ -6,6 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "shading/catalogue.h"
+
 namespace qs {
 
 float volume_texel_centre(int index, int size) { return -1.0f + 2.0f * (float(index) + 0.5f) / float(size); }
@@ -49,6 +51,13 @@ Image bake_volume(const VolumeRequest& request) {
     frame.shader_override.clear();
     Image volume{n, n * n, std::vector<float>(std::size_t(n) * std::size_t(n) * std::size_t(n) * 4)};
     const std::size_t row_floats = std::size_t(n) * 4;
+    // A volume has no material of its own: a shader that samples textures needs a --scene whose
+    // first object binds them (a render reads white for an unbound one; a bake would keep it).
+    if (const Program* p = find_program(request.shader); p && !binds_samplers(volume_slice_scene(request, 0), p->info())) {
+        throw SceneError("bake-volume: shader '" + request.shader + "' samples textures that " +
+                         (request.material_scene ? request.material_scene->file.string() + "'s first object does not bind"
+                                                 : std::string("only a scene's material binds (--scene)")));
+    }
     for (int k = 0; k < n; ++k) {
         Scene slice = volume_slice_scene(request, k);
         const Framebuffer fb = render_frame(slice, frame);

@@ -10,6 +10,8 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
+#include <set>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -229,139 +231,345 @@ AccessorData read_accessor(const tinygltf::Model& m, int index, const std::files
     return d;
 }
 
+// ---- attributes ------------------------------------------------------------------------------
+
+// A component type an attribute may have, and whether it is normalized.
+struct Component {
+    int type;
+    bool normalized;
+};
+constexpr Component kFloat{TINYGLTF_COMPONENT_TYPE_FLOAT, false};
+constexpr Component kByteNorm{TINYGLTF_COMPONENT_TYPE_BYTE, true}, kByte{TINYGLTF_COMPONENT_TYPE_BYTE, false};
+constexpr Component kUByteNorm{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, true},
+    kUByte{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, false};
+constexpr Component kShortNorm{TINYGLTF_COMPONENT_TYPE_SHORT, true}, kShort{TINYGLTF_COMPONENT_TYPE_SHORT, false};
+constexpr Component kUShortNorm{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true},
+    kUShort{TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, false};
+
+// What glTF 2.0 and KHR_mesh_quantization allow each attribute (and animation and instancing
+// data) to be stored as.
+const std::initializer_list<Component> kPositionTypes = {kFloat, kByte,      kByteNorm, kUByte,     kUByteNorm,
+                                                         kShort, kShortNorm, kUShort,   kUShortNorm};
+const std::initializer_list<Component> kNormalTypes = {kFloat, kByteNorm, kShortNorm};
+const std::initializer_list<Component> kTexcoordTypes = {kFloat, kByte,      kByteNorm, kUByte,     kUByteNorm,
+                                                         kShort, kShortNorm, kUShort,   kUShortNorm};
+const std::initializer_list<Component> kColorTypes = {kFloat, kUByteNorm, kUShortNorm};
+const std::initializer_list<Component> kRotationTypes = {kFloat, kByteNorm, kUByteNorm, kShortNorm, kUShortNorm};
+const std::initializer_list<Component> kFloatOnly = {kFloat};
+
+std::string type_name(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return "SCALAR";
+        case TINYGLTF_TYPE_VEC2:
+            return "VEC2";
+        case TINYGLTF_TYPE_VEC3:
+            return "VEC3";
+        case TINYGLTF_TYPE_VEC4:
+            return "VEC4";
+        default:
+            return "type " + std::to_string(type);
+    }
+}
+
+std::string component_name(int component_type, bool normalized) {
+    std::string n;
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            n = "BYTE";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            n = "UNSIGNED_BYTE";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            n = "SHORT";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            n = "UNSIGNED_SHORT";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            n = "UNSIGNED_INT";
+            break;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            n = "FLOAT";
+            break;
+        default:
+            n = std::to_string(component_type);
+    }
+    return normalized ? n + " normalized" : n;
+}
+
+// An accessor's elements as floats: integer components as glTF converts them, normalized ones
+// to [0, 1] (c / (2^b - 1)) or [-1, 1] (max(c / (2^(b-1) - 1), -1)), the others as they are.
+struct Floats {
+    std::vector<float> values;  // count * components
+    std::size_t count = 0;
+    int components = 0;
+    glm::vec4 at(std::size_t i) const {
+        glm::vec4 v(0.0f);
+        for (int c = 0; c < components; ++c) v[c] = values[i * std::size_t(components) + std::size_t(c)];
+        return v;
+    }
+};
+
+Floats read_floats(const tinygltf::Model& m, int index, const std::filesystem::path& file, const std::string& field,
+                   std::initializer_list<int> want_types, std::initializer_list<Component> want_components,
+                   std::uint64_t max_count, const char* element = "element") {
+    if (index < 0 || std::size_t(index) >= m.accessors.size()) fail(file, field, "accessor index out of range");
+    const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
+    const std::string af = indexed("accessors", std::size_t(index));
+    if (std::find(want_types.begin(), want_types.end(), a.type) == want_types.end()) {
+        std::string types;
+        for (int t : want_types) types += (types.empty() ? "" : " or ") + type_name(t);
+        fail(file, field, af + " is " + type_name(a.type) + ", expected " + types);
+    }
+    const bool normalized = a.normalized && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT;
+    bool allowed = false;
+    std::string allowed_list;
+    for (const Component& c : want_components) {
+        allowed |= c.type == a.componentType && c.normalized == normalized;
+        allowed_list += (allowed_list.empty() ? "" : ", ") + component_name(c.type, c.normalized);
+    }
+    if (!allowed) {
+        fail(file, field,
+             af + " is " + component_name(a.componentType, normalized) + ", which glTF does not allow here (" +
+                 allowed_list + ")");
+    }
+    const AccessorData d = read_accessor(m, index, file, field, a.type, {a.componentType}, max_count);
+    Floats f;
+    f.count = d.count;
+    f.components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
+    f.values.resize(d.count * std::size_t(f.components));
+    const std::size_t size = std::size_t(tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType)));
+    for (std::size_t i = 0; i < f.values.size(); ++i) {
+        const unsigned char* p = d.bytes.data() + i * size;
+        double v = 0.0;
+        switch (a.componentType) {
+            case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+                float x;
+                std::memcpy(&x, p, 4);
+                if (!std::isfinite(x)) {
+                    fail(file, field,
+                         std::string(element) + " " + std::to_string(i / std::size_t(f.components)) + " of " + af +
+                             " is not finite");
+                }
+                f.values[i] = x;
+                continue;
+            }
+            case TINYGLTF_COMPONENT_TYPE_BYTE:
+                v = double(std::int8_t(*p));
+                if (normalized) v = std::max(v / 127.0, -1.0);
+                break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                v = double(*p);
+                if (normalized) v /= 255.0;
+                break;
+            case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                std::int16_t s;
+                std::memcpy(&s, p, 2);
+                v = normalized ? std::max(double(s) / 32767.0, -1.0) : double(s);
+                break;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                std::uint16_t s;
+                std::memcpy(&s, p, 2);
+                v = normalized ? double(s) / 65535.0 : double(s);
+                break;
+            }
+            default:
+                break;  // not allowed above
+        }
+        f.values[i] = float(v);
+    }
+    return f;
+}
+
+// The triangles of a primitive's mode from its vertex indices (TRIANGLES as they are; strips and
+// fans unrolled as GL draws them, each triangle's last vertex the one that completes it, the
+// provoking vertex GL's last-vertex convention picks).
+std::vector<std::uint32_t> triangles_of(int mode, const std::vector<std::uint32_t>& v) {
+    std::vector<std::uint32_t> t;
+    if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        for (std::size_t i = 0; i + 2 < v.size(); ++i) {
+            // Odd triangles swap their first two vertices: every triangle winds as the first.
+            if (i % 2 == 0) {
+                t.insert(t.end(), {v[i], v[i + 1], v[i + 2]});
+            } else {
+                t.insert(t.end(), {v[i + 1], v[i], v[i + 2]});
+            }
+        }
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        for (std::size_t i = 1; i + 1 < v.size(); ++i) t.insert(t.end(), {v[0], v[i], v[i + 1]});
+    } else {
+        t = v;
+        t.resize(v.size() - v.size() % 3);
+    }
+    return t;
+}
+
+bool is_triangles(int mode) {
+    return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+// Primitive `pi` of mesh `mi` as triangles with its attributes. `texcoord1_set`: the TEXCOORD_n
+// Vertex::texcoord1 holds (1, or the material's base colour set when that is 2 or more).
 Mesh read_primitive(const tinygltf::Model& m, std::size_t mi, std::size_t pi, const std::filesystem::path& file,
-                    std::uint64_t vertices_left) {
+                    std::uint64_t vertices_left, int texcoord1_set) {
     const tinygltf::Primitive& p = m.meshes[mi].primitives[pi];
     const std::string field = "meshes[" + std::to_string(mi) + "].primitives[" + std::to_string(pi) + "]";
-    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-        fail(file, field + ".mode", "only TRIANGLES (4) is supported, found " + std::to_string(p.mode));
-    }
+    if (!is_triangles(p.mode)) fail(file, field + ".mode", "not a triangle mode: " + std::to_string(p.mode));
     auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) fail(file, field + ".attributes", "no POSITION");
-    const AccessorData pv = read_accessor(m, pos->second, file, field + ".attributes.POSITION", TINYGLTF_TYPE_VEC3,
-                                          {TINYGLTF_COMPONENT_TYPE_FLOAT}, vertices_left);
+    const Floats pv = read_floats(m, pos->second, file, field + ".attributes.POSITION", {TINYGLTF_TYPE_VEC3},
+                                  kPositionTypes, vertices_left, "vertex");
     Mesh mesh;
     mesh.name = m.meshes[mi].name.empty() ? field : m.meshes[mi].name;
+    mesh.source = field;
     mesh.vertices.resize(pv.count);
     for (std::size_t i = 0; i < pv.count; ++i) {
-        float xyz[3];
-        std::memcpy(xyz, pv.at(i), sizeof xyz);
-        if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
-            fail(file, field + ".attributes.POSITION", "vertex " + std::to_string(i) + " is not finite");
-        }
-        mesh.vertices[i] = {{xyz[0], xyz[1], xyz[2]}, {0.0f, 0.0f}};
+        const glm::vec3 xyz(pv.at(i));
+        mesh.vertices[i].position = xyz;
+        mesh.vertices[i].texcoord = {0.0f, 0.0f};
+        if (i == 0) mesh.lower = mesh.upper = xyz;
+        mesh.lower = glm::min(mesh.lower, xyz), mesh.upper = glm::max(mesh.upper, xyz);
     }
-    mesh.has_texcoords = p.attributes.count("TEXCOORD_0") > 0;
-    if (auto tc = p.attributes.find("TEXCOORD_0"); tc != p.attributes.end()) {
-        const AccessorData tv = read_accessor(m, tc->second, file, field + ".attributes.TEXCOORD_0", TINYGLTF_TYPE_VEC2,
-                                              {TINYGLTF_COMPONENT_TYPE_FLOAT}, limits::kVertices);
-        if (tv.count != pv.count) fail(file, field + ".attributes.TEXCOORD_0", "count differs from POSITION's");
-        for (std::size_t i = 0; i < tv.count; ++i) {
-            float st[2];
-            std::memcpy(st, tv.at(i), sizeof st);
-            if (!std::isfinite(st[0]) || !std::isfinite(st[1])) {
-                fail(file, field + ".attributes.TEXCOORD_0", "texcoord " + std::to_string(i) + " is not finite");
-            }
-            mesh.vertices[i].texcoord = {st[0], st[1]};
-        }
-    }
+    // An attribute of the same count as POSITION, read into each vertex by `put`.
+    auto attribute = [&](const std::string& name, std::initializer_list<int> types,
+                         std::initializer_list<Component> kinds, auto put) {
+        const auto it = p.attributes.find(name);
+        if (it == p.attributes.end()) return false;
+        const std::string af = field + ".attributes." + name;
+        const Floats a = read_floats(m, it->second, file, af, types, kinds, limits::kVertices, "vertex");
+        if (a.count != pv.count) fail(file, af, "count differs from POSITION's");
+        for (std::size_t i = 0; i < a.count; ++i) put(mesh.vertices[i], a.at(i), a.components);
+        return true;
+    };
+    mesh.has_texcoords = attribute("TEXCOORD_0", {TINYGLTF_TYPE_VEC2}, kTexcoordTypes, [](Vertex& v, glm::vec4 a, int) {
+        v.texcoord = {a.x, a.y};
+    });
+    mesh.has_texcoord1 = attribute("TEXCOORD_" + std::to_string(texcoord1_set), {TINYGLTF_TYPE_VEC2}, kTexcoordTypes,
+                                   [](Vertex& v, glm::vec4 a, int) {
+                                       v.texcoord1 = {a.x, a.y};
+                                   });
+    mesh.has_normals = attribute("NORMAL", {TINYGLTF_TYPE_VEC3}, kNormalTypes,
+                                 [](Vertex& v, glm::vec4 a, int) { v.normal = glm::vec3(a); });
+    attribute("COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, kColorTypes,
+              [](Vertex& v, glm::vec4 a, int n) { v.color = n == 3 ? glm::vec4(glm::vec3(a), 1.0f) : a; });
+    std::vector<std::uint32_t> order;
     if (p.indices >= 0) {
         const AccessorData iv = read_accessor(m, p.indices, file, field + ".indices", TINYGLTF_TYPE_SCALAR,
                                               {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
                                               3 * limits::kTriangles);
-        mesh.indices.resize(iv.count);
+        order.resize(iv.count);
         for (std::size_t i = 0; i < iv.count; ++i) {
             const std::uint32_t v = read_index(iv.at(i), iv.component_type);
             if (v >= pv.count) {
                 fail(file, field + ".indices", "index " + std::to_string(v) + " at position " + std::to_string(i) +
                                                    " exceeds the " + std::to_string(pv.count) + " vertices");
             }
-            mesh.indices[i] = v;
+            order[i] = v;
         }
     } else {
-        mesh.indices.resize(pv.count);
-        for (std::size_t i = 0; i < pv.count; ++i) mesh.indices[i] = std::uint32_t(i);
+        order.resize(pv.count);
+        for (std::size_t i = 0; i < pv.count; ++i) order[i] = std::uint32_t(i);
     }
-    if (mesh.indices.size() % 3 != 0) fail(file, field + ".indices", "count is not a multiple of 3");
+    const int mode = p.mode == -1 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    if (mode == TINYGLTF_MODE_TRIANGLES && order.size() % 3 != 0) {
+        fail(file, field + (p.indices >= 0 ? ".indices" : ".attributes.POSITION"), "count is not a multiple of 3");
+    }
+    if (order.size() > 3 * limits::kTriangles) {
+        fail(file, field, "more than " + std::to_string(limits::kTriangles) + " triangles");
+    }
+    mesh.indices = triangles_of(mode, order);
     return mesh;
 }
 
 // ---- nodes and cameras ----------------------------------------------------------------------
 
-// A node's local transform, every number checked: glTF gives them as doubles, and one that does
-// not fit in float (a translation of 1e39) would place everything at infinity.
-glm::mat4 node_matrix(const tinygltf::Node& n, const std::filesystem::path& file, const std::string& field) {
-    auto to_float = [&](double v, const char* what) {
-        const float f = float(v);
-        if (!std::isfinite(f)) fail(file, field + "." + what, "value " + std::to_string(v) + " is not a finite float");
-        return f;
+// A node's local transform, every number checked: glTF gives them as doubles, kept as doubles
+// (transforms are composed in double), and one that does not fit in float (a translation of
+// 1e39) would place everything at infinity once rounded for drawing.
+Node read_node(const tinygltf::Node& n, const std::filesystem::path& file, const std::string& field) {
+    auto number = [&](double v, const char* what) {
+        if (!std::isfinite(float(v))) {
+            fail(file, field + "." + what, "value " + std::to_string(v) + " is not a finite float");
+        }
+        return v;
     };
+    Node node;
+    node.name = n.name.empty() ? field : n.name;
     if (!n.matrix.empty()) {
         if (n.matrix.size() != 16) fail(file, field + ".matrix", "expected 16 numbers");
-        glm::mat4 m;
-        for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = to_float(n.matrix[std::size_t(i)], "matrix");
-        return m;
+        node.has_matrix = true;
+        for (int i = 0; i < 16; ++i) glm::value_ptr(node.matrix)[i] = number(n.matrix[std::size_t(i)], "matrix");
+        return node;
     }
-    glm::mat4 m(1.0f);
     if (!n.translation.empty()) {
         if (n.translation.size() != 3) fail(file, field + ".translation", "expected 3 numbers");
-        m = glm::translate(m, glm::vec3(to_float(n.translation[0], "translation"), to_float(n.translation[1], "translation"),
-                                        to_float(n.translation[2], "translation")));
+        for (int i = 0; i < 3; ++i) node.translation[i] = number(n.translation[std::size_t(i)], "translation");
     }
     if (!n.rotation.empty()) {
         if (n.rotation.size() != 4) fail(file, field + ".rotation", "expected 4 numbers");
-        glm::quat q(to_float(n.rotation[3], "rotation"), to_float(n.rotation[0], "rotation"),
-                    to_float(n.rotation[1], "rotation"), to_float(n.rotation[2], "rotation"));
-        if (glm::length(q) == 0.0f) fail(file, field + ".rotation", "a zero quaternion is no rotation");
-        m = m * glm::mat4_cast(glm::normalize(q));
+        const glm::dquat q(number(n.rotation[3], "rotation"), number(n.rotation[0], "rotation"),
+                           number(n.rotation[1], "rotation"), number(n.rotation[2], "rotation"));
+        if (glm::length(q) == 0.0) fail(file, field + ".rotation", "a zero quaternion is no rotation");
+        node.rotation = glm::normalize(q);
     }
     if (!n.scale.empty()) {
         if (n.scale.size() != 3) fail(file, field + ".scale", "expected 3 numbers");
-        m = glm::scale(m, glm::vec3(to_float(n.scale[0], "scale"), to_float(n.scale[1], "scale"), to_float(n.scale[2], "scale")));
+        for (int i = 0; i < 3; ++i) node.scale[i] = number(n.scale[std::size_t(i)], "scale");
     }
-    return m;
+    return node;
 }
 
-Camera read_camera(const tinygltf::Model& m, int index, const glm::mat4& world, const std::filesystem::path& file,
+Camera read_camera(const tinygltf::Model& m, int index, const glm::dmat4& world, const std::filesystem::path& file,
                    const std::string& node_field) {
     if (std::size_t(index) >= m.cameras.size()) fail(file, node_field + ".camera", "index out of range");
-    if (!checks::places_things(world)) {
-        fail(file, node_field, "the camera's transform is not finite or is degenerate (determinant " +
-                                   std::to_string(checks::determinant(world)) + "): it sees nothing");
+    if (!checks::places_things(glm::mat4(world))) {
+        fail(file, node_field,
+             "the camera's transform is not finite or is degenerate (determinant " +
+                 std::to_string(checks::determinant(glm::mat4(world))) + "): it sees nothing");
     }
     const tinygltf::Camera& c = m.cameras[std::size_t(index)];
     const std::string cf = indexed("cameras", std::size_t(index));
     Camera cam;
     cam.view = glm::inverse(world);
-    if (!checks::is_finite(cam.view)) fail(file, node_field, "the camera's transform cannot be inverted in float");
+    if (!checks::is_finite(glm::mat4(cam.view))) {
+        fail(file, node_field, "the camera's transform cannot be inverted in float");
+    }
     auto finite_float = [](double v) { return std::isfinite(float(v)); };
     if (c.type == "perspective") {
-        cam.yfov = float(c.perspective.yfov);
-        cam.znear = float(c.perspective.znear);
-        cam.zfar = c.perspective.zfar > 0.0 ? float(c.perspective.zfar) : 1e6f;
-        if (!(cam.yfov > 1e-6f && cam.yfov < 3.14159f)) fail(file, cf + ".perspective.yfov", "must be in (0, pi)");
+        cam.yfov = c.perspective.yfov;
+        cam.znear = c.perspective.znear;
+        cam.zfar = c.perspective.zfar > 0.0 ? c.perspective.zfar : 1e6;
+        cam.aspect_ratio = c.perspective.aspectRatio > 0.0 && finite_float(c.perspective.aspectRatio)
+                               ? c.perspective.aspectRatio
+                               : 0.0;
+        if (!(cam.yfov > 1e-6 && cam.yfov < 3.14159)) fail(file, cf + ".perspective.yfov", "must be in (0, pi)");
         if (!finite_float(c.perspective.znear) || !finite_float(c.perspective.zfar) ||
-            !(cam.znear > 0.0f && cam.zfar > cam.znear)) {
+            !(cam.znear > 0.0 && cam.zfar > cam.znear)) {
             fail(file, cf + ".perspective", "needs finite 0 < znear < zfar");
         }
     } else if (c.type == "orthographic") {
         cam.kind = Camera::Kind::Orthographic;
-        cam.xmag = float(c.orthographic.xmag), cam.ymag = float(c.orthographic.ymag);
-        cam.znear = float(c.orthographic.znear), cam.zfar = float(c.orthographic.zfar);
-        for (const float v : {cam.xmag, cam.ymag}) {
-            if (!std::isfinite(v) || v == 0.0f || !std::isfinite(1.0f / v)) {
+        cam.xmag = c.orthographic.xmag, cam.ymag = c.orthographic.ymag;
+        cam.znear = c.orthographic.znear, cam.zfar = c.orthographic.zfar;
+        for (const double v : {cam.xmag, cam.ymag}) {
+            if (!finite_float(v) || float(v) == 0.0f || !std::isfinite(1.0f / float(v))) {
                 fail(file, cf + ".orthographic", "xmag and ymag must be finite and non-zero");
             }
         }
-        if (!std::isfinite(cam.znear) || !std::isfinite(cam.zfar) || !(cam.zfar > cam.znear) ||
-            !std::isfinite(2.0f / (cam.znear - cam.zfar))) {
+        cam.aspect_ratio = std::abs(cam.xmag / cam.ymag);
+        if (!finite_float(cam.znear) || !finite_float(cam.zfar) || !(cam.zfar > cam.znear) ||
+            !std::isfinite(2.0f / (float(cam.znear) - float(cam.zfar)))) {
             fail(file, cf + ".orthographic", "needs finite znear < zfar");
         }
     } else {
         fail(file, cf + ".type", "unknown camera type '" + c.type + "'");
     }
-    if (!checks::is_finite(cam.projection(1.0f) * cam.view)) {
+    if (!checks::is_finite(glm::mat4(cam.projection(1.0) * cam.view))) {
         fail(file, cf, "its projection of " + node_field + "'s view is not finite");
     }
     return cam;
@@ -448,9 +656,6 @@ public:
         const std::string mf = "materials[" + std::to_string(mi) + "]";
         const tinygltf::TextureInfo& base = mat.pbrMetallicRoughness.baseColorTexture;
         const std::string base_field = mf + ".pbrMetallicRoughness.baseColorTexture";
-        if (base.index >= 0 && base.texCoord != 0) {
-            fail(file_, base_field + ".texCoord", "only TEXCOORD_0 is supported, found " + std::to_string(base.texCoord));
-        }
         if (mat.extras.IsObject() && mat.extras.Has("teximage")) {
             const tinygltf::Value& v = mat.extras.Get("teximage");
             if (!v.IsString()) fail(file_, mf + ".extras.teximage", "expected a file name");
@@ -665,24 +870,32 @@ private:
     std::map<int, int> gltf_textures_;  // glTF texture index -> Scene::textures
 };
 
-// For a file without a camera: glTF's front view (looking down -Z, +Y up) at the bounding
-// sphere of everything in the scene, with a 45 degree vertical field of view.
+// For a file without a camera: a three-quarter view of glTF's front (+Z), from 30 degrees to the
+// right (+X) and 20 degrees above, +Y up, at the bounding sphere of everything in the scene (where
+// it stands before any animation), with a 45 degree field of view and an aspect ratio of 1, so
+// that the sphere shows whole at any image size (Camera::projection). Seen straight from the
+// front, a box shows one face and a flat part nothing of its depth.
 Camera framing_camera(const Scene& scene) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const Object& o : scene.objects) {
         for (const Vertex& v : scene.meshes[o.mesh].vertices) {
-            const glm::vec3 p = glm::vec3(o.world_from_object * glm::vec4(v.position, 1.0f));
+            const glm::dvec3 p = glm::dvec3(o.world_from_object * glm::dvec4(glm::dvec3(v.position), 1.0));
             lo = glm::min(lo, p), hi = glm::max(hi, p);
         }
     }
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = std::max(0.5 * glm::length(hi - lo), 1e-6);
     Camera cam;
-    cam.yfov = glm::radians(45.0f);
-    const float distance = radius / std::sin(0.5f * cam.yfov) * 1.05f;
-    cam.view = glm::lookAt(centre + glm::vec3(0.0f, 0.0f, distance), centre, glm::vec3(0.0f, 1.0f, 0.0f));
-    cam.znear = std::max(distance - 1.5f * radius, distance * 1e-3f);
-    cam.zfar = distance + 1.5f * radius;
+    cam.name = "the default camera";
+    cam.yfov = glm::radians(45.0);
+    cam.aspect_ratio = 1.0;
+    const double distance = radius / std::sin(0.5 * cam.yfov) * 1.05;
+    const double azimuth = glm::radians(30.0), elevation = glm::radians(20.0);
+    const glm::dvec3 towards_eye(std::sin(azimuth) * std::cos(elevation), std::sin(elevation),
+                                 std::cos(azimuth) * std::cos(elevation));
+    cam.view = glm::lookAt(centre + distance * towards_eye, centre, glm::dvec3(0.0, 1.0, 0.0));
+    cam.znear = std::max(distance - 1.5 * radius, distance * 1e-3);
+    cam.zfar = distance + 1.5 * radius;
     return cam;
 }
 
@@ -704,6 +917,10 @@ void read_scene_extras(const tinygltf::Value& extras, const std::filesystem::pat
         if (!t.IsNumber() || !std::isfinite(float(number_of(t)))) fail(path, field + ".time", "expected a finite number");
         scene.time = float(number_of(t));
     }
+    if (extras.Has("stretch")) {
+        if (!extras.Get("stretch").IsBool()) fail(path, field + ".stretch", "expected true or false");
+        scene.camera.stretch = extras.Get("stretch").Get<bool>();
+    }
     if (extras.Has("size")) {
         const tinygltf::Value& s = extras.Get("size");
         if (!s.IsArray() || s.ArrayLen() != 2 || !s.Get(0).IsInt() || !s.Get(1).IsInt()) {
@@ -716,6 +933,581 @@ void read_scene_extras(const tinygltf::Value& extras, const std::filesystem::pat
         }
     }
 }
+
+// ---- the scene ------------------------------------------------------------------------------
+
+// The glTF extensions quadshade implements; a file that requires another is refused.
+const std::set<std::string> kImplementedExtensions = {"KHR_texture_transform", "KHR_materials_unlit",
+                                                      "KHR_mesh_quantization", "EXT_mesh_gpu_instancing"};
+
+// The problems of a file, reported together (up to kShown of them) rather than one per run.
+class Problems {
+public:
+    explicit Problems(const std::filesystem::path& file) : file_(file) {}
+    // Runs f; a SceneError it throws is recorded, and false returned.
+    template <class F>
+    bool attempt(F&& f) {
+        try {
+            f();
+            return true;
+        } catch (const SceneError& e) {
+            add(e.what());
+            return false;
+        }
+    }
+    void add(std::string message) {
+        if (messages_.size() < kShown) messages_.push_back(std::move(message));
+        ++count_;
+    }
+    // Throws one SceneError holding them all, a line each; nothing when there are none.
+    void throw_if_any() const {
+        if (count_ == 0) return;
+        std::string all;
+        for (const std::string& m : messages_) all += (all.empty() ? "" : "\n") + m;
+        if (count_ > messages_.size()) {
+            all +=
+                "\n" + file_.string() + ": " + std::to_string(count_ - messages_.size()) + " more problems not shown";
+        }
+        throw SceneError(all);
+    }
+
+private:
+    static constexpr std::size_t kShown = 20;
+    std::filesystem::path file_;
+    std::vector<std::string> messages_;
+    std::size_t count_ = 0;
+};
+
+// One kind of warning counted over the primitives it concerns, said once:
+// "<what> on 65 primitives of 12 meshes; first: meshes[3].primitives[0]".
+class Tally {
+public:
+    void add(std::size_t mesh, const std::string& primitive) {
+        if (count_++ == 0) first_ = primitive;
+        meshes_.insert(mesh);
+    }
+    std::size_t count() const { return count_; }
+    std::string on() const {
+        return std::to_string(count_) + (count_ == 1 ? " primitive" : " primitives") + " of " +
+               std::to_string(meshes_.size()) + (meshes_.size() == 1 ? " mesh" : " meshes") + "; first: " + first_;
+    }
+
+private:
+    std::size_t count_ = 0;
+    std::set<std::size_t> meshes_;
+    std::string first_;
+};
+
+double number_in(const tinygltf::Value& v, const std::filesystem::path& file, const std::string& field) {
+    if (!v.IsNumber()) fail(file, field, "expected a number");
+    const double d = v.GetNumberAsDouble();
+    if (!std::isfinite(float(d))) fail(file, field, "not a finite float");
+    return d;
+}
+
+// KHR_texture_transform on a textureInfo: glTF's translation * rotation * scale, and the texCoord
+// it may override.
+void read_texture_transform(const tinygltf::Value& t, const std::filesystem::path& file, const std::string& field,
+                            Material& look) {
+    if (!t.IsObject()) fail(file, field, "expected an object");
+    glm::dvec2 offset(0.0), scale(1.0);
+    double rotation = 0.0;
+    auto pair = [&](const char* key, glm::dvec2& out) {
+        if (!t.Has(key)) return;
+        const tinygltf::Value& a = t.Get(key);
+        if (!a.IsArray() || a.ArrayLen() != 2) fail(file, field + "." + key, "expected 2 numbers");
+        for (int i = 0; i < 2; ++i) out[i] = number_in(a.Get(i), file, field + "." + key);
+    };
+    pair("offset", offset);
+    pair("scale", scale);
+    if (t.Has("rotation")) rotation = number_in(t.Get("rotation"), file, field + ".rotation");
+    if (t.Has("texCoord")) {
+        const tinygltf::Value& c = t.Get("texCoord");
+        if (!c.IsInt() || c.Get<int>() < 0) fail(file, field + ".texCoord", "expected a TEXCOORD_n set, n >= 0");
+        look.texcoord = c.Get<int>();
+    }
+    // Column by column. The rotation turns the image clockwise as the extension describes it
+    // (u' = c u + s v, v' = -s u + c v), as viewers and Khronos's TextureTransformTest take it: the
+    // GLSL listing in the extension's text writes its transpose.
+    const glm::dmat3 translation(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, offset.x, offset.y, 1.0);
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    const glm::dmat3 rotate(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0);
+    const glm::dmat3 scaling(scale.x, 0.0, 0.0, 0.0, scale.y, 0.0, 0.0, 0.0, 1.0);
+    look.texture_transform = translation * rotate * scaling;
+}
+
+// What the objects of one glTF material share, read once for all of them.
+struct MaterialRead {
+    bool ok = false;
+    Object proto;  // material, look, shader, textures, uniforms, double_sided
+};
+
+class SceneLoader {
+public:
+    SceneLoader(const tinygltf::Model& m, const std::filesystem::path& path, const SceneLoadOptions& options,
+                Scene& scene)
+        : m_(m),
+          path_(path),
+          options_(options),
+          scene_(scene),
+          problems_(path),
+          textures_(m, path, options.paths, scene) {}
+
+    void load() {
+        check_extensions();
+        const int scene_index = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+        if (m_.scenes.empty() || std::size_t(scene_index) >= m_.scenes.size()) {
+            fail(path_, "scenes", "no scene to render");
+        }
+        const tinygltf::Scene& gs = m_.scenes[std::size_t(scene_index)];
+        read_scene_extras(gs.extras, path_, indexed("scenes", std::size_t(scene_index)) + ".extras", scene_);
+        reached_.assign(m_.nodes.size(), -1);
+        materials_.resize(m_.materials.size());
+        material_read_.assign(m_.materials.size(), false);
+        for (int ni : gs.nodes) visit(ni, -1, glm::dmat4(1.0), 0);
+        read_animations();
+        problems_.throw_if_any();
+        if (scene_.objects.empty()) fail(path_, "nodes", "no node carries a mesh");
+        choose_camera();
+        warn();
+    }
+
+private:
+    void check_extensions() {
+        std::string unimplemented;
+        for (std::size_t i = 0; i < m_.extensionsRequired.size(); ++i) {
+            if (!kImplementedExtensions.count(m_.extensionsRequired[i])) {
+                problems_.add(path_.string() + ": extensionsRequired[" + std::to_string(i) + "]: '" +
+                              m_.extensionsRequired[i] + "' is required but not implemented (quadshade implements " +
+                              implemented_list() + ")");
+            }
+        }
+        problems_.throw_if_any();
+        for (const std::string& e : m_.extensionsUsed) {
+            if (!kImplementedExtensions.count(e)) unimplemented += (unimplemented.empty() ? "" : ", ") + e;
+        }
+        if (!unimplemented.empty()) {
+            scene_.warnings.push_back(path_.string() +
+                                      ": extensionsUsed: drawn without what these extensions add, which "
+                                      "quadshade does not implement: " +
+                                      unimplemented);
+        }
+    }
+
+    static std::string implemented_list() {
+        std::string list;
+        for (const std::string& e : kImplementedExtensions) list += (list.empty() ? "" : ", ") + e;
+        return list;
+    }
+
+    void visit(int ni, int parent, const glm::dmat4& parent_world, int depth) {
+        if (ni < 0 || std::size_t(ni) >= m_.nodes.size()) {
+            fail(path_, "nodes", "node index " + std::to_string(ni) + " out of range");
+        }
+        const std::string node_field = indexed("nodes", std::size_t(ni));
+        if (reached_[std::size_t(ni)] >= 0) {
+            fail(path_, node_field, "is reached twice (a cycle, or a child of two parents): glTF nodes form trees");
+        }
+        if (depth > limits::kNodeDepth) {
+            fail(path_, node_field,
+                 "lies deeper than " + std::to_string(limits::kNodeDepth) + " levels below the scene's root");
+        }
+        const tinygltf::Node& n = m_.nodes[std::size_t(ni)];
+        Node node = read_node(n, path_, node_field);
+        node.parent = parent;
+        const int index = int(scene_.nodes.size());
+        reached_[std::size_t(ni)] = index;
+        scene_.nodes.push_back(node);
+        const glm::dmat4 world = parent_world * node.local();
+        if (!checks::is_finite(glm::mat4(world))) {
+            fail(path_, node_field, "its world transform is not finite (too large for float)");
+        }
+        if (n.camera >= 0) cameras_.push_back({ni, index, n.camera, world});
+        if (n.skin >= 0) ++skinned_nodes_;
+        if (n.mesh >= 0) place_mesh(n, ni, index, world);
+        for (int child : n.children) visit(child, index, world, depth + 1);
+    }
+
+    // The objects node `ni` draws: one per primitive, or per primitive and instance.
+    void place_mesh(const tinygltf::Node& n, int ni, int node, const glm::dmat4& world) {
+        const std::string node_field = indexed("nodes", std::size_t(ni));
+        if (std::size_t(n.mesh) >= m_.meshes.size()) fail(path_, node_field + ".mesh", "index out of range");
+        std::vector<glm::dmat4> instances = {glm::dmat4(1.0)};
+        if (const auto it = n.extensions.find("EXT_mesh_gpu_instancing"); it != n.extensions.end()) {
+            if (!problems_.attempt([&] {
+                    instances = read_instances(it->second, node_field + ".extensions.EXT_mesh_gpu_instancing");
+                })) {
+                return;
+            }
+        }
+        const tinygltf::Mesh& gm = m_.meshes[std::size_t(n.mesh)];
+        for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
+            const tinygltf::Primitive& p = gm.primitives[pi];
+            const std::string field = "meshes[" + std::to_string(n.mesh) + "].primitives[" + std::to_string(pi) + "]";
+            if (!is_triangles(p.mode)) {
+                if (p.mode >= TINYGLTF_MODE_POINTS && p.mode <= TINYGLTF_MODE_LINE_STRIP) {
+                    points_and_lines_.add(std::size_t(n.mesh), field + " (mode " + std::to_string(p.mode) + ")");
+                } else {
+                    problems_.add(path_.string() + ": " + field + ".mode: unknown primitive mode " +
+                                  std::to_string(p.mode));
+                }
+                continue;
+            }
+            if (!p.targets.empty()) morphed_.add(std::size_t(n.mesh), field);
+            const MaterialRead* material = material_of(p.material, field);
+            if (!material) continue;
+            const auto key = std::make_pair(std::size_t(n.mesh), pi);
+            if (!mesh_of_.count(key)) {
+                const int set1 = material->proto.look.texcoord >= 2 ? material->proto.look.texcoord : 1;
+                Mesh mesh;
+                if (!problems_.attempt([&] {
+                        mesh = read_primitive(m_, std::size_t(n.mesh), pi, path_, limits::kVertices - vertices_, set1);
+                    })) {
+                    mesh_of_[key] = -1;
+                    continue;
+                }
+                mesh_of_[key] = int(scene_.meshes.size());
+                vertices_ += mesh.vertices.size();
+                scene_.meshes.push_back(std::move(mesh));
+            }
+            if (mesh_of_[key] < 0) continue;
+            for (std::size_t i = 0; i < instances.size(); ++i) {
+                Object o = material->proto;
+                o.name = n.name.empty() ? node_field : n.name;
+                if (instances.size() > 1) o.name += " instance " + std::to_string(i);
+                o.mesh = std::size_t(mesh_of_[key]);
+                o.node = node;
+                o.instance = instances[i];
+                o.world_from_object = world * instances[i];
+                if (!checks::places_things(glm::mat4(o.world_from_object))) {
+                    fail(path_, node_field,
+                         "its world transform is degenerate (determinant " +
+                             std::to_string(checks::determinant(glm::mat4(o.world_from_object))) +
+                             (instances.size() > 1 ? ") for instance " + std::to_string(i) : ")") +
+                             ": its mesh would be invisible");
+                }
+                triangles_ += scene_.meshes[o.mesh].indices.size() / 3;
+                if (triangles_ > limits::kTriangles || scene_.objects.size() >= limits::kObjects) {
+                    fail(path_, node_field,
+                         "the scene draws more than " + std::to_string(limits::kTriangles) + " triangles or " +
+                             std::to_string(limits::kObjects) + " objects");
+                }
+                scene_.objects.push_back(std::move(o));
+            }
+        }
+    }
+
+    // EXT_mesh_gpu_instancing: each instance's T * R * S from its attributes (any may be absent).
+    std::vector<glm::dmat4> read_instances(const tinygltf::Value& ext, const std::string& field) {
+        if (!ext.IsObject() || !ext.Has("attributes") || !ext.Get("attributes").IsObject()) {
+            fail(path_, field, "expected an object with attributes");
+        }
+        const tinygltf::Value& attributes = ext.Get("attributes");
+        std::optional<std::size_t> count;
+        auto read = [&](const char* name, int type, std::initializer_list<Component> kinds) -> Floats {
+            if (!attributes.Has(name)) return {};
+            const tinygltf::Value& a = attributes.Get(name);
+            if (!a.IsInt()) fail(path_, field + ".attributes." + name, "expected an accessor index");
+            Floats f =
+                read_floats(m_, a.Get<int>(), path_, field + ".attributes." + name, {type}, kinds, limits::kObjects);
+            if (count && *count != f.count) {
+                fail(path_, field + ".attributes." + name, "count differs from the other attributes'");
+            }
+            count = f.count;
+            return f;
+        };
+        const Floats t = read("TRANSLATION", TINYGLTF_TYPE_VEC3, kPositionTypes);
+        const Floats r = read("ROTATION", TINYGLTF_TYPE_VEC4, kRotationTypes);
+        const Floats s = read("SCALE", TINYGLTF_TYPE_VEC3, kPositionTypes);
+        if (!count) fail(path_, field + ".attributes", "none of TRANSLATION, ROTATION, SCALE");
+        std::vector<glm::dmat4> instances(*count, glm::dmat4(1.0));
+        for (std::size_t i = 0; i < *count; ++i) {
+            Node local;
+            if (t.count) local.translation = glm::dvec3(glm::vec3(t.at(i)));
+            if (r.count) {
+                const glm::vec4 q = r.at(i);
+                const glm::dquat dq(q.w, q.x, q.y, q.z);
+                if (glm::length(dq) == 0.0) {
+                    fail(path_, field + ".attributes.ROTATION",
+                         "instance " + std::to_string(i) + " is a zero quaternion");
+                }
+                local.rotation = glm::normalize(dq);
+            }
+            if (s.count) local.scale = glm::dvec3(glm::vec3(s.at(i)));
+            instances[i] = local.local();
+        }
+        return instances;
+    }
+
+    // Material `mi` as its objects share it, read once; nullptr where it is bad (recorded). A
+    // primitive without a material gets glTF's default one (white, opaque, single-sided).
+    const MaterialRead* material_of(int mi, const std::string& primitive) {
+        if (mi < 0) {
+            no_material_.ok = true;
+            no_material_.proto.material = primitive + " (no material)";
+            return &no_material_;
+        }
+        if (std::size_t(mi) >= m_.materials.size()) {
+            problems_.add(path_.string() + ": " + primitive + ".material: index " + std::to_string(mi) +
+                          " out of range");
+            return nullptr;
+        }
+        MaterialRead& r = materials_[std::size_t(mi)];
+        if (!material_read_[std::size_t(mi)]) {
+            material_read_[std::size_t(mi)] = true;
+            r.ok = problems_.attempt([&] { r.proto = read_material(mi); });
+        }
+        return r.ok ? &r : nullptr;
+    }
+
+    // extras.glsl: "FRAG" or {"fragment": "FRAG", "vertex": "VERT"}, files beside the scene.
+    void read_glsl_files(const tinygltf::Value& v, const std::string& field, Object& o) {
+        if (!o.shader.empty()) fail(path_, field, "the material names a shader too (extras.shader): give one of them");
+        auto file = [&](const tinygltf::Value& name, const std::string& f) {
+            if (!name.IsString() || name.Get<std::string>().empty()) fail(path_, f, "expected a GLSL file name");
+            std::filesystem::path resolved;
+            try {
+                resolved = resolve_scene_uri(path_, name.Get<std::string>(), options_.paths);
+            } catch (const SceneError& e) {
+                fail(path_, f, e.what());
+            }
+            scene_.inputs.push_back(resolved);
+            return resolved;
+        };
+        if (v.IsString()) {
+            o.glsl_fragment = file(v, field);
+            return;
+        }
+        if (!v.IsObject() || !v.Has("fragment")) fail(path_, field, "expected a file name or {\"fragment\": FRAG, \"vertex\": VERT}");
+        for (const std::string& key : v.Keys()) {
+            if (key != "fragment" && key != "vertex") fail(path_, field + "." + key, "unknown field (fragment, vertex)");
+        }
+        o.glsl_fragment = file(v.Get("fragment"), field + ".fragment");
+        if (v.Has("vertex")) o.glsl_vertex = file(v.Get("vertex"), field + ".vertex");
+    }
+
+    Object read_material(int mi) {
+        const tinygltf::Material& gmat = m_.materials[std::size_t(mi)];
+        const std::string mf = indexed("materials", std::size_t(mi));
+        Object o;
+        o.material = gmat.name.empty() ? mf : "'" + gmat.name + "' (" + mf + ")";
+        o.double_sided = gmat.doubleSided;
+        if (gmat.extras.IsObject() && gmat.extras.Has("shader")) {
+            if (!gmat.extras.Get("shader").IsString()) fail(path_, mf + ".extras.shader", "expected a shader name");
+            o.shader = gmat.extras.Get("shader").Get<std::string>();
+        }
+        if (gmat.extras.IsObject() && gmat.extras.Has("glsl")) read_glsl_files(gmat.extras.Get("glsl"), mf + ".extras.glsl", o);
+        Material& look = o.look;
+        const tinygltf::PbrMetallicRoughness& pbr = gmat.pbrMetallicRoughness;
+        if (pbr.baseColorFactor.size() != 4) {
+            fail(path_, mf + ".pbrMetallicRoughness.baseColorFactor", "expected 4 numbers");
+        }
+        for (int i = 0; i < 4; ++i) {
+            const double f = pbr.baseColorFactor[std::size_t(i)];
+            if (!std::isfinite(float(f))) fail(path_, mf + ".pbrMetallicRoughness.baseColorFactor", "not finite");
+            look.base_color_factor[i] = f;
+        }
+        const tinygltf::TextureInfo& base = pbr.baseColorTexture;
+        if (base.index >= 0) {
+            const std::string bf = mf + ".pbrMetallicRoughness.baseColorTexture";
+            if (base.texCoord < 0) fail(path_, bf + ".texCoord", "expected a TEXCOORD_n set, n >= 0");
+            look.texcoord = base.texCoord;
+            if (const auto t = base.extensions.find("KHR_texture_transform"); t != base.extensions.end()) {
+                read_texture_transform(t->second, path_, bf + ".extensions.KHR_texture_transform", look);
+            }
+        }
+        if (gmat.alphaMode == "MASK") {
+            look.alpha_mode = AlphaMode::Mask;
+        } else if (gmat.alphaMode == "BLEND") {
+            look.alpha_mode = AlphaMode::Blend;
+        } else if (gmat.alphaMode != "OPAQUE") {
+            fail(path_, mf + ".alphaMode", "'" + gmat.alphaMode + "' is none of OPAQUE, MASK, BLEND");
+        }
+        if (!std::isfinite(float(gmat.alphaCutoff)) || gmat.alphaCutoff < 0.0) {
+            fail(path_, mf + ".alphaCutoff", "expected a number >= 0");
+        }
+        look.alpha_cutoff = gmat.alphaCutoff;
+        look.unlit = gmat.extensions.count("KHR_materials_unlit") > 0;
+        o.texture = textures_.of_material(mi);
+        textures_.named_of_material(mi, o);
+        if (gmat.extras.IsObject() && gmat.extras.Has("uniforms")) {
+            o.uniforms = read_uniforms(gmat.extras.Get("uniforms"), path_, mf + ".extras.uniforms");
+        }
+        return o;
+    }
+
+    void read_animations() {
+        for (std::size_t ai = 0; ai < m_.animations.size(); ++ai) {
+            const tinygltf::Animation& a = m_.animations[ai];
+            for (std::size_t ci = 0; ci < a.channels.size(); ++ci) {
+                problems_.attempt([&] { read_channel(a, ai, ci); });
+            }
+        }
+        if (scene_.channels.empty()) return;
+        // Only what moves needs the node graph at each frame; the camera's node too, if it moves.
+    }
+
+    void read_channel(const tinygltf::Animation& a, std::size_t ai, std::size_t ci) {
+        const tinygltf::AnimationChannel& ch = a.channels[ci];
+        const std::string cf = "animations[" + std::to_string(ai) + "].channels[" + std::to_string(ci) + "]";
+        if (ch.target_path == "weights") {
+            ++weight_channels_;
+            return;
+        }
+        Channel c;
+        if (ch.target_path == "translation") {
+            c.path = Channel::Path::Translation;
+        } else if (ch.target_path == "rotation")
+            c.path = Channel::Path::Rotation;
+        else if (ch.target_path == "scale") {
+            c.path = Channel::Path::Scale;
+        } else {
+            fail(path_, cf + ".target.path",
+                 "'" + ch.target_path + "' is none of translation, rotation, scale, weights");
+        }
+        // An extension's target (KHR_animation_pointer): warned as an unimplemented extension.
+        if (ch.target_node < 0) return;
+        if (std::size_t(ch.target_node) >= m_.nodes.size()) fail(path_, cf + ".target.node", "index out of range");
+        const int node = reached_[std::size_t(ch.target_node)];
+        if (node < 0) return;  // a node the scene does not show
+        if (scene_.nodes[std::size_t(node)].has_matrix) {
+            fail(path_, cf + ".target.node",
+                 "nodes[" + std::to_string(ch.target_node) +
+                     "] has a matrix: glTF animates only "
+                     "nodes given by translation, rotation and scale");
+        }
+        c.node = node;
+        if (ch.sampler < 0 || std::size_t(ch.sampler) >= a.samplers.size()) {
+            fail(path_, cf + ".sampler", "index out of range");
+        }
+        const tinygltf::AnimationSampler& s = a.samplers[std::size_t(ch.sampler)];
+        const std::string sf = "animations[" + std::to_string(ai) + "].samplers[" + std::to_string(ch.sampler) + "]";
+        if (s.interpolation == "LINEAR") {
+            c.interpolation = Channel::Interpolation::Linear;
+        } else if (s.interpolation == "STEP")
+            c.interpolation = Channel::Interpolation::Step;
+        else if (s.interpolation == "CUBICSPLINE") {
+            c.interpolation = Channel::Interpolation::CubicSpline;
+        } else {
+            fail(path_, sf + ".interpolation", "'" + s.interpolation + "' is none of LINEAR, STEP, CUBICSPLINE");
+        }
+        const Floats times =
+            read_floats(m_, s.input, path_, sf + ".input", {TINYGLTF_TYPE_SCALAR}, kFloatOnly, limits::kVertices);
+        if (times.count == 0) fail(path_, sf + ".input", "no keyframes");
+        for (std::size_t k = 0; k < times.count; ++k) {
+            if (k > 0 && !(times.values[k] > times.values[k - 1])) {
+                fail(path_, sf + ".input", "keyframe times must increase (time " + std::to_string(k) + ")");
+            }
+            c.times.push_back(times.values[k]);
+        }
+        const bool cubic = c.interpolation == Channel::Interpolation::CubicSpline;
+        if (cubic && times.count < 2) fail(path_, sf, "CUBICSPLINE needs at least two keyframes");
+        const Floats values =
+            read_floats(m_, s.output, path_, sf + ".output",
+                        {c.path == Channel::Path::Rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3},
+                        c.path == Channel::Path::Rotation ? kRotationTypes : kPositionTypes, 3 * limits::kVertices);
+        if (values.count != times.count * (cubic ? 3 : 1)) {
+            fail(path_, sf + ".output",
+                 std::to_string(values.count) + " values for " + std::to_string(times.count) + " keyframes (" +
+                     (cubic ? "CUBICSPLINE keeps 3 per keyframe" : "one per keyframe") + ")");
+        }
+        c.values.assign(values.values.begin(), values.values.end());
+        scene_.channels.push_back(std::move(c));
+    }
+
+    // The camera --camera names (a camera node's name, a camera's name, or an index into
+    // cameras[]), else the first camera node in the scene's order, else the default camera.
+    void choose_camera() {
+        const bool stretch = scene_.camera.stretch;  // the scene's extras
+        choose_camera_node();
+        scene_.camera.stretch = stretch;
+    }
+
+    void choose_camera_node() {
+        const std::string& wanted = options_.camera;
+        const CameraNode* chosen = cameras_.empty() ? nullptr : &cameras_.front();
+        if (!wanted.empty()) {
+            chosen = nullptr;
+            const bool is_index = !wanted.empty() && std::all_of(wanted.begin(), wanted.end(), [](char ch) {
+                return std::isdigit(static_cast<unsigned char>(ch));
+            });
+            for (const CameraNode& c : cameras_) {
+                const tinygltf::Node& n = m_.nodes[std::size_t(c.gltf_node)];
+                const bool match = is_index ? wanted.size() < 10 && c.camera == std::stoi(wanted)
+                                            : n.name == wanted || m_.cameras[std::size_t(c.camera)].name == wanted;
+                if (match) {
+                    chosen = &c;
+                    break;
+                }
+            }
+            if (!chosen) {
+                std::string list;
+                for (const CameraNode& c : cameras_) {
+                    const std::string& name = m_.nodes[std::size_t(c.gltf_node)].name;
+                    list += (list.empty() ? "" : ", ") + std::to_string(c.camera) +
+                            (name.empty() ? "" : " '" + name + "'") + " (nodes[" + std::to_string(c.gltf_node) + "])";
+                }
+                throw CameraOptionError(path_.string() + ": --camera " + wanted +
+                                 ": no camera node of that name or cameras[] index" +
+                                 (list.empty() ? " (the file has no camera)" : "; the file's cameras: " + list));
+            }
+        }
+        if (!chosen) {
+            scene_.camera = framing_camera(scene_);
+            if (!checks::is_finite(glm::mat4(scene_.camera.projection(1.0) * scene_.camera.view))) {
+                fail(path_, "nodes", "the scene has no camera and its bounds are too large to frame in float");
+            }
+            return;
+        }
+        const std::string node_field = indexed("nodes", std::size_t(chosen->gltf_node));
+        scene_.camera = read_camera(m_, chosen->camera, chosen->world, path_, node_field);
+        const tinygltf::Node& n = m_.nodes[std::size_t(chosen->gltf_node)];
+        scene_.camera.name = n.name.empty() ? node_field : n.name;
+        scene_.camera_node = chosen->node;
+    }
+
+    void warn() {
+        const std::string file = path_.string() + ": ";
+        if (points_and_lines_.count()) {
+            scene_.warnings.push_back(file + "points and lines are not drawn: skipped " + points_and_lines_.on());
+        }
+        if (morphed_.count()) {
+            scene_.warnings.push_back(file + "morph targets are not applied (drawn as the base mesh): " +
+                                      morphed_.on());
+        }
+        if (skinned_nodes_) {
+            scene_.warnings.push_back(file + std::to_string(skinned_nodes_) +
+                                      " skinned nodes are drawn unskinned, as their meshes stand without their joints");
+        }
+        if (weight_channels_) {
+            scene_.warnings.push_back(file + std::to_string(weight_channels_) +
+                                      " animation channels of morph target weights are not played");
+        }
+    }
+
+    struct CameraNode {
+        int gltf_node;  // nodes[]
+        int node;       // Scene::nodes
+        int camera;     // cameras[]
+        glm::dmat4 world;
+    };
+
+    const tinygltf::Model& m_;
+    const std::filesystem::path& path_;
+    const SceneLoadOptions& options_;
+    Scene& scene_;
+    Problems problems_;
+    TextureReader textures_;
+    std::vector<int> reached_;  // per glTF node: its Scene::nodes index, -1 until reached
+    std::vector<MaterialRead> materials_;
+    std::vector<bool> material_read_;
+    MaterialRead no_material_;
+    std::map<std::pair<std::size_t, std::size_t>, int> mesh_of_;  // (mesh, primitive) -> Scene::meshes, -1 if bad
+    std::vector<CameraNode> cameras_;
+    std::uint64_t vertices_ = 0, triangles_ = 0;
+    Tally points_and_lines_, morphed_;
+    std::size_t skinned_nodes_ = 0, weight_channels_ = 0;
+};
 
 }  // namespace
 
@@ -758,92 +1550,7 @@ Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::p
         throw SceneError(path.string() + ": not a valid glTF file: " + what);
     }
     check_buffer_views(m, path);
-    // glTF: a loader must refuse a file that requires an extension it does not implement.
-    for (std::size_t i = 0; i < m.extensionsRequired.size(); ++i) {
-        fail(path, "extensionsRequired[" + std::to_string(i) + "]",
-             "'" + m.extensionsRequired[i] + "' is required but not supported (quadshade implements no extension)");
-    }
-
-    const int scene_index = m.defaultScene >= 0 ? m.defaultScene : 0;
-    if (m.scenes.empty() || std::size_t(scene_index) >= m.scenes.size()) fail(path, "scenes", "no scene to render");
-    const tinygltf::Scene& gs = m.scenes[std::size_t(scene_index)];
-    read_scene_extras(gs.extras, path, indexed("scenes", std::size_t(scene_index)) + ".extras", scene);
-
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mesh_of;  // (mesh, primitive) -> Scene::meshes
-    TextureReader textures(m, path, options.paths, scene);
-    std::vector<bool> reached(m.nodes.size(), false);
-    std::uint64_t vertices = 0, triangles = 0;
-    bool have_camera = false;
-    std::function<void(int, const glm::mat4&, int)> visit = [&](int ni, const glm::mat4& parent, int depth) {
-        if (ni < 0 || std::size_t(ni) >= m.nodes.size()) fail(path, "nodes", "node index " + std::to_string(ni) + " out of range");
-        const std::string node_field = indexed("nodes", std::size_t(ni));
-        if (reached[std::size_t(ni)]) {
-            fail(path, node_field, "is reached twice (a cycle, or a child of two parents): glTF nodes form trees");
-        }
-        reached[std::size_t(ni)] = true;
-        if (depth > limits::kNodeDepth) {
-            fail(path, node_field, "lies deeper than " + std::to_string(limits::kNodeDepth) + " levels below the scene's root");
-        }
-        const tinygltf::Node& n = m.nodes[std::size_t(ni)];
-        const glm::mat4 world = parent * node_matrix(n, path, node_field);
-        if (!checks::is_finite(world)) fail(path, node_field, "its world transform is not finite (too large for float)");
-        if (n.camera >= 0 && !have_camera) {
-            scene.camera = read_camera(m, n.camera, world, path, node_field);
-            have_camera = true;
-        }
-        if (n.mesh >= 0) {
-            if (std::size_t(n.mesh) >= m.meshes.size()) fail(path, node_field + ".mesh", "index out of range");
-            if (!checks::places_things(world)) {
-                fail(path, node_field, "its world transform is degenerate (determinant " +
-                                           std::to_string(checks::determinant(world)) + "): its mesh would be invisible");
-            }
-            const tinygltf::Mesh& gm = m.meshes[std::size_t(n.mesh)];
-            for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
-                const auto key = std::make_pair(std::size_t(n.mesh), pi);
-                if (!mesh_of.count(key)) {
-                    mesh_of[key] = scene.meshes.size();
-                    scene.meshes.push_back(read_primitive(m, std::size_t(n.mesh), pi, path, limits::kVertices - vertices));
-                    vertices += scene.meshes.back().vertices.size();
-                }
-                Object o;
-                o.name = n.name.empty() ? node_field : n.name;
-                o.mesh = mesh_of[key];
-                o.world_from_object = world;
-                triangles += scene.meshes[o.mesh].indices.size() / 3;
-                if (triangles > limits::kTriangles || scene.objects.size() >= limits::kObjects) {
-                    fail(path, node_field, "the scene draws more than " + std::to_string(limits::kTriangles) +
-                                               " triangles or " + std::to_string(limits::kObjects) + " objects");
-                }
-                const int mat = gm.primitives[pi].material;
-                if (mat >= 0) {
-                    if (std::size_t(mat) >= m.materials.size()) fail(path, "meshes[" + std::to_string(n.mesh) + "].material", "index out of range");
-                    const tinygltf::Material& gmat = m.materials[std::size_t(mat)];
-                    const std::string mf = "materials[" + std::to_string(mat) + "].extras";
-                    o.material = gmat.name.empty() ? "materials[" + std::to_string(mat) + "]" : gmat.name;
-                    o.double_sided = gmat.doubleSided;
-                    if (gmat.extras.IsObject() && gmat.extras.Has("shader")) {
-                        if (!gmat.extras.Get("shader").IsString()) fail(path, mf + ".shader", "expected a shader name");
-                        o.shader = gmat.extras.Get("shader").Get<std::string>();
-                    }
-                    o.texture = textures.of_material(mat);
-                    textures.named_of_material(mat, o);
-                    if (gmat.extras.IsObject() && gmat.extras.Has("uniforms")) {
-                        o.uniforms = read_uniforms(gmat.extras.Get("uniforms"), path, mf + ".uniforms");
-                    }
-                }
-                scene.objects.push_back(o);
-            }
-        }
-        for (int child : n.children) visit(child, world, depth + 1);
-    };
-    for (int ni : gs.nodes) visit(ni, glm::mat4(1.0f), 0);
-    if (scene.objects.empty()) fail(path, "nodes", "no node carries a mesh");
-    if (!have_camera) {
-        scene.camera = framing_camera(scene);
-        if (!checks::is_finite(scene.camera.projection(1.0f) * scene.camera.view)) {
-            fail(path, "nodes", "the scene has no camera and its bounds are too large to frame in float");
-        }
-    }
+    SceneLoader(m, path, options, scene).load();
     return scene;
 }
 
@@ -930,7 +1637,16 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
         tinygltf::Material mat;
         mat.name = o.name;
         mat.doubleSided = o.double_sided;
-        tinygltf::Value::Object extras{{"shader", tinygltf::Value(o.shader)}};
+        tinygltf::Value::Object extras;
+        if (!o.shader.empty()) extras["shader"] = tinygltf::Value(o.shader);
+        if (!o.glsl_fragment.empty()) {
+            auto beside = [&](const std::filesystem::path& f) {
+                return tinygltf::Value(std::filesystem::relative(f, path.parent_path()).generic_string());
+            };
+            tinygltf::Value::Object glsl{{"fragment", beside(o.glsl_fragment)}};
+            if (!o.glsl_vertex.empty()) glsl["vertex"] = beside(o.glsl_vertex);
+            extras["glsl"] = tinygltf::Value(glsl);
+        }
         if (!o.uniforms.empty()) {
             tinygltf::Value::Object uniforms;
             for (const UniformSetting& u : o.uniforms) {
@@ -944,7 +1660,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
             }
             extras["uniforms"] = tinygltf::Value(std::move(uniforms));
         }
-        mat.extras = tinygltf::Value(std::move(extras));
+        if (!extras.empty()) mat.extras = tinygltf::Value(std::move(extras));
         mat.pbrMetallicRoughness.baseColorTexture.index = o.texture;
         if (!o.samplers.empty()) {
             tinygltf::Value::Object named;
@@ -958,7 +1674,8 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
                                                                               {"wrapR", tinygltf::Value(int(t.sampler.wrap_r))}});
                 }
             }
-            tinygltf::Value::Object extras = mat.extras.Get<tinygltf::Value::Object>();
+            tinygltf::Value::Object extras =
+                mat.extras.IsObject() ? mat.extras.Get<tinygltf::Value::Object>() : tinygltf::Value::Object{};
             extras["textures"] = tinygltf::Value(named);
             mat.extras = tinygltf::Value(extras);
         }
@@ -1024,17 +1741,20 @@ void save_scene(const Scene& scene, const std::filesystem::path& path, std::span
     tinygltf::Node cn;
     cn.name = "camera";
     cn.camera = 0;
-    const glm::mat4 world_from_view = glm::inverse(scene.camera.view);
+    // Inverted in float, as the scenes written so far were: the shipped files stay as they are.
+    const glm::mat4 world_from_view = glm::inverse(glm::mat4(scene.camera.view));
     cn.matrix.assign(glm::value_ptr(world_from_view), glm::value_ptr(world_from_view) + 16);
     m.nodes.push_back(cn);
     gs.nodes.insert(gs.nodes.begin(), int(m.nodes.size() - 1));
 
     tinygltf::Value::Array clear;
     for (int i = 0; i < 4; ++i) clear.push_back(tinygltf::Value(double(scene.clear_color[i])));
-    gs.extras = tinygltf::Value(tinygltf::Value::Object{
+    tinygltf::Value::Object scene_extras{
         {"clear_color", tinygltf::Value(clear)},
         {"time", tinygltf::Value(double(scene.time))},
-        {"size", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(scene.width), tinygltf::Value(scene.height)})}});
+        {"size", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(scene.width), tinygltf::Value(scene.height)})}};
+    if (scene.camera.stretch) scene_extras["stretch"] = tinygltf::Value(true);
+    gs.extras = tinygltf::Value(std::move(scene_extras));
     m.scenes.push_back(gs);
     m.defaultScene = 0;
 

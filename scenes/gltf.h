@@ -1,9 +1,15 @@
 #pragma once
 // glTF 2.0 scenes through tinygltf (the only file that includes it is gltf.cpp).
 //
-// quadshade's conventions, all inside standard glTF:
-//  - each mesh primitive (TRIANGLES, POSITION required, TEXCOORD_0 optional) is drawn with the
-//    shader its material names: materials[i].extras = { "shader": "flow_noise" };
+// What is read, all of it standard glTF 2.0 (docs/scenes.md has the details):
+//  - each mesh primitive of triangles (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN; points and lines
+//    are skipped with a warning) with POSITION, and NORMAL, COLOR_0 and TEXCOORD_n where given,
+//    as floats or the normalized and quantized integers glTF and KHR_mesh_quantization allow;
+//  - each primitive is drawn with the shader its material names, materials[i].extras =
+//    { "shader": "flow_noise" }, or where it names none (or has no material) with the default
+//    material (shading/shaders/gltf_material.h): glTF's base colour (baseColorFactor x the
+//    baseColorTexture on its texCoord, with its sampler and KHR_texture_transform, x COLOR_0),
+//    alphaMode and alphaCutoff, KHR_materials_unlit;
 //  - the shaders' `teximage` is the material's pbrMetallicRoughness.baseColorTexture (an image
 //    file, a data: URI or a bufferView, with its sampler), or the file extras.teximage names
 //    (relative to the .gltf; it keeps the baseColorTexture's sampler, if any);
@@ -20,9 +26,17 @@
 //        "wrapR": 33071 }        the r axis's wrap (3D only; glTF has none): REPEAT by default;
 //    "teximage" may be bound this way too (instead of baseColorTexture; not with extras.teximage).
 //    Volumes are 8-bit images (PNG), as a GL_RGBA8 3D texture holds them;
-//  - the camera is the first node with a camera, in the default scene's node order; a file
-//    without one is seen from the front (down -Z, +Y up), framing its bounding sphere;
-//  - scenes[i].extras = { "clear_color": [r, g, b, a], "time": t, "size": [w, h] } (all optional).
+//  - nodes with EXT_mesh_gpu_instancing draw their mesh once per instance; animations of node
+//    translation, rotation and scale (LINEAR, STEP, CUBICSPLINE) are kept for Scene::pose;
+//  - the camera is the one SceneLoadOptions::camera names, else the first node with a camera in
+//    the default scene's node order; a file without one is seen from the front (+Z) turned 30
+//    degrees to +X and raised 20 degrees, +Y up, framing its bounding sphere;
+//  - scenes[i].extras = { "clear_color": [r, g, b, a], "time": t, "size": [w, h], "stretch": true }
+//    (all optional; stretch: an orthographic camera's view box fills the image, Camera::stretch);
+//  - extensions: KHR_texture_transform, KHR_materials_unlit, KHR_mesh_quantization and
+//    EXT_mesh_gpu_instancing are implemented; a file that requires another is refused, and one
+//    that merely uses another is drawn without it, with a warning (Scene::warnings).
+// Bad materials, accessors and textures are reported together, up to 20 in one SceneError.
 // Shaders see the untransformed POSITION as gl_Vertex, the node's world matrix in the MVP.
 
 #include <filesystem>
@@ -39,6 +53,17 @@ namespace qs {
 
 struct SceneLoadOptions {
     ScenePathPolicy paths;  // which files the scene may read besides itself
+    // The camera to render from: a camera node's name, a camera's name, or an index into the
+    // file's cameras[] (the first node placing it); empty for the first camera node in the
+    // scene's order, or the default camera of a file without one.
+    std::string camera;
+};
+
+// A SceneLoadOptions::camera that names none of the file's cameras: the command line's fault (bad
+// usage, exit 2), where a SceneError is the file's.
+class CameraOptionError : public SceneError {
+public:
+    using SceneError::SceneError;
 };
 
 // Throws SceneError naming the file and the field at fault. Everything scenes/limits.h bounds is

@@ -1,7 +1,7 @@
-// The one file that includes OpenImageIO.
+// Image files: every decision about them is here; OpenImageIO's calls are in
+// openimageio_library.cpp, behind image_library.h.
 #include "scenes/image_io.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,13 +9,11 @@
 #include <cmath>
 #include <iterator>
 #include <memory>
+#include <thread>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-
+#include "modules/module_loader.h"
 #include "scenes/image_checks.h"
+#include "scenes/image_library.h"
 #include "scenes/limits.h"
 #include "scenes/scene.h"
 #include "scenes/scene_files.h"
@@ -23,14 +21,24 @@
 
 namespace qs {
 
-namespace {
+namespace image_library {
 
-OIIO::ImageBuf to_buf(const Image& img) {
-    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::FLOAT);
-    OIIO::ImageBuf buf(spec);
-    buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, img.rgba.data());
-    return buf;
+const Library& library() {
+    static const Library* const library = [] {
+        try {
+            using Entry = const Library* (*)();
+            return reinterpret_cast<Entry>(load_module({"openimageio", "OpenImageIO", "to read and write images",
+                                                        "quadshade_image_library"}))();
+        } catch (const ModuleError& e) {
+            throw ImageError(e.what());
+        }
+    }();
+    return *library;
 }
+
+}  // namespace image_library
+
+namespace {
 
 std::string lowercase_extension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
@@ -40,20 +48,14 @@ std::string lowercase_extension(const std::filesystem::path& path) {
 
 std::string size_text(std::int64_t width, std::int64_t height) { return std::to_string(width) + "x" + std::to_string(height); }
 
-// OpenImageIO writes through this into the temporary file: every write goes straight to the
-// file descriptor, and a short or failed one is recorded, so that commit() refuses a file that
-// is missing bytes (a full disk) whatever the format's writer made of the failure.
-class TemporaryFileProxy final : public OIIO::Filesystem::IOProxy {
+// The encoder's bytes go straight into the temporary file's descriptor, and a short or failed
+// write is recorded, so that commit() refuses a file that is missing bytes (a full disk) whatever
+// the format's writer made of the failure.
+class TemporaryFileSink final : public image_library::ByteSink {
 public:
-    explicit TemporaryFileProxy(TemporaryFile& file) : IOProxy(file.path().string(), Write), file_(file) {}
-    const char* proxytype() const override { return "quadshade-temporary-file"; }
-    size_t write(const void* buf, size_t size) override {
-        const size_t n = pwrite(buf, size, m_pos);
-        m_pos += std::int64_t(n);
-        return n;
-    }
-    size_t pwrite(const void* buf, size_t size, int64_t offset) override {
-        size_t done = 0;
+    explicit TemporaryFileSink(TemporaryFile& file) : file_(file) {}
+    std::size_t write_at(const void* buf, std::size_t size, std::int64_t offset) override {
+        std::size_t done = 0;
         while (done < size) {
             const ssize_t n = ::pwrite(file_.fd(), static_cast<const char*>(buf) + done, size - done, offset + std::int64_t(done));
             if (n < 0 && errno == EINTR) continue;
@@ -61,21 +63,16 @@ public:
                 file_.note_write_error(n < 0 ? errno : ENOSPC);
                 break;
             }
-            done += size_t(n);
+            done += std::size_t(n);
         }
         end_ = std::max(end_, offset + std::int64_t(done));
         return done;
     }
-    size_t read(void* buf, size_t size) override {
-        const size_t n = pread(buf, size, m_pos);
-        m_pos += std::int64_t(n);
-        return n;
-    }
-    size_t pread(void* buf, size_t size, int64_t offset) override {
+    std::size_t read_at(void* buf, std::size_t size, std::int64_t offset) override {
         const ssize_t n = ::pread(file_.fd(), buf, size, offset);
-        return n > 0 ? size_t(n) : 0;
+        return n > 0 ? std::size_t(n) : 0;
     }
-    size_t size() const override { return size_t(end_); }
+    std::int64_t size() const override { return end_; }
 
 private:
     TemporaryFile& file_;
@@ -83,6 +80,8 @@ private:
 };
 
 }  // namespace
+
+void load_image_library() { image_library::library(); }
 
 std::uint64_t image_read_bytes(std::uint64_t width, std::uint64_t height) {
     // Up to four decoded float channels, then the RGBA copy.
@@ -103,10 +102,10 @@ namespace {
 
 // An image's bytes opened with the one reader `ext` names, after the container checks
 // (image_checks.h), its header's size checked against `limits` before a pixel is decoded. `name`
-// names it in messages; `memory` must outlive the reader.
-std::unique_ptr<OIIO::ImageInput> open_image(std::span<const unsigned char> bytes, const std::string& name,
-                                             const std::string& ext, const ImageReadLimits& limits,
-                                             OIIO::Filesystem::IOMemReader& memory, OIIO::ImageSpec config = {}) {
+// names it in messages; `bytes` must outlive the decoder.
+std::unique_ptr<image_library::Decoder> open_image(std::span<const unsigned char> bytes, const std::string& name,
+                                                   const std::string& ext, const ImageReadLimits& limits,
+                                                   bool unassociated_alpha = false) {
     // Only the reader the extension names, and only formats a texture or a render may be: never
     // OpenImageIO's tour of every reader it has (DICOM, camera raw, video...) on unknown bytes.
     // Not BMP, whose reader allocates what a 200-byte file's run lengths claim (fuzzing found
@@ -118,20 +117,14 @@ std::unique_ptr<OIIO::ImageInput> open_image(std::span<const unsigned char> byte
     if (const std::string problem = image_container_problem(bytes, ext); !problem.empty()) {
         throw ImageError(name + ": cannot read image: " + problem);
     }
-    auto in = OIIO::ImageInput::create(ext.substr(1), false);
-    // OpenImageIO 2.4 reads from memory through this hint (its open()'s proxy argument alone
-    // still looks for a file).
-    void* proxy = &memory;
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    OIIO::ImageSpec opened;
-    if (!in || !in->set_ioproxy(&memory) || !in->open(name, opened, config)) {
-        throw ImageError(name + ": cannot read image: " + (in ? in->geterror() : OIIO::geterror()));
-    }
-    const OIIO::ImageSpec& spec = in->spec();
+    std::string error;
+    auto in = image_library::library().open(bytes, name, ext.substr(1), unassociated_alpha, error);
+    if (!in) throw ImageError(name + ": cannot read image: " + error);
+    const image_library::ImageShape spec = in->shape();
     // The header's size, checked before a pixel is decoded: a small file can declare a huge image.
-    if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.nchannels <= 0 || spec.nchannels > 64) {
+    if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1 || spec.channels <= 0 || spec.channels > 64) {
         throw ImageError(name + ": unsupported image: " + size_text(spec.width, spec.height) + "x" +
-                         std::to_string(spec.depth) + ", " + std::to_string(spec.nchannels) + " channels");
+                         std::to_string(spec.depth) + ", " + std::to_string(spec.channels) + " channels");
     }
     const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
     if (spec.width > limits.max_side || spec.height > limits.max_side || pixels > limits.max_pixels) {
@@ -140,20 +133,51 @@ std::unique_ptr<OIIO::ImageInput> open_image(std::span<const unsigned char> byte
                          std::to_string(limits.max_pixels) + " pixels read here (it would take " +
                          byte_size_text(image_read_bytes(std::uint64_t(spec.width), std::uint64_t(spec.height))) + ")");
     }
+    if ((limits.width && spec.width != limits.width) || (limits.height && spec.height != limits.height)) {
+        throw ImageError(name + ": image is " + size_text(spec.width, spec.height) + ", not the " +
+                         size_text(limits.width, limits.height) + " it is compared with");
+    }
     return in;
+}
+
+// The opened image decoded to 8-bit RGBA. `decoding_bytes`, when given, receives the most the
+// decoding held beside the image it returns: the samples as stored (when not 8-bit) and as 8-bit.
+Image8 decode8(image_library::Decoder& in, const std::string& name, std::uint64_t* decoding_bytes = nullptr) {
+    const image_library::ImageShape spec = in.shape();
+    const int nc = std::min(spec.channels, 4);  // channels past RGBA are not needed
+    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<std::uint8_t> data(pixels * std::size_t(nc));
+    if (!in.read(nc, data.data())) {
+        throw ImageError(name + ": cannot decode image: " + in.error());
+    }
+    if (decoding_bytes) {
+        const std::uint64_t stored =
+            spec.channel_bytes == 1 ? 0 : pixels * std::uint64_t(spec.channels * spec.channel_bytes);
+        *decoding_bytes = stored + (nc == 4 ? 0 : data.size());
+    }
+    if (nc == 4) return Image8{spec.width, spec.height, std::move(data)};
+    Image8 img{spec.width, spec.height, std::vector<std::uint8_t>(pixels * 4)};
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const std::uint8_t* s = &data[p * std::size_t(nc)];
+        std::uint8_t* d = &img.rgba[p * 4];
+        d[0] = s[0];
+        d[1] = nc >= 3 ? s[1] : s[0];
+        d[2] = nc >= 3 ? s[2] : s[0];
+        d[3] = nc == 2 ? s[1] : 255;
+    }
+    return img;
 }
 
 }  // namespace
 
 Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::path& path, const ImageReadLimits& limits) {
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    const auto in = open_image(bytes, path.string(), lowercase_extension(path), limits, memory);
-    const OIIO::ImageSpec& spec = in->spec();
+    const auto in = open_image(bytes, path.string(), lowercase_extension(path), limits);
+    const image_library::ImageShape spec = in->shape();
     const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
-    const int nc = std::min(spec.nchannels, 4);  // channels past RGBA are not needed
+    const int nc = std::min(spec.channels, 4);  // channels past RGBA are not needed
     std::vector<float> data(std::size_t(pixels) * std::size_t(nc));
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data())) {
-        throw ImageError(path.string() + ": cannot decode image: " + in->geterror());
+    if (!in->read(nc, data.data())) {
+        throw ImageError(path.string() + ": cannot decode image: " + in->error());
     }
     Image img{spec.width, spec.height, {}};
     img.rgba.resize(std::size_t(pixels) * 4);
@@ -168,7 +192,7 @@ Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::
     return img;
 }
 
-Image8 read_texture_image(const ImageSource& source) {
+Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes) {
     ImageReadLimits limits;
     limits.max_side = limits::kTextureSide;
     limits.max_pixels = limits::kTextureTexels;
@@ -191,27 +215,22 @@ Image8 read_texture_image(const ImageSource& source) {
         ext = png ? ".png" : jpeg ? ".jpg" : "";
         if (ext.empty()) throw ImageError(name + ": not a PNG or JPEG image (MIME type '" + mime + "')");
     }
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);  // PNG alpha stays as stored, as GL uploads it
-    const auto in = open_image(bytes, name, ext, limits, memory, config);
-    const OIIO::ImageSpec& spec = in->spec();
-    const int nc = std::min(spec.nchannels, 4);  // channels past RGBA are not needed
-    const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
-    std::vector<std::uint8_t> data(pixels * std::size_t(nc));
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, data.data())) {
-        throw ImageError(name + ": cannot decode image: " + in->geterror());
-    }
-    Image8 img{spec.width, spec.height, std::vector<std::uint8_t>(pixels * 4)};
-    for (std::size_t p = 0; p < pixels; ++p) {
-        const std::uint8_t* s = &data[p * std::size_t(nc)];
-        std::uint8_t* d = &img.rgba[p * 4];
-        d[0] = s[0];
-        d[1] = nc >= 3 ? s[1] : s[0];
-        d[2] = nc >= 3 ? s[2] : s[0];
-        d[3] = nc >= 4 ? s[3] : (nc == 2 ? s[1] : 255);
-    }
+    // PNG alpha stays as stored (unassociated), as GL uploads it.
+    const auto in = open_image(bytes, name, ext, limits, /*unassociated_alpha=*/true);
+    Image8 img = decode8(*in, name, decoding_bytes);
+    if (decoding_bytes) *decoding_bytes += file_bytes.size() + img.rgba.size();
     return img;
+}
+
+Image8 read_image8(const std::filesystem::path& path, const ImageReadLimits& limits) {
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = read_scene_file(path, limits.max_file_bytes, limits.follow_symlink);
+    } catch (const SceneError& e) {
+        throw ImageError(e.what());
+    }
+    const auto in = open_image(bytes, path.string(), lowercase_extension(path), limits);
+    return decode8(*in, path.string());
 }
 
 bool is_float_format(const std::filesystem::path& path) {
@@ -224,14 +243,10 @@ struct ImageWriter::State {
     int width = 0, height = 0, channels = 0, next_row = 0;
     bool is_float = false;
     std::unique_ptr<TemporaryFile> file;
-    std::unique_ptr<TemporaryFileProxy> proxy;
-    std::unique_ptr<OIIO::ImageOutput> out;  // destroyed first: it writes through proxy
+    std::unique_ptr<TemporaryFileSink> sink;
+    std::unique_ptr<image_library::Encoder> out;  // destroyed first: it writes into sink
     std::vector<float> floats;
     std::vector<std::uint8_t> bytes;
-
-    ~State() {
-        if (out) out->close();
-    }
 };
 
 ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int height, bool alpha, const Metadata& metadata)
@@ -240,30 +255,60 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
     s.path = path, s.width = width, s.height = height, s.channels = alpha ? 4 : 3;
     s.is_float = is_float_format(path);
     if (width <= 0 || height <= 0) throw ImageError(path.string() + ": cannot write an image of " + size_text(width, height));
-    s.out = OIIO::ImageOutput::create(path.string());
-    if (!s.out) throw ImageError(path.string() + ": no image format for this file name: " + OIIO::geterror());
-    if (!s.out->supports("ioproxy")) {
-        throw ImageError(path.string() + ": OpenImageIO cannot write this format through a checked file");
-    }
+    std::string error;
+    s.out = image_library::library().create(path.string(), error);
+    if (!s.out) throw ImageError(path.string() + ": " + error);
     try {
         s.file = std::make_unique<TemporaryFile>(path);
     } catch (const std::runtime_error& e) {
         throw ImageError(std::string("cannot write image: ") + e.what());
     }
-    s.proxy = std::make_unique<TemporaryFileProxy>(*s.file);
-    OIIO::ImageSpec spec(width, height, s.channels, s.is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    for (const auto& [key, value] : metadata) spec.attribute(key, value);
-    spec.attribute("Software", "quadshade");
-    if (!s.out->set_ioproxy(s.proxy.get()) || !s.out->open(s.file->path().string(), spec)) {
-        throw ImageError(path.string() + ": cannot write image (" + s.out->geterror() + ")");
+    s.sink = std::make_unique<TemporaryFileSink>(*s.file);
+    image_library::EncoderSpec spec{width, height, s.channels, s.is_float, metadata};
+    spec.attributes.emplace_back("Software", "quadshade");
+    if (!s.out->open(s.file->path().string(), *s.sink, spec)) {
+        throw ImageError(path.string() + ": cannot write image (" + s.out->error() + ")");
     }
 }
 
 ImageWriter::~ImageWriter() = default;
 
 std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha) {
-    const std::uint64_t values = std::uint64_t(width) * std::uint64_t(rows) * (alpha ? 4u : 3u);
-    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1));
+    const std::uint64_t channels = alpha ? 4u : 3u, values = std::uint64_t(width) * std::uint64_t(rows) * channels;
+    std::uint64_t encoder = 0;
+    if (lowercase_extension(path) == ".exr") {
+        // OpenEXR keeps two line buffers per thread of its pool (one thread per core), each of 16
+        // rows of the file's pixels, and its ZIP compressor two more of that size for each:
+        // 8192x64 float RGB took 13.3 MiB more than as TIFF.
+        const std::uint64_t buffers = 2 * std::max(1u, std::thread::hardware_concurrency());
+        encoder = buffers * 3 * 16 * std::uint64_t(width) * channels * sizeof(float);
+    }
+    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1)) + encoder;
+}
+
+void ImageWriter::write_rows(int rows, const std::uint8_t* rgba) {
+    State& s = *state_;
+    if (rows <= 0 || s.next_row + rows > s.height) throw std::logic_error("ImageWriter: more rows than the image has");
+    const std::size_t n = std::size_t(s.width) * std::size_t(rows);
+    const std::size_t nc = std::size_t(s.channels);
+    const void* pixels = nullptr;
+    if (s.is_float) {
+        s.floats.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = float(rgba[p * 4 + c]) / 255.0f;
+        }
+        pixels = s.floats.data();
+    } else {
+        s.bytes.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) s.bytes[p * nc + c] = rgba[p * 4 + c];
+        }
+        pixels = s.bytes.data();
+    }
+    if (!s.out->write_rows(s.next_row, s.next_row + rows, s.is_float, pixels)) {
+        throw ImageError(s.path.string() + ": cannot write image (" + s.out->error() + ")");
+    }
+    s.next_row += rows;
 }
 
 void ImageWriter::write_rows(int rows, const float* rgba) {
@@ -276,7 +321,6 @@ void ImageWriter::write_rows(int rows, const float* rgba) {
         for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = rgba[p * 4 + c];
     }
     const void* pixels = s.floats.data();
-    OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT;
     if (!s.is_float) {
         // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
         s.bytes.resize(s.floats.size());
@@ -286,10 +330,9 @@ void ImageWriter::write_rows(int rows, const float* rgba) {
             s.bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
         }
         pixels = s.bytes.data();
-        format = OIIO::TypeDesc::UINT8;
     }
-    if (!s.out->write_scanlines(s.next_row, s.next_row + rows, 0, format, pixels)) {
-        throw ImageError(s.path.string() + ": cannot write image (" + s.out->geterror() + ")");
+    if (!s.out->write_rows(s.next_row, s.next_row + rows, s.is_float, pixels)) {
+        throw ImageError(s.path.string() + ": cannot write image (" + s.out->error() + ")");
     }
     s.next_row += rows;
 }
@@ -298,8 +341,9 @@ void ImageWriter::commit() {
     State& s = *state_;
     if (s.next_row != s.height) throw std::logic_error("ImageWriter: commit before every row was written");
     const bool closed = s.out->close();
+    const std::string error = closed ? "" : s.out->error();
     s.out.reset();
-    if (!closed) throw ImageError(s.path.string() + ": cannot write image (" + OIIO::geterror() + ")");
+    if (!closed) throw ImageError(s.path.string() + ": cannot write image (" + error + ")");
     try {
         s.file->commit();
     } catch (const std::runtime_error& e) {
@@ -307,17 +351,33 @@ void ImageWriter::commit() {
     }
 }
 
-void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
-    ImageWriter writer(path, image.width, image.height, alpha, metadata);
-    writer.write_rows(image.height, image.rgba.data());
+namespace {
+
+// Writes `image` (RGBA rows of T) a few rows at a time, so that the conversion for the file
+// stays small whatever the image's size.
+template <class T>
+void write_in_chunks(const std::filesystem::path& path, int width, int height, const std::vector<T>& rgba,
+                     const Metadata& metadata, bool alpha) {
+    ImageWriter writer(path, width, height, alpha, metadata);
+    // What one more row adds (the encoder's own buffers are there whatever the chunk).
+    const std::uint64_t row_bytes = std::max<std::uint64_t>(
+        1, ImageWriter::conversion_bytes(path, width, 2, alpha) - ImageWriter::conversion_bytes(path, width, 1, alpha));
+    const int chunk =
+        int(std::clamp<std::uint64_t>(ImageWriter::kChunkBytes / row_bytes, 1, std::uint64_t(std::max(height, 1))));
+    for (int y = 0; y < height; y += chunk) {
+        writer.write_rows(std::min(chunk, height - y), rgba.data() + std::size_t(y) * std::size_t(width) * 4);
+    }
     writer.commit();
 }
 
+}  // namespace
+
+void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata, bool alpha) {
+    write_in_chunks(path, image.width, image.height, image.rgba, metadata, alpha);
+}
+
 void write_image(const std::filesystem::path& path, const Image8& image, const Metadata& metadata, bool alpha) {
-    // Through the float rows: v / 255 converts back to v exactly in write_rows.
-    Image wide{image.width, image.height, std::vector<float>(image.rgba.size())};
-    for (std::size_t i = 0; i < image.rgba.size(); ++i) wide.rgba[i] = float(image.rgba[i]) / 255.0f;
-    write_image(path, wide, metadata, alpha);
+    write_in_chunks(path, image.width, image.height, image.rgba, metadata, alpha);
 }
 
 Comparison compare_images(const Image& a, const Image& b, float fail_threshold, float warn_threshold) {
@@ -325,22 +385,12 @@ Comparison compare_images(const Image& a, const Image& b, float fail_threshold, 
         throw ImageError("cannot compare a " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                          " image with a " + std::to_string(b.width) + "x" + std::to_string(b.height) + " one");
     }
-    OIIO::ImageBuf A = to_buf(a), B = to_buf(b);
-    OIIO::ROI rgb = A.roi();
-    rgb.chbegin = 0, rgb.chend = 3;
-    OIIO::ImageBufAlgo::CompareResults r = OIIO::ImageBufAlgo::compare(A, B, fail_threshold, warn_threshold, rgb);
-    // r.error is also set whenever a pixel fails (OIIO 2.4), so it is not an error here.
-    Comparison c;
-    c.mean_error = r.meanerror, c.rms_error = r.rms_error, c.psnr = r.PSNR, c.max_error = r.maxerror;
-    c.max_x = r.maxx, c.max_y = r.maxy, c.max_channel = r.maxc;
-    c.pixels_over_fail = r.nfail, c.pixels_over_warn = r.nwarn;
-    return c;
+    return image_library::library().compare(a.width, a.height, a.rgba.data(), b.rgba.data(), fail_threshold, warn_threshold);
 }
 
 Image difference_heat_map(const Image& a, const Image& b, float full_scale) {
-    OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(to_buf(a), to_buf(b));
     std::vector<float> d(std::size_t(a.width) * std::size_t(a.height) * 4);
-    diff.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, d.data());
+    image_library::library().absolute_difference(a.width, a.height, a.rgba.data(), b.rgba.data(), d.data());
     Image heat{a.width, a.height, std::vector<float>(d.size())};
     for (std::size_t p = 0; p < d.size(); p += 4) {
         const float m = std::max({d[p], d[p + 1], d[p + 2]});
@@ -355,10 +405,9 @@ Image difference_heat_map(const Image& a, const Image& b, float full_scale) {
 }
 
 void draw_text(Image& image, int x, int y, std::string_view text, int size) {
-    OIIO::ImageBuf buf(OIIO::ImageSpec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT), image.rgba.data());
-    const float white[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, size, "DejaVuSans", OIIO::cspan<float>(white, 4))) {
-        throw ImageError("cannot draw text: " + buf.geterror() + " (the gallery's labels need the DejaVu Sans font: "
+    std::string error;
+    if (!image_library::library().draw_text(image.width, image.height, image.rgba.data(), x, y, text, size, "DejaVuSans", error)) {
+        throw ImageError("cannot draw text: " + error + " (the gallery's labels need the DejaVu Sans font: "
                          "Debian's fonts-dejavu-core)");
     }
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Image files through OpenImageIO (the only file that includes it is image_io.cpp): reading
+// Image files through OpenImageIO (behind image_library.h, loaded on first use): reading
 // textures and images to compare (regular files only, their size checked on the header before
 // anything is decoded), writing renders safely (a temporary file, every write checked, renamed
 // into place: see temporary_file.h), in one piece or row band by row band, and comparing images.
@@ -37,7 +37,16 @@ struct ImageReadLimits {
     std::uint64_t max_pixels = std::uint64_t(1) << 28;
     std::uint64_t max_file_bytes = std::uint64_t(1) << 31;
     bool follow_symlink = true;  // false for files a scene names (their links are resolved already)
+    // When not 0: the size the image must have (an image compared with a render), checked on the
+    // header, so that a small file declaring a huge image costs nothing to refuse.
+    int width = 0, height = 0;
 };
+
+// Loads OpenImageIO (a module of its own: image_library.h), as the first image read or written
+// does. Throws ImageError naming it when it cannot be loaded. A command that will write an image
+// calls it first, so that its frame times and memory measurements do not count the library's
+// own start-up.
+void load_image_library();
 
 // Reads PNG, JPEG, OpenEXR, TIFF and HDR files, the format named by the extension;
 // grey/RGB are expanded to RGBA (alpha 1). Only regular files are opened (never a FIFO or
@@ -54,13 +63,20 @@ struct Image8 {
     std::vector<std::uint8_t> rgba;
 };
 
+// A file read as read_image reads one, decoded to 8 bits per channel (exactly the values of an
+// 8-bit file; deeper channels rounded), grey and RGB expanded to RGBA (alpha 255): a quarter of
+// read_image's memory, for comparisons made in 8-bit steps.
+Image8 read_image8(const std::filesystem::path& path, const ImageReadLimits& limits = {});
+
 // A texture's image decoded as a GL application uploads it: rows in the file's order (glTF puts
 // UV (0, 0) at the first row), alpha as stored (never premultiplied), grey and RGB expanded to
 // RGBA (alpha 255), deeper channels rounded to 8 bits. A file is read as read_image reads one
 // (a regular file, the reader its extension names) and embedded bytes by their MIME type; both
 // within the texture limits of scenes/limits.h, checked on the header. Throws ImageError naming
-// the file (or the embedded image's kind) when it cannot be read.
-Image8 read_texture_image(const ImageSource& source);
+// the file (or the embedded image's kind) when it cannot be read. `decoding_bytes`, when given,
+// receives the most the decoding held at once: the file, the samples as stored (when not 8-bit)
+// and as 8-bit, and the RGBA image.
+Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes = nullptr);
 
 // Bytes an image of width x height takes as read_image's result at its peak (decoded channels
 // and the RGBA copy), for checking memory before reading.
@@ -80,17 +96,22 @@ public:
 
     // The next `rows` rows, top-down, RGBA float (4 per pixel, width per row).
     void write_rows(int rows, const float* rgba);
+    // The same from 8-bit RGBA (values v / 255).
+    void write_rows(int rows, const std::uint8_t* rgba);
     void commit();
 
     // Bytes write_rows needs beside its input for `rows` rows (the conversion to the file's
-    // channels and type).
+    // channels and type), and the encoder's own buffers.
     static std::uint64_t conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha);
+    // The most write_image converts at once.
+    static constexpr std::uint64_t kChunkBytes = std::uint64_t(16) << 20;
 
 private:
     struct State;
     std::unique_ptr<State> state_;
 };
 
+// Whole images, converted for the file a few rows at a time (ImageWriter::kChunkBytes at most).
 void write_image(const std::filesystem::path& path, const Image& image, const Metadata& metadata = {},
                  bool alpha = false);
 

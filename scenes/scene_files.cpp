@@ -44,27 +44,34 @@ bool is_inside(const std::filesystem::path& path, const std::filesystem::path& f
     return true;
 }
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+// Built in steps: GCC 12 warns falsely (-Wrestrict) on "'" + string.
+std::string quoted(std::string_view s) {
+    std::string q = "'";
+    q += s;
+    q += '\'';
+    return q;
+}
 
 }  // namespace
 
 std::filesystem::path resolve_scene_uri(const std::filesystem::path& scene_file, std::string_view reference,
-                                        const ScenePathPolicy& policy) {
+                                        const ScenePathPolicy& policy, std::string_view kind) {
+    const std::string of(kind);
     namespace fs = std::filesystem;
     if (reference.empty()) throw SceneError("an empty file name");
     if (reference.find('\0') != std::string_view::npos) throw SceneError("a file name with a NUL byte");
     if (const std::string_view scheme = uri_scheme(reference); !scheme.empty()) {
         if (equal_ignoring_case(scheme, "http") || equal_ignoring_case(scheme, "https")) {
-            throw SceneError(quoted(reference) + " is a network address: quadshade reads only files beside the scene");
+            throw SceneError(quoted(reference) + " is a network address: quadshade reads only files beside the " + of);
         }
         throw SceneError(quoted(reference) + " has a URI scheme (" + std::string(scheme) +
-                         ":): only paths relative to the scene file are read");
+                         ":): only paths relative to the " + of + " file are read");
     }
     const fs::path ref(reference);
     const fs::path folder = scene_file.parent_path().empty() ? fs::path(".") : scene_file.parent_path();
     if (ref.is_absolute() && !policy.allow_outside) {
-        throw SceneError(quoted(reference) + " is an absolute path: files are named relative to the scene file "
-                         "(--allow-outside-paths allows it)");
+        throw SceneError(quoted(reference) + " is an absolute path: files are named relative to the " + of +
+                         " file (--allow-outside-paths allows it)");
     }
     std::error_code ec;
     const fs::path target = ref.is_absolute() ? ref : folder / ref;
@@ -72,9 +79,9 @@ std::filesystem::path resolve_scene_uri(const std::filesystem::path& scene_file,
     if (ec) throw SceneError(quoted(reference) + ": cannot resolve " + target.string() + ": " + ec.message());
     if (!policy.allow_outside) {
         const fs::path home = fs::canonical(folder, ec);
-        if (ec) throw SceneError("cannot resolve the scene's folder " + folder.string() + ": " + ec.message());
+        if (ec) throw SceneError("cannot resolve the " + of + "'s folder " + folder.string() + ": " + ec.message());
         if (!is_inside(resolved, home)) {
-            throw SceneError(quoted(reference) + " leads outside the scene's folder " + home.string() + " (to " +
+            throw SceneError(quoted(reference) + " leads outside the " + of + "'s folder " + home.string() + " (to " +
                              resolved.string() + "; --allow-outside-paths allows it)");
         }
     }

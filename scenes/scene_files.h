@@ -23,9 +23,11 @@ struct ScenePathPolicy {
 // symlink of its existing part resolved. The file need not exist (a texture is read only when a
 // shader samples it). Throws SceneError saying what is wrong with `reference` (the caller adds
 // the file and the field): empty, a URI scheme (http:, https:, file:, ...), a NUL byte, an
-// absolute path or a path outside the scene's folder without policy.allow_outside.
+// absolute path or a path outside the scene's folder without policy.allow_outside. Other files
+// that name files (golden-image suites, their report fragments) follow the same rule: `kind`
+// names such a file in the messages.
 std::filesystem::path resolve_scene_uri(const std::filesystem::path& scene_file, std::string_view reference,
-                                        const ScenePathPolicy& policy);
+                                        const ScenePathPolicy& policy, std::string_view kind = "scene");
 
 // The whole content of `path`, which must be a regular file of at most `max_bytes` (opened
 // without following a final symlink and without blocking, so that a FIFO or device is refused,

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 namespace qs {
 
@@ -37,6 +38,10 @@ UniformSetting parse_uniform_option(std::string_view text) {
         const auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
         if (item.empty() || ec != std::errc() || end != item.data() + item.size() || !std::isfinite(v)) {
             throw UniformOptionError(shown + ": '" + std::string(item) + "' is not a finite number");
+        }
+        // A uniform is a float: 1e39 would become infinity there (and NaN on every pixel).
+        if (std::abs(v) > double(std::numeric_limits<float>::max())) {
+            throw UniformOptionError(shown + ": '" + std::string(item) + "' is beyond a float's range (3.4e38)");
         }
         s.values.push_back(v);
         if (comma == std::string_view::npos) break;

@@ -25,6 +25,7 @@ struct Registry {
     std::vector<std::string> problems;  // the loading plugin's
     std::vector<std::string> builtin_problems;
     int added = 0;
+    bool unoptimised = false;  // the loading plugin's
 };
 
 Registry& registry() {
@@ -44,6 +45,24 @@ std::filesystem::path builtin_glsl_folder() {
     return exe.parent_path().parent_path() / "share" / "quadshade" / "shading";
 }
 
+// A shader's name names files (--export-glsl writes NAME.vert and NAME.frag) and is what scenes
+// and command lines ask for: an identifier, so that no name can lead out of a folder.
+bool is_shader_name(std::string_view name) {
+    auto letter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+    if (name.empty() || name.size() > 128 || !letter(name[0])) return false;
+    for (const char c : name) {
+        if (!letter(c) && !(c >= '0' && c <= '9')) return false;
+    }
+    return true;
+}
+
+// `name` as a message shows it: what is not printable ASCII as '?'.
+std::string shown(std::string_view name) {
+    std::string s(name.substr(0, 128));
+    for (char& c : s) c = c >= 0x20 && c < 0x7f ? c : '?';
+    return s;
+}
+
 const Entry& entry_of(const Program& program) {
     for (const Entry& e : registry().entries) {
         if (e.program == &program) return e;
@@ -55,8 +74,9 @@ const Entry& entry_of(const Program& program) {
 
 namespace registration {
 
-void add(const Program& program, const ShaderAbi& abi, std::string_view collection) {
+void add(const Program& program, const ShaderAbi& abi, std::string_view collection, bool optimised) {
     Registry& r = registry();
+    if (!r.loading.empty() && !optimised) r.unoptimised = true;
     std::vector<std::string>& problems = r.loading.empty() ? r.builtin_problems : r.problems;
     const std::string name(program.info().name);
     if (!(abi == ShaderAbi{})) {
@@ -64,6 +84,12 @@ void add(const Program& program, const ShaderAbi& abi, std::string_view collecti
                              std::to_string(abi.batch_lanes) + " lanes, " + std::to_string(abi.fragment_batch) +
                              "-byte fragment batches; this quadshade: " + std::to_string(kBatchLanes) + ", " +
                              std::to_string(sizeof(FragmentBatch)) + "): rebuild it against this installation");
+        return;
+    }
+    if (!is_shader_name(name)) {
+        problems.push_back("shader '" + shown(name) +
+                           "': a shader's name is letters, digits and '_', not starting with a "
+                           "digit (it names the files --export-glsl writes)");
         return;
     }
     if (const Program* taken = find_program(name)) {
@@ -80,14 +106,16 @@ void begin_plugin(const std::filesystem::path& plugin) {
     r.loading = plugin;
     r.problems.clear();
     r.added = 0;
+    r.unoptimised = false;
 }
 
 PluginResult end_plugin() {
     Registry& r = registry();
-    PluginResult result{r.added, std::move(r.problems)};
+    PluginResult result{r.added, std::move(r.problems), r.unoptimised};
     r.loading.clear();
     r.problems.clear();
     r.added = 0;
+    r.unoptimised = false;
     return result;
 }
 
@@ -139,9 +167,10 @@ const std::string* compiled_glsl(const Program& program, bool vertex_stage) {
     return vertex_stage ? &e.vertex_glsl : &e.fragment_glsl;
 }
 
-std::filesystem::path glsl_folder(const Program& program) {
+std::filesystem::path glsl_folder(const Program& program, bool vertex_stage) {
     const std::filesystem::path& plugin = plugin_of(program);
-    return plugin.empty() ? builtin_glsl_folder() : plugin.parent_path();
+    const bool builtin = plugin.empty() || (vertex_stage && program.info().stock_vertex_glsl);
+    return builtin ? builtin_glsl_folder() : plugin.parent_path();
 }
 
 }  // namespace qs

@@ -1,6 +1,6 @@
 #pragma once
 // A shader's height: the relief a colour shader describes besides its colour, for normal maps
-// (seed 001: "I have the procedural function not only generate a color but a height").
+// (the ProcTexGen articles: "I have the procedural function not only generate a color but a height").
 //
 // The convention, for a catalogue shader NAME:
 //  - its translation's struct names `using Height = H;`, where H has

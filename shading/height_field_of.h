@@ -84,13 +84,17 @@ struct HeightRegistrar {
         register_height_field(field);
     }
 };
+// One registration in the program however many files name it, as catalogue.h's.
+template <class Shader, class HeightShader>
+inline const HeightRegistrar<Shader, HeightShader> registered_height{};
 }  // namespace registration
 
 }  // namespace qs
 
 // Registers Shader's height, drawn as grey by HeightShader (both catalogue shaders), at namespace
-// scope in the .cpp that registers the shaders.
-#define QUADSHADE_HEIGHT_FIELD(Shader, HeightShader)                                                  \
-    namespace {                                                                                       \
-    const ::qs::registration::HeightRegistrar<Shader, HeightShader> QUADSHADE_REGISTRAR_NAME(__COUNTER__){}; \
+// scope after the line that registers the shaders.
+#define QUADSHADE_HEIGHT_FIELD(Shader, HeightShader)                                                   \
+    namespace {                                                                                        \
+    [[maybe_unused]] const auto& QUADSHADE_REGISTRAR_NAME(__COUNTER__) =                               \
+        ::qs::registration::registered_height<Shader, HeightShader>;                                   \
     }

@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -147,14 +148,35 @@ struct CheckBound {
 // Whether a shader samples any texture: `teximage` or a named sampler.
 constexpr bool samples_textures(const Needs& n) { return n.texture || !n.samplers[0].name.empty(); }
 
+// GLSL files of one stage, relative to the shader's GLSL folder (catalogue.h), concatenated in
+// order: the shared functions first (noise/simplex3d.glsl), the stage's main last.
+using GlslFiles = std::array<std::string_view, 4>;
+
+// What a shader is: named fields, each with a default, so that a shader states only what differs:
+//
+//     static constexpr ShaderInfo info{
+//         .name = "stripes",
+//         .description = "diagonal stripes anti-aliased with fwidth",
+//         .needs = {.derivatives = true},
+//         .glsl_fragment = {"shaders/stripes.frag"},
+//     };
+//
+// The vertex stage's GLSL is the vertex stage's own (its `glsl`: shading/varyings.h).
 struct ShaderInfo {
-    std::string_view name;
-    std::string_view description;
-    Needs needs;
-    // GLSL sources, relative to shading/, concatenated in order (#version line first).
-    std::array<std::string_view, 3> glsl_vertex;
-    std::array<std::string_view, 3> glsl_fragment;
+    std::string_view name;         // what scenes and command lines ask for: letters, digits and '_'
+    std::string_view description;  // one line, for listings
+    Needs needs = {};
+    GlslFiles glsl_fragment = {};
     std::string_view glsl_defines = {};  // prepended to both stages after #version
+    // The GLSL version its sources are compiled as (the #version line the exporter writes): 0 for
+    // the #version line of the stage's first file if it has one (glsl_export.h), else 120; 130 and
+    // later for integers, bit operations and the like; from 150 on the compatibility profile,
+    // which keeps gl_Vertex, gl_FragColor and the matrix uniforms. OSMesa's llvmpipe compiles up
+    // to 450, softpipe up to 330.
+    int glsl_version = 0;
+    // The uniforms the GLSL declares besides the scene's (time, teximage, the samplers of
+    // Needs::samplers, the transforms of scenes/shader_inputs.h), in the order of Uniforms::user.
+    std::span<const UniformDecl> uniforms = {};
     // Seconds after which the output repeats exactly (the noise's hash period along the axis
     // time moves): lets a renderer keep long animations' time in double and hand the shader
     // time modulo the period. 0: time unused, or no exact period.
@@ -167,46 +189,30 @@ struct ShaderInfo {
     // quad's derivatives shuffle inside its register). Set where quadshade-bench-batch-width,
     // which times both for every shader, found the pair at most 0.95 of two batches' time.
     bool wide_batches = false;
-    // The GLSL version its sources are compiled as (the #version line the reference writes):
-    // 120, or 130 and later for integers, bit operations and the like; from 150 on the
-    // compatibility profile, which keeps gl_Vertex, gl_FragColor and the matrix uniforms.
-    // OSMesa's llvmpipe compiles up to 450, softpipe up to 330.
-    int glsl_version = 120;
-    // The uniforms the GLSL declares beyond the chapter's (time, teximage), in the order of
-    // Uniforms::user (with_uniforms).
-    std::span<const UniformDecl> uniforms = {};
     // Where `quadshade check` should not hold it to the bar, and why.
     std::span<const CheckBound> check_bounds = {};
-};
 
-// `info` with wide_batches set.
-constexpr ShaderInfo with_wide_batches(ShaderInfo info) {
-    info.wide_batches = true;
-    return info;
-}
-// `info` with its own uniforms.
-constexpr ShaderInfo with_uniforms(ShaderInfo info, std::span<const UniformDecl> uniforms) {
-    info.uniforms = uniforms;
-    return info;
-}
-// `info` compiled as GLSL `version`.
-constexpr ShaderInfo with_glsl_version(ShaderInfo info, int version) {
-    info.glsl_version = version;
-    return info;
-}
-// `info` with documented departures from `quadshade check`'s bar.
-constexpr ShaderInfo with_check_bounds(ShaderInfo info, std::span<const CheckBound> bounds) {
-    info.check_bounds = bounds;
-    return info;
-}
+    // Filled by ProgramOf from the vertex stage (leave them unset): its GLSL files, and whether
+    // they are quadshade's own (a stock stage, shading/shaders/vertex_stages.h), read from the
+    // built-in shaders' GLSL folder even for a plugin's shader.
+    GlslFiles glsl_vertex = {};
+    bool stock_vertex_glsl = false;
+};
 
 // GL_MAX_VERTEX_ATTRIBS: the generic vertex attributes a draw can feed (glVertexAttribPointer).
 inline constexpr int kMaxGenericAttributes = 16;
 // A generic attribute's value at one vertex: four 32-bit words, floats' bits or integers.
 using AttributeValue = std::array<std::uint32_t, 4>;
 
+// What the scene and the frame give every shader: its transforms (a GLSL 1.30 vertex stage reads
+// them as the uniforms mvp, model, view, projection and normalMatrix: scenes/shader_inputs.h),
+// time, its textures, and its own uniforms' values.
 struct Uniforms {
-    glm::mat4 model_view_projection{1.0f};
+    glm::mat4 model_view_projection{1.0f};  // gl_ModelViewProjectionMatrix, mvp
+    glm::mat4 model{1.0f};                  // world from object
+    glm::mat4 view{1.0f};                   // view from world
+    glm::mat4 projection{1.0f};             // clip from view
+    glm::mat3 normal_matrix{1.0f};          // transpose(inverse(mat3(view * model)))
     float time = 0.0f;
     const glsl::sampler2D* teximage = nullptr;  // set when Needs::texture
     // ShaderInfo::uniforms' values, kUniformWords 32-bit words each in their order: floats' bits
@@ -226,12 +232,12 @@ struct Uniforms {
 };
 
 struct VertexIn {
-    glm::vec3 position;                 // object space (gl_Vertex.xyz)
-    glm::vec2 texcoord;                 // gl_MultiTexCoord0.st (glTF TEXCOORD_0)
-    glm::vec3 normal{0.0f};             // gl_Normal (glTF NORMAL)
-    glm::vec4 color{1.0f};              // gl_Color (glTF COLOR_0)
-    glm::vec2 texcoord1{0.0f};          // gl_MultiTexCoord1.st (glTF TEXCOORD_1)
-    std::uint32_t id = 0;               // gl_VertexID: its index in the draw's vertex arrays
+    glm::vec3 position;           // object space (gl_Vertex.xyz)
+    glm::vec2 texcoord;           // gl_MultiTexCoord0.st
+    glm::vec3 normal{0.0f};       // gl_Normal: glTF's NORMAL, (0, 0, 0) where the mesh has none
+    glm::vec4 color{1.0f};        // gl_Color: COLOR_0, (1, 1, 1, 1) where none; a vec3 colour has alpha 1
+    glm::vec2 texcoord1{0.0f};    // gl_MultiTexCoord1.st: TEXCOORD_1
+    std::uint32_t id = 0;         // gl_VertexID: its index in the draw's vertex arrays
 };
 struct VertexOut {
     glm::vec4 clip;  // gl_Position

@@ -1,7 +1,7 @@
 #pragma once
 // ProgramOf<Shader>: a shader translation (a struct with `info`, its `VertexStage` (shading/
-// varyings.h) and a `fragment` template over the number type) as a Program. Include only from the .cpp that instantiates a
-// shader: this is where the number types meet the batch layout.
+// varyings.h) and a `fragment` template over the number type) as a Program: where the number
+// types meet the batch layout. A file that registers shaders (QUADSHADE_SHADERS) includes it.
 //
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
 // each DerivativeRule (float; Fine also double), and Dual2 (float, double); for the undefined-case
@@ -113,14 +113,21 @@ void store(const F& v, float* out) {
     }
 }
 
-// Shader::info with the varyings its vertex stage declares.
+// Shader::info with what its vertex stage declares: its varyings and its GLSL.
 template <class Shader>
 constexpr ShaderInfo completed_info() {
+    using Stage = typename Shader::VertexStage;
     static_assert(Shader::info.needs.varyings == 0 && Shader::info.needs.flat_varyings == 0,
                   "Needs::varyings follows from the vertex stage's Varyings: leave it unset");
+    static_assert(Shader::info.glsl_vertex[0].empty() && !Shader::info.stock_vertex_glsl,
+                  "the vertex GLSL is the vertex stage's: static constexpr GlslFiles glsl{...} in the stage");
+    static_assert(requires { Stage::glsl; },
+                  "a vertex stage names the GLSL it translates: static constexpr GlslFiles glsl{\"my.vert\"};");
     ShaderInfo info = Shader::info;
-    info.needs.varyings = varying_count<typename Shader::VertexStage>();
-    info.needs.flat_varyings = flat_varying_mask<typename Shader::VertexStage>();
+    info.needs.varyings = varying_count<Stage>();
+    info.needs.flat_varyings = flat_varying_mask<Stage>();
+    info.glsl_vertex = Stage::glsl;
+    if constexpr (requires { Stage::stock; }) info.stock_vertex_glsl = Stage::stock;
     return info;
 }
 

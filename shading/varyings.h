@@ -1,8 +1,9 @@
 #pragma once
-// Varyings by name. A vertex stage is a struct, one per GLSL vertex shader, holding its outputs
-// as a struct template over the number type and the stage itself:
+// Varyings by name. A vertex stage is a struct, one per GLSL vertex shader, holding the GLSL files
+// it translates, its outputs as a struct template over the number type, and the stage itself:
 //
 //     // plane_st.vert                      struct PlaneSt {
+//                                               static constexpr GlslFiles glsl{"plane_st.vert"};
 //     varying vec2 st;                          template <class T>
 //     void main() {                             struct Varyings {
 //         st = gl_MultiTexCoord0.st;                glsl::vec2<T> st;

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -19,14 +20,14 @@ inline const std::filesystem::path kFigure = kSource / "scenes/assets/figure-1.1
 // The chapter's sphere alone, in perspective: where solid textures are compared.
 inline const std::filesystem::path kSphere = kSource / "scenes/assets/sphere.gltf";
 inline const std::filesystem::path kPlane = kSource / "scenes/assets/table-1.1-plane.gltf";
-// Seed 001's solid textures on Figure 1.1's spheres, fast_noise reading the shipped volume.
-inline const std::filesystem::path kSeed001Spheres = kSource / "scenes/assets/seed-001-spheres.gltf";
-// The Table 1.1 plane binding the two textures seed 004's snippets read (tex1, tex4).
-inline const std::filesystem::path kSeed004Plane = kSource / "scenes/assets/seed-004-plane.gltf";
+// The ProcTexGen articles' solid textures on Figure 1.1's spheres, fast_noise reading the shipped volume.
+inline const std::filesystem::path kProcTexGenSpheres = kSource / "scenes/assets/proctexgen-spheres.gltf";
+// The Table 1.1 plane binding the two textures Lawlor's snippets read (tex1, tex4).
+inline const std::filesystem::path kLawlorPlane = kSource / "scenes/assets/lawlor-plane.gltf";
 
-// The plane a shader of the plane is shown on: its seed's where the seed reads textures of its own.
+// The plane a shader of the plane is shown on: its source text's where the text reads textures of its own.
 inline const std::filesystem::path& plane_for(std::string_view shader) {
-    return shader.starts_with("lawlor_") ? kSeed004Plane : kPlane;
+    return shader.starts_with("lawlor_") ? kLawlorPlane : kPlane;
 }
 
 // Whether that plane binds every named sampler the shader declares (baked_lit's `normalmap` is
@@ -38,6 +39,12 @@ inline bool plane_binds_samplers(const ShaderInfo& info) {
     }
     return true;
 }
+
+// Translations written in the order Mesa's optimiser reassociates a sum to rather than as their
+// GLSL reads (each one's comment says which sum), so that they match llvmpipe: their GLSL run as
+// written by the interpreter rounds as written, an ulp away, which a hash or an escape time turns
+// into whole steps.
+inline const std::set<std::string, std::less<>> kReassociatedByMesa = {"hash_hoskins", "lawlor_mandelbrot"};
 
 // A fresh, empty folder under the system's temporary directory, unique to this process.
 inline std::filesystem::path temp_dir(const std::string& name) {

@@ -25,9 +25,12 @@
 //     if (c) return v;   (in f)              loop.return_if(ret, c, v);  ... return ret.value_or(w);
 //     if (c) discard;    (in main)           loop.discard_if(out, c);
 //
-// Rules: register every variable the body assigns and code after the loop reads (the body also
+// Rules: register every variable declared before the loop that the body assigns (the body also
 // runs for lanes that have left, on values that are then thrown away; every operation in this
-// vocabulary is defined for any value, so nothing traps). A loop counter the same for every lane
+// vocabulary is defined for any value, so nothing traps). A variable left out compiles, and is
+// wrong for the lanes that left: the checked instantiation (number/checked.h, LoopWrites) finds
+// it, naming the loop's head, wherever a rendered fragment enters the loop (`quadshade check`
+// runs it on every shader it checks, `quadshade render --undefined-mask` on its frame). A loop counter the same for every lane
 // stays a plain C++ int, and loop(i < 100) checks it; a C++ `break` is right only when every
 // lane breaks. Statements after a break_if or continue_if in the same iteration run for the
 // lanes that left too and are thrown away for them, as GLSL wants. Inside a loop, conditions of
@@ -40,7 +43,9 @@
 // rejoin before it.
 
 #include <cstddef>
+#include <memory>
 #include <new>
+#include <source_location>
 #include <stdexcept>
 #include <tuple>
 #include <type_traits>
@@ -174,6 +179,10 @@ protected:
 
 template <class M, class... Vars>
 class Loop final : public LoopLanes<M> {
+    // The checked instantiation's loops tell LoopWrites what they hold (number/checked.h).
+    static constexpr bool kChecked = is_checked_mask<M>::value;
+    using Here = std::source_location;
+
 public:
     explicit Loop(Vars&... vars) : Loop(M(true), nullptr, vars...) {}
     Loop(Inside<M> entry, Vars&... vars) : Loop(entry.lanes, nullptr, vars...) {}
@@ -181,11 +190,13 @@ public:
     ~Loop() {
         end();
         stack_->pop(mark_);
+        if constexpr (kChecked) loop_writes.leave(checked_);
     }
 
     // The loop's head: the lanes that continued rejoin, the lanes whose condition fails leave.
     // False, with every variable restored, once no lane runs.
-    bool operator()(const M& condition) {
+    bool operator()(const M& condition, Here here = Here::current()) {
+        [[maybe_unused]] const Bookkeeping own(*this, here);
         next();
         const M failing = this->active_ && !condition;
         if (any(failing)) leave(failing);
@@ -195,24 +206,29 @@ public:
     }
     // A condition the same for every lane (a loop counter); false ends the loop for all. (Per
     // pixel, where a mask is one bool, the overload above is this one.)
-    bool operator()(bool uniform)
+    bool operator()(bool uniform, Here here = Here::current())
         requires(!std::is_same_v<M, bool>)
     {
+        [[maybe_unused]] const Bookkeeping own(*this, here);
         next();
         if (uniform && any(this->active_)) return true;
         end();
         return false;
     }
-    bool operator()(bool uniform, const M& condition) { return uniform ? (*this)(condition) : (*this)(false); }
-    bool operator()() { return (*this)(true); }
+    bool operator()(bool uniform, const M& condition, Here here = Here::current()) {
+        return uniform ? (*this)(condition, here) : (*this)(false, here);
+    }
+    bool operator()(Here here = Here::current()) { return (*this)(true, here); }
 
     // if (c) break;
     void break_if(const M& c) {
+        [[maybe_unused]] const Bookkeeping own(*this);
         const M going = this->active_ && c;
         if (any(going)) leave(going);
     }
     // if (c) continue;
     void continue_if(const M& c) {
+        [[maybe_unused]] const Bookkeeping own(*this);
         const M pausing = this->active_ && c;
         if (!any(pausing)) return;
         save(pausing);
@@ -223,6 +239,7 @@ public:
     // if (c) return v;  (`ret` is the function's Return; the lanes leave the enclosing loops too)
     template <class T>
     void return_if(Return<T>& ret, const M& c, const T& v) {
+        [[maybe_unused]] const Bookkeeping own(*this);
         const M going = this->active_ && c;
         if (!any(going)) return;
         ret.return_if(going, v);
@@ -233,11 +250,13 @@ public:
     // llvmpipe's values for them, measured by discard_probe, are those of a lane that went on.
     template <class Out>
     void discard_if(Out& out, const M& c) {
+        [[maybe_unused]] const Bookkeeping own(*this);
         out.discard_if(this->active_ && c);
     }
 
     // The lanes that continued rejoin, with the values they had at the continue.
     void next() {
+        [[maybe_unused]] const Bookkeeping own(*this);
         if (!this->any_paused_) return;
         restore(this->paused_);
         this->active_ = this->active_ || this->paused_;
@@ -247,10 +266,12 @@ public:
     // Every lane's variables as it left them. Called by the head that ends the loop and by the
     // destructor; call it after a C++ break.
     void end() {
+        [[maybe_unused]] const Bookkeeping own(*this);
         if (ended_) return;
         ended_ = true;
         const M kept = !this->active_;  // left, paused, or never entered (saved as they came)
         if (any(kept)) restore(kept);
+        if constexpr (kChecked) loop_writes.end(checked_);
     }
 
 private:
@@ -259,7 +280,26 @@ private:
           vars_(vars...),
           stack_(loop_detail::this_threads_saved_values()),
           mark_(stack_->top()),
-          saved_(new (stack_->template push<std::tuple<Vars...>>()) std::tuple<Vars...>(vars...)) {}
+          saved_(new (stack_->template push<std::tuple<Vars...>>()) std::tuple<Vars...>(vars...)) {
+        if constexpr (kChecked) {
+            checked_ = loop_writes.enter({LoopWrites::Held{std::addressof(vars), std::addressof(vars) + 1}...});
+        }
+    }
+
+    // The loop's own writes (the lanes' saved values, its masks), left out of the checked
+    // instantiation's check; the head also says where the loop is.
+    struct CheckedBookkeeping {
+        explicit CheckedBookkeeping(Loop&) : suspend(loop_writes) {}
+        CheckedBookkeeping(Loop& loop, const Here& here) : suspend(loop_writes) {
+            if (!loop.ended_) loop_writes.head(loop.checked_, here.file_name(), here.line());
+        }
+        LoopWrites::Suspend suspend;
+    };
+    struct Unchecked {
+        explicit Unchecked(Loop&) {}
+        Unchecked(Loop&, const Here&) {}
+    };
+    using Bookkeeping = std::conditional_t<kChecked, CheckedBookkeeping, Unchecked>;
 
     void leave(const M& lanes) {
         save(lanes);
@@ -282,6 +322,7 @@ private:
     std::size_t mark_;
     std::tuple<Vars...>* saved_;  // per lane: the value it left or paused with (in stack_)
     bool ended_ = false;
+    std::size_t checked_ = 0;  // its place in LoopWrites (checked instantiation only)
 };
 
 template <class V, class... Vs>

@@ -81,10 +81,31 @@ struct mat {
     friend mat operator/(const mat& a, const F& s) { return map(a, [&](const column_type& p) { return p / s; }); }
     friend mat operator+(const mat& a, const F& s) { return map(a, [&](const column_type& p) { return p + s; }); }
     friend mat operator-(const mat& a, const F& s) { return map(a, [&](const column_type& p) { return p - s; }); }
+    friend mat operator+(const F& s, const mat& a) { return map(a, [&](const column_type& p) { return s + p; }); }
+    friend mat operator-(const F& s, const mat& a) { return map(a, [&](const column_type& p) { return s - p; }); }
+    friend mat operator/(const F& s, const mat& a) { return map(a, [&](const column_type& p) { return s / p; }); }
+    // GLSL's / of two matrices is component by component (* is the product, below).
+    friend mat operator/(const mat& a, const mat& b) { return map(a, b, [](const column_type& p, const column_type& q) { return p / q; }); }
     mat& operator+=(const mat& b) & { return *this = *this + b; }
     mat& operator-=(const mat& b) & { return *this = *this - b; }
+    mat& operator/=(const mat& b) & { return *this = *this / b; }
+    mat& operator+=(const F& s) & { return *this = *this + s; }
+    mat& operator-=(const F& s) & { return *this = *this - s; }
     mat& operator*=(const F& s) & { return *this = *this * s; }
     mat& operator/=(const F& s) & { return *this = *this / s; }
+    // ++m, m++, --m, m--: every component.
+    mat& operator++() & { return *this += F(1.0f); }
+    mat& operator--() & { return *this -= F(1.0f); }
+    mat operator++(int) & {
+        const mat before = *this;
+        *this += F(1.0f);
+        return before;
+    }
+    mat operator--(int) & {
+        const mat before = *this;
+        *this -= F(1.0f);
+        return before;
+    }
 
     // m * v: v's components weight the columns, summed left to right.
     friend column_type operator*(const mat& m, const row_type& v) {
@@ -108,6 +129,8 @@ struct mat {
         return p;
     }
     mat& operator*=(const mat<F, C, C>& n) & requires(C == R) { return *this = *this * n; }
+    // v *= m: v = v * m.
+    friend column_type& operator*=(column_type& v, const mat& m) requires(C == R) { return v = v * m; }
 
     // GLSL's == and != of whole matrices: one bool.
     friend auto operator==(const mat& a, const mat& b) {

@@ -2,8 +2,9 @@
 // GLSL vectors over a component type F: vec2<F>, vec3<F>, vec4<F>. F is a float number type
 // (vec), its integers (ivec2<F> = vec2<int_t<F>>, uvec), or its mask (bvec2<F> = vec2<Bool<F>>).
 //
-// Componentwise arithmetic with scalar broadcast on either side; for integer vectors also
-// % & | ^ ~ << >>; == and != compare whole vectors into one bool, as GLSL's do (the componentwise
+// Componentwise arithmetic with scalar broadcast on either side, and every assignment form of it
+// GLSL has (+= -= *= /=, ++ and --, a vector or a scalar on the right); for integer vectors also
+// % & | ^ ~ << >> and their assignments; == and != compare whole vectors into one bool, as GLSL's do (the componentwise
 // comparisons are lessThan, equal, ... in builtins.h); !v of a bvec is GLSL's not(v), and C++'s
 // alternative token makes `not(v)` read exactly so.
 //
@@ -61,6 +62,25 @@ public:
     void operator/=(const Base& w) && { write(*this / w); }
     void operator*=(const F& s) && { write(*this * s); }
     void operator/=(const F& s) && { write(*this / s); }
+    void operator+=(const F& s) && { write(*this + s); }
+    void operator-=(const F& s) && { write(*this - s); }
+    void operator%=(const Base& w) && requires IntegerNumber<F> { write(*this % w); }
+    void operator&=(const Base& w) && requires IntegerNumber<F> { write(*this & w); }
+    void operator|=(const Base& w) && requires IntegerNumber<F> { write(*this | w); }
+    void operator^=(const Base& w) && requires IntegerNumber<F> { write(*this ^ w); }
+    void operator<<=(const Base& w) && requires IntegerNumber<F> { write(*this << w); }
+    void operator>>=(const Base& w) && requires IntegerNumber<F> { write(*this >> w); }
+    void operator%=(const F& s) && requires IntegerNumber<F> { write(*this % s); }
+    void operator&=(const F& s) && requires IntegerNumber<F> { write(*this & s); }
+    void operator|=(const F& s) && requires IntegerNumber<F> { write(*this | s); }
+    void operator^=(const F& s) && requires IntegerNumber<F> { write(*this ^ s); }
+    void operator<<=(const F& s) && requires IntegerNumber<F> { write(*this << s); }
+    void operator>>=(const F& s) && requires IntegerNumber<F> { write(*this >> s); }
+    // v.xy++ and ++v.xy: the components written back; the value before, or after.
+    Base operator++(int) && requires(!Boolean<F>) { const Base before = *this; write(before + F(1)); return before; }
+    Base operator--(int) && requires(!Boolean<F>) { const Base before = *this; write(before - F(1)); return before; }
+    Base operator++() && requires(!Boolean<F>) { const Base after = *this + F(1); write(after); return after; }
+    Base operator--() && requires(!Boolean<F>) { const Base after = *this - F(1); write(after); return after; }
 
 private:
     void write(const Base& w) {
@@ -157,6 +177,13 @@ constexpr bool distinct() {
     V& operator/=(const V& b) & { return *this = *this / b; }                                   \
     V& operator*=(const F& s) & { return *this = *this * s; }                                   \
     V& operator/=(const F& s) & { return *this = *this / s; }                                   \
+    V& operator+=(const F& s) & { return *this = *this + s; }                                   \
+    V& operator-=(const F& s) & { return *this = *this - s; }                                   \
+    /* ++v, v++, --v, v--: every component, as GLSL's */                                         \
+    V& operator++() & requires(!Boolean<F>) { return *this += F(1); }                           \
+    V& operator--() & requires(!Boolean<F>) { return *this -= F(1); }                           \
+    V operator++(int) & requires(!Boolean<F>) { const V before = *this; *this += F(1); return before; } \
+    V operator--(int) & requires(!Boolean<F>) { const V before = *this; *this -= F(1); return before; } \
     /* Integer vectors: % & | ^ ~ << >>, componentwise, a scalar on either side. */             \
     friend V operator%(const V& a, const V& b) requires IntegerNumber<F> { return map(a, b, [](const F& p, const F& q) { return p % q; }); } \
     friend V operator&(const V& a, const V& b) requires IntegerNumber<F> { return map(a, b, [](const F& p, const F& q) { return p & q; }); } \
@@ -175,6 +202,14 @@ constexpr bool distinct() {
     V& operator&=(const V& b) & requires IntegerNumber<F> { return *this = *this & b; }         \
     V& operator|=(const V& b) & requires IntegerNumber<F> { return *this = *this | b; }         \
     V& operator^=(const V& b) & requires IntegerNumber<F> { return *this = *this ^ b; }         \
+    V& operator<<=(const V& b) & requires IntegerNumber<F> { return *this = *this << b; }       \
+    V& operator>>=(const V& b) & requires IntegerNumber<F> { return *this = *this >> b; }       \
+    V& operator%=(const F& s) & requires IntegerNumber<F> { return *this = *this % s; }         \
+    V& operator&=(const F& s) & requires IntegerNumber<F> { return *this = *this & s; }         \
+    V& operator|=(const F& s) & requires IntegerNumber<F> { return *this = *this | s; }         \
+    V& operator^=(const F& s) & requires IntegerNumber<F> { return *this = *this ^ s; }         \
+    V& operator<<=(const F& s) & requires IntegerNumber<F> { return *this = *this << s; }       \
+    V& operator>>=(const F& s) & requires IntegerNumber<F> { return *this = *this >> s; }       \
     /* GLSL's == and != of whole vectors: one bool. */                                          \
     friend auto operator==(const V& a, const V& b) {                                            \
         return fold(a, b, [](const F& p, const F& q) { return p == q; }, [](const auto& p, const auto& q) { return p && q; }); \

@@ -1,7 +1,8 @@
-// Ken Perlin's improved noise (2002) over seed 001's tables (the blog's "Improved Perlin noise
-// from GPU Gems 2"), and the blog's looping variant texShaderNoise. After perlin_permutation.glsl.
+// Ken Perlin's improved noise (2002) over the ProcTexGen articles' tables ("Improved Perlin noise
+// from GPU Gems 2"), and the articles' looping variant texShaderNoise. After
+// perlin_permutation.glsl.
 
-// The 16 gradients (seed 001 lines 59-76): the 12 cube edge midpoints and 4 of them again, the
+// The 16 gradients ("Crazy 8s"): the 12 cube edge midpoints and 4 of them again, the
 // vectors the reference implementation's `grad(hash & 15, ...)` bit tests select.
 const vec3 g[16] = vec3[16](
     vec3( 1, 1, 0), vec3(-1, 1, 0), vec3( 1,-1, 0), vec3(-1,-1, 0),
@@ -9,7 +10,7 @@ const vec3 g[16] = vec3[16](
     vec3( 0, 1, 1), vec3( 0,-1, 1), vec3( 0, 1,-1), vec3( 0,-1,-1),
     vec3( 1, 1, 0), vec3( 0,-1, 1), vec3(-1, 1, 0), vec3( 0,-1,-1));
 
-// The seed prints these three bodies without their headers (its text was cut): restored as the
+// The articles print these three bodies without their headers (their text was cut): restored as the
 // blog's published sample has them.
 vec3 texfade(vec3 t)
 {
@@ -19,7 +20,7 @@ vec3 texfade(vec3 t)
 
 float texgrad(int hash, vec3 p)
 {
-    return dot(g[hash & 15], p); // seed: g[hash%16] (% of a negative int is undefined in GLSL)
+    return dot(g[hash & 15], p); // the articles: g[hash%16] (% of a negative int is undefined in GLSL)
 }
 
 float texgradperm(int x, vec3 p)
@@ -27,7 +28,7 @@ float texgradperm(int x, vec3 p)
     return texgrad(perm(x), p);
 }
 
-// The reference algorithm the seed quotes (lines 19-25: A = p[X]+Y; AA = p[A]+Z; AB = p[A+1]+Z;
+// The reference algorithm the articles quote ("Crazy 8s": A = p[X]+Y; AA = p[A]+Z; AB = p[A+1]+Z;
 // B = p[X+1]+Y; ...), on the same tables; HLSL's lerp is GLSL's mix.
 float inoise(vec3 p)
 {
@@ -46,11 +47,11 @@ float inoise(vec3 p)
                        texgradperm(BB + 1, p + vec3(-1, -1, -1)), f.x), f.y), f.z);
 }
 
-// Seed 001 lines 95-121: noise that loops every `repeat` cells, offset into the table by `base`.
+// "Crazy 8s": noise that loops every `repeat` cells, offset into the table by `base`.
 // Ported from HLSL: float3/int3 -> vec3/ivec3; fmod (truncating: negative for p < 0, which would
 // index outside the table) -> mod (floored); `(I+1) % repeat.xxx` (a scalar's swizzle: GLSL 4.20)
 // -> `(I + 1) % repeat`; the default argument `base = 0` passed by the callers; lerp -> mix; the
-// line `float3 f = texfade(p);`, lost from the seed's text (line 112 reads an undeclared f),
+// line `float3 f = texfade(p);`, lost from the articles' text (the next line reads an undeclared f),
 // restored.
 float texShaderNoise(vec3 p, int repeat, int base)
 {

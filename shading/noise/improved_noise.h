@@ -1,5 +1,5 @@
 #pragma once
-// Ken Perlin's improved noise and seed 001's looping variant, translated from improved_noise.glsl
+// Ken Perlin's improved noise and the ProcTexGen articles' looping variant, translated from improved_noise.glsl
 // beside this file, line for line. Integer lattice arithmetic in int lanes (int_t<F>), tables
 // read per lane.
 

@@ -1,7 +1,7 @@
-// Ken Perlin's permutation of 0..255 (seed 001 lines 43-57: `static int permutation[]`), as a
-// GLSL constant array, and perm(): the seed's `permutation[i % 256]`. GLSL leaves % undefined for
-// negative operands; `& 255` is the same for i >= 0 and wraps negative lattice coordinates as the
-// reference implementation's `& 255` does. Needs #version 130 (int &).
+// Ken Perlin's permutation of 0..255 (the ProcTexGen articles, "Crazy 8s": `static int
+// permutation[]`), as a GLSL constant array, and perm(): the articles' `permutation[i % 256]`. GLSL
+// leaves % undefined for negative operands; `& 255` is the same for i >= 0 and wraps negative
+// lattice coordinates as the reference implementation's `& 255` does. Needs #version 130 (int &).
 const int permutation[256] = int[256](151,160,137,91,90,15,
 131,13,201,95,96,53,194,233,7,225,140,36,103,30,69,142,8,99,37,240,21,10,23,
 190, 6,148,247,120,234,75,0,26,197,62,94,252,219,203,117,35,11,32,57,177,33,

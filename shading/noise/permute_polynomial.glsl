@@ -1,5 +1,6 @@
-// Seed 002 ("Noise is Beautiful"): the permutation polynomial (34h + b)h mod 289 with its
-// parameter b, and the 3D gradient the seed builds from it in its scattering example (line 203),
+// Noise is Beautiful (notes), "Permutation Polynomials": the polynomial (34h + b)h mod 289 with
+// its parameter b, and the 3D gradient the notes build from it in "Scatterings" ("Example: Sample
+// Code"),
 // unchanged. The 2D gradients differ per listing (B2 = 23 for Perlin noise, 6 for simplex noise)
 // and stay with their noise.
 // Generate gradient vecors using a permutation polynomial

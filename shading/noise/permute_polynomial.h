@@ -1,10 +1,10 @@
 #pragma once
-// Seed 002's permutation polynomial with a parameter, and its 3D gradient: translated from
+// The "Noise is Beautiful" notes' permutation polynomial with a parameter, and its 3D gradient: translated from
 // permute_polynomial.glsl beside this file, line for line.
 
 #include "shading/glsl.h"
 
-namespace qs::noise::seed002 {
+namespace qs::noise::noise_is_beautiful {
 using namespace qs::glsl;
 
 // Generate gradient vecors using a permutation polynomial
@@ -15,7 +15,7 @@ F permute(const F& x, float b) {
     return mod((34.0f * h + b) * h, 289.0f);
 }
 
-// The scattering example's gradient (seed line 203): a lattice point's three hashes, centred and
+// The scattering example's gradient ("Scatterings", "Example: Sample Code"): a lattice point's three hashes, centred and
 // normalised: NaN at lattice (142, 2, 248) mod 289, where all three hashes are 144 (no scene
 // here reaches it).
 template <class F>
@@ -31,4 +31,4 @@ vec3<F> gradient(const vec3<F>& p) {
     return normalize(vec3<F>(x, y, z) - vec3<F>(0.5f, 0.5f, 0.5f));
 }
 
-}  // namespace qs::noise::seed002
+}  // namespace qs::noise::noise_is_beautiful

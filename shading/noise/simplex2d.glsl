@@ -1,6 +1,6 @@
-// 2D simplex noise, Listing 1.3 of "Procedural Textures in GLSL" (Ashima Arts, 2011).
-// Deliberate difference from the seed text: `x0.xyxy + C.xxzz`, not the printed `C.xxxx`, which
-// puts the third corner at x0 + C.x instead of x0 - 1 + 2 C.x (visible breaks along cell edges).
+// 2D simplex noise, Listing 1.3 of "Procedural Textures in GLSL" (Ashima Arts, 2011). Deliberate
+// difference from the printed listing: `x0.xyxy + C.xxzz`, not the printed `C.xxxx`, which puts the
+// third corner at x0 + C.x instead of x0 - 1 + 2 C.x (visible breaks along cell edges).
 vec3 mod289(vec3 x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }
 vec2 mod289(vec2 x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }
 vec3 permute(vec3 x) { return mod289(((x*34.0)+1.0)*x); }
@@ -15,8 +15,8 @@ float snoise(vec2 v) {
     vec2 x0 = v - i + dot(i, C.xx);
     // Other corners
     vec2 i1 = (x0.x > x0.y) ? vec2(1.0, 0.0) : vec2(0.0, 1.0);
-#ifdef SIMPLEX2D_SEED_TYPO
-    vec4 x12 = x0.xyxy + C.xxxx; // as printed in the seed text, to show what the typo does
+#ifdef SIMPLEX2D_LISTING_TYPO
+    vec4 x12 = x0.xyxy + C.xxxx; // as printed in the listing, to show what the typo does
 #else
     vec4 x12 = x0.xyxy + C.xxzz;
 #endif

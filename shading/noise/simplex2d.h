@@ -25,8 +25,8 @@ V mod289(const V& x) { return exact_product_add(floor(x * (1.0f / 289.0f)), V(-2
 template <class V>
 V permute289(const V& x) { return mod289(exact_product_add(x, V(34.0f), V(1.0f)) * x); }  // GLSL: permute
 
-// Corner offset of Listing 1.3. The seed prints C.xxxx; every published copy has C.xxzz.
-enum class Simplex2dCorner { Correct, SeedTypo };
+// Corner offset of Listing 1.3. The chapter prints C.xxxx; every published copy has C.xxzz.
+enum class Simplex2dCorner { Correct, ListingTypo };
 
 template <class F, Simplex2dCorner corner = Simplex2dCorner::Correct>
 F snoise(const vec2<F>& v) {

@@ -1,7 +1,7 @@
-// Seed 002 ("Noise is Beautiful"), line 138, "Simplex Noise: Sample Code": the gradient (B1 = 7,
+// Noise is Beautiful (notes), "Simplex Noise: Sample Code": the gradient (B1 = 7,
 // B2 = 6), the xy_to_uv shear and noise(), unchanged (the prose says 0.8 for the falloff under
 // the stretched grid, the code 0.75: the code is kept). Needs permute_polynomial.glsl first.
-// dnoise() is ours: the seed names it in its warping code (lines 171-181) and states the sum in a
+// dnoise() is ours: the notes name it in their warping code ("Warping") and states the sum in a
 // formula that was an image. It is d/dp of noise(p), corner by corner: with t = 0.75 - v.v and
 // w = t^4 (where t > 0), d/dp [w (g.v)] = t^4 g - 8 t^3 (g.v) v, since dv/dp is the identity;
 // times the output's scale 10.9 / 2.

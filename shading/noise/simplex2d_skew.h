@@ -1,11 +1,11 @@
 #pragma once
-// Seed 002's 2D simplex noise on the xy_to_uv shear, and its analytic gradient dnoise: translated
+// The "Noise is Beautiful" notes' 2D simplex noise on the xy_to_uv shear, and its analytic gradient dnoise: translated
 // from simplex2d_skew.glsl beside this file, line for line.
 
 #include "shading/glsl.h"
 #include "shading/noise/permute_polynomial.h"
 
-namespace qs::noise::seed002 {
+namespace qs::noise::noise_is_beautiful {
 using namespace qs::glsl;
 
 template <class F>
@@ -23,7 +23,7 @@ vec2<F> xy_to_uv(const vec2<F>& xy) { return vec2<F>(xy.x + xy.y * 0.5f, xy.y); 
 template <class F>
 vec2<F> uv_to_xy(const vec2<F>& uv) { return vec2<F>(uv.x - uv.y * 0.5f, uv.y); }
 
-// In [0,1] (the seeds inventory measured [0.16, 0.84] over 80x80 cells).
+// In [0,1] (measured: [0.16, 0.84] over 80x80 cells).
 template <class F>
 F noise(const vec2<F>& p) {
     vec2<F> uv = xy_to_uv(p);
@@ -83,4 +83,4 @@ vec2<F> dnoise(const vec2<F>& p) {
     return 10.9f / 2.f * d;
 }
 
-}  // namespace qs::noise::seed002
+}  // namespace qs::noise::noise_is_beautiful

@@ -1,10 +1,10 @@
-// Seed 002 ("Noise is Beautiful"), lines 140-156: 3D simplex noise ("Transform the point to
-// skewed space ... Find the 4 closest corners ... This can be done with step functions! ... To
-// generate gradients in 3D, we can use a Fibonacci Sphere"). The seed prints no code and its
-// formulas were images: written here from that prose, in the seed's style. Perlin's skew to the
-// simplex grid (F3 = 1/3, unskew G3 = 1/6), the corners by step functions, radial falloff
-// (0.6 - |v|^2)^4, each corner hashed by the seed's permute (b = 10), its gradient point h of 289
-// on a Fibonacci sphere. Needs permute_polynomial.glsl first.
+// Noise is Beautiful (notes), "Generating Noise (3D)" of "Simplex Noise": 3D simplex noise
+// ("Transform the point to skewed space ... Find the 4 closest corners ... This can be done with
+// step functions! ... To generate gradients in 3D, we can use a Fibonacci Sphere"). The notes print
+// no code and their formulas were images: written here from that prose, in the notes' style.
+// Perlin's skew to the simplex grid (F3 = 1/3, unskew G3 = 1/6), the corners by step functions,
+// radial falloff (0.6 - |v|^2)^4, each corner hashed by the notes' permute (b = 10), its gradient
+// point h of 289 on a Fibonacci sphere. Needs permute_polynomial.glsl first.
 vec3 fibonacci_sphere(float i) {
     // Point i of 289 on a Fibonacci sphere. The azimuth is taken as a fraction of a turn first so
     // that sin and cos see arguments in [0, 2 pi), not up to 289 * 2.4.
@@ -16,7 +16,7 @@ vec3 fibonacci_sphere(float i) {
 vec3 corner_gradient(vec3 c) {
     return fibonacci_sphere(permute(permute(permute(c.x, 10.0) + c.y, 10.0) + c.z, 10.0));
 }
-// The noise in [0,1] (the seed's convention; the seeds inventory measured [0.117, 0.888] over
+// The noise in [0,1] (the notes' convention; measured [0.117, 0.888] over
 // 60x60 cells); grad
 // receives its gradient in p, d/dp [t^4 (g.v)] = t^4 g - 8 t^3 (g.v) v for each corner.
 float noise3(vec3 p, out vec3 grad) {

@@ -1,11 +1,11 @@
 #pragma once
-// Seed 002's 3D simplex noise with gradients on a Fibonacci sphere, and its analytic gradient:
+// The "Noise is Beautiful" notes' 3D simplex noise with gradients on a Fibonacci sphere, and its analytic gradient:
 // translated from simplex3d_fibonacci.glsl beside this file, line for line.
 
 #include "shading/glsl.h"
 #include "shading/noise/permute_polynomial.h"
 
-namespace qs::noise::seed002 {
+namespace qs::noise::noise_is_beautiful {
 using namespace qs::glsl;
 
 template <class F>
@@ -52,4 +52,4 @@ F noise3(const vec3<F>& p, vec3<F>& grad) {
     return (scale * n + 1.0f) / 2.0f;
 }
 
-}  // namespace qs::noise::seed002
+}  // namespace qs::noise::noise_is_beautiful

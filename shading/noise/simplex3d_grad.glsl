@@ -1,8 +1,9 @@
-// Seed 000 (the chapter), Listing 1.2's G3_stp: the analytic gradient of the 3D simplex noise of
-// simplex3d.glsl (which must come first, with its #defines), written here: snoise() with its last
-// line differentiated, corner by corner, d/dx [m^4 (p.x)] = m^4 p - 8 m^3 (p.x) x, where
-// m = max(FALLOFF - x.x, 0) and x is the offset from the corner (dx/dv the identity: the corners
-// are constant within a simplex). The value is computed exactly as snoise() computes it.
+// Gustavson, Procedural Textures in GLSL, Listing 1.2's G3_stp: the analytic gradient of the 3D
+// simplex noise of simplex3d.glsl (which must come first, with its #defines), written here:
+// snoise() with its last line differentiated, corner by corner, d/dx [m^4 (p.x)] = m^4 p - 8 m^3
+// (p.x) x, where m = max(FALLOFF - x.x, 0) and x is the offset from the corner (dx/dv the identity:
+// the corners are constant within a simplex). The value is computed exactly as snoise() computes
+// it.
 float snoise_grad(vec3 v, out vec3 gradient) {
     const vec2 C = vec2(1.0/6.0, 1.0/3.0);
     const vec4 D = vec4(0.0, 0.5, 1.0, 2.0);

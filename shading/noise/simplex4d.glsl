@@ -1,11 +1,11 @@
-// 4D simplex noise, for the chapter's animation section (seed 000, lines 218-225: "Perlin noise
-// is available in a 4D version ... 3D spatial coordinates and time together provide the texture
-// coordinates for an animated solid texture"). The chapter prints no 4D code; this one is ours,
-// in the style of simplex3d.glsl: skew F4 = (sqrt 5 - 1)/4, unskew G4 = (5 - sqrt 5)/20, the
-// corners' order from each component's rank among the four (six pairwise step()s, each pair once,
-// so that ties stay consistent), the mod-289 permutation polynomial (34x + 1)x, gradients on the
-// 32 edge midpoints of the 4-cube (one component 0, three +-1), falloff (0.6 - |x|^2)^4, scale 27
-// (the seeds inventory measured [-0.98, 0.98] over a 40-unit window).
+// 4D simplex noise, for the animation section of Gustavson's chapter (1.6: "Perlin noise is
+// available in a 4D version ... 3D spatial coordinates and time together provide the texture
+// coordinates for an animated solid texture"). The chapter prints no 4D code; this one is ours, in
+// the style of simplex3d.glsl: skew F4 = (sqrt 5 - 1)/4, unskew G4 = (5 - sqrt 5)/20, the corners'
+// order from each component's rank among the four (six pairwise step()s, each pair once, so that
+// ties stay consistent), the mod-289 permutation polynomial (34x + 1)x, gradients on the 32 edge
+// midpoints of the 4-cube (one component 0, three +-1), falloff (0.6 - |x|^2)^4, scale 27
+// (measured: [-0.98, 0.98] over a 40-unit window).
 vec4 mod289(vec4 x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }
 float mod289(float x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }
 vec4 permute(vec4 x) { return mod289(((x*34.0)+1.0)*x); }

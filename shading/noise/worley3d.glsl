@@ -1,16 +1,16 @@
-// Seed 001 lines 156-217: the blog's 3D cellular (Worley) noise, voronoi(): the two nearest of the
-// 27 jittered feature points around a position, their distances F1 and F2 and their positions,
-// Euclidean or Manhattan. After perlin_permutation.glsl. Needs #version 130 (int &).
+// The ProcTexGen articles, "Cellular Noise": their 3D cellular (Worley) noise, voronoi(): the two
+// nearest of the 27 jittered feature points around a position, their distances F1 and F2 and their
+// positions, Euclidean or Manhattan. After perlin_permutation.glsl. Needs #version 130 (int &).
 
 // The blog's voronoi() calls perm() and perm2d(), GPU Gems 2's lookups into point-sampled,
 // wrapping permutation textures (a 256x1 texture of P[i]/255 and a 256x256 RGBA texture of
-// (P[P[x]+y], P[P[x]+y+1], P[P[x+1]+y], P[P[x+1]+y+1])/255), which the seed does not give.
+// (P[P[x]+y], P[P[x]+y+1], P[P[x+1]+y], P[P[x+1]+y+1])/255), which the articles do not give.
 // Written here as the same lookups into the integer table: texel floor(u * 256) mod 256.
 float perm(float x)
 {
     return float(perm(int(floor(x * 256.0)))) / 255.0;
 }
-// The seed's `float3 cellnoise = perm(perm2d(uv) + w)` passes a float4: read per component
+// The articles' `float3 cellnoise = perm(perm2d(uv) + w)` passes a float4: read per component
 // (three independent values; HLSL's tex1D on an L8 texture would give (L, L, L) and put every
 // feature point on its cell's diagonal, which the blog's pictures do not show).
 vec4 perm(vec4 x)
@@ -29,7 +29,7 @@ vec4 perm2d(vec2 p)
 // HLSL, complete apart from perm/perm2d. Ported: float3 -> vec3; the default arguments (jitter
 // = .9, manhattanDistance = false) passed by the callers; `.xyz` of the vec4 perm(); int literals
 // of the float loops written as floats. pos1 and pos2 are read before they are written on the
-// first point (as in the seed): undefined until the second point, which no caller sees.
+// first point (as in the articles): undefined until the second point, which no caller sees.
 void voronoi(vec3 position, out float f1, out vec3 pos1, out float f2, out vec3 pos2, float jitter, bool manhattanDistance)
 {
     vec3 thiscell = floor(position)+.5;

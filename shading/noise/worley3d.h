@@ -1,5 +1,5 @@
 #pragma once
-// Seed 001's 3D cellular (Worley) noise, voronoi(), translated from worley3d.glsl beside this file,
+// The ProcTexGen articles' 3D cellular (Worley) noise, voronoi(), translated from worley3d.glsl beside this file,
 // line for line. The metric is a run-time bool, as in the GLSL, so that the eight displays share
 // one instantiation per number type.
 

@@ -23,8 +23,12 @@
 // cases with the values: a helper lane's NaN reaches the pixels whose derivatives it enters.
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "shading/number/lanes.h"
 
@@ -79,6 +83,92 @@ private:
     std::uint64_t bits_ = 0;
 };
 
+// ---- the loops' rule, checked -----------------------------------------------------------------
+// A glsl::Loop holds the variables its body assigns (glsl/control.h): the body runs on for the
+// lanes that have left the loop, and only the variables the loop holds keep those lanes' values.
+// Another variable declared before the loop and assigned in its body goes on changing for them,
+// and the image comes out wrong wherever neighbouring fragments leave at different iterations,
+// with nothing to say so. The checked instantiation checks every write against the loops running:
+// each checked value (Checked, CheckedMask) knows how many loops were running where it was made,
+// and a write to one made outside a running loop must fall inside a variable that loop holds.
+// A loop runs from its head's first test to its end (the head that ends it, or end()); the
+// loops' own bookkeeping (saving and restoring the lanes' values) is not checked.
+class LoopWrites {
+public:
+    struct Held {
+        const void* begin;
+        const void* end;
+    };
+
+    // A loop holding `held` is made (its head not yet tested); returns its place.
+    std::size_t enter(std::vector<Held> held) {
+        loops_.push_back({std::move(held), nullptr, 0, false});
+        return loops_.size() - 1;
+    }
+    // Its head is tested at file:line: from here on the loop runs.
+    void head(std::size_t loop, const char* file, unsigned line) {
+        Loop& l = loops_[loop];
+        if (!l.running && !l.file) {
+            l.file = file, l.line = line, l.running = true;
+            ++running_;
+        }
+    }
+    // The loop has ended (its body runs no more); then it is gone.
+    void end(std::size_t loop) {
+        if (loops_[loop].running) --running_;
+        loops_[loop].running = false;
+    }
+    void leave(std::size_t loop) {
+        end(loop);
+        loops_.resize(loop);
+    }
+    // How many loops are running: what a value made here records.
+    int running() const { return running_; }
+
+    // A write of `bytes` bytes at `at` to a value made where `made` loops were running. Throws
+    // std::logic_error naming the innermost running loop that does not hold it.
+    void check(const void* at, std::size_t bytes, int made, const char* what) const {
+        if (suspended_ || made >= running_) return;
+        const auto* a = static_cast<const std::byte*>(at);
+        int seen = 0;
+        for (const Loop& l : loops_) {
+            if (!l.running || seen++ < made) continue;
+            bool held = false;
+            for (const Held& h : l.held) held = held || (a >= h.begin && a + bytes <= static_cast<const std::byte*>(h.end));
+            if (!held) {
+                throw std::logic_error(std::string("a Loop's body writes ") + what + " declared before the loop (" + l.file + ":" +
+                                       std::to_string(l.line) +
+                                       ") that the loop does not hold: give it to the Loop (Loop loop(x, y, ...)) or declare "
+                                       "it inside the body");
+            }
+        }
+    }
+
+    // While one is alive, writes are the loops' own.
+    class Suspend {
+    public:
+        explicit Suspend(LoopWrites& w) : w_(w) { ++w_.suspended_; }
+        ~Suspend() { --w_.suspended_; }
+        Suspend(const Suspend&) = delete;
+        Suspend& operator=(const Suspend&) = delete;
+
+    private:
+        LoopWrites& w_;
+    };
+
+private:
+    struct Loop {
+        std::vector<Held> held;
+        const char* file;
+        unsigned line;
+        bool running;
+    };
+    std::vector<Loop> loops_;  // innermost last
+    int running_ = 0;
+    int suspended_ = 0;
+};
+inline thread_local LoopWrites loop_writes;
+
 // A mask's lanes as bits (bit i: lane i).
 template <class M>
 std::uint32_t lane_bits(const M& m) {
@@ -98,6 +188,12 @@ struct CheckedMask {
     CheckedMask() = default;
     CheckedMask(const M& mask, LaneCases c) : m(mask), cases(c) {}
     CheckedMask(bool b) : m(b) {}  // NOLINT: GLSL's true and false
+    CheckedMask(const CheckedMask& o) : m(o.m), cases(o.cases) {}  // made here, not where o was
+    CheckedMask& operator=(const CheckedMask& o) {
+        loop_writes.check(this, sizeof *this, made_, "a bool");
+        m = o.m, cases = o.cases;
+        return *this;
+    }
 
     friend CheckedMask operator&&(const CheckedMask& a, const CheckedMask& b) { return {a.m && b.m, a.cases | b.cases}; }
     friend CheckedMask operator||(const CheckedMask& a, const CheckedMask& b) { return {a.m || b.m, a.cases | b.cases}; }
@@ -111,6 +207,9 @@ struct CheckedMask {
     friend bool any(const CheckedMask& a) { return any(a.m); }
     friend bool all(const CheckedMask& a) { return all(a.m); }
     friend bool lane(const CheckedMask& a, int i) { return a.m[i]; }
+
+private:
+    int made_ = loop_writes.running();  // loops running where it was made (LoopWrites)
 };
 
 namespace checked_detail {
@@ -139,6 +238,12 @@ public:
     LaneCases cases;
 
     Checked() = default;
+    Checked(const Checked& o) : v(o.v), cases(o.cases) {}  // made here, not where o was (LoopWrites)
+    Checked& operator=(const Checked& o) {
+        loop_writes.check(this, sizeof *this, made_, !is_integer ? "a float" : std::is_signed_v<value_type> ? "an int" : "a uint");
+        v = o.v, cases = o.cases;
+        return *this;
+    }
     Checked(value_type x) : v(x) {}  // NOLINT: broadcast, as GLSL promotes a literal
     template <class S>
         requires(std::is_arithmetic_v<S> && !std::is_same_v<S, value_type>)
@@ -280,6 +385,8 @@ public:
     friend value_type lane(const Checked& a, int i) { return a.v[i]; }
 
 private:
+    int made_ = loop_writes.running();  // loops running where it was made (LoopWrites)
+
     // The lanes of a shift count GLSL leaves undefined.
     template <class N>
     static LaneCases bad_count(const N& n) {

@@ -167,8 +167,6 @@ public:
     IntLanes& operator^=(const IntLanes& b) & { return *this = *this ^ b; }
     IntLanes& operator<<=(int n) & { return *this = *this << n; }
     IntLanes& operator>>=(int n) & { return *this = *this >> n; }
-    IntLanes& operator++() & { return *this = *this + IntLanes(1); }
-    IntLanes& operator--() & { return *this = *this - IntLanes(1); }
 
     friend Mask operator<(const IntLanes& a, const IntLanes& b) { return mask(simd::less(a.v, b.v)); }
     friend Mask operator<=(const IntLanes& a, const IntLanes& b) { return mask(simd::less_equal(a.v, b.v)); }

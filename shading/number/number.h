@@ -72,6 +72,28 @@ inline constexpr bool has_derivatives_v = has_derivatives<F>::value;
 template <class F>
 inline constexpr bool always_false = false;
 
+// ---- GLSL's ++ and -- ----------------------------------------------------------------------
+// On every number type, float and integer: ++x adds 1 (1.0 for floats) as x += 1 does and gives x;
+// x++ gives the value before. (float and double have their own.)
+template <class N>
+concept Steppable = (Number<N> || IntegerNumber<N>) && !std::is_arithmetic_v<N>;
+template <Steppable N>
+N& operator++(N& x) { return x += N(1); }
+template <Steppable N>
+N& operator--(N& x) { return x -= N(1); }
+template <Steppable N>
+N operator++(N& x, int) {
+    const N before = x;
+    x += N(1);
+    return before;
+}
+template <Steppable N>
+N operator--(N& x, int) {
+    const N before = x;
+    x -= N(1);
+    return before;
+}
+
 // ---- derivative built-ins on quads ---------------------------------------------------------
 namespace quad_detail {
 // Index functions over the lane number i; `base` is the quad's lane 0. Function objects, not

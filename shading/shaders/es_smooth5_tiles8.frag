@@ -1,5 +1,6 @@
-// Seed 003, lines 160-179: the spoiler's half-neighbour filter (the centre 1/2, the four edge
-// neighbours 1/8 each), with the main() of lines 129-135 at 8 tiles ("Reduce your number of tiles
+// OpenGL ES Pixel Shaders Tutorial, "Procedural Textures: Smooth Noise": the spoiler's
+// half-neighbour filter (the centre 1/2, the four edge
+// neighbours 1/8 each), with the section's main() at 8 tiles ("Reduce your number of tiles
 // to 8."), no discard.
 float smoothNoise(vec2 p) {
   vec2 nn = vec2(p.x, p.y+1.);

@@ -1,6 +1,6 @@
-// Seed 003, lines 99-135: the 3x3 neighbourhood average (smoothNoise with nine randomNoise taps)
-// and the main() the tutorial prints with it, at 128 tiles and without discard (the whole window
-// is drawn). Unchanged.
+// OpenGL ES Pixel Shaders Tutorial, "Procedural Textures: Smooth Noise": the 3x3 neighbourhood
+// average (smoothNoise with nine randomNoise taps) and the main() the tutorial prints with it, at
+// 128 tiles and without discard (the whole window is drawn). Unchanged.
 float smoothNoise(vec2 p) {
   vec2 nn = vec2(p.x, p.y+1.);
   vec2 ne = vec2(p.x+1., p.y+1.);

@@ -1,4 +1,5 @@
-// Seed 003, lines 64-66: the square viewport cut into 128x128 tiles ("the square grid for
+// OpenGL ES Pixel Shaders Tutorial, "Procedural Textures: Square Grid": the square viewport cut
+// into 128x128 tiles ("the square grid for
 // tiles = 128."), es_tiles2's lines with 128.
 void main(void) {
     vec2 position = gl_FragCoord.xy/uResolution.xx;

@@ -1,4 +1,5 @@
-// Seed 003, lines 44-47: the square viewport cut into 2x2 tiles of one random grey each.
+// OpenGL ES Pixel Shaders Tutorial, "Procedural Textures: Square Grid": the square viewport cut
+// into 2x2 tiles of one random grey each.
 void main(void) {
     vec2 position = gl_FragCoord.xy/uResolution.xx;
     if ((position.x>1.) || (position.y>1.)) {

@@ -1,8 +1,8 @@
-// Seed 001 (the ProcTexGen blog), noiseFast: two trilinear lookups of an 8x8x8-cell looping noise
-// stored in a 32^3 volume, at p/8 and p/72; the low frequency rotates the high frequency's
-// (real, imaginary) pair. Ported from HLSL: tex3D -> texture3D, half -> float, PI defined (the
-// seed uses it undeclared), noise3dSampler declared (the scene binds the volume: GL_REPEAT on s,
-// t, r, GL_LINEAR, no mipmaps).
+// The ProcTexGen articles, "Noise + Real Numbers + Imaginary Numbers == ???": noiseFast, two
+// trilinear lookups of an 8x8x8-cell looping noise stored in a 32^3 volume, at p/8 and p/72; the
+// low frequency rotates the high frequency's (real, imaginary) pair. Ported from HLSL: tex3D ->
+// texture3D, half -> float, PI defined (the articles use it undeclared), noise3dSampler declared
+// (the scene binds the volume: GL_REPEAT on s, t, r, GL_LINEAR, no mipmaps).
 uniform sampler3D noise3dSampler;
 varying vec3 P;
 const float PI = 3.14159265358979;

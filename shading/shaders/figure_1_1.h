@@ -1,7 +1,8 @@
 #pragma once
 // The five shaders of Figure 1.1 (four spheres over a flow-noise ground plane), translated from
-// the .vert/.frag files beside this header. Each struct: `info` (what it needs, its GLSL),
-// `vertex` (float, per vertex) and `fragment<F>` over any number type.
+// the .vert/.frag files beside this header. Each struct: `info` (what it needs, its GLSL), its
+// vertex stage and `fragment<F>` over any number type. The spots, with their anti-aliasing
+// variants, are in aastep_shaders.h.
 
 #include "shading/glsl.h"
 #include "shading/noise/cellular.h"
@@ -9,7 +10,8 @@
 #include "shading/noise/simplex3d.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/aastep.h"
+#include "shading/shaders/aastep_shaders.h"
+#include "shading/shaders/collections.h"
 #include "shading/shaders/vertex_stages.h"
 #include "shading/vertex.h"
 
@@ -17,13 +19,16 @@ namespace qs::shaders {
 using namespace qs::glsl;
 
 struct FlowNoise {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-        "flow_noise", "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
-        Needs{.coordinates = Coordinates::Object2D, .derivatives = false, .texture = false, .time = true},
-        {"shaders/object_plane.vert"}, {"noise/flow_noise.glsl", "shaders/flow_noise.frag"}, {},
+    static constexpr ShaderInfo info{
+        .name = "flow_noise",
+        .description = "Figure 1.1 plane: three octaves of flow noise (2D simplex, rotating gradients)",
+        .needs = {.coordinates = Coordinates::Object2D, .time = true},
+        .glsl_fragment = {"noise/flow_noise.glsl", "shaders/flow_noise.frag"},
         // srdnoise's rotation enters through fract(hash * K + rot): period 1 in rot, so the
         // octaves' 0.2 t, 0.51 t, 0.77 t are all whole after 100 s
-        100.0});
+        .time_period = 100.0,
+        .wide_batches = true,
+    };
     using VertexStage = ObjectPlane;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -44,11 +49,15 @@ struct FlowNoise {
 inline constexpr double kSimplex3dTimePeriod = 867.0;
 
 struct Simplex3d {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-        "simplex3d", "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
-        {"shaders/sphere_simplex.vert"}, {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
-        noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod});
+    static constexpr ShaderInfo info{
+        .name = "simplex3d",
+        .description = "Figure 1.1 sphere 1: grey 3D simplex noise (2011 variant: falloff 0.6, scale 42)",
+        .needs = {.coordinates = Coordinates::Object3D, .time = true},
+        .glsl_fragment = {"noise/simplex3d.glsl", "shaders/simplex3d.frag"},
+        .glsl_defines = noise::Simplex3dDemo::glsl_defines,
+        .time_period = kSimplex3dTimePeriod,
+        .wide_batches = true,
+    };
     using VertexStage = Sphere<4, 1>;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -58,10 +67,14 @@ struct Simplex3d {
 };
 
 struct Turbulence {
-    static constexpr ShaderInfo info{"turbulence", "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
-                                     Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
-                                     {"shaders/sphere_turbulence.vert"}, {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
-                                     noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod};
+    static constexpr ShaderInfo info{
+        .name = "turbulence",
+        .description = "Figure 1.1 sphere 2: four octaves of |3D simplex noise|",
+        .needs = {.coordinates = Coordinates::Object3D, .time = true},
+        .glsl_fragment = {"noise/simplex3d.glsl", "shaders/turbulence.frag"},
+        .glsl_defines = noise::Simplex3dDemo::glsl_defines,
+        .time_period = kSimplex3dTimePeriod,
+    };
     using VertexStage = Sphere<2, -1>;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -75,34 +88,6 @@ struct Turbulence {
     }
 };
 
-// The book's form blends over fwidth; the error study adds the gradient's length (AAWidth::Length)
-// and no anti-aliasing (AAWidth::Step), selected in GLSL by SPOTS_LENGTH / SPOTS_STEP.
-template <AAWidth W = AAWidth::Fwidth>
-struct Spots {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-        W == AAWidth::Fwidth ? "spots" : W == AAWidth::Length ? "spots_length" : "spots_step",
-        "Figure 1.1 sphere 3: rings around 3D Worley points (cellular2x2x2), fwidth anti-aliasing",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = W != AAWidth::Step, .texture = false, .time = true},
-        {"shaders/sphere_spots.vert"}, {"noise/cellular.glsl", "shaders/spots.frag"},
-        W == AAWidth::Fwidth ? "" : W == AAWidth::Length ? "#define SPOTS_LENGTH\n" : "#define SPOTS_STEP\n",
-        289.0});  // P.z moves with time; cellular hashes floor(P) mod 289
-    using VertexStage = Sphere<4, -1>;
-    template <class F>
-    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
-        vec2<F> Fs = noise::cellular2x2x2(in.P);  // GLSL: vec2 F
-        if constexpr (W == AAWidth::Step) {
-            F n1 = step(0.4f, Fs.x);
-            F n2 = step(0.5f, Fs.x);
-            return vec4<F>(n1, n2, n2, 1.0f);
-        } else {
-            F s = W == AAWidth::Length ? length(vec2<F>(dFdx(Fs.x), dFdy(Fs.x))) : fwidth(Fs.x);
-            F n1 = smoothstep(0.4f - s, 0.4f + s, Fs.x);
-            F n2 = smoothstep(0.5f - s, 0.5f + s, Fs.x);
-            return vec4<F>(n1, n2, n2, 1.0f);
-        }
-    }
-};
-
 // Mesa's GLSL compiler reassociates the noise's dot products (design.md, "Not reproduced exactly"):
 // on the grazing plane's vertices, at integer coordinates up to 100, the noise's lattice floor sits
 // on a knife edge and the F2 - F1 borders move (measured on Mesa 22.3.6: 197 pixels over 1/255,
@@ -113,15 +98,19 @@ inline constexpr CheckBound kTiles3dCheckBounds[] = {
      "floor (measured 197 over 1/255, 168 over 2/255)"}};
 
 struct Tiles3d {
-    static constexpr ShaderInfo info = with_check_bounds(
-        with_wide_batches(ShaderInfo{
-            "tiles3d", "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
-            Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = true},
-            {"noise/simplex3d.glsl", "shaders/sphere_warp.vert"}, {"noise/cellular.glsl", "shaders/tiles3d.frag"},
-            noise::Simplex3dDemo::glsl_defines, kSimplex3dTimePeriod}),
-        kTiles3dCheckBounds);
+    static constexpr ShaderInfo info{
+        .name = "tiles3d",
+        .description = "Figure 1.1 sphere 4: 3D Worley F2-F1 on a domain warped per vertex by 3D noise",
+        .needs = {.coordinates = Coordinates::Object3D, .time = true},
+        .glsl_fragment = {"noise/cellular.glsl", "shaders/tiles3d.frag"},
+        .glsl_defines = noise::Simplex3dDemo::glsl_defines,
+        .time_period = kSimplex3dTimePeriod,
+        .wide_batches = true,
+        .check_bounds = kTiles3dCheckBounds,
+    };
     // sphere_warp.vert
     struct VertexStage {
+        static constexpr GlslFiles glsl{"noise/simplex3d.glsl", "shaders/sphere_warp.vert"};
         template <class T>
         using Varyings = SolidVaryings<T>;
         static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {
@@ -141,5 +130,7 @@ struct Tiles3d {
         return vec4<F>(0.6f * n, 1.1f * n, 0.5f * n, 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kGustavson, FlowNoise, Simplex3d, Turbulence, Spots<>, Tiles3d)
 
 }  // namespace qs::shaders

@@ -1,5 +1,5 @@
-// Seed 002 ("Noise is Beautiful"), lines 59-63: Dave Hoskins' hash12, unchanged. Shown as 32
-// cells across the plane: the seed says how to hash, not what it drew.
+// Noise is Beautiful (notes), "Ad-Hoc Float Hash": Dave Hoskins' hash12, unchanged. Shown as 32
+// cells across the plane: the notes say how to hash, not what they drew.
 varying vec2 st;
 float hash12(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);

@@ -1,6 +1,6 @@
-// Seed 002 ("Noise is Beautiful"), lines 8-22: the PCG hash and cellnoise_pcg2 (GLSL 1.30: uint).
+// Noise is Beautiful (notes), "Integer Hash": the PCG hash and cellnoise_pcg2 (GLSL 1.30: uint).
 // Changed: two typos, `flag cellnoise_pcg2` is `float`, and the parameter `input` (a reserved
-// word) is `v`. Shown as 32 cells across the plane: the seed says how to hash, not what it drew.
+// word) is `v`. Shown as 32 cells across the plane: the notes say how to hash, not what they drew.
 varying vec2 st;
 uint pcg_hash(uint v) {
     uint state = v * 747796405u + 2891336453u;

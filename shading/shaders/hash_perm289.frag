@@ -1,5 +1,5 @@
-// Seed 002 ("Noise is Beautiful"), lines 30-38: the permutation polynomial (34h + 10)h mod 289
-// and cellnoise_perm, unchanged (`289.0f` is GLSL 1.20). The seed does not floor its input:
+// Noise is Beautiful (notes), "Permutation Polynomials": the polynomial (34h + 10)h mod 289
+// and cellnoise_perm, unchanged (`289.0f` is GLSL 1.20). The notes do not floor the input:
 // shown on the corners of 32 cells across the plane.
 varying vec2 st;
 float permute(float x) {

@@ -1,5 +1,5 @@
-// Seed 002 ("Noise is Beautiful"), lines 44-46: the sine hash ("trash bits"), unchanged. Shown as
-// 32 cells across the plane: the seed says how to hash, not what it drew.
+// Noise is Beautiful (notes), "Trash Bits": the sine hash, unchanged. Shown as
+// 32 cells across the plane: the notes say how to hash, not what they drew.
 varying vec2 st;
 float cellnoise_sin(vec2 p) {
     return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453);

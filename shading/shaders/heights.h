@@ -5,10 +5,12 @@
 #include <tuple>
 
 #include "shading/glsl.h"
+#include "shading/height_field_of.h"
 #include "shading/noise/simplex3d.h"
 #include "shading/noise/simplex3d_grad.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
+#include "shading/shaders/collections.h"
 #include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
@@ -16,6 +18,7 @@ using namespace qs::glsl;
 
 // surface_point.vert: P = gl_Vertex.xyz
 struct SurfacePoint {
+    static constexpr GlslFiles glsl{"shaders/surface_point.vert"};
     template <class T>
     using Varyings = SolidVaryings<T>;
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<SurfacePoint>& out) {
@@ -50,14 +53,16 @@ struct NoiseBumpsHeight {
     }
 };
 
-inline constexpr Needs kHeightNeeds{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false};
+inline constexpr Needs kHeightNeeds{.coordinates = Coordinates::Object3D};
 
 struct NoiseBumps {
     static constexpr ShaderInfo info{
-        "noise_bumps", "a stone colour from a height of three octaves of 3D simplex noise (noise_bumps_height), for bakes with normal maps",
-        kHeightNeeds, {"shaders/surface_point.vert"},
-        {"noise/simplex3d.glsl", "shaders/noise_bumps_height.glsl", "shaders/noise_bumps.frag"},
-        Simplex3dSmooth::glsl_defines};
+        .name = "noise_bumps",
+        .description = "a stone colour from a height of three octaves of 3D simplex noise (noise_bumps_height), for bakes with normal maps",
+        .needs = kHeightNeeds,
+        .glsl_fragment = {"noise/simplex3d.glsl", "shaders/noise_bumps_height.glsl", "shaders/noise_bumps.frag"},
+        .glsl_defines = Simplex3dSmooth::glsl_defines,
+    };
     using VertexStage = SurfacePoint;
     using Height = NoiseBumpsHeight;
     template <class F>
@@ -69,10 +74,12 @@ struct NoiseBumps {
 
 struct NoiseBumpsHeightMap {
     static constexpr ShaderInfo info{
-        "noise_bumps_height", "noise_bumps' height as grey: the height map of its bake",
-        kHeightNeeds, {"shaders/surface_point.vert"},
-        {"noise/simplex3d.glsl", "shaders/noise_bumps_height.glsl", "shaders/noise_bumps_height.frag"},
-        Simplex3dSmooth::glsl_defines};
+        .name = "noise_bumps_height",
+        .description = "noise_bumps' height as grey: the height map of its bake",
+        .needs = kHeightNeeds,
+        .glsl_fragment = {"noise/simplex3d.glsl", "shaders/noise_bumps_height.glsl", "shaders/noise_bumps_height.frag"},
+        .glsl_defines = Simplex3dSmooth::glsl_defines,
+    };
     using VertexStage = SurfacePoint;
     using Height = NoiseBumpsHeight;
     template <class F>
@@ -84,11 +91,12 @@ struct NoiseBumpsHeightMap {
 // noise_bumps_lit.frag: the live counterpart of noise_bumps baked and drawn by baked_lit.
 struct NoiseBumpsLit {
     static constexpr ShaderInfo info{
-        "noise_bumps_lit", "noise_bumps lit live: the height's analytic gradient bends the face normal (cross(dFdx(P), dFdy(P))), Lambert as baked_lit",
-        Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = false},
-        {"shaders/surface_point.vert"},
-        {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/noise_bumps_lit.frag"},
-        Simplex3dSmooth::glsl_defines};
+        .name = "noise_bumps_lit",
+        .description = "noise_bumps lit live: the height's analytic gradient bends the face normal (cross(dFdx(P), dFdy(P))), Lambert as baked_lit",
+        .needs = {.coordinates = Coordinates::Object3D, .derivatives = true},
+        .glsl_fragment = {"noise/simplex3d.glsl", "noise/simplex3d_grad.glsl", "shaders/noise_bumps_lit.frag"},
+        .glsl_defines = Simplex3dSmooth::glsl_defines,
+    };
     using VertexStage = SurfacePoint;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -109,10 +117,13 @@ struct NoiseBumpsLit {
 
 // baked_lit.frag: what `quadshade bake --maps color,normal` draws its baked scene with.
 struct BakedLit {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-                                       "baked_lit", "a baked atlas lit: teximage's colour, Lambert with the object-space normal map `normalmap` (quadshade bake)",
-                                       Needs{.derivatives = false, .texture = true, .time = false, .samplers = {SamplerUse{"normalmap", 2}}},
-                                       {"shaders/plane_st.vert"}, {"shaders/baked_lit.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "baked_lit",
+        .description = "a baked atlas lit: teximage's colour, Lambert with the object-space normal map `normalmap` (quadshade bake)",
+        .needs = {.texture = true, .samplers = {SamplerUse{"normalmap", 2}}},
+        .glsl_fragment = {"shaders/baked_lit.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -123,5 +134,8 @@ struct BakedLit {
         return vec4<F>(color.xyz() * (0.2f + 0.8f * diffuse), color.w);
     }
 };
+
+QUADSHADE_SHADERS_IN(kProcTexGen, NoiseBumps, NoiseBumpsHeightMap, NoiseBumpsLit, BakedLit)
+QUADSHADE_HEIGHT_FIELD(NoiseBumps, NoiseBumpsHeightMap)
 
 }  // namespace qs::shaders

@@ -1,6 +1,6 @@
-// Seed 004 (Lawlor, procedural solid texturing), lines 9-22: "draw a checkerboard grid".
+// Lawlor, Procedural Solid Texturing: "you can draw a checkerboard grid".
 // Changed: `^` between the two comparisons is `^^`, GLSL's logical xor (GLSL 1.20 reserves `^`
-// and 1.30 defines it for integers only); `<` binds tighter than `^^`, as the seed intends.
+// and 1.30 defines it for integers only); `<` binds tighter than `^^`, as the notes intend.
 varying vec2 texcoords;
 vec4 grid(vec2 loc) {
     vec2 gridcorner=floor(loc);

@@ -1,4 +1,4 @@
-// Seed 004 (Lawlor, procedural solid texturing), lines 27-39: "draw a grid of dots", unchanged.
+// Lawlor, Procedural Solid Texturing: "Or you can draw a grid of dots", unchanged.
 varying vec2 texcoords;
 vec4 grid(vec2 loc) {
     vec2 gridcorner=floor(loc);

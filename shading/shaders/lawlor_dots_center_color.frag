@@ -1,4 +1,5 @@
-// Seed 004 (Lawlor), lines 63-75: each dot one colour, tex1 at its centre, unchanged; tex1 is
+// Lawlor, Procedural Solid Texturing: "consistent colors across the dots", tex1 at each dot's
+// centre, unchanged; tex1 is
 // declared (NetRun declared it).
 uniform sampler2D tex1;
 varying vec2 texcoords;

@@ -1,5 +1,6 @@
-// Seed 004 (Lawlor), lines 79-92: dots moved by a shift read from tex1. Changed: `.xy` added to
-// the shift (a vec4 assigned to a vec2 is an error in every GLSL); tex1 is declared.
+// Lawlor, Procedural Solid Texturing: "You can even move the dots", by a shift read from tex1.
+// Changed: `.xy` added to the shift (a vec4 assigned to a vec2 is an error in every GLSL); tex1 is
+// declared.
 uniform sampler2D tex1;
 varying vec2 texcoords;
 vec4 grid(vec2 loc) {

@@ -1,5 +1,6 @@
-// Seed 004 (Lawlor), lines 96-111: dots shifted by tex4 over the 3x3 neighbouring cells, the
-// colours of overlapping dots added. Changed: `.xy` added to the shift; the seed gives grid()
+// Lawlor, Procedural Solid Texturing: "To move dots farther than one grid cell": dots shifted by
+// tex4 over the 3x3 neighbouring cells, the
+// colours of overlapping dots added. Changed: `.xy` added to the shift; the notes give grid()
 // only, main() is the other snippets'; tex1 and tex4 are declared.
 uniform sampler2D tex1;
 uniform sampler2D tex4;

@@ -1,5 +1,5 @@
-// Seed 004 (Lawlor), lines 45-57: the dots coloured from tex1 at the fragment ("read texture 3"),
-// unchanged; tex1 is declared (NetRun declared it).
+// Lawlor, Procedural Solid Texturing: "You can change the dots' colors", from tex1 at the fragment
+// ("read texture 3"), unchanged; tex1 is declared (NetRun declared it).
 uniform sampler2D tex1;
 varying vec2 texcoords;
 vec4 grid(vec2 loc) {

@@ -1,8 +1,8 @@
-// Seed 004 (Lawlor, procedural solid texturing), lines 231-248: "a very famous procedural
-// texture: the Mandelbrot set", iterated at the plane's texture coordinates. `2*x*y` multiplies
-// a float by an int, which GLSL 1.20 converts implicitly (hence #version 120). Changed: alpha is
-// 1 where the seed writes 0 (NetRun shows colour only), so that the picture is opaque and the
-// tests can read coverage from alpha as for every other shader.
+// Lawlor, Procedural Solid Texturing: "a very famous procedural texture: the Mandelbrot set",
+// iterated at the plane's texture coordinates. `2*x*y` multiplies a float by an int, which GLSL
+// 1.20 converts implicitly (hence #version 120). Changed: alpha is 1 where the notes write 0
+// (NetRun shows colour only), so that the picture is opaque and the tests can read coverage from
+// alpha as for every other shader.
 varying vec2 texcoords;
 void main(void) {
     float cx=texcoords.x, cy=texcoords.y; // location onscreen

@@ -1,4 +1,4 @@
-// Seed 004 (Lawlor), lines 157-180: "stained glass", F2 - F1 over the 5x5 neighbouring cells.
+// Lawlor, Procedural Solid Texturing: "stained glass", F2 - F1 over the 5x5 neighbouring cells.
 // Changed: `.xy` added to the shift; tex4 is declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;

@@ -1,4 +1,4 @@
-// Seed 004 (Lawlor), lines 184-190: a single repeating texture, "a high note"; unchanged, tex4
+// Lawlor, Procedural Solid Texturing: a single repeating texture, "a high note"; unchanged, tex4
 // declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;

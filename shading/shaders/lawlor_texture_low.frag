@@ -1,4 +1,4 @@
-// Seed 004 (Lawlor), lines 194-200: the repeating texture stretched to a lower frequency;
+// Lawlor, Procedural Solid Texturing: the repeating texture stretched to a lower frequency;
 // unchanged, tex4 declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;

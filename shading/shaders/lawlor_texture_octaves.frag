@@ -1,4 +1,4 @@
-// Seed 004 (Lawlor), lines 216-225: many octaves added together, frequency 8 down to 0.25 (six
+// Lawlor, Procedural Solid Texturing: many octaves added together, frequency 8 down to 0.25 (six
 // exact halvings); unchanged, tex4 declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;

@@ -1,4 +1,4 @@
-// Seed 004 (Lawlor), lines 204-212: the high and the low octave added together; unchanged, tex4
+// Lawlor, Procedural Solid Texturing: the high and the low octave added together; unchanged, tex4
 // declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;

@@ -1,6 +1,7 @@
-// Seed 004 (Lawlor), lines 115-129: Voronoi F1, the distance to the nearest of the 3x3
-// neighbouring cells' points (shifted by tex4), written to all four channels. Changed: `.xy`
-// added to the shift; main() added (the seed gives grid() only); tex4 is declared.
+// Lawlor, Procedural Solid Texturing: "just the distance to the nearest grid cell", Voronoi F1: the
+// distance to the nearest of the 3x3 neighbouring cells' points (shifted by tex4), written to all
+// four channels. Changed: `.xy` added to the shift; main() added (the notes give grid() only); tex4
+// is declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;
 vec4 grid(vec2 loc) {

@@ -1,6 +1,6 @@
-// Seed 004 (Lawlor), lines 133-153: Voronoi F2, the distance to the second-nearest point over
-// the 5x5 neighbouring cells. Changed: `.xy` added to the shift; main() added (the seed gives
-// grid() only); tex4 is declared.
+// Lawlor, Procedural Solid Texturing: "the distance to the *second* nearest grid point", Voronoi
+// F2: the distance to the second-nearest point over the 5x5 neighbouring cells. Changed: `.xy`
+// added to the shift; main() added (the notes give grid() only); tex4 is declared.
 uniform sampler2D tex4;
 varying vec2 texcoords;
 vec4 grid(vec2 loc) {

@@ -1,49 +1,50 @@
 #pragma once
 // The chapter's other patterns on the plane (st in [0,1]^2): Figure 1.2 regular patterns, plain
-// and anti-aliased; Figure 1.5 Worley patterns; Listings 1.2, 1.3 and 1.4. Translated from the
-// .frag files beside this header.
+// and anti-aliased; Figure 1.5 Worley patterns; Listings 1.2 and 1.4 (Listing 1.3 has a family of
+// its own, listing_1_3.h). Translated from the .frag files beside this header.
 
 #include "shading/glsl.h"
 #include "shading/noise/cellular.h"
 #include "shading/noise/flow_noise.h"
-#include "shading/noise/simplex2d.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/aastep.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/aastep_shaders.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
-// Plane pattern: st varying, no time, no texture.
-constexpr ShaderInfo plane_pattern(std::string_view name, std::string_view description, bool derivatives,
-                                   std::array<std::string_view, 3> fragment, std::string_view defines = {},
-                                   std::string_view vertex = "shaders/plane_st.vert") {
-    return ShaderInfo{name, description,
-                      Needs{.derivatives = derivatives, .texture = false, .time = false},
-                      {vertex}, fragment, defines};
-}
-
-// The fragment's colour from a grey value.
-template <class F>
-vec4<F> grey(const F& g) { return vec4<F>(vec3<F>(g), 1.0f); }
-
 struct PatternS {
-    static constexpr ShaderInfo info = plane_pattern("pattern_s", "Figure 1.2: s as a grey ramp", false, {"shaders/pattern_s.frag"});
+    static constexpr ShaderInfo info{
+        .name = "pattern_s",
+        .description = "Figure 1.2: s as a grey ramp",
+        .glsl_fragment = {"shaders/pattern_s.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return grey(in.st.x); }
 };
 
 struct Lines {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("lines", "Figure 1.2: fract(10 s)", false, {"shaders/lines.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "lines",
+        .description = "Figure 1.2: fract(10 s)",
+        .glsl_fragment = {"shaders/lines.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return grey(fract(10.0f * in.st.x)); }
 };
 
 struct Ridges {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("ridges", "Figure 1.2: abs(fract(5 s) * 2 - 1)", false, {"shaders/ridges.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "ridges",
+        .description = "Figure 1.2: abs(fract(5 s) * 2 - 1)",
+        .glsl_fragment = {"shaders/ridges.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -52,7 +53,12 @@ struct Ridges {
 };
 
 struct Checker {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("checker", "Figure 1.2: checkerboard", false, {"shaders/checker.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "checker",
+        .description = "Figure 1.2: checkerboard",
+        .glsl_fragment = {"shaders/checker.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -62,7 +68,12 @@ struct Checker {
 };
 
 struct Wave {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("wave", "Figure 1.2: sine wave edge, fixed width", false, {"shaders/wave.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "wave",
+        .description = "Figure 1.2: sine wave edge, fixed width",
+        .glsl_fragment = {"shaders/wave.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -72,8 +83,13 @@ struct Wave {
 };
 
 struct WaveAA {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("wave_aa", "Figure 1.2: sine wave edge with aastep", true,
-                                                                       {"shaders/aastep.glsl", "shaders/wave_aa.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "wave_aa",
+        .description = "Figure 1.2: sine wave edge with aastep",
+        .needs = {.derivatives = true},
+        .glsl_fragment = {"shaders/aastep.glsl", "shaders/wave_aa.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -82,14 +98,13 @@ struct WaveAA {
     }
 };
 
-// max(|fract(8 s - 0.5 mod(floor(8 t), 2)) - 0.5|, |fract(8 t) - 0.5|): 0.5 on the mortar.
-template <class F>
-F brick_distance(const vec2<F>& st) {
-    return max(abs(fract(8.0f * st.x - 0.5f * mod(floor(8.0f * st.y), 2.0f)) - 0.5f), abs(fract(8.0f * st.y) - 0.5f));
-}
-
 struct Bricks {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern("bricks", "Figure 1.2: bricks, fixed width", false, {"shaders/bricks.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "bricks",
+        .description = "Figure 1.2: bricks, fixed width",
+        .glsl_fragment = {"shaders/bricks.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -97,33 +112,13 @@ struct Bricks {
     }
 };
 
-template <AAWidth W = AAWidth::Length>
-struct BricksAA {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(aa_variant_name(W, "bricks_aa", "bricks_aa_fwidth", "bricks_aa_step"),
-                                                                       "Figure 1.2: bricks with aastep", W != AAWidth::Step,
-                                                                       {"shaders/aastep.glsl", "shaders/bricks_aa.frag"}, aa_variant_defines(W)));
-    using VertexStage = PlaneSt;
-    template <class F>
-    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
-        return grey(aastep<W>(F(0.45f), brick_distance(in.st)));
-    }
-};
-
-template <AAWidth W = AAWidth::Length>
-struct DotsAA {
-    static constexpr ShaderInfo info = plane_pattern(aa_variant_name(W, "dots_aa", "dots_aa_fwidth", "dots_aa_step"),
-                                                     "Figure 1.2: dots with aastep", W != AAWidth::Step,
-                                                     {"shaders/aastep.glsl", "shaders/dots_aa.frag"}, aa_variant_defines(W));
-    using VertexStage = PlaneSt;
-    template <class F>
-    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
-        return grey(aastep<W>(F(0.31f), length(fract(5.0f * in.st) - 0.5f)));
-    }
-};
-
 struct Facets {
-    static constexpr ShaderInfo info = with_wide_batches(
-        plane_pattern("facets", "Figure 1.5: 0.1 + F2 - F1", false, {"noise/cellular.glsl", "shaders/facets.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "facets",
+        .description = "Figure 1.5: 0.1 + F2 - F1",
+        .glsl_fragment = {"noise/cellular.glsl", "shaders/facets.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -133,8 +128,11 @@ struct Facets {
 };
 
 struct Blobs {
-    static constexpr ShaderInfo info =
-        plane_pattern("blobs", "Figure 1.5: 1 - F1^2", false, {"noise/cellular.glsl", "shaders/blobs.frag"});
+    static constexpr ShaderInfo info{
+        .name = "blobs",
+        .description = "Figure 1.5: 1 - F1^2",
+        .glsl_fragment = {"noise/cellular.glsl", "shaders/blobs.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -144,8 +142,12 @@ struct Blobs {
 };
 
 struct Rings {
-    static constexpr ShaderInfo info = plane_pattern("rings", "Figure 1.5: rings, two aasteps of F1", true,
-                                                     {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/rings.frag"});
+    static constexpr ShaderInfo info{
+        .name = "rings",
+        .description = "Figure 1.5: rings, two aasteps of F1",
+        .needs = {.derivatives = true},
+        .glsl_fragment = {"noise/cellular.glsl", "shaders/aastep.glsl", "shaders/rings.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -154,33 +156,13 @@ struct Rings {
     }
 };
 
-// The typo makes the noise jump across simplex edges (tests/shading); Mesa's reassociated dot
-// products put one pixel of the grazing plane on the jump's other side (measured: 1 pixel, 83/255).
-inline constexpr CheckBound kSeedTypoCheckBounds[] = {
-    {"grazing-plane", "fine", 3, 3, 0,
-     "the typo's jumps along simplex edges, where Mesa's reassociated dot products move a pixel across (measured 1)"}};
-
-template <noise::Simplex2dCorner corner>
-struct Simplex2d {
-    static constexpr bool typo = corner == noise::Simplex2dCorner::SeedTypo;
-    static constexpr ShaderInfo info = with_check_bounds(
-        with_wide_batches(plane_pattern(
-            typo ? "simplex2d_seed_typo" : "simplex2d",
-            typo ? "Listing 1.3 with the seed's C.xxxx typo (breaks along simplex edges)" : "Listing 1.3: 2D simplex noise",
-            false, {"noise/simplex2d.glsl", "shaders/simplex2d.frag"}, typo ? "#define SIMPLEX2D_SEED_TYPO\n" : "",
-            "shaders/plane_st10.vert")),
-        typo ? std::span<const CheckBound>(kSeedTypoCheckBounds) : std::span<const CheckBound>());
-    using VertexStage = PlaneSt10;
-    template <class F>
-    static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
-        return grey(0.5f + 0.5f * noise::snoise<F, corner>(in.st));
-    }
-};
-
 struct Cellular2x2 {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
-        "cellular2x2", "Listing 1.4 as printed: squared F1, 2x2 search", false, {"shaders/cellular2x2.frag"}, {},
-        "shaders/plane_st10.vert"));
+    static constexpr ShaderInfo info{
+        .name = "cellular2x2",
+        .description = "Listing 1.4 as printed: squared F1, 2x2 search",
+        .glsl_fragment = {"shaders/cellular2x2.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt10;
     template <class V>
     static V permute(const V& x) { return mod((34.0f * x + 1.0f) * x, 289.0f); }
@@ -214,9 +196,13 @@ struct Cellular2x2 {
 };
 
 struct GradientAA {
-    static constexpr ShaderInfo info = with_wide_batches(plane_pattern(
-        "gradient_aa", "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st", true,
-        {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"}));
+    static constexpr ShaderInfo info{
+        .name = "gradient_aa",
+        .description = "Listing 1.2: noise contour anti-aliased by its analytic gradient and the Jacobian of st",
+        .needs = {.derivatives = true},
+        .glsl_fragment = {"noise/flow_noise.glsl", "shaders/gradient_aa.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -229,5 +215,8 @@ struct GradientAA {
         return grey(smoothstep(-afwidth, afwidth, n));
     }
 };
+
+QUADSHADE_SHADERS_IN(kGustavson, PatternS, Lines, Ridges, Checker, Wave, WaveAA, Bricks, BricksAA<>, DotsAA<>, Facets, Blobs, Rings,
+                     Cellular2x2, GradientAA)
 
 }  // namespace qs::shaders

@@ -1,8 +1,8 @@
-// Seed 002 ("Noise is Beautiful"), line 87: "Perlin Noise: Sample Code", the permutation
+// Noise is Beautiful (notes), "Perlin Noise: Sample Code": the permutation
 // polynomial with two parameters for the gradients and the quintic fade, unchanged (`7.f` is
-// GLSL 1.20); main() is ours (the seed: "Try running this in ShaderToy!"): noise(st * 10).
+// GLSL 1.20); main() is ours (the notes: "Try running this in ShaderToy!"): noise(st * 10).
 varying vec2 st;
-// permute(x, b): noise/permute_polynomial.glsl, the seed's, shared with its other listings.
+// permute(x, b): noise/permute_polynomial.glsl, the notes', shared with its other listings.
 vec2 gradient(vec2 p) {
     // Adjustable pseudo-random generator parameter
     float B1 = 7.f;

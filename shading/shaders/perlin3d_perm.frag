@@ -1,8 +1,8 @@
-// Seed 002 ("Noise is Beautiful"), lines 89-93: "This algorithm can be extended to 3D ... Now, we
-// have 8 gradients and vectors, and need to perform 6 interpolations." Prose only: the 2D sample
-// code (line 87, perlin2d_perm.frag) extended to 3D with the seed's own 3D gradient (its
-// scattering example, noise/permute_polynomial.glsl), the quintic fade and the 2D code's
-// (1 - u) a + u b along x, then y, then z. A solid texture: P = 4 object units per cell.
+// Noise is Beautiful (notes), "Perlin Noise", "Generating Noise (3D)": "This algorithm can be
+// extended to 3D ... Now, we have 8 gradients and vectors, and need to perform 6 interpolations."
+// Prose only: the 2D sample code (perlin2d_perm.frag) extended to 3D with the notes' own 3D
+// gradient (their scattering example, noise/permute_polynomial.glsl), the quintic fade and the 2D
+// code's (1 - u) a + u b along x, then y, then z. A solid texture: P = 4 object units per cell.
 varying vec3 P;
 vec3 fade(vec3 t) { return ((6.0*t-15.0)*t+10.0)*t*t*t; }
 float noise(vec3 p) {

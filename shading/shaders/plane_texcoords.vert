@@ -1,4 +1,4 @@
-// Seed 004's plane (NetRun): the texture coordinates straight through, under NetRun's name.
+// Lawlor's plane (NetRun): the texture coordinates straight through, under NetRun's name.
 varying vec2 texcoords;
 void main(void) {
     texcoords = gl_MultiTexCoord0.st;

@@ -5,16 +5,20 @@
 #include "shading/glsl.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/figure_1_1.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
 struct DerivativeProbe {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"derivative_probe", "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
-                                                                    Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
-                                                                    {"shaders/plane_st.vert"}, {"shaders/derivative_probe.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "derivative_probe",
+        .description = "probe: dFdx, dFdy of x^2 + 100 y^2 + 10 x y in window space",
+        .needs = {.coordinates = Coordinates::None, .derivatives = true, .frag_coord = true},
+        .glsl_fragment = {"shaders/derivative_probe.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -25,9 +29,12 @@ struct DerivativeProbe {
 };
 
 struct StDerivativeProbe {
-    static constexpr ShaderInfo info{"st_derivative_probe", "probe: dFdx(st) in red, green; dFdy(st) in blue, alpha",
-                                     Needs{.coordinates = Coordinates::Texcoord2D, .derivatives = true, .texture = false, .time = false},
-                                     {"shaders/plane_st.vert"}, {"shaders/st_derivative_probe.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "st_derivative_probe",
+        .description = "probe: dFdx(st) in red, green; dFdy(st) in blue, alpha",
+        .needs = {.derivatives = true},
+        .glsl_fragment = {"shaders/st_derivative_probe.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -37,9 +44,13 @@ struct StDerivativeProbe {
 };
 
 struct PositionDerivativeProbe {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"position_derivative_probe", "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
-                                                                    Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .texture = false, .time = true},
-                                                                    {"shaders/sphere_spots.vert"}, {"shaders/position_derivative_probe.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "position_derivative_probe",
+        .description = "probe: dFdx(P) in RGB, |dFdy(P)| in alpha, P the object position (Figure 1.1 spots' P)",
+        .needs = {.coordinates = Coordinates::Object3D, .derivatives = true, .time = true},
+        .glsl_fragment = {"shaders/position_derivative_probe.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = Sphere<4, -1>;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -49,9 +60,13 @@ struct PositionDerivativeProbe {
 };
 
 struct SmoothstepProbe {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"smoothstep_probe", "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
-                                                                    Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false, .frag_coord = true},
-                                                                    {"shaders/plane_st.vert"}, {"shaders/smoothstep_probe.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "smoothstep_probe",
+        .description = "probe: smoothstep(e - w, e + w, x) with w = 0 at run time (aastep's case)",
+        .needs = {.coordinates = Coordinates::None, .derivatives = true, .frag_coord = true},
+        .glsl_fragment = {"shaders/smoothstep_probe.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -62,9 +77,12 @@ struct SmoothstepProbe {
 };
 
 struct ArithmeticProbe {
-    static constexpr ShaderInfo info{"arithmetic_probe", "probe: a / b, mod(a, 289), mod(a, b), a / 7 of run-time values",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"shaders/arithmetic_probe.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "arithmetic_probe",
+        .description = "probe: a / b, mod(a, 289), mod(a, b), a / 7 of run-time values",
+        .needs = {.coordinates = Coordinates::None, .frag_coord = true},
+        .glsl_fragment = {"shaders/arithmetic_probe.frag"},
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -75,9 +93,13 @@ struct ArithmeticProbe {
 };
 
 struct FloatEnvironmentProbe {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"float_env_probe", "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
-                                                                    Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false, .frag_coord = true},
-                                                                    {"shaders/plane_st.vert"}, {"shaders/float_env_probe.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "float_env_probe",
+        .description = "probe: GLSL's undefined float cases and denormals, one per column (x = 0..7)",
+        .needs = {.coordinates = Coordinates::None, .frag_coord = true},
+        .glsl_fragment = {"shaders/float_env_probe.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -95,5 +117,8 @@ struct FloatEnvironmentProbe {
         return vec4<F>(v, 0.0f, 0.0f, 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kProbes, DerivativeProbe, StDerivativeProbe, PositionDerivativeProbe, SmoothstepProbe, ArithmeticProbe,
+                     FloatEnvironmentProbe)
 
 }  // namespace qs::shaders

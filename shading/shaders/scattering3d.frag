@@ -1,10 +1,10 @@
-// Seed 002 ("Noise is Beautiful"), line 203, "Scatterings ... Example: Sample Code": the nearest
+// Noise is Beautiful (notes), "Scatterings", "Example: Sample Code": the nearest
 // jittered point of a 3x3x3 search, coloured by 1 - 2 d1^2. Shadertoy code, unchanged; its inputs
 // are mapped onto quadshade's by the two #defines: iTime is the `time` uniform (the scene's time
 // in seconds), iResolution the window's size in pixels, which quadshade sets in the uResolution
 // uniform (a vec2: Shadertoy's vec3 adds the pixel aspect ratio, 1). main() calls mainImage with
 // gl_FragCoord.xy, as Shadertoy does. gradient(vec3) is noise/permute_polynomial.glsl's (the
-// seed's, printed in this same listing).
+// notes', printed in this same listing).
 uniform float time;
 uniform vec2 uResolution;
 #define iTime time

@@ -1,5 +1,6 @@
-// Seed 002 ("Noise is Beautiful"), lines 140-156: 3D simplex noise with Fibonacci-sphere
-// gradients (noise/simplex3d_fibonacci.glsl) as a solid texture, 4 cells per object unit.
+// Noise is Beautiful (notes), "Generating Noise (3D)" of "Simplex Noise": 3D simplex noise with
+// Fibonacci-sphere gradients (noise/simplex3d_fibonacci.glsl) as a solid texture, 4 cells per
+// object unit.
 varying vec3 P;
 void main(void) {
     vec3 grad;

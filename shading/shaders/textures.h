@@ -1,25 +1,28 @@
 #pragma once
-// Shaders that sample named textures: seed 001's fast noise from a 3D volume, and the probes that
-// compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod, textureSize
-// and texelFetch) with llvmpipe
-// (tests/reference/test_texture_conformance.cpp). Translated from the .frag files beside this
-// header.
+// Shaders that sample named textures: the ProcTexGen articles' fast noise from a 3D volume, and the
+// probes that compare each lookup (texture2D with a bias, texture2DLod, texture3D, texture3DLod,
+// textureSize and texelFetch) with llvmpipe (tests/reference/test_texture_conformance.cpp).
+// Translated from the .frag files beside this header.
 
 #include "shading/glsl.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
-inline constexpr Needs kTeximageProbeNeeds{.derivatives = false, .texture = true, .time = false};
-inline constexpr Needs kVolumeProbeNeeds{.derivatives = false, .texture = false, .time = false,
-                                         .samplers = {SamplerUse{"volume", 3}}};
+inline constexpr Needs kTeximageProbeNeeds{.texture = true};
+inline constexpr Needs kVolumeProbeNeeds{.samplers = {SamplerUse{"volume", 3}}};
 
 struct TextureLodProbe {
-    static constexpr ShaderInfo info{"texture_lod_probe", "probe: texture2DLod at a level from -1.5 to 8.375 in eighths",
-                                     kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_lod_probe.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "texture_lod_probe",
+        .description = "probe: texture2DLod at a level from -1.5 to 8.375 in eighths",
+        .needs = kTeximageProbeNeeds,
+        .glsl_fragment = {"shaders/texture_lod_probe.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -29,8 +32,13 @@ struct TextureLodProbe {
 };
 
 struct TextureBiasProbe {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"texture_bias_probe", "probe: texture2D with a bias from -1 to 2 per pixel",
-                                                                    kTeximageProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture_bias_probe.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "texture_bias_probe",
+        .description = "probe: texture2D with a bias from -1 to 2 per pixel",
+        .needs = kTeximageProbeNeeds,
+        .glsl_fragment = {"shaders/texture_bias_probe.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -40,8 +48,12 @@ struct TextureBiasProbe {
 };
 
 struct Texture3dProbe {
-    static constexpr ShaderInfo info{"texture3d_probe", "probe: texture3D of the sampler3D `volume` at (st, 0.75 s - 0.5 t)",
-                                     kVolumeProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture3d_probe.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "texture3d_probe",
+        .description = "probe: texture3D of the sampler3D `volume` at (st, 0.75 s - 0.5 t)",
+        .needs = kVolumeProbeNeeds,
+        .glsl_fragment = {"shaders/texture3d_probe.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -52,8 +64,12 @@ struct Texture3dProbe {
 };
 
 struct Texture3dLodProbe {
-    static constexpr ShaderInfo info{"texture3d_lod_probe", "probe: texture3DLod of `volume` at a level from -1 to 4.875 in eighths",
-                                     kVolumeProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/texture3d_lod_probe.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "texture3d_lod_probe",
+        .description = "probe: texture3DLod of `volume` at a level from -1 to 4.875 in eighths",
+        .needs = kVolumeProbeNeeds,
+        .glsl_fragment = {"shaders/texture3d_lod_probe.frag"},
+    };
     using VertexStage = PlaneSt;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -63,14 +79,17 @@ struct Texture3dLodProbe {
     }
 };
 
-inline constexpr Needs kTexelFetchNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = true,
-                                        .time = false, .frag_coord = true};
+inline constexpr Needs kTexelFetchNeeds{.coordinates = Coordinates::None, .texture = true, .frag_coord = true};
 
 struct TexelFetchProbe {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"texel_fetch_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
-                   kTexelFetchNeeds, {"shaders/plane_st.vert"}, {"shaders/texel_fetch_probe.frag"}},
-        130));
+    static constexpr ShaderInfo info{
+        .name = "texel_fetch_probe",
+        .description = "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each edge) of teximage (GLSL 1.30)",
+        .needs = kTexelFetchNeeds,
+        .glsl_fragment = {"shaders/texel_fetch_probe.frag"},
+        .glsl_version = 130,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -86,12 +105,14 @@ struct TexelFetchProbe {
 };
 
 struct TexelFetch3dProbe {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"texel_fetch_3d_probe", "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
-                   Needs{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                         .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
-                   {"shaders/plane_st.vert"}, {"shaders/texel_fetch_3d_probe.frag"}},
-        130));
+    static constexpr ShaderInfo info{
+        .name = "texel_fetch_3d_probe",
+        .description = "probe: textureSize (levels -1 to 4) and texelFetch (levels -1 to 2, texels 2 past each face) of the sampler3D `volume` (GLSL 1.30)",
+        .needs = {.coordinates = Coordinates::None, .frag_coord = true, .samplers = {SamplerUse{"volume", 3}}},
+        .glsl_fragment = {"shaders/texel_fetch_3d_probe.frag"},
+        .glsl_version = 130,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -106,13 +127,15 @@ struct TexelFetch3dProbe {
     }
 };
 
-// Seed 001's noiseFast on the object position (as improved noise, which it approximates).
+// The ProcTexGen articles' noiseFast on the object position (as improved noise, which it approximates).
 struct FastNoise {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{
-                                       "fast_noise", "seed 001: noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
-                                       Needs{.coordinates = Coordinates::Object3D, .derivatives = false, .texture = false, .time = false,
-                                             .samplers = {SamplerUse{"noise3dSampler", 3}}},
-                                       {"shaders/object_position.vert"}, {"shaders/fast_noise.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "fast_noise",
+        .description = "noiseFast, two trilinear lookups of a 32^3 looping-noise volume (sampler3D noise3dSampler)",
+        .needs = {.coordinates = Coordinates::Object3D, .samplers = {SamplerUse{"noise3dSampler", 3}}},
+        .glsl_fragment = {"shaders/fast_noise.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = ObjectPosition;
     static constexpr float PI = 3.14159265358979f;
     template <class F>
@@ -128,5 +151,9 @@ struct FastNoise {
         return vec4<F>(vec3<F>(0.5f + 0.5f * noiseFast(u.sampler3D(0), in.P)), 1.0f);
     }
 };
+
+QUADSHADE_SHADERS_IN(kProbes, TextureLodProbe, TextureBiasProbe, Texture3dProbe, Texture3dLodProbe, TexelFetchProbe,
+                     TexelFetch3dProbe)
+QUADSHADE_SHADERS_IN(kProcTexGen, FastNoise)
 
 }  // namespace qs::shaders

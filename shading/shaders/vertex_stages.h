@@ -1,7 +1,8 @@
 #pragma once
-// The vertex stages several shaders share, one per .vert file beside this header (shading/
-// varyings.h says what a vertex stage is). A shader names one with `using VertexStage = PlaneSt;`
-// and reads its varyings by name in the fragment stage.
+// The stock vertex stages: the ones several shaders share, one per .vert file beside this header
+// (shading/varyings.h says what a vertex stage is). A shader, a plugin's included, names one with
+// `using VertexStage = shaders::PlaneSt;`, reads its varyings by name in the fragment stage, and
+// lists no vertex GLSL: the stage's file ships with quadshade (share/quadshade/shading).
 
 #include <tuple>
 
@@ -14,6 +15,8 @@ namespace qs::shaders {
 
 // plane_st.vert: st = gl_MultiTexCoord0.st
 struct PlaneSt {
+    static constexpr GlslFiles glsl{"shaders/plane_st.vert"};
+    static constexpr bool stock = true;
     template <class T>
     struct Varyings {
         glsl::vec2<T> st;
@@ -28,6 +31,8 @@ struct PlaneSt {
 // plane_st.vert for fragment stages that read no varying (only gl_FragCoord, or nothing): GL's
 // linker drops a varying no fragment stage reads, and so nothing is interpolated here either.
 struct PlanePosition {
+    static constexpr GlslFiles glsl{"shaders/plane_st.vert"};
+    static constexpr bool stock = true;
     template <class T>
     struct Varyings {
         std::tuple<> fields() { return {}; }
@@ -40,6 +45,8 @@ struct PlanePosition {
 // plane_st10.vert: st = gl_MultiTexCoord0.st * 10.0, for the listings that print their fragment
 // stage only.
 struct PlaneSt10 {
+    static constexpr GlslFiles glsl{"shaders/plane_st10.vert"};
+    static constexpr bool stock = true;
     template <class T>
     using Varyings = PlaneSt::Varyings<T>;
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<PlaneSt10>& out) {
@@ -50,6 +57,8 @@ struct PlaneSt10 {
 
 // plane_texcoords.vert: texcoords = gl_MultiTexCoord0.st (Lawlor's name for it).
 struct PlaneTexcoords {
+    static constexpr GlslFiles glsl{"shaders/plane_texcoords.vert"};
+    static constexpr bool stock = true;
     template <class T>
     struct Varyings {
         glsl::vec2<T> texcoords;
@@ -63,6 +72,8 @@ struct PlaneTexcoords {
 
 // object_plane.vert: p = gl_Vertex.xy * 8.0
 struct ObjectPlane {
+    static constexpr GlslFiles glsl{"shaders/object_plane.vert"};
+    static constexpr bool stock = true;
     template <class T>
     struct Varyings {
         glsl::vec2<T> p;
@@ -83,6 +94,8 @@ struct SolidVaryings {
 
 // object_position.vert: P = gl_Vertex.xyz * 4.0
 struct ObjectPosition {
+    static constexpr GlslFiles glsl{"shaders/object_position.vert"};
+    static constexpr bool stock = true;
     template <class T>
     using Varyings = SolidVaryings<T>;
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<ObjectPosition>& out) {
@@ -96,6 +109,11 @@ struct ObjectPosition {
 // P = gl_Vertex.xyz * scale + vec3(0.0, 0.0, time_sign * time)
 template <int scale, int time_sign>
 struct Sphere {
+    static_assert(scale == 4 || (scale == 2 && time_sign == -1), "one of the three .vert files");
+    static constexpr GlslFiles glsl{scale == 2      ? "shaders/sphere_turbulence.vert"
+                                    : time_sign > 0 ? "shaders/sphere_simplex.vert"
+                                                    : "shaders/sphere_spots.vert"};
+    static constexpr bool stock = true;
     template <class T>
     using Varyings = SolidVaryings<T>;
     static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<Sphere>& out) {

@@ -7,19 +7,23 @@
 #include "shading/glsl.h"
 #include "shading/program.h"
 #include "shading/program_of.h"
-#include "shading/shaders/table_1_1.h"
+#include "shading/shaders/collections.h"
+#include "shading/shaders/vertex_stages.h"
 
 namespace qs::shaders {
 using namespace qs::glsl;
 
-inline constexpr Needs kWindowProbeNeeds{.coordinates = Coordinates::None, .derivatives = false, .texture = false, .time = false,
-                                         .frag_coord = true};
+inline constexpr Needs kWindowProbeNeeds{.coordinates = Coordinates::None, .frag_coord = true};
 
 struct IntegerProbe {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"integer_probe", "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_probe.frag"}},
-        130));
+    static constexpr ShaderInfo info{
+        .name = "integer_probe",
+        .description = "probe: int and uint arithmetic, bit operations, shifts, conversions (GLSL 1.30)",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/integer_probe.frag"},
+        .glsl_version = 130,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -59,10 +63,14 @@ struct IntegerProbe {
 };
 
 struct IntegerUndefinedProbe {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"integer_undefined_probe", "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/integer_undefined_probe.frag"}},
-        130));
+    static constexpr ShaderInfo info{
+        .name = "integer_undefined_probe",
+        .description = "probe: integer cases GLSL leaves undefined, one per column (x = 0..13)",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/integer_undefined_probe.frag"},
+        .glsl_version = 130,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -99,10 +107,14 @@ struct IntegerUndefinedProbe {
 };
 
 struct BoolProbe {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"bool_probe", "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/bool_probe.frag"}},
-        130));
+    static constexpr ShaderInfo info{
+        .name = "bool_probe",
+        .description = "probe: bools and bvecs: && || ^^ ! == !=, component-wise comparisons, any, all, not, mix",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/bool_probe.frag"},
+        .glsl_version = 130,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -120,8 +132,13 @@ struct BoolProbe {
 };
 
 struct LoopProbe {
-    static constexpr ShaderInfo info = with_wide_batches(ShaderInfo{"loop_probe", "probe: loops that exit per fragment: break, continue, return, while, nested",
-                                                                    kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/loop_probe.frag"}});
+    static constexpr ShaderInfo info{
+        .name = "loop_probe",
+        .description = "probe: loops that exit per fragment: break, continue, return, while, nested",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/loop_probe.frag"},
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
 
     template <class F>
@@ -169,10 +186,12 @@ struct LoopProbe {
 };
 
 struct DiscardProbe {
-    static constexpr ShaderInfo info{"discard_probe", "probe: discard on a pattern, before a value and inside a loop; derivatives after it",
-                                     Needs{.coordinates = Coordinates::None, .derivatives = true, .texture = false, .time = false,
-                                           .frag_coord = true},
-                                     {"shaders/plane_st.vert"}, {"shaders/discard_probe.frag"}};
+    static constexpr ShaderInfo info{
+        .name = "discard_probe",
+        .description = "probe: discard on a pattern, before a value and inside a loop; derivatives after it",
+        .needs = {.coordinates = Coordinates::None, .derivatives = true, .frag_coord = true},
+        .glsl_fragment = {"shaders/discard_probe.frag"},
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static FragmentOut<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -193,10 +212,13 @@ struct DiscardProbe {
 };
 
 struct MatrixProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"matrix_probe", "probe: mat2..mat4 and non-square matrices: products, transpose, inverse, determinant (GLSL 1.50)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/matrix_probe.frag"}},
-        150);
+    static constexpr ShaderInfo info{
+        .name = "matrix_probe",
+        .description = "probe: mat2..mat4 and non-square matrices: products, transpose, inverse, determinant (GLSL 1.50)",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/matrix_probe.frag"},
+        .glsl_version = 150,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -224,10 +246,13 @@ struct MatrixProbe {
 };
 
 struct BuiltinsProbe {
-    static constexpr ShaderInfo info = with_glsl_version(
-        ShaderInfo{"builtins_probe", "probe: rounding, angles, reflect, refract, faceforward, isnan, isinf, modf, bits of floats, write swizzles, asin, acos (GLSL 3.30)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/builtins_probe.frag"}},
-        330);
+    static constexpr ShaderInfo info{
+        .name = "builtins_probe",
+        .description = "probe: rounding, angles, reflect, refract, faceforward, isnan, isinf, modf, bits of floats, write swizzles, asin, acos (GLSL 3.30)",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/builtins_probe.frag"},
+        .glsl_version = 330,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -258,10 +283,14 @@ struct BuiltinsProbe {
 };
 
 struct SinCosProbe {
-    static constexpr ShaderInfo info = with_wide_batches(with_glsl_version(
-        ShaderInfo{"sin_cos_probe", "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
-                   kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/sin_cos_probe.frag"}},
-        330));
+    static constexpr ShaderInfo info{
+        .name = "sin_cos_probe",
+        .description = "probe: sin, cos and the sine hash over every kind of float argument, huge ones included (GLSL 3.30)",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/sin_cos_probe.frag"},
+        .glsl_version = 330,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -293,11 +322,15 @@ struct UniformProbe {
     };
     enum : int { uScale, uTint, uBands, uCells, uSeed, uRotate, uWarp, uResolution };
     static_assert(kUniforms[uResolution].name == "uResolution" && kUniforms[uWarp].name == "uWarp");
-    static constexpr ShaderInfo info = with_wide_batches(with_uniforms(
-        with_glsl_version(ShaderInfo{"uniform_probe", "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
-                                     kWindowProbeNeeds, {"shaders/plane_st.vert"}, {"shaders/uniform_probe.frag"}},
-                          130),
-        kUniforms));
+    static constexpr ShaderInfo info{
+        .name = "uniform_probe",
+        .description = "probe: a shader's own uniforms (float, vec3, int, ivec2, uint, mat2, mat3) and uResolution (GLSL 1.30)",
+        .needs = kWindowProbeNeeds,
+        .glsl_fragment = {"shaders/uniform_probe.frag"},
+        .glsl_version = 130,
+        .uniforms = kUniforms,
+        .wide_batches = true,
+    };
     using VertexStage = PlanePosition;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {
@@ -312,5 +345,8 @@ struct UniformProbe {
         return vec4<F>(uniform<vec3<F>>(u, uTint) * (F(band + 1) / F(bands)), fract(w.z));
     }
 };
+
+QUADSHADE_SHADERS_IN(kProbes, IntegerProbe, IntegerUndefinedProbe, BoolProbe, LoopProbe, DiscardProbe, MatrixProbe, BuiltinsProbe,
+                     UniformProbe, SinCosProbe)
 
 }  // namespace qs::shaders

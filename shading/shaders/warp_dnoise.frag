@@ -1,5 +1,5 @@
-// Seed 002 ("Noise is Beautiful"), lines 171-181, "Warping": "displacing each term of the noise
-// sum with the summed gradients of the previous terms". The seed's loop unchanged; it is cut off
+// Noise is Beautiful (notes), "Warping": "displacing each term of the noise
+// sum with the summed gradients of the previous terms". The notes' loop unchanged; it is cut off
 // around it (no xy, no output): xy is 4 units across the Table 1.1 plane, noise and dnoise are
 // noise/simplex2d_skew.glsl's, c is shown as grey.
 varying vec2 st;

@@ -1,6 +1,6 @@
-// Seed 001 lines 227-229: "it still looks pretty cool if you use fBm on it. For instance: 4
-// octaves of F1 Worley noise" (no code given): F1 at frequencies 1, 2, 4, 8 with weights 1, 1/2,
-// 1/4, 1/8, divided by their sum 1.875. Euclidean, jitter .9; 4 cells per unit.
+// The ProcTexGen articles, "Cellular Noise": "it still looks pretty cool if you use fBm on it. For
+// instance: 4 octaves of F1 Worley noise" (no code given): F1 at frequencies 1, 2, 4, 8 with
+// weights 1, 1/2, 1/4, 1/8, divided by their sum 1.875. Euclidean, jitter .9; 4 cells per unit.
 varying vec3 P;
 void main(void) {
     float sum = 0.0, amplitude = 1.0, frequency = 1.0;

@@ -85,13 +85,9 @@ TEST_CASE("every catalogue shader's GLSL compiles for the interpreter", "[interp
     CHECK(failed.str().empty());
 }
 
-// Translations written in the order Mesa's optimizer reassociates their sums to (the comment on
-// each says which), so that they match llvmpipe; the interpreter adds as the GLSL reads.
-const std::set<std::string> kReassociatedByMesa = {"hash_hoskins", "lawlor_mandelbrot"};
-
 TEST_CASE("every catalogue shader's GLSL renders as its translation does, under each rule", "[interpreter]") {
     std::vector<Scene> scenes;
-    for (const auto& f : {test::kPlane, test::kSeed004Plane, test::kSphere, test::kSeed001Spheres}) scenes.push_back(load_scene(f));
+    for (const auto& f : {test::kPlane, test::kLawlorPlane, test::kSphere, test::kProcTexGenSpheres}) scenes.push_back(load_scene(f));
     struct Mode {
         const char* what;
         Derivatives derivatives;
@@ -122,7 +118,7 @@ TEST_CASE("every catalogue shader's GLSL renders as its translation does, under 
             const Difference d = compare(expected, got);
             INFO(name << " on " << scene->file.filename().string() << ", " << m.what << ": " << d.pixels
                       << " pixels differ, by at most " << d.max);
-            if (kReassociatedByMesa.contains(name)) {
+            if (test::kReassociatedByMesa.contains(name)) {
                 // An ulp apart in float, which these shaders' hash and escape time magnify (double
                 // absorbs it); the day the two agree, the list is wrong.
                 CHECK((m.precision == Precision::Double || d.pixels > 0));

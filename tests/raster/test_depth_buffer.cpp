@@ -62,7 +62,7 @@ Pair compare(const std::array<glm::vec3, 3>& a, const std::array<glm::vec3, 3>& 
 
 }  // namespace
 
-TEST_CASE("interiors_overlap: shared edges, shared vertices and T-junctions are not overlaps; overlaps are",
+TEST_CASE("interiors_overlap: shared edges, shared vertices and T-junctions are not overlaps, overlaps are",
           "[raster][depth]") {
     for (FillRule rule : {FillRule::LeftBottom, FillRule::RightTop}) {
         // Two halves of a square through pixel centres: a shared diagonal.
@@ -381,7 +381,7 @@ TEST_CASE("leaving the depth buffer out changes no pixel of a non-overlapping me
     }
 }
 
-TEST_CASE("a convex mesh with its back faces culled, drawn over a backdrop, needs no depth buffer; drawn under, it does",
+TEST_CASE("a convex mesh with its back faces culled, drawn over a backdrop, needs no depth buffer, drawn under, it does",
           "[raster][depth]") {
     // An ellipsoid of 16 x 10 facets (in window pixels, NDC depth -0.5..0.5),
     // and a backdrop square behind it at depth 0.9, on a 64 x 64 frame.

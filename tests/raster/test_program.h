@@ -16,6 +16,7 @@ using namespace qs::glsl;
 
 // Vertex stage for all: gl_Position = MVP * position; P = object position, st = texcoord.
 struct PassThrough {
+    static constexpr GlslFiles glsl{};  // drawn without the reference
     template <class T>
     struct Varyings {
         vec3<T> P;
@@ -31,7 +32,7 @@ struct PassThrough {
 
 // Writes (1, 1, 1, 1): coverage.
 struct Flat {
-    static constexpr ShaderInfo info{"test_flat", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_flat", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>&, const Uniforms&) { return vec4<F>(1.0f); }
@@ -39,7 +40,7 @@ struct Flat {
 
 // Writes the object position: interpolation.
 struct Position {
-    static constexpr ShaderInfo info{"test_position", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_position", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return vec4<F>(in.P, 1.0f); }
@@ -47,8 +48,9 @@ struct Position {
 
 // Writes x flat (the provoking vertex's) and y smooth.
 struct FlatX {
-    static constexpr ShaderInfo info{"test_flat_x", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_flat_x", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     struct VertexStage {
+        static constexpr GlslFiles glsl{};
         template <class T>
         struct Varyings {
             T x;  // flat varying float x;
@@ -68,7 +70,7 @@ struct FlatX {
 
 // Writes dFdx and dFdy of the object x and x itself.
 struct Slopes {
-    static constexpr ShaderInfo info{"test_slopes", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_slopes", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -28,7 +28,7 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{"test_y2", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true, .frag_coord = true}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_y2", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true, .frag_coord = true}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -40,7 +40,7 @@ const ProgramOf<SquareY> kSquareY;
 
 // The same shader not saying that it reads gl_FragCoord.
 struct UndeclaredSquareY : SquareY {
-    static constexpr ShaderInfo info{"test_y2_undeclared", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = true}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_y2_undeclared", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true}};
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
@@ -49,8 +49,9 @@ const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 // four of them, fill for five) against the general path's.
 template <int N>
 struct SmoothVaryings {
-    static constexpr ShaderInfo info{"test_smooth_varyings", "", Needs{.coordinates = Coordinates::Object3D, .derivatives = false}, {}, {}};
+    static constexpr ShaderInfo info{.name = "test_smooth_varyings", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     struct VertexStage {
+        static constexpr GlslFiles glsl{};
         template <class T>
         struct Varyings {
             T a, b, c, d, e;
@@ -540,7 +541,7 @@ TEST_CASE("depth test LESS keeps the nearest surface whatever the draw order", "
     CHECK(draw(8, 8, near_tri, kFlat).depth.empty());  // one triangle occludes nothing: no depth buffer
 }
 
-TEST_CASE("derivative-free shaders run per pixel with no helper lanes; derivative shaders in quads", "[raster][specialisation]") {
+TEST_CASE("derivative-free shaders run per pixel with no helper lanes, derivative shaders in quads", "[raster][specialisation]") {
     const std::vector<glm::vec3> tri = {{0.5f, 0.5f, 0}, {30.2f, 3.1f, 0}, {7.7f, 29.9f, 0}};
     RenderStats flat, slopes, general;
     draw(32, 32, tri, kFlat, {}, &flat);

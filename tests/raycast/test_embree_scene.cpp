@@ -38,14 +38,15 @@ void add_grid(EmbreeScene& scene, int n, float z) {
 
 TEST_CASE("Embree packets of 4, 8 and 16 rays find the same hits", "[raycast]") {
     // Two overlapping grids: the lower one hidden where the upper, smaller one covers it.
-    EmbreeScene s4(4), s8(8), s16(16);
-    const std::array<EmbreeScene*, 3> by_width = {&s4, &s8, &s16};
+    const std::unique_ptr<EmbreeScene> s4 = EmbreeScene::create(4), s8 = EmbreeScene::create(8),
+                                       s16 = EmbreeScene::create(16);
+    const std::array<EmbreeScene*, 3> by_width = {s4.get(), s8.get(), s16.get()};
     for (EmbreeScene* s : by_width) {
         add_grid(*s, 6, 0.0f);
         add_grid(*s, 3, 0.5f);
         s->commit();
     }
-    CHECK_THROWS_AS(EmbreeScene(12), std::invalid_argument);
+    CHECK_THROWS_AS(EmbreeScene::create(12), std::invalid_argument);
 
     std::mt19937 random(7);
     std::uniform_real_distribution<float> coordinate(-1.3f, 1.3f);

@@ -57,10 +57,10 @@ int steps(const Framebuffer& a, const Framebuffer& b, int x, int y) {
 // softpipe's own arithmetic does (tests/reference). Both stay far inside the reference bar of
 // 0.1% of pixels (250 at 500x500). Measured: perlin5 116, worley_tiles 5.
 // The aastep variants of worley_tiles and the halftone's un-anti-aliased step react the same way
-// (measured: 5, 2 and 3). Seed 002's fBm and multifractal: its simplex noise jumps where
+// (measured: 5, 2 and 3). The "Noise is Beautiful" fBm and multifractal: its simplex noise jumps where
 // luv.x == luv.y exactly, lines the rasterizer's st hits exactly at pixel centres of the finer
 // octaves and the ray caster's, an ulp off, misses, as softpipe's does (tests/reference; measured:
-// 650 and 533, beyond 0.1% as against softpipe, and only along those lines). Seed 004's Mandelbrot
+// 650 and 533, beyond 0.1% as against softpipe, and only along those lines). Lawlor's Mandelbrot
 // set iterates its texture coordinates up to 100 times, and near the set's boundary an ulp of them
 // is a different escape time: 1110 pixels (0.44%; the ray caster is not held to the reference's
 // bar, only to what was measured).
@@ -79,7 +79,7 @@ constexpr std::size_t kFigureOver1WhereCoverageAgrees = 3;
 
 }  // namespace
 
-TEST_CASE("ray caster: Figure 1.1 with quad derivatives matches the rasterizer; coverage differs only on silhouettes",
+TEST_CASE("ray caster: Figure 1.1 with quad derivatives matches the rasterizer, coverage differs only on silhouettes",
           "[raycast]") {
     Scene scene = load_scene(kFigure);
     const int w = scene.width, h = scene.height;

@@ -66,9 +66,9 @@ TEST_CASE("every pixel Embree hits lies in a block the triangles' footprints cov
             triangles.push_back({first, first + 1, first + 2});
             footprint.add(v[0], v[1], v[2], TriangleId{0, std::uint32_t(t)});
         }
-        EmbreeScene scene;
-        scene.add_mesh(positions, triangles);
-        scene.commit();
+        const std::unique_ptr<EmbreeScene> scene = EmbreeScene::create();
+        scene->add_mesh(positions, triangles);
+        scene->commit();
 
         // Block rows from row 0, or from row -1 (bottom-up quads at an odd height).
         const int top = camera % 2 ? -1 : 0, bottom = top + (height - top + kBlock - 1) / kBlock * kBlock;
@@ -84,7 +84,7 @@ TEST_CASE("every pixel Embree hits lies in a block the triangles' footprints cov
                 lanes16::store(rays.origin, r.origin), lanes16::store(rays.direction, r.direction);
                 rays.active = lanes_inside(bx, by, width, height);
                 RayHits found;
-                scene.intersect(rays, found);
+                scene->intersect(rays, found);
                 bool hit = false;
                 for (std::uint32_t g : found.geometry) hit |= g != kNoHit;
                 INFO("camera " << camera << ", block (" << bx << ", " << by << ")");

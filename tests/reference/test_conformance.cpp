@@ -66,15 +66,16 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "of the 243 per-vertex values differ from llvmpipe's (59 with Mesa's dot order: the rest are other "
       "reassociations), by up to 0.1, and the F2 - F1 cell borders move (measured: 197 pixels over 1/255, 168 over "
       "2/255, of 191445; 0.103%)"}},
-    {{"grazing-plane/simplex2d_seed_typo", "llvmpipe"},
+    {{"grazing-plane/simplex2d_listing_typo", "llvmpipe"},
      {3, 3, 0,
-      "the seed's typo makes the noise jump across simplex edges (tests/shading); the noise's reassociated dot "
+      "the listing's typo makes the noise jump across simplex edges (tests/shading); the noise's reassociated dot "
       "products put one pixel on the jump's other side (measured: 1 pixel, 83/255)"}},
     // Against softpipe (coarse-lower, right-top, separately rounded interpolation, as tests/reference):
     {{"torus-rolled/*", "softpipe"}, {8, 6, 2, "softpipe's edges and interpolation (below); measured at most 5, 4, 1"}},
-    {{"overlap/*", "softpipe"}, {6, 6, 2, "softpipe's edges and interpolation (below); measured at most 4, 4, 1"}},
+    {{"overlap/*", "softpipe"}, {10, 9, 2, "softpipe's edges and interpolation (below); measured at most 8, 7, 1 (spots)"}},
     {{"overlap-reversed/*", "softpipe"}, {5, 4, 0, "softpipe's interpolation (below); measured at most 3, 2 (spots)"}},
-    {{"hierarchy/*", "softpipe"}, {4, 3, 0, "softpipe's interpolation (below); measured at most 2, 1"}},
+    {{"hierarchy/*", "softpipe"},
+     {7, 6, 0, "softpipe's interpolation (below); measured at most 5, 4 (the Manhattan 3D Worley noises)"}},
     {{"hierarchy/spots", "softpipe"}, {35, 30, 0, "softpipe's interpolation (below); measured 27, 23"}},
     {{"hierarchy/spots_length", "softpipe"}, {30, 25, 0, "softpipe's interpolation (below); measured 22, 18"}},
     {{"grazing-plane/*", "softpipe"}, {55, 30, 0, "softpipe's interpolation (below); measured at most 43, 18 (rings)"}},

@@ -12,10 +12,12 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/frame_image.h"
+#include "render/glsl_shaders.h"
 #include "shading/catalogue.h"
 #include "core/framebuffer.h"
 #include "scenes/gltf.h"
@@ -23,6 +25,7 @@
 #include "render/scene_render.h"
 #include "render/volume_bake.h"
 #include "tests/reference/comparison.h"
+#include "tests/test_command.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -62,6 +65,8 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
       "the un-anti-aliased variant: a plain step turns the last-ulp difference of a value lying on its "
       "threshold into a full flip, which aastep's ramp absorbs (measured: 1 pixel, 178/255)"}},
     {{"halftone_step", "softpipe"}, {6, 6, 0, "as against llvmpipe (measured: 3 pixels)"}},
+    {{"scene_inputs", "softpipe"},
+     {2, 2, 0, "measured: 1 pixel, 6/255, since the scene's transforms are composed in double; its cause is not yet isolated"}},
     {{"spots", "softpipe"},
      {4, 4, 0,
       "on the sphere scene: softpipe interpolates P with its own arithmetic (see perlin5), and 2 pixels on the rings' "
@@ -84,6 +89,11 @@ const std::map<std::pair<std::string, std::string>, Bound> kBounds = {
     {{"es_random_square_minus1", "softpipe"}, {60, 60, 0, "as es_random_square (measured: 29 pixels)"}},
     {{"es_random_square_plus1", "softpipe"}, {50, 50, 0, "as es_random_square (measured: 24 pixels)"}},
     {{"es_tiles128", "softpipe"}, {60, 60, 0, "as es_random_square, per tile (measured: 30 pixels)"}},
+    {{"gltf_material", "softpipe"},
+     {3, 0, 0,
+      "the sRGB decoding and encoding around a texel: softpipe filters with float weights where llvmpipe (and "
+      "quadshade) round them to 1/256 and lerp in 8 bits (docs/design.md, Textures), and takes pow from the C library; "
+      "one pixel lands across a rounding (measured: 1 pixel, 2/255; not analysed further; against llvmpipe none)"}},
     {{"lawlor_texture_two_octaves", "softpipe"},
      {8, 0, 0,
       "softpipe filters with float weights where llvmpipe (and quadshade) round them to 1/256 and lerp in 8 bits "
@@ -98,7 +108,7 @@ const std::map<std::string, const char*> kSoftpipeCountedOnly = {
      "borders each way an ulp picks the neighbouring cell's hash on 1495 pixels (0.6%)"},
     {"hash_perm289", "as hash_pcg (measured: 1495 pixels over 1/255)"},
     {"fbm_simplex2d",
-     "seed 002's simplex noise jumps where luv.x == luv.y exactly (its step() pair takes the far corner twice and "
+     "the Noise is Beautiful simplex noise jumps where luv.x == luv.y exactly (its step() pair takes the far corner twice and "
      "leaves one out), lines that pixel centres of the plane hit exactly at the finer octaves: quadshade's st is "
      "llvmpipe's to the bit and lands on them as it does, softpipe's is an ulp off (see perlin5) and misses them "
      "(measured: 706 pixels over 1/255, 539 over 2/255, along those lines)"},
@@ -122,7 +132,7 @@ const std::map<std::string, const char*> kSoftpipeCountedOnly = {
     {"lawlor_voronoi_f1", "as lawlor_dots_moved: the feature points move (515 pixels over 1/255; alpha is F1)"},
     {"lawlor_voronoi_f2", "as lawlor_voronoi_f1 (alpha is F2: 914 pixels cross 1/2)"},
     {"lawlor_stained_glass", "as lawlor_voronoi_f1 (43996 pixels over 1/255, none over 5/255)"},
-    {"seed-001-spheres",
+    {"proctexgen-spheres",
      "fast_noise's two trilinear lookups of the volume: softpipe filters with float weights where llvmpipe (and "
      "quadshade) round them to 1/256 and lerp in 8 bits, and the low octave turns the high one by up to 2 pi "
      "(3790 pixels over 1/255, 574 over 2/255, of 505600; the other shaders of the scene: its 2 silhouette pixels)"},
@@ -136,17 +146,18 @@ struct Case {
     int width, height;
 };
 
-// Seed 003's shaders discard what lies above a square viewport as wide as the window: they are
+// The OpenGL ES tutorial's shaders discard what lies above a square viewport as wide as the window: they are
 // compared in a window taller than wide (the tutorial's iPhone 5 screen, 320x568 points), where
 // the 248 rows above the square are discarded.
 bool portrait(std::string_view shader) { return shader.starts_with("es_"); }
 constexpr int kPortraitWidth = 320, kPortraitHeight = 568;
 
 std::vector<Case> cases() {
-    std::vector<Case> all = {{"figure-1.1", kFigure, "", 1264, 400}, {"seed-001-spheres", kSeed001Spheres, "", 1264, 400}};
+    std::vector<Case> all = {{"figure-1.1", kFigure, "", 1264, 400}, {"proctexgen-spheres", kProcTexGenSpheres, "", 1264, 400}};
     for (const Program* p : catalogue()) {
         const ShaderInfo& info = p->info();
         if (info.name.find("probe") != std::string_view::npos) continue;
+        if (compiled_glsl(*p, false)) continue;  // a GLSL twin check_interpreted added in an earlier section
         // Solid textures on the sphere (Figure 1.1 draws the chapter's own there too), those with
         // no texture to bind.
         if (info.needs.coordinates == Coordinates::Object3D) {
@@ -205,6 +216,26 @@ void record(const std::string& driver, const std::string& line) {
     it->second << line << "\n" << std::flush;
 }
 
+// The case's GLSL run by the interpreter (render/glsl_shaders.h) against the same llvmpipe
+// image, held to the translation's bound; recorded as driver "llvmpipe-interpreted".
+void check_interpreted(const Case& c, const Image& ref) {
+    Case twin = c;
+    twin.shader = interpreted_twin(c.shader);
+    const Framebuffer q = ours(twin, Derivatives::Fine, c.width, c.height);
+    const Counts n = count(q, ref);
+    record("llvmpipe-interpreted", c.name + ",llvmpipe,fine," + std::to_string(n.pixels) + "," + std::to_string(n.coverage_mismatch) +
+                                       "," + std::to_string(n.over_1) + "," + std::to_string(n.over_2) + "," + std::to_string(n.max_steps));
+    INFO(c.name << "'s GLSL run by the interpreter vs llvmpipe: " << n.over_1 << " pixels over 1/255, " << n.over_2
+                << " over 2/255, max " << n.max_steps << "/255, coverage mismatches " << n.coverage_mismatch);
+    auto it = kBounds.find({c.name, "llvmpipe"});
+    const Bound bound = it == kBounds.end() ? Bound{} : it->second;
+    CHECK(n.coverage_mismatch <= bound.coverage_mismatch);
+    if (test::kReassociatedByMesa.contains(c.name)) return;  // counted, not held to the bar
+    CHECK(n.over_1 <= bound.over_1);
+    CHECK(double(n.over_1) <= kMaxFractionOver1 * double(n.pixels));
+    CHECK(n.over_2 <= bound.over_2);
+}
+
 void check_against(const std::string& driver, Derivatives rule, const char* rule_name) {
     for (const Case& c : cases()) {
         DYNAMIC_SECTION(c.name << " vs " << driver) {
@@ -218,6 +249,7 @@ void check_against(const std::string& driver, Derivatives rule, const char* rule
                    std::to_string(n.over_2) + "," + std::to_string(n.max_steps));
             INFO(c.name << " vs " << driver << ": " << n.over_1 << " pixels over 1/255, " << n.over_2
                         << " over 2/255, max " << n.max_steps << "/255, coverage mismatches " << n.coverage_mismatch);
+            if (driver == "llvmpipe" && !c.shader.empty()) check_interpreted(c, ref);
             if (driver == "softpipe" && kSoftpipeCountedOnly.count(c.name)) continue;
             auto it = kBounds.find({c.name, driver});
             const Bound bound = it == kBounds.end() ? Bound{} : it->second;
@@ -240,7 +272,7 @@ TEST_CASE("every shader matches OSMesa softpipe under the coarse-lower rule", "[
     check_against("softpipe", Derivatives::CoarseLower, "coarse-lower");
 }
 
-TEST_CASE("seed 003's square viewport: what lies above it in a portrait window is discarded, as by llvmpipe", "[reference][discard]") {
+TEST_CASE("the OpenGL ES tutorial's square viewport: what lies above it in a portrait window is discarded, as by llvmpipe", "[reference][discard]") {
     // The plane's clear colour is black, and so is es_tiles2's tile at the origin (sin(0) = 0):
     // the other three tiles are drawn, nothing above the square (the image's first rows).
     const Case c{"es_tiles2", kPlane, "es_tiles2", kPortraitWidth, kPortraitHeight};
@@ -648,7 +680,7 @@ TEST_CASE("sin and cos probe: llvmpipe's polynomial bit for bit, softpipe's C li
     CHECK(worst <= 0x1p-24);
 }
 
-TEST_CASE("discard probe: discarded fragments write nothing; derivatives after discard as llvmpipe", "[reference][discard]") {
+TEST_CASE("discard probe: discarded fragments write nothing, derivatives after discard as llvmpipe", "[reference][discard]") {
     // 17x15: quads stick out of the image, so helper lanes discard too.
     const Case probe{"discard_probe", kPlane, "discard_probe", 17, 15};
     const Framebuffer q = ours(probe, Derivatives::Fine, 17, 15);
@@ -844,6 +876,68 @@ TEST_CASE("bake-volume: the command writes a volume that loads as a sampler3D, a
     CHECK_FALSE(std::filesystem::exists(dir / "big.png"));
     CHECK_FALSE(std::filesystem::exists(dir / "none.png"));
     CHECK_FALSE(std::filesystem::exists(dir / "tex.png"));
+}
+
+}  // namespace qs
+
+namespace qs {
+
+TEST_CASE("scene inputs by name: mvp, position and texcoord draw what the compatibility profile's names draw, "
+          "what the scene does not feed is refused by name",
+          "[reference][inputs]") {
+    using test::kBin;
+    using test::kPlane;
+    const auto dir = work_dir() / "inputs-glsl";
+    std::filesystem::create_directories(dir);
+    auto read = [](const std::filesystem::path& p) {
+        std::ifstream in(p);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    auto write = [&](const std::string& name, const std::string& text) { std::ofstream(dir / name) << text; };
+    // dots as exported (plane_st.vert: gl_ModelViewProjectionMatrix * gl_Vertex), and its fragment
+    // stage after a GLSL 1.30 vertex stage that declares its inputs.
+    const std::string frag = read(std::filesystem::path(QUADSHADE_GLSL_DIR) / "dots.frag");
+    REQUIRE(frag.starts_with("#version 120\n"));
+    write("dots.vert", read(std::filesystem::path(QUADSHADE_GLSL_DIR) / "dots.vert"));
+    write("dots.frag", frag);
+    const std::string declared_vert = "#version 130\nuniform mat4 mvp;\nin vec3 position;\nin vec2 texcoord;\nout vec2 st;\n"
+                                      "void main() {\n    st = texcoord;\n    gl_Position = mvp * vec4(position, 1.0);\n}\n";
+    const std::string frag130 = "#version 130\n" + frag.substr(frag.find('\n') + 1);
+    write("declared.vert", declared_vert);
+    write("declared.frag", frag130);
+    auto render = [&](const std::string& shader, std::string* err = nullptr) {
+        const std::string cmd = (kBin / "quadshade-reference").string() + " " + kPlane.string() + " --glsl " + dir.string() +
+                                " --size 96x64 --shader " + shader + " -o " + (dir / (shader + ".exr")).string();
+        return test::run(cmd, err, dir / (shader + ".txt"));
+    };
+    REQUIRE(render("dots") == 0);
+    REQUIRE(render("declared") == 0);
+    const Image a = read_image(dir / "dots.exr"), b = read_image(dir / "declared.exr");
+    CHECK(a.rgba == b.rgba);
+    std::size_t covered = 0;
+    for (std::size_t p = 3; p < b.rgba.size(); p += 4) covered += b.rgba[p] > 0.5f;
+    CHECK(covered == b.rgba.size() / 4);  // the plane fills the frame: nothing left black
+
+    // A transform under a name the scene does not feed, an attribute it has no data for, a
+    // scene transform of the wrong type: refused, named, exit 1.
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"uniform mat4 modelViewMatrix;\nin vec3 position;\nvoid main() { gl_Position = modelViewMatrix * vec4(position, 1.0); }\n",
+         "uniform mat4 'modelViewMatrix' is none of the scene's transforms"},
+        {"uniform mat4 mvp;\nin vec3 position;\nin vec4 tangent;\nvoid main() { gl_Position = mvp * vec4(position + tangent.xyz, 1.0); }\n",
+         "vertex input 'tangent' is none the scene feeds"},
+        {"uniform mat3 mvp;\nin vec3 position;\nvoid main() { gl_Position = vec4(mvp * position, 1.0); }\n",
+         "uniform 'mvp' is the scene's transform: declare it mat4"},
+    };
+    for (std::size_t i = 0; i < refused.size(); ++i) {
+        const std::string name = "refused" + std::to_string(i);
+        write(name + ".vert", "#version 130\n" + refused[i].first);
+        write(name + ".frag", "#version 130\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+        std::string err;
+        CHECK(render(name, &err) == 1);
+        INFO(err);
+        CHECK(err.find(refused[i].second) != std::string::npos);
+        CHECK(err.find(name) != std::string::npos);
+    }
 }
 
 }  // namespace qs

@@ -131,9 +131,18 @@ constexpr const char* kSoftpipeMirror =
     "frac(1 - u), which is 0 where it should be 1 when u is a texel centre of a mirrored period: the halftone's "
     "texel-centre lookups get the neighbouring texel along every mirrored period (measured: 625 and 1350 pixels; "
     "llvmpipe and quadshade agree bit for bit there)";
+// The default material decodes a texel from sRGB, lights it and encodes it again: softpipe's
+// float filter weights, within a step of llvmpipe's 8-bit lerps per lookup (single_texture's
+// colours are), become two steps on a few pixels.
+const char* const kSoftpipeSrgb =
+    "softpipe filters with float weights where llvmpipe and quadshade round them to 1/256 and lerp in 8 bits, a step "
+    "at most per lookup; gltf_material's sRGB decoding, lighting and encoding makes it two on a few pixels "
+    "(measured: 4 and 2 pixels, 2/255)";
 const std::map<std::string, Bound> kBounds = {
     {"wrap-mirrored.gltf halftone softpipe", {690, 690, kSoftpipeMirror}},
     {"wrap-mixed.gltf halftone softpipe", {1490, 1490, kSoftpipeMirror}},
+    {"wrap-repeat-pot.gltf gltf_material softpipe", {6, 0, kSoftpipeSrgb}},
+    {"wrap-repeat-npot.gltf gltf_material softpipe", {4, 0, kSoftpipeSrgb}},
 };
 
 // softpipe selects the level of detail its own way (rho = the larger of W max(|ds/dx|, |ds/dy|) and
@@ -379,7 +388,7 @@ TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": 3D textures 
     }
 }
 
-TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": seed 001's fast noise from a 32^3 volume",
+TEST_CASE("texture conformance vs " QUADSHADE_CONFORMANCE_DRIVER ": the ProcTexGen fast noise from a 32^3 volume",
           "[conformance][textures]") {
     const auto dir = temp_dir("fast-noise-" + kDriverName);
     const auto volume = write_volume(dir, 32, 32, 32);

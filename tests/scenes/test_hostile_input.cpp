@@ -474,7 +474,7 @@ TEST_CASE("output names: -o is a name, never a printf format", "[hostile][cli]")
     CHECK(fs::exists(dir / "a%b_003.png"));
 }
 
-TEST_CASE("outputs: never a folder, an input or through a planted link; written whole or not at all", "[hostile][cli][output]") {
+TEST_CASE("outputs: never a folder, an input or through a planted link, written whole or not at all", "[hostile][cli][output]") {
     const auto dir = temp_dir("hostile-output");
     // A scene of its own, with a texture, in a scratch folder: outputs aimed at its files.
     for (const char* f : {"table-1.1-plane.gltf", "table-1.1-plane.bin"}) fs::copy_file(kSource / "scenes/assets" / f, dir / f);

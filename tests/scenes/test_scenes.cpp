@@ -63,7 +63,8 @@ TEST_CASE("the shipped scenes are exactly what the generator makes", "[scenes]")
     const auto files = [](const std::filesystem::path& root) {
         std::set<std::string> all;
         for (const auto& e : std::filesystem::recursive_directory_iterator(root)) {
-            if (e.is_regular_file()) all.insert(std::filesystem::relative(e.path(), root).string());
+            const std::string file = std::filesystem::relative(e.path(), root).string();
+            if (e.is_regular_file() && !file.starts_with("models/")) all.insert(file);  // models/: vendored, not made
         }
         return all;
     };
@@ -136,13 +137,15 @@ TEST_CASE("bad scene input is refused naming the file and the field", "[scenes][
         CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("garbage.gltf") && Catch::Contains("baseColorTexture") &&
                                                         Catch::Contains("data: URI image"));
     }
-    SECTION("a shader that samples a texture the material lacks") {
+    SECTION("a shader that samples a texture the material lacks reads white, and says so") {
         s.objects[0].texture = -1;
         s.objects[0].shader = "halftone";
         save_scene(s, dir / "untextured.gltf");
         Scene loaded = load_scene(dir / "untextured.gltf");
-        CHECK_THROWS_WITH(render_frame(loaded, {}), Catch::Contains("untextured.gltf") && Catch::Contains("halftone") &&
-                                                        Catch::Contains("baseColorTexture"));
+        const SceneRenderer r(loaded, {});
+        REQUIRE(r.notes().size() == 1);
+        CHECK(r.notes()[0].find("untextured.gltf: shader 'halftone' samples 'teximage', which 1 material binds no texture "
+                                "to: it reads white (1, 1, 1, 1) there; first: 'plane' (materials[0])") != std::string::npos);
     }
     SECTION("a texture is not read when no drawn shader samples it") {
         s.textures[0].image.file = dir / "textures" / "gone.png";
@@ -205,17 +208,17 @@ TEST_CASE("textures: baseColorTexture, extras.teximage, glTF's sampler defaults,
         CHECK_THROWS_WITH(load_scene(dir / "e.gltf"), Catch::Contains("e.gltf") && Catch::Contains("images[0].uri") &&
                                                           Catch::Contains("/etc/outside.png"));
     }
-    SECTION("a required extension") {
+    SECTION("a required extension quadshade does not implement") {
         std::string text = gltf(base, "{}", "images/a%20b.png");
-        text.insert(1, R"("extensionsUsed": ["KHR_texture_transform"], "extensionsRequired": ["KHR_texture_transform"],)");
+        text.insert(1, R"("extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"],)");
         write_text(dir / "g.gltf", text);
         CHECK_THROWS_WITH(load_scene(dir / "g.gltf"), Catch::Contains("extensionsRequired[0]") &&
-                                                          Catch::Contains("KHR_texture_transform"));
+                                                          Catch::Contains("KHR_draco_mesh_compression"));
     }
-    SECTION("a second texture coordinate set") {
+    SECTION("a second texture coordinate set: the default material reads it") {
         const std::string m = R"({"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "texCoord": 1}}})";
         write_text(dir / "f.gltf", gltf(m, "{}", "images/a%20b.png"));
-        CHECK_THROWS_WITH(load_scene(dir / "f.gltf"), Catch::Contains("baseColorTexture.texCoord"));
+        CHECK(load_scene(dir / "f.gltf").objects[0].look.texcoord == 1);
     }
 }
 
@@ -294,9 +297,16 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
             CHECK_THROWS_WITH(load_scene(dir / "bad.gltf"), Catch::Contains("bad.gltf") && Catch::Contains(message));
         }
     }
-    SECTION("a shader's sampler unbound, of the other kind, or a volume whose rows do not divide into its depth") {
+    SECTION("a shader's sampler unbound reads white, and says so once") {
+        write_text(dir / "unbound.gltf", gltf(R"({"shader": "fast_noise"})"));
+        Scene s = load_scene(dir / "unbound.gltf");
+        const SceneRenderer r(s, {});
+        REQUIRE(r.notes().size() == 1);
+        CHECK(r.notes()[0].find("shader 'fast_noise' samples 'noise3dSampler', which 1 material binds no texture to: it "
+                                "reads white") != std::string::npos);
+    }
+    SECTION("a shader's sampler of the other kind, or a volume whose rows do not divide into its depth") {
         const std::pair<const char*, const char*> bad[] = {
-            {R"({"shader": "fast_noise"})", "binds no texture to it"},
             {R"({"shader": "fast_noise", "textures": {"noise3dSampler": 0}})", "is a 2D texture"},
             {R"({"shader": "fast_noise", "textures": {"noise3dSampler": {"texture": 0, "depth": 5}}})", "does not stack 5 slices"},
         };
@@ -319,7 +329,7 @@ TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[sc
         "bufferViews": [{"buffer": 0, "byteLength": 36}],
         "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAAAAAAAAgD8AAAAA"}]})");
     Scene s = load_scene(dir / "tri.gltf");
-    CHECK_THROWS_WITH(render_frame(s, {}), Catch::Contains("names no shader"));
+    CHECK_NOTHROW(render_frame(s, {}));  // without a material: the default material
     for (const Program* p : catalogue()) {
         if (samples_textures(p->info().needs)) continue;  // no texture in this file
         // These write a value (a derivative, a probe's result), not coverage, to alpha.
@@ -334,7 +344,9 @@ TEST_CASE("any glTF mesh renders with any catalogue shader, camera or not", "[sc
         std::size_t drawn = 0;
         for (std::size_t i = 3; i < fb.rgba.size(); i += 4) drawn += fb.rgba[i] > 0.5f;
         INFO(p->info().name);
-        CHECK(drawn > 150);  // the framed triangle covers about a fifth of the view (200 pixels)
+        // The framed triangle, seen from the default camera's three-quarter view, covers about a
+        // seventh of the view (150 pixels).
+        CHECK(drawn > 110);
     }
 }
 
@@ -411,7 +423,7 @@ TEST_CASE("glTF's doubleSided: back faces culled unless it is true, front faces 
                     const std::size_t drawn = covered(backend, false);
                     INFO("node " << n << (*material ? " with" : " without") << " a material, doubleSided " << double_sided
                                  << ", backend " << int(backend));
-                    CHECK((drawn > 150) == expected);
+                    CHECK((drawn > 110) == expected);  // about 150 pixels where drawn
                     CHECK((drawn == 0) == !expected);
                 }
                 // An atlas bake draws every triangle whatever its material says.
@@ -482,10 +494,10 @@ TEST_CASE("leaving out what a shader does not use (gl_FragCoord, helper lanes, d
 
 TEST_CASE("scenes drawn in painter's order, without a depth buffer, are the depth-tested frames to the bit",
           "[scenes][depth]") {
-    // Figure 1.1 and seed 001's spheres: culled spheres drawn after the ground behind them, which
+    // Figure 1.1 and the ProcTexGen spheres: culled spheres drawn after the ground behind them, which
     // the rasterizer proves needs no depth buffer (raster/depth_buffer.h); the general path tests
     // every depth. Several sizes, so that the spheres' silhouettes snap differently.
-    for (const auto& path : {kFigure, kSeed001Spheres}) {
+    for (const auto& path : {kFigure, kProcTexGenSpheres}) {
         Scene scene = load_scene(path);
         for (const auto& [w, h] : {std::pair{632, 200}, std::pair{1264, 400}, std::pair{701, 333}}) {
             INFO(path.filename().string() << " at " << w << "x" << h);
@@ -623,7 +635,7 @@ TEST_CASE("the command line: exit codes, messages, no partial output", "[cli]") 
 
 namespace qs {
 
-TEST_CASE("long animations: float time freezes and jumps near 1e6 s; --stable-time keeps every frame", "[animation][stability]") {
+TEST_CASE("long animations: float time freezes and jumps near 1e6 s, --stable-time keeps every frame", "[animation][stability]") {
     Scene scene = load_scene(kFigure);
     FrameRequest r;
     r.width = 158, r.height = 50;  // an eighth of the figure: enough to see every object move
@@ -875,7 +887,7 @@ std::filesystem::path uniform_scene(const std::filesystem::path& dir, const std:
 
 }  // namespace
 
-TEST_CASE("uniforms: the material's extras.uniforms round-trip through glTF; bad ones name the file and field", "[scenes][uniforms]") {
+TEST_CASE("uniforms: the material's extras.uniforms round-trip through glTF, bad ones name the file and field", "[scenes][uniforms]") {
     const auto dir = temp_dir("uniforms-gltf");
     const auto file = uniform_scene(dir, "set.gltf", {{"uScale", {6.5}, ""}, {"uTint", {0.25, 1.0, 0.75}, ""}});
     const Scene s = load_scene(file);

@@ -173,7 +173,7 @@ TEMPLATE_TEST_CASE("integer comparisons are the float type's masks, and select o
     }
 }
 
-TEMPLATE_TEST_CASE("int(x) and uint(x) truncate, with llvmpipe's answers out of range; float(i) rounds", "[integers]", NUMBER_TYPES) {
+TEMPLATE_TEST_CASE("int(x) and uint(x) truncate, with llvmpipe's answers out of range, float(i) rounds", "[integers]", NUMBER_TYPES) {
     using F = TestType;
     using I = int_t<F>;
     using U = uint_t<F>;

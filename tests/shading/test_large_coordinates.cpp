@@ -75,7 +75,7 @@ Errors errors_at(const Noise& n, double offset) {
 
 }  // namespace
 
-TEST_CASE("large coordinates: float noise breaks where float runs out of fraction; wrapping by the period fixes it",
+TEST_CASE("large coordinates: float noise breaks where float runs out of fraction, wrapping by the period fixes it",
           "[noise][stability]") {
     std::printf("large coordinates: max |float - double| over a unit square at offset (x, 0.7x, 0.3x)\n");
     std::printf("%-16s", "offset");

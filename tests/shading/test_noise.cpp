@@ -1,5 +1,5 @@
 // The noise translations: SIMD lanes equal scalar code bit for bit, the analytic gradient of
-// flow noise is right, and Listing 1.3's seed typo breaks the noise along simplex edges.
+// flow noise is right, and Listing 1.3's printed typo breaks the noise along simplex edges.
 #include <catch2/catch.hpp>
 
 #include <bit>
@@ -109,7 +109,7 @@ TEST_CASE("flow noise's analytic gradient matches central differences", "[noise]
     }
 }
 
-TEST_CASE("Listing 1.3 with the seed's C.xxxx jumps across simplex edges; with C.xxzz it is continuous", "[noise]") {
+TEST_CASE("Listing 1.3 with its printed C.xxxx jumps across simplex edges, with C.xxzz it is continuous", "[noise]") {
     // March along a line in small steps; the largest step-to-step change shows a discontinuity.
     auto largest_jump = [](auto noise) {
         double worst = 0.0, prev = noise(vec2<double>(0.0, 0.05));
@@ -123,7 +123,7 @@ TEST_CASE("Listing 1.3 with the seed's C.xxxx jumps across simplex edges; with C
     };
     const double correct = largest_jump([](const vec2<double>& p) { return noise::snoise(p); });
     const double typo = largest_jump(
-        [](const vec2<double>& p) { return noise::snoise<double, noise::Simplex2dCorner::SeedTypo>(p); });
+        [](const vec2<double>& p) { return noise::snoise<double, noise::Simplex2dCorner::ListingTypo>(p); });
     // A continuous function with slope below ~3 moves less than 1e-3 per 5e-5 step.
     CHECK(correct < 1e-3);
     CHECK(typo > 0.05);

@@ -1,4 +1,4 @@
-// The analytic gradients of the seed noises (dnoise of seed 002's simplex noise in 2D and 3D, the
+// The analytic gradients of the noises (dnoise of the "Noise is Beautiful" simplex noise in 2D and 3D, the
 // gradient of the chapter's 3D simplex noise that Listing 1.2 and the bump map use)
 // against the same noise differentiated by Dual2 (the chain rule through every operation, the
 // same branches: equal up to rounding) and against central differences (independent of both
@@ -16,9 +16,9 @@ namespace qs::glsl {
 
 namespace {
 
-using qs::noise::seed002::dnoise;
-using qs::noise::seed002::noise;
-using qs::noise::seed002::noise3;
+using qs::noise::noise_is_beautiful::dnoise;
+using qs::noise::noise_is_beautiful::noise;
+using qs::noise::noise_is_beautiful::noise3;
 
 // Sample points: a Weyl sequence over [-20, 20)^3, deterministic and off every lattice.
 std::vector<glm::dvec3> points() {
@@ -30,7 +30,7 @@ std::vector<glm::dvec3> points() {
     return all;
 }
 // Points on simplex boundaries: lattice corners, the 2D shear's diagonal (luv.x == luv.y, where
-// the seed's step() pair counts the far corner twice and leaves one out), 3D faces. There the
+// the notes' step() pair counts the far corner twice and leaves one out), 3D faces. There the
 // noises jump or kink (the 3D kernels' radius^2 0.6 reaches past a simplex's faces; the 2D defect
 // above), so central differences straddle two branches: only Dual2, which follows the same
 // branch as the analytic gradient, is compared there.
@@ -38,7 +38,7 @@ const glm::dvec3 kBoundaryPoints[] = {{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, {0.25, 0
 
 // Central differences with step h have truncation error h^2/6 |f'''| plus rounding of about
 // 1e-16/h: with h = 1e-5 in double, the largest difference measured over the 300 points is
-// 1.6e-9 for seed 002's noises (gradients up to 2.7) and 4.8e-9 for the chapter's (up to 7.3);
+// 1.6e-9 for the notes' noises (gradients up to 2.7) and 4.8e-9 for the chapter's (up to 7.3);
 // the tolerance is 20 times that.
 constexpr double kH = 1e-5;
 constexpr double kCentralTolerance = 1e-7;
@@ -76,7 +76,7 @@ vec3<Dual2<double>> dual_point(const glm::dvec3& p, int axis) {
 
 }  // namespace
 
-TEST_CASE("seed 002's 2D dnoise is the gradient of its simplex noise", "[noise][gradient]") {
+TEST_CASE("Noise is Beautiful: the 2D dnoise is the gradient of its simplex noise", "[noise][gradient]") {
     auto value = [](const glm::dvec3& p) { return noise(vec2<double>(p.x, p.y)); };
     auto dual = [](const glm::dvec3& p, int) { return noise(dual_point(p, 0).xy()); };
     double largest = 0.0, largest_central = 0.0;
@@ -95,7 +95,7 @@ TEST_CASE("seed 002's 2D dnoise is the gradient of its simplex noise", "[noise][
     CHECK(largest > 0.5);  // the points see the noise's slopes, not only its flat spots
 }
 
-TEST_CASE("seed 002's 3D noise returns its own gradient", "[noise][gradient]") {
+TEST_CASE("Noise is Beautiful: the 3D noise returns its own gradient", "[noise][gradient]") {
     vec3<double> unused;
     vec3<Dual2<double>> unused_dual;
     auto value = [&](const glm::dvec3& p) { return noise3(vec3<double>(p.x, p.y, p.z), unused); };

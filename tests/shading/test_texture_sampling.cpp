@@ -509,7 +509,7 @@ TEST_CASE("3D mipmaps: each level is the trilinear 8-bit sample of the one above
     }
 }
 
-TEST_CASE("textureSize and texelFetch: the level's size, zero outside; texels as stored, zero outside", "[textures]") {
+TEST_CASE("textureSize and texelFetch: the level's size, zero outside, texels as stored, zero outside", "[textures]") {
     std::mt19937 rng(3);
     const auto texels = random_texels(rng, 10 * 6 * 3);
     SamplerState mipmapped;

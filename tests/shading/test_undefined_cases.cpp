@@ -50,7 +50,7 @@ TEST_CASE("defined arithmetic carries no case, and computes what the unchecked l
     }
 }
 
-TEST_CASE("division by zero is flagged on its lanes only; 0 / 0 also produces NaN", "[undefined]") {
+TEST_CASE("division by zero is flagged on its lanes only, 0 / 0 also produces NaN", "[undefined]") {
     const P r = lanes<P>({1.0f, 0.0f, 2.0f}) / lanes<P>({0.0f, 0.0f, 4.0f, 1.0f});
     CHECK(cases_at(r, 0) == kDivision);        // 1 / 0 = inf: defined in IEEE, not in GLSL
     CHECK(cases_at(r, 1) == (kDivision | kNaN));

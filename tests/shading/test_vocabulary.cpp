@@ -254,7 +254,7 @@ TEMPLATE_TEST_CASE("loops leave per lane: break, continue, return, while and a n
     }
 }
 
-TEMPLATE_TEST_CASE("a loop inside a varying if runs only for the lanes inside; a lane that discards runs on", "[loops][discard]",
+TEMPLATE_TEST_CASE("a loop inside a varying if runs only for the lanes inside, a lane that discards runs on", "[loops][discard]",
                    NUMBER_TYPES) {
     using F = TestType;
     using S = scalar_t<F>;
@@ -300,7 +300,7 @@ void nest_loops(vec4<Pixels<double, 16>>& v, int& depth) {
 
 }  // namespace
 
-TEST_CASE("a loop's saved values are released when it ends, also when an exception leaves it; loops beyond the room are refused",
+TEST_CASE("a loop's saved values are released when it ends, also when an exception leaves it, loops beyond the room are refused",
           "[loops]") {
     const std::size_t before = loop_detail::saved_values.top();
     const vec2<Pixels<float, 16>> c = collatz(ramp<Pixels<float, 16>>(1.0, 1.0));

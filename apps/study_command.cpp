@@ -1,0 +1,209 @@
+#include "apps/study_command.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "apps/command_line.h"
+#include "render/plugins.h"
+
+namespace qs::app {
+
+namespace fs = std::filesystem;
+
+void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
+    study::Request& r = a.request;
+    a.app = &cmd;
+    cmd.add_option("scene", a.scene, "the glTF scene (.gltf or .glb)")->option_text("SCENE");
+    cmd.add_option("--shader", r.shaders.shader, "the catalogue shader to study (quadshade shaders lists them)")
+        ->option_text("NAME");
+    add_glsl_options(cmd, a.glsl, a.vertex_glsl, a.compile_glsl);
+    add_plugin_option(cmd, a.plugins);
+    if (!line) {
+        cmd.add_option("-o,--output", a.output, "the folder for study.csv, the images, the plots and report.html")
+            ->required()
+            ->option_text("DIR");
+        cmd.add_option("--study", a.study_file,
+                       "a study file: on each line a scene and its options as this command\ntakes them (paths relative "
+                       "to the file; # starts a comment, \\ at\nthe end goes on on the next line); the options "
+                       "given here\napply to every line; one report")
+            ->option_text("FILE");
+    }
+    cmd.add_option("--unfiltered", r.shaders.unfiltered,
+                   "the shader's unfiltered variant: the truth and the supersampled modes\nrender it "
+                   "(default: the shader itself)")
+        ->option_text("NAME");
+    cmd.add_option("--alternative", r.shaders.alternative, "a variant filtered another way, measured as a mode")
+        ->option_text("NAME");
+    cmd.add_option("--alternative-mode", r.shaders.alternative_mode, "that mode's name (default: alternative)")
+        ->option_text("MODE");
+    cmd.add_option("--views", r.views,
+                   "camera, magnified, minified, grazing (default: all four), or\nscene files whose camera is a view "
+                   "(CAMERA.gltf)")
+        ->delimiter(',')
+        ->option_text("VIEW,...");
+    cmd.add_option("--modes", r.modes,
+                   "fine, coarse-lower, coarse-upper, dual2, raycast-quads,\nray-differentials, double, step, ss2x2, "
+                   "ss4x4, ss8x8, the\nalternative's (default: all the shader has)")
+        ->delimiter(',')
+        ->option_text("MODE,...");
+    cmd.add_option("--label", r.label, "the study's name in the CSV and the report (default: the shader's)")
+        ->option_text("NAME");
+    cmd.add_option("--keep-objects", r.keep_shader, "draw only the objects whose material names this shader")
+        ->option_text("NAME");
+    cmd.add_option("--size", r.size, "the image's longer side in pixels, the scene's aspect kept (default 256)")
+        ->check(CLI::Range(8, 4096))
+        ->option_text("N");
+    cmd.add_option("--truth", r.truth, "the truth's samples per pixel along each axis (default 32)")
+        ->check(CLI::Range(2, 64))
+        ->option_text("K");
+    cmd.add_option("--repeat", r.repeat, "timed frames per mode, after 3 untimed ones (default 5)")
+        ->check(CLI::Range(1, 1000))
+        ->option_text("N");
+    cmd.add_option("--threads", r.threads, "worker threads, quadshade's and llvmpipe's (default 2)")
+        ->check(CLI::Range(1, 1024))
+        ->option_text("N");
+    cmd.add_option("--time", r.time, "the `time` uniform in seconds (default: the scene's)")
+        ->check(kFinite)
+        ->option_text("T");
+    cmd.add_option_function<std::vector<double>>(
+           "--offset",
+           [&r](const std::vector<double>& v) {
+               r.offset = {v[0], v[1], v[2]};
+           },
+           "add X,Y,Z to the shader's coordinates (TEXCOORD_0's x, y and the\nobject positions; the geometry "
+           "stays where it was): the pattern far\nfrom its origin")
+        ->delimiter(',')
+        ->expected(3)
+        ->check(kFinite)
+        ->option_text("X,Y,Z");
+    cmd.add_flag("--no-reference", a.no_reference, "do not render llvmpipe's images (no OSMesa needed)");
+    cmd.add_flag("--no-derivative-maps", a.no_derivative_maps, "do not map the inputs' derivatives under each rule");
+}
+
+namespace {
+
+// A study's request from its arguments, paths resolved against `base`.
+study::Request prepared(StudyArgs& a, const fs::path& base) {
+    study::Request r = a.request;
+    auto resolve = [&](std::string& p) {
+        if (!p.empty() && fs::path(p).is_relative()) p = (base / p).string();
+    };
+    resolve(a.scene), resolve(a.glsl), resolve(a.vertex_glsl);
+    for (std::string& view : r.views) {
+        if (view.ends_with(".gltf") || view.ends_with(".glb")) resolve(view);  // a camera's scene file
+    }
+    use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, r.shaders.shader);
+    if (a.scene.empty()) throw UsageError("study: give the scene (or a study file with --study)");
+    if (r.shaders.shader.empty()) throw UsageError("study: name the shader with --shader NAME or --glsl FRAG");
+    if (!r.shaders.alternative.empty() && r.shaders.alternative_mode.empty())
+        r.shaders.alternative_mode = "alternative";
+    if (r.shaders.alternative.empty() && !r.shaders.alternative_mode.empty()) {
+        throw UsageError("--alternative-mode: name the variant with --alternative");
+    }
+    if (r.size * r.truth > (1 << 16)) throw UsageError("--size times --truth is over 65536 pixels on a side");
+    r.scene = a.scene;
+    r.reference = !a.no_reference;
+    r.derivative_maps = !a.no_derivative_maps;
+    return r;
+}
+
+// The lines of a study file, each parsed as the command's options, those given on the command
+// line (`given`) in place of the line's.
+std::vector<study::Request> study_file(const StudyArgs& given) {
+    const fs::path file = given.study_file, base = file.parent_path();
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error(file.string() + ": cannot read the study file");
+    std::vector<study::Request> requests;
+    std::string text;
+    for (int number = 1, first = 1; std::getline(in, text); first = ++number) {
+        if (const std::size_t hash = text.find('#'); hash != std::string::npos) text.erase(hash);
+        // A line that ends in a backslash goes on on the next.
+        for (std::string more; !text.empty() && text.back() == '\\' && std::getline(in, more); ++number) {
+            text.back() = ' ';
+            if (const std::size_t hash = more.find('#'); hash != std::string::npos) more.erase(hash);
+            text += more;
+        }
+        const std::string where = file.string() + ":" + std::to_string(first) + ": ";
+        if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+        StudyArgs line;
+        CLI::App app("a study file's line", "study");
+        add_study_options(app, line, true);
+        try {
+            app.parse(text, false);
+        } catch (const CLI::ParseError& e) {
+            throw UsageError(where + e.what());
+        }
+        study::Request& r = line.request;
+        const study::Request& g = given.request;
+        auto from_command_line = [&](const char* option) { return given.app->count(option) > 0; };
+        if (from_command_line("--size")) r.size = g.size;
+        if (from_command_line("--truth")) r.truth = g.truth;
+        if (from_command_line("--repeat")) r.repeat = g.repeat;
+        if (from_command_line("--threads")) r.threads = g.threads;
+        if (from_command_line("--time")) r.time = g.time;
+        if (from_command_line("--offset")) r.offset = g.offset;
+        if (from_command_line("--views")) r.views = g.views;
+        if (from_command_line("--modes")) r.modes = g.modes;
+        line.no_reference = line.no_reference || given.no_reference;
+        line.no_derivative_maps = line.no_derivative_maps || given.no_derivative_maps;
+        for (std::string& plugin : line.plugins) {
+            load_plugin(fs::path(plugin).is_relative() ? base / plugin : fs::path(plugin));
+        }
+        try {
+            requests.push_back(prepared(line, base));
+        } catch (const UsageError& e) {
+            throw UsageError(where + e.what());
+        }
+    }
+    if (requests.empty()) throw UsageError(file.string() + ": no study in the file");
+    return requests;
+}
+
+}  // namespace
+
+int cmd_study(StudyArgs& a) {
+    std::vector<study::Request> requests;
+    if (!a.study_file.empty()) {
+        for (const char* option : {"scene", "--shader", "--glsl", "--vert", "--unfiltered", "--alternative",
+                                   "--alternative-mode", "--keep-objects"}) {
+            if (a.app->count(option)) throw UsageError(std::string("--study: ") + option + " goes on the file's lines");
+        }
+        requests = study_file(a);
+    } else {
+        requests.push_back(prepared(a, "."));
+    }
+    std::error_code ec;
+    if (fs::exists(a.output, ec) && !fs::is_directory(a.output, ec)) {
+        throw UsageError("-o " + a.output + ": exists and is not a folder");
+    }
+    // Every study's inputs, refused as outputs before any is run.
+    std::vector<fs::path> inputs;
+    for (const std::string& file : {a.study_file, a.glsl, a.vertex_glsl}) {
+        if (!file.empty()) inputs.push_back(file);
+    }
+    try {
+        for (const study::Request& r : requests) {
+            const std::vector<fs::path> theirs = study::study_inputs(r);
+            inputs.insert(inputs.end(), theirs.begin(), theirs.end());
+        }
+        study::refuse_outputs_over(a.output, inputs);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("study: ") + e.what());
+    }
+    make_output_folder(a.output, FolderLink::Followed);
+    study::Tables tables;
+    for (study::Request& r : requests) {
+        r.output = a.output;
+        try {
+            study::run_study(r, tables);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("study: ") + e.what());
+        }
+    }
+    study::write_tables(a.output, tables);
+    study::write_report(a.output);
+    std::printf("quadshade study: %s\n", (fs::path(a.output) / "report.html").string().c_str());
+    return 0;
+}
+
+}  // namespace qs::app

@@ -1,0 +1,1694 @@
+#include "frontend/cpp_writer.h"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include <glslang/Include/intermediate.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+
+#include "frontend/binding_names.h"
+#include "frontend/parse_stage.h"
+
+namespace qs::frontend {
+
+using glslang::TIntermAggregate;
+using glslang::TIntermBinary;
+using glslang::TIntermConstantUnion;
+using glslang::TIntermSymbol;
+using glslang::TIntermTyped;
+using glslang::TIntermUnary;
+using glslang::TOperator;
+using glslang::TType;
+
+std::string comment_text(const std::string& text) {
+    std::string s;
+    for (char c : text) s += (c >= 0x20 && c < 0x7F && c != '\\' && c != '"') ? c : '?';
+    return s;
+}
+
+namespace {
+
+enum class Stage { Vertex, Fragment };
+
+bool is_identifier(const std::string& s) {
+    if (s.empty() || s.size() > 256) return false;
+    const auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+    if (!alpha(s[0])) return false;
+    for (char c : s) {
+        if (!alpha(c) && !(c >= '0' && c <= '9')) return false;
+    }
+    return true;
+}
+
+// Names C++ or the translation gives a meaning a GLSL name must not take: C++'s keywords and
+// alternative tokens, macros of the C library and GCC, the vocabulary's own names that GLSL does
+// not have, and the names the translation declares itself.
+const std::set<std::string>& reserved_names() {
+    static const std::set<std::string> names = {
+        // C++ keywords that are not GLSL's
+        "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "catch", "char", "char8_t", "char16_t",
+        "char32_t", "class", "compl", "concept", "consteval", "constexpr", "constinit", "const_cast", "co_await",
+        "co_return", "co_yield", "decltype", "delete", "double", "dynamic_cast", "enum", "explicit", "export", "extern",
+        "false", "friend", "goto", "inline", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
+        "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
+        "requires", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "template", "this",
+        "thread_local", "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using", "virtual",
+        "volatile", "wchar_t", "xor", "xor_eq", "final", "override", "import", "module", "int", "float", "bool", "void",
+        "const", "struct", "return", "if", "else", "for", "while", "do", "switch", "case", "default", "break",
+        "continue",
+        // macros of the C library and GCC's predefined ones
+        "assert", "errno", "NULL", "EOF", "INFINITY", "NAN", "HUGE_VAL", "M_PI", "M_E", "stdin", "stdout", "stderr",
+        "major", "minor", "makedev", "unix", "linux", "i386", "offsetof", "setjmp", "va_arg", "isnan", "isinf",
+        "signbit", "fpclassify", "isfinite", "isnormal", "BUFSIZ", "FILENAME_MAX", "RAND_MAX", "EXIT_SUCCESS",
+        "EXIT_FAILURE", "CHAR_BIT", "INT_MAX", "INT_MIN", "UINT_MAX", "FLT_MAX", "FLT_MIN", "FLT_EPSILON",
+        // the vocabulary's and the translation's own names
+        "F", "T", "M", "u", "in", "out", "std", "qs", "glsl", "simd", "select", "any", "none", "Loop", "loop", "Return",
+        "ret", "inside", "table", "uniform", "vec", "mat", "Bool", "int_t", "uint_t", "Uniforms", "VertexIn",
+        "FragmentIn", "FragmentOut", "VertexOutputs", "VertexStage", "Varyings", "fields", "vertex", "fragment",
+        "info", "sampler2D", "sampler3D", "Texture", "shade", "transform_point", "ShaderInfo", "Needs",
+        "UniformDecl", "main_", "Lanes", "Pixels", "Quads", "Dual2", "Checked", "kUniforms"};
+    return names;
+}
+
+// A GLSL name as C++ names it: checked, and renamed (a trailing underscore, or a prefix for
+// names C++ reserves) where C++ or the translation gives it a meaning.
+std::string cpp_identifier(const std::string& glsl, const std::string& where) {
+    if (!is_identifier(glsl)) throw GlslError(where + "error: '" + comment_text(glsl) + "' is not an identifier the C++ can name");
+    if (glsl.find("__") != std::string::npos || (glsl[0] == '_' && glsl.size() > 1 && glsl[1] >= 'A' && glsl[1] <= 'Z')) {
+        std::string s = "glsl_";
+        for (char c : glsl) {
+            if (c == '_' && !s.empty() && s.back() == '_') continue;
+            s += c;
+        }
+        return s + "_";
+    }
+    if (reserved_names().contains(glsl)) return glsl + "_";
+    return glsl;
+}
+
+std::string float_literal(double d) {
+    const float f = float(d);
+    if (std::isnan(f)) return "std::numeric_limits<float>::quiet_NaN()";
+    if (std::isinf(f)) return f > 0 ? "std::numeric_limits<float>::infinity()" : "-std::numeric_limits<float>::infinity()";
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, f);
+    std::string s(buf, r.ptr);
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    if (s.find('e') != std::string::npos && s.find('.') == std::string::npos) s.insert(s.find('e'), ".0");
+    return s + "f";
+}
+
+// C++ precedence, higher binds tighter.
+enum Prec { kComma = 0, kAssign = 1, kOr = 3, kAnd = 4, kBitOr = 5, kBitXor = 6, kBitAnd = 7, kEquality = 8, kRelational = 9,
+            kShift = 10, kAdditive = 11, kMultiplicative = 12, kUnary = 13, kPostfix = 14, kPrimary = 15 };
+
+struct Expr {
+    std::string text;
+    int prec = kPrimary;
+    bool plain = false;  // a C++ scalar (literal, or a loop counter the same for every fragment), not of F
+};
+
+std::string parens(const Expr& e, int at_least) { return e.prec >= at_least ? e.text : "(" + e.text + ")"; }
+
+struct Local {
+    std::string name;
+    int mask_depth = 0;      // the varying conditions open where it is declared
+    bool declared = false;
+    bool plain_counter = false;
+    const TIntermNode* declaring = nullptr;  // the statement that declares it by its first assignment
+};
+
+// A declaration statement, as glslang keeps it: a sequence of its declarators' initialisations.
+bool is_declaration(TIntermNode* n) {
+    auto* a = n ? n->getAsAggregate() : nullptr;
+    if (!a || a->getOp() != glslang::EOpSequence || a->getSequence().empty()) return false;
+    for (TIntermNode* c : a->getSequence()) {
+        auto* b = c->getAsBinaryNode();
+        if (!b || b->getOp() != glslang::EOpAssign || !b->getLeft()->getAsSymbolNode()) return false;
+    }
+    return true;
+}
+
+// The statements of a block, declarations' declarators as statements of their own.
+std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
+    std::vector<TIntermNode*> out;
+    for (TIntermNode* c : a->getSequence()) {
+        if (is_declaration(c)) {
+            for (TIntermNode* d : c->getAsAggregate()->getSequence()) out.push_back(d);
+        } else {
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+// A for loop as glslang nests it: its initialiser (one declarator) and the loop.
+bool is_for_sequence(TIntermAggregate* a) {
+    if (!a || a->getOp() != glslang::EOpSequence) return false;
+    const std::vector<TIntermNode*> s = statements_of(a);
+    return s.size() == 2 && s[1]->getAsLoopNode() && s[0]->getAsBinaryNode() &&
+           s[0]->getAsBinaryNode()->getOp() == glslang::EOpAssign;
+}
+
+class StageWriter {
+public:
+    StageWriter(Stage stage, const std::string& file, glslang::TIntermediate& ast, const ir::Program& program)
+        : stage_(stage), file_(file), ast_(ast), program_(program) {}
+
+    // The members and functions of the stage's struct (without its braces), at an indent of 4.
+    std::string write();
+    bool discards() const { return discards_; }
+    // The stage's outputs (vertex: its varyings), by GLSL name and C++ name.
+    const std::vector<std::pair<std::string, std::string>>& varying_outputs() const { return varying_outputs_; }
+    std::string position_output;  // the C++ name of gl_Position's value
+    std::string color_output;      // the fragment colour
+
+private:
+    Stage stage_;
+    std::string file_;
+    glslang::TIntermediate& ast_;
+    const ir::Program& program_;
+    bool discards_ = false;
+    std::vector<std::pair<std::string, std::string>> varying_outputs_;
+
+    std::ostringstream body_;  // the function being written
+    int indent_ = 1;
+    std::map<long long, Local> locals_;  // the function's locals and parameters, by symbol id
+    std::map<long long, std::string> globals_;  // members: interface variables and globals
+    std::vector<std::string> member_lines_;
+    std::set<std::string> member_names_;
+    std::vector<std::string> masks_;  // the conditions open, innermost last: each the whole mask
+    struct LoopScope {
+        std::string name;
+        int mask_depth;
+    };
+    std::vector<LoopScope> loops_;
+    int counter_ = 0;
+    int loops_in_function_ = 0;
+    bool uses_return_ = false;
+    std::string return_type_;
+
+    std::string where(const TIntermNode* n) const { return source_position(file_, n ? n->getLoc().line : 0, n ? n->getLoc().column : 0); }
+    [[noreturn]] void refuse(const TIntermNode* n, const std::string& what) const {
+        throw GlslError(where(n) + "error: " + what + " (the interpreter runs it; the C++ writer does not write it)");
+    }
+    void line(const std::string& text, const TIntermNode* at) {
+        body_ << std::string(std::size_t(indent_) * 4, ' ') << text;
+        if (at) body_ << "  // " << at->getLoc().line;
+        body_ << "\n";
+    }
+    std::string fresh(const std::string& base) { return base + std::to_string(++counter_); }
+
+    // ---- types ---------------------------------------------------------------------------------
+    std::string type(const TType& t, const TIntermNode* at) const;
+    std::string scalar_type(glslang::TBasicType b, const TIntermNode* at) const;
+
+    // ---- names ---------------------------------------------------------------------------------
+    std::string symbol_name(TIntermSymbol* s);
+    std::string global_member(TIntermSymbol* s);
+    void uniform_member(TIntermSymbol* s, const std::string& name);
+    void input_member(TIntermSymbol* s, const std::string& name);
+    void output_member(TIntermSymbol* s, const std::string& name);
+
+    // ---- expressions ---------------------------------------------------------------------------
+    Expr expr(TIntermTyped* n);
+    Expr as_typed(TIntermTyped* n, const TType& t);  // plain values made F's
+    Expr constant(TIntermConstantUnion* c);
+    Expr constant_value(const glslang::TConstUnionArray& a, int first, const TType& t, const TIntermNode* at);
+    Expr binary(TIntermBinary* b);
+    Expr unary(TIntermUnary* u);
+    Expr aggregate(TIntermAggregate* a);
+    Expr call(TIntermAggregate* a);
+    Expr builtin(const std::string& name, TIntermTyped* node, const glslang::TIntermSequence& args);
+    Expr constructor(TIntermAggregate* a);
+    Expr conversion(TIntermTyped* from, const TType& to, TIntermTyped* at);
+    std::string swizzle(TIntermBinary* b);
+    // A constant array read at a run-time index: a table member (glsl/table.h), one per contents.
+    std::string constant_table(TIntermConstantUnion* c);
+    std::map<std::string, std::string> tables_;  // contents -> name
+    std::string lvalue(TIntermTyped* n);
+
+    // ---- statements ----------------------------------------------------------------------------
+    void statement(TIntermNode* n);
+    void block(TIntermNode* n);
+    void assignment(TIntermBinary* b);
+    void assign_to(TIntermTyped* target, const std::string& value, const TIntermNode* at);
+    void if_statement(glslang::TIntermSelection* s);
+    void loop(glslang::TIntermLoop* l, TIntermNode* init);
+    void branch(glslang::TIntermBranch* b);
+    bool masked_target(TIntermTyped* target);
+    std::string mask() const { return masks_.empty() ? "" : masks_.back(); }
+    std::string and_mask(const std::string& c) const { return masks_.empty() ? c : masks_.back() + " && " + c; }
+    void declare_locals(TIntermNode* body);
+    void function(TIntermAggregate* f);
+    std::vector<long long> assigned_outside(TIntermNode* body);
+    bool plain_counter(TIntermAggregate* for_sequence, long long id);
+    void write_zeroes(TIntermNode* block);
+    std::map<const TIntermNode*, std::vector<long long>> pending_zero_;  // locals zeroed where a block begins
+    std::string functions_text_;
+    std::map<long long, TIntermSymbol*> zero_symbols_;
+    std::vector<std::string> structs_;
+};
+
+std::string StageWriter::scalar_type(glslang::TBasicType b, const TIntermNode* at) const {
+    switch (b) {
+        case glslang::EbtFloat: return "F";
+        case glslang::EbtInt: return "int_t<F>";
+        case glslang::EbtUint: return "uint_t<F>";
+        case glslang::EbtBool: return "Bool<F>";
+        case glslang::EbtVoid: return "void";
+        default: refuse(at, "a value of this type");
+    }
+}
+
+std::string StageWriter::type(const TType& t, const TIntermNode* at) const {
+    if (t.isArray()) {
+        TType e(t, 0);
+        if (t.getOuterArraySize() <= 0) refuse(at, "an array of unknown size");
+        return "std::array<" + type(e, at) + ", " + std::to_string(t.getOuterArraySize()) + ">";
+    }
+    if (t.isStruct()) return cpp_identifier(t.getTypeName().c_str(), where(at));
+    if (t.isMatrix()) {
+        if (t.getBasicType() != glslang::EbtFloat) refuse(at, "a matrix of this type");
+        const int c = t.getMatrixCols(), r = t.getMatrixRows();
+        return c == r ? "mat" + std::to_string(c) + "<F>" : "mat" + std::to_string(c) + "x" + std::to_string(r) + "<F>";
+    }
+    if (t.isVector()) {
+        const std::string n = std::to_string(t.getVectorSize());
+        switch (t.getBasicType()) {
+            case glslang::EbtFloat: return "vec" + n + "<F>";
+            case glslang::EbtInt: return "ivec" + n + "<F>";
+            case glslang::EbtUint: return "uvec" + n + "<F>";
+            case glslang::EbtBool: return "bvec" + n + "<F>";
+            default: refuse(at, "a vector of this type");
+        }
+    }
+    return scalar_type(t.getBasicType(), at);
+}
+
+// ---- names --------------------------------------------------------------------------------------
+
+std::string StageWriter::symbol_name(TIntermSymbol* s) {
+    if (auto it = locals_.find(s->getId()); it != locals_.end()) return it->second.name;
+    if (auto it = globals_.find(s->getId()); it != globals_.end()) return it->second;
+    return global_member(s);
+}
+
+std::string StageWriter::global_member(TIntermSymbol* s) {
+    const glslang::TQualifier& q = s->getQualifier();
+    const std::string glsl = s->getName().c_str();
+    std::string name;
+    if (q.builtIn != glslang::EbvNone || glsl.rfind("gl_", 0) == 0) {
+        name = glsl;
+        if (!is_identifier(name)) refuse(s, "a built-in variable");
+    } else {
+        name = cpp_identifier(glsl, where(s));
+    }
+    globals_[s->getId()] = name;
+    if (member_names_.contains(name)) return name;
+    member_names_.insert(name);
+    switch (q.storage) {
+        case glslang::EvqUniform: uniform_member(s, name); break;
+        case glslang::EvqVaryingIn: case glslang::EvqFragCoord: case glslang::EvqVertexId: case glslang::EvqIn:
+            input_member(s, name);
+            break;
+        case glslang::EvqVaryingOut: case glslang::EvqFragColor: case glslang::EvqPosition: case glslang::EvqOut:
+            output_member(s, name);
+            break;
+        case glslang::EvqGlobal: case glslang::EvqTemporary:
+            member_lines_.push_back(type(s->getType(), s) + " " + name + "{};  // a global");
+            break;
+        default: refuse(s, "a variable of this storage");
+    }
+    return name;
+}
+
+void StageWriter::uniform_member(TIntermSymbol* s, const std::string& name) {
+    const TType& t = s->getType();
+    const std::string glsl = s->getName().c_str();
+    if (t.getBasicType() == glslang::EbtSampler) {
+        if (glsl == "teximage") {
+            member_lines_.push_back("const sampler2D& teximage = *u.teximage;");
+            return;
+        }
+        int other = 0;
+        for (const ir::Sampler& p : program_.samplers) {
+            if (p.name == "teximage" && p.dims == 2) continue;
+            if (p.name == glsl) {
+                const std::string kind = p.dims == 3 ? "sampler3D" : "sampler2D";
+                member_lines_.push_back("const " + kind + "& " + name + " = u." + kind + "(" + std::to_string(other) + ");");
+                return;
+            }
+            ++other;
+        }
+        refuse(s, "this sampler");
+    }
+    if (glsl.rfind("gl_", 0) == 0 || transform_named(glsl)) {
+        const std::optional<ir::TransformUniform> which =
+            glsl == "gl_ModelViewProjectionMatrix" ? ir::TransformUniform::ModelViewProjection
+            : glsl == "gl_ProjectionMatrix"        ? ir::TransformUniform::Projection
+            : glsl == "gl_ModelViewMatrix"         ? ir::TransformUniform::ModelView
+            : glsl == "gl_NormalMatrix"            ? ir::TransformUniform::Normal
+                                                   : transform_named(glsl);
+        if (!which) refuse(s, "this built-in uniform");
+        switch (*which) {
+            case ir::TransformUniform::ModelViewProjection: case ir::TransformUniform::Projection:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.model_view_projection);  // the scene's");
+                return;
+            case ir::TransformUniform::ModelView:
+                member_lines_.push_back("const mat4<F> " + name + " = mat4<F>(F(1.0f));  // the model-view-projection is the projection");
+                return;
+            case ir::TransformUniform::Normal:
+                member_lines_.push_back("const mat3<F> " + name + " = mat3<F>(F(1.0f));  // the model-view is the identity");
+                return;
+        }
+    }
+    if (glsl == "time" && t.getBasicType() == glslang::EbtFloat && t.isScalar() && !t.isArray()) {
+        member_lines_.push_back("const F time = F(u.time);");
+        return;
+    }
+    if (glsl == "dims" && t.getBasicType() == glslang::EbtFloat && t.getVectorSize() == 2 && !t.isArray() && !t.isMatrix()) {
+        member_lines_.push_back("const vec2<F> dims = texture_size<F>(u.teximage);  // the texture's size");
+        return;
+    }
+    if (t.isArray() || t.isStruct()) refuse(s, "an array or struct uniform");
+    for (std::size_t i = 0; i < program_.uniforms.size(); ++i) {
+        if (program_.uniforms[i].name != glsl) continue;
+        const std::string cpp = type(t, s);
+        member_lines_.push_back("const " + cpp + " " + name + " = uniform<" + cpp + ">(u, " + std::to_string(i) + ");");
+        return;
+    }
+    refuse(s, "this uniform");
+}
+
+void StageWriter::input_member(TIntermSymbol* s, const std::string& name) {
+    const TType& t = s->getType();
+    const std::string glsl = s->getName().c_str();
+    const std::string cpp = type(t, s);
+    if (stage_ == Stage::Fragment) {
+        if (s->getQualifier().storage == glslang::EvqFragCoord) {
+            member_lines_.push_back("const vec4<F> gl_FragCoord = in.gl_FragCoord;");
+            return;
+        }
+        if (glsl.rfind("gl_", 0) == 0 || t.getBasicType() != glslang::EbtFloat || t.isArray() || t.isMatrix() || t.isStruct()) {
+            refuse(s, "a varying other than a float or vec");
+        }
+        member_lines_.push_back("const " + cpp + " " + name + " = in." + name + ";  // varying");
+        return;
+    }
+    // Vertex attributes, with the components GL supplies where the scene's data has fewer.
+    std::optional<ir::Attribute> a;
+    if (glsl == "gl_Vertex") a = ir::Attribute::Position;
+    else if (glsl == "gl_Normal") a = ir::Attribute::Normal;
+    else if (glsl == "gl_Color") a = ir::Attribute::Color;
+    else if (glsl == "gl_MultiTexCoord0") a = ir::Attribute::Texcoord0;
+    else if (glsl == "gl_MultiTexCoord1") a = ir::Attribute::Texcoord1;
+    else a = attribute_named(glsl);
+    if (!a || t.getBasicType() != glslang::EbtFloat || t.isArray() || t.isMatrix()) refuse(s, "this vertex input");
+    const int n = t.getVectorSize();
+    std::string c[4];
+    for (int i = 0; i < 4; ++i) {
+        switch (*a) {
+            case ir::Attribute::Position: c[i] = i < 3 ? "F(in.position[" + std::to_string(i) + "])" : "F(1.0f)"; break;
+            case ir::Attribute::Normal: c[i] = i < 3 ? "F(in.normal[" + std::to_string(i) + "])" : "F(0.0f)"; break;
+            case ir::Attribute::Color: c[i] = "F(in.color[" + std::to_string(i) + "])"; break;
+            case ir::Attribute::Texcoord0: c[i] = i < 2 ? "F(in.texcoord[" + std::to_string(i) + "])" : i == 3 ? "F(1.0f)" : "F(0.0f)"; break;
+            case ir::Attribute::Texcoord1: c[i] = i < 2 ? "F(in.texcoord1[" + std::to_string(i) + "])" : i == 3 ? "F(1.0f)" : "F(0.0f)"; break;
+        }
+    }
+    std::string init = n == 1 ? c[0] : cpp + "(";
+    if (n > 1) {
+        for (int i = 0; i < n; ++i) init += (i ? ", " : "") + c[i];
+        init += ")";
+    }
+    member_lines_.push_back("const " + cpp + " " + name + " = " + init + ";  // attribute");
+}
+
+void StageWriter::output_member(TIntermSymbol* s, const std::string& name) {
+    const TType& t = s->getType();
+    const std::string glsl = s->getName().c_str();
+    if (stage_ == Stage::Fragment) {
+        if (t.getBasicType() != glslang::EbtFloat || t.getVectorSize() != 4 || t.isArray()) {
+            refuse(s, "a fragment output other than a vec4");
+        }
+        member_lines_.push_back("vec4<F>& " + name + " = out.gl_FragColor;  // the fragment's colour");
+        color_output = name;
+        return;
+    }
+    if (s->getQualifier().storage == glslang::EvqPosition || glsl == "gl_Position") {
+        member_lines_.push_back("vec4<F> gl_Position{};");
+        position_output = "gl_Position";
+        return;
+    }
+    if (glsl.rfind("gl_", 0) == 0 || t.getBasicType() != glslang::EbtFloat || t.isArray() || t.isMatrix() || t.isStruct()) {
+        refuse(s, "a vertex output other than gl_Position or a float or vec varying");
+    }
+    member_lines_.push_back(type(t, s) + " " + name + "{};  // varying");
+    varying_outputs_.push_back({glsl, name});
+}
+
+// ---- expressions ---------------------------------------------------------------------------------
+
+Expr StageWriter::constant_value(const glslang::TConstUnionArray& a, int first, const TType& t, const TIntermNode* at) {
+    if (t.isArray() || t.isStruct()) refuse(at, "a constant array or struct");
+    const int n = t.isMatrix() ? t.getMatrixCols() * t.getMatrixRows() : t.getVectorSize();
+    std::vector<std::string> c;
+    for (int i = 0; i < n; ++i) {
+        const glslang::TConstUnion& v = a[first + i];
+        switch (t.getBasicType()) {
+            case glslang::EbtFloat: c.push_back(float_literal(v.getDConst())); break;
+            case glslang::EbtInt: c.push_back(std::to_string(v.getIConst())); break;
+            case glslang::EbtUint: c.push_back(std::to_string(v.getUConst()) + "u"); break;
+            case glslang::EbtBool: c.push_back(v.getBConst() ? "true" : "false"); break;
+            default: refuse(at, "a constant of this type");
+        }
+    }
+    if (n == 1) return {c[0], c[0][0] == '-' ? kUnary : kPrimary, true};
+    bool same = true;
+    for (const std::string& s : c) same = same && s == c[0];
+    const std::string element = scalar_type(t.getBasicType(), at);
+    std::string text = type(t, at) + "(";
+    if (same && !t.isMatrix()) {
+        text += element + "(" + c[0] + ")";
+    } else {
+        for (std::size_t i = 0; i < c.size(); ++i) text += (i ? ", " : "") + (element == "F" ? c[i] : element + "(" + c[i] + ")");
+    }
+    return {text + ")", kPrimary, false};
+}
+
+std::string StageWriter::constant_table(TIntermConstantUnion* c) {
+    const TType& t = c->getType();
+    if (!t.isArray() || t.getArraySizes()->getNumDims() != 1 || !TType(t, 0).isScalar()) {
+        refuse(c, "a constant array of vectors, matrices or structs read at a run-time index");
+    }
+    const int n = t.getOuterArraySize();
+    const glslang::TConstUnionArray& a = c->getConstArray();
+    std::string element, values;
+    for (int i = 0; i < n; ++i) {
+        std::string v;
+        switch (t.getBasicType()) {
+            case glslang::EbtFloat: element = "float", v = float_literal(a[i].getDConst()); break;
+            case glslang::EbtInt: element = "int", v = std::to_string(a[i].getIConst()); break;
+            case glslang::EbtUint: element = "unsigned", v = std::to_string(a[i].getUConst()) + "u"; break;
+            default: refuse(c, "a constant array of bools read at a run-time index");
+        }
+        values += (i ? ", " : "") + v;
+    }
+    const std::string key = element + ":" + values;
+    if (auto it = tables_.find(key); it != tables_.end()) return it->second;
+    const std::string name = "table" + std::to_string(tables_.size() + 1);
+    tables_[key] = name;
+    member_lines_.push_back("// the constant array of GLSL line " + std::to_string(c->getLoc().line) + ", read per fragment");
+    member_lines_.push_back("static constexpr table<" + element + ", " + std::to_string(n) + "> " + name + "{{" + values + "}};");
+    return name;
+}
+
+Expr StageWriter::constant(TIntermConstantUnion* c) { return constant_value(c->getConstArray(), 0, c->getType(), c); }
+
+// A plain C++ value as a value of its GLSL type over F.
+Expr StageWriter::as_typed(TIntermTyped* n, const TType& t) {
+    Expr e = expr(n);
+    if (!e.plain) return e;
+    return {scalar_type(t.getBasicType(), n) + "(" + e.text + ")", kPrimary, false};
+}
+
+Expr StageWriter::expr(TIntermTyped* n) {
+    if (auto* c = n->getAsConstantUnion()) return constant(c);
+    if (auto* s = n->getAsSymbolNode()) {
+        if (auto it = locals_.find(s->getId()); it != locals_.end()) return {it->second.name, kPrimary, it->second.plain_counter};
+        if (s->getQualifier().storage == glslang::EvqConst && s->getConstArray().size() > 0 && !s->getType().isArray()) {
+            return constant_value(s->getConstArray(), 0, s->getType(), s);
+        }
+        return {symbol_name(s), kPrimary, false};
+    }
+    if (auto* b = n->getAsBinaryNode()) return binary(b);
+    if (auto* u = n->getAsUnaryNode()) return unary(u);
+    if (auto* a = n->getAsAggregate()) return aggregate(a);
+    if (auto* s = n->getAsSelectionNode()) {
+        if (!s->getTrueBlock() || !s->getFalseBlock()) refuse(n, "this selection");
+        Expr c = expr(s->getCondition());
+        Expr t = as_typed(s->getTrueBlock()->getAsTyped(), n->getType());
+        Expr f = as_typed(s->getFalseBlock()->getAsTyped(), n->getType());
+        if (c.plain) return {parens(c, kOr) + " ? " + parens(t, kAssign) + " : " + parens(f, kAssign), kAssign, false};
+        return {"select(" + c.text + ", " + t.text + ", " + f.text + ")", kPrimary, false};
+    }
+    refuse(n, "this expression");
+}
+
+std::string StageWriter::swizzle(TIntermBinary* b) {
+    static const char* sets[] = {"xyzw", "rgba", "stpq"};
+    std::string name;
+    const std::string glsl_hint;
+    for (TIntermNode* k : b->getRight()->getAsAggregate()->getSequence()) {
+        const int i = k->getAsConstantUnion()->getConstArray()[0].getIConst();
+        name += sets[0][i];
+    }
+    (void)sets;
+    return name;
+}
+
+std::string StageWriter::lvalue(TIntermTyped* n) {
+    if (auto* s = n->getAsSymbolNode()) return expr(s).text;
+    if (auto* b = n->getAsBinaryNode()) {
+        const std::string base = lvalue(b->getLeft());
+        switch (b->getOp()) {
+            case glslang::EOpIndexDirect: {
+                const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+                const TType& t = b->getLeft()->getType();
+                if (t.isVector()) return base + "." + std::string(1, "xyzw"[i]);
+                return base + "[" + std::to_string(i) + "]";
+            }
+            case glslang::EOpIndexDirectStruct: {
+                const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+                return base + "." + cpp_identifier((*b->getLeft()->getType().getStruct())[std::size_t(i)].type->getFieldName().c_str(), where(b));
+            }
+            case glslang::EOpVectorSwizzle: {
+                const std::string s = swizzle(b);
+                return s.size() == 1 ? base + "." + s : base + "." + s + "()";
+            }
+            case glslang::EOpIndexIndirect: {
+                Expr i = expr(b->getRight());
+                if (!i.plain || b->getLeft()->getType().isVector()) refuse(b, "a write at an index that varies per fragment");
+                return base + "[" + i.text + "]";
+            }
+            default: break;
+        }
+    }
+    refuse(n, "this assignment target");
+}
+
+Expr StageWriter::binary(TIntermBinary* b) {
+    const TOperator op = b->getOp();
+    switch (op) {
+        case glslang::EOpIndexDirect: case glslang::EOpIndexDirectStruct: case glslang::EOpVectorSwizzle: {
+            Expr base = expr(b->getLeft());
+            if (op == glslang::EOpIndexDirect && b->getLeft()->getAsConstantUnion()) break;
+            const std::string lv = [&] {
+                if (op == glslang::EOpIndexDirect) {
+                    const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+                    if (b->getLeft()->getType().isVector()) return "." + std::string(1, "xyzw"[i]);
+                    return "[" + std::to_string(i) + "]";
+                }
+                if (op == glslang::EOpIndexDirectStruct) {
+                    const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+                    return "." + cpp_identifier((*b->getLeft()->getType().getStruct())[std::size_t(i)].type->getFieldName().c_str(), where(b));
+                }
+                const std::string s = swizzle(b);
+                return s.size() == 1 ? "." + s : "." + s + "()";
+            }();
+            return {parens(base, kPostfix) + lv, kPostfix, false};
+        }
+        case glslang::EOpIndexIndirect: {
+            if (auto* c = b->getLeft()->getAsConstantUnion()) return Expr{constant_table(c) + "[" + as_typed(b->getRight(), b->getRight()->getType()).text + "]", kPostfix, false};
+            Expr base = expr(b->getLeft());
+            Expr i = expr(b->getRight());
+            if (!i.plain) refuse(b, "an index that varies per fragment");
+            return {parens(base, kPostfix) + "[" + i.text + "]", kPostfix, false};
+        }
+        default: break;
+    }
+    if (b->getAsBinaryNode() && (op == glslang::EOpAssign || b->getType().getQualifier().storage == glslang::EvqTemporary) &&
+        (op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign)) {
+        refuse(b, "an assignment inside an expression");
+    }
+    Expr l = expr(b->getLeft());
+    Expr r = expr(b->getRight());
+    const bool plain = l.plain && r.plain;
+    const bool integer = b->getLeft()->getType().getBasicType() == glslang::EbtInt ||
+                         b->getLeft()->getType().getBasicType() == glslang::EbtUint;
+    // An integer or bool literal beside a value of F: written as a value of its type.
+    if (!plain) {
+        if (l.plain && b->getLeft()->getType().getBasicType() != glslang::EbtFloat) l = as_typed(b->getLeft(), b->getLeft()->getType());
+        if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat) r = as_typed(b->getRight(), b->getRight()->getType());
+    }
+    const auto infix = [&](const char* o, int prec) {
+        return Expr{parens(l, prec) + " " + o + " " + parens(r, prec + 1), prec, plain};
+    };
+    switch (op) {
+        case glslang::EOpAdd: return infix("+", kAdditive);
+        case glslang::EOpSub: return infix("-", kAdditive);
+        case glslang::EOpMul: case glslang::EOpVectorTimesScalar: case glslang::EOpVectorTimesMatrix:
+        case glslang::EOpMatrixTimesVector: case glslang::EOpMatrixTimesScalar: case glslang::EOpMatrixTimesMatrix:
+            return infix("*", kMultiplicative);
+        case glslang::EOpDiv: return infix("/", kMultiplicative);
+        case glslang::EOpMod: return infix("%", kMultiplicative);
+        case glslang::EOpLessThan: return infix("<", kRelational);
+        case glslang::EOpGreaterThan: return infix(">", kRelational);
+        case glslang::EOpLessThanEqual: return infix("<=", kRelational);
+        case glslang::EOpGreaterThanEqual: return infix(">=", kRelational);
+        case glslang::EOpEqual: return infix("==", kEquality);
+        case glslang::EOpNotEqual: return infix("!=", kEquality);
+        case glslang::EOpLogicalAnd: return infix("&&", kAnd);
+        case glslang::EOpLogicalOr: return infix("||", kOr);
+        case glslang::EOpLogicalXor: return infix("!=", kEquality);
+        case glslang::EOpAnd: return infix("&", kBitAnd);
+        case glslang::EOpInclusiveOr: return infix("|", kBitOr);
+        case glslang::EOpExclusiveOr: return infix("^", kBitXor);
+        case glslang::EOpLeftShift: return infix("<<", kShift);
+        case glslang::EOpRightShift: return infix(">>", kShift);
+        default: break;
+    }
+    (void)integer;
+    refuse(b, "this operator");
+}
+
+Expr StageWriter::conversion(TIntermTyped* from, const TType& to, TIntermTyped* at) {
+    Expr e = expr(from);
+    const TType& ft = from->getType();
+    const std::string target = scalar_type(to.getBasicType(), at);
+    const bool to_bool = to.getBasicType() == glslang::EbtBool;
+    const auto one = [&](const std::string& x) {
+        if (to_bool) {
+            const std::string zero = ft.getBasicType() == glslang::EbtFloat ? "F(0.0f)" : scalar_type(ft.getBasicType(), at) + "(0)";
+            return x + " != " + zero;
+        }
+        return target + "(" + x + ")";
+    };
+    if (e.plain) {
+        if (to.getBasicType() == glslang::EbtFloat) return {"float(" + e.text + ")", kPrimary, true};
+        if (to.getBasicType() == glslang::EbtInt) return {"int(" + e.text + ")", kPrimary, true};
+        if (to.getBasicType() == glslang::EbtUint) return {"unsigned(" + e.text + ")", kPrimary, true};
+        return {"bool(" + e.text + ")", kPrimary, true};
+    }
+    if (!ft.isVector()) return {one(e.text), to_bool ? kEquality : kPrimary, false};
+    // Component by component, from a named value.
+    std::string text = type(to, at) + "(";
+    const std::string src = parens(e, kPostfix);
+    if (from->getAsSymbolNode()) {
+        for (int i = 0; i < ft.getVectorSize(); ++i) text += (i ? ", " : "") + one(src + "." + std::string(1, "xyzw"[i]));
+        return {text + ")", kPrimary, false};
+    }
+    if (to_bool) refuse(at, "a conversion to a bool vector of an expression (of a variable it is written)");
+    return {"convert<" + type(to, at) + ">(" + e.text + ")", kPrimary, false};
+}
+
+Expr StageWriter::unary(TIntermUnary* u) {
+    const TOperator op = u->getOp();
+    TIntermTyped* a = u->getOperand();
+    switch (op) {
+        case glslang::EOpNegative: {
+            Expr e = expr(a);
+            return {"-" + parens(e, kUnary), kUnary, e.plain};
+        }
+        case glslang::EOpLogicalNot: case glslang::EOpVectorLogicalNot: {
+            Expr e = expr(a);
+            return {"!" + parens(e, kUnary), kUnary, e.plain};
+        }
+        case glslang::EOpBitwiseNot: {
+            Expr e = expr(a);
+            return {"~" + parens(e, kUnary), kUnary, e.plain};
+        }
+        case glslang::EOpPostIncrement: case glslang::EOpPostDecrement: case glslang::EOpPreIncrement:
+        case glslang::EOpPreDecrement:
+            refuse(u, "an increment inside an expression");
+        default: break;
+    }
+    if (op >= glslang::EOpConvInt8ToBool && op <= glslang::EOpConvDoubleToFloat) return conversion(a, u->getType(), u);
+    glslang::TIntermSequence args;
+    args.push_back(a);
+    return builtin("", u, args);
+}
+
+Expr StageWriter::aggregate(TIntermAggregate* a) {
+    const TOperator op = a->getOp();
+    if (op == glslang::EOpFunctionCall) return call(a);
+    if (op >= glslang::EOpConstructGuardStart && op < glslang::EOpConstructGuardEnd) return constructor(a);
+    if (op == glslang::EOpComma) refuse(a, "the comma operator");
+    return builtin("", a, a->getSequence());
+}
+
+Expr StageWriter::constructor(TIntermAggregate* a) {
+    const TType& t = a->getType();
+    const glslang::TIntermSequence& args = a->getSequence();
+    std::string text = type(t, a) + "(";
+    if (t.isArray() || t.isStruct()) text = type(t, a) + "{";
+    if (!t.isArray() && !t.isStruct() && !t.isMatrix() && args.size() == 1) {
+        const TType& at = args[0]->getAsTyped()->getType();
+        if (at.getBasicType() != t.getBasicType()) {
+            if (at.isScalar() && t.isScalar()) return conversion(args[0]->getAsTyped(), t, a);
+            if (at.isScalar()) {
+                Expr c = conversion(args[0]->getAsTyped(), TType(t.getBasicType()), a);
+                return {type(t, a) + "(" + c.text + ")", kPrimary, false};
+            }
+            return conversion(args[0]->getAsTyped(), t, a);
+        }
+    }
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        TIntermTyped* arg = args[i]->getAsTyped();
+        Expr e = arg->getType().getBasicType() != glslang::EbtFloat ? as_typed(arg, arg->getType()) : expr(arg);
+        if (arg->getType().getBasicType() != t.getBasicType() && !t.isStruct() && !t.isArray()) {
+            e = conversion(arg, TType(t.getBasicType(), glslang::EvqTemporary, arg->getType().getVectorSize()), a);
+        }
+        if (t.isScalar() && args.size() == 1) return e.plain ? Expr{scalar_type(t.getBasicType(), a) + "(" + e.text + ")"} : e;
+        text += (i ? ", " : "") + e.text;
+    }
+    return {text + ((t.isArray() || t.isStruct()) ? "}" : ")"), kPrimary, false};
+}
+
+Expr StageWriter::call(TIntermAggregate* a) {
+    const std::string mangled = a->getName().c_str();
+    const std::string name = cpp_identifier(mangled.substr(0, mangled.find('(')), where(a));
+    std::string text = name + "(";
+    const glslang::TIntermSequence& args = a->getSequence();
+    const glslang::TQualifierList& q = a->getQualifierList();
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        TIntermTyped* arg = args[i]->getAsTyped();
+        const bool out = i < q.size() && (q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut);
+        if (out && !masks_.empty()) refuse(a, "a call with out parameters under a condition that varies per fragment");
+        text += (i ? ", " : "") + (out ? lvalue(arg) : as_typed(arg, arg->getType()).text);
+    }
+    return {text + ")", kPostfix, false};
+}
+
+Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang::TIntermSequence& args) {
+    const TOperator op = node->getAsOperator()->getOp();
+    std::vector<std::string> v;
+    for (TIntermNode* n : args) v.push_back(as_typed(n->getAsTyped(), n->getAsTyped()->getType()).text);
+    const auto fn = [&](const std::string& name) {
+        std::string t = name + "(";
+        for (std::size_t i = 0; i < v.size(); ++i) t += (i ? ", " : "") + v[i];
+        return Expr{t + ")", kPostfix, false};
+    };
+    switch (op) {
+        case glslang::EOpRadians: return fn("radians");
+        case glslang::EOpDegrees: return fn("degrees");
+        case glslang::EOpSin: return fn("sin");
+        case glslang::EOpCos: return fn("cos");
+        case glslang::EOpTan: return fn("tan");
+        case glslang::EOpAsin: return fn("asin");
+        case glslang::EOpAcos: return fn("acos");
+        case glslang::EOpAtan: return fn("atan");
+        case glslang::EOpSinh: return fn("sinh");
+        case glslang::EOpCosh: return fn("cosh");
+        case glslang::EOpTanh: return fn("tanh");
+        case glslang::EOpAsinh: return fn("asinh");
+        case glslang::EOpAcosh: return fn("acosh");
+        case glslang::EOpAtanh: return fn("atanh");
+        case glslang::EOpPow: return fn("pow");
+        case glslang::EOpExp: return fn("exp");
+        case glslang::EOpLog: return fn("log");
+        case glslang::EOpExp2: return fn("exp2");
+        case glslang::EOpLog2: return fn("log2");
+        case glslang::EOpSqrt: return fn("sqrt");
+        case glslang::EOpInverseSqrt: return fn("inversesqrt");
+        case glslang::EOpAbs: return fn("abs");
+        case glslang::EOpSign: return fn("sign");
+        case glslang::EOpFloor: return fn("floor");
+        case glslang::EOpTrunc: return fn("trunc");
+        case glslang::EOpRound: case glslang::EOpRoundEven: return fn("roundEven");
+        case glslang::EOpCeil: return fn("ceil");
+        case glslang::EOpFract: return fn("fract");
+        case glslang::EOpMod: return fn("mod");
+        case glslang::EOpMin: return fn("min");
+        case glslang::EOpMax: return fn("max");
+        case glslang::EOpClamp: return fn("clamp");
+        case glslang::EOpMix: return fn("mix");
+        case glslang::EOpStep: return fn("step");
+        case glslang::EOpSmoothStep: return fn("smoothstep");
+        case glslang::EOpFma: return fn("fma");
+        case glslang::EOpIsNan: return fn("isnan");
+        case glslang::EOpIsInf: return fn("isinf");
+        case glslang::EOpLength: return fn("length");
+        case glslang::EOpDistance: return fn("distance");
+        case glslang::EOpDot: return fn("dot");
+        case glslang::EOpCross: return fn("cross");
+        case glslang::EOpNormalize: return fn("normalize");
+        case glslang::EOpFaceForward: return fn("faceforward");
+        case glslang::EOpReflect: return fn("reflect");
+        case glslang::EOpRefract: return fn("refract");
+        case glslang::EOpDPdx: return fn("dFdx");
+        case glslang::EOpDPdy: return fn("dFdy");
+        case glslang::EOpFwidth: return fn("fwidth");
+        case glslang::EOpDPdxFine: return fn("dFdxFine");
+        case glslang::EOpDPdyFine: return fn("dFdyFine");
+        case glslang::EOpFwidthFine: return fn("fwidthFine");
+        case glslang::EOpDPdxCoarse: return fn("dFdxCoarse");
+        case glslang::EOpDPdyCoarse: return fn("dFdyCoarse");
+        case glslang::EOpFwidthCoarse: return fn("fwidthCoarse");
+        case glslang::EOpLessThan: return fn("lessThan");
+        case glslang::EOpLessThanEqual: return fn("lessThanEqual");
+        case glslang::EOpGreaterThan: return fn("greaterThan");
+        case glslang::EOpGreaterThanEqual: return fn("greaterThanEqual");
+        case glslang::EOpVectorEqual: return fn("equal");
+        case glslang::EOpVectorNotEqual: return fn("notEqual");
+        case glslang::EOpAny: return fn("any");
+        case glslang::EOpAll: return fn("all");
+        case glslang::EOpTranspose: return fn("transpose");
+        case glslang::EOpDeterminant: return fn("determinant");
+        case glslang::EOpMatrixInverse: return fn("inverse");
+        case glslang::EOpOuterProduct: return fn("outerProduct");
+        case glslang::EOpMul: return fn("matrixCompMult");
+        case glslang::EOpFloatBitsToInt: return fn("floatBitsToInt");
+        case glslang::EOpFloatBitsToUint: return fn("floatBitsToUint");
+        case glslang::EOpIntBitsToFloat: return fn("intBitsToFloat");
+        case glslang::EOpUintBitsToFloat: return fn("uintBitsToFloat");
+        case glslang::EOpBitFieldReverse: return fn("bitfieldReverse");
+        case glslang::EOpBitCount: return fn("bitCount");
+        case glslang::EOpFindLSB: return fn("findLSB");
+        case glslang::EOpFindMSB: return fn("findMSB");
+        case glslang::EOpBitfieldExtract: return fn("bitfieldExtract");
+        case glslang::EOpBitfieldInsert: return fn("bitfieldInsert");
+        case glslang::EOpLdexp: return fn("ldexp");
+        case glslang::EOpFtransform:
+            if (stage_ != Stage::Vertex) refuse(node, "ftransform() outside a vertex shader");
+            {
+                TIntermSymbol* dummy = nullptr;
+                (void)dummy;
+            }
+            if (!member_names_.contains("gl_ModelViewProjectionMatrix")) {
+                member_names_.insert("gl_ModelViewProjectionMatrix");
+                member_lines_.push_back("const mat4<F> gl_ModelViewProjectionMatrix = transform<F>(u.model_view_projection);");
+            }
+            if (!member_names_.contains("gl_Vertex")) {
+                member_names_.insert("gl_Vertex");
+                member_lines_.push_back("const vec4<F> gl_Vertex = vec4<F>(F(in.position[0]), F(in.position[1]), F(in.position[2]), F(1.0f));");
+            }
+            return {"gl_ModelViewProjectionMatrix * gl_Vertex", kMultiplicative, false};
+        case glslang::EOpTexture: case glslang::EOpTextureProj: case glslang::EOpTextureLod: case glslang::EOpTextureProjLod:
+        case glslang::EOpTextureFetch: case glslang::EOpTextureQuerySize: {
+            const TType& st = args[0]->getAsTyped()->getType();
+            const bool three = st.getSampler().dim == glslang::Esd3D;
+            const std::string base = three ? "texture3D" : "texture2D";
+            const bool vertex = stage_ == Stage::Vertex;
+            if (op == glslang::EOpTextureFetch) return fn("texelFetch");
+            if (op == glslang::EOpTextureQuerySize) return fn("textureSize");
+            if (op == glslang::EOpTexture && !vertex) return fn(base);
+            if (op == glslang::EOpTextureProj && !vertex) return fn(base + "Proj");
+            if (op == glslang::EOpTextureLod) return fn(base + "Lod");
+            if (op == glslang::EOpTextureProjLod) return fn(base + "ProjLod");
+            refuse(node, "a texture lookup in a vertex shader");
+        }
+        default: break;
+    }
+    refuse(node, "this built-in function");
+}
+
+// ---- statements ------------------------------------------------------------------------------------
+
+// Whether a write to `target` keeps the lanes outside the conditions open: those a condition
+// opened since the variable was declared.
+bool StageWriter::masked_target(TIntermTyped* target) {
+    TIntermTyped* n = target;
+    while (auto* b = n->getAsBinaryNode()) n = b->getLeft();
+    auto* s = n->getAsSymbolNode();
+    if (!s) refuse(target, "this assignment target");
+    if (auto it = locals_.find(s->getId()); it != locals_.end()) return int(masks_.size()) > it->second.mask_depth;
+    return !masks_.empty();
+}
+
+void StageWriter::assign_to(TIntermTyped* target, const std::string& value, const TIntermNode* at) {
+    const std::string lv = lvalue(target);
+    if (masked_target(target)) {
+        std::string current = lv;
+        if (lv.back() == ')') current = type(target->getType(), at) + "(" + lv + ")";
+        line(lv + " = select(" + mask() + ", " + value + ", " + current + ");", at);
+    } else {
+        line(lv + " = " + value + ";", at);
+    }
+}
+
+void StageWriter::assignment(TIntermBinary* b) {
+    const TOperator op = b->getOp();
+    TIntermTyped* target = b->getLeft();
+    if (op == glslang::EOpAssign) {
+        if (auto* s = target->getAsSymbolNode()) {
+            auto it = locals_.find(s->getId());
+                if (it != locals_.end() && !it->second.declared && it->second.declaring == b) {
+                it->second.declared = true;
+                it->second.mask_depth = int(masks_.size());
+                Expr v = it->second.plain_counter ? expr(b->getRight()) : as_typed(b->getRight(), b->getType());
+                const std::string t = it->second.plain_counter ? "int" : type(s->getType(), b);
+                const std::string v_text = s->getType().isArray() ? v.text : v.text;
+                line(t + " " + it->second.name + " = " + v_text + ";", b);
+                return;
+            }
+        }
+        assign_to(target, as_typed(b->getRight(), b->getType()).text, b);
+        return;
+    }
+    const char* o = nullptr;
+    switch (op) {
+        case glslang::EOpAddAssign: o = "+"; break;
+        case glslang::EOpSubAssign: o = "-"; break;
+        case glslang::EOpMulAssign: case glslang::EOpVectorTimesScalarAssign: case glslang::EOpVectorTimesMatrixAssign:
+        case glslang::EOpMatrixTimesScalarAssign: case glslang::EOpMatrixTimesMatrixAssign: o = "*"; break;
+        case glslang::EOpDivAssign: o = "/"; break;
+        case glslang::EOpModAssign: o = "%"; break;
+        case glslang::EOpAndAssign: o = "&"; break;
+        case glslang::EOpInclusiveOrAssign: o = "|"; break;
+        case glslang::EOpExclusiveOrAssign: o = "^"; break;
+        case glslang::EOpLeftShiftAssign: o = "<<"; break;
+        case glslang::EOpRightShiftAssign: o = ">>"; break;
+        default: refuse(b, "this assignment");
+    }
+    Expr r = expr(b->getRight());
+    if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat) r = as_typed(b->getRight(), b->getRight()->getType());
+    const std::string lv = lvalue(target);
+    const bool widened = !target->getType().isScalar() && b->getRight()->getType().isScalar();
+    if (masked_target(target) || widened) {
+        assign_to(target, (lv.back() == ')' ? type(target->getType(), b) + "(" + lv + ")" : lv) + " " + o + " " +
+                              parens(r, kMultiplicative + 1), b);
+    } else {
+        line(lv + " " + o + "= " + r.text + ";", b);
+    }
+}
+
+void StageWriter::block(TIntermNode* n) {
+    ++indent_;
+    if (n) {
+        write_zeroes(n);
+        auto* a = n->getAsAggregate();
+        if (a && a->getOp() == glslang::EOpSequence && !is_for_sequence(a)) {
+            for (TIntermNode* s : statements_of(a)) statement(s);
+        } else {
+            statement(n);
+        }
+    }
+    --indent_;
+}
+
+void StageWriter::if_statement(glslang::TIntermSelection* s) {
+    Expr c = expr(s->getCondition());
+    if (c.plain) {
+        line("if (" + c.text + ") {", s);
+        block(s->getTrueBlock());
+        if (s->getFalseBlock()) {
+            line("} else {", nullptr);
+            block(s->getFalseBlock());
+        }
+        line("}", nullptr);
+        return;
+    }
+    // `if (c) break;` and the like: one call with the condition.
+    TIntermNode* only = s->getTrueBlock();
+    if (auto* a = only ? only->getAsAggregate() : nullptr; a && a->getOp() == glslang::EOpSequence && a->getSequence().size() == 1) {
+        only = a->getSequence()[0];
+    }
+    if (auto* br = only ? only->getAsBranchNode() : nullptr; br && !s->getFalseBlock()) {
+        masks_.push_back(and_mask(parens(c, kAnd + 1)));
+        branch(br);
+        masks_.pop_back();
+        return;
+    }
+    // A condition that varies per fragment: both sides run, each write keeps the lanes of the other.
+    // The condition is taken once, before either side writes what it reads.
+    const std::string name = fresh("if");
+    line("const Bool<F> " + name + " = " + and_mask(parens(c, kAnd + 1)) + ";  // if", s);
+    line("{", nullptr);
+    masks_.push_back(name);
+    block(s->getTrueBlock());
+    masks_.pop_back();
+    line("}", nullptr);
+    if (s->getFalseBlock()) {
+        const std::string other = fresh("else");
+        line("const Bool<F> " + other + " = " + and_mask("!" + name) + ";  // else", nullptr);
+        line("{", nullptr);
+        masks_.push_back(other);
+        block(s->getFalseBlock());
+        masks_.pop_back();
+        line("}", nullptr);
+    }
+}
+
+void StageWriter::branch(glslang::TIntermBranch* b) {
+    switch (b->getFlowOp()) {
+        case glslang::EOpKill:
+            if (stage_ != Stage::Fragment) refuse(b, "discard outside a fragment shader");
+            discards_ = true;
+            if (!loops_.empty()) line(loops_.back().name + ".discard_if(out, " + (masks_.empty() ? "Bool<F>(true)" : mask()) + ");", b);
+            else line("out.discard_if(" + (masks_.empty() ? "Bool<F>(true)" : mask()) + ");", b);
+            return;
+        case glslang::EOpBreak:
+            if (loops_.empty()) refuse(b, "break outside a loop");
+            line(loops_.back().name + ".break_if(" + (masks_.size() > std::size_t(loops_.back().mask_depth) ? mask() : "Bool<F>(true)") + ");", b);
+            return;
+        case glslang::EOpContinue:
+            if (loops_.empty()) refuse(b, "continue outside a loop");
+            line(loops_.back().name + ".continue_if(" + (masks_.size() > std::size_t(loops_.back().mask_depth) ? mask() : "Bool<F>(true)") + ");", b);
+            return;
+        case glslang::EOpReturn: {
+            std::string v;
+            if (b->getExpression()) v = as_typed(b->getExpression(), b->getExpression()->getType()).text;
+            if (masks_.empty() && loops_.empty()) {
+                if (uses_return_) line("return ret.value_or(" + v + ");", b);
+                else line(v.empty() ? "return;" : "return " + v + ";", b);
+                return;
+            }
+            if (v.empty()) refuse(b, "a return from a void function under a condition");
+            uses_return_ = true;
+            if (!loops_.empty()) line(loops_.back().name + ".return_if(ret, " + (masks_.empty() ? "Bool<F>(true)" : mask()) + ", " + v + ");", b);
+            else line("ret.return_if(" + mask() + ", " + v + ");", b);
+            return;
+        }
+        default: refuse(b, "this branch");
+    }
+}
+
+// Symbols of locals declared outside `body` that `body` assigns.
+std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
+    struct Finder : glslang::TIntermTraverser {
+        std::vector<long long> ids;
+        void add(TIntermTyped* n) {
+            while (auto* b = n->getAsBinaryNode()) n = b->getLeft();
+            if (auto* s = n->getAsSymbolNode()) ids.push_back(s->getId());
+        }
+        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
+            if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) add(b->getLeft());
+            return true;
+        }
+        bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
+            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) add(u->getOperand());
+            return true;
+        }
+        bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
+            if (a->getOp() == glslang::EOpFunctionCall) {
+                const glslang::TQualifierList& q = a->getQualifierList();
+                for (std::size_t i = 0; i < a->getSequence().size() && i < q.size(); ++i) {
+                    if (q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut) add(a->getSequence()[i]->getAsTyped());
+                }
+            }
+            return true;
+        }
+    } f;
+    body->traverse(&f);
+    std::vector<long long> out;
+    for (long long id : f.ids) {
+        auto it = locals_.find(id);
+        if (it == locals_.end()) {
+            if (!globals_.contains(id)) continue;
+        } else if (!it->second.declared) {
+            continue;
+        }
+        if (std::find(out.begin(), out.end(), id) == out.end()) out.push_back(id);
+    }
+    return out;
+}
+
+void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
+    const std::vector<long long> vars = assigned_outside(l);
+    std::string list;
+    for (long long id : vars) {
+        const std::string n = locals_.contains(id) ? locals_[id].name : globals_[id];
+        if (locals_.contains(id) && locals_[id].plain_counter) continue;
+        list += ", " + n;
+    }
+    // Each loop of a function has its own name: loop, loop2, ...
+    const std::string name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
+    std::string head;
+    if (!loops_.empty()) head = "Loop " + name + "(" + loops_.back().name + list + ");";
+    else if (!masks_.empty()) head = "Loop " + name + "(inside(" + mask() + ")" + list + ");";
+    else head = "Loop " + name + "(" + (list.empty() ? "" : list.substr(2)) + ");";
+    if (list.empty() && loops_.empty() && masks_.empty()) head = "Loop<Bool<F>> " + name + ";";
+    line(head + "  // the variables the loop assigns", nullptr);
+    std::string init_text;
+    if (init) {
+        auto* b = init->getAsBinaryNode();
+        auto* s = b ? b->getLeft()->getAsSymbolNode() : nullptr;
+        if (!s || !locals_.contains(s->getId())) refuse(init, "this loop initialiser");
+        Local& lo = locals_[s->getId()];
+        lo.declared = true;
+        lo.mask_depth = int(masks_.size());
+        Expr v = lo.plain_counter ? expr(b->getRight()) : as_typed(b->getRight(), b->getType());
+        init_text = (lo.plain_counter ? "int" : type(s->getType(), b)) + " " + lo.name + " = " + v.text;
+    }
+    Expr c = l->getTest() ? expr(l->getTest()) : Expr{"true", kPrimary, true};
+    std::string step;
+    if (TIntermTyped* t = l->getTerminal()) {
+        if (auto* u = t->getAsUnaryNode(); u && u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) {
+            const bool inc = u->getOp() == glslang::EOpPostIncrement || u->getOp() == glslang::EOpPreIncrement;
+            auto* sym = u->getOperand()->getAsSymbolNode();
+            const bool plain = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            const glslang::TBasicType bt = u->getOperand()->getType().getBasicType();
+            const std::string one = bt == glslang::EbtFloat ? "1.0f" : scalar_type(bt, u) + "(1)";
+            step = plain ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
+        } else if (auto* b = t->getAsBinaryNode(); b && b->getOp() > glslang::EOpAssign && b->getOp() <= glslang::EOpSubAssign) {
+            Expr r = expr(b->getRight());
+            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !locals_[b->getLeft()->getAsSymbolNode() ? b->getLeft()->getAsSymbolNode()->getId() : 0].plain_counter) {
+                r = as_typed(b->getRight(), b->getRight()->getType());
+            }
+            step = lvalue(b->getLeft()) + (b->getOp() == glslang::EOpAddAssign ? " += " : " -= ") + r.text;
+        } else {
+            refuse(t, "this loop step");
+        }
+        if (!assigned_outside(l->getBody() ? l->getBody() : t).empty() || true) {
+            // lanes that continued rejoin before the step
+        }
+    }
+    const bool has_continue = [&] {
+        struct Finder : glslang::TIntermTraverser {
+            bool found = false;
+            bool visitBranch(glslang::TVisit, glslang::TIntermBranch* b) override {
+                found = found || b->getFlowOp() == glslang::EOpContinue;
+                return true;
+            }
+            bool visitLoop(glslang::TVisit, glslang::TIntermLoop*) override { return false; }
+        } f;
+        if (l->getBody()) l->getBody()->traverse(&f);
+        return f.found;
+    }();
+    if (has_continue && !step.empty()) step = name + ".next(), " + step;
+    loops_.push_back({name, int(masks_.size())});
+    if (!l->testFirst()) {
+        if (c.plain && c.text == "true") refuse(l, "a do loop without a condition");
+        line("do {", l);
+        block(l->getBody());
+        line("} while (" + name + "(" + c.text + "));", nullptr);
+    } else if (init || !step.empty()) {
+        line("for (" + init_text + "; " + name + "(" + c.text + "); " + step + ") {", l);
+        block(l->getBody());
+        line("}", nullptr);
+    } else {
+        line("while (" + name + "(" + (c.text == "true" ? "" : c.text) + ")) {", l);
+        block(l->getBody());
+        line("}", nullptr);
+    }
+    loops_.pop_back();
+}
+
+void StageWriter::statement(TIntermNode* n) {
+    if (!n) return;
+    if (auto* a = n->getAsAggregate()) {
+        if (is_declaration(a)) {
+            for (TIntermNode* d : a->getSequence()) statement(d);
+            return;
+        }
+        if (a->getOp() == glslang::EOpSequence) {
+            // A for loop's initialiser and the loop, as glslang nests them.
+            if (is_for_sequence(a)) {
+                const std::vector<TIntermNode*> s = statements_of(a);
+                auto* sym = s[0]->getAsBinaryNode()->getLeft()->getAsSymbolNode();
+                if (locals_.contains(sym->getId()) && locals_[sym->getId()].declaring == s[0]) {
+                    loop(s[1]->getAsLoopNode(), s[0]);
+                    return;
+                }
+            }
+            line("{", nullptr);
+            block(a);
+            line("}", nullptr);
+            return;
+        }
+        if (a->getOp() == glslang::EOpFunctionCall || a->getOp() < glslang::EOpConstructGuardStart) {
+            const Expr e = expr(a);
+            line(e.text + ";", a);
+            return;
+        }
+        refuse(n, "this statement");
+    }
+    if (auto* b = n->getAsBinaryNode()) {
+        if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) return assignment(b);
+        refuse(n, "an expression statement with no effect");
+    }
+    if (auto* u = n->getAsUnaryNode()) {
+        const TOperator op = u->getOp();
+        if (op >= glslang::EOpPostIncrement && op <= glslang::EOpPreDecrement) {
+            const bool inc = op == glslang::EOpPostIncrement || op == glslang::EOpPreIncrement;
+            TIntermTyped* t = u->getOperand();
+            const std::string lv = lvalue(t);
+            const std::string one = t->getType().getBasicType() == glslang::EbtFloat ? "1.0f" : scalar_type(t->getType().getBasicType(), u) + "(1)";
+            if (masked_target(t)) assign_to(t, lv + (inc ? " + " : " - ") + one, u);
+            else line(lv + (inc ? " += " : " -= ") + one + ";", u);
+            return;
+        }
+        refuse(n, "an expression statement with no effect");
+    }
+    if (auto* s = n->getAsSelectionNode()) return if_statement(s);
+    if (auto* l = n->getAsLoopNode()) return loop(l, nullptr);
+    if (auto* b = n->getAsBranchNode()) return branch(b);
+    if (n->getAsSwitchNode()) refuse(n, "switch");
+    if (n->getAsSymbolNode() || n->getAsConstantUnion()) return;  // a declaration glslang kept as its symbol
+    refuse(n, "this statement");
+}
+
+// The locals of a function: named, and declared in the innermost block holding every use, by
+// their first assignment where that is a statement of that block, else zeroed before the first
+// statement that uses them (GLSL leaves them undefined; the interpreter zeroes them).
+void StageWriter::declare_locals(TIntermNode* body) {
+    struct Finder : glslang::TIntermTraverser {
+        std::map<long long, std::vector<TIntermNode*>> path;  // the common blocks of every use
+        std::map<long long, TIntermSymbol*> symbol;
+        std::map<long long, TIntermNode*> first_statement;  // in the common block
+        std::vector<TIntermNode*> blocks;
+        Finder() : glslang::TIntermTraverser(true, false, true) {}
+        void use(TIntermSymbol* s) {
+            const long long id = s->getId();
+            if (!path.contains(id)) {
+                path[id] = blocks;
+                symbol[id] = s;
+            } else {
+                std::vector<TIntermNode*>& p = path[id];
+                std::size_t k = 0;
+                while (k < p.size() && k < blocks.size() && p[k] == blocks[k]) ++k;
+                p.resize(k);
+            }
+        }
+        void visitSymbol(TIntermSymbol* s) override {
+            const glslang::TStorageQualifier q = s->getQualifier().storage;
+            if (q == glslang::EvqTemporary) use(s);
+        }
+        bool visitAggregate(glslang::TVisit v, TIntermAggregate* a) override {
+            if (a->getOp() == glslang::EOpSequence && !is_declaration(a)) {
+                if (v == glslang::EvPreVisit) blocks.push_back(a);
+                else if (v == glslang::EvPostVisit) blocks.pop_back();
+            }
+            return true;
+        }
+    } f;
+    body->traverse(&f);
+    for (auto& [id, p] : f.path) {
+        if (locals_.contains(id)) continue;  // a parameter
+        TIntermSymbol* s = f.symbol[id];
+        Local l;
+        l.name = cpp_identifier(s->getName().c_str(), where(s));
+        TIntermNode* block = p.empty() ? body : p.back();
+        auto* agg = block->getAsAggregate();
+        // The statement of the block that first uses it.
+        if (agg) {
+            for (TIntermNode* st : statements_of(agg)) {
+                struct Uses : glslang::TIntermTraverser {
+                    long long id;
+                    bool found = false;
+                    void visitSymbol(TIntermSymbol* s) override { found = found || s->getId() == id; }
+                } u;
+                u.id = id;
+                st->traverse(&u);
+                if (!u.found) continue;
+                auto* b = st->getAsBinaryNode();
+                if (b && b->getOp() == glslang::EOpAssign && b->getLeft()->getAsSymbolNode() &&
+                    b->getLeft()->getAsSymbolNode()->getId() == id) {
+                    Uses r;
+                    r.id = id;
+                    b->getRight()->traverse(&r);
+                    if (!r.found) l.declaring = b;
+                }
+                break;
+            }
+        }
+        if (l.declaring && is_for_sequence(agg) && statements_of(agg)[0] == l.declaring) {
+            l.plain_counter = plain_counter(agg, id);
+        }
+        l.declared = false;
+        locals_[id] = l;
+        if (!l.declaring) {
+            // zeroed where its block begins
+            pending_zero_[block].push_back(id);
+            zero_symbols_[id] = s;
+        }
+    }
+}
+
+// A for loop's counter the same for every fragment, kept a C++ int: an int from a constant,
+// tested against a constant, stepped by a constant, and written nowhere else.
+bool StageWriter::plain_counter(TIntermAggregate* seq, long long id) {
+    const std::vector<TIntermNode*> parts = statements_of(seq);
+    auto* init = parts[0]->getAsBinaryNode();
+    glslang::TIntermLoop* lp = parts[1]->getAsLoopNode();
+    const TType& t = init->getLeft()->getType();
+    if (t.getBasicType() != glslang::EbtInt || !t.isScalar() || !init->getRight()->getAsConstantUnion() || !lp->testFirst()) {
+        return false;
+    }
+    struct Writes : glslang::TIntermTraverser {
+        long long id;
+        int n = 0;
+        void check(TIntermTyped* x) {
+            while (auto* b = x->getAsBinaryNode()) x = b->getLeft();
+            if (auto* s = x->getAsSymbolNode(); s && s->getId() == id) ++n;
+        }
+        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
+            if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) check(b->getLeft());
+            return true;
+        }
+        bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
+            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) check(u->getOperand());
+            return true;
+        }
+        bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
+            if (a->getOp() == glslang::EOpFunctionCall) {
+                for (TIntermNode* x : a->getSequence()) check(x->getAsTyped());
+            }
+            return true;
+        }
+    } w;
+    w.id = id;
+    if (lp->getBody()) lp->getBody()->traverse(&w);
+    if (w.n != 0) return false;
+    TIntermTyped* step = lp->getTerminal();
+    if (!step) return false;
+    if (auto* b = step->getAsBinaryNode(); b && !b->getRight()->getAsConstantUnion()) return false;
+    auto* test = lp->getTest() ? lp->getTest()->getAsBinaryNode() : nullptr;
+    return test && test->getRight()->getAsConstantUnion() && test->getLeft()->getAsSymbolNode() &&
+           test->getLeft()->getAsSymbolNode()->getId() == id;
+}
+
+void StageWriter::write_zeroes(TIntermNode* block) {
+    auto it = pending_zero_.find(block);
+    if (it == pending_zero_.end()) return;
+    for (long long id : it->second) {
+        Local& l = locals_[id];
+        l.declared = true;
+        l.mask_depth = int(masks_.size());
+        // the interpreter's value for what GLSL leaves undefined
+        TIntermSymbol* s = zero_symbols_[id];
+        line(type(s->getType(), s) + " " + l.name + "{};", nullptr);
+    }
+}
+
+void StageWriter::function(TIntermAggregate* f) {
+    locals_.clear();
+    masks_.clear();
+    loops_.clear();
+    loops_in_function_ = 0;
+    uses_return_ = false;
+    pending_zero_.clear();
+    const std::string mangled = f->getName().c_str();
+    const std::string glsl_name = mangled.substr(0, mangled.find('('));
+    const bool is_main = glsl_name == "main";
+    const std::string name = is_main ? "main" : cpp_identifier(glsl_name, where(f));
+    const glslang::TIntermSequence& parts = f->getSequence();
+    std::string params;
+    if (!parts.empty() && parts[0]) {
+        for (TIntermNode* p : parts[0]->getAsAggregate()->getSequence()) {
+            TIntermSymbol* s = p->getAsSymbolNode();
+            if (!s) continue;
+            const glslang::TStorageQualifier q = s->getQualifier().storage;
+            if (s->getType().getBasicType() == glslang::EbtSampler) refuse(s, "a sampler parameter");
+            Local l;
+            l.name = s->getName().empty() ? fresh("unnamed") : cpp_identifier(s->getName().c_str(), where(s));
+            l.declared = true;
+            locals_[s->getId()] = l;
+            const bool ref = q == glslang::EvqOut || q == glslang::EvqInOut;
+            params += (params.empty() ? "" : ", ") + type(s->getType(), s) + (ref ? "& " : " ") + l.name;
+        }
+    }
+    return_type_ = type(f->getType(), f);
+    TIntermNode* body = parts.size() > 1 ? parts[1] : nullptr;
+    if (body && body->getAsAggregate()) declare_locals(body);
+    body_.str("");
+    indent_ = 2;
+    if (body) {
+        auto* a = body->getAsAggregate();
+        write_zeroes(body);
+        if (a && a->getOp() == glslang::EOpSequence) {
+            for (TIntermNode* s : statements_of(a)) statement(s);
+        } else {
+            statement(body);
+        }
+    }
+    std::string text = body_.str();
+    std::string head = "    " + return_type_ + " " + name + "(" + params + ") {  // " + std::to_string(f->getLoc().line) + "\n";
+    if (uses_return_) head += "        Return<" + return_type_ + "> ret;  // the value of the fragments that returned early\n";
+    if (uses_return_ && f->getType().getBasicType() != glslang::EbtVoid) {
+        // falls off the end only where GLSL leaves the value undefined
+        const std::string tail = "return ret.value_or";
+        if (text.find(tail) == std::string::npos) text += "        return ret.value_or(" + return_type_ + "{});\n";
+    }
+    functions_text_ += head + text + "    }\n";
+}
+
+// The struct types the stage uses, inner ones first.
+void collect_structs(const TType& t, std::vector<const TType*>& out, std::set<std::string>& seen) {
+    if (!t.isStruct()) return;
+    for (const glslang::TTypeLoc& m : *t.getStruct()) collect_structs(*m.type, out, seen);
+    const std::string name = t.getTypeName().c_str();
+    if (seen.insert(name).second) out.push_back(&t);
+}
+
+std::string StageWriter::write() {
+    TIntermAggregate* root = ast_.getTreeRoot() ? ast_.getTreeRoot()->getAsAggregate() : nullptr;
+    if (!root) throw GlslError(source_position(file_, 0) + "error: the shader has no code");
+    // Struct types first: members and functions use them.
+    std::vector<const TType*> structs;
+    std::set<std::string> seen;
+    struct Types : glslang::TIntermTraverser {
+        std::vector<const TType*>* out;
+        std::set<std::string>* seen;
+        void visitSymbol(TIntermSymbol* s) override { collect_structs(s->getType(), *out, *seen); }
+    } types;
+    types.out = &structs;
+    types.seen = &seen;
+    root->traverse(&types);
+    std::string struct_text;
+    for (const TType* t : structs) {
+        struct_text += "    struct " + cpp_identifier(t->getTypeName().c_str(), file_ + ": ") + " {\n";
+        for (const glslang::TTypeLoc& m : *t->getStruct()) {
+            struct_text += "        " + type(*m.type, nullptr) + " " + cpp_identifier(m.type->getFieldName().c_str(), file_ + ": ") + "{};\n";
+        }
+        struct_text += "    };\n";
+    }
+    // The code outside functions (globals' initialisers) runs first, as main()'s first statements.
+    TIntermAggregate* main = nullptr;
+    std::string globals;
+    for (TIntermNode* n : root->getSequence()) {
+        TIntermAggregate* a = n->getAsAggregate();
+        if (a && a->getOp() == glslang::EOpFunction) {
+            if (std::string(a->getName().c_str()) == "main(") {
+                main = a;
+            } else {
+                function(a);
+            }
+        } else if (a && a->getOp() == glslang::EOpLinkerObjects) {
+            continue;
+        } else {
+            locals_.clear();
+            body_.str("");
+            indent_ = 2;
+            statement(n);
+            globals += body_.str();
+        }
+    }
+    if (!main) throw GlslError(source_position(file_, 0) + "error: the shader has no main()");
+    const std::size_t before = functions_text_.size();
+    function(main);
+    if (!globals.empty()) {
+        const std::size_t open = functions_text_.find('\n', before);
+        functions_text_.insert(open + 1, globals);
+    }
+    std::string members;
+    for (const std::string& m : member_lines_) members += "    " + m + "\n";
+    return struct_text + members + "\n" + functions_text_;
+}
+
+// A string literal holding `s`, with everything outside printable ASCII, and quotes and
+// backslashes, replaced.
+std::string string_literal(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) out += (c >= 0x20 && c < 0x7F && c != '"' && c != '\\' && c != '?') ? c : '_';
+    return out + "\"";
+}
+
+const char* uniform_type(const ir::Uniform& u, const std::string& where) {
+    if (u.columns > 1) {
+        if (u.components == u.columns * u.columns) {
+            if (u.columns == 2) return "Mat2";
+            if (u.columns == 3) return "Mat3";
+            if (u.columns == 4) return "Mat4";
+        }
+        throw GlslError(where + "uniform '" + u.name + "': non-square matrices cannot be set as uniforms here");
+    }
+    if (u.bank == ir::Bank::Float) {
+        constexpr const char* t[] = {"Float", "Vec2", "Vec3", "Vec4"};
+        return t[u.components - 1];
+    }
+    if (u.bank == ir::Bank::Uint && u.components == 1) return "Uint";
+    constexpr const char* t[] = {"Int", "IVec2", "IVec3", "IVec4"};
+    return t[u.components - 1];
+}
+
+std::string to_camel(const std::string& snake) {
+    std::string out;
+    bool up = true;
+    for (char c : snake) {
+        if (c == '_') {
+            up = true;
+            continue;
+        }
+        out += up && c >= 'a' && c <= 'z' ? char(c - 'a' + 'A') : c;
+        up = false;
+    }
+    return out.empty() || !((out[0] >= 'A' && out[0] <= 'Z') || (out[0] >= 'a' && out[0] <= 'z')) ? "Shader" + out : out;
+}
+
+// The GLSL as the plugin's files hold it: ShaderInfo::glsl_version gives the #version line (the
+// export writes it first, shading/glsl_export.h), so the file's own is blanked, its lines kept.
+std::string without_version_line(const std::string& text) {
+    std::string out;
+    std::istringstream in(text);
+    std::string line;
+    bool first = true;
+    while (std::getline(in, line)) {
+        std::size_t k = line.find_first_not_of(" \t");
+        bool version = false;
+        if (k != std::string::npos && line[k] == '#') {
+            k = line.find_first_not_of(" \t", k + 1);
+            version = k != std::string::npos && line.compare(k, 7, "version") == 0;
+        }
+        out += (first ? "" : "\n") + (version ? std::string() : line);
+        first = false;
+    }
+    if (!text.empty() && text.back() == '\n') out += "\n";
+    return out;
+}
+
+}  // namespace
+
+Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name,
+                           const std::string& shader_name) {
+    if (!is_identifier(name) || name.find("__") != std::string::npos || name[0] == '_') {
+        throw GlslError("'" + comment_text(name) + "' cannot name a translation: letters, digits and single underscores, "
+                        "a letter first");
+    }
+    const CompiledProgram compiled = compile_glsl(fragment, vertex);
+    const ir::Program& p = compiled.program;
+    std::vector<std::string> warnings;
+    ParsedStage fp = parse(fragment, EShLangFragment, warnings);
+    ParsedStage vp = parse(compiled.vertex, EShLangVertex, warnings);
+    StageWriter vw(Stage::Vertex, compiled.vertex.file, *vp.shader->getIntermediate(), p);
+    const std::string vertex_body = vw.write();
+    StageWriter fw(Stage::Fragment, fragment.file, *fp.shader->getIntermediate(), p);
+    const std::string fragment_body = fw.write();
+
+    // The varyings the fragment stage reads, in the interpreter's order: name and floats.
+    std::vector<std::pair<std::string, int>> varyings;
+    for (const ir::Varying& v : p.varyings) {
+        const std::string base = v.name.substr(0, v.name.find('['));
+        if (!varyings.empty() && varyings.back().first == base && v.name.find('[') != std::string::npos) {
+            ++varyings.back().second;
+        } else {
+            varyings.push_back({base, 1});
+        }
+    }
+    bool texcoords = false;
+    for (ir::Attribute a : p.attributes) texcoords = texcoords || a == ir::Attribute::Texcoord0;
+    const char* coordinates = varyings.empty() ? "None" : texcoords ? "Texcoord2D" : "Object3D";
+
+    const std::string struct_name = to_camel(name);
+    const std::string frag_file = std::filesystem::path(fragment.file).filename().string();
+    const std::string vert_file = vertex ? std::filesystem::path(vertex->file).filename().string() : "";
+    std::ostringstream h;
+    h << "#pragma once\n"
+      << "// " << comment_text(frag_file) << (vertex ? " and " + comment_text(vert_file) : std::string()) << " in C++, statement by statement,\n"
+      << "// written by `quadshade translate`: each line ends with its GLSL line. The shader's functions are\n"
+      << "// members of a struct that holds what GLSL keeps at global scope (uniforms, inputs, outputs,\n"
+      << "// globals), over the number type F. A condition that varies per fragment runs both sides, each\n"
+      << "// write keeping the lanes of the other side (select); loops are Loop objects (shading/glsl/control.h).\n"
+      << "#include \"shading/glsl.h\"\n"
+      << "#include \"shading/glsl/generated.h\"\n"
+      << "#include \"shading/program_of.h\"\n"
+      << "#include \"shading/varyings.h\"\n\n"
+      << "namespace " << name << " {\n"
+      << "using namespace qs;\n"
+      << "using namespace qs::glsl;\n\n";
+    h << "// " << comment_text(std::filesystem::path(compiled.vertex.file).filename().string()) << "\n"
+      << "template <class F>\n"
+      << "struct VertexShader {\n"
+      << "    const VertexIn& in;\n"
+      << "    const Uniforms& u;\n"
+      << vertex_body << "};\n\n";
+    h << "// What the vertex stage hands the fragment stage, one vertex at a time in float.\n"
+      << "struct VertexStage {\n"
+      << "    template <class T>\n"
+      << "    struct Varyings {\n";
+    std::string tie;
+    for (const auto& [v, n] : varyings) {
+        const std::string cpp = cpp_identifier(v, fragment.file + ": ");
+        h << "        " << (n == 1 ? std::string("T") : "vec" + std::to_string(n) + "<T>") << " " << cpp << ";\n";
+        tie += (tie.empty() ? "" : ", ") + cpp;
+    }
+    h << "        auto fields() { return std::tie(" << tie << "); }\n"
+      << "    };\n"
+      << "    static void vertex(const VertexIn& in, const Uniforms& u, VertexOutputs<VertexStage>& out) {\n"
+      << "        VertexShader<float> shader{in, u};\n"
+      << "        shader.main();\n";
+    for (const auto& [v, n] : varyings) {
+        const std::string cpp = cpp_identifier(v, fragment.file + ": ");
+        h << "        out." << cpp << " = shader." << cpp << ";\n";
+    }
+    h << "        const vec4<float>& p = shader.gl_Position;\n"
+      << "        out.gl_Position = {p.x, p.y, p.z, p.w};\n"
+      << "    }\n"
+      << "};\n\n";
+    h << "// " << comment_text(frag_file) << "\n"
+      << "template <class F>\n"
+      << "struct FragmentShader {\n"
+      << "    const FragmentIn<F, VertexStage>& in;\n"
+      << "    const Uniforms& u;\n"
+      << "    FragmentOut<F> out;\n"
+      << fragment_body << "};\n\n";
+    h << "struct " << struct_name << " {\n";
+    if (!p.uniforms.empty()) {
+        h << "    static constexpr UniformDecl kUniforms[] = {\n";
+        for (const ir::Uniform& u : p.uniforms) {
+            const char* t = uniform_type(u, fragment.file + ": ");
+            h << "        {" << string_literal(u.name) << ", UniformType::" << t << ", {";
+            for (int i = 0; i < u.components; ++i) {
+                double value = 0.0;
+                const std::uint32_t w = u.initial[std::size_t(i)];
+                if (u.bank == ir::Bank::Float) value = double(std::bit_cast<float>(w));
+                else if (u.bank == ir::Bank::Uint) value = double(w);
+                else value = double(std::int32_t(w));
+                h << (i ? ", " : "") << float_literal(value);
+            }
+            h << "}},\n";
+        }
+        h << "    };\n";
+    }
+    h << "    static constexpr ShaderInfo info = " << (p.uniforms.empty() ? "" : "with_uniforms(") << "with_glsl_version(\n"
+      << "        ShaderInfo{.name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
+      << "                   .description = " << string_literal("translated from " + frag_file) << ",\n"
+      << "                   .needs = Needs{.coordinates = Coordinates::" << coordinates
+      << ", .derivatives = " << (p.fragment.derivatives ? "true" : "false");
+    bool texture = false;
+    std::vector<std::pair<std::string, int>> samplers;
+    for (const ir::Sampler& s : p.samplers) {
+        if (s.name == "teximage" && s.dims == 2) texture = true;
+        else samplers.push_back({s.name, s.dims});
+    }
+    h << ", .texture = " << (texture ? "true" : "false") << ", .time = " << (p.reads_time ? "true" : "false")
+      << ", .frag_coord = " << (p.reads_frag_coord ? "true" : "false");
+    if (!samplers.empty()) {
+        h << ", .samplers = {{";
+        for (std::size_t i = 0; i < samplers.size(); ++i) {
+            h << (i ? ", " : "") << "{" << string_literal(samplers[i].first) << ", " << samplers[i].second << "}";
+        }
+        h << "}}";
+    }
+    h << "},\n"
+      << "                   .glsl_vertex = {" << string_literal(name + ".vert") << "},  // beside the plugin\n"
+      << "                   .glsl_fragment = {" << string_literal(name + ".frag") << "}},\n"
+      << "        " << p.version << ")" << (p.uniforms.empty() ? "" : ", kUniforms)") << ";\n"
+      << "    using VertexStage = " << name << "::VertexStage;\n\n"
+      << "    template <class F>\n"
+      << "    static auto fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {\n"
+      << "        FragmentShader<F> shader{in, u};\n"
+      << "        shader.main();\n"
+      << "        return shader.out" << (fw.discards() ? "" : ".gl_FragColor") << ";\n"
+      << "    }\n"
+      << "};\n\n"
+      << "}  // namespace " << name << "\n";
+
+    Translation t;
+    t.name = name;
+    t.struct_name = struct_name;
+    t.header = h.str();
+    t.source = "// The plugin's registration of " + name + ": quadshade render --plugin lib" + name + ".so --shader " + name + "\n" +
+               "#include \"" + name + ".h\"\n\n" + "namespace " + name + " {\n\nQUADSHADE_SHADERS(" + struct_name +
+               ")\n\n}  // namespace " + name + "\n";
+    t.vertex_glsl = without_version_line(compiled.vertex.text);
+    t.fragment_glsl = without_version_line(fragment.text);
+    const std::string glsl_files = name + ".vert " + name + ".frag";
+    t.cmake = "# " + name + " as a plugin, built against the installed quadshade package:\n"
+              "#   cmake -S . -B build -DCMAKE_PREFIX_PATH=<quadshade's install prefix> && cmake --build build\n"
+              "#   quadshade render SCENE --plugin build/lib" + name + ".so --shader " + name + " -o out.png\n"
+              "cmake_minimum_required(VERSION 3.25)\n"
+              "project(" + name + " LANGUAGES CXX)\n\n"
+              "find_package(quadshade REQUIRED)\n"
+              "quadshade_add_shader_plugin(" + name + " SOURCES " + name + ".cpp GLSL " + glsl_files + ")\n";
+    return t;
+}
+
+}  // namespace qs::frontend
