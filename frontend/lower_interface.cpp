@@ -144,12 +144,31 @@ Place StageLowering::front_facing() {
     return p;
 }
 
+// Whether the shader redeclares the built-in variable `name` (`flat in vec4 gl_Color;`): glslang
+// lists a redeclared built-in among the linker objects, and one only used, not.
+bool StageLowering::redeclared(const std::string& name) const {
+    glslang::TIntermAggregate* root = ast_.getTreeRoot() ? ast_.getTreeRoot()->getAsAggregate() : nullptr;
+    if (!root) return false;
+    for (TIntermNode* n : root->getSequence()) {
+        auto* a = n->getAsAggregate();
+        if (!a || a->getOp() != glslang::EOpLinkerObjects) continue;
+        for (TIntermNode* o : a->getSequence()) {
+            if (auto* s = o->getAsSymbolNode(); s && name == s->getName().c_str()) return true;
+        }
+    }
+    return false;
+}
+
 // A fragment's gl_Color or gl_SecondaryColor: the vertex stage's front colour, interpolated as
 // the declaration says or, without a qualifier, as the shade model does; with two-sided colour,
 // the back colour on back-facing primitives.
 Place StageLowering::color_input(TIntermSymbol* node, const std::string& front, const std::string& back) {
     const glslang::TQualifier& q = node->getQualifier();
-    const bool flat = q.flat || (!q.smooth && !q.nopersp && interface_.options.flat_colors);
+    // glslang marks every fragment input without an interpolation qualifier smooth, the built-in
+    // declaration of gl_Color included: only a redeclaration's smooth is the shader's. (One
+    // without a qualifier reads as smooth too; glslang keeps nothing that tells them apart.)
+    const bool smooth = q.smooth && redeclared(node->getName().c_str());
+    const bool flat = q.flat || (!smooth && !q.nopersp && interface_.options.flat_colors);
     const std::vector<B> banks(4, B::Float);
     VaryingSlot& f = interface_.fragment_varying(front, 4, B::Float, flat, where(node), q.nopersp);
     const Place front_value = bound_input(ir::Source::Varying, 0, banks, std::uint16_t(f.first));

@@ -241,6 +241,33 @@ probe rgba 240 240 0 0 0 1
     CHECK(r.status == Status::Pass);
 }
 
+TEST_CASE("gl_Color redeclared smooth stays smooth under the flat shade model", "[piglit]") {
+    const TestResult r = run("smooth-color", R"([require]
+GLSL >= 1.30
+
+[vertex shader]
+in vec4 piglit_vertex;
+smooth out vec4 gl_FrontColor;
+void main() {
+    gl_Position = piglit_vertex;
+    gl_FrontColor = vec4(0.0, piglit_vertex.x < 0.5 ? 1.0 : 0.0, 0.0, 1.0);
+}
+
+[fragment shader]
+smooth in vec4 gl_Color;
+void main() { gl_FragColor = gl_Color; }
+
+[test]
+shade model flat
+draw rect -1 -1 2 2
+# Halfway between the left edge's green and the right edge's none, in either triangle.
+probe rgba 124 30 0 0.5 0 1
+probe rgba 124 220 0 0.5 0 1
+)");
+    INFO(describe(r));
+    CHECK(r.status == Status::Pass);
+}
+
 TEST_CASE("user clip planes clip at gl_ClipVertex and gl_ClipDistance", "[piglit]") {
     const TestResult r = run("clip-planes", R"([require]
 GLSL >= 1.30
