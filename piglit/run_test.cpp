@@ -652,8 +652,9 @@ private:
         std::vector<std::uint32_t> indices;
         const std::uint32_t f = std::uint32_t(d.first), count = std::uint32_t(d.count);
         if (d.mode == "GL_TRIANGLES") {
-            for (std::uint32_t i = 0; i + 3 <= count; ++i) indices.push_back(f + i);
-            indices.resize(indices.size() / 3 * 3);
+            for (std::uint32_t i = 0; i + 3 <= count; i += 3) {
+                indices.insert(indices.end(), {f + i, f + i + 1, f + i + 2});
+            }
         } else if (d.mode == "GL_TRIANGLE_STRIP") {
             for (std::uint32_t i : strip_indices(int(count))) indices.push_back(f + i);
         } else if (d.mode == "GL_TRIANGLE_FAN" || d.mode == "GL_POLYGON") {

@@ -268,6 +268,36 @@ probe rgba 124 220 0 0.5 0 1
     CHECK(r.status == Status::Pass);
 }
 
+TEST_CASE("draw arrays GL_TRIANGLES draws every triangle of the vertex data", "[piglit]") {
+    const TestResult r = run("triangles", R"([require]
+GLSL >= 1.10
+
+[vertex shader]
+attribute vec4 vertex;
+attribute vec4 color;
+void main() { gl_Position = vertex; gl_FrontColor = color; }
+
+[fragment shader]
+void main() { gl_FragColor = gl_Color; }
+
+[vertex data]
+vertex/float/2  color/float/3
+-1 -1  1 0 0
+ 1 -1  1 0 0
+-1  1  1 0 0
+ 1 -1  0 0 1
+ 1  1  0 0 1
+-1  1  0 0 1
+
+[test]
+draw arrays GL_TRIANGLES 0 6
+probe rgba 10 10 1 0 0 1
+probe rgba 240 240 0 0 1 1
+)");
+    INFO(describe(r));
+    CHECK(r.status == Status::Pass);
+}
+
 TEST_CASE("user clip planes clip at gl_ClipVertex and gl_ClipDistance", "[piglit]") {
     const TestResult r = run("clip-planes", R"([require]
 GLSL >= 1.30
