@@ -21,6 +21,7 @@
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
+#include "apps/shader_test_command.h"
 #include "apps/translate_command.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
@@ -416,6 +417,11 @@ int main(int argc, char** argv) {
         "translate", "write a GLSL shader as a C++ translation to read, edit and build as a plugin (with a\n"
                      "CMakeLists.txt that builds it against the installed quadshade)");
     add_translate_options(*translate_cmd, translate);
+    ShaderTestArgs shader_test;
+    CLI::App* shader_test_cmd = app.add_subcommand(
+        "shader-test", "run piglit's .shader_test files with quadshade as the GL driver: a line per test, a\n"
+                       "summary by folder and skip reason (exit 3 when a test fails or crashes)");
+    add_shader_test_options(*shader_test_cmd, shader_test);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -447,6 +453,7 @@ int main(int argc, char** argv) {
         if (bake_cmd->parsed()) return cmd_bake(bake);
         if (study_cmd->parsed()) return cmd_study(study);
         if (translate_cmd->parsed()) return cmd_translate(translate);
+        if (shader_test_cmd->parsed()) return cmd_shader_test(shader_test);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

@@ -195,7 +195,9 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         if (vertices.empty()) {
             vertices.reserve(mesh.vertices.size());
             for (const Vertex& v : mesh.vertices) {
-                vertices.push_back({v.position, v.texcoord, v.normal, v.color, v.texcoord1});
+                VertexIn in{v.position, v.texcoord, v.normal, v.color, v.texcoord1};
+                in.id = std::uint32_t(vertices.size());  // gl_VertexID
+                vertices.push_back(in);
             }
         }
         d.vertices = vertices;
