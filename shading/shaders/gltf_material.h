@@ -121,7 +121,7 @@ struct GltfMaterial {
         }
         const std::int32_t alpha_mode = int_uniform(u, uAlphaMode);
         if (alpha_mode == 1) out.discard_if(base.w < uniform<F>(u, uAlphaCutoff));
-        const vec3<F> c = clamp(vec3<F>(base.xyz()), 0.0f, 1.0f);  // a vec3, not a swizzle: clang 14 finds no common type
+        const vec3<F> c = clamp(base.xyz(), 0.0f, 1.0f);
         out.gl_FragColor =
             vec4<F>(encode_srgb(c.x), encode_srgb(c.y), encode_srgb(c.z), alpha_mode == 2 ? base.w : F(1.0f));
         return out;
