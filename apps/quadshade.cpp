@@ -366,7 +366,7 @@ int cmd_test(const TestArgs& a) {
 
 int main(int argc, char** argv) {
     remove_temporaries_on_signals();
-    CLI::App app("quadshade: CPU renderer of GLSL-style procedural shaders with GPU-exact derivatives", "quadshade");
+    CLI::App app("quadshade: CPU renderer of GLSL procedural shaders with GPU-exact derivatives", "quadshade");
     app.require_subcommand(1, 1);
     app.get_formatter()->column_width(26);
     RenderArgs render;
