@@ -186,6 +186,32 @@ Place StageLowering::color_input(TIntermSymbol* node, const std::string& front, 
     return p;
 }
 
+// The colours the fragment stage reads and the vertex stage does not write. GL leaves them
+// undefined but links; quadshade gives what llvmpipe gives: a back colour not written is the
+// front one (so one-sided shaders draw the same with two-sided colour on), a front colour not
+// written is zero.
+void StageLowering::supply_unwritten_colors() {
+    for (const auto& [front, back] : {std::pair{"gl_Color", "gl_BackColor"}, {"gl_SecondaryColor", "gl_BackSecondaryColor"}}) {
+        VaryingSlot* f = interface_.find_varying(front);
+        if (!f) continue;
+        std::array<std::uint32_t, 4> value;
+        value.fill(float_constant(0.0f));
+        if (f->written) {
+            for (const ir::Binding& o : stage_.outputs) {
+                const int k = int(o.index) - f->first;
+                if (o.source == ir::Source::Varying && k >= 0 && k < 4) value[std::size_t(k)] = o.reg;
+            }
+        }
+        for (VaryingSlot* v : {f, interface_.find_varying(back)}) {
+            if (!v || v->written) continue;
+            for (std::uint16_t k = 0; k < 4; ++k) {
+                stage_.outputs.push_back({ir::Source::Varying, 0, std::uint16_t(v->first + k), B::Float, value[k]});
+            }
+            v->written = true;
+        }
+    }
+}
+
 Place StageLowering::ftransform() {
     if (kind_ != StageKind::Vertex) throw GlslError(source_position(file_, int(line_)) + "ftransform() exists in vertex shaders only");
     const Place mvp = transform_uniform(ir::TransformUniform::ModelViewProjection, 4, false);

@@ -146,6 +146,7 @@ private:
     void assign_attribute_locations(const std::vector<glslang::TIntermSymbol*>& symbols);
     Place front_facing();
     Place color_input(glslang::TIntermSymbol* node, const std::string& front, const std::string& back);
+    void supply_unwritten_colors();
     bool redeclared(const std::string& name) const;
     Place ftransform();
     void declare_globals(glslang::TIntermAggregate* root);

@@ -241,6 +241,66 @@ probe rgba 240 240 0 0 0 1
     CHECK(r.status == Status::Pass);
 }
 
+TEST_CASE("a colour the vertex stage does not write: the back one is the front one, the front one zero", "[piglit]") {
+    // What llvmpipe draws (GL leaves them undefined): piglit's shader_runner passes both scripts.
+    // The left triangle faces the viewer, the right one (clockwise) faces away.
+    const std::string triangles = R"(
+[vertex data]
+vertex/float/2
+-1.0 -1.0
+ 0.0 -1.0
+-1.0  1.0
+ 1.0 -1.0
+ 0.0 -1.0
+ 1.0  1.0
+)";
+    const TestResult front_only = run("front-color-only", R"([require]
+GLSL >= 1.10
+
+[vertex shader]
+attribute vec4 vertex;
+void main() {
+    gl_Position = vertex;
+    gl_FrontColor = vec4(0.25, 0.5, 0.75, 1.0);
+}
+
+[fragment shader]
+void main() { gl_FragColor = gl_Color; }
+)" + triangles + R"(
+[test]
+enable GL_VERTEX_PROGRAM_TWO_SIDE
+draw arrays GL_TRIANGLES 0 6
+probe rgba 10 125 0.25 0.5 0.75 1.0
+probe rgba 240 125 0.25 0.5 0.75 1.0
+)");
+    INFO(describe(front_only));
+    CHECK(front_only.status == Status::Pass);
+    const TestResult back_only = run("back-secondary-color-only", R"([require]
+GLSL >= 1.10
+
+[vertex shader]
+attribute vec4 vertex;
+void main() {
+    gl_Position = vertex;
+    gl_BackSecondaryColor = vec4(0.25, 0.5, 0.75, 1.0);
+}
+
+[fragment shader]
+void main() { gl_FragColor = gl_SecondaryColor; }
+)" + triangles + R"(
+[test]
+enable GL_VERTEX_PROGRAM_TWO_SIDE
+draw arrays GL_TRIANGLES 0 6
+probe rgba 10 125 0.0 0.0 0.0 0.0
+probe rgba 240 125 0.25 0.5 0.75 1.0
+disable GL_VERTEX_PROGRAM_TWO_SIDE
+draw arrays GL_TRIANGLES 0 6
+probe rgba 240 125 0.0 0.0 0.0 0.0
+)");
+    INFO(describe(back_only));
+    CHECK(back_only.status == Status::Pass);
+}
+
 TEST_CASE("gl_Color redeclared smooth stays smooth under the flat shade model", "[piglit]") {
     const TestResult r = run("smooth-color", R"([require]
 GLSL >= 1.30
