@@ -129,7 +129,7 @@ GlslSource default_vertex_shader(const GlslSource& fragment) {
     ParsedStage f = parse(fragment, EShLangFragment, warnings);
     // The fragment stage's inputs, in the order the code reads them.
     ir::Program scratch;
-    ProgramInterface interface{scratch, {}, {}};
+    ProgramInterface interface{scratch, {}, {}, {}};
     StageLowering lowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface);
     (void)lowering.run();
     const int version = f.version;
@@ -182,7 +182,7 @@ CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<Gls
     ParsedStage v = parse(out.vertex, EShLangVertex, out.warnings);
     ir::Program& program = out.program;
     program.version = f.version;
-    ProgramInterface interface{program, {}, options};
+    ProgramInterface interface{program, {}, options, {}};
     program.fragment = StageLowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface).run();
     program.vertex = StageLowering(StageKind::Vertex, out.vertex.file, *v.shader->getIntermediate(), interface).run();
     for (const VaryingSlot& s : interface.varyings) {

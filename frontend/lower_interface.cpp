@@ -339,7 +339,7 @@ Place StageLowering::uniform_variable(TIntermSymbol* node) {
                 case B::Bool: u.initial[std::size_t(i)] = c.getBConst() ? 1u : 0u; break;
             }
         }
-        const int slot = interface_.uniform(u, where(node));
+        const int slot = interface_.uniform(u, where(node), initial.size() > 0);
         if (slot > 0xFFFF) refuse(node, "more than 65536 uniform values");
         const Place p = bound_input(ir::Source::UserUniform, std::uint16_t(slot), std::vector<B>(std::size_t(u.components), bank));
         for (std::size_t i = 0; i < p.size(); ++i) whole[std::size_t(leaf.first) + i] = p[i];
@@ -537,16 +537,30 @@ void StageLowering::declare_globals(glslang::TIntermAggregate* root) {
         }
     };
     Symbols all;
+    std::vector<TIntermSymbol*> initialised_uniforms;
     for (TIntermNode* n : root->getSequence()) {
         // Declared is not used: the linker's list of declarations is not code. (A fragment
-        // input no code reads needs no vertex stage to write it, as in GL.)
-        if (auto* a = n->getAsAggregate(); a && a->getOp() == glslang::EOpLinkerObjects) continue;
+        // input no code reads needs no vertex stage to write it, as in GL.) Except a uniform
+        // with an initializer, which Mesa keeps active unused: the script may set it, and the
+        // other stage may read it without one.
+        if (auto* a = n->getAsAggregate(); a && a->getOp() == glslang::EOpLinkerObjects) {
+            for (TIntermNode* o : a->getSequence()) {
+                TIntermSymbol* s = o->getAsSymbolNode();
+                if (s && s->getQualifier().storage == glslang::EvqUniform && s->getConstArray().size() > 0 &&
+                    s->getBasicType() != glslang::EbtSampler && s->getBasicType() != glslang::EbtBlock) {
+                    initialised_uniforms.push_back(s);
+                }
+            }
+            continue;
+        }
         n->traverse(&all);
     }
+    for (TIntermSymbol* s : initialised_uniforms) all.visitSymbol(s);
     if (kind_ == StageKind::Vertex && interface_.options.attribute_locations) assign_attribute_locations(all.order);
     for (TIntermSymbol* s : all.order) {
         const glslang::TStorageQualifier q = s->getQualifier().storage;
-        if (s->getBasicType() == glslang::EbtSampler || s->getConstArray().size() > 0) continue;
+        // A symbol with values is a const variable glslang folded, or a uniform's initializer.
+        if (s->getBasicType() == glslang::EbtSampler || (s->getConstArray().size() > 0 && q != glslang::EvqUniform)) continue;
         if (q == glslang::EvqGlobal) {
             Place p = allocate(s->getType(), Space::Variable);
             for (const Slot& r : p) move(r, {r.bank, constant(r.bank, 0)}, false);

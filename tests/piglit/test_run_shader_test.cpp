@@ -176,6 +176,48 @@ probe rgba 1 1 1.0 0.0 0.0 0.5
     CHECK(r.status == Status::Pass);
 }
 
+TEST_CASE("a uniform's initializer is its value until the script sets it, in both stages", "[piglit]") {
+    // As Mesa links them: a uniform with an initializer is active unused, and one program-wide.
+    const TestResult r = run("uniform-initializers", R"([require]
+GLSL >= 1.20
+
+[vertex shader]
+uniform float from_vertex = 0.5;
+void main() { gl_Position = gl_Vertex; }
+
+[fragment shader]
+uniform float unused = 4.0;
+uniform float from_vertex;
+uniform vec2 kept = vec2(0.25, 0.75);
+uniform float set = 1.0;
+void main() { gl_FragColor = vec4(from_vertex, kept, set); }
+
+[test]
+uniform float unused 3.0
+uniform float set 0.0
+draw rect -1 -1 2 2
+probe all rgba 0.5 0.25 0.75 0.0
+)");
+    INFO(describe(r));
+    CHECK(r.status == Status::Pass);
+    const TestResult differ = run("uniform-initializers-differ", R"([require]
+GLSL >= 1.20
+
+[vertex shader]
+uniform float u = 0.5;
+void main() { gl_Position = gl_Vertex * u; }
+
+[fragment shader]
+uniform float u = 0.25;
+void main() { gl_FragColor = vec4(u); }
+
+[test]
+draw rect -1 -1 2 2
+)");
+    CHECK(differ.status == Status::Fail);
+    CHECK(differ.message.find("uniform 'u' has another initializer in the other stage") != std::string::npos);
+}
+
 TEST_CASE("ortho, frustum and the current colour drive GL's fixed-function inputs", "[piglit]") {
     const TestResult r = run("fixed-function", R"([require]
 GLSL >= 1.10
