@@ -537,3 +537,32 @@ probe rgba 10 11 0.7216 0.0 0.0 1.0
     const TestResult coarse = run("derivatives-coarse", script, {Derivatives::CoarseLower, Backend::Rasterizer});
     CHECK(coarse.status == Status::Fail);  // the last line that did not pass decides
 }
+
+TEST_CASE("GL_ARB_derivative_control's functions below GLSL 4.00: fine under every rule, coarse by the rule", "[piglit]") {
+    // llvmpipe's coarse derivatives are its fine ones, as under the default rule here.
+    const auto script = [](const char* coarse_at_row_11) {
+        return std::string(R"([require]
+GLSL >= 1.50
+GL_ARB_derivative_control
+
+[vertex shader passthrough]
+
+[fragment shader]
+#extension GL_ARB_derivative_control: require
+void main() {
+    float x = 16.0 * gl_FragCoord.x * gl_FragCoord.y;
+    gl_FragColor = vec4(dFdxFine(x) / 255.0, dFdxCoarse(x) / 255.0, 0.0, 1.0);
+}
+
+[test]
+draw rect -1 -1 2 2
+probe rgba 10 10 0.6588 0.6588 0.0 1.0
+probe rgba 10 11 0.7216 )") + coarse_at_row_11 + " 0.0 1.0\n";
+    };
+    const TestResult fine = run("derivative-control", script("0.7216"));
+    INFO(describe(fine));
+    CHECK(fine.status == Status::Pass);
+    const TestResult coarse = run("derivative-control-coarse", script("0.6588"), {Derivatives::CoarseLower, Backend::Rasterizer});
+    INFO(describe(coarse));
+    CHECK(coarse.status == Status::Pass);
+}
