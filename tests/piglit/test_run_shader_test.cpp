@@ -566,3 +566,36 @@ probe rgba 10 11 0.7216 )") + coarse_at_row_11 + " 0.0 1.0\n";
     INFO(describe(coarse));
     CHECK(coarse.status == Status::Pass);
 }
+
+TEST_CASE("an out argument's run-time index is the one the call finds, converted or not", "[piglit]") {
+    // What llvmpipe draws: the function assigns the variable the index was read from.
+    const TestResult r = run("out-argument-index", R"([require]
+GLSL >= 1.20
+
+[vertex shader passthrough]
+
+[fragment shader]
+uniform int u = 1;
+void reset(inout int i, inout float f) { i = 0; f = 0.25; }
+void reset_int(inout int i, out int x) { i = 0; x = 2; }
+void main() {
+    vec4 v = vec4(0.0);
+    int i = u;
+    reset(i, v[i]);        // v[1]: the index as the call finds it
+    i = u + 1;
+    reset_int(i, v[i]);    // v[2], converted from int on the way out
+    int j = u + 2;
+    // The shader's own comma, as glslang's for a conversion but for where its parts stand: v[0],
+    // j being 0 by then.
+    int tempArg;
+    reset_int(j, tempArg), v[j] = float(tempArg);
+    gl_FragColor = v * vec4(0.375, 1.0, 0.25, 1.0);
+}
+
+[test]
+draw rect -1 -1 2 2
+probe all rgba 0.75 0.25 0.5 0.0
+)");
+    INFO(describe(r));
+    CHECK(r.status == Status::Pass);
+}
