@@ -228,7 +228,8 @@ void write_frame(SceneRenderer& renderer, const std::vector<RowBand>& bands, dou
             image.emplace(output, fb.width, fb.height, a.alpha, metadata);
             if (!mask_output.empty()) {
                 metadata.emplace_back("quadshade:undefined_mask",
-                                      "red: NaN produced, green: division by zero, blue: built-in outside its domain");
+                                      "red: NaN produced, green: division by zero, blue: built-in outside its domain, "
+                                      "grey: integer overflow");
                 mask.emplace(mask_output, fb.width, fb.height, false, metadata);
             }
         }
@@ -346,9 +347,10 @@ int cmd_render(RenderArgs& a) {
     if (!a.mask_output.empty()) {
         std::fprintf(stderr,
                      "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "
-                     "built-in outside its domain %llu\n",
+                     "built-in outside its domain %llu, integer overflow %llu\n",
                      (unsigned long long)undefined.pixels, (unsigned long long)undefined.per_case[0],
-                     (unsigned long long)undefined.per_case[1], (unsigned long long)undefined.per_case[2]);
+                     (unsigned long long)undefined.per_case[1], (unsigned long long)undefined.per_case[2],
+                     (unsigned long long)undefined.per_case[3]);
     }
     return 0;
 }

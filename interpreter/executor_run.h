@@ -503,10 +503,18 @@ void Machine<F>::indexed(const ir::Instr& in) {
     const I index = i_[in.b];
     if (in.op == ir::Op::LoadIndexed) {
         // Element I[b] of the array at a (stride c): a select per element, which any lane
-        // layout and number type takes alike; an index outside reads 0.
+        // layout and number type takes alike; an index outside reads 0. GLSL leaves an index
+        // outside the array undefined ("Behavior is undefined if a shader subscripts an array
+        // with an index less than 0 or greater than or equal to the size the array was declared
+        // with"): the checked run flags it, as a constant table's lookup (glsl/table.h).
         const auto load = [&](auto* bank, auto zero) {
             auto v = zero;
             for (std::uint32_t e = 0; e < in.count; ++e) v = choose(M(index == I(std::int32_t(e))), bank[in.a + e * in.c], v);
+            if constexpr (requires { index.cases; }) {
+                using L = decltype(index.v);
+                const auto outside = !(index.v >= L(0) && index.v < L(std::int32_t(in.count)));
+                v.cases |= LaneCases::on(lane_bits(outside), Undefined::Argument);
+            }
             put(in, bank[in.d], v);
         };
         switch (in.bank) {

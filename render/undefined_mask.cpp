@@ -18,9 +18,10 @@ Image undefined_mask_image(const Framebuffer& fb) {
     for (std::size_t i = 0; i < fb.undefined.size(); ++i) {
         const std::uint8_t u = fb.undefined[i];
         float* p = &image.rgba[4 * i];
-        p[0] = (u & std::uint8_t(Undefined::NaN)) ? 1.0f : 0.0f;
-        p[1] = (u & std::uint8_t(Undefined::DivisionByZero)) ? 1.0f : 0.0f;
-        p[2] = (u & std::uint8_t(Undefined::Argument)) ? 1.0f : 0.0f;
+        const float under = (u & std::uint8_t(Undefined::Overflow)) ? 0.5f : 0.0f;
+        p[0] = (u & std::uint8_t(Undefined::NaN)) ? 1.0f : under;
+        p[1] = (u & std::uint8_t(Undefined::DivisionByZero)) ? 1.0f : under;
+        p[2] = (u & std::uint8_t(Undefined::Argument)) ? 1.0f : under;
         p[3] = 1.0f;
     }
     return image;

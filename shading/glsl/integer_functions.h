@@ -3,6 +3,10 @@
 // uint_t<F>), lane by lane as the bit instructions GPUs have:
 //   bitfieldExtract(v, offset, bits): `bits` bits from `offset`, sign-extended for int; 0 when
 //       bits is 0 (GLSL leaves offset + bits > 32 undefined: here, the bits that exist)
+//   bitfieldExtract and bitfieldInsert: "The result will be undefined if offset or bits is negative,
+//       or if the sum of offset and bits is greater than the number of bits used to store the
+//       operand" (GLSL 4.60, 8.8): Checked integers flag those lanes as a built-in outside its
+//       domain (Undefined::Argument)
 //   bitfieldInsert(base, insert, offset, bits), bitfieldReverse, bitCount
 //   findLSB(x), findMSB(x): -1 where there is none (for a negative int, the highest 0 bit)
 //   uaddCarry, usubBorrow: the sum or difference, and the carry or borrow (0 or 1)
@@ -141,13 +145,27 @@ IntLanes<T, F> mulExtended(const IntLanes<T, F>& x, const IntLanes<T, F>& y, Int
     auto name(const Checked<L>& x, const Rest&... rest) -> decltype(Checked(name(x.v, rest.v...), {})) { \
         return Checked(name(x.v, rest.v...), (x.cases | ... | rest.cases));                            \
     }
-QS_CHECKED_INTEGER_FUNCTION(bitfieldExtract)
-QS_CHECKED_INTEGER_FUNCTION(bitfieldInsert)
 QS_CHECKED_INTEGER_FUNCTION(bitfieldReverse)
 QS_CHECKED_INTEGER_FUNCTION(bitCount)
 QS_CHECKED_INTEGER_FUNCTION(findLSB)
 QS_CHECKED_INTEGER_FUNCTION(findMSB)
 #undef QS_CHECKED_INTEGER_FUNCTION
+// The lanes where bitfieldExtract's or bitfieldInsert's offset and bits leave it undefined.
+template <class N>
+LaneCases outside_the_operand(const Checked<N>& offset, const Checked<N>& bits) {
+    const auto bad = offset.v < N(0) || bits.v < N(0) || offset.v > N(32) - bits.v;  // bits <= 32 where it matters
+    return offset.cases | bits.cases | LaneCases::on(lane_bits(bad), Undefined::Argument);
+}
+template <class L, class N>
+Checked<L> bitfieldExtract(const Checked<L>& value, const Checked<N>& offset, const Checked<N>& bits) {
+    return Checked<L>(bitfieldExtract(value.v, offset.v, bits.v), value.cases | outside_the_operand(offset, bits));
+}
+template <class L, class N>
+Checked<L> bitfieldInsert(const Checked<L>& base, const Checked<L>& insert, const Checked<N>& offset,
+                          const Checked<N>& bits) {
+    return Checked<L>(bitfieldInsert(base.v, insert.v, offset.v, bits.v),
+                      base.cases | insert.cases | outside_the_operand(offset, bits));
+}
 template <class L>
 Checked<L> uaddCarry(const Checked<L>& x, const Checked<L>& y, Checked<L>& carry) {
     L c;

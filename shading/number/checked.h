@@ -12,7 +12,13 @@
 //                   log and log2 (x <= 0), pow(x < 0, y) and pow(0, y <= 0), atan(0, 0),
 //                   asin and acos (|x| > 1); and integer operations GLSL leaves undefined: int(x)
 //                   and uint(x) of a float outside the integer's range, NaN or (uint) negative,
-//                   shifts by a count < 0 or >= 32, % with a negative operand.
+//                   shifts by a count < 0 or >= 32, % with a negative operand;
+//   Overflow        an int division whose quotient does not fit: INT_MIN / -1. GLSL 4.60 (4.1.3)
+//                   leaves it undefined ("Division resulting in overflow will result in an
+//                   undefined value"; 1.30 to 4.50 wrapped it, GLSL ES 3.00 allows INT_MIN or
+//                   INT_MAX, and x86's idiv traps on it). +, - and * of int and uint are not
+//                   flagged: from 1.30 on GLSL defines them to wrap ("the low-order 32 bits of the
+//                   correct result", 4.60's words), as it defines uint's modular arithmetic.
 //
 // Every operation computes exactly what L computes, so a checked render has the unchecked
 // colours bit for bit. The cases flow with the data, not with control: a result carries the
@@ -35,11 +41,12 @@
 namespace qs {
 
 // The cases, as the bits of a pixel's entry in the mask.
-enum class Undefined : std::uint8_t { NaN = 1, DivisionByZero = 2, Argument = 4 };
-inline constexpr int kUndefinedCases = 3;
+enum class Undefined : std::uint8_t { NaN = 1, DivisionByZero = 2, Argument = 4, Overflow = 8 };
+inline constexpr int kUndefinedCases = 4;
 
 // Which cases hit which of up to 16 lanes: bit 16 k + i is case k (the k-th bit of Undefined)
-// on lane i, so that a union is one OR and untouched values cost nothing to track.
+// on lane i, so that a union is one OR and untouched values cost nothing to track. Four cases
+// fill the 64 bits.
 class LaneCases {
 public:
     static constexpr int kMaxLanes = 16;
@@ -59,7 +66,7 @@ public:
 
     // The cases of the lanes set in `lanes` only.
     LaneCases only(std::uint32_t lanes) const {
-        return LaneCases(bits_ & (std::uint64_t(lanes & 0xFFFFu) * 0x0000'0001'0001'0001ull));
+        return LaneCases(bits_ & (std::uint64_t(lanes & 0xFFFFu) * 0x0001'0001'0001'0001ull));
     }
     // Lane i takes the cases of lane index(i), as Lanes::permute moves values.
     template <class Index>
@@ -300,7 +307,11 @@ public:
         return result(exact_product_add(a.v, b.v, c.v), {}, a, b, c);
     }
     friend Checked operator/(const Checked& a, const Checked& b) {
-        return result(a.v / b.v, LaneCases::on(lane_bits(b.v == L(0)), Undefined::DivisionByZero), a, b);
+        LaneCases hit = LaneCases::on(lane_bits(b.v == L(0)), Undefined::DivisionByZero);
+        if constexpr (is_integer && std::is_signed_v<value_type>) {
+            hit |= LaneCases::on(lane_bits(a.v == L(std::int32_t(INT32_MIN)) && b.v == L(-1)), Undefined::Overflow);
+        }
+        return result(a.v / b.v, hit, a, b);
     }
     // Integer lanes only. GLSL: x % 0 undefined (as x / 0), % undefined for negative operands,
     // shifts undefined by counts < 0 or >= 32.

@@ -26,6 +26,7 @@
 #include "scenes/image_io.h"
 #include "shading/number/checked.h"
 #include "render/scene_render.h"
+#include "render/undefined_mask.h"
 #include "tests/test_paths.h"
 
 namespace qs {
@@ -871,6 +872,26 @@ TEST_CASE("the command line writes the undefined-case mask and counts it", "[und
         CHECK_FALSE(std::filesystem::exists(dir / "out.png"));
         CHECK_FALSE(std::filesystem::exists(dir / "mask.png"));
     }
+}
+
+TEST_CASE("the undefined-case mask shows integer overflow grey, under the other cases' colours", "[undefined]") {
+    constexpr std::uint8_t kOverflow = std::uint8_t(Undefined::Overflow);
+    Framebuffer fb;
+    fb.width = fb.height = fb.rows = 4;
+    fb.undefined = {kOverflow, std::uint8_t(kOverflow | kNaN), kNaN, std::uint8_t(kOverflow | kDivision | kArgument)};
+    fb.undefined.resize(16);
+    const Image mask = undefined_mask_image(fb);
+    auto rgb = [&](int x) {
+        return std::array<float, 3>{mask.rgba[4 * x], mask.rgba[4 * x + 1], mask.rgba[4 * x + 2]};
+    };
+    CHECK(rgb(0) == std::array<float, 3>{0.5f, 0.5f, 0.5f});
+    CHECK(rgb(1) == std::array<float, 3>{1, 0.5f, 0.5f});
+    CHECK(rgb(2) == std::array<float, 3>{1, 0, 0});
+    CHECK(rgb(3) == std::array<float, 3>{0.5f, 1, 1});
+    CHECK(rgb(4) == std::array<float, 3>{0, 0, 0});
+    const UndefinedCounts counts = count_undefined(fb);
+    CHECK(counts.pixels == 4);
+    CHECK(counts.per_case == std::array<std::uint64_t, kUndefinedCases>{2, 1, 1, 3});
 }
 
 namespace {

@@ -320,4 +320,34 @@ TEST_CASE("Checked integers flag GLSL's undefined integer cases, lane by lane", 
     CHECK(lane(looked, 2) == 0);
 }
 
+TEST_CASE("Checked integers flag int division's overflow, and no wrap GLSL defines", "[integers][undefined]") {
+    using P = Checked<Pixels<float, 16>>;
+    using I = int_t<P>;
+    using U = uint_t<P>;
+    constexpr std::uint8_t kOverflow = std::uint8_t(Undefined::Overflow);
+    auto lanes = [](std::initializer_list<std::int32_t> v) {
+        std::int32_t x[16] = {};
+        std::size_t k = 0;
+        for (std::int32_t e : v) x[k++] = e;
+        return I::load(x);
+    };
+    const I a = lanes({INT32_MIN, INT32_MIN, INT32_MAX, -7, INT32_MIN}), b = lanes({-1, 1, -1, -1, 2});
+    const I q = a / b;
+    CHECK(q.cases.at(0) == kOverflow);  // INT_MIN / -1: GLSL 4.60 leaves it undefined
+    CHECK(lane(q, 0) == INT32_MIN);     // llvmpipe's answer, computed as the unchecked lanes compute it
+    for (int i = 1; i < 5; ++i) CHECK(q.cases.at(i) == 0);
+    // +, - and * wrap as GLSL defines them, for int and uint alike; uint has no such division.
+    const I sum = a + a, difference = a - lanes({1}), product = a * a;
+    const U u = U(a), wrapped = u * u + U(0xFFFFFFFFu), quotient = u / U(0xFFFFFFFFu);
+    for (int i = 0; i < 16; ++i) {
+        CHECK(sum.cases.at(i) == 0);
+        CHECK(difference.cases.at(i) == 0);
+        CHECK(product.cases.at(i) == 0);
+        CHECK(wrapped.cases.at(i) == 0);
+        CHECK((quotient.cases.at(i) & kOverflow) == 0);
+    }
+    CHECK(lane(sum, 0) == 0);
+    CHECK(lane(difference, 0) == INT32_MAX);
+}
+
 }  // namespace qs::glsl
