@@ -13,6 +13,7 @@
 #include "frontend/binding_names.h"
 #include "frontend/bounded_preprocess.h"
 #include "frontend/derivative_control.h"
+#include "frontend/derivative_probe.h"
 #include "frontend/float_literals.h"
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
@@ -77,19 +78,47 @@ std::string reword(const std::string& log, std::vector<std::string>* warnings) {
     return errors;
 }
 
+// `text` as glslang's preprocessor writes it: comments gone, macros expanded, lines kept.
+std::string preprocessed(const std::string& file, const std::string& text, EShLanguage stage) {
+    glslang::TShader shader(stage);
+    const char* strings = text.c_str();
+    const int length = int(text.size());
+    const char* name = file.c_str();
+    shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
+    std::string out;
+    glslang::TShader::ForbidIncluder no_includes;
+    const auto messages = EShMessages(EShMsgDefault | EShMsgEnhanced);
+    if (!shader.preprocess(GetDefaultResources(), 110, ENoProfile, false, false, messages, &out, no_includes)) {
+        const std::string errors = reword(std::string(shader.getInfoLog()) + shader.getInfoDebugLog(), nullptr);
+        throw GlslError(errors.empty() ? file + ": error: the shader does not preprocess" : errors);
+    }
+    return out;
+}
+
 }  // namespace
 
-ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings) {
+ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings,
+                  const DerivativeProbe* probe) {
     initialise_glslang();
     ParsedStage p;
-    p.text = float_literals_as_float(join_continued_lines(source.text));
-    check_macro_expansion(source.file, p.text, stage == EShLangFragment);
-    const char* text = p.text.c_str();
-    const int length = int(p.text.size());
-    const char* name = source.file.c_str();
+    const std::string text = float_literals_as_float(join_continued_lines(source.text));
+    check_macro_expansion(source.file, text, stage == EShLangFragment);
+    if (probe) {
+        ProbedSource s = probed_source(source.file, preprocessed(source.file, text, stage), *probe);
+        s.strings[kProbeString] = float_literals_as_float(s.strings[kProbeString]);
+        p.strings = std::move(s.strings), p.names = std::move(s.names);
+    } else {
+        p.strings = {text}, p.names = {source.file};
+    }
+    std::vector<const char*> texts, names;
+    std::vector<int> lengths;
+    for (std::size_t i = 0; i < p.strings.size(); ++i) {
+        texts.push_back(p.strings[i].c_str()), names.push_back(p.names[i].c_str());
+        lengths.push_back(int(p.strings[i].size()));
+    }
     const auto parse_with = [&](const char* preamble) {
         p.shader = std::make_unique<glslang::TShader>(stage);
-        p.shader->setStringsWithLengthsAndNames(&text, &length, &name, 1);
+        p.shader->setStringsWithLengthsAndNames(texts.data(), lengths.data(), names.data(), int(texts.size()));
         p.shader->setPreamble(preamble);
         p.shader->setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientNone, 100);
         p.shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
@@ -103,7 +132,13 @@ ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::
         if (ok) call_derivative_control_builtins(*p.shader->getIntermediate());
     }
     const std::string log = std::string(p.shader->getInfoLog()) + p.shader->getInfoDebugLog();
-    const std::string errors = reword(log, &warnings);
+    std::vector<std::string> said;
+    std::string errors = reword(log, &said);
+    if (probe) {
+        errors = probe_messages(errors, *probe);
+        for (std::string& w : said) w = probe_messages(w, *probe);
+    }
+    warnings.insert(warnings.end(), said.begin(), said.end());
     if (!ok) throw GlslError(errors.empty() ? source.file + ": error: the shader does not compile" : errors);
     if (glslang::TIntermediate* ast = p.shader->getIntermediate()) p.version = ast->getVersion();
     return p;
@@ -133,9 +168,10 @@ GlslSource read_glsl_file(const std::filesystem::path& path) {
     return src;
 }
 
-GlslSource default_vertex_shader(const GlslSource& fragment) {
+GlslSource default_vertex_shader(const GlslSource& fragment, const CompileOptions& options) {
     std::vector<std::string> warnings;
-    ParsedStage f = parse(fragment, EShLangFragment, warnings);
+    const DerivativeProbe* probe = options.derivative_probe ? &*options.derivative_probe : nullptr;
+    ParsedStage f = parse(fragment, EShLangFragment, warnings, probe);
     // The fragment stage's inputs, in the order the code reads them.
     ir::Program scratch;
     ProgramInterface interface{scratch, {}, {}, {}};
@@ -186,14 +222,16 @@ GlslSource default_vertex_shader(const GlslSource& fragment) {
 CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex,
                              const CompileOptions& options) {
     CompiledProgram out;
-    out.vertex = vertex ? *vertex : default_vertex_shader(fragment);
-    ParsedStage f = parse(fragment, EShLangFragment, out.warnings);
+    out.vertex = vertex ? *vertex : default_vertex_shader(fragment, options);
+    const DerivativeProbe* probe = options.derivative_probe ? &*options.derivative_probe : nullptr;
+    ParsedStage f = parse(fragment, EShLangFragment, out.warnings, probe);
     ParsedStage v = parse(out.vertex, EShLangVertex, out.warnings);
     ir::Program& program = out.program;
     program.version = f.version;
     ProgramInterface interface{program, {}, options, {}};
     program.fragment = StageLowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface).run();
     program.vertex = StageLowering(StageKind::Vertex, out.vertex.file, *v.shader->getIntermediate(), interface).run();
+    out.probe_components = interface.probe_components;
     for (const VaryingSlot& s : interface.varyings) {
         if (!s.written) {
             throw GlslLinkError(s.where + "error: varying '" + s.name + "' is read here but the vertex shader (" + out.vertex.file +

@@ -32,19 +32,21 @@ struct CompiledProgram {
     ir::Program program;
     GlslSource vertex;                  // the vertex shader compiled: given, or written for the fragment one
     std::vector<std::string> warnings;  // glslang's, FILE:LINE: prefixed
+    int probe_components = 0;           // with CompileOptions::derivative_probe: its expression's components
 };
 
 // Compiles `fragment` with `vertex`, or with the vertex shader default_vertex_shader() writes
 // for it. Throws GlslError with glslang's messages (FILE:LINE:COL: error: ...) for GLSL that
 // does not compile, GlslLinkError for stages that do not link, GlslUnsupported (a GlslError) for
-// what the interpreter does not run.
+// what the interpreter does not run; messages about a derivative probe's expression name its option.
 CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex,
                              const CompileOptions& options = {});
 
 // The vertex shader quadshade pairs with a fragment shader given alone: gl_Position from the
 // scene's transform, and each varying the fragment shader reads from the vertex attribute of
 // its name (binding_names.h; `st` and `uv` are texture coordinates, `P` the object-space
-// position). Throws GlslError naming a varying it cannot supply.
-GlslSource default_vertex_shader(const GlslSource& fragment);
+// position), those a derivative probe reads among them. Throws GlslError naming a varying it
+// cannot supply.
+GlslSource default_vertex_shader(const GlslSource& fragment, const CompileOptions& options = {});
 
 }  // namespace qs::frontend

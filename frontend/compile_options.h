@@ -9,6 +9,18 @@
 
 namespace qs::frontend {
 
+// An expression a user names, to see its derivatives: the fragment stage evaluates it where main
+// ends, after its returns have rejoined, in main's outermost scope (the shader's inputs, uniforms,
+// globals and main's outermost variables are in reach), and its colour is then (dFdx(e), dFdy(e),
+// e, 1) of the expression's component `component`, under the rule the program is shaded with: the
+// colour main wrote is dropped, a fragment main discards writes none. glslang parses the text as
+// one expression and nothing else (derivative_probe.h); messages about it name `option`.
+struct DerivativeProbe {
+    std::string expression;
+    int component = 0;
+    std::string option = "the expression";
+};
+
 struct CompileOptions {
     // When set, every vertex input the shader declares (other than GL's built-in gl_Vertex,
     // gl_Color, ...) is a generic attribute, as glVertexAttribPointer feeds it: at the location
@@ -22,6 +34,8 @@ struct CompileOptions {
     // glShadeModel(GL_FLAT): gl_Color and gl_SecondaryColor are flat, unless the fragment shader
     // declares them with an interpolation qualifier of their own.
     bool flat_colors = false;
+    // The fragment stage's colour replaced by an expression's derivatives.
+    std::optional<DerivativeProbe> derivative_probe;
 };
 
 }  // namespace qs::frontend

@@ -16,9 +16,7 @@ namespace qs::frontend {
 using glslang::TIntermSymbol;
 using B = ir::Bank;
 
-std::string StageLowering::where(const TIntermNode* node) const {
-    return source_position(file_, node->getLoc().line, node->getLoc().column);
-}
+std::string StageLowering::where(const TIntermNode* node) const { return position(node->getLoc()); }
 
 Place StageLowering::bound_input(ir::Source source, std::uint16_t slot, const std::vector<B>& banks, std::uint16_t first) {
     Place p;

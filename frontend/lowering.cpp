@@ -6,11 +6,13 @@
 #include <bit>
 #include <cstring>
 
+#include <cstdint>
+#include <stdexcept>
+
+#include "frontend/derivative_probe.h"
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
 #include "frontend/lowering.h"
-
-#include <cstdint>
 
 namespace qs::frontend {
 
@@ -27,8 +29,15 @@ StageLowering::StageLowering(StageKind kind, const std::string& file, glslang::T
                              ProgramInterface& interface)
     : kind_(kind), file_(file), ast_(ast), interface_(interface) {}
 
+std::string StageLowering::position(const glslang::TSourceLoc& at) const {
+    if (const auto& probe = interface_.options.derivative_probe; probe && at.string == kProbeString) {
+        return probe->option + " \"" + probe->expression + "\": ";
+    }
+    return source_position(file_, at.line, at.column);
+}
+
 void StageLowering::refuse(const glslang::TSourceLoc& at, const std::string& what) const {
-    throw GlslUnsupported(source_position(file_, at.line, at.column) + what);
+    throw GlslUnsupported(position(at) + what);
 }
 
 void StageLowering::refuse(const TIntermNode* at, const std::string& what) const {
@@ -336,6 +345,51 @@ void StageLowering::fuse_moves() {
     code = std::move(kept);
 }
 
+// ---- a derivative probe (compile_options.h) -------------------------------------------------
+
+glslang::TIntermTyped* StageLowering::take_probe(glslang::TIntermAggregate* main) {
+    if (kind_ != StageKind::Fragment || !interface_.options.derivative_probe) return nullptr;
+    // derivative_probe.h put it last in main's body, as an expression statement of its own string.
+    const glslang::TIntermSequence& parts = main->getSequence();
+    glslang::TIntermAggregate* body = parts.size() > 1 && parts[1] ? parts[1]->getAsAggregate() : nullptr;
+    glslang::TIntermTyped* probe = nullptr;
+    if (body && body->getOp() == glslang::EOpSequence && !body->getSequence().empty()) {
+        probe = body->getSequence().back()->getAsTyped();
+    }
+    if (!probe || probe->getLoc().string != kProbeString) {
+        throw std::logic_error("GLSL front end: the derivative probe is not main's last statement");
+    }
+    body->getSequence().pop_back();
+    return probe;
+}
+
+void StageLowering::write_probe(glslang::TIntermTyped* e) {
+    const DerivativeProbe& probe = *interface_.options.derivative_probe;
+    const glslang::TType& type = e->getType();
+    if (type.getBasicType() != glslang::EbtFloat || type.isArray() || type.isMatrix() || type.isStruct()) {
+        throw GlslError(position(e->getLoc()) + "error: the expression is " + type_name(type) +
+                        "; dFdx and dFdy take a float or a float vector");
+    }
+    const int n = type.isVector() ? type.getVectorSize() : 1;
+    interface_.probe_components = n;
+    if (probe.component < 0 || probe.component >= n) {
+        throw GlslError(position(e->getLoc()) + "error: no component " + std::to_string(probe.component) + " in " +
+                        type_name(type));
+    }
+    line_ = std::uint32_t(e->getLoc().line);
+    const std::uint32_t value = eval(e)[std::size_t(probe.component)].reg;
+    stage_.derivatives = true;
+    using B = ir::Bank;
+    const std::uint32_t colour[4] = {emit1(ir::Op::FDdx, B::Float, value), emit1(ir::Op::FDdy, B::Float, value), value,
+                                     float_constant(1.0f)};
+    std::erase_if(stage_.outputs, [](const ir::Binding& b) { return b.source == ir::Source::Color; });
+    for (std::uint16_t i = 0; i < 4; ++i) {
+        const std::uint32_t r = allocate(B::Float, Space::Variable);
+        move({B::Float, r}, {B::Float, colour[i]}, false);
+        stage_.outputs.push_back({ir::Source::Color, 0, i, B::Float, r});
+    }
+}
+
 // ---- the stage ------------------------------------------------------------------------------
 
 ir::Stage StageLowering::run() {
@@ -366,6 +420,9 @@ ir::Stage StageLowering::run() {
         statement(n);
     }
     const glslang::TIntermSequence& parts = main->getSequence();
+    glslang::TIntermTyped* probe = take_probe(main);
+    // With a probe, main runs as a call does: the lanes its returns set aside rejoin at its end.
+    if (probe) emit(ir::Op::CallBegin);
     if (parts.size() > 1 && parts[1]) {
         glslang::TIntermAggregate* body = parts[1]->getAsAggregate();
         if (body) {
@@ -374,6 +431,10 @@ ir::Stage StageLowering::run() {
         } else {
             statement(parts[1]);
         }
+    }
+    if (probe) {
+        emit(ir::Op::CallEnd);
+        write_probe(probe);
     }
     frames_.pop_back();
     if (kind_ == StageKind::Vertex) supply_unwritten_colors();

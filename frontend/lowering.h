@@ -136,6 +136,12 @@ private:
     void switch_statement(glslang::TIntermSwitch* node);
     void initialise_locals(glslang::TIntermAggregate* body, const std::set<long long>& parameters);
 
+    // ---- a derivative probe ----------------------------------------------------------------
+    // The probe's expression, taken out of main's body (null without one).
+    glslang::TIntermTyped* take_probe(glslang::TIntermAggregate* main);
+    // Evaluates it where main has ended and writes its derivatives as the colour.
+    void write_probe(glslang::TIntermTyped* expression);
+
     // ---- the stage's interface (uniforms, inputs, outputs, built-ins) ------------------------
     Place interface_variable(glslang::TIntermSymbol* node);
     Place uniform_variable(glslang::TIntermSymbol* node);
@@ -157,6 +163,8 @@ private:
     Place ftransform();
     void declare_globals(glslang::TIntermAggregate* root);
     std::string where(const TIntermNode* node) const;
+    // "FILE:LINE:COL: ", or the probe's option and expression for a place in it.
+    std::string position(const glslang::TSourceLoc& at) const;
 
     [[noreturn]] void refuse(const TIntermNode* at, const std::string& what) const;
     [[noreturn]] void refuse(const glslang::TSourceLoc& at, const std::string& what) const;

@@ -13,13 +13,15 @@
 namespace qs::frontend {
 
 struct ParsedStage {
-    std::string text;  // what glslang parsed (kept alive with the shader)
+    std::vector<std::string> strings, names;  // what glslang parsed (kept alive with the shader)
     std::unique_ptr<glslang::TShader> shader;
     int version = 110;
 };
 
-// Parses `source` as `stage`, glslang's warnings appended to `warnings`. Throws GlslError with
-// glslang's messages for GLSL that does not compile.
-ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings);
+// Parses `source` as `stage`, glslang's warnings appended to `warnings`; with `probe`, a fragment
+// stage with the probe's expression as main's last statement (derivative_probe.h). Throws
+// GlslError with glslang's messages for GLSL that does not compile.
+ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::string>& warnings,
+                  const DerivativeProbe* probe = nullptr);
 
 }  // namespace qs::frontend

@@ -29,6 +29,7 @@ struct ProgramInterface {
     std::vector<VaryingSlot> varyings;
     CompileOptions options;
     std::vector<bool> uniform_initialised;  // per slot of program.uniforms: declared with an initializer
+    int probe_components = 0;               // the derivative probe's expression's components, once lowered
 
     // The slot of the user uniform `u`, added on first use; a second declaration must agree,
     // in its type and, where both have one, in its initializer (u.initial, when `initialised`).
