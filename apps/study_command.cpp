@@ -1,10 +1,15 @@
 #include "apps/study_command.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "apps/command_line.h"
+#include "core/tile_grid.h"
+#include "render/memory_plan.h"
 #include "render/plugins.h"
+#include "scenes/image_io.h"
+#include "scenes/scene_files.h"
 
 namespace qs::app {
 
@@ -37,10 +42,18 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
     cmd.add_option("--alternative-mode", r.shaders.alternative_mode, "that mode's name (default: alternative)")
         ->option_text("MODE");
     cmd.add_option("--views", r.views,
-                   "camera, magnified, minified, grazing (default: all four), or\nscene files whose camera is a view "
-                   "(CAMERA.gltf)")
+                   "camera, magnified, minified, grazing (default: all four; the camera\nalone with --frames), or "
+                   "scene files whose camera is a view\n(CAMERA.gltf)")
         ->delimiter(',')
         ->option_text("VIEW,...");
+    cmd.add_option("--frames", a.frames,
+                   "frames of an animated scene as views, each view at each frame\n(time = frame / fps): "
+                   "0,12,24 or A:B (inclusive), as render takes them")
+        ->delimiter(',')
+        ->option_text("F,...");
+    cmd.add_option("--fps", r.fps, "frames per second for --frames (default 30)")
+        ->check(kFinite & CLI::PositiveNumber)
+        ->option_text("N");
     cmd.add_option("--modes", r.modes,
                    "fine, coarse-lower, coarse-upper, dual2, raycast-quads,\nray-differentials, double, step, ss2x2, "
                    "ss4x4, ss8x8, the\nalternative's (default: all the shader has)")
@@ -78,9 +91,56 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
         ->option_text("X,Y,Z");
     cmd.add_flag("--no-reference", a.no_reference, "do not render llvmpipe's images (no OSMesa needed)");
     cmd.add_flag("--no-derivative-maps", a.no_derivative_maps, "do not map the inputs' derivatives under each rule");
+    cmd.add_option("--derivatives-of", r.expressions,
+                   "map the derivatives of this GLSL expression in place of the inputs':\nover the fragment "
+                   "shader's inputs, uniforms, globals and main's\noutermost variables where main ends (e.g. the "
+                   "argument of an\nfwidth); evaluated in the shader's GLSL (a catalogue or plugin\nshader's own "
+                   "exported GLSL) by the interpreter; repeatable")
+        ->option_text("EXPR");
+    if (!line) {
+        cmd.add_option("--memory-limit", a.memory_limit,
+                       "memory the study may use, llvmpipe's process included, e.g. 4G\n(default: what the system "
+                       "has available); planned before any work")
+            ->option_text("SIZE");
+    }
 }
 
 namespace {
+
+// --frames' items (N or A:B, inclusive) as frames, in the order given.
+std::vector<int> frame_list(const std::vector<std::string>& items) {
+    constexpr int kMaxFrame = 1000000, kMaxFrames = 1000;
+    auto frame = [&](const std::string& text) {
+        std::size_t end = 0;
+        int f = -1;
+        try {
+            f = std::stoi(text, &end);
+        } catch (const std::exception&) {
+            end = 0;
+        }
+        if (end == 0 || end != text.size() || f < 0 || f > kMaxFrame) {
+            throw UsageError("--frames: '" + text + "' is not a frame (0 to " + std::to_string(kMaxFrame) + ")");
+        }
+        return f;
+    };
+    std::vector<int> frames;
+    for (const std::string& item : items) {
+        const std::size_t colon = item.find(':');
+        const int first = frame(item.substr(0, colon));
+        const int last = colon == std::string::npos ? first : frame(item.substr(colon + 1));
+        if (last < first) throw UsageError("--frames: " + item + ": B must not be less than A");
+        if (frames.size() + std::size_t(last - first) + 1 > std::size_t(kMaxFrames)) {
+            throw UsageError("--frames: more than " + std::to_string(kMaxFrames) + " frames");
+        }
+        for (int f = first; f <= last; ++f) {
+            if (std::find(frames.begin(), frames.end(), f) != frames.end()) {
+                throw UsageError("--frames: frame " + std::to_string(f) + " is named twice");
+            }
+            frames.push_back(f);
+        }
+    }
+    return frames;
+}
 
 // A study's request from its arguments, paths resolved against `base`.
 study::Request prepared(StudyArgs& a, const fs::path& base) {
@@ -100,7 +160,15 @@ study::Request prepared(StudyArgs& a, const fs::path& base) {
     if (r.shaders.alternative.empty() && !r.shaders.alternative_mode.empty()) {
         throw UsageError("--alternative-mode: name the variant with --alternative");
     }
-    if (r.size * r.truth > (1 << 16)) throw UsageError("--size times --truth is over 65536 pixels on a side");
+    if (r.size * r.truth > kMaxDimension) {
+        throw UsageError("--size times --truth is over " + std::to_string(kMaxDimension) +
+                         " pixels on a side, the most a frame has");
+    }
+    r.frames = frame_list(a.frames);
+    if (!r.frames.empty() && r.time) throw UsageError("--frames and --time: each frame is a time; give one of them");
+    if (a.no_derivative_maps && !r.expressions.empty()) {
+        throw UsageError("--derivatives-of and --no-derivative-maps: give one of them");
+    }
     r.scene = a.scene;
     r.reference = !a.no_reference;
     r.derivative_maps = !a.no_derivative_maps;
@@ -143,7 +211,10 @@ std::vector<study::Request> study_file(const StudyArgs& given) {
         if (from_command_line("--time")) r.time = g.time;
         if (from_command_line("--offset")) r.offset = g.offset;
         if (from_command_line("--views")) r.views = g.views;
+        if (from_command_line("--frames")) line.frames = given.frames;
+        if (from_command_line("--fps")) r.fps = g.fps;
         if (from_command_line("--modes")) r.modes = g.modes;
+        if (from_command_line("--derivatives-of")) r.expressions = g.expressions;
         line.no_reference = line.no_reference || given.no_reference;
         line.no_derivative_maps = line.no_derivative_maps || given.no_derivative_maps;
         for (std::string& plugin : line.plugins) {
@@ -181,16 +252,24 @@ int cmd_study(StudyArgs& a) {
     for (const std::string& file : {a.study_file, a.glsl, a.vertex_glsl}) {
         if (!file.empty()) inputs.push_back(file);
     }
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
+    std::uint64_t planned = 0;
     try {
         for (const study::Request& r : requests) {
             const std::vector<fs::path> theirs = study::study_inputs(r);
             inputs.insert(inputs.end(), theirs.begin(), theirs.end());
         }
         study::refuse_outputs_over(a.output, inputs);
+        // Every study's views, modes, shaders, expressions and memory, before any writes a file.
+        load_image_library();
+        const std::uint64_t limit = memory_limit(a.memory_limit);
+        for (const study::Request& r : requests) planned = std::max(planned, study::check_study(r, limit));
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("study: ") + e.what());
     }
     make_output_folder(a.output, FolderLink::Followed);
+    reset_peak_resident();
+    const std::uint64_t resident_before = resident_bytes();
     study::Tables tables;
     for (study::Request& r : requests) {
         r.output = a.output;
@@ -202,6 +281,10 @@ int cmd_study(StudyArgs& a) {
     }
     study::write_tables(a.output, tables);
     study::write_report(a.output);
+    const std::uint64_t peak = peak_resident_bytes();
+    std::fprintf(stderr, "quadshade study: peak memory %s (planned %s with llvmpipe's process beside it)\n",
+                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
+                 byte_size_text(planned).c_str());
     std::printf("quadshade study: %s\n", (fs::path(a.output) / "report.html").string().c_str());
     return 0;
 }

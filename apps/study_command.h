@@ -17,6 +17,8 @@ struct StudyArgs {
     bool compile_glsl = false;      // --compile
     std::vector<std::string> plugins;
     bool no_reference = false, no_derivative_maps = false;
+    std::vector<std::string> frames;  // --frames: N or A:B each
+    std::string memory_limit;         // --memory-limit; empty: what the system has available
     std::string study_file;         // --study FILE: one study per line
     const CLI::App* app = nullptr;  // what parsed these (which options were given)
 };

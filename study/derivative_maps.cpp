@@ -24,10 +24,21 @@ std::string map_program(const Program& shader, int v) {
 
 }  // namespace
 
-std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::string& shader, int threads,
-                                           const fs::path& dir, const std::string& relative) {
+std::vector<DerivativeMap> input_maps(const std::string& shader) {
     const Program* program = find_program(shader);
     if (!program) throw std::runtime_error("unknown shader '" + shader + "'");
+    std::vector<DerivativeMap> maps;
+    for (int v = 0; v < program->info().needs.varyings; ++v) {
+        if (program->info().needs.flat_varyings & (1u << v)) continue;
+        const std::string input = varying_name(program->info(), v);
+        maps.push_back({input, "d-" + file_name(input), map_program(*program, v)});
+    }
+    return maps;
+}
+
+std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::vector<DerivativeMap>& maps,
+                                           std::optional<double> time, int threads, const fs::path& dir,
+                                           const std::string& relative) {
     Scene scene = original;
     scene.clear_color = glm::vec4(0.0f);  // alpha 0 where nothing is drawn: the covered pixels are the others
     const struct {
@@ -37,13 +48,12 @@ std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::str
                  {"coarse-lower", Derivatives::CoarseLower},
                  {"coarse-upper", Derivatives::CoarseUpper}};
     std::vector<DerivativeRow> rows;
-    for (int v = 0; v < program->info().needs.varyings; ++v) {
-        if (program->info().needs.flat_varyings & (1u << v)) continue;
-        const std::string input = varying_name(program->info(), v), name = map_program(*program, v);
+    for (const DerivativeMap& m : maps) {
         auto render = [&](Derivatives rule) {
             FrameRequest f;
             f.width = scene.width, f.height = scene.height;
-            f.shader_override = name;
+            f.time = time;
+            f.shader_override = m.program;
             f.shading.derivatives = rule;
             f.shading.threads = threads;
             return colour_image(render_frame(scene, f));
@@ -70,12 +80,12 @@ std::vector<DerivativeRow> derivative_maps(const Scene& original, const std::str
             }
             return out;
         };
-        const std::string stem = "d-" + file_name(input);
+        const std::string& stem = m.stem;
         write_image(dir / (stem + "-analytic.png"), shown(exact));
         for (const auto& r : rules) {
             const Image map = render(r.rule);
             DerivativeRow row;
-            row.input = input, row.rule = r.name;
+            row.input = m.label, row.rule = r.name;
             double sx = 0, sy = 0;
             for (std::size_t p = 0; p < n; ++p) {
                 if (exact.rgba[p * 4 + 3] <= 0.5f) continue;

@@ -1,15 +1,26 @@
 #pragma once
-// Derivative maps: dFdx and dFdy of each of a shader's inputs (the varyings its vertex stage
-// writes, input_derivatives.h) under each quad rule, against the analytic partials Dual2
-// carries, over the pixels the scene covers.
+// Derivative maps: dFdx and dFdy of values a shader computes under each quad rule, against the
+// analytic partials Dual2 carries, over the pixels the scene covers. The values are the shader's
+// inputs (the varyings its vertex stage writes, input_derivatives.h) or expressions a user names
+// (expression_derivatives.h); each is drawn by a Program whose colour is (dFdx, dFdy, the value, 1).
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scenes/scene.h"
 
 namespace qs::study {
+
+// One value to map: its name in the tables, the stem of its images and the Program that draws it.
+struct DerivativeMap {
+    std::string label, stem, program;
+};
+
+// The maps of every input of `shader`: flat varyings have no derivatives to map. The programs are
+// added to the catalogue once per process.
+std::vector<DerivativeMap> input_maps(const std::string& shader);
 
 struct DerivativeRow {
     std::string input, rule;
@@ -19,12 +30,12 @@ struct DerivativeRow {
     std::string map_image, heat_image, analytic_image;  // relative to the study's folder
 };
 
-// The maps of every input of `shader` on `scene` (at its size, with its time): for each input,
-// DIR/d-INPUT-analytic.png (dx in red, dy in green, each 0.5 + 0.5 d / its largest |d|) and, per
-// rule, DIR/d-INPUT-RULE.png and its heat map against the analytic one (full scale a quarter of
-// the largest analytic |d|). `relative` is DIR relative to the study's folder. Flat varyings
-// have no derivatives to map.
-std::vector<DerivativeRow> derivative_maps(const Scene& scene, const std::string& shader, int threads,
-                                           const std::filesystem::path& dir, const std::string& relative);
+// Each map drawn on `scene` (at its size, at `time` or the scene's): DIR/STEM-analytic.png (dx in
+// red, dy in green, each 0.5 + 0.5 d / its largest |d|) and, per rule, DIR/STEM-RULE.png and its
+// heat map against the analytic one (full scale a quarter of the largest analytic |d|). `relative`
+// is DIR relative to the study's folder. A pixel is covered where the map's program wrote a colour.
+std::vector<DerivativeRow> derivative_maps(const Scene& scene, const std::vector<DerivativeMap>& maps,
+                                           std::optional<double> time, int threads, const std::filesystem::path& dir,
+                                           const std::string& relative);
 
 }  // namespace qs::study

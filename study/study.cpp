@@ -17,10 +17,12 @@
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "study/derivative_maps.h"
+#include "study/expression_derivatives.h"
 #include "study/file_name.h"
 #include "study/image_error.h"
 #include "study/stability.h"
 #include "study/study_csv.h"
+#include "study/study_memory.h"
 
 namespace qs::study {
 
@@ -63,22 +65,61 @@ struct Timing {
     double median = 0.0, min = 0.0, max = 0.0;
 };
 
+// The modes `request` names (all the shader has, when it names none).
+std::vector<Mode> chosen_modes(const Request& r) {
+    const std::vector<Mode> all = all_modes(r.shaders, kRaycast);
+    if (r.modes.empty()) return all;
+    std::vector<Mode> chosen;
+    for (const std::string& name : r.modes) {
+        auto it = std::find_if(all.begin(), all.end(), [&](const Mode& m) { return m.name == name; });
+        if (it == all.end()) {
+            throw std::invalid_argument("no mode '" + name +
+                                        "' for this shader (its modes: " + mode_names(r.shaders, kRaycast) + ")");
+        }
+        chosen.push_back(*it);
+    }
+    return chosen;
+}
+
+void check_shaders(const Shaders& shaders) {
+    for (const std::string& name : {shaders.shader, shaders.unfiltered, shaders.alternative}) {
+        if (!name.empty() && !find_program(name)) {
+            throw std::runtime_error("unknown shader '" + name +
+                                     "' (quadshade shaders lists the catalogue; --plugin LIB adds a plugin's)");
+        }
+    }
+}
+
+// The scene a study draws: as loaded, only the objects that keep_shader names when it names one.
+Scene study_scene(const Request& r) {
+    Scene scene = load_scene(r.scene);
+    if (!r.keep_shader.empty()) {
+        std::erase_if(scene.objects, [&](const Object& o) { return o.shader != r.keep_shader; });
+        if (scene.objects.empty()) {
+            throw std::invalid_argument(r.scene.string() + ": no object's material names the shader '" + r.keep_shader +
+                                        "'");
+        }
+    }
+    return scene;
+}
+
+// The maps of the derivatives a study draws: the expressions it names, else the shader's inputs.
+std::vector<DerivativeMap> maps_of(const Request& r) {
+    if (!r.derivative_maps) return {};
+    return r.expressions.empty() ? input_maps(r.shaders.shader)
+                                 : expression_maps(r.shaders.shader, r.expressions, "--derivatives-of");
+}
+
 class Study {
 public:
     explicit Study(const Request& r) : r_(r) {}
 
     void run(Tables& tables) {
-        const std::vector<Mode> modes = chosen_modes();
-        std::vector<View> views;
-        for (const std::string& v : r_.views) views.push_back(view_named(v));
-        if (views.empty()) throw std::invalid_argument("no view to study");
-        for (const std::string& name : {r_.shaders.shader, r_.shaders.unfiltered, r_.shaders.alternative}) {
-            if (!name.empty() && !find_program(name)) {
-                throw std::runtime_error("unknown shader '" + name +
-                                         "' (quadshade shaders lists the catalogue; --plugin LIB adds a plugin's)");
-            }
-        }
-        const Scene original = load_scene(r_.scene);
+        const std::vector<Mode> modes = chosen_modes(r_);
+        const std::vector<View> views = views_of(r_);
+        check_shaders(r_.shaders);
+        const std::vector<DerivativeMap> maps = maps_of(r_);
+        const Scene original = study_scene(r_);
         const std::string label = r_.label.empty() ? r_.shaders.shader : r_.label;
         make_output_folder(r_.output / "images", FolderLink::Refused);
         // The reference's images and logs are this run's own (two runs may share the folder).
@@ -100,17 +141,11 @@ public:
             const fs::path dir = r_.output / "images" / id;
             make_output_folder(dir, FolderLink::Refused);
             Scene scene = original;
-            if (!r_.keep_shader.empty()) {
-                std::erase_if(scene.objects, [&](const Object& o) { return o.shader != r_.keep_shader; });
-                if (scene.objects.empty()) {
-                    throw std::invalid_argument(r_.scene.string() + ": no object's material names the shader '" +
-                                                r_.keep_shader + "'");
-                }
-            }
+            time_ = v->time ? v->time : r_.time;
             apply_view(*v, scene);
             const bool offset = r_.offset != glm::dvec3(0.0);
             if (offset) offset_coordinates(scene, r_.offset);
-            size_for(scene);
+            size_for(scene, r_.size);
             // The reference reads the view from a file, written unless the scene is as loaded.
             fs::path scene_file = r_.scene;
             if (r_.reference && (v->changes_scene() || offset || !r_.keep_shader.empty())) {
@@ -124,20 +159,20 @@ public:
             views_csv += csv_line({label, v->name, v->description, std::to_string(scene.width),
                                    std::to_string(scene.height), truth_text,
                                    number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
-                                   r_.time ? number(*r_.time) : number(scene.time)});
+                                   time_ ? number(*time_) : number(scene.time)});
             progress(done, total, id + ": float against double, undefined cases");
-            const Stability st = stability(scene, r_.shaders.shader, r_.time, r_.threads, dir, "images/" + id);
+            const Stability st = stability(scene, r_.shaders.shader, time_, r_.threads, dir, "images/" + id);
             const auto& u = st.undefined;
             stability_csv += csv_line(
                 {label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
                  std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
                  st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
                  st.checked ? std::to_string(u.per_case[1]) : "", st.checked ? std::to_string(u.per_case[2]) : "",
-                 st.note, st.float_image, st.double_image, st.heat_image, st.mask_image});
-            if (r_.derivative_maps) {
+                 st.checked ? std::to_string(u.per_case[3]) : "", st.note, st.float_image, st.double_image,
+                 st.heat_image, st.mask_image});
+            if (!maps.empty()) {
                 progress(done, total, id + ": derivative maps");
-                for (const DerivativeRow& d :
-                     derivative_maps(scene, r_.shaders.shader, r_.threads, dir, "images/" + id)) {
+                for (const DerivativeRow& d : derivative_maps(scene, maps, time_, r_.threads, dir, "images/" + id)) {
                     derivatives_csv += csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
                                                  number(d.rms_dy), number(d.max_dy), number(d.scale),
                                                  std::to_string(d.covered), d.map_image, d.heat_image,
@@ -181,21 +216,6 @@ public:
     }
 
 private:
-    std::vector<Mode> chosen_modes() const {
-        const std::vector<Mode> all = all_modes(r_.shaders, kRaycast);
-        if (r_.modes.empty()) return all;
-        std::vector<Mode> chosen;
-        for (const std::string& name : r_.modes) {
-            auto it = std::find_if(all.begin(), all.end(), [&](const Mode& m) { return m.name == name; });
-            if (it == all.end()) {
-                throw std::invalid_argument("no mode '" + name +
-                                            "' for this shader (its modes: " + mode_names(r_.shaders, kRaycast) + ")");
-            }
-            chosen.push_back(*it);
-        }
-        return chosen;
-    }
-
     // Each variant's GLSL, for the reference: output/glsl/NAME.vert and NAME.frag.
     void write_glsl() const {
         const fs::path dir = r_.output / "glsl";
@@ -208,20 +228,10 @@ private:
         }
     }
 
-    // The longer side `size`, the scene's aspect kept.
-    void size_for(Scene& scene) const {
-        const double aspect = double(scene.width) / double(scene.height);
-        if (aspect >= 1.0) {
-            scene.width = r_.size, scene.height = std::max(1, int(std::lround(r_.size / aspect)));
-        } else {
-            scene.height = r_.size, scene.width = std::max(1, int(std::lround(r_.size * aspect)));
-        }
-    }
-
     FrameRequest request(const Scene& scene, const Mode& m, int k) const {
         FrameRequest f;
         f.width = scene.width * k, f.height = scene.height * k;
-        f.time = r_.time;
+        f.time = time_;
         f.shader_override = m.shader;
         f.backend = m.backend;
         f.shading.derivatives = m.rule;
@@ -266,7 +276,7 @@ private:
                                          std::to_string(scene.width * k) + "x" + std::to_string(scene.height * k),
                                          "--threads",
                                          std::to_string(r_.threads)};
-        if (r_.time) argv.insert(argv.end(), {"--time", number(*r_.time)});
+        if (time_) argv.insert(argv.end(), {"--time", number(*time_)});
         if (const int status = run_process(argv, log); status != 0) {
             throw std::runtime_error("quadshade-reference failed on " + scene_file.string() + " with " + m.shader +
                                      " (exit " + std::to_string(status) + "): " + read_text(log));
@@ -314,9 +324,35 @@ private:
 
     const Request& r_;
     fs::path reference_, scratch_;  // quadshade-reference; where its images and logs go
+    std::optional<double> time_;    // the view's time (its frame's, or the request's), as r_.time
 };
 
 }  // namespace
+
+std::vector<View> views_of(const Request& r) {
+    std::vector<View> views;
+    const std::vector<std::string> none = r.frames.empty()
+                                              ? std::vector<std::string>{"camera", "magnified", "minified", "grazing"}
+                                              : std::vector<std::string>{"camera"};
+    for (const std::string& v : r.views.empty() ? none : r.views) views.push_back(view_named(v));
+    return at_frames(views, r.frames, r.fps);
+}
+
+std::uint64_t check_study(const Request& r, std::uint64_t memory_limit) {
+    if (r.size < 1 || r.truth < 1 || r.repeat < 1) {
+        throw std::invalid_argument("size, truth and repeat must be positive");
+    }
+    if (!r.frames.empty() && !(r.fps > 0.0)) throw std::invalid_argument("frames need a positive fps");
+    const std::vector<Mode> modes = chosen_modes(r);
+    (void)views_of(r);
+    check_shaders(r.shaders);
+    (void)maps_of(r);
+    Scene scene = study_scene(r);
+    size_for(scene, r.size);
+    const MemoryPlan plan = plan_memory(r, scene, modes);
+    check_memory(plan, memory_limit);
+    return plan.peak;
+}
 
 void run_study(const Request& request, Tables& tables) {
     if (request.size < 1 || request.truth < 1 || request.repeat < 1)
@@ -327,8 +363,7 @@ void run_study(const Request& request, Tables& tables) {
 std::vector<fs::path> study_inputs(const Request& request) {
     std::vector<fs::path> inputs = load_scene(request.scene).inputs;
     inputs.push_back(request.scene);
-    for (const std::string& v : request.views) {
-        const View view = view_named(v);
+    for (const View& view : views_of(request)) {
         if (view.camera_file.empty()) continue;
         const std::vector<fs::path> theirs = load_scene(view.camera_file).inputs;
         inputs.insert(inputs.end(), theirs.begin(), theirs.end());

@@ -37,10 +37,10 @@ inline const std::vector<std::string> kDerivativeColumns = {
 
 // stability.csv's columns (stability.h).
 inline const std::vector<std::string> kStabilityColumns = {
-    "shader",           "view",       "rms_float_vs_double", "max_float_vs_double",
-    "over_1_255",       "pixels",     "undefined_pixels",    "nan",
-    "division_by_zero", "domain",     "undefined_note",      "float_image",
-    "double_image",     "heat_image", "mask_image"};
+    "shader",           "view",   "rms_float_vs_double", "max_float_vs_double", "over_1_255",
+    "pixels",           "undefined_pixels", "nan",       "division_by_zero",    "domain",
+    "integer_overflow", "undefined_note",   "float_image", "double_image",      "heat_image",
+    "mask_image"};
 
 std::string csv_line(const std::vector<std::string>& fields);
 std::string number(double v);  // "nan" for NaN

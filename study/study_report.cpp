@@ -124,7 +124,8 @@ std::string stability_section(const fs::path& root, const Row& s, const Row* vie
         out << "Undefined GLSL cases the colour depends on, in " << escape(s.at("undefined_pixels"))
             << " pixels: NaN produced " << escape(s.at("nan")) << ", division by zero "
             << escape(s.at("division_by_zero")) << ", a built-in outside its domain " << escape(s.at("domain"))
-            << " (the mask: red NaN, green division by zero, blue outside the domain).</p>\n";
+            << ", integer overflow " << escape(s.at("integer_overflow"))
+            << " (the mask: red NaN, green division by zero, blue outside the domain, grey integer overflow).</p>\n";
     }
     out << "<div>" << figure(root, s.at("float_image"), "float") << figure(root, s.at("double_image"), "double")
         << figure(root, s.at("heat_image"), "|float - double|") << figure(root, s.at("mask_image"), "undefined cases")
@@ -132,16 +133,18 @@ std::string stability_section(const fs::path& root, const Row& s, const Row* vie
     return out.str();
 }
 
-// The inputs' derivatives under each rule against the analytic ones: a table, then per input
-// the analytic map and each rule's map and heat map.
+// The derivatives of the inputs, or of the expressions the study names, under each rule against
+// the analytic ones: a table, then per input or expression the analytic map and each rule's map
+// and heat map.
 std::string derivative_section(const fs::path& root, const std::vector<Row>& rows) {
     if (rows.empty()) return {};
     std::ostringstream out;
-    out << "<h3>Derivative maps</h3>\n<p>dFdx and dFdy of each input under each quad rule against the analytic "
-           "partials "
-           "(Dual2), over the covered pixels; in brackets, relative to the RMS of the analytic gradient. Maps: dFdx "
-           "red, dFdy green, mid-grey 0; heat maps full scale a quarter of the largest analytic derivative.</p>\n"
-           "<table><tr><th>input</th><th>rule</th><th>RMS dFdx error</th><th>max dFdx error</th><th>RMS dFdy error</th>"
+    out << "<h3>Derivative maps</h3>\n<p>dFdx and dFdy of each input, or of each expression named with "
+           "--derivatives-of (evaluated in the shader's GLSL where its main ends), under each quad rule against the "
+           "analytic partials (Dual2), over the covered pixels; in brackets, relative to the RMS of the analytic "
+           "gradient. Maps: dFdx red, dFdy green, mid-grey 0; heat maps full scale a quarter of the largest analytic "
+           "derivative.</p>\n"
+           "<table><tr><th>value</th><th>rule</th><th>RMS dFdx error</th><th>max dFdx error</th><th>RMS dFdy error</th>"
            "<th>max dFdy error</th><th>analytic RMS</th></tr>\n";
     for (const Row& d : rows) {
         const double scale = value(d, "analytic_rms");

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scenes/gltf.h"
+#include "study/study_csv.h"
 
 namespace qs::study {
 
@@ -49,6 +50,32 @@ View view_named(const std::string& name) {
     }
     throw std::invalid_argument("no view '" + name + "' (the views are " + names +
                                 ", or a .gltf or .glb file's camera)");
+}
+
+std::vector<View> at_frames(const std::vector<View>& views, const std::vector<int>& frames, double fps) {
+    if (frames.empty()) return views;
+    const bool camera_alone = views.size() == 1 && views[0].name == "camera" && !views[0].changes_scene();
+    std::vector<View> out;
+    for (const View& v : views) {
+        for (const int f : frames) {
+            View at = v;
+            at.name = (camera_alone ? "" : v.name + "-") + "frame-" + std::to_string(f);
+            const std::string time = number(double(f) / fps);
+            at.description = v.description + " at frame " + std::to_string(f) + " (time " + time + " s)";
+            at.time = double(f) / fps;
+            out.push_back(std::move(at));
+        }
+    }
+    return out;
+}
+
+void size_for(Scene& scene, int size) {
+    const double aspect = double(scene.width) / double(scene.height);
+    if (aspect >= 1.0) {
+        scene.width = size, scene.height = std::max(1, int(std::lround(size / aspect)));
+    } else {
+        scene.height = size, scene.width = std::max(1, int(std::lround(size * aspect)));
+    }
 }
 
 namespace {

@@ -169,6 +169,96 @@ refused)
     [ -z "$(ls -A "$out/elsewhere")" ] || fail "written through a link"
     ls "$out"/*/report.html 2> /dev/null && fail "a refused study wrote a report"
     ;;
+expressions)
+    # A user's .frag whose fwidth's argument is a local of main's.
+    printf '%s\n' '#version 130' 'in vec2 st;' 'out vec4 colour;' 'void main() {' '    float ramp = 8.0 * st.s;' \
+        '    float w = fwidth(ramp);' '    colour = vec4(vec3(smoothstep(0.5 - w, 0.5 + w, fract(ramp))), 1.0);' '}' \
+        > "$out/ramp.frag"
+    tiny="--views camera,grazing --modes fine --no-reference"
+    "$qs" study "$plane" --glsl "$out/ramp.frag" $tiny $small -o "$out/inputs" || fail "exit $?"
+    "$qs" study "$plane" --glsl "$out/ramp.frag" $tiny $small --derivatives-of ramp --derivatives-of "st * 8.0" \
+        -o "$out/named" || fail "exit $?"
+    d=$out/named/derivatives.csv
+    [ "$(tail -n +2 "$d" | wc -l)" -eq 18 ] || fail "expected 18 derivative rows (2 views x 3 maps x 3 rules)"
+    # The named maps replace the inputs'; ramp = 8 st.s, the same map as (st * 8.0).x, 8 times st.s's.
+    grep -q ',st[.]s,' "$d" && fail "the inputs are mapped beside the named expressions"
+    for view in camera grazing; do
+        s=$(field "$out/inputs/derivatives.csv" "^ramp.frag,$view,st[.]s,fine," analytic_rms)
+        r=$(field "$d" "^ramp.frag,$view,ramp,fine," analytic_rms)
+        x=$(field "$d" "^ramp.frag,$view,[(]st [*] 8[.]0[)][.]x,fine," analytic_rms)
+        awk -v s="$s" -v r="$r" -v x="$x" 'BEGIN { exit !(s > 0 && r == x && (r / s - 8) ^ 2 < 1e-10) }' ||
+            fail "$view: ramp's derivatives ($r, $x) are not 8 times st.s's ($s)"
+        [ "$(field "$d" "^ramp.frag,$view,ramp,coarse-upper," covered)" = \
+            "$(field "$out/inputs/derivatives.csv" "^ramp.frag,$view,st[.]s,coarse-upper," covered)" ] ||
+            fail "$view: the expression does not cover the pixels the inputs do"
+    done
+    below "$(field "$d" '^ramp.frag,camera,ramp,coarse-lower,' max_dx)" 1e-5 ||
+        fail "camera: coarse dFdx(ramp) is not exact"
+    below 1e-4 "$(field "$d" '^ramp.frag,grazing,ramp,coarse-upper,' rms_dx)" ||
+        fail "grazing: coarse dFdx(ramp) is exact"
+    [ -s "$out/named/images/ramp.frag-grazing/d-expression-2.y-fine-heat.png" ] || fail "no map of (st * 8.0).y"
+    grep -q '(st [*] 8.0).y' "$out/named/report.html" || fail "the report does not name the expression"
+    check_report "$out/named" 20
+    # A catalogue shader's own GLSL: dots_aa's aastep argument.
+    "$qs" study "$plane" --shader dots_aa --views camera --modes fine --no-reference $small \
+        --derivatives-of "length(fract(5.0 * st) - 0.5)" -o "$out/catalogue" || fail "exit $?"
+    below 0 "$(field "$out/catalogue/derivatives.csv" '^dots_aa,camera,length' analytic_rms)" ||
+        fail "no map of dots_aa's aastep argument"
+    # Anything but one float expression is refused, naming the option, before anything is written.
+    expect=$src/tests/check/expect_exit.sh
+    named="study $plane --glsl $out/ramp.frag --views camera --modes fine --no-reference $small -o $out/refused"
+    "$expect" 2 "--derivatives-of \"ramp; colour = vec4.1.0.\": error: ';' at offset 4" \
+        "$qs" $named --derivatives-of 'ramp; colour = vec4(1.0)' &&
+    "$expect" 2 "error: ';' at offset 7" "$qs" $named --derivatives-of '(ramp) ; } void f() { (ramp)' &&
+    "$expect" 2 'a comment' "$qs" $named --derivatives-of 'ramp /* x */' &&
+    "$expect" 2 "--derivatives-of \"rmp\": error: 'rmp': undeclared identifier" "$qs" $named --derivatives-of rmp &&
+    "$expect" 2 'dFdx and dFdy take a float or a float vector' "$qs" $named --derivatives-of 'int(ramp)' &&
+    "$expect" 2 '--derivatives-of and --no-derivative-maps' "$qs" $named --derivatives-of ramp --no-derivative-maps ||
+        fail "bad expressions not refused"
+    [ -e "$out/refused" ] && fail "a refused study made its folder"
+    ;;
+frames)
+    scene=$src/scenes/assets/gltf/animation.gltf
+    tiny="--modes fine --no-reference --no-derivative-maps"
+    "$qs" study "$scene" --shader dots_aa --frames 0,30 $tiny $small -o "$out/camera" || fail "exit $?"
+    v=$out/camera/views.csv
+    [ "$(tail -n +2 "$v" | wc -l)" -eq 2 ] || fail "expected 2 views (the camera at 2 frames)"
+    # (views.csv's truth holds a comma: the time is read as the line's last field.)
+    grep -q '^dots_aa,frame-30,.*,1$' "$v" || fail "frame 30 is not at time 1 (30 fps)"
+    grep -q '^dots_aa,frame-0,.*,0$' "$v" || fail "frame 0 is not at time 0"
+    cmp -s "$out/camera/images/dots_aa-frame-0/truth.png" "$out/camera/images/dots_aa-frame-30/truth.png" &&
+        fail "the animation did not move between frames 0 and 30"
+    # Each generated view at each frame of a range, at another rate.
+    "$qs" study "$scene" --shader dots_aa --frames 0:1 --fps 2 --views camera,magnified $tiny $small \
+        -o "$out/views" || fail "exit $?"
+    [ "$(tail -n +2 "$out/views/study.csv" | wc -l)" -eq 4 ] || fail "expected 4 rows (2 views x 2 frames)"
+    grep -q '^dots_aa,magnified-frame-1,.*,0[.]5$' "$out/views/views.csv" ||
+        fail "magnified at frame 1 is not at time 0.5"
+    expect=$src/tests/check/expect_exit.sh
+    "$expect" 2 '--frames: 3:1: B must not be less than A' "$qs" study "$scene" --shader dots_aa --frames 3:1 \
+        -o "$out/a" &&
+    "$expect" 2 "--frames: 'x' is not a frame" "$qs" study "$scene" --shader dots_aa --frames 0,x -o "$out/b" &&
+    "$expect" 2 '--frames: frame 2 is named twice' "$qs" study "$scene" --shader dots_aa --frames 0:3,2 \
+        -o "$out/c" &&
+    "$expect" 2 '--frames and --time' "$qs" study "$scene" --shader dots_aa --frames 0 --time 1 -o "$out/d" ||
+        fail "bad frames not refused"
+    for o in a b c d; do [ -e "$out/$o" ] && fail "a refused study made its folder $o"; done
+    ;;
+memory)
+    expect=$src/tests/check/expect_exit.sh
+    "$expect" 1 'study: the ss8x8 mode .*needs .*, more than the 64.0 MiB available .--memory-limit' \
+        "$qs" study "$plane" --shader dots_aa --size 512 --views camera --memory-limit 64M -o "$out/a" &&
+    "$expect" 1 'study: the truth .*needs .*, more than the 64.0 MiB available' \
+        "$qs" study "$plane" --shader dots_aa --views camera --modes fine --no-reference --size 512 --truth 64 \
+        --memory-limit 64M -o "$out/b" &&
+    "$expect" 2 '--size times --truth is over 32768 pixels on a side' \
+        "$qs" study "$plane" --shader dots_aa --size 1024 --truth 64 -o "$out/e" &&
+    "$expect" 2 '--memory-limit' "$qs" study "$plane" --shader dots_aa --memory-limit lots -o "$out/c" ||
+        fail "not refused as expected"
+    for o in a b c e; do [ -e "$out/$o" ] && fail "a refused study made its folder $o"; done
+    "$qs" study "$plane" --shader dots_aa --views camera --modes fine,ss2x2 $small --memory-limit 2G -o "$out/d" ||
+        fail "a study within its limit: exit $?"
+    ;;
 *) fail "unknown case" ;;
 esac
 echo "study_test.sh ($case): passed"
