@@ -20,6 +20,7 @@
 #include "translated_lawlor_mandelbrot/translated_lawlor_mandelbrot.h"
 #include "translated_bricks_aa/translated_bricks_aa.h"
 #include "translated_lawlor_stained_glass/translated_lawlor_stained_glass.h"
+#include "translated_texture_lookups/translated_texture_lookups.h"
 
 namespace {
 
@@ -117,5 +118,45 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
             INFO(name << ", " << m.what);
             CHECK(differing_pixels(expected, got) == 0);
         }
+    }
+}
+
+TEST_CASE("a translation's texture lookups, every form, draw what the interpreter draws, to the bit, under each rule",
+          "[translate][textures]") {
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/glsl/textures/texture_lookups.frag");
+    frontend::CompiledProgram c = frontend::compile_glsl(frag, std::nullopt);
+    const std::string vertex = c.vertex.text;
+    const Program& interpreted = add_compiled_program(
+        std::make_unique<interpreter::GlslProgram>("interpreted texture_lookups", std::move(c)), "interpreted", vertex, frag.text);
+    const Program& compiled = add_compiled_program(
+        std::unique_ptr<Program>(new ProgramOf<translated_texture_lookups::TranslatedTextureLookups>), "translated", vertex,
+        frag.text);
+    // The plane's texture with trilinear mipmaps, and the shipped volume with them as `volume`.
+    Scene scene = load_scene(test::kPlane);
+    const Sampler trilinear{Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat};
+    scene.textures.at(0).sampler = trilinear;
+    Texture volume;
+    volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
+    volume.sampler = trilinear;
+    volume.dims = 3, volume.depth = 32;
+    volume.field = "volume";
+    scene.textures.push_back(volume);
+    scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
+    const std::pair<Derivatives, Precision> modes[] = {{Derivatives::Fine, Precision::Float},
+                                                       {Derivatives::CoarseLower, Precision::Float},
+                                                       {Derivatives::CoarseUpper, Precision::Float},
+                                                       {Derivatives::Analytic, Precision::Float},
+                                                       {Derivatives::Fine, Precision::Double}};
+    for (const auto& [derivatives, precision] : modes) {
+        FrameRequest r;
+        r.width = 64, r.height = 48;
+        r.shading.derivatives = derivatives;
+        r.shading.precision = precision;
+        r.shader_override = interpreted.info().name;
+        const Framebuffer expected = render_frame(scene, r);
+        r.shader_override = compiled.info().name;
+        const Framebuffer got = render_frame(scene, r);
+        INFO("derivatives " << int(derivatives) << ", precision " << int(precision));
+        CHECK(differing_pixels(expected, got) == 0);
     }
 }
