@@ -57,19 +57,18 @@ void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex,
                    "(docs/glsl.md); its vertex shader is --vert's, or one written for it")
         ->option_text("FRAG");
     cmd.add_option("--vert", vertex, "the GLSL vertex shader for --glsl")->option_text("VERT");
-    cmd.add_flag("--compile", compile,
-                 "run --glsl as its C++ translation, compiled now if the plugin cache lacks it (once\n"
-                 "cached it is used without --compile; docs/glsl.md)");
+    cmd.add_flag("--compile", compile, kCompileHelp);
 }
 
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader) {
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader,
+                                const std::vector<ShadeRequest>& shading) {
     if (fragment.empty()) {
         if (!vertex.empty()) throw UsageError("--vert: give the fragment shader with --glsl");
         return nullptr;
     }
     if (!shader.empty()) throw UsageError("--glsl and --shader: give one shader to draw with");
     const GlslShader s = load_glsl_shader(fragment, vertex.empty() ? std::nullopt : std::optional<fs::path>(vertex),
-                                          compile ? GlslWay::Compile : GlslWay::Cached);
+                                          glsl_way(compile), shading);
     for (const std::string& w : s.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
     shader = std::string(s.program->info().name);
     return s.program;

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "render/compiled_glsl.h"
 #include "scenes/output_file.h"
 #include "shading/program.h"
 
@@ -70,9 +71,17 @@ void add_plugin_option(CLI::App& cmd, std::vector<std::string>& plugins);
 // --glsl FRAG and --vert VERT: a user's GLSL drawn on every object (render/glsl_shaders.h).
 // --compile: run it as its compiled C++ translation (render/compiled_glsl.h).
 void add_glsl_options(CLI::App& cmd, std::string& fragment, std::string& vertex, bool& compile);
+// What --compile says, for every command that takes GLSL files.
+inline constexpr const char* kCompileHelp =
+    "run the GLSL as its C++ translation, compiled now where the plugin cache lacks it\n"
+    "(once cached it is used without --compile; docs/glsl.md)";
+// The way GLSL files run: the cached translation where there is one, compiled first with --compile.
+inline GlslWay glsl_way(bool compile) { return compile ? GlslWay::Compile : GlslWay::Cached; }
 // Compiles the shaders --glsl and --vert name, if any, and names their program in `shader`
-// (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings.
-const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader);
+// (refusing --shader beside --glsl); returns it, or nullptr. Prints glslang's warnings. The
+// compiled translation, where it is used, shades what `shading` asks (all ways without it).
+const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader,
+                                const std::vector<ShadeRequest>& shading = {});
 // The warning, once, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's limit.
 void warn_loop_limit(const Program* program);
 

@@ -153,8 +153,14 @@ fs::path beside(const fs::path& expected, const char* what) {
     return expected.parent_path() / (expected.stem().string() + "." + what + ".png");
 }
 
+// A case's GLSL files, loaded once the suite is read (load_glsl).
+struct CaseGlsl {
+    fs::path fragment;
+    std::optional<fs::path> vertex;
+};
+
 SuiteCase read_case(const Reader& in, const json& c, const std::string& field, const std::string& expected_dir,
-                    const SuiteLoadOptions& options) {
+                    const SuiteLoadOptions& options, std::optional<CaseGlsl>& glsl) {
     in.only(c, field, {"name", "scene", "shader", "glsl", "vert", "size", "time", "derivatives", "backend", "precision", "uniforms", "expected",
                        "tolerance"});
     SuiteCase sc;
@@ -178,14 +184,8 @@ SuiteCase read_case(const Reader& in, const json& c, const std::string& field, c
     if (c.contains("glsl")) {
         if (c.contains("shader")) in.fail(field + ".glsl", "give one of shader and glsl");
         // A user's GLSL files beside the suite, compiled once per pair of files for the whole run.
-        const fs::path fragment = in.entry(in.text(c["glsl"], field + ".glsl"), field + ".glsl", options);
-        std::optional<fs::path> vertex;
-        if (c.contains("vert")) vertex = in.entry(in.text(c["vert"], field + ".vert"), field + ".vert", options);
-        try {
-            r.shader_override = std::string(load_glsl_shader(fragment, vertex).program->info().name);
-        } catch (const std::runtime_error& e) {
-            in.fail(field + ".glsl", e.what());
-        }
+        glsl = CaseGlsl{in.entry(in.text(c["glsl"], field + ".glsl"), field + ".glsl", options), std::nullopt};
+        if (c.contains("vert")) glsl->vertex = in.entry(in.text(c["vert"], field + ".vert"), field + ".vert", options);
     }
     if (c.contains("size")) {
         const std::string s = in.text(c["size"], field + ".size");
@@ -415,10 +415,18 @@ Suite parse_suite(std::string_view text, const fs::path& file, const SuiteLoadOp
     // share would be one case's image removed or overwritten by the other.
     std::map<std::string, std::pair<std::size_t, const char*>> owner;
     std::set<std::string> names;
+    // Each pair of GLSL files, with the cases that draw it (the first names it in a message).
+    std::map<std::pair<std::string, std::string>, std::pair<CaseGlsl, std::vector<std::size_t>>> glsl_cases;
     for (std::size_t i = 0; i < doc["cases"].size(); ++i) {
         const std::string field = "cases[" + std::to_string(i) + "]";
         if (!doc["cases"][i].is_object()) in.fail(field, "expected an object");
-        SuiteCase c = read_case(in, overlay(defaults, doc["cases"][i]), field, expected_dir, options);
+        std::optional<CaseGlsl> glsl;
+        SuiteCase c = read_case(in, overlay(defaults, doc["cases"][i]), field, expected_dir, options, glsl);
+        if (glsl) {
+            auto& [files, cases] = glsl_cases[{glsl->fragment.string(), glsl->vertex ? glsl->vertex->string() : ""}];
+            files = *glsl;
+            cases.push_back(i);
+        }
         if (!names.insert(c.name).second) in.fail(field + ".name", "'" + c.name + "' is the name of an earlier case");
         for (const auto& [file_of, role] :
              {std::pair{&c.expected, "expected image"}, std::pair{&c.actual, "actual image"},
@@ -432,6 +440,19 @@ Suite parse_suite(std::string_view text, const fs::path& file, const SuiteLoadOp
             }
         }
         suite.cases.push_back(std::move(c));
+    }
+    // Compiled once for what all its cases ask, where it runs compiled (render/compiled_glsl.h).
+    for (const auto& [key, files_and_cases] : glsl_cases) {
+        const auto& [files, cases] = files_and_cases;
+        std::vector<ShadeRequest> shading;
+        for (std::size_t i : cases) shading.push_back(shade_request(suite.cases[i].request));
+        std::string shader;
+        try {
+            shader = std::string(load_glsl_shader(files.fragment, files.vertex, options.glsl_way, shading).program->info().name);
+        } catch (const std::runtime_error& e) {
+            in.fail("cases[" + std::to_string(cases.front()) + "].glsl", e.what());
+        }
+        for (std::size_t i : cases) suite.cases[i].request.shader_override = shader;
     }
     suite.inputs.add(file);
     return suite;

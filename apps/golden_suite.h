@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "render/compiled_glsl.h"
 #include "render/scene_render.h"
 #include "scenes/output_file.h"
 
@@ -58,6 +59,9 @@ struct SuiteLoadOptions {
     // theirs (--allow-outside-paths).
     bool allow_outside = false;
     std::uint64_t memory_limit = 0;  // what reading it may take; 0: what the system has available
+    // How the cases' GLSL files run: as render runs --glsl (the cached translation where there is
+    // one; with --compile compiled first).
+    GlslWay glsl_way = GlslWay::Cached;
 };
 
 // Reads a suite file; throws std::runtime_error naming the file and the field of anything wrong

@@ -21,6 +21,7 @@
 #include "apps/command_line.h"
 #include "apps/golden_suite.h"
 #include "apps/render_command.h"
+#include "apps/shader_test_command.h"
 #include "apps/translate_command.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
@@ -99,7 +100,7 @@ void add_check_options(CLI::App& cmd, CheckArgs& a) {
 
 struct TestArgs {
     std::vector<std::string> inputs, plugins;
-    bool update = false, merge = false, allow_outside = false;
+    bool update = false, merge = false, allow_outside = false, compile_glsl = false;
     int jobs = 0;
     std::string junit, html, shard, report, memory_limit;
 };
@@ -117,6 +118,7 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
     cmd.add_flag("--allow-outside-paths", a.allow_outside,
                  "let the suite name scenes and expected images outside its own folder (and --merge --html\n"
                  "read images outside each fragment's folder); by default only files beside it");
+    cmd.add_flag("--compile", a.compile_glsl, kCompileHelp);
     cmd.add_option("--memory-limit", a.memory_limit,
                    "memory the cases rendered at once may use together, e.g. 4G (default: what the system\n"
                    "has available)")
@@ -127,6 +129,7 @@ void add_test_options(CLI::App& cmd, TestArgs& a) {
 struct GalleryArgs {
     std::string output;
     std::vector<std::string> scenes, plugins, glsl;
+    bool compile_glsl = false;
     int size = 160, columns = 6, threads = 0;
     double time = 1.0;
 };
@@ -144,6 +147,7 @@ void add_gallery_options(CLI::App& cmd, GalleryArgs& a) {
     cmd.add_option("--time", a.time, "the `time` uniform in seconds (default 1)")->check(kFinite)->option_text("T");
     cmd.add_option("--glsl", a.glsl, "GLSL fragment shaders to draw instead of the catalogue, on one sheet (docs/glsl.md)")
         ->option_text("FRAG...");
+    cmd.add_flag("--compile", a.compile_glsl, kCompileHelp);
     add_plugin_option(cmd, a.plugins);
     cmd.add_option("--threads", a.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024))->option_text("N");
 }
@@ -181,7 +185,7 @@ int cmd_shaders(const std::string& export_dir) {
 int cmd_gallery(const GalleryArgs& a) {
     GalleryRequest request;
     for (const std::string& file : a.glsl) {
-        const GlslShader shader = load_glsl_shader(file, std::nullopt);
+        const GlslShader shader = load_glsl_shader(file, std::nullopt, glsl_way(a.compile_glsl), {shade_request(request.frame)});
         for (const std::string& w : shader.warnings) std::fprintf(stderr, "quadshade: %s\n", w.c_str());
         request.collections = {kGlslCollection};
     }
@@ -339,6 +343,7 @@ int cmd_test(const TestArgs& a) {
         request.jobs = a.jobs;
         request.load.allow_outside = a.allow_outside;
         request.load.memory_limit = memory;
+        request.load.glsl_way = glsl_way(a.compile_glsl);
         if (!a.shard.empty() && !parse_shard(a.shard, request.shard, request.shards)) {
             throw UsageError("--shard: expected K/N with 1 <= K <= N <= " + std::to_string(kSuiteShards) + ", got '" +
                              a.shard + "'");
@@ -361,7 +366,7 @@ int cmd_test(const TestArgs& a) {
 
 int main(int argc, char** argv) {
     remove_temporaries_on_signals();
-    CLI::App app("quadshade: CPU renderer of GLSL-style procedural shaders with GPU-exact derivatives", "quadshade");
+    CLI::App app("quadshade: CPU renderer of GLSL procedural shaders with GPU-exact derivatives", "quadshade");
     app.require_subcommand(1, 1);
     app.get_formatter()->column_width(26);
     RenderArgs render;
@@ -412,6 +417,11 @@ int main(int argc, char** argv) {
         "translate", "write a GLSL shader as a C++ translation to read, edit and build as a plugin (with a\n"
                      "CMakeLists.txt that builds it against the installed quadshade)");
     add_translate_options(*translate_cmd, translate);
+    ShaderTestArgs shader_test;
+    CLI::App* shader_test_cmd = app.add_subcommand(
+        "shader-test", "run piglit's .shader_test files with quadshade as the GL driver: a line per test, a\n"
+                       "summary by folder and skip reason (exit 3 when a test fails or crashes)");
+    add_shader_test_options(*shader_test_cmd, shader_test);
     CLI::App* help_cmd = app.add_subcommand("help", "this help");
     try {
         app.parse(argc, argv);
@@ -443,6 +453,7 @@ int main(int argc, char** argv) {
         if (bake_cmd->parsed()) return cmd_bake(bake);
         if (study_cmd->parsed()) return cmd_study(study);
         if (translate_cmd->parsed()) return cmd_translate(translate);
+        if (shader_test_cmd->parsed()) return cmd_shader_test(shader_test);
         if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
     } catch (const UsageError& e) {

@@ -288,7 +288,7 @@ int cmd_render(RenderArgs& a) {
     for (const std::string& plugin : a.plugins) {
         for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
     }
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, req.shader_override);
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, req.shader_override, {shade_request(req)});
     // The libraries first: the render's memory is measured from here, and its plan is checked
     // against what is left.
     load_image_library();

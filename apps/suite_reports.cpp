@@ -77,8 +77,12 @@ struct FragmentReader {
         const json& v = at(object, key, field);
         const std::string f = field.empty() ? key : field + "." + key;
         if (!v.is_number_integer()) fail(f, "expected a whole number");
-        if (v.is_number_unsigned() ? v.get<unsigned long long>() > (unsigned long long)hi
-                                   : v.get<long long>() < lo || v.get<long long>() > hi) {
+        // A JSON integer without a sign is read as unsigned, 0 included: both bounds hold for it too.
+        const bool in_range = v.is_number_unsigned()
+                                  ? v.get<unsigned long long>() <= (unsigned long long)hi &&
+                                        (lo <= 0 || v.get<unsigned long long>() >= (unsigned long long)lo)
+                                  : v.get<long long>() >= lo && v.get<long long>() <= hi;
+        if (!in_range) {
             fail(f, "expected a whole number within " + std::to_string(lo) + ".." + std::to_string(hi));
         }
         return v.get<long long>();

@@ -34,6 +34,8 @@ struct DrawCall {
     // every channel alpha included: src * a + dst * (1 - a), each product rounded (llvmpipe's
     // arithmetic, measured), and no depth writes (the depth test still applies).
     bool blend = false;
+    // Bit i: keep only what has VertexOut::clip_distances[i] >= 0 (GL_CLIP_PLANEi enabled).
+    unsigned clip_distances = 0;
 };
 
 }  // namespace qs

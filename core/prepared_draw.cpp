@@ -13,7 +13,7 @@ std::vector<PreparedDraw> prepare_draws(std::span<const DrawCall> draws, const S
         const Needs& needs = call.program->info().needs;
         const DrawShading shading = choose_shading(needs, call.texture_lod, request);
         prepared.push_back({&call, shading.mode, shading.quads, needs.frag_coord || request.general_path,
-                            needs.varyings, needs.flat_varyings});
+                            needs.varyings, needs.flat_varyings, needs.noperspective_varyings});
     }
     return prepared;
 }

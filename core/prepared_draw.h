@@ -18,6 +18,7 @@ struct PreparedDraw {
     bool frag_coord;   // gl_FragCoord is read (Needs::frag_coord), or the general path fills it
     int varyings;      // Needs::varyings
     unsigned flat;     // Needs::flat_varyings
+    unsigned noperspective;  // Needs::noperspective_varyings
 };
 
 // Each of `draws` prepared under `request`, in order. Throws UnsupportedRequest for a request no

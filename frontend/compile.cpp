@@ -129,7 +129,7 @@ GlslSource default_vertex_shader(const GlslSource& fragment) {
     ParsedStage f = parse(fragment, EShLangFragment, warnings);
     // The fragment stage's inputs, in the order the code reads them.
     ir::Program scratch;
-    ProgramInterface interface{scratch, {}};
+    ProgramInterface interface{scratch, {}, {}};
     StageLowering lowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface);
     (void)lowering.run();
     const int version = f.version;
@@ -166,7 +166,7 @@ GlslSource default_vertex_shader(const GlslSource& fragment) {
                             "st, uv or texcoord (texture coordinates), texcoord1, normal, color, or position or P (the "
                             "object-space position)");
         }
-        text += std::string(modern ? (v.flat ? "flat out " : "out ") : "varying ") + glsl_type(v.components) + " " + n + ";\n";
+        text += std::string(modern ? (v.flat ? "flat out " : v.noperspective ? "noperspective out " : "out ") : "varying ") + glsl_type(v.components) + " " + n + ";\n";
         body += "    " + n + " = " + value + (v.components == 4 ? "" : "." + swizzle) + ";\n";
     }
     text += "void main() {\n" + body + "    gl_Position = ftransform();\n}\n";
@@ -174,25 +174,26 @@ GlslSource default_vertex_shader(const GlslSource& fragment) {
     return {(f_path.parent_path() / (f_path.stem().string() + ".default.vert")).string(), text};
 }
 
-CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex) {
+CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex,
+                             const CompileOptions& options) {
     CompiledProgram out;
     out.vertex = vertex ? *vertex : default_vertex_shader(fragment);
     ParsedStage f = parse(fragment, EShLangFragment, out.warnings);
     ParsedStage v = parse(out.vertex, EShLangVertex, out.warnings);
     ir::Program& program = out.program;
     program.version = f.version;
-    ProgramInterface interface{program, {}};
+    ProgramInterface interface{program, {}, options};
     program.fragment = StageLowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface).run();
     program.vertex = StageLowering(StageKind::Vertex, out.vertex.file, *v.shader->getIntermediate(), interface).run();
     for (const VaryingSlot& s : interface.varyings) {
         if (!s.written) {
-            throw GlslError(s.where + "error: varying '" + s.name + "' is read here but the vertex shader (" + out.vertex.file +
+            throw GlslLinkError(s.where + "error: varying '" + s.name + "' is read here but the vertex shader (" + out.vertex.file +
                             ") does not write it");
         }
     }
     bool position = false;
     for (const ir::Binding& b : program.vertex.outputs) position = position || b.source == ir::Source::Position;
-    if (!position) throw GlslError(out.vertex.file + ": error: the vertex shader does not write gl_Position");
+    if (!position) throw GlslLinkError(out.vertex.file + ": error: the vertex shader does not write gl_Position");
     static std::atomic<std::uint64_t> serials{0};
     program.vertex.serial = ++serials;
     program.fragment.serial = ++serials;

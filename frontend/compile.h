@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/compile_options.h"
 #include "frontend/glsl_error.h"
 #include "frontend/ir.h"
 
@@ -35,8 +36,10 @@ struct CompiledProgram {
 
 // Compiles `fragment` with `vertex`, or with the vertex shader default_vertex_shader() writes
 // for it. Throws GlslError with glslang's messages (FILE:LINE:COL: error: ...) for GLSL that
-// does not compile, and for what the interpreter does not run.
-CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex);
+// does not compile, GlslLinkError for stages that do not link, GlslUnsupported (a GlslError) for
+// what the interpreter does not run.
+CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex,
+                             const CompileOptions& options = {});
 
 // The vertex shader quadshade pairs with a fragment shader given alone: gl_Position from the
 // scene's transform, and each varying the fragment shader reads from the vertex attribute of

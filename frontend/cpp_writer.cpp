@@ -148,6 +148,8 @@ std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
     return out;
 }
 
+bool is_assignment(TOperator op) { return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign; }
+
 // A for loop as glslang nests it: its initialiser (one declarator) and the loop.
 bool is_for_sequence(TIntermAggregate* a) {
     if (!a || a->getOp() != glslang::EOpSequence) return false;
@@ -208,6 +210,7 @@ private:
     // ---- types ---------------------------------------------------------------------------------
     std::string type(const TType& t, const TIntermNode* at) const;
     std::string scalar_type(glslang::TBasicType b, const TIntermNode* at) const;
+    std::string sampler_type(const TType& t, const TIntermNode* at) const;
 
     // ---- names ---------------------------------------------------------------------------------
     std::string symbol_name(TIntermSymbol* s);
@@ -229,8 +232,10 @@ private:
     Expr constructor(TIntermAggregate* a);
     Expr conversion(TIntermTyped* from, const TType& to, TIntermTyped* at);
     std::string swizzle(TIntermBinary* b);
-    // A constant array read at a run-time index: a table member (glsl/table.h), one per contents.
-    std::string constant_table(TIntermConstantUnion* c);
+    // A constant array read at a run-time index: table members (glsl/table.h), one per contents,
+    // a vector's components each a table of its own.
+    std::string constant_table(TIntermConstantUnion* c, int component);
+    Expr table_read(TIntermConstantUnion* c, TIntermTyped* index);
     std::map<std::string, std::string> tables_;  // contents -> name
     std::string lvalue(TIntermTyped* n);
 
@@ -265,6 +270,16 @@ std::string StageWriter::scalar_type(glslang::TBasicType b, const TIntermNode* a
         case glslang::EbtVoid: return "void";
         default: refuse(at, "a value of this type");
     }
+}
+
+// A sampler's texture (shading/glsl/texture.h): one of the kinds the renderer binds.
+std::string StageWriter::sampler_type(const TType& t, const TIntermNode* at) const {
+    const glslang::TSampler& s = t.getSampler();
+    const bool plain = !t.isArray() && s.isCombined() && !s.isShadow() && !s.isArrayed() && !s.isMultiSample() &&
+                       s.getBasicType() == glslang::EbtFloat;
+    if (plain && s.dim == glslang::Esd2D) return "sampler2D";
+    if (plain && s.dim == glslang::Esd3D) return "sampler3D";
+    refuse(at, "a sampler of this kind");
 }
 
 std::string StageWriter::type(const TType& t, const TIntermNode* at) const {
@@ -366,6 +381,18 @@ void StageWriter::uniform_member(TIntermSymbol* s, const std::string& name) {
                 return;
             case ir::TransformUniform::Normal:
                 member_lines_.push_back("const mat3<F> " + name + " = mat3<F>(F(1.0f));  // the model-view is the identity");
+                return;
+            case ir::TransformUniform::Model:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.model);  // the scene's");
+                return;
+            case ir::TransformUniform::View:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.view);  // the scene's");
+                return;
+            case ir::TransformUniform::SceneProjection:
+                member_lines_.push_back("const mat4<F> " + name + " = transform<F>(u.projection);  // the scene's");
+                return;
+            case ir::TransformUniform::SceneNormal:
+                member_lines_.push_back("const mat3<F> " + name + " = transform<F>(u.normal_matrix);  // the scene's");
                 return;
         }
     }
@@ -482,20 +509,22 @@ Expr StageWriter::constant_value(const glslang::TConstUnionArray& a, int first, 
     return {text + ")", kPrimary, false};
 }
 
-std::string StageWriter::constant_table(TIntermConstantUnion* c) {
+std::string StageWriter::constant_table(TIntermConstantUnion* c, int component) {
     const TType& t = c->getType();
-    if (!t.isArray() || t.getArraySizes()->getNumDims() != 1 || !TType(t, 0).isScalar()) {
-        refuse(c, "a constant array of vectors, matrices or structs read at a run-time index");
+    const TType element_type(t, 0);
+    if (!t.isArray() || t.getArraySizes()->getNumDims() != 1 || element_type.isMatrix() || element_type.isStruct()) {
+        refuse(c, "a constant array of arrays, matrices or structs read at a run-time index");
     }
-    const int n = t.getOuterArraySize();
+    const int n = t.getOuterArraySize(), size = element_type.getVectorSize();
     const glslang::TConstUnionArray& a = c->getConstArray();
     std::string element, values;
     for (int i = 0; i < n; ++i) {
+        const glslang::TConstUnion& x = a[i * size + component];
         std::string v;
         switch (t.getBasicType()) {
-            case glslang::EbtFloat: element = "float", v = float_literal(a[i].getDConst()); break;
-            case glslang::EbtInt: element = "int", v = std::to_string(a[i].getIConst()); break;
-            case glslang::EbtUint: element = "unsigned", v = std::to_string(a[i].getUConst()) + "u"; break;
+            case glslang::EbtFloat: element = "float", v = float_literal(x.getDConst()); break;
+            case glslang::EbtInt: element = "int", v = std::to_string(x.getIConst()); break;
+            case glslang::EbtUint: element = "unsigned", v = std::to_string(x.getUConst()) + "u"; break;
             default: refuse(c, "a constant array of bools read at a run-time index");
         }
         values += (i ? ", " : "") + v;
@@ -504,9 +533,19 @@ std::string StageWriter::constant_table(TIntermConstantUnion* c) {
     if (auto it = tables_.find(key); it != tables_.end()) return it->second;
     const std::string name = "table" + std::to_string(tables_.size() + 1);
     tables_[key] = name;
-    member_lines_.push_back("// the constant array of GLSL line " + std::to_string(c->getLoc().line) + ", read per fragment");
+    const std::string what = size == 1 ? "" : std::string(" (its ") + "xyzw"[component] + "s)";
+    member_lines_.push_back("// the constant array of GLSL line " + std::to_string(c->getLoc().line) + what + ", read per fragment");
     member_lines_.push_back("static constexpr table<" + element + ", " + std::to_string(n) + "> " + name + "{{" + values + "}};");
     return name;
+}
+
+Expr StageWriter::table_read(TIntermConstantUnion* c, TIntermTyped* index) {
+    const std::string i = "[" + as_typed(index, index->getType()).text + "]";
+    const TType element_type(c->getType(), 0);
+    if (element_type.isScalar()) return {constant_table(c, 0) + i, kPostfix, false};
+    std::string text = type(element_type, c) + "(";
+    for (int k = 0; k < element_type.getVectorSize(); ++k) text += (k ? ", " : "") + constant_table(c, k) + i;
+    return {text + ")", kPrimary, false};
 }
 
 Expr StageWriter::constant(TIntermConstantUnion* c) { return constant_value(c->getConstArray(), 0, c->getType(), c); }
@@ -605,7 +644,7 @@ Expr StageWriter::binary(TIntermBinary* b) {
             return {parens(base, kPostfix) + lv, kPostfix, false};
         }
         case glslang::EOpIndexIndirect: {
-            if (auto* c = b->getLeft()->getAsConstantUnion()) return Expr{constant_table(c) + "[" + as_typed(b->getRight(), b->getRight()->getType()).text + "]", kPostfix, false};
+            if (auto* c = b->getLeft()->getAsConstantUnion()) return table_read(c, b->getRight());
             Expr base = expr(b->getLeft());
             Expr i = expr(b->getRight());
             if (!i.plain) refuse(b, "an index that varies per fragment");
@@ -614,7 +653,7 @@ Expr StageWriter::binary(TIntermBinary* b) {
         default: break;
     }
     if (b->getAsBinaryNode() && (op == glslang::EOpAssign || b->getType().getQualifier().storage == glslang::EvqTemporary) &&
-        (op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign)) {
+        is_assignment(op)) {
         refuse(b, "an assignment inside an expression");
     }
     Expr l = expr(b->getLeft());
@@ -929,20 +968,26 @@ void StageWriter::assign_to(TIntermTyped* target, const std::string& value, cons
 void StageWriter::assignment(TIntermBinary* b) {
     const TOperator op = b->getOp();
     TIntermTyped* target = b->getLeft();
+    // `a = b = v`, `a += b *= v`: the inner assignment first, then the outer reads its target.
+    TIntermTyped* value = b->getRight();
+    if (auto* inner = value->getAsBinaryNode(); inner && is_assignment(inner->getOp())) {
+        assignment(inner);
+        value = inner->getLeft();
+    }
     if (op == glslang::EOpAssign) {
         if (auto* s = target->getAsSymbolNode()) {
             auto it = locals_.find(s->getId());
                 if (it != locals_.end() && !it->second.declared && it->second.declaring == b) {
                 it->second.declared = true;
                 it->second.mask_depth = int(masks_.size());
-                Expr v = it->second.plain_counter ? expr(b->getRight()) : as_typed(b->getRight(), b->getType());
+                Expr v = it->second.plain_counter ? expr(value) : as_typed(value, b->getType());
                 const std::string t = it->second.plain_counter ? "int" : type(s->getType(), b);
                 const std::string v_text = s->getType().isArray() ? v.text : v.text;
                 line(t + " " + it->second.name + " = " + v_text + ";", b);
                 return;
             }
         }
-        assign_to(target, as_typed(b->getRight(), b->getType()).text, b);
+        assign_to(target, as_typed(value, b->getType()).text, b);
         return;
     }
     const char* o = nullptr;
@@ -960,10 +1005,10 @@ void StageWriter::assignment(TIntermBinary* b) {
         case glslang::EOpRightShiftAssign: o = ">>"; break;
         default: refuse(b, "this assignment");
     }
-    Expr r = expr(b->getRight());
-    if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat) r = as_typed(b->getRight(), b->getRight()->getType());
+    Expr r = expr(value);
+    if (r.plain && value->getType().getBasicType() != glslang::EbtFloat) r = as_typed(value, value->getType());
     const std::string lv = lvalue(target);
-    const bool widened = !target->getType().isScalar() && b->getRight()->getType().isScalar();
+    const bool widened = !target->getType().isScalar() && value->getType().isScalar();
     if (masked_target(target) || widened) {
         assign_to(target, (lv.back() == ')' ? type(target->getType(), b) + "(" + lv + ")" : lv) + " " + o + " " +
                               parens(r, kMultiplicative + 1), b);
@@ -1072,7 +1117,7 @@ std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
             if (auto* s = n->getAsSymbolNode()) ids.push_back(s->getId());
         }
         bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) add(b->getLeft());
+            if (is_assignment(b->getOp())) add(b->getLeft());
             return true;
         }
         bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
@@ -1214,7 +1259,7 @@ void StageWriter::statement(TIntermNode* n) {
         refuse(n, "this statement");
     }
     if (auto* b = n->getAsBinaryNode()) {
-        if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) return assignment(b);
+        if (is_assignment(b->getOp())) return assignment(b);
         refuse(n, "an expression statement with no effect");
     }
     if (auto* u = n->getAsUnaryNode()) {
@@ -1333,7 +1378,7 @@ bool StageWriter::plain_counter(TIntermAggregate* seq, long long id) {
             if (auto* s = x->getAsSymbolNode(); s && s->getId() == id) ++n;
         }
         bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (b->getOp() >= glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) check(b->getLeft());
+            if (is_assignment(b->getOp())) check(b->getLeft());
             return true;
         }
         bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
@@ -1389,13 +1434,15 @@ void StageWriter::function(TIntermAggregate* f) {
             TIntermSymbol* s = p->getAsSymbolNode();
             if (!s) continue;
             const glslang::TStorageQualifier q = s->getQualifier().storage;
-            if (s->getType().getBasicType() == glslang::EbtSampler) refuse(s, "a sampler parameter");
             Local l;
             l.name = s->getName().empty() ? fresh("unnamed") : cpp_identifier(s->getName().c_str(), where(s));
             l.declared = true;
             locals_[s->getId()] = l;
             const bool ref = q == glslang::EvqOut || q == glslang::EvqInOut;
-            params += (params.empty() ? "" : ", ") + type(s->getType(), s) + (ref ? "& " : " ") + l.name;
+            const std::string t = s->getType().getBasicType() == glslang::EbtSampler ? "const " + sampler_type(s->getType(), s) + "&"
+                                  : ref ? type(s->getType(), s) + "&"
+                                        : type(s->getType(), s);
+            params += (params.empty() ? "" : ", ") + t + " " + l.name;
         }
     }
     return_type_ = type(f->getType(), f);
@@ -1604,6 +1651,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << vertex_body << "};\n\n";
     h << "// What the vertex stage hands the fragment stage, one vertex at a time in float.\n"
       << "struct VertexStage {\n"
+      << "    static constexpr GlslFiles glsl{" << string_literal(name + ".vert") << "};  // beside the plugin\n"
       << "    template <class T>\n"
       << "    struct Varyings {\n";
     std::string tie;
@@ -1650,10 +1698,10 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
         }
         h << "    };\n";
     }
-    h << "    static constexpr ShaderInfo info = " << (p.uniforms.empty() ? "" : "with_uniforms(") << "with_glsl_version(\n"
-      << "        ShaderInfo{.name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
-      << "                   .description = " << string_literal("translated from " + frag_file) << ",\n"
-      << "                   .needs = Needs{.coordinates = Coordinates::" << coordinates
+    h << "    static constexpr ShaderInfo info{\n"
+      << "        .name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
+      << "        .description = " << string_literal("translated from " + frag_file) << ",\n"
+      << "        .needs = {.coordinates = Coordinates::" << coordinates
       << ", .derivatives = " << (p.fragment.derivatives ? "true" : "false");
     bool texture = false;
     std::vector<std::pair<std::string, int>> samplers;
@@ -1671,13 +1719,14 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
         h << "}}";
     }
     h << "},\n"
-      << "                   .glsl_vertex = {" << string_literal(name + ".vert") << "},  // beside the plugin\n"
-      << "                   .glsl_fragment = {" << string_literal(name + ".frag") << "}},\n"
-      << "        " << p.version << ")" << (p.uniforms.empty() ? "" : ", kUniforms)") << ";\n"
+      << "        .glsl_fragment = {" << string_literal(name + ".frag") << "},  // beside the plugin\n"
+      << "        .glsl_version = " << p.version << ",\n";
+    if (!p.uniforms.empty()) h << "        .uniforms = kUniforms,\n";
+    h << "    };\n"
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
       << "    static auto fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {\n"
-      << "        FragmentShader<F> shader{in, u};\n"
+      << "        FragmentShader<F> shader{in, u, {}};\n"
       << "        shader.main();\n"
       << "        return shader.out" << (fw.discards() ? "" : ".gl_FragColor") << ";\n"
       << "    }\n"

@@ -18,7 +18,7 @@ void component_banks(const glslang::TType& t, std::vector<ir::Bank>& out) {
     if (t.isArray()) {
         const glslang::TType e = element_type(t);
         const int n = t.getOuterArraySize();
-        if (n <= 0) throw GlslError("an array of unknown size ('" + type_name(t) + "')");
+        if (n <= 0) throw GlslUnsupported("an array of unknown size ('" + type_name(t) + "')");
         for (int i = 0; i < n; ++i) component_banks(e, out);
         return;
     }
@@ -27,7 +27,7 @@ void component_banks(const glslang::TType& t, std::vector<ir::Bank>& out) {
         return;
     }
     ir::Bank b;
-    if (!bank_of(t.getBasicType(), b)) throw GlslError("type '" + type_name(t) + "' is not supported");
+    if (!bank_of(t.getBasicType(), b)) throw GlslUnsupported("type '" + type_name(t) + "' is not supported");
     const int n = t.isMatrix() ? t.getMatrixCols() * t.getMatrixRows() : t.getVectorSize();
     out.insert(out.end(), std::size_t(n), b);
 }

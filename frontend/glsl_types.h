@@ -15,7 +15,7 @@ namespace qs::frontend {
 bool bank_of(glslang::TBasicType t, ir::Bank& bank);
 
 // The banks of every scalar component of `t`, in GLSL's order (see ir.h). Throws GlslError
-// (without a position) for a type that has none: samplers, doubles, 64-bit or 16-bit types.
+// (GlslUnsupported, without a position) for a type that has none: samplers, doubles, 64-bit or 16-bit types.
 void component_banks(const glslang::TType& t, std::vector<ir::Bank>& out);
 std::vector<ir::Bank> component_banks(const glslang::TType& t);
 int component_count(const glslang::TType& t);

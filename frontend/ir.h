@@ -23,6 +23,7 @@ namespace qs::ir {
 
 enum class Bank : std::uint8_t { Float, Int, Uint, Bool };
 inline constexpr int kBanks = 4;
+inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_CLIP_DISTANCES)
 
 // The operations. Unless noted: d is the destination register, a, b, c the operands, all of
 // the operation's banks (F: float, I: int, U: uint, B: bool), one component each.
@@ -142,7 +143,11 @@ enum class Source : std::uint8_t {
     FrontFacing,   // gl_FrontFacing
     Varying,       // interpolated float `index` (fragment) / written float `index` (vertex)
     Attribute,     // component `index` of vertex attribute `slot` (Attribute)
+    GenericAttribute,  // component `index` of generic vertex attribute `slot` (its location)
+    VertexId,      // gl_VertexID
     Position,      // gl_Position component `index` (vertex output)
+    ClipDistance,  // gl_ClipDistance[index] (vertex output)
+    ClipVertex,    // gl_ClipVertex component `index` (vertex output)
     Color,         // the fragment colour, component `index` (fragment output)
 };
 
@@ -199,10 +204,21 @@ struct Stage {
     bool loops = false;
 };
 
+// A vertex input bound to generic attributes (frontend/compile_options.h): `slots` consecutive
+// locations from `location`, one per matrix column and array element, each `components` wide.
+struct GenericAttribute {
+    std::string name;
+    int location = 0;
+    int slots = 1;
+    int components = 4;
+    Bank bank = Bank::Float;
+};
+
 // A varying float of the interface between the stages.
 struct Varying {
     std::string name;  // GLSL name (and component)
     bool flat = false;
+    bool noperspective = false;  // interpolated linearly in the window
 };
 
 struct Program {
@@ -215,6 +231,8 @@ struct Program {
     bool reads_frag_coord = false;
     bool reads_front_facing = false;
     std::vector<Attribute> attributes;  // the vertex inputs the vertex stage reads
+    std::vector<GenericAttribute> generic_attributes;  // those bound to generic attributes
+    bool reads_vertex_id = false;
 };
 
 }  // namespace qs::ir

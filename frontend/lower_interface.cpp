@@ -2,7 +2,10 @@
 // built-in inputs and outputs, and the names by which quadshade binds a user's own attributes
 // and matrices (frontend/binding_names.h).
 
+#include <algorithm>
+#include <array>
 #include <bit>
+#include <map>
 
 #include "frontend/binding_names.h"
 #include "frontend/glsl_types.h"
@@ -64,6 +67,122 @@ Place StageLowering::attribute(ir::Attribute which, int components) {
     if (!listed) interface_.program.attributes.push_back(which);
     Place p = bound_input(ir::Source::Attribute, std::uint16_t(which), std::vector<B>(std::size_t(components), B::Float));
     fixed_inputs_.emplace(key, p);
+    return p;
+}
+
+Place StageLowering::generic_attribute(TIntermSymbol* node) {
+    const glslang::TType& type = node->getType();
+    const std::string name = node->getName().c_str();
+    const auto found = attribute_locations_.find(node->getId());
+    if (found == attribute_locations_.end()) refuse(node, "attribute '" + name + "' has no location");
+    if (type.isStruct() || type.getBasicType() == glslang::EbtBool) refuse(node, "attribute '" + name + "' of this type is not supported");
+    B bank;
+    if (!bank_of(type.getBasicType(), bank)) refuse(node, "attribute '" + name + "' of type '" + type_name(type) + "' is not supported");
+    const int elements = type.isArray() ? type.getOuterArraySize() : 1;
+    const int columns = type.isMatrix() ? type.getMatrixCols() : 1;
+    const int components = type.isMatrix() ? type.getMatrixRows() : type.getVectorSize();
+    ir::GenericAttribute g{name, found->second, elements * columns, components, bank};
+    interface_.program.generic_attributes.push_back(g);
+    Place p;
+    for (int s = 0; s < g.slots; ++s) {
+        const Place slot = bound_input(ir::Source::GenericAttribute, std::uint16_t(g.location + s),
+                                       std::vector<B>(std::size_t(components), bank));
+        p.insert(p.end(), slot.begin(), slot.end());
+    }
+    return p;
+}
+
+// Locations for the vertex inputs bound to generic attributes: those the options bind by name,
+// then those with a layout(location), then the rest at the lowest free ones, as GL's linker.
+void StageLowering::assign_attribute_locations(const std::vector<TIntermSymbol*>& symbols) {
+    const std::map<std::string, int>& bound = *interface_.options.attribute_locations;
+    constexpr int kLocations = 16;  // GL_MAX_VERTEX_ATTRIBS
+    std::array<bool, kLocations> used{};
+    std::vector<std::pair<TIntermSymbol*, int>> inputs;  // and their slots
+    for (TIntermSymbol* s : symbols) {
+        const glslang::TQualifier& q = s->getQualifier();
+        if (q.storage != glslang::EvqVaryingIn || q.builtIn != glslang::EbvNone) continue;
+        const glslang::TType& t = s->getType();
+        const int slots = (t.isArray() ? std::max(t.getOuterArraySize(), 1) : 1) * (t.isMatrix() ? t.getMatrixCols() : 1);
+        inputs.emplace_back(s, slots);
+    }
+    const auto take = [&](TIntermSymbol* s, int location, int slots) {
+        if (location < 0 || location + slots > kLocations) {
+            refuse(s, "attribute '" + std::string(s->getName().c_str()) + "' needs locations beyond the " +
+                          std::to_string(kLocations) + " generic attributes");
+        }
+        for (int i = 0; i < slots; ++i) used[std::size_t(location + i)] = true;
+        attribute_locations_[s->getId()] = location;
+    };
+    for (int pass = 0; pass < 3; ++pass) {
+        for (const auto& [s, slots] : inputs) {
+            if (attribute_locations_.count(s->getId())) continue;
+            const auto named = bound.find(s->getName().c_str());
+            if (pass == 0 && named != bound.end()) {
+                take(s, named->second, slots);
+            } else if (pass == 1 && s->getQualifier().hasLocation()) {
+                take(s, int(s->getQualifier().layoutLocation), slots);
+            } else if (pass == 2) {
+                int at = 0;
+                while (at + slots <= kLocations) {
+                    bool free = true;
+                    for (int i = 0; i < slots; ++i) free = free && !used[std::size_t(at + i)];
+                    if (free) break;
+                    ++at;
+                }
+                take(s, at, slots);
+            }
+        }
+    }
+}
+
+Place StageLowering::front_facing() {
+    interface_.program.reads_front_facing = true;
+    if (auto it = fixed_inputs_.find("gl_FrontFacing"); it != fixed_inputs_.end()) return it->second;
+    Place p = bound_input(ir::Source::FrontFacing, 0, {B::Bool});
+    fixed_inputs_.emplace("gl_FrontFacing", p);
+    return p;
+}
+
+// Whether the shader redeclares the built-in variable `name` (`flat in vec4 gl_Color;`): glslang
+// lists a redeclared built-in among the linker objects, and one only used, not.
+bool StageLowering::redeclared(const std::string& name) const {
+    glslang::TIntermAggregate* root = ast_.getTreeRoot() ? ast_.getTreeRoot()->getAsAggregate() : nullptr;
+    if (!root) return false;
+    for (TIntermNode* n : root->getSequence()) {
+        auto* a = n->getAsAggregate();
+        if (!a || a->getOp() != glslang::EOpLinkerObjects) continue;
+        for (TIntermNode* o : a->getSequence()) {
+            if (auto* s = o->getAsSymbolNode(); s && name == s->getName().c_str()) return true;
+        }
+    }
+    return false;
+}
+
+// A fragment's gl_Color or gl_SecondaryColor: the vertex stage's front colour, interpolated as
+// the declaration says or, without a qualifier, as the shade model does; with two-sided colour,
+// the back colour on back-facing primitives.
+Place StageLowering::color_input(TIntermSymbol* node, const std::string& front, const std::string& back) {
+    const glslang::TQualifier& q = node->getQualifier();
+    // glslang marks every fragment input without an interpolation qualifier smooth, the built-in
+    // declaration of gl_Color included: only a redeclaration's smooth is the shader's. (One
+    // without a qualifier reads as smooth too; glslang keeps nothing that tells them apart.)
+    const bool smooth = q.smooth && redeclared(node->getName().c_str());
+    const bool flat = q.flat || (!smooth && !q.nopersp && interface_.options.flat_colors);
+    const std::vector<B> banks(4, B::Float);
+    VaryingSlot& f = interface_.fragment_varying(front, 4, B::Float, flat, where(node), q.nopersp);
+    const Place front_value = bound_input(ir::Source::Varying, 0, banks, std::uint16_t(f.first));
+    if (!interface_.options.two_sided_color) return front_value;
+    VaryingSlot& b = interface_.fragment_varying(back, 4, B::Float, flat, where(node), q.nopersp);
+    const Place back_value = bound_input(ir::Source::Varying, 0, banks, std::uint16_t(b.first));
+    const Place facing = front_facing();
+    Place p;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Slot r{B::Float, allocate(B::Float, Space::Variable)};
+        ir::Instr& in = emit(ir::Op::Select, B::Float);
+        in.d = r.reg, in.a = facing[0].reg, in.b = front_value[i].reg, in.c = back_value[i].reg;
+        p.push_back(r);
+    }
     return p;
 }
 
@@ -215,6 +334,7 @@ Place StageLowering::input_variable(TIntermSymbol* node, const glslang::TType& t
             case glslang::EbvNone: break;
             default: refuse(node, "vertex input '" + name + "' is not supported");
         }
+        if (interface_.options.attribute_locations) return generic_attribute(node);
         const std::optional<ir::Attribute> a = attribute_named(name);
         if (!a) refuse(node, "attribute '" + name + "' is none quadshade provides: " + attribute_names_help());
         if (type.isArray() || type.isMatrix() || type.getBasicType() != glslang::EbtFloat) {
@@ -225,8 +345,8 @@ Place StageLowering::input_variable(TIntermSymbol* node, const glslang::TType& t
     // A fragment input: a varying, by name.
     std::string varying = name;
     switch (q.builtIn) {
-        case glslang::EbvColor: varying = "gl_Color"; break;
-        case glslang::EbvSecondaryColor: varying = "gl_SecondaryColor"; break;
+        case glslang::EbvColor: return color_input(node, "gl_Color", "gl_BackColor");
+        case glslang::EbvSecondaryColor: return color_input(node, "gl_SecondaryColor", "gl_BackSecondaryColor");
         case glslang::EbvFogFragCoord: varying = "gl_FogFragCoord"; break;
         case glslang::EbvTexCoord: {
             // gl_TexCoord[i]: each element its own varying, as the vertex stage writes them.
@@ -241,7 +361,6 @@ Place StageLowering::input_variable(TIntermSymbol* node, const glslang::TType& t
         case glslang::EbvNone: break;
         default: refuse(node, "fragment input '" + name + "' is not supported");
     }
-    if (q.nopersp) refuse(node, "noperspective varyings are not supported");
     std::vector<B> banks;
     try {
         component_banks(type, banks);
@@ -249,7 +368,7 @@ Place StageLowering::input_variable(TIntermSymbol* node, const glslang::TType& t
         refuse(node, e.what());
     }
     const bool flat = q.flat || banks[0] != B::Float;
-    VaryingSlot& v = interface_.fragment_varying(varying, int(banks.size()), banks[0], flat, where(node));
+    VaryingSlot& v = interface_.fragment_varying(varying, int(banks.size()), banks[0], flat, where(node), q.nopersp && !flat);
     if (v.components != int(banks.size())) refuse(node, "varying '" + varying + "' is declared twice with different types");
     return bound_input(ir::Source::Varying, 0, banks, std::uint16_t(v.first));
 }
@@ -292,15 +411,24 @@ Place StageLowering::output_variable(TIntermSymbol* node, const glslang::TType& 
     if (q.storage == glslang::EvqPosition || q.builtIn == glslang::EbvPosition) {
         return bound_output(ir::Source::Position, {B::Float, B::Float, B::Float, B::Float});
     }
-    if (q.storage == glslang::EvqPointSize || q.storage == glslang::EvqClipVertex || q.builtIn == glslang::EbvPointSize ||
-        q.builtIn == glslang::EbvClipVertex || q.builtIn == glslang::EbvClipDistance ||
-        q.builtIn == glslang::EbvBackColor || q.builtIn == glslang::EbvBackSecondaryColor || q.builtIn == glslang::EbvCullDistance) {
+    if (q.storage == glslang::EvqClipVertex || q.builtIn == glslang::EbvClipVertex) {
+        return bound_output(ir::Source::ClipVertex, {B::Float, B::Float, B::Float, B::Float});
+    }
+    if (q.builtIn == glslang::EbvClipDistance) {
+        // An array GLSL may leave unsized: it holds every distance the renderer clips with.
+        const int n = type.isArray() && type.getOuterArraySize() > 0 ? type.getOuterArraySize() : ir::kMaxClipDistances;
+        if (n > ir::kMaxClipDistances) refuse(node, "more than " + std::to_string(ir::kMaxClipDistances) + " clip distances");
+        return bound_output(ir::Source::ClipDistance, std::vector<B>(std::size_t(n), B::Float));
+    }
+    if (q.storage == glslang::EvqPointSize || q.builtIn == glslang::EbvPointSize || q.builtIn == glslang::EbvCullDistance) {
         return plain();  // nothing quadshade draws reads it
     }
     std::string varying = name;
     switch (q.builtIn) {
         case glslang::EbvFrontColor: varying = "gl_Color"; break;
         case glslang::EbvFrontSecondaryColor: varying = "gl_SecondaryColor"; break;
+        case glslang::EbvBackColor: varying = "gl_BackColor"; break;  // read with two-sided colour only
+        case glslang::EbvBackSecondaryColor: varying = "gl_BackSecondaryColor"; break;
         case glslang::EbvFogFragCoord: varying = "gl_FogFragCoord"; break;
         case glslang::EbvTexCoord: {
             Place whole = plain();
@@ -324,7 +452,7 @@ Place StageLowering::output_variable(TIntermSymbol* node, const glslang::TType& 
         refuse(node, e.what());
     }
     if (int(banks.size()) != v->components || banks[0] != v->bank) {
-        refuse(node, "varying '" + varying + "' has another type in the fragment shader (" + v->where + ")");
+        throw GlslLinkError(where(node) + "varying '" + varying + "' has another type in the fragment shader (" + v->where + ")");
     }
     v->written = true;
     return bound_output(ir::Source::Varying, banks, std::uint16_t(v->first));
@@ -357,10 +485,13 @@ Place StageLowering::interface_variable(TIntermSymbol* node) {
             fixed_inputs_.emplace("gl_FragCoord", p);
             return p;
         }
-        case glslang::EvqFace: refuse(node, "gl_FrontFacing is not supported");
+        case glslang::EvqFace: return front_facing();
         case glslang::EvqPointCoord: refuse(node, "gl_PointCoord is not supported: quadshade draws no points");
-        case glslang::EvqVertexId: case glslang::EvqInstanceId:
-            refuse(node, "'" + std::string(node->getName().c_str()) + "' is not supported");
+        case glslang::EvqVertexId: {
+            interface_.program.reads_vertex_id = true;
+            return bound_input(ir::Source::VertexId, 0, {B::Int});
+        }
+        case glslang::EvqInstanceId: return {{B::Int, int_constant(0)}};  // quadshade draws one instance
         case glslang::EvqVaryingOut: case glslang::EvqFragColor: case glslang::EvqFragDepth: case glslang::EvqPosition:
         case glslang::EvqPointSize: case glslang::EvqClipVertex:
             return output_variable(node, node->getType(), node->getName().c_str());
@@ -386,6 +517,7 @@ void StageLowering::declare_globals(glslang::TIntermAggregate* root) {
         if (auto* a = n->getAsAggregate(); a && a->getOp() == glslang::EOpLinkerObjects) continue;
         n->traverse(&all);
     }
+    if (kind_ == StageKind::Vertex && interface_.options.attribute_locations) assign_attribute_locations(all.order);
     for (TIntermSymbol* s : all.order) {
         const glslang::TStorageQualifier q = s->getQualifier().storage;
         if (s->getBasicType() == glslang::EbtSampler || s->getConstArray().size() > 0) continue;

@@ -28,7 +28,7 @@ StageLowering::StageLowering(StageKind kind, const std::string& file, glslang::T
     : kind_(kind), file_(file), ast_(ast), interface_(interface) {}
 
 void StageLowering::refuse(const glslang::TSourceLoc& at, const std::string& what) const {
-    throw GlslError(source_position(file_, at.line, at.column) + what);
+    throw GlslUnsupported(source_position(file_, at.line, at.column) + what);
 }
 
 void StageLowering::refuse(const TIntermNode* at, const std::string& what) const {
@@ -37,8 +37,8 @@ void StageLowering::refuse(const TIntermNode* at, const std::string& what) const
 
 void StageLowering::check_size() const {
     if (stage_.code.size() > kMaxInstructions) {
-        throw GlslError(source_position(file_, int(line_)) + "the shader is too large to run: over " +
-                        std::to_string(kMaxInstructions) + " operations after inlining its functions");
+        throw GlslUnsupported(source_position(file_, int(line_)) + "the shader is too large to run: over " +
+                              std::to_string(kMaxInstructions) + " operations after inlining its functions");
     }
 }
 
@@ -48,8 +48,8 @@ std::uint32_t StageLowering::allocate(ir::Bank bank, Space space) {
     const std::size_t b = std::size_t(bank);
     std::uint32_t* top = space == Space::Variable ? &variable_top_[b] : space == Space::Temp ? &temp_top_[b] : &constant_top_[b];
     if (*top >= kMaxRegisters) {
-        throw GlslError(source_position(file_, int(line_)) + "the shader is too large to run: over " +
-                        std::to_string(kMaxRegisters) + " values of one type");
+        throw GlslUnsupported(source_position(file_, int(line_)) + "the shader is too large to run: over " +
+                              std::to_string(kMaxRegisters) + " values of one type");
     }
     const std::uint32_t r = (*top)++ | std::uint32_t(space);
     if (space == Space::Temp) temp_max_[b] = std::max(temp_max_[b], temp_top_[b]);
@@ -61,8 +61,8 @@ Place StageLowering::allocate(const glslang::TType& type, Space space) {
     std::vector<ir::Bank> banks;
     try {
         component_banks(type, banks);
-    } catch (const GlslError& e) {
-        throw GlslError(source_position(file_, int(line_)) + e.what());
+    } catch (const GlslUnsupported& e) {
+        throw GlslUnsupported(source_position(file_, int(line_)) + e.what());
     }
     Place p;
     p.reserve(banks.size());
@@ -355,7 +355,7 @@ ir::Stage StageLowering::run() {
             global_code.push_back(n);
         }
     }
-    if (!main) throw GlslError(source_position(file_, 0) + "the shader has no main()");
+    if (!main) throw GlslLinkError(source_position(file_, 0) + "the shader has no main()");
 
     frames_.push_back(Frame{"main", {}, {}, {}});
     declare_globals(root);

@@ -142,6 +142,11 @@ private:
     int sampler_uniform(glslang::TIntermSymbol* node, const std::string& name, const glslang::TType& type);
     Place transform_uniform(ir::TransformUniform which, int size, bool transposed);
     Place attribute(ir::Attribute which, int components);
+    Place generic_attribute(glslang::TIntermSymbol* node);
+    void assign_attribute_locations(const std::vector<glslang::TIntermSymbol*>& symbols);
+    Place front_facing();
+    Place color_input(glslang::TIntermSymbol* node, const std::string& front, const std::string& back);
+    bool redeclared(const std::string& name) const;
     Place ftransform();
     void declare_globals(glslang::TIntermAggregate* root);
     std::string where(const TIntermNode* node) const;
@@ -165,6 +170,7 @@ private:
     std::unordered_map<long long, Place> globals_;        // globals and interface variables
     std::unordered_map<long long, Place> const_arrays_;   // folded const variables, by symbol id
     std::unordered_map<long long, int> global_samplers_;  // sampler uniforms: their slot
+    std::unordered_map<long long, int> attribute_locations_;  // generic vertex inputs: their location
     std::map<std::string, Place> fixed_inputs_;          // inputs by what they are (gl_Vertex, ...)
     struct Frame {
         std::string function;

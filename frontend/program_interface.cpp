@@ -21,7 +21,7 @@ int ProgramInterface::uniform(const ir::Uniform& u, const std::string& where) {
         const ir::Uniform& have = program.uniforms[i];
         if (have.name != u.name) continue;
         if (have.bank != u.bank || have.components != u.components || have.columns != u.columns) {
-            throw GlslError(where + "uniform '" + u.name + "' is declared with another type in the other stage");
+            throw GlslLinkError(where + "uniform '" + u.name + "' is declared with another type in the other stage");
         }
         return int(i);
     }
@@ -33,7 +33,7 @@ int ProgramInterface::sampler(const std::string& name, int dims, const std::stri
     for (std::size_t i = 0; i < program.samplers.size(); ++i) {
         if (program.samplers[i].name != name) continue;
         if (program.samplers[i].dims != dims) {
-            throw GlslError(where + "sampler '" + name + "' is declared with another type in the other stage");
+            throw GlslLinkError(where + "sampler '" + name + "' is declared with another type in the other stage");
         }
         return int(i);
     }
@@ -42,11 +42,11 @@ int ProgramInterface::sampler(const std::string& name, int dims, const std::stri
 }
 
 VaryingSlot& ProgramInterface::fragment_varying(const std::string& name, int components, ir::Bank bank, bool flat,
-                                                const std::string& where) {
+                                                const std::string& where, bool noperspective) {
     if (VaryingSlot* v = find_varying(name)) return *v;
-    VaryingSlot v{name, int(program.varyings.size()), components, bank, flat, where, false};
+    VaryingSlot v{name, int(program.varyings.size()), components, bank, flat, noperspective, where, false};
     for (int i = 0; i < components; ++i) {
-        program.varyings.push_back({components == 1 ? name : name + "[" + std::to_string(i) + "]", flat});
+        program.varyings.push_back({components == 1 ? name : name + "[" + std::to_string(i) + "]", flat, noperspective});
     }
     (void)bank_name;
     varyings.push_back(v);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/compile_options.h"
 #include "frontend/glsl_error.h"
 #include "frontend/ir.h"
 
@@ -18,6 +19,7 @@ struct VaryingSlot {
     int components = 0;
     ir::Bank bank = ir::Bank::Float;  // int and uint varyings travel as their bits (flat)
     bool flat = false;
+    bool noperspective = false;
     std::string where;     // FILE:LINE:COL of the fragment stage's declaration, for messages
     bool written = false;  // the vertex stage writes it
 };
@@ -25,6 +27,7 @@ struct VaryingSlot {
 struct ProgramInterface {
     ir::Program& program;
     std::vector<VaryingSlot> varyings;
+    CompileOptions options;
 
     // The slot of the user uniform `u`, added on first use; a second declaration must agree.
     int uniform(const ir::Uniform& u, const std::string& where);
@@ -32,7 +35,7 @@ struct ProgramInterface {
     int sampler(const std::string& name, int dims, const std::string& where);
     // The fragment stage's varying `name`, added on first use.
     VaryingSlot& fragment_varying(const std::string& name, int components, ir::Bank bank, bool flat,
-                                  const std::string& where);
+                                  const std::string& where, bool noperspective = false);
     // The fragment stage's varying the vertex stage's output `name` feeds, or nullptr.
     VaryingSlot* find_varying(const std::string& name);
 };

@@ -136,6 +136,26 @@ Bool<F> lane_range(int first, int count) {
     }
 }
 
+// The mask of F's lanes whose bit is set in `bits`.
+template <class F>
+Bool<F> mask_of_bits(std::uint32_t bits) {
+    using M = Bool<F>;
+    if constexpr (std::is_same_v<M, bool>) {
+        return (bits & 1u) != 0;
+    } else {
+        using P = typename plain_lanes<F>::type;
+        using T = typename P::value_type;
+        alignas(64) T a[P::size];
+        for (int i = 0; i < P::size; ++i) a[i] = (bits >> i & 1u) ? T(1) : T(0);
+        const auto m = P::load(a) > P(T(0));
+        if constexpr (is_checked_v<F>) {
+            return M(m, LaneCases());
+        } else {
+            return m;
+        }
+    }
+}
+
 // Lane bits of a mask.
 template <class M>
 std::uint32_t bits_of(const M& m) {

@@ -10,24 +10,20 @@ namespace {
 
 using frontend::GlslError;
 
-// The catalogue's uniform type for a user uniform: bools and uints as ints (their 32-bit words
-// are the same), matrices square.
-UniformType uniform_type(const ir::Uniform& u, const std::string& where) {
+// The catalogue's uniform type for a user uniform: bools as ints (their 32-bit words are the
+// same: 0 or 1).
+UniformType uniform_type(const ir::Uniform& u) {
     if (u.columns > 1) {
-        if (u.components == u.columns * u.columns) {
-            if (u.columns == 2) return UniformType::Mat2;
-            if (u.columns == 3) return UniformType::Mat3;
-            if (u.columns == 4) return UniformType::Mat4;
-        }
-        throw GlslError(where + "uniform '" + u.name + "': non-square matrices cannot be set as uniforms here");
+        constexpr UniformType t[3][3] = {{UniformType::Mat2, UniformType::Mat2x3, UniformType::Mat2x4},
+                                         {UniformType::Mat3x2, UniformType::Mat3, UniformType::Mat3x4},
+                                         {UniformType::Mat4x2, UniformType::Mat4x3, UniformType::Mat4}};
+        return t[u.columns - 2][u.components / u.columns - 2];
     }
-    if (u.bank == ir::Bank::Float) {
-        constexpr UniformType t[] = {UniformType::Float, UniformType::Vec2, UniformType::Vec3, UniformType::Vec4};
-        return t[u.components - 1];
-    }
-    if (u.bank == ir::Bank::Uint && u.components == 1) return UniformType::Uint;
-    constexpr UniformType t[] = {UniformType::Int, UniformType::IVec2, UniformType::IVec3, UniformType::IVec4};
-    return t[u.components - 1];
+    const std::size_t n = std::size_t(u.components - 1);
+    constexpr UniformType floats[] = {UniformType::Float, UniformType::Vec2, UniformType::Vec3, UniformType::Vec4};
+    constexpr UniformType uints[] = {UniformType::Uint, UniformType::UVec2, UniformType::UVec3, UniformType::UVec4};
+    constexpr UniformType ints[] = {UniformType::Int, UniformType::IVec2, UniformType::IVec3, UniformType::IVec4};
+    return u.bank == ir::Bank::Float ? floats[n] : u.bank == ir::Bank::Uint ? uints[n] : ints[n];
 }
 
 }  // namespace
@@ -45,12 +41,13 @@ GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled) :
     needs.time = p.reads_time;
     needs.frag_coord = p.reads_frag_coord;
     if (p.varyings.size() > std::size_t(kMaxVaryings)) {
-        throw GlslError(where + "the shaders pass " + std::to_string(p.varyings.size()) + " varying floats; quadshade interpolates " +
+        throw frontend::GlslUnsupported(where + "the shaders pass " + std::to_string(p.varyings.size()) + " varying floats; quadshade interpolates " +
                         std::to_string(kMaxVaryings));
     }
     needs.varyings = int(p.varyings.size());
     for (std::size_t i = 0; i < p.varyings.size(); ++i) {
         if (p.varyings[i].flat) needs.flat_varyings |= 1u << i;
+        if (p.varyings[i].noperspective) needs.noperspective_varyings |= 1u << i;
     }
     bool texcoords = false;
     for (ir::Attribute a : p.attributes) texcoords = texcoords || a == ir::Attribute::Texcoord0;
@@ -65,13 +62,13 @@ GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled) :
             continue;
         }
         if (other == kMaxSamplers) {
-            throw GlslError(where + "more than " + std::to_string(kMaxSamplers) + " samplers besides teximage");
+            throw frontend::GlslUnsupported(where + "more than " + std::to_string(kMaxSamplers) + " samplers besides teximage");
         }
         needs.samplers[std::size_t(other)] = {strings_.emplace_back(p.samplers[s].name), p.samplers[s].dims};
         samplers_[std::size_t(other++)] = int(s);
     }
     for (const ir::Uniform& u : p.uniforms) {
-        UniformDecl d{strings_.emplace_back(u.name), uniform_type(u, where), {}};
+        UniformDecl d{strings_.emplace_back(u.name), uniform_type(u), {}};
         for (int i = 0; i < u.components; ++i) d.initial[std::size_t(i)] = std::bit_cast<float>(u.initial[std::size_t(i)]);
         if (is_integer(d.type)) {
             for (int i = 0; i < u.components; ++i) {

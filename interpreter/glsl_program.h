@@ -17,7 +17,7 @@ namespace qs::interpreter {
 
 class GlslProgram final : public Program {
 public:
-    // `name` as listings and messages name the shader. Throws frontend::GlslError for a
+    // `name` as listings and messages name the shader. Throws frontend::GlslUnsupported for a
     // program the renderer cannot bind: more samplers, varyings or uniforms than it passes.
     GlslProgram(std::string name, frontend::CompiledProgram compiled);
 

@@ -3,6 +3,8 @@
 
 namespace qs::interpreter {
 
+static_assert(ir::kMaxClipDistances == kMaxClipDistances);
+
 namespace {
 
 // Component `index` of a vertex attribute, with the values GL supplies for the components an
@@ -26,12 +28,37 @@ RunResult run_vertex(const ir::Program& program, const VertexIn& in, const Unifo
     Registers<float>& r = thread_registers<float>(stage);
     fill_uniforms(program, stage, u, r);
     for (const ir::Binding& b : stage.inputs) {
-        if (b.source == ir::Source::Attribute) r.f[b.reg] = attribute_component(in, ir::Attribute(b.slot), b.index);
+        switch (b.source) {
+            case ir::Source::Attribute: r.f[b.reg] = attribute_component(in, ir::Attribute(b.slot), b.index); break;
+            case ir::Source::GenericAttribute: {
+                const AttributeValue* values = b.slot < kMaxGenericAttributes ? u.attributes[b.slot] : nullptr;
+                // Without an array, GL's current value: (0, 0, 0, 1), in the attribute's type.
+                const std::uint32_t one = b.bank == ir::Bank::Float ? std::bit_cast<std::uint32_t>(1.0f) : 1u;
+                const std::uint32_t word = values ? values[in.id][b.index] : b.index == 3 ? one : 0u;
+                using namespace executor_detail;
+                switch (b.bank) {
+                    case ir::Bank::Float: r.f[b.reg] = from_word<float, Bool<float>>(word); break;
+                    case ir::Bank::Int: r.i[b.reg] = from_word<int_t<float>, Bool<float>>(word); break;
+                    case ir::Bank::Uint: r.u[b.reg] = from_word<uint_t<float>, Bool<float>>(word); break;
+                    case ir::Bank::Bool: break;
+                }
+                break;
+            }
+            case ir::Source::VertexId: r.i[b.reg] = int_t<float>(std::int32_t(in.id)); break;
+            default: break;
+        }
     }
     const RunResult result = Executor<float>::run(stage, r, textures);
+    bool clip_vertex = false;
+    glm::vec4 clip_vertex_value(0.0f);
     for (const ir::Binding& b : stage.outputs) {
         if (b.source == ir::Source::Position) {
             out.clip[b.index] = r.f[b.reg];
+        } else if (b.source == ir::Source::ClipDistance) {
+            out.clip_distances[b.index] = r.f[b.reg];
+        } else if (b.source == ir::Source::ClipVertex) {
+            clip_vertex = true;
+            clip_vertex_value[b.index] = r.f[b.reg];
         } else if (b.source == ir::Source::Varying) {
             // An int varying travels as its bits (it is flat: never interpolated).
             switch (b.bank) {
@@ -40,6 +67,14 @@ RunResult run_vertex(const ir::Program& program, const VertexIn& in, const Unifo
                 case ir::Bank::Uint: out.varyings[b.index] = std::bit_cast<float>(r.u[b.reg][0]); break;
                 case ir::Bank::Bool: break;
             }
+        }
+    }
+    // gl_ClipVertex: each user plane's distance, as GL's clipping takes it.
+    if (clip_vertex) {
+        for (int i = 0; i < kMaxClipDistances; ++i) {
+            const glm::vec4& p = u.clip_planes[std::size_t(i)];
+            out.clip_distances[std::size_t(i)] =
+                p.x * clip_vertex_value.x + p.y * clip_vertex_value.y + p.z * clip_vertex_value.z + p.w * clip_vertex_value.w;
         }
     }
     return result;

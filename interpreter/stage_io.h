@@ -103,6 +103,12 @@ void fill_fragment(const ir::Stage& stage, const FragmentBatch* const* in, int c
                 r.f[b.reg] = load<F>(values, dx, dy);
                 break;
             }
+            case ir::Source::FrontFacing: {
+                std::uint32_t bits = 0;  // lane i of F is lane i % kBatchLanes of batch i / kBatchLanes
+                for (int k = 0; k < count; ++k) bits |= in[k]->front_facing << (k * kBatchLanes);
+                r.b[b.reg] = executor_detail::mask_of_bits<F>(bits);
+                break;
+            }
             case ir::Source::Varying:
                 for (int k = 0; k < count; ++k) {
                     values[k] = in[k]->varying[b.index];

@@ -24,7 +24,8 @@ public:
     // Triangle t of draw d in a framebuffer `height` pixels high; `depth_test`: the depth is
     // written, so gl_FragCoord.z is needed whatever the shader reads.
     FragmentInputs(const TriangleSetup& t, const PreparedDraw& d, bool depth_test, int height)
-        : z_(t.z), inv_w_(t.inv_w), varyings_(t.varyings), count_(d.varyings), flat_(d.flat),
+        : z_(t.z), inv_w_(t.inv_w), varyings_(t.varyings), count_(d.varyings), flat_(d.flat | d.noperspective),
+          linear_(d.noperspective),
           frag_coord_(d.frag_coord), depth_(depth_test), analytic_(d.mode.derivatives == Derivatives::Analytic),
           // An affine triangle (equal w at its vertices, 1/w a constant plane) shares one
           // reciprocal, the same number each lane would compute.
@@ -86,11 +87,18 @@ public:
         for (int v = 0; v < count_; ++v) {
             const PlaneEquation& p = varyings_[std::size_t(v)];
             const bool flat = flat_ >> v & 1;
-            const Floats value = flat ? broadcast(p.a0) : at<Fused>(p, x, y) * rcp;
+            // flat_ holds the noperspective varyings too: neither is divided by the interpolated w.
+            const Floats value = (linear_ >> v & 1) ? at<Fused>(p, x, y) : flat ? broadcast(p.a0) : at<Fused>(p, x, y) * rcp;
             store(in.varying[v], value);
             if (analytic_) {
                 // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
-                // varying enters as 0 (its plane is constant: zero derivatives).
+                // varying enters as 0 (its plane is constant: zero derivatives); a noperspective
+                // one's are its plane's.
+                if (linear_ >> v & 1) {
+                    store(in.varying_dx[v], broadcast(p.dadx));
+                    store(in.varying_dy[v], broadcast(-p.dady));
+                    continue;
+                }
                 const Floats v0 = flat ? broadcast(0.0f) : value;
                 store(in.varying_dx[v], (p.dadx - v0 * inv_w_.dadx) * rcp);
                 store(in.varying_dy[v], -((p.dady - v0 * inv_w_.dady) * rcp));
@@ -136,7 +144,8 @@ private:
     PlaneEquation z_, inv_w_;
     std::array<PlaneEquation, kMaxVaryings> varyings_{};
     int count_ = 0;       // varyings in use
-    unsigned flat_ = 0;   // bit v: varying v is flat (the provoking vertex's value, in its a0)
+    unsigned flat_ = 0;   // bit v: varying v is flat (the provoking vertex's value, in its a0) or noperspective
+    unsigned linear_ = 0; // bit v: varying v is noperspective (its plane's value, not divided by w)
     bool frag_coord_ = false, depth_ = false, analytic_ = false, affine_ = false;
     float affine_rcp_ = 0.0f;  // 1/w of an affine triangle
     float height_ = 0.0f;

@@ -62,12 +62,13 @@ bool misses_tile(const TriangleSetup& t, int x0, int y0) {
 // reference's depth buffer holds (depth_buffer.h), and is stored once at the end.
 class TileRenderer {
 public:
+    // `clear`: the colour of what no triangle writes (none: the framebuffer keeps it);
     // `depth_test`: LESS test and depth write, for every draw of the frame or none; `fused`: fused
     // plane evaluation; `general`: every depth tested, even where it provably passes.
-    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, glm::vec4 clear, bool depth_test, bool fused,
-                 bool general)
-        : fb_(fb), draws_(draws), depth_test_(depth_test), fused_(fused), general_(general) {
-        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
+    TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, const std::optional<glm::vec4>& clear,
+                 bool depth_test, bool fused, bool general)
+        : fb_(fb), draws_(draws), clears_(clear.has_value()), depth_test_(depth_test), fused_(fused), general_(general) {
+        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear ? (*clear)[i % 4] : 0.0f;
     }
 
     // Starts the tile whose top-left pixel is (x0, y0); one renderer per thread renders its tiles
@@ -80,7 +81,7 @@ public:
 
     // Clears the blocks no triangle wrote and stores the depth.
     void finish() {
-        if (!touched_.all()) {
+        if (clears_ && !touched_.all()) {
             for (int block = 0; block < kTileBlocks; ++block) {
                 if (!touched_[std::size_t(block)]) clear_block(block, RowStores::Streamed);
             }
@@ -123,6 +124,7 @@ public:
         static_assert(std::is_trivially_destructible_v<FragmentInputs>);
         std::construct_at(&inputs_, t, d, depth_test_, fb_.height);
         pending_.clear();
+        in_[0].front_facing = in_[1].front_facing = t.front ? ~0u : 0u;
         if (!d.frag_coord && frag_coord_set_) {
             // A shader that reads gl_FragCoord without saying so reads NaN, not the last draw's.
             for (FragmentBatch& in : in_) {
@@ -423,8 +425,10 @@ private:
     int block_x(int block) const { return x0_ + (block % (kTileSize / kBlock)) * kBlock; }
     int block_y(int block) const { return y0_ + (block / (kTileSize / kBlock)) * kBlock; }
 
-    // Writes the clear colour into the block's pixels that lie inside the framebuffer.
+    // Writes the clear colour into the block's pixels that lie inside the framebuffer (where the
+    // frame clears).
     void clear_block(int block, RowStores stores) {
+        if (!clears_) return;
         const int x = block_x(block), y = block_y(block);
         const int n = std::min(kBlock, fb_.width - x);
         const bool whole = n == kBlock && y >= 0 && y + kBlock <= fb_.height;
@@ -454,6 +458,7 @@ private:
     Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
     lanes16::Floats clear_row_;  // four pixels of the clear colour
+    bool clears_;                // false: what no triangle writes keeps its colour
     bool depth_test_, fused_, general_;
     bool last_ = false;  // render()'s
     int x0_ = 0, y0_ = 0;
@@ -498,8 +503,13 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
     return fb;
 }
 
-void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
-                    const RasterOptions& options, RenderStats* stats_out, RowBand band, RasterMemory* memory) {
+namespace {
+
+// rasterize_into's and rasterize_over's frame: cleared to `clear` (none: drawn over what `fb`
+// holds), depth tested where `depth_test` and it matters.
+void rasterize_frame(Framebuffer& fb, int width, int height, const std::optional<glm::vec4>& clear, bool depth_test,
+                     std::span<const DrawCall> draws, const RasterOptions& options, RenderStats* stats_out, RowBand band,
+                     RasterMemory* memory) {
     check_image_size(width, height);
     band = checked_band(band, height, options.pairing);
     const std::vector<PreparedDraw> prepared = prepare_draws(
@@ -520,7 +530,8 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         const std::vector<VertexOut> outs = run_vertex_stage(call);
         std::vector<ClipVertex> verts(outs.size());
         for (std::size_t i = 0; i < outs.size(); ++i) {
-            verts[i] = {outs[i].clip, viewport.window(outs[i].clip, options.fused_viewport), outs[i].varyings};
+            verts[i] = {outs[i].clip, viewport.window(outs[i].clip, options.fused_viewport), outs[i].varyings,
+                        outs[i].clip_distances};
         }
         std::vector<std::array<ClipVertex, 3>> clipped;
         for (std::size_t i = 0; i + 2 < call.indices.size(); i += 3) {
@@ -532,10 +543,11 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
                                             std::to_string(verts.size()));
             }
             clipped.clear();
-            clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, viewport, clipped);
+            clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, viewport, clipped,
+                          {call.clip_distances, prepared[di].noperspective});
             for (const auto& tri : clipped) {
                 if (auto t = setup_triangle(tri, prepared[di].varyings, width, height, options.fill_rule,
-                                            prepared[di].flat, verts[c], call.culling)) {
+                                            prepared[di].flat, verts[c], call.culling, prepared[di].noperspective)) {
                     t->draw = int(di);
                     triangles.push_back(*t);
                 }
@@ -545,7 +557,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
     stats.triangles_setup = triangles.size();
     // Depth is tested for every draw or none: GL tests it always, and leaving it out is only
     // allowed where it provably changes nothing (depth_buffer.h).
-    const bool depth = options.force_general_path || kept.depth.matters(triangles, width, height);
+    const bool depth = depth_test && (options.force_general_path || kept.depth.matters(triangles, width, height));
     stats.depth_buffer = depth;
 
     // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order:
@@ -567,7 +579,7 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         }
     }
 
-    // Every pixel is stored by its tile: reuse the caller's memory, no clearing pass.
+    // Every pixel is stored by its tile, or kept: reuse the caller's memory, no clearing pass.
     fb.hold(width, height, band, depth, options.check_undefined);
     const auto tiles = for_each_tile<TileRenderer>(
         grid,
@@ -586,6 +598,20 @@ void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std
         });
     for (const auto& tile : tiles) stats.add_work(tile->quads(), tile->lanes(), tile->written());
     if (stats_out) *stats_out = stats;
+}
+
+}  // namespace
+
+void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
+                    const RasterOptions& options, RenderStats* stats, RowBand band, RasterMemory* memory) {
+    rasterize_frame(fb, width, height, clear, true, draws, options, stats, band, memory);
+}
+
+void rasterize_over(Framebuffer& fb, std::span<const DrawCall> draws, const RasterOptions& options, RenderStats* stats) {
+    if (fb.first_row != 0 || fb.rows != fb.height || fb.rgba.size() != std::size_t(fb.width) * std::size_t(fb.height) * 4) {
+        throw std::invalid_argument("drawing over a framebuffer that does not hold a whole image");
+    }
+    rasterize_frame(fb, fb.width, fb.height, std::nullopt, false, draws, options, stats, {}, nullptr);
 }
 
 }  // namespace qs

@@ -56,7 +56,8 @@ struct RasterMemory {
     std::vector<std::vector<std::uint32_t>> bins;  // per tile
 };
 
-// Renders draws into a width x height framebuffer cleared to `clear`.
+// Renders draws into a width x height framebuffer cleared to `clear`, with GL's depth test
+// (LESS, a depth buffer cleared to 1) left out where it provably changes nothing (depth_buffer.h).
 // Throws std::invalid_argument for absurd sizes or a draw without a program, UnsupportedRequest
 // (shade_choice.h) for options no shader instantiation honours.
 Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
@@ -67,5 +68,12 @@ Framebuffer rasterize(int width, int height, glm::vec4 clear, std::span<const Dr
 void rasterize_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                     const RasterOptions& options, RenderStats* stats = nullptr, RowBand band = {},
                     RasterMemory* memory = nullptr);
+// Renders draws over what `fb` holds (a whole image, as rasterize_into leaves it or as its caller
+// filled it), as GL draws into a framebuffer it does not clear, with GL's depth test disabled:
+// every fragment that is not discarded writes its colour, in submission order. Throws
+// std::invalid_argument for a framebuffer that does not hold a whole image, as rasterize_into
+// does for bad draws.
+void rasterize_over(Framebuffer& fb, std::span<const DrawCall> draws, const RasterOptions& options,
+                    RenderStats* stats = nullptr);
 
 }  // namespace qs

@@ -10,7 +10,7 @@ namespace qs {
 
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
-                                            const ClipVertex& provoking, FaceCulling culling) {
+                                            const ClipVertex& provoking, FaceCulling culling, unsigned noperspective) {
     std::int64_t fx[3], fy[3];
     for (int i = 0; i < 3; ++i) {
         const glm::vec4& w = tri[std::size_t(i)].window;
@@ -33,6 +33,7 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     if (area < 0) std::swap(order[1], order[2]);
 
     TriangleSetup t;
+    t.front = area < 0;
     for (int e = 0; e < 3; ++e) {
         const int a = order[e], b = order[(e + 1) % 3];
         t.edges[e] = EdgeFunction::from_edge(fx[a], fy[a], fx[b], fy[b], fixed::kSubpixelBits, fill_rule);
@@ -61,6 +62,11 @@ std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri
     for (int k = 0; k < varying_count; ++k) {
         if (flat >> k & 1) {
             t.varyings[std::size_t(k)].a0 = provoking.varyings[std::size_t(k)];  // constant, not divided by w
+            continue;
+        }
+        if (noperspective >> k & 1) {
+            t.varyings[std::size_t(k)] = PlaneEquation(s, v[0]->varyings[std::size_t(k)], v[1]->varyings[std::size_t(k)],
+                                                       v[2]->varyings[std::size_t(k)]);
             continue;
         }
         t.varyings[std::size_t(k)] = PlaneEquation(s, v[0]->varyings[std::size_t(k)] * v[0]->window.w,

@@ -22,8 +22,9 @@ struct TriangleSetup {
     int min_x, min_y, max_x, max_y;  // inclusive pixel bounds, clamped to the framebuffer
     PlaneEquation z;                 // window depth, linear in screen space
     PlaneEquation inv_w;             // 1/w_clip, linear in screen space
-    std::array<PlaneEquation, kMaxVaryings> varyings;  // varying / w_clip
+    std::array<PlaneEquation, kMaxVaryings> varyings;  // varying / w_clip (noperspective: varying)
     int draw = 0;                    // index of the draw call it came from
+    bool front = true;               // counter-clockwise in GL's window: gl_FrontFacing
 };
 
 // From the vertices' window coordinates (ClipVertex::window: framebuffer pixels, y down as
@@ -31,9 +32,11 @@ struct TriangleSetup {
 // triangle that covers no pixel centre of the framebuffer, has zero area, or that `culling`
 // drops by its winding on the snapped vertices (the sign llvmpipe's setup culls by). Flat
 // varyings (bits of `flat`) take the value of `provoking`, the last vertex of the triangle before
-// clipping, in the plane's a0.
+// clipping, in the plane's a0; noperspective ones (bits of `noperspective`) are planes of their
+// values, not divided by w.
 std::optional<TriangleSetup> setup_triangle(const std::array<ClipVertex, 3>& tri, int varying_count, int width,
                                             int height, FillRule fill_rule, unsigned flat,
-                                            const ClipVertex& provoking, FaceCulling culling = {});
+                                            const ClipVertex& provoking, FaceCulling culling = {},
+                                            unsigned noperspective = 0);
 
 }  // namespace qs

@@ -57,6 +57,7 @@ struct Mesh {
     std::vector<glm::dvec3> world;      // per vertex
     std::vector<Triangle> triangles;    // Embree's primitive i is triangles[i]: the finite ones
     std::vector<TrianglePlane> planes;  // per primitive
+    std::vector<std::uint8_t> front;    // per primitive: it winds counter-clockwise in GL's window
     std::vector<VertexOut> out;         // per vertex, this frame
     FaceCulling culling;                // the draw's, when the BVH was built
 };
@@ -348,6 +349,8 @@ private:
         alignas(64) std::uint32_t primitive[kBatchLanes];
         std::memcpy(primitive, &padded, sizeof primitive);
         const PrimitiveGroups groups(primitive);
+        in.front_facing = 0;
+        for (int i = 0; i < kBatchLanes; ++i) in.front_facing |= std::uint32_t(m.front[primitive[i]]) << i;
         auto plane = [&](const glm::dvec3 TrianglePlane::*v) {
             auto component = [&](int c) {
                 return groups.spread_doubles([&](int g) { return (m.planes[groups.primitive[g]].*v)[c]; });
@@ -518,7 +521,7 @@ struct RayCaster::Impl {
             Mesh& m = meshes[i];
             positions.assign(m.world.begin(), m.world.end());
             // Triangles with a vertex that is not finite are left out, as the rasterizer drops them.
-            m.triangles.clear(), m.planes.clear();
+            m.triangles.clear(), m.planes.clear(), m.front.clear();
             const auto& idx = draws[i].indices;
             for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
                 const Triangle t{idx[k], idx[k + 1], idx[k + 2]};
@@ -532,8 +535,8 @@ struct RayCaster::Impl {
                 };
                 if (!finite(t[0]) || !finite(t[1]) || !finite(t[2])) continue;
                 // Culled triangles are left out: the BVH holds what the eye sees from one side.
+                const double turn = clip_winding(m.out[t[0]].clip, m.out[t[1]].clip, m.out[t[2]].clip);
                 if (m.culling.cull_back) {
-                    const double turn = clip_winding(m.out[t[0]].clip, m.out[t[1]].clip, m.out[t[2]].clip);
                     if (turn == 0.0 || !m.culling.keeps(turn > 0.0 ? Winding::CounterClockwise : Winding::Clockwise)) continue;
                 }
                 for (std::uint32_t v : t) {
@@ -545,6 +548,7 @@ struct RayCaster::Impl {
                 }
                 m.triangles.push_back(t);
                 m.planes.emplace_back(m.world[t[0]], m.world[t[1]], m.world[t[2]]);
+                m.front.push_back(turn > 0.0);
                 seen->add(m.world[t[0]], m.world[t[1]], m.world[t[2]],
                           TriangleId{std::uint32_t(i), std::uint32_t(m.triangles.size() - 1)});
             }
@@ -577,6 +581,13 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     band = checked_band(band, height, options.pairing);
     const std::vector<PreparedDraw> prepared =
         prepare_draws(draws, {options.derivatives, options.precision, options.check_undefined});
+    // Rays meet the surface in 3D: nothing is interpolated in the window or clipped by a plane.
+    for (const PreparedDraw& p : prepared) {
+        if (p.noperspective || p.call->clip_distances) {
+            throw UnsupportedRequest("the ray caster has no noperspective varyings or user clip planes: those are the "
+                                     "rasterizer's");
+        }
+    }
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
     for (std::size_t i = 0; i < draws.size(); ++i) {
         if (draws[i].vertices.size() != im.meshes[i].out.size()) {

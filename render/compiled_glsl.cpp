@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "frontend/cpp_writer.h"
+#include "render/glsl_shaders.h"
 #include "render/plugin_compiler.h"
 #include "render/plugins.h"
 #include "shading/catalogue.h"
@@ -112,6 +113,41 @@ std::string identifier_from(const std::string& name) {
     return n.empty() || (n[0] >= '0' && n[0] <= '9') ? "shader_" + n : n;
 }
 
+// The plugin's registration of the translation, in the GLSL collection (quadshade gallery --glsl
+// draws it with the GLSL the interpreter runs), holding the instantiations of `modes` only.
+std::string registration_source(const frontend::Translation& t, ShadeModes modes) {
+    std::string s = "#include \"" + t.name + ".h\"\n\nnamespace " + t.name + " {\n\n";
+    std::string registered = t.struct_name;
+    if (modes.bits != ShadeModes{}.bits) {
+        char bits[16];
+        std::snprintf(bits, sizeof bits, "0x%08xu", unsigned(modes.bits));
+        s += "// Compiled for the ways of shading one run needs (shading/shade_choice.h): no others.\n"
+             "struct ForThisRun : " + t.struct_name + " {\n"
+             "    static constexpr ShadeModes compiled_modes{" + bits + "};\n"
+             "};\n\n";
+        registered = "ForThisRun";
+    }
+    return s + "QUADSHADE_SHADERS_IN(\"" + kGlslCollection + "\", " + registered + ")\n\n}  // namespace " + t.name + "\n";
+}
+
+// The folder of a cached plugin that shades in `modes`: `stem`-MODES, MODES those it holds, in hex.
+std::optional<fs::path> cached_folder(const fs::path& cache, const std::string& stem, const std::string& library,
+                                      ShadeModes modes) {
+    std::error_code ec;
+    std::vector<fs::path> found;
+    for (auto it = fs::directory_iterator(cache, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+        const std::string n = it->path().filename().string();
+        if (n.size() != stem.size() + 9 || n.compare(0, stem.size() + 1, stem + "-") != 0) continue;
+        const std::string hex = n.substr(stem.size() + 1);
+        if (hex.find_first_not_of("0123456789abcdef") != std::string::npos) continue;
+        const ShadeModes held{std::uint32_t(std::stoul(hex, nullptr, 16))};
+        if (held.covers(modes) && fs::exists(it->path() / library, ec)) found.push_back(it->path());
+    }
+    if (found.empty()) return std::nullopt;
+    std::sort(found.begin(), found.end());
+    return found.front();
+}
+
 // One warning per process: the cache is one place, and one cause usually stops every use of it.
 void warn_once(const std::string& what) {
     static std::once_flag once;
@@ -131,16 +167,19 @@ std::optional<std::string> plugin_cache_dir() {
 }
 
 const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const std::optional<frontend::GlslSource>& vertex,
-                                     const std::string& name, GlslWay way) {
+                                     const std::string& name, GlslWay way, ShadeModes modes) {
     if (way == GlslWay::Interpret) return nullptr;
+    // A plugin's shader is named as a catalogue shader is: "marble.frag" is "marble_frag".
+    const std::string shader_name = identifier_from(name);
     frontend::Translation t;
     try {
-        t = frontend::translate_glsl(fragment, vertex, identifier_from(fs::path(fragment.file).stem().string()), name);
+        t = frontend::translate_glsl(fragment, vertex, identifier_from(fs::path(fragment.file).stem().string()), shader_name);
     } catch (const frontend::GlslError& e) {
         // The interpreter runs what the writer does not write yet.
         if (way == GlslWay::Compile) std::fprintf(stderr, "quadshade: not compiled: %s\n", e.what());
         return nullptr;
     }
+    t.source = registration_source(t, ShadeModes{});  // hashed without the modes: the folder's name ends with them
     const std::optional<std::string> cache = plugin_cache_dir();
     if (!cache) {
         if (way == GlslWay::Compile) warn_once("no plugin cache: neither XDG_CACHE_HOME nor HOME is set");
@@ -154,11 +193,16 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
     h.add(include.string());
     add_headers(h, include);
     for (const std::string* s : {&t.header, &t.source, &t.vertex_glsl, &t.fragment_glsl}) h.add(*s);
-    const fs::path folder = fs::path(*cache) / (t.name + "-" + h.hex());
-    const fs::path library = folder / ("lib" + t.name + ".so");
+    const std::string stem = t.name + "-" + h.hex(), library_name = "lib" + t.name + ".so";
+    char bits[16];
+    std::snprintf(bits, sizeof bits, "%08x", unsigned(modes.bits));
+    fs::path folder = fs::path(*cache) / (stem + "-" + bits);
     std::error_code ec;
+    if (const std::optional<fs::path> cached = cached_folder(*cache, stem, library_name, modes)) folder = *cached;
+    const fs::path library = folder / library_name;
     if (!fs::exists(library, ec)) {
         if (way != GlslWay::Compile) return nullptr;
+        t.source = registration_source(t, modes);
         fs::create_directories(*cache, ec);
         std::string staging = (fs::path(*cache) / ".compiling-XXXXXX").string();
         if (ec || !mkdtemp(staging.data())) {
@@ -202,7 +246,7 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
         warn_once(std::string("a cached plugin does not load (") + e.what() + ")");
         return nullptr;
     }
-    return find_program(name);
+    return find_program(shader_name);
 }
 
 }  // namespace qs

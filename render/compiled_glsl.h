@@ -14,6 +14,7 @@
 
 #include "frontend/compile.h"
 #include "shading/program.h"
+#include "shading/shade_choice.h"
 
 namespace qs {
 
@@ -23,12 +24,15 @@ enum class GlslWay {
     Compile,    // the compiled translation, compiled now where the cache lacks it (--compile)
 };
 
-// The compiled translation of the pair, registered in the catalogue as `name`, or nullptr where
+// The compiled translation of the pair, registered in the catalogue as `name` made a shader's
+// name ("marble.frag (2)" as "marble_frag_2"), or nullptr where
 // the cache lacks it (way Cached), the writer does not translate the shader, or the cache is
 // unusable (with a warning on stderr, once per process). Says on stderr when it compiles and how
-// long it took.
+// long it took. The plugin shades in `modes` (ProgramOf's compiled_modes): a cached one that
+// shades in them and more serves too; one is compiled for `modes` only, which for one render's
+// modes takes a few times less than for all of them.
 const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const std::optional<frontend::GlslSource>& vertex,
-                                     const std::string& name, GlslWay way);
+                                     const std::string& name, GlslWay way, ShadeModes modes = {});
 
 // The cache's folder: $XDG_CACHE_HOME/quadshade/plugins, else $HOME/.cache/quadshade/plugins.
 std::optional<std::string> plugin_cache_dir();

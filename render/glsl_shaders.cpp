@@ -12,7 +12,7 @@
 namespace qs {
 
 GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::optional<std::filesystem::path>& vertex,
-                            GlslWay way) {
+                            GlslWay way, const std::vector<ShadeRequest>& shading) {
     static std::mutex mutex;
     static std::map<std::pair<std::string, std::string>, GlslShader> loaded;
     const std::lock_guard lock(mutex);
@@ -31,7 +31,17 @@ GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::op
     std::string name = fragment.filename().string();
     for (int n = 2; find_program(name); ++n) name = fragment.filename().string() + " (" + std::to_string(n) + ")";
     std::vector<std::string> warnings = compiled.warnings;
-    if (const Program* p = compiled_glsl_program(f, v, name, way)) {
+    ShadeModes modes;
+    if (!shading.empty()) modes.bits = 0;
+    for (const ShadeRequest& r : shading) {
+        try {
+            modes.bits |= modes_for(Needs{.derivatives = compiled.program.fragment.derivatives}, r).bits;
+        } catch (const UnsupportedRequest&) {
+            // refused by the render itself, with its own message
+        }
+    }
+    if (modes.bits == 0) modes = ShadeModes{};
+    if (const Program* p = compiled_glsl_program(f, v, name, way, modes)) {
         GlslShader shader{p, std::move(warnings)};
         loaded.emplace(key, shader);
         return shader;

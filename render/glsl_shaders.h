@@ -24,10 +24,11 @@ struct GlslShader {
 
 // Compiles FRAG with VERT, or with the vertex shader the front end writes for it, once per pair
 // of files in a process, for the interpreter, or as the compiled translation `way` asks for where
-// it can (render/compiled_glsl.h). Throws frontend::GlslError (a std::runtime_error) with the
-// file, line and column of what it cannot take.
+// it can (render/compiled_glsl.h): for what the `shading` requests ask of it, or (none given) for
+// every way of shading. Throws frontend::GlslError (a std::runtime_error) with the file, line and
+// column of what it cannot take.
 GlslShader load_glsl_shader(const std::filesystem::path& fragment, const std::optional<std::filesystem::path>& vertex,
-                            GlslWay way = GlslWay::Interpret);
+                            GlslWay way = GlslWay::Interpret, const std::vector<ShadeRequest>& shading = {});
 
 // The catalogue shader `name`'s own GLSL, compiled and run by the interpreter, added to the
 // catalogue as "NAME.interpreted" (once) with the translation's documented departures from

@@ -76,9 +76,13 @@ bool binds_samplers(const Scene& scene, const ShaderInfo& info) {
     return !scene.objects.empty();
 }
 
-void check_supported(const FrameRequest& request) {
+ShadeRequest shade_request(const FrameRequest& request) {
     const ShadingSettings& s = request.shading;
-    check_supported(ShadeRequest{s.derivatives, s.precision, s.check_undefined, request.raster.force_general_path});
+    return {s.derivatives, s.precision, s.check_undefined, request.raster.force_general_path};
+}
+
+void check_supported(const FrameRequest& request) {
+    check_supported(shade_request(request));
     if (request.backend != Backend::RayCaster) return;
     if (request.atlas) throw UnsupportedRequest("an atlas bake is drawn by the rasterizer, not the ray caster");
     // The ray caster's rays meet the surface in double: it has no fill rule, no plane
@@ -191,7 +195,9 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
         if (vertices.empty()) {
             vertices.reserve(mesh.vertices.size());
             for (const Vertex& v : mesh.vertices) {
-                vertices.push_back({v.position, v.texcoord, v.normal, v.color, v.texcoord1});
+                VertexIn in{v.position, v.texcoord, v.normal, v.color, v.texcoord1};
+                in.id = std::uint32_t(vertices.size());  // gl_VertexID
+                vertices.push_back(in);
             }
         }
         d.vertices = vertices;

@@ -51,6 +51,8 @@ bool binds_samplers(const Scene& scene, const ShaderInfo& info);
 // a shading request no instantiation honours, or rasterizer settings (fill rule, interpolation,
 // the general path) other than their defaults given to the ray caster, which has none of them.
 void check_supported(const FrameRequest& request);
+// What the frame asks of the shaders' instantiations (shading/shade_choice.h).
+ShadeRequest shade_request(const FrameRequest& request);
 
 // A scene made ready for frames: shaders resolved, textures loaded, draw calls built and, for the
 // ray caster, the BVH built; each frame then changes the time and, in an animated scene, where

@@ -81,7 +81,7 @@ std::vector<std::uint32_t> bind_uniforms(const ShaderInfo& info, const std::vect
             const double v = s.values[i];
             if (!std::isfinite(v)) refuse(s, "uniform '" + s.name + "': not a finite number");
             if (is_integer(d.type)) {
-                const bool is_uint = d.type == UniformType::Uint;
+                const bool is_uint = is_unsigned(d.type);
                 const double lo = is_uint ? 0.0 : -2147483648.0, hi = is_uint ? 4294967295.0 : 2147483647.0;
                 if (v != std::trunc(v) || v < lo || v > hi) {
                     refuse(s, "uniform '" + s.name + "' of shader '" + shader + "' is " + type + ": " +

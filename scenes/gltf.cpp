@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "scenes/base64.h"
 #include "scenes/gltf_checks.h"
 #include "scenes/limits.h"
 #include "scenes/scene_files.h"
@@ -584,21 +585,6 @@ bool keep_embedded_image(tinygltf::Image* image, int, std::string*, std::string*
     if (image->uri.empty() && image->bufferView < 0) image->image.assign(bytes, bytes + size);
     image->as_is = true;
     return true;
-}
-
-// RFC 4648 base64, for data: URIs.
-std::string base64(const std::vector<std::uint8_t>& bytes) {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-        std::uint32_t v = std::uint32_t(bytes[i]) << 16;
-        if (n > 1) v |= std::uint32_t(bytes[i + 1]) << 8;
-        if (n > 2) v |= bytes[i + 2];
-        for (std::size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63] : '=';
-    }
-    return out;
 }
 
 // tinygltf's image writer: write no file, keep each image's URI (or bufferView) as it is.

@@ -25,6 +25,7 @@ namespace qs {
 inline constexpr int kBatchLanes = 16;   // 4 quads: one AVX-512 register of floats
 inline constexpr int kBatchQuads = kBatchLanes / 4;
 inline constexpr int kMaxVaryings = 8;
+inline constexpr int kMaxClipDistances = 8;  // GL_MAX_CLIP_DISTANCES: user clip planes
 
 // How a batch's lanes relate and so how dFdx/dFdy are formed.
 enum class Derivatives {
@@ -76,6 +77,8 @@ struct Needs {
     // from the vertex stage's Varyings (shading/varyings.h).
     int varyings = 0;
     unsigned flat_varyings = 0;
+    // (bit v) those that are `noperspective`: interpolated linearly in the window.
+    unsigned noperspective_varyings = 0;
     // The fragment stage reads gl_FragCoord. When false the rasterizer does not interpolate it
     // and it reads as NaN; the reference tests against OSMesa would catch a shader that reads it
     // without saying so.
@@ -89,20 +92,27 @@ struct Needs {
 // (0 where it has none), used where neither the scene nor the command line sets the uniform.
 // A uniform named uResolution (scenes/uniforms.h) is the frame's size in pixels, set by the
 // renderer. Matrices are column by column.
-enum class UniformType : std::uint8_t { Float, Vec2, Vec3, Vec4, Int, IVec2, IVec3, IVec4, Uint, Mat2, Mat3, Mat4 };
+// Bools and bool vectors are set as ints (0 or 1), as glUniform1i sets them.
+enum class UniformType : std::uint8_t {
+    Float, Vec2, Vec3, Vec4, Int, IVec2, IVec3, IVec4, Uint, UVec2, UVec3, UVec4,
+    Mat2, Mat3, Mat4, Mat2x3, Mat2x4, Mat3x2, Mat3x4, Mat4x2, Mat4x3,  // MatCxR: C columns of R rows
+};
 struct UniformDecl {
     std::string_view name;
     UniformType type;
     std::array<float, 16> initial{};
 };
 constexpr int components(UniformType t) {
-    constexpr int n[] = {1, 2, 3, 4, 1, 2, 3, 4, 1, 4, 9, 16};
+    constexpr int n[] = {1, 2, 3, 4, 1, 2, 3, 4, 1, 2, 3, 4, 4, 9, 16, 6, 8, 6, 12, 8, 12};
     return n[int(t)];
 }
-constexpr bool is_integer(UniformType t) { return t >= UniformType::Int && t <= UniformType::Uint; }
+constexpr bool is_integer(UniformType t) { return t >= UniformType::Int && t <= UniformType::UVec4; }
+constexpr bool is_unsigned(UniformType t) { return t >= UniformType::Uint && t <= UniformType::UVec4; }
 // GLSL's name of the type, for messages.
 constexpr std::string_view glsl_name(UniformType t) {
-    constexpr std::string_view n[] = {"float", "vec2", "vec3", "vec4", "int", "ivec2", "ivec3", "ivec4", "uint", "mat2", "mat3", "mat4"};
+    constexpr std::string_view n[] = {"float",  "vec2",   "vec3",   "vec4",   "int",    "ivec2",  "ivec3",
+                                      "ivec4",  "uint",   "uvec2",  "uvec3",  "uvec4",  "mat2",   "mat3",
+                                      "mat4",   "mat2x3", "mat2x4", "mat3x2", "mat3x4", "mat4x2", "mat4x3"};
     return n[int(t)];
 }
 // Each uniform's value takes this many 32-bit words in Uniforms::user (a mat4's).
@@ -189,6 +199,11 @@ struct ShaderInfo {
     bool stock_vertex_glsl = false;
 };
 
+// GL_MAX_VERTEX_ATTRIBS: the generic vertex attributes a draw can feed (glVertexAttribPointer).
+inline constexpr int kMaxGenericAttributes = 16;
+// A generic attribute's value at one vertex: four 32-bit words, floats' bits or integers.
+using AttributeValue = std::array<std::uint32_t, 4>;
+
 // What the scene and the frame give every shader: its transforms (a GLSL 1.30 vertex stage reads
 // them as the uniforms mvp, model, view, projection and normalMatrix: scenes/shader_inputs.h),
 // time, its textures, and its own uniforms' values.
@@ -205,6 +220,12 @@ struct Uniforms {
     const std::uint32_t* user = nullptr;
     // Needs::samplers' textures, in their order, each of the kind the shader declares.
     std::array<const glsl::Texture*, kMaxSamplers> samplers{};
+    // Per generic attribute location, its value at each vertex of the draw (VertexIn::id); null:
+    // GL's current value, (0, 0, 0, 1), at every vertex.
+    std::array<const AttributeValue*, kMaxGenericAttributes> attributes{};
+    // glClipPlane's planes in eye space: a vertex stage that writes gl_ClipVertex clips at
+    // dot(plane, gl_ClipVertex) >= 0 (VertexOut::clip_distances).
+    std::array<glm::vec4, kMaxClipDistances> clip_planes{};
 
     const glsl::sampler2D& sampler2D(int i) const { return static_cast<const glsl::sampler2D&>(*samplers[std::size_t(i)]); }
     const glsl::sampler3D& sampler3D(int i) const { return static_cast<const glsl::sampler3D&>(*samplers[std::size_t(i)]); }
@@ -216,10 +237,14 @@ struct VertexIn {
     glm::vec3 normal{0.0f};       // gl_Normal: glTF's NORMAL, (0, 0, 0) where the mesh has none
     glm::vec4 color{1.0f};        // gl_Color: COLOR_0, (1, 1, 1, 1) where none; a vec3 colour has alpha 1
     glm::vec2 texcoord1{0.0f};    // gl_MultiTexCoord1.st: TEXCOORD_1
+    std::uint32_t id = 0;         // gl_VertexID: its index in the draw's vertex arrays
 };
 struct VertexOut {
     glm::vec4 clip;  // gl_Position
     std::array<float, kMaxVaryings> varyings{};
+    // gl_ClipDistance, or each clip plane's distance to gl_ClipVertex: what a draw that clips
+    // against user planes (DrawCall::clip_distances) keeps where it is >= 0.
+    std::array<float, kMaxClipDistances> clip_distances{};
 };
 
 // Inputs of kBatchLanes fragments, structure of arrays. In quad modes lanes 4q..4q+3 are quad q
@@ -234,6 +259,9 @@ struct FragmentBatch {
     // differentials for the ray caster. Filled only for Derivatives::Analytic.
     alignas(64) float frag_coord_dx[2][kBatchLanes];
     alignas(64) float frag_coord_dy[2][kBatchLanes];
+    // gl_FrontFacing: bit i set when lane i's primitive faces front (counter-clockwise in GL's
+    // window, glFrontFace's default).
+    std::uint32_t front_facing = ~0u;
 };
 
 struct ColorBatch {

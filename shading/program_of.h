@@ -6,7 +6,9 @@
 // Instantiations per shader: per pixel (float, double) when it takes no derivatives, quads for
 // each DerivativeRule (float; Fine also double), and Dual2 (float, double); for the undefined-case
 // mask, Checked float pixels and quads; and on AVX-512, for shaders that ask for wide batches,
-// float pixels two batches wide (shade_pair).
+// float pixels two batches wide (shade_pair). A shader struct with `static constexpr ShadeModes
+// compiled_modes` (shade_choice.h) gets only those: a GLSL shader compiled for one run
+// (render/compiled_glsl.h) compiles what the run shades, and shading it another way throws.
 
 #include <cstring>
 #include <limits>
@@ -16,6 +18,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl.h"
 #include "shading/program.h"
+#include "shading/shade_choice.h"
 #include "shading/varyings.h"
 
 // `flatten` inlines the whole shader into ProgramOf::run: one straight-line SIMD body per number
@@ -141,6 +144,10 @@ class ProgramOf final : public Program {
 
     static constexpr ShaderInfo kInfo = program_detail::completed_info<Shader>();
     static constexpr Needs kNeeds = kInfo.needs;
+    static constexpr ShadeModes kModes = [] {
+        if constexpr (requires { Shader::compiled_modes; }) return Shader::compiled_modes;
+        else return ShadeModes{};
+    }();
     static_assert(kNeeds.varyings <= kMaxVaryings, "a vertex stage writes at most kMaxVaryings floats");
     static_assert((kNeeds.coordinates == Coordinates::None) == (kNeeds.varyings == 0),
                   "Needs::coordinates: None exactly when the vertex stage hands the fragment stage no varying");
@@ -161,26 +168,27 @@ public:
         Uniforms scratch;
         const Uniforms& u = with_user_uniforms(given, scratch);
         if (mode.check_undefined) return shade_checked(mode, in, u, out);
+        using enum Derivatives;
         const bool dbl = mode.precision == Precision::Double;
         switch (mode.derivatives) {
             case Derivatives::None:
                 if constexpr (!kNeeds.derivatives) {
-                    return dbl ? run<Pixels<double, kBatchLanes>>(in, u, out)
-                               : run<Pixels<float, kBatchLanes>>(in, u, out);
+                    return dbl ? shade_as<Pixels<double, kBatchLanes>, None, Precision::Double>(in, u, out)
+                               : shade_as<Pixels<float, kBatchLanes>, None>(in, u, out);
                 } else {
                     throw std::logic_error(std::string(kInfo.name) +
                                            " takes derivatives: it cannot be shaded per pixel");
                 }
             case Derivatives::Fine:
-                return dbl ? run<Quads<double, kBatchQuads, DerivativeRule::Fine>>(in, u, out)
-                           : run<Quads<float, kBatchQuads, DerivativeRule::Fine>>(in, u, out);
+                return dbl ? shade_as<Quads<double, kBatchQuads, DerivativeRule::Fine>, Fine, Precision::Double>(in, u, out)
+                           : shade_as<Quads<float, kBatchQuads, DerivativeRule::Fine>, Fine>(in, u, out);
             case Derivatives::CoarseLower:
-                return run<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>(in, u, out);
+                return shade_as<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>, CoarseLower>(in, u, out);
             case Derivatives::CoarseUpper:
-                return run<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>(in, u, out);
+                return shade_as<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>, CoarseUpper>(in, u, out);
             case Derivatives::Analytic:
-                return dbl ? run<Dual2<Pixels<double, kBatchLanes>>>(in, u, out)
-                           : run<Dual2<Pixels<float, kBatchLanes>>>(in, u, out);
+                return dbl ? shade_as<Dual2<Pixels<double, kBatchLanes>>, Analytic, Precision::Double>(in, u, out)
+                           : shade_as<Dual2<Pixels<float, kBatchLanes>>, Analytic>(in, u, out);
         }
     }
 
@@ -188,7 +196,7 @@ public:
                     ColorBatch& out_a, ColorBatch& out_b) const override {
         Uniforms scratch;
         const Uniforms& u = with_user_uniforms(given, scratch);
-        if constexpr (kWidePairs && kInfo.wide_batches) {
+        if constexpr (kWidePairs && kInfo.wide_batches && kModes.bits == ShadeModes{}.bits) {
             const bool wide_float = !mode.check_undefined && mode.precision == Precision::Float;
             if constexpr (!kNeeds.derivatives) {
                 if (wide_float && mode.derivatives == Derivatives::None) {
@@ -222,22 +230,40 @@ private:
         if (mode.precision == Precision::Double || mode.derivatives == Derivatives::Analytic) {
             throw std::logic_error("undefined-case checking shades float pixels or quads, not double or Dual2");
         }
+        using enum Derivatives;
         switch (mode.derivatives) {
             case Derivatives::None:
                 if constexpr (!kNeeds.derivatives) {
-                    return run_checked<Checked<Pixels<float, kBatchLanes>>>(in, u, out);
+                    return shade_as<Checked<Pixels<float, kBatchLanes>>, None>(in, u, out);
                 } else {
                     throw std::logic_error(std::string(kInfo.name) +
                                            " takes derivatives: it cannot be shaded per pixel");
                 }
             case Derivatives::Fine:
-                return run_checked<Checked<Quads<float, kBatchQuads, DerivativeRule::Fine>>>(in, u, out);
+                return shade_as<Checked<Quads<float, kBatchQuads, DerivativeRule::Fine>>, Fine>(in, u, out);
             case Derivatives::CoarseLower:
-                return run_checked<Checked<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>>(in, u, out);
+                return shade_as<Checked<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>>, CoarseLower>(in, u, out);
             case Derivatives::CoarseUpper:
-                return run_checked<Checked<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>>(in, u, out);
+                return shade_as<Checked<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>>, CoarseUpper>(in, u, out);
             case Derivatives::Analytic:
                 break;
+        }
+    }
+
+    // Shading in a mode this build left out (kModes): a caller that asked for the wrong build.
+    [[noreturn]] static void not_compiled() {
+        throw std::logic_error(std::string(kInfo.name) + " was compiled for other ways of shading than this one");
+    }
+
+    // run<F>, or run_checked<F> for Checked numbers, where the build holds mode (D, P).
+    template <class F, Derivatives D, Precision P = Precision::Float>
+    static void shade_as(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+        if constexpr (!is_checked_mask<Bool<F>>::value && kModes.has({D, P, false})) {
+            run<F>(in, u, out);
+        } else if constexpr (is_checked_mask<Bool<F>>::value && kModes.has({D, P, true})) {
+            run_checked<F>(in, u, out);
+        } else {
+            not_compiled();
         }
     }
 

@@ -33,4 +33,12 @@ DrawShading choose_shading(const Needs& needs, bool texture_lod, const ShadeRequ
     return s;
 }
 
+ShadeModes modes_for(const Needs& needs, const ShadeRequest& request) {
+    ShadeModes m{0};
+    for (const bool texture_lod : {false, true}) {
+        m.bits |= 1u << ShadeModes::bit(choose_shading(needs, texture_lod, request).mode);
+    }
+    return m;
+}
+
 }  // namespace qs

@@ -3,6 +3,7 @@
 // renderers, from what the shader needs and what was asked. A request no instantiation honours
 // is refused before anything renders, never quietly shaded another way.
 
+#include <cstdint>
 #include <stdexcept>
 
 #include "shading/program.h"
@@ -36,5 +37,20 @@ struct DrawShading {
 // takes derivatives (unless the general path is asked for), else quads under the requested rule,
 // or Dual2 for analytic derivatives. Checks the request first.
 DrawShading choose_shading(const Needs& needs, bool texture_lod, const ShadeRequest& request);
+
+// A set of ShadeModes: the instantiations a build of a shader holds (ProgramOf honours a
+// shader's `compiled_modes`; a plugin compiled for one run holds only what the run shades).
+struct ShadeModes {
+    std::uint32_t bits = ~0u;  // every mode
+    static constexpr int bit(ShadeMode m) {
+        return int(m.derivatives) * 4 + int(m.precision) * 2 + int(m.check_undefined);
+    }
+    constexpr bool has(ShadeMode m) const { return (bits >> bit(m) & 1u) != 0; }
+    constexpr bool covers(ShadeModes other) const { return (other.bits & ~bits) == 0; }
+};
+
+// The modes `request` shades a shader of `needs` in, on every draw (with a texture's level of
+// detail or without). Checks the request first.
+ShadeModes modes_for(const Needs& needs, const ShadeRequest& request);
 
 }  // namespace qs

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 
-#include <OpenImageIO/strutil.h>
-
 #include "render/reference_process.h"
+#include "scenes/base64.h"
 #include "scenes/output_file.h"
 #include "scenes/temporary_file.h"
 #include "study/study.h"
@@ -78,9 +78,8 @@ std::vector<std::string> pareto_front(std::vector<const Row*> rows) {
 std::string data_uri(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) return {};
-    std::stringstream s;
-    s << in.rdbuf();
-    return "data:image/png;base64," + OIIO::Strutil::base64_encode(s.str());
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return "data:image/png;base64," + base64(bytes);
 }
 
 std::string figure(const fs::path& root, const std::string& relative, const std::string& caption) {

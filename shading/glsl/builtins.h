@@ -42,9 +42,12 @@ struct promote<T> { using type = T; };
 template <class A, class B, class... Rest>
 struct promote<A, B, Rest...> {
     using tail = typename promote<B, Rest...>::type;
-    using type = std::conditional_t<std::is_arithmetic_v<A>,
-                                    std::conditional_t<std::is_arithmetic_v<tail>, std::common_type_t<A, tail>, tail>,
-                                    A>;
+    // common_type named, not instantiated, unless both are fundamental: clang instantiates this
+    // for a vector's operands too, while choosing between a built-in's overloads.
+    using type = typename std::conditional_t<
+        std::is_arithmetic_v<A>,
+        std::conditional_t<std::is_arithmetic_v<tail>, std::common_type<A, tail>, std::type_identity<tail>>,
+        std::type_identity<A>>::type;
 };
 template <class... Ts>
 using promote_t = typename promote<Ts...>::type;

@@ -45,7 +45,6 @@
 #include <cstddef>
 #include <memory>
 #include <new>
-#include <source_location>
 #include <stdexcept>
 #include <tuple>
 #include <type_traits>
@@ -54,6 +53,19 @@
 #include "shading/glsl/builtins.h"
 
 namespace qs::glsl {
+
+// Where a loop's head is written, for `check`'s report of what a Loop does not hold: what
+// std::source_location gives, read with the builtins it is made of, which clang 14 (the fuzz
+// build's compiler) has although its <source_location> is empty.
+struct SourcePlace {
+    static constexpr SourcePlace current(const char* file = __builtin_FILE(), unsigned line = __builtin_LINE()) {
+        return {file, line};
+    }
+    constexpr const char* file_name() const { return file; }
+    constexpr unsigned line() const { return at_line; }
+    const char* file;
+    unsigned at_line;
+};
 
 // The mask type of a variable's lanes; none for anything else.
 template <class V>
@@ -181,7 +193,7 @@ template <class M, class... Vars>
 class Loop final : public LoopLanes<M> {
     // The checked instantiation's loops tell LoopWrites what they hold (number/checked.h).
     static constexpr bool kChecked = is_checked_mask<M>::value;
-    using Here = std::source_location;
+    using Here = SourcePlace;
 
 public:
     explicit Loop(Vars&... vars) : Loop(M(true), nullptr, vars...) {}

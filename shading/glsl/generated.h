@@ -3,6 +3,7 @@
 // vocabulary the hand translations use: the scene's matrices and texture size as GLSL values, and
 // conversions of whole vectors (a hand translation converts component by component).
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
 #include "shading/glsl/mat.h"
@@ -10,12 +11,21 @@
 
 namespace qs::glsl {
 
-// A host matrix as a GLSL mat4, column by column.
+// A host matrix as a GLSL matrix, column by column.
 template <class F>
 mat4<F> transform(const glm::mat4& m) {
     mat4<F> r;
     for (int c = 0; c < 4; ++c) {
         for (int k = 0; k < 4; ++k) r[c][k] = F(m[c][k]);
+    }
+    return r;
+}
+
+template <class F>
+mat3<F> transform(const glm::mat3& m) {
+    mat3<F> r;
+    for (int c = 0; c < 3; ++c) {
+        for (int k = 0; k < 3; ++k) r[c][k] = F(m[c][k]);
     }
     return r;
 }

@@ -41,7 +41,9 @@ struct Lanes32 {
 template <class T, class F, class S>
 IntLanes<T, F> bitfieldExtract(const IntLanes<T, F>& value, const IntLanes<S, F>& offset, const IntLanes<S, F>& bits) {
     using namespace integer_functions_detail;
-    const Lanes32 v(value), o(offset), n(bits);
+    // One declaration each: the value's lanes and the offset's may differ in type.
+    const Lanes32 v(value);
+    const Lanes32 o(offset), n(bits);
     return from_lanes<IntLanes<T, F>>([&](int i) -> T {
         if (n.value(i) <= 0) return T(0);
         const std::uint32_t field = (v.bits(i) >> (o.bits(i) & 31u)) & low_bits(n.value(i));
@@ -58,7 +60,8 @@ template <class T, class F, class S>
 IntLanes<T, F> bitfieldInsert(const IntLanes<T, F>& base, const IntLanes<T, F>& insert, const IntLanes<S, F>& offset,
                               const IntLanes<S, F>& bits) {
     using namespace integer_functions_detail;
-    const Lanes32 a(base), b(insert), o(offset), n(bits);
+    const Lanes32 a(base), b(insert);
+    const Lanes32 o(offset), n(bits);
     return from_lanes<IntLanes<T, F>>([&](int i) {
         const std::uint32_t shift = o.bits(i) & 31u;
         const std::uint32_t mask = n.value(i) <= 0 ? 0u : low_bits(n.value(i)) << shift;

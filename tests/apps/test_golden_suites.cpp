@@ -268,6 +268,7 @@ TEST_CASE("test --merge: lying fragments are refused by file and field, their pa
     for (const auto& [fragment, message] : std::vector<std::pair<std::string, std::string>>{
              {fragment_json(result_json("a"), "100000000"), "shards: expected a whole number within 1..100000"},
              {fragment_json(result_json("a"), "3", "2.9"), "shard: expected a whole number"},
+             {fragment_json(result_json("a"), "3", "0"), "shard: expected a whole number within 1..3"},
              {fragment_json(result_json("a"), "4294967298", "4294967297"), "shards: expected a whole number within"},
              {fragment_json(result_json("a") + "," + result_json("a", "", "1"), "1", "1", "2"),
               "'a' is an earlier result's name"},

@@ -29,12 +29,21 @@ same "$work/interpreted.png" "$work/translated.png"
 XDG_CACHE_HOME=$work/cache "$bin/quadshade" render "$scene" $size --glsl "$frag" --compile \
     -o "$work/compiled.png" 2> "$work/compile.txt"
 grep -q "compiled stripes.frag in" "$work/compile.txt"
+if grep -q "warning" "$work/compile.txt"; then cat "$work/compile.txt" >&2; exit 1; fi  # the plugin loads
 same "$work/interpreted.png" "$work/compiled.png"
 XDG_CACHE_HOME=$work/cache "$bin/quadshade" render "$scene" $size --glsl "$frag" \
     -o "$work/cached.png" 2> "$work/cached.txt"
-if grep -q "compil" "$work/cached.txt"; then echo "the cached plugin was compiled again" >&2; exit 1; fi
+if grep -q "compil\|warning" "$work/cached.txt"; then cat "$work/cached.txt" >&2; exit 1; fi  # loaded, not compiled again
 same "$work/interpreted.png" "$work/cached.png"
 [ "$(ls "$work/cache/quadshade/plugins" | wc -l)" = 1 ]
+# The plugin holds what that render shades (llvmpipe's rule, float): a render by softpipe's rule is
+# the interpreter's, without compiling or a warning.
+XDG_CACHE_HOME=$work/cache "$bin/quadshade" render "$scene" $size --glsl "$frag" --derivatives coarse-lower \
+    -o "$work/coarse.png" 2> "$work/coarse.txt"
+if grep -q "compil\|warning" "$work/coarse.txt"; then cat "$work/coarse.txt" >&2; exit 1; fi
+XDG_CACHE_HOME=$work/no-cache "$bin/quadshade" render "$scene" $size --glsl "$frag" --derivatives coarse-lower \
+    -o "$work/coarse-interpreted.png" 2> /dev/null
+same "$work/coarse-interpreted.png" "$work/coarse.png"
 
 # A cache that cannot be written: the interpreter's picture, and one warning.
 touch "$work/not-a-folder"
@@ -42,3 +51,25 @@ XDG_CACHE_HOME=$work/not-a-folder "$bin/quadshade" render "$scene" $size --glsl 
     -o "$work/fallback.png" 2> "$work/fallback.txt"
 [ "$(grep -c "warning" "$work/fallback.txt")" = 1 ]
 same "$work/interpreted.png" "$work/fallback.png"
+
+# gallery --glsl and test's glsl cases follow render's rule: the cached plugin, --compile where the
+# cache lacks it. A cache whose plugin is broken shows that they looked there: one warning, and
+# the interpreter's picture.
+cp -r "$work/cache" "$work/broken-cache"
+for lib in "$work"/broken-cache/quadshade/plugins/*/lib*.so; do : > "$lib"; done
+mkdir -p "$work/suite/expected"
+cp "$frag" "$work/suite/stripes.frag"
+cp "$work/interpreted.png" "$work/suite/expected/stripes.png"
+printf '{"cases": [{"name": "stripes", "scene": "%s", "glsl": "stripes.frag", "size": "96x64"}]}\n' "$scene" \
+    > "$work/suite/suite.json"
+for cache in cache broken-cache; do
+    XDG_CACHE_HOME=$work/$cache "$bin/quadshade" test "$work/suite/suite.json" --allow-outside-paths --compile \
+        > /dev/null 2> "$work/suite-$cache.txt"
+    XDG_CACHE_HOME=$work/$cache "$bin/quadshade" gallery "$work/gallery-$cache" --glsl "$frag" --compile \
+        --scenes "$scene" --size 32 > /dev/null 2> "$work/gallery-$cache.txt"
+    [ -f "$work/gallery-$cache/glsl.png" ]
+done
+for run in suite gallery; do
+    if grep -q "compil\|warning" "$work/$run-cache.txt"; then cat "$work/$run-cache.txt" >&2; exit 1; fi
+    [ "$(grep -c "cached plugin does not load" "$work/$run-broken-cache.txt")" = 1 ]
+done

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/scene_render.h"
+#include "scenes/base64.h"
 #include "scenes/gltf.h"
 #include "scenes/object_uniforms.h"
 #include "tests/test_command.h"
@@ -32,19 +33,6 @@ using namespace test;
 using json = nlohmann::json;
 
 const std::filesystem::path kGltf = kSource / "scenes/assets/gltf";
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-        std::uint32_t v = std::uint32_t(bytes[i]) << 16;
-        if (n > 1) v |= std::uint32_t(bytes[i + 1]) << 8;
-        if (n > 2) v |= bytes[i + 2];
-        for (std::size_t k = 0; k < 4; ++k) out += k <= n ? digits[(v >> (18 - 6 * k)) & 63] : '=';
-    }
-    return out;
-}
 
 // A file of one triangle (positions as floats) in a data: URI buffer, `extra` bytes after them
 // for accessors of the test's own (their bufferViews start at byte 36).

@@ -7,6 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include <bit>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <regex>
 
 #include "frontend/cpp_writer.h"
@@ -20,6 +23,9 @@
 #include "translated_lawlor_mandelbrot/translated_lawlor_mandelbrot.h"
 #include "translated_bricks_aa/translated_bricks_aa.h"
 #include "translated_lawlor_stained_glass/translated_lawlor_stained_glass.h"
+#include "translated_chained_assignment/translated_chained_assignment.h"
+#include "translated_sampler_parameter/translated_sampler_parameter.h"
+#include "translated_constant_vector_table/translated_constant_vector_table.h"
 #include "translated_texture_lookups/translated_texture_lookups.h"
 
 namespace {
@@ -43,6 +49,15 @@ std::size_t differing_pixels(const Framebuffer& a, const Framebuffer& b) {
     return n;
 }
 
+// A frame of the first pixel's colour everywhere.
+Framebuffer uniform_like(const Framebuffer& f) {
+    Framebuffer u = f;
+    for (std::size_t p = 0; p < u.rgba.size() / 4; ++p) {
+        for (std::size_t c = 0; c < 4; ++c) u.rgba[p * 4 + c] = f.rgba[c];
+    }
+    return u;
+}
+
 }  // namespace
 
 TEST_CASE("every catalogue shader's GLSL is translated, or refused with its line and why", "[translate]") {
@@ -64,7 +79,7 @@ TEST_CASE("every catalogue shader's GLSL is translated, or refused with its line
         }
     }
     INFO(translated << " translated, " << refused << " refused");
-    CHECK(translated >= 97);
+    CHECK(translated >= 113);
 }
 
 TEST_CASE("a translation names GLSL's identifiers safely and keeps file names out of code", "[translate]") {
@@ -79,14 +94,42 @@ TEST_CASE("a translation names GLSL's identifiers safely and keeps file names ou
     CHECK_THROWS_AS(frontend::translate_glsl(frag, std::nullopt, "bad name"), frontend::GlslError);
 }
 
+namespace {
+
+// A compiled translation and the GLSL it was written from: a catalogue shader's, or a file of
+// tests/translate (with the default vertex stage) on the Table 1.1 plane.
+struct TranslatedCase {
+    std::unique_ptr<Program> (*make)();
+    std::string name;
+    bool catalogue = true;
+};
+
+std::string read_text(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+template <class Shader>
+std::unique_ptr<Program> make_program() {
+    return std::make_unique<ProgramOf<Shader>>();
+}
+
+}  // namespace
+
 TEST_CASE("compiled translations draw what the interpreter draws, to the bit, under each rule", "[translate]") {
     // A loop with a break that varies per fragment; a function of derivatives; nested loops
-    // around an if and else that vary per fragment, with a texture.
-    const std::pair<std::unique_ptr<Program> (*)(), std::string> cases[] = {
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>); }, "lawlor_mandelbrot"},
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_bricks_aa::TranslatedBricksAa>); }, "bricks_aa"},
-        {[] { return std::unique_ptr<Program>(new ProgramOf<translated_lawlor_stained_glass::TranslatedLawlorStainedGlass>); },
-         "lawlor_stained_glass"}};
+    // around an if and else that vary per fragment, with a texture; chained assignments; functions
+    // taking a sampler; constant arrays of vectors read per fragment.
+    const TranslatedCase cases[] = {
+        {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
+        {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
+        {make_program<translated_lawlor_stained_glass::TranslatedLawlorStainedGlass>, "lawlor_stained_glass"},
+        {make_program<translated_chained_assignment::TranslatedChainedAssignment>, "chained_assignment", false},
+        {make_program<translated_sampler_parameter::TranslatedSamplerParameter>, "sampler_parameter", false},
+        {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
+         false}};
     struct Mode {
         const char* what;
         Derivatives derivatives;
@@ -97,15 +140,24 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
                           {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
                           {"analytic", Derivatives::Analytic, Precision::Float},
                           {"double", Derivatives::Fine, Precision::Double}};
-    for (const auto& [make, name] : cases) {
-        const Program& catalogue_shader = *find_program(name);
-        frontend::CompiledProgram c = frontend::compile_glsl({name + ".frag", glsl_source(catalogue_shader, false)},
-                                                             frontend::GlslSource{name + ".vert", glsl_source(catalogue_shader, true)});
-        const std::string vertex = c.vertex.text;
-        const Program& interpreted = add_compiled_program(std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(c)),
-                                                          "interpreted", vertex, glsl_source(catalogue_shader, false));
-        const Program& compiled = add_compiled_program(make(), "translated", vertex, glsl_source(catalogue_shader, false));
-        Scene scene = load_scene(test::plane_for(name));
+    for (const TranslatedCase& c : cases) {
+        const std::string& name = c.name;
+        std::optional<frontend::GlslSource> vert;
+        frontend::GlslSource frag;
+        if (c.catalogue) {
+            const Program& catalogue_shader = *find_program(name);
+            frag = {name + ".frag", glsl_source(catalogue_shader, false)};
+            vert = frontend::GlslSource{name + ".vert", glsl_source(catalogue_shader, true)};
+        } else {
+            const std::filesystem::path file = test::kSource / "tests/translate" / (name + ".frag");
+            frag = {file.string(), read_text(file)};
+        }
+        frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, vert);
+        const std::string vertex = compiled_glsl.vertex.text;
+        auto glsl_program = std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(compiled_glsl));
+        const Program& interpreted = add_compiled_program(std::move(glsl_program), "interpreted", vertex, frag.text);
+        const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
+        Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
         for (const Mode& m : modes) {
             FrameRequest r;
             r.width = 64, r.height = 48;
@@ -117,23 +169,74 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
             const Framebuffer got = render_frame(scene, r);
             INFO(name << ", " << m.what);
             CHECK(differing_pixels(expected, got) == 0);
+            CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
         }
     }
 }
 
+namespace {
+
+// bricks_aa compiled for llvmpipe's rule in float only, as a plugin compiled for one render is.
+struct BricksAaFineOnly : translated_bricks_aa::TranslatedBricksAa {
+    static constexpr ShadeModes compiled_modes{1u << ShadeModes::bit({Derivatives::Fine, Precision::Float, false})};
+};
+
+}  // namespace
+
+TEST_CASE("a translation compiled for some ways of shading shades them as the whole one does, refuses others",
+          "[translate]") {
+    const ProgramOf<translated_bricks_aa::TranslatedBricksAa> whole;
+    const ProgramOf<BricksAaFineOnly> fine_only;
+    FragmentBatch in{};
+    for (int i = 0; i < kBatchLanes; ++i) {
+        in.frag_coord[0][i] = float(i % 2 + 2 * (i / 4)), in.frag_coord[1][i] = float(i / 2 % 2);
+        in.frag_coord[2][i] = 0.5f, in.frag_coord[3][i] = 1.0f;
+        for (int v = 0; v < whole.info().needs.varyings; ++v) in.varying[v][i] = 0.37f * float(i) + 0.11f * float(v);
+    }
+    ColorBatch expected{}, got{};
+    whole.shade({Derivatives::Fine, Precision::Float, false}, in, Uniforms{}, expected);
+    fine_only.shade({Derivatives::Fine, Precision::Float, false}, in, Uniforms{}, got);
+    for (int c = 0; c < 4; ++c) {
+        for (int i = 0; i < kBatchLanes; ++i) {
+            CHECK(std::bit_cast<std::uint32_t>(got.rgba[c][i]) == std::bit_cast<std::uint32_t>(expected.rgba[c][i]));
+        }
+    }
+    for (const ShadeMode other : {ShadeMode{Derivatives::CoarseLower, Precision::Float, false},
+                                  ShadeMode{Derivatives::Fine, Precision::Double, false},
+                                  ShadeMode{Derivatives::Fine, Precision::Float, true}}) {
+        CHECK_THROWS_AS(fine_only.shade(other, in, Uniforms{}, got), std::logic_error);
+    }
+}
+
+TEST_CASE("a render's modes: those of a draw with and without a texture's level of detail", "[translate]") {
+    const auto bit = [](Derivatives d, Precision p = Precision::Float, bool checked = false) {
+        return 1u << ShadeModes::bit({d, p, checked});
+    };
+    CHECK(modes_for(Needs{.derivatives = true}, ShadeRequest{}).bits == bit(Derivatives::Fine));
+    CHECK(modes_for(Needs{}, ShadeRequest{}).bits == (bit(Derivatives::None) | bit(Derivatives::Fine)));
+    CHECK(modes_for(Needs{}, ShadeRequest{.derivatives = Derivatives::Analytic, .precision = Precision::Double}).bits ==
+          (bit(Derivatives::None, Precision::Double) | bit(Derivatives::Analytic, Precision::Double)));
+    CHECK(modes_for(Needs{.derivatives = true}, ShadeRequest{.check_undefined = true}).bits ==
+          bit(Derivatives::Fine, Precision::Float, true));
+    CHECK(ShadeModes{}.covers(modes_for(Needs{}, ShadeRequest{})));
+    CHECK_FALSE(ShadeModes{bit(Derivatives::Fine)}.covers(ShadeModes{bit(Derivatives::Fine) | bit(Derivatives::None)}));
+}
+
 TEST_CASE("a translation's texture lookups, every form, draw what the interpreter draws, to the bit, under each rule",
           "[translate][textures]") {
-    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/glsl/textures/texture_lookups.frag");
-    frontend::CompiledProgram c = frontend::compile_glsl(frag, std::nullopt);
-    const std::string vertex = c.vertex.text;
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_lookups.frag");
+    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
+    const std::string vertex = compiled_glsl.vertex.text;
     const Program& interpreted = add_compiled_program(
-        std::make_unique<interpreter::GlslProgram>("interpreted texture_lookups", std::move(c)), "interpreted", vertex, frag.text);
+        std::make_unique<interpreter::GlslProgram>("interpreted texture_lookups", std::move(compiled_glsl)),
+        "interpreted", vertex, frag.text);
     const Program& compiled = add_compiled_program(
-        std::unique_ptr<Program>(new ProgramOf<translated_texture_lookups::TranslatedTextureLookups>), "translated", vertex,
-        frag.text);
-    // The plane's texture with trilinear mipmaps, and the shipped volume with them as `volume`.
+        make_program<translated_texture_lookups::TranslatedTextureLookups>(), "translated", vertex, frag.text);
+    // The plane's texture and the shipped volume as `volume`, both with trilinear mipmaps and a
+    // mirrored wrap, so that offsets and explicit levels reach every filter's path.
     Scene scene = load_scene(test::kPlane);
-    const Sampler trilinear{Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat};
+    const Sampler trilinear{Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::MirroredRepeat,
+                            Wrap::Repeat};
     scene.textures.at(0).sampler = trilinear;
     Texture volume;
     volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
@@ -142,21 +245,27 @@ TEST_CASE("a translation's texture lookups, every form, draw what the interprete
     volume.field = "volume";
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    const std::pair<Derivatives, Precision> modes[] = {{Derivatives::Fine, Precision::Float},
-                                                       {Derivatives::CoarseLower, Precision::Float},
-                                                       {Derivatives::CoarseUpper, Precision::Float},
-                                                       {Derivatives::Analytic, Precision::Float},
-                                                       {Derivatives::Fine, Precision::Double}};
-    for (const auto& [derivatives, precision] : modes) {
+    struct Mode {
+        const char* what;
+        Derivatives derivatives;
+        Precision precision;
+    };
+    const Mode modes[] = {{"fine", Derivatives::Fine, Precision::Float},
+                          {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
+                          {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
+                          {"analytic", Derivatives::Analytic, Precision::Float},
+                          {"double", Derivatives::Fine, Precision::Double}};
+    for (const Mode& m : modes) {
         FrameRequest r;
         r.width = 64, r.height = 48;
-        r.shading.derivatives = derivatives;
-        r.shading.precision = precision;
+        r.shading.derivatives = m.derivatives;
+        r.shading.precision = m.precision;
         r.shader_override = interpreted.info().name;
         const Framebuffer expected = render_frame(scene, r);
         r.shader_override = compiled.info().name;
         const Framebuffer got = render_frame(scene, r);
-        INFO("derivatives " << int(derivatives) << ", precision " << int(precision));
+        INFO(m.what);
         CHECK(differing_pixels(expected, got) == 0);
+        CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
     }
 }
