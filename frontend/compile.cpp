@@ -12,6 +12,7 @@
 
 #include "frontend/binding_names.h"
 #include "frontend/bounded_preprocess.h"
+#include "frontend/derivative_control.h"
 #include "frontend/float_literals.h"
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
@@ -83,16 +84,24 @@ ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::
     ParsedStage p;
     p.text = float_literals_as_float(join_continued_lines(source.text));
     check_macro_expansion(source.file, p.text, stage == EShLangFragment);
-    p.shader = std::make_unique<glslang::TShader>(stage);
     const char* text = p.text.c_str();
     const int length = int(p.text.size());
     const char* name = source.file.c_str();
-    p.shader->setStringsWithLengthsAndNames(&text, &length, &name, 1);
-    p.shader->setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientNone, 100);
-    p.shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
-    p.shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
-    const auto messages = EShMessages(EShMsgDefault | EShMsgEnhanced);
-    const bool ok = p.shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, messages);
+    const auto parse_with = [&](const char* preamble) {
+        p.shader = std::make_unique<glslang::TShader>(stage);
+        p.shader->setStringsWithLengthsAndNames(&text, &length, &name, 1);
+        p.shader->setPreamble(preamble);
+        p.shader->setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientNone, 100);
+        p.shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+        p.shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+        const auto messages = EShMessages(EShMsgDefault | EShMsgEnhanced);
+        return p.shader->parse(GetDefaultResources(), 110, ENoProfile, false, false, messages);
+    };
+    bool ok = parse_with("");
+    if (!ok && wants_derivative_control(*p.shader->getIntermediate())) {
+        ok = parse_with(derivative_control_declarations());
+        if (ok) call_derivative_control_builtins(*p.shader->getIntermediate());
+    }
     const std::string log = std::string(p.shader->getInfoLog()) + p.shader->getInfoDebugLog();
     const std::string errors = reword(log, &warnings);
     if (!ok) throw GlslError(errors.empty() ? source.file + ": error: the shader does not compile" : errors);
@@ -129,7 +138,7 @@ GlslSource default_vertex_shader(const GlslSource& fragment) {
     ParsedStage f = parse(fragment, EShLangFragment, warnings);
     // The fragment stage's inputs, in the order the code reads them.
     ir::Program scratch;
-    ProgramInterface interface{scratch, {}, {}};
+    ProgramInterface interface{scratch, {}, {}, {}};
     StageLowering lowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface);
     (void)lowering.run();
     const int version = f.version;
@@ -182,7 +191,7 @@ CompiledProgram compile_glsl(const GlslSource& fragment, const std::optional<Gls
     ParsedStage v = parse(out.vertex, EShLangVertex, out.warnings);
     ir::Program& program = out.program;
     program.version = f.version;
-    ProgramInterface interface{program, {}, options};
+    ProgramInterface interface{program, {}, options, {}};
     program.fragment = StageLowering(StageKind::Fragment, fragment.file, *f.shader->getIntermediate(), interface).run();
     program.vertex = StageLowering(StageKind::Vertex, out.vertex.file, *v.shader->getIntermediate(), interface).run();
     for (const VaryingSlot& s : interface.varyings) {

@@ -425,6 +425,67 @@ LValue StageLowering::lvalue(TIntermTyped* node) {
     return lv;
 }
 
+LValue StageLowering::argument_lvalue(TIntermTyped* node, std::optional<std::uint32_t> index_register) {
+    LValue lv = lvalue(node);
+    if (lv.index) {
+        // In a variable register: the function's statements reuse temporaries.
+        const Slot index{B::Int, index_register ? *index_register : allocate(B::Int, Space::Variable)};
+        move(index, {B::Int, *lv.index}, false);
+        lv.index = index.reg;
+    }
+    return lv;
+}
+
+std::optional<Place> StageLowering::eval_output_conversions(TIntermAggregate* comma) {
+    // glslang's topology (ParseHelper.cpp, addOutputArgumentConversions):
+    //     (f(.., tempArg, ..), target = T(tempArg), ..) or (tempReturn = f(..), target = T(tempArg), .., tempReturn)
+    // with every tempArg at the call's own source location, which no symbol the shader writes has.
+    const glslang::TIntermSequence& parts = comma->getSequence();
+    TIntermTyped* first = parts.empty() ? nullptr : parts[0]->getAsTyped();
+    if (!first) return std::nullopt;
+    TIntermAggregate* call = first->getAsAggregate();
+    if (TIntermBinary* b = first->getAsBinaryNode(); b && b->getOp() == glslang::EOpAssign) call = b->getRight()->getAsAggregate();
+    if (!call || call->getOp() != glslang::EOpFunctionCall) return std::nullopt;
+    const glslang::TSourceLoc& at = call->getLoc();
+    const auto temporary = [&](const glslang::TIntermSymbol* s) {
+        return s && s->getName() == "tempArg" && s->getLoc().line == at.line && s->getLoc().column == at.column &&
+               s->getLoc().string == at.string;
+    };
+    // The tempArg a part converts to its target, or nullptr.
+    const auto converted = [&](TIntermNode* n) -> const glslang::TIntermSymbol* {
+        TIntermBinary* b = n->getAsBinaryNode();
+        if (!b || b->getOp() != glslang::EOpAssign) return nullptr;
+        TIntermTyped* from = b->getRight();
+        if (TIntermUnary* u = from->getAsUnaryNode()) from = u->getOperand();
+        const glslang::TIntermSymbol* s = from->getAsSymbolNode();
+        return temporary(s) ? s : nullptr;
+    };
+    const auto saved_variables = variable_top_;
+    std::vector<long long> ids;
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+        if (const glslang::TIntermSymbol* s = converted(parts[i])) {
+            // The index register outlives the call, which gives its own variables back.
+            converted_outputs_[s->getId()] = {parts[i]->getAsBinaryNode()->getLeft(), allocate(B::Int, Space::Variable), std::nullopt};
+            ids.push_back(s->getId());
+        }
+    }
+    if (ids.empty()) return std::nullopt;
+    Place last = eval(first);  // eval_call takes the targets' l-values where their tempArgs stand
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+        const glslang::TIntermSymbol* s = converted(parts[i]);
+        if (!s) {
+            last = eval(parts[i]->getAsTyped());
+            continue;
+        }
+        const LValue& target = converted_outputs_.at(s->getId()).lvalue.value();
+        last = eval(parts[i]->getAsBinaryNode()->getRight());
+        store(target, last);
+    }
+    for (long long id : ids) converted_outputs_.erase(id);
+    variable_top_ = saved_variables;
+    return last;
+}
+
 Place StageLowering::read(const LValue& lv) {
     if (!lv.index) return lv.place;
     Place r;
@@ -527,6 +588,9 @@ Place StageLowering::eval_aggregate(TIntermAggregate* node) {
         return eval_call(node);
     }
     if (op == glslang::EOpComma || op == glslang::EOpSequence) {
+        if (op == glslang::EOpComma) {
+            if (std::optional<Place> p = eval_output_conversions(node)) return *p;
+        }
         Place last;
         for (TIntermNode* n : node->getSequence()) {
             if (auto* t = n->getAsTyped()) last = eval(t);
@@ -697,7 +761,12 @@ Place StageLowering::eval_call(TIntermAggregate* call, const Place* destination)
         }
         Place param = allocate(p->getType(), Space::Variable);
         if (q == glslang::EvqOut || q == glslang::EvqInOut) {
-            LValue target = lvalue(arg);
+            if (auto* s = arg->getAsSymbolNode()) {
+                if (auto c = converted_outputs_.find(s->getId()); c != converted_outputs_.end()) {
+                    c->second.lvalue = argument_lvalue(c->second.target, c->second.index);
+                }
+            }
+            LValue target = argument_lvalue(arg);
             if (q == glslang::EvqInOut) {
                 assign(param, read(target), false);
             } else {

@@ -186,6 +186,32 @@ Place StageLowering::color_input(TIntermSymbol* node, const std::string& front, 
     return p;
 }
 
+// The colours the fragment stage reads and the vertex stage does not write. GL leaves them
+// undefined but links; quadshade gives what llvmpipe gives: a back colour not written is the
+// front one (so one-sided shaders draw the same with two-sided colour on), a front colour not
+// written is zero.
+void StageLowering::supply_unwritten_colors() {
+    for (const auto& [front, back] : {std::pair{"gl_Color", "gl_BackColor"}, {"gl_SecondaryColor", "gl_BackSecondaryColor"}}) {
+        VaryingSlot* f = interface_.find_varying(front);
+        if (!f) continue;
+        std::array<std::uint32_t, 4> value;
+        value.fill(float_constant(0.0f));
+        if (f->written) {
+            for (const ir::Binding& o : stage_.outputs) {
+                const int k = int(o.index) - f->first;
+                if (o.source == ir::Source::Varying && k >= 0 && k < 4) value[std::size_t(k)] = o.reg;
+            }
+        }
+        for (VaryingSlot* v : {f, interface_.find_varying(back)}) {
+            if (!v || v->written) continue;
+            for (std::uint16_t k = 0; k < 4; ++k) {
+                stage_.outputs.push_back({ir::Source::Varying, 0, std::uint16_t(v->first + k), B::Float, value[k]});
+            }
+            v->written = true;
+        }
+    }
+}
+
 Place StageLowering::ftransform() {
     if (kind_ != StageKind::Vertex) throw GlslError(source_position(file_, int(line_)) + "ftransform() exists in vertex shaders only");
     const Place mvp = transform_uniform(ir::TransformUniform::ModelViewProjection, 4, false);
@@ -313,7 +339,7 @@ Place StageLowering::uniform_variable(TIntermSymbol* node) {
                 case B::Bool: u.initial[std::size_t(i)] = c.getBConst() ? 1u : 0u; break;
             }
         }
-        const int slot = interface_.uniform(u, where(node));
+        const int slot = interface_.uniform(u, where(node), initial.size() > 0);
         if (slot > 0xFFFF) refuse(node, "more than 65536 uniform values");
         const Place p = bound_input(ir::Source::UserUniform, std::uint16_t(slot), std::vector<B>(std::size_t(u.components), bank));
         for (std::size_t i = 0; i < p.size(); ++i) whole[std::size_t(leaf.first) + i] = p[i];
@@ -511,16 +537,30 @@ void StageLowering::declare_globals(glslang::TIntermAggregate* root) {
         }
     };
     Symbols all;
+    std::vector<TIntermSymbol*> initialised_uniforms;
     for (TIntermNode* n : root->getSequence()) {
         // Declared is not used: the linker's list of declarations is not code. (A fragment
-        // input no code reads needs no vertex stage to write it, as in GL.)
-        if (auto* a = n->getAsAggregate(); a && a->getOp() == glslang::EOpLinkerObjects) continue;
+        // input no code reads needs no vertex stage to write it, as in GL.) Except a uniform
+        // with an initializer, which Mesa keeps active unused: the script may set it, and the
+        // other stage may read it without one.
+        if (auto* a = n->getAsAggregate(); a && a->getOp() == glslang::EOpLinkerObjects) {
+            for (TIntermNode* o : a->getSequence()) {
+                TIntermSymbol* s = o->getAsSymbolNode();
+                if (s && s->getQualifier().storage == glslang::EvqUniform && s->getConstArray().size() > 0 &&
+                    s->getBasicType() != glslang::EbtSampler && s->getBasicType() != glslang::EbtBlock) {
+                    initialised_uniforms.push_back(s);
+                }
+            }
+            continue;
+        }
         n->traverse(&all);
     }
+    for (TIntermSymbol* s : initialised_uniforms) all.visitSymbol(s);
     if (kind_ == StageKind::Vertex && interface_.options.attribute_locations) assign_attribute_locations(all.order);
     for (TIntermSymbol* s : all.order) {
         const glslang::TStorageQualifier q = s->getQualifier().storage;
-        if (s->getBasicType() == glslang::EbtSampler || s->getConstArray().size() > 0) continue;
+        // A symbol with values is a const variable glslang folded, or a uniform's initializer.
+        if (s->getBasicType() == glslang::EbtSampler || (s->getConstArray().size() > 0 && q != glslang::EvqUniform)) continue;
         if (q == glslang::EvqGlobal) {
             Place p = allocate(s->getType(), Space::Variable);
             for (const Slot& r : p) move(r, {r.bank, constant(r.bank, 0)}, false);

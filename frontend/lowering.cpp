@@ -376,6 +376,7 @@ ir::Stage StageLowering::run() {
         }
     }
     frames_.pop_back();
+    if (kind_ == StageKind::Vertex) supply_unwritten_colors();
     fuse_moves();
 
     // Lay the spaces out: variables, temporaries, constants.

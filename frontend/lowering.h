@@ -120,6 +120,12 @@ private:
     int sampler_of(glslang::TIntermTyped* node);
 
     LValue lvalue(glslang::TIntermTyped* node);
+    // An out or inout argument's l-value, its run-time index fixed where the call stands: the
+    // function may assign what the index was computed from.
+    LValue argument_lvalue(glslang::TIntermTyped* node, std::optional<std::uint32_t> index_register = std::nullopt);
+    // glslang's comma for out arguments of another type: f(.., tempArg, ..), target = T(tempArg).
+    // The target's l-value is taken where tempArg stands among the arguments, as GLSL takes it.
+    std::optional<Place> eval_output_conversions(glslang::TIntermAggregate* comma);
 
     // ---- statements ------------------------------------------------------------------------
     void statement(TIntermNode* node);
@@ -146,6 +152,7 @@ private:
     void assign_attribute_locations(const std::vector<glslang::TIntermSymbol*>& symbols);
     Place front_facing();
     Place color_input(glslang::TIntermSymbol* node, const std::string& front, const std::string& back);
+    void supply_unwritten_colors();
     bool redeclared(const std::string& name) const;
     Place ftransform();
     void declare_globals(glslang::TIntermAggregate* root);
@@ -179,6 +186,14 @@ private:
         Place result;                                 // the return value's registers
     };
     std::vector<Frame> frames_;  // the inlined calls, main first
+    // eval_output_conversions's targets, by the symbol id of their tempArg: the expression, the
+    // register for its run-time index, and its l-value once the call has taken it.
+    struct ConvertedOutput {
+        glslang::TIntermTyped* target;
+        std::uint32_t index;
+        std::optional<LValue> lvalue;
+    };
+    std::unordered_map<long long, ConvertedOutput> converted_outputs_;
     int loops_ = 0;              // loops and switches open, for break
     const TIntermNode* statement_value_ = nullptr;  // an expression statement's node: its value unused
     // Variable registers below this hold globals and outputs, which any function may assign.

@@ -16,16 +16,25 @@ const char* bank_name(ir::Bank b) {
 
 }  // namespace
 
-int ProgramInterface::uniform(const ir::Uniform& u, const std::string& where) {
+int ProgramInterface::uniform(const ir::Uniform& u, const std::string& where, bool initialised) {
     for (std::size_t i = 0; i < program.uniforms.size(); ++i) {
-        const ir::Uniform& have = program.uniforms[i];
+        ir::Uniform& have = program.uniforms[i];
         if (have.name != u.name) continue;
         if (have.bank != u.bank || have.components != u.components || have.columns != u.columns) {
             throw GlslLinkError(where + "uniform '" + u.name + "' is declared with another type in the other stage");
         }
+        // The program has one uniform of the name: an initializer in either stage is its own.
+        if (initialised && uniform_initialised[i] && have.initial != u.initial) {
+            throw GlslLinkError(where + "uniform '" + u.name + "' has another initializer in the other stage");
+        }
+        if (initialised && !uniform_initialised[i]) {
+            have.initial = u.initial;
+            uniform_initialised[i] = true;
+        }
         return int(i);
     }
     program.uniforms.push_back(u);
+    uniform_initialised.push_back(initialised);
     return int(program.uniforms.size() - 1);
 }
 

@@ -28,9 +28,11 @@ struct ProgramInterface {
     ir::Program& program;
     std::vector<VaryingSlot> varyings;
     CompileOptions options;
+    std::vector<bool> uniform_initialised;  // per slot of program.uniforms: declared with an initializer
 
-    // The slot of the user uniform `u`, added on first use; a second declaration must agree.
-    int uniform(const ir::Uniform& u, const std::string& where);
+    // The slot of the user uniform `u`, added on first use; a second declaration must agree,
+    // in its type and, where both have one, in its initializer (u.initial, when `initialised`).
+    int uniform(const ir::Uniform& u, const std::string& where, bool initialised);
     // The slot of the sampler `name`.
     int sampler(const std::string& name, int dims, const std::string& where);
     // The fragment stage's varying `name`, added on first use.

@@ -1,8 +1,11 @@
 #include "piglit/numbers.h"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 namespace qs::piglit {
 
@@ -27,10 +30,20 @@ std::int32_t parse_integer(const char* s, char** end) {
     return std::int32_t(std::strtol(s, end, 0));
 }
 
-std::optional<float> parse_half(const char* s, char** end) {
-    const float f = parse_float(s, end);
-    return float(static_cast<_Float16>(f));
+float round_to_half(float f) {
+    // Written out rather than through _Float16, which clang before 15 does not have on x86.
+    if (!std::isfinite(f)) return f;
+    const float a = std::fabs(f);
+    if (a >= 65520.0f) return std::copysign(std::numeric_limits<float>::infinity(), f);  // past 65504's half step
+    // A half's step near a: 2^(E-10) for a in [2^E, 2^(E+1)), normal halves' E from -14; subnormals share
+    // 2^-24. Scaling by a power of two is exact, and nearbyint rounds to even as the conversion does.
+    int e = 0;
+    std::frexp(a, &e);
+    const float step = std::ldexp(1.0f, std::max(e - 1, -14) - 10);
+    return std::copysign(std::nearbyint(a / step) * step, f);
 }
+
+float parse_half(const char* s, char** end) { return round_to_half(parse_float(s, end)); }
 
 std::vector<float> parse_floats(const char* s, std::size_t n, const char** rest) {
     std::vector<float> out;

@@ -5,7 +5,6 @@
 // through strtoll in any base, kept to 32 bits; uints through strtoul ("-1" is 0xffffffff).
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace qs::piglit {
@@ -13,7 +12,9 @@ namespace qs::piglit {
 // One number at s (after blanks); *end is where it stopped (s when there was none).
 float parse_float(const char* s, char** end);
 std::int32_t parse_integer(const char* s, char** end);  // strtol_hex: "0x" bits, else any base
-std::optional<float> parse_half(const char* s, char** end);  // a float rounded to half precision
+float parse_half(const char* s, char** end);  // a float rounded to half precision
+// f rounded to the nearest IEEE half-precision value (ties to even), overflowing to infinity.
+float round_to_half(float f);
 
 // Up to n numbers from the start of s, as many as there are; `rest` where reading stopped.
 std::vector<float> parse_floats(const char* s, std::size_t n, const char** rest = nullptr);

@@ -124,14 +124,7 @@ bool parse_datum(const VertexColumn& c, const char*& s, std::uint32_t& word) {
     errno = 0;
     const std::string& t = c.data_type;
     if (t == "float" || t == "double" || t == "half") {
-        float v = 0.0f;
-        if (t == "half") {
-            const std::optional<float> h = parse_half(s, &end);
-            if (!h) return false;
-            v = *h;
-        } else {
-            v = parse_float(s, &end);
-        }
+        const float v = t == "half" ? parse_half(s, &end) : parse_float(s, &end);
         if (end == s || errno == ERANGE) return false;
         s = end;
         word = std::bit_cast<std::uint32_t>(v);

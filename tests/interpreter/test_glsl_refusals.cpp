@@ -45,6 +45,11 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
          "user.frag:4", "unknown_varying"},
         // glslang's own message for GLSL that does not compile
         {"#version 110\nvoid main() {\n  gl_FragColor = vec4(1.0) +;\n}\n", "user.frag:3", "error: "},
+        // GL_ARB_derivative_control's functions below 4.00: only where the shader enables it, and
+        // the lines of a shader that does are its own
+        {"#version 150\nout vec4 c;\nvoid main() {\n  c = vec4(dFdxFine(gl_FragCoord.x));\n}\n", "user.frag:4", "dFdxFine"},
+        {"#version 150\n#extension GL_ARB_derivative_control : enable\nout vec4 c;\nvoid main() {\n"
+         "  c = vec4(dFdxFine(gl_FragCoord.x)) +;\n}\n", "user.frag:5", "error: "},
     };
     for (const Case& c : cases) {
         const std::string message = refusal(c.source);

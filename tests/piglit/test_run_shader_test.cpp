@@ -176,6 +176,48 @@ probe rgba 1 1 1.0 0.0 0.0 0.5
     CHECK(r.status == Status::Pass);
 }
 
+TEST_CASE("a uniform's initializer is its value until the script sets it, in both stages", "[piglit]") {
+    // As Mesa links them: a uniform with an initializer is active unused, and one program-wide.
+    const TestResult r = run("uniform-initializers", R"([require]
+GLSL >= 1.20
+
+[vertex shader]
+uniform float from_vertex = 0.5;
+void main() { gl_Position = gl_Vertex; }
+
+[fragment shader]
+uniform float unused = 4.0;
+uniform float from_vertex;
+uniform vec2 kept = vec2(0.25, 0.75);
+uniform float set = 1.0;
+void main() { gl_FragColor = vec4(from_vertex, kept, set); }
+
+[test]
+uniform float unused 3.0
+uniform float set 0.0
+draw rect -1 -1 2 2
+probe all rgba 0.5 0.25 0.75 0.0
+)");
+    INFO(describe(r));
+    CHECK(r.status == Status::Pass);
+    const TestResult differ = run("uniform-initializers-differ", R"([require]
+GLSL >= 1.20
+
+[vertex shader]
+uniform float u = 0.5;
+void main() { gl_Position = gl_Vertex * u; }
+
+[fragment shader]
+uniform float u = 0.25;
+void main() { gl_FragColor = vec4(u); }
+
+[test]
+draw rect -1 -1 2 2
+)");
+    CHECK(differ.status == Status::Fail);
+    CHECK(differ.message.find("uniform 'u' has another initializer in the other stage") != std::string::npos);
+}
+
 TEST_CASE("ortho, frustum and the current colour drive GL's fixed-function inputs", "[piglit]") {
     const TestResult r = run("fixed-function", R"([require]
 GLSL >= 1.10
@@ -239,6 +281,66 @@ probe rgba 240 240 0 0 0 1
 )");
     INFO(describe(r));
     CHECK(r.status == Status::Pass);
+}
+
+TEST_CASE("a colour the vertex stage does not write: the back one is the front one, the front one zero", "[piglit]") {
+    // What llvmpipe draws (GL leaves them undefined): piglit's shader_runner passes both scripts.
+    // The left triangle faces the viewer, the right one (clockwise) faces away.
+    const std::string triangles = R"(
+[vertex data]
+vertex/float/2
+-1.0 -1.0
+ 0.0 -1.0
+-1.0  1.0
+ 1.0 -1.0
+ 0.0 -1.0
+ 1.0  1.0
+)";
+    const TestResult front_only = run("front-color-only", R"([require]
+GLSL >= 1.10
+
+[vertex shader]
+attribute vec4 vertex;
+void main() {
+    gl_Position = vertex;
+    gl_FrontColor = vec4(0.25, 0.5, 0.75, 1.0);
+}
+
+[fragment shader]
+void main() { gl_FragColor = gl_Color; }
+)" + triangles + R"(
+[test]
+enable GL_VERTEX_PROGRAM_TWO_SIDE
+draw arrays GL_TRIANGLES 0 6
+probe rgba 10 125 0.25 0.5 0.75 1.0
+probe rgba 240 125 0.25 0.5 0.75 1.0
+)");
+    INFO(describe(front_only));
+    CHECK(front_only.status == Status::Pass);
+    const TestResult back_only = run("back-secondary-color-only", R"([require]
+GLSL >= 1.10
+
+[vertex shader]
+attribute vec4 vertex;
+void main() {
+    gl_Position = vertex;
+    gl_BackSecondaryColor = vec4(0.25, 0.5, 0.75, 1.0);
+}
+
+[fragment shader]
+void main() { gl_FragColor = gl_SecondaryColor; }
+)" + triangles + R"(
+[test]
+enable GL_VERTEX_PROGRAM_TWO_SIDE
+draw arrays GL_TRIANGLES 0 6
+probe rgba 10 125 0.0 0.0 0.0 0.0
+probe rgba 240 125 0.25 0.5 0.75 1.0
+disable GL_VERTEX_PROGRAM_TWO_SIDE
+draw arrays GL_TRIANGLES 0 6
+probe rgba 240 125 0.0 0.0 0.0 0.0
+)");
+    INFO(describe(back_only));
+    CHECK(back_only.status == Status::Pass);
 }
 
 TEST_CASE("gl_Color redeclared smooth stays smooth under the flat shade model", "[piglit]") {
@@ -434,4 +536,66 @@ probe rgba 10 11 0.7216 0.0 0.0 1.0
     CHECK(fine.status == Status::Warn);
     const TestResult coarse = run("derivatives-coarse", script, {Derivatives::CoarseLower, Backend::Rasterizer});
     CHECK(coarse.status == Status::Fail);  // the last line that did not pass decides
+}
+
+TEST_CASE("GL_ARB_derivative_control's functions below GLSL 4.00: fine under every rule, coarse by the rule", "[piglit]") {
+    // llvmpipe's coarse derivatives are its fine ones, as under the default rule here.
+    const auto script = [](const char* coarse_at_row_11) {
+        return std::string(R"([require]
+GLSL >= 1.50
+GL_ARB_derivative_control
+
+[vertex shader passthrough]
+
+[fragment shader]
+#extension GL_ARB_derivative_control: require
+void main() {
+    float x = 16.0 * gl_FragCoord.x * gl_FragCoord.y;
+    gl_FragColor = vec4(dFdxFine(x) / 255.0, dFdxCoarse(x) / 255.0, 0.0, 1.0);
+}
+
+[test]
+draw rect -1 -1 2 2
+probe rgba 10 10 0.6588 0.6588 0.0 1.0
+probe rgba 10 11 0.7216 )") + coarse_at_row_11 + " 0.0 1.0\n";
+    };
+    const TestResult fine = run("derivative-control", script("0.7216"));
+    INFO(describe(fine));
+    CHECK(fine.status == Status::Pass);
+    const TestResult coarse = run("derivative-control-coarse", script("0.6588"), {Derivatives::CoarseLower, Backend::Rasterizer});
+    INFO(describe(coarse));
+    CHECK(coarse.status == Status::Pass);
+}
+
+TEST_CASE("an out argument's run-time index is the one the call finds, converted or not", "[piglit]") {
+    // What llvmpipe draws: the function assigns the variable the index was read from.
+    const TestResult r = run("out-argument-index", R"([require]
+GLSL >= 1.20
+
+[vertex shader passthrough]
+
+[fragment shader]
+uniform int u = 1;
+void reset(inout int i, inout float f) { i = 0; f = 0.25; }
+void reset_int(inout int i, out int x) { i = 0; x = 2; }
+void main() {
+    vec4 v = vec4(0.0);
+    int i = u;
+    reset(i, v[i]);        // v[1]: the index as the call finds it
+    i = u + 1;
+    reset_int(i, v[i]);    // v[2], converted from int on the way out
+    int j = u + 2;
+    // The shader's own comma, as glslang's for a conversion but for where its parts stand: v[0],
+    // j being 0 by then.
+    int tempArg;
+    reset_int(j, tempArg), v[j] = float(tempArg);
+    gl_FragColor = v * vec4(0.375, 1.0, 0.25, 1.0);
+}
+
+[test]
+draw rect -1 -1 2 2
+probe all rgba 0.75 0.25 0.5 0.0
+)");
+    INFO(describe(r));
+    CHECK(r.status == Status::Pass);
 }

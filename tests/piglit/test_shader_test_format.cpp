@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <bit>
+#include <cmath>
+#include <limits>
 
 #include "piglit/numbers.h"
 #include "piglit/requirements.h"
@@ -110,6 +112,24 @@ TEST_CASE("numbers are read as piglit reads them", "[piglit]") {
     const std::vector<std::uint32_t> u = parse_uints("-1 0xffffffff 3", 3);
     CHECK(u == std::vector<std::uint32_t>{0xffffffffu, 0xffffffffu, 3u});
     CHECK(parse_floats("1 2", 4).size() == 2);  // fewer than asked: as many as there are
+}
+
+TEST_CASE("half-precision vertex data rounds to the nearest half, ties to even", "[piglit]") {
+    CHECK(round_to_half(1.0f) == 1.0f);
+    CHECK(round_to_half(0.1f) == 0.0999755859375f);                      // 0x2e66
+    CHECK(round_to_half(1.0f + 0x1p-11f) == 1.0f);                       // a tie: to the even 1.0
+    CHECK(round_to_half(1.0f + 3 * 0x1p-11f) == 1.0f + 0x1p-9f);         // a tie: up to the even
+    CHECK(round_to_half(-2049.0f) == -2048.0f);                           // the step is 2 from 2048
+    CHECK(round_to_half(65504.0f) == 65504.0f);                           // the largest half
+    CHECK(round_to_half(65519.0f) == 65504.0f);
+    CHECK(std::isinf(round_to_half(65520.0f)));                           // the tie past it overflows
+    CHECK(round_to_half(0x1p-24f) == 0x1p-24f);                           // the smallest subnormal
+    CHECK(round_to_half(0x1p-26f) == 0.0f);
+    CHECK(round_to_half(3 * 0x1p-25f) == 0x1p-23f);                       // subnormal tie to even
+    CHECK(std::isnan(round_to_half(std::numeric_limits<float>::quiet_NaN())));
+    char* end = nullptr;
+    CHECK(parse_half("0.1 x", &end) == 0.0999755859375f);
+    CHECK(*end == ' ');
 }
 
 TEST_CASE("vertex data columns feed generic attributes with GL's conversions and defaults", "[piglit]") {
