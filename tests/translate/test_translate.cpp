@@ -96,6 +96,18 @@ TEST_CASE("a translation names GLSL's identifiers safely and keeps file names ou
 
 namespace {
 
+// Every derivative rule, and double precision: a translation is written over the number type.
+struct Mode {
+    const char* what;
+    Derivatives derivatives;
+    Precision precision;
+};
+constexpr Mode kModes[] = {{"fine", Derivatives::Fine, Precision::Float},
+                           {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
+                           {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
+                           {"analytic", Derivatives::Analytic, Precision::Float},
+                           {"double", Derivatives::Fine, Precision::Double}};
+
 // A compiled translation and the GLSL it was written from: a catalogue shader's, or a file of
 // tests/translate (with the default vertex stage) on the Table 1.1 plane.
 struct TranslatedCase {
@@ -130,16 +142,6 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_sampler_parameter::TranslatedSamplerParameter>, "sampler_parameter", false},
         {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
          false}};
-    struct Mode {
-        const char* what;
-        Derivatives derivatives;
-        Precision precision;
-    };
-    const Mode modes[] = {{"fine", Derivatives::Fine, Precision::Float},
-                          {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
-                          {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
-                          {"analytic", Derivatives::Analytic, Precision::Float},
-                          {"double", Derivatives::Fine, Precision::Double}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -158,7 +160,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         const Program& interpreted = add_compiled_program(std::move(glsl_program), "interpreted", vertex, frag.text);
         const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
-        for (const Mode& m : modes) {
+        for (const Mode& m : kModes) {
             FrameRequest r;
             r.width = 64, r.height = 48;
             r.shading.derivatives = m.derivatives;
@@ -245,17 +247,7 @@ TEST_CASE("a translation's texture lookups, every form, draw what the interprete
     volume.field = "volume";
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    struct Mode {
-        const char* what;
-        Derivatives derivatives;
-        Precision precision;
-    };
-    const Mode modes[] = {{"fine", Derivatives::Fine, Precision::Float},
-                          {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
-                          {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
-                          {"analytic", Derivatives::Analytic, Precision::Float},
-                          {"double", Derivatives::Fine, Precision::Double}};
-    for (const Mode& m : modes) {
+    for (const Mode& m : kModes) {
         FrameRequest r;
         r.width = 64, r.height = 48;
         r.shading.derivatives = m.derivatives;
