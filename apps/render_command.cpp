@@ -299,7 +299,7 @@ int cmd_render(RenderArgs& a) {
     const std::uint64_t resident_before = resident_bytes();
     Scene scene = load_scene(a.scene, a.load);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
-    check_programs(scene, req.shader_override);  // fail before any work
+    check_programs(scene, req.shader_override, glsl_way(a.compile_glsl), {shade_request(req)});  // fail before any work
     for (int f = first; f <= last; ++f) {
         check_output(path_of(a.output, f), scene.inputs, "-o");
         if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");

@@ -910,17 +910,30 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             }
             return {"gl_ModelViewProjectionMatrix * gl_Vertex", kMultiplicative, false};
         case glslang::EOpTexture: case glslang::EOpTextureProj: case glslang::EOpTextureLod: case glslang::EOpTextureProjLod:
-        case glslang::EOpTextureFetch: case glslang::EOpTextureQuerySize: {
+        case glslang::EOpTextureFetch: case glslang::EOpTextureQuerySize: case glslang::EOpTextureGrad:
+        case glslang::EOpTextureProjGrad: case glslang::EOpTextureOffset: case glslang::EOpTextureProjOffset:
+        case glslang::EOpTextureLodOffset: case glslang::EOpTextureProjLodOffset: case glslang::EOpTextureGradOffset:
+        case glslang::EOpTextureProjGradOffset: case glslang::EOpTextureFetchOffset: {
             const TType& st = args[0]->getAsTyped()->getType();
             const bool three = st.getSampler().dim == glslang::Esd3D;
             const std::string base = three ? "texture3D" : "texture2D";
             const bool vertex = stage_ == Stage::Vertex;
-            if (op == glslang::EOpTextureFetch) return fn("texelFetch");
-            if (op == glslang::EOpTextureQuerySize) return fn("textureSize");
+            // The integer lookups name the float type, which their arguments do not give.
+            if (op == glslang::EOpTextureFetch) return fn("texelFetch<F>");
+            if (op == glslang::EOpTextureFetchOffset) return fn("texelFetchOffset<F>");
+            if (op == glslang::EOpTextureQuerySize) return fn("textureSize<F>");
             if (op == glslang::EOpTexture && !vertex) return fn(base);
             if (op == glslang::EOpTextureProj && !vertex) return fn(base + "Proj");
+            if (op == glslang::EOpTextureOffset && !vertex) return fn("textureOffset");
+            if (op == glslang::EOpTextureProjOffset && !vertex) return fn("textureProjOffset");
             if (op == glslang::EOpTextureLod) return fn(base + "Lod");
             if (op == glslang::EOpTextureProjLod) return fn(base + "ProjLod");
+            if (op == glslang::EOpTextureLodOffset) return fn("textureLodOffset");
+            if (op == glslang::EOpTextureProjLodOffset) return fn("textureProjLodOffset");
+            if (op == glslang::EOpTextureGrad) return fn("textureGrad");
+            if (op == glslang::EOpTextureProjGrad) return fn("textureProjGrad");
+            if (op == glslang::EOpTextureGradOffset) return fn("textureGradOffset");
+            if (op == glslang::EOpTextureProjGradOffset) return fn("textureProjGradOffset");
             refuse(node, "a texture lookup in a vertex shader");
         }
         default: break;

@@ -80,7 +80,13 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(Texture)      /* d..d+3 = texture(s, a..) implicit level of detail */                           \
     X(TextureBias)  /* ... with bias F[b] */                                                          \
     X(TextureLod)   /* ... at level F[b] */                                                           \
+    X(TextureGrad)  /* ... from the derivatives F[b..b+n-1] along x, F[b+n..b+2n-1] along y */         \
+    X(TextureOffset)     /* as Texture, TextureBias, TextureLod, TextureGrad, with texel offsets */    \
+    X(TextureBiasOffset) /*   I[c..c+n-1] added */                                                    \
+    X(TextureLodOffset)                                                                               \
+    X(TextureGradOffset)                                                                              \
     X(TexelFetch)   /* d..d+3 = texelFetch(s, I[a..], I[b]) */                                        \
+    X(TexelFetchOffset) /* ... at I[a..] + I[c..] */                                                  \
     X(TextureSize)  /* I[d..] = textureSize(s, I[b]) */                                               \
     /* control flow: the running mask of lanes; jump targets in Instr::target */                      \
     X(If)           /* lanes of B[a] run the then-part; none: jump to target (Else or EndIf) */       \

@@ -116,7 +116,20 @@ Operands operands(const Instr& in) {
         case Op::TextureBias: case Op::TextureLod:
             o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F);
             break;
+        case Op::TextureGrad:
+            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F, 2u * in.n);
+            break;
+        case Op::TextureOffset: o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::C, I, in.n); break;
+        case Op::TextureBiasOffset: case Op::TextureLodOffset:
+            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F), o.add(Field::C, I, in.n);
+            break;
+        case Op::TextureGradOffset:
+            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F, 2u * in.n), o.add(Field::C, I, in.n);
+            break;
         case Op::TexelFetch: o.add(Field::D, F, 4, true), o.add(Field::A, I, in.n), o.add(Field::B, I); break;
+        case Op::TexelFetchOffset:
+            o.add(Field::D, F, 4, true), o.add(Field::A, I, in.n), o.add(Field::B, I), o.add(Field::C, I, in.n);
+            break;
         case Op::TextureSize: o.add(Field::D, I, in.n, true), o.add(Field::B, I); break;
         case Op::If: case Op::BreakUnless: o.add(Field::A, B); break;
         case Op::Else: case Op::EndIf: case Op::LoopBegin: case Op::LoopContinue: case Op::LoopEnd: case Op::Break:
@@ -130,8 +143,13 @@ Operands operands(const Instr& in) {
 namespace {
 
 bool is_texture(Op op) {
-    return op == Op::Texture || op == Op::TextureBias || op == Op::TextureLod || op == Op::TexelFetch ||
-           op == Op::TextureSize;
+    switch (op) {
+        case Op::Texture: case Op::TextureBias: case Op::TextureLod: case Op::TextureGrad: case Op::TextureOffset:
+        case Op::TextureBiasOffset: case Op::TextureLodOffset: case Op::TextureGradOffset: case Op::TexelFetch:
+        case Op::TexelFetchOffset: case Op::TextureSize:
+            return true;
+        default: return false;
+    }
 }
 
 }  // namespace

@@ -280,46 +280,74 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     const int dims = interface_.program.samplers[std::size_t(slot)].dims;
     std::vector<Place> v;
     for (std::size_t i = 1; i < args.size(); ++i) v.push_back(eval(args[i]));
-    const auto lookup = [&](ir::Op o, const Place& coords, const Place* extra) {
+    // The operation `o` at `coords` (the first `dims` of them), with its level of detail or bias
+    // (`extra`), or derivatives along x and y, and texel offsets where it takes them.
+    const auto lookup = [&](ir::Op o, const Place& coords, const Place* extra, const Place* ddx = nullptr,
+                            const Place* ddy = nullptr, const Place* offset = nullptr) {
         const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
+        std::uint32_t b = 0, c = 0;
+        if (extra) b = (*extra)[0].reg;
+        if (ddx) {
+            Place both(ddx->begin(), ddx->begin() + dims);
+            both.insert(both.end(), ddy->begin(), ddy->begin() + dims);
+            b = consecutive(both);
+        }
+        if (offset) {
+            const Place o_int = convert_bits(*offset, B::Int);
+            c = consecutive(Place(o_int.begin(), o_int.begin() + dims));
+        }
         Place r = temps(B::Float, 4);
         ir::Instr& e = emit(o);
-        e.d = r[0].reg, e.a = a, e.n = std::uint8_t(dims);
+        e.d = r[0].reg, e.a = a, e.b = b, e.c = c, e.n = std::uint8_t(dims);
         e.count = std::uint16_t(slot);
-        if (extra) e.b = (*extra)[0].reg;
         return r;
+    };
+    // coordinates times the reciprocal of the last one, as Mesa lowers a projective lookup
+    const auto project = [&](const Place& p) {
+        const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
+        Place coords;
+        for (int i = 0; i < dims; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
+        return coords;
     };
     const bool vertex = kind_ == StageKind::Vertex;
     const Place zero{{B::Float, float_constant(0.0f)}};
+    // A vertex shader's implicit lookups read level 0 (it has no neighbours to take a level from).
+    const auto implicit = [&](const Place& coords, const Place* bias, const Place* offset) {
+        if (vertex) return lookup(offset ? ir::Op::TextureLodOffset : ir::Op::TextureLod, coords, &zero, nullptr, nullptr, offset);
+        if (bias) return lookup(offset ? ir::Op::TextureBiasOffset : ir::Op::TextureBias, coords, bias, nullptr, nullptr, offset);
+        return lookup(offset ? ir::Op::TextureOffset : ir::Op::Texture, coords, nullptr, nullptr, nullptr, offset);
+    };
+    const auto at_level = [&](const Place& coords, const Place& lod, const Place* offset) {
+        return lookup(offset ? ir::Op::TextureLodOffset : ir::Op::TextureLod, coords, &lod, nullptr, nullptr, offset);
+    };
+    const auto gradient = [&](const Place& coords, const Place& ddx, const Place& ddy, const Place* offset) {
+        return lookup(offset ? ir::Op::TextureGradOffset : ir::Op::TextureGrad, coords, nullptr, &ddx, &ddy, offset);
+    };
     switch (op) {
-        case glslang::EOpTexture:
-            // A vertex shader's lookups read level 0 (it has no neighbours to take a level from).
-            if (v.size() == 2) return lookup(vertex ? ir::Op::TextureLod : ir::Op::TextureBias, v[0], vertex ? &zero : &v[1]);
-            return lookup(vertex ? ir::Op::TextureLod : ir::Op::Texture, v[0], vertex ? &zero : nullptr);
-        case glslang::EOpTextureProj: {
-            // coordinates times the reciprocal of the last one, as Mesa lowers a projective lookup
-            const Place& p = v[0];
-            const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
-            Place coords;
-            for (int i = 0; i < dims; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
-            if (v.size() == 2) return lookup(vertex ? ir::Op::TextureLod : ir::Op::TextureBias, coords, vertex ? &zero : &v[1]);
-            return lookup(vertex ? ir::Op::TextureLod : ir::Op::Texture, coords, vertex ? &zero : nullptr);
-        }
-        case glslang::EOpTextureLod: return lookup(ir::Op::TextureLod, v[0], &v[1]);
-        case glslang::EOpTextureProjLod: {
-            const Place& p = v[0];
-            const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
-            Place coords;
-            for (int i = 0; i < dims; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
-            return lookup(ir::Op::TextureLod, coords, &v[1]);
-        }
-        case glslang::EOpTextureFetch: {
+        case glslang::EOpTexture: return implicit(v[0], v.size() == 2 ? &v[1] : nullptr, nullptr);
+        case glslang::EOpTextureProj: return implicit(project(v[0]), v.size() == 2 ? &v[1] : nullptr, nullptr);
+        case glslang::EOpTextureOffset: return implicit(v[0], v.size() == 3 ? &v[2] : nullptr, &v[1]);
+        case glslang::EOpTextureProjOffset: return implicit(project(v[0]), v.size() == 3 ? &v[2] : nullptr, &v[1]);
+        case glslang::EOpTextureLod: return at_level(v[0], v[1], nullptr);
+        case glslang::EOpTextureProjLod: return at_level(project(v[0]), v[1], nullptr);
+        case glslang::EOpTextureLodOffset: return at_level(v[0], v[1], &v[2]);
+        case glslang::EOpTextureProjLodOffset: return at_level(project(v[0]), v[1], &v[2]);
+        case glslang::EOpTextureGrad: return gradient(v[0], v[1], v[2], nullptr);
+        case glslang::EOpTextureProjGrad: return gradient(project(v[0]), v[1], v[2], nullptr);
+        case glslang::EOpTextureGradOffset: return gradient(v[0], v[1], v[2], &v[3]);
+        case glslang::EOpTextureProjGradOffset: return gradient(project(v[0]), v[1], v[2], &v[3]);
+        case glslang::EOpTextureFetch: case glslang::EOpTextureFetchOffset: {
             const Place coords = convert_bits(v[0], B::Int);
             const Place lod = v.size() > 1 ? convert_bits(v[1], B::Int) : Place{{B::Int, int_constant(0)}};
             const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
+            std::uint32_t c = 0;
+            if (op == glslang::EOpTextureFetchOffset) {
+                const Place offset = convert_bits(v[2], B::Int);
+                c = consecutive(Place(offset.begin(), offset.begin() + dims));
+            }
             Place r = temps(B::Float, 4);
-            ir::Instr& e = emit(ir::Op::TexelFetch);
-            e.d = r[0].reg, e.a = a, e.b = lod[0].reg, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+            ir::Instr& e = emit(op == glslang::EOpTextureFetch ? ir::Op::TexelFetch : ir::Op::TexelFetchOffset);
+            e.d = r[0].reg, e.a = a, e.b = lod[0].reg, e.c = c, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
             return r;
         }
         case glslang::EOpTextureQuerySize: {
@@ -333,15 +361,6 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     }
     const char* name = "this texture function";
     switch (op) {
-        case glslang::EOpTextureGrad: name = "textureGrad"; break;
-        case glslang::EOpTextureProjGrad: name = "textureProjGrad"; break;
-        case glslang::EOpTextureOffset: name = "textureOffset"; break;
-        case glslang::EOpTextureProjOffset: name = "textureProjOffset"; break;
-        case glslang::EOpTextureLodOffset: name = "textureLodOffset"; break;
-        case glslang::EOpTextureProjLodOffset: name = "textureProjLodOffset"; break;
-        case glslang::EOpTextureGradOffset: name = "textureGradOffset"; break;
-        case glslang::EOpTextureProjGradOffset: name = "textureProjGradOffset"; break;
-        case glslang::EOpTextureFetchOffset: name = "texelFetchOffset"; break;
         case glslang::EOpTextureGather: name = "textureGather"; break;
         case glslang::EOpTextureGatherOffset: name = "textureGatherOffset"; break;
         case glslang::EOpTextureGatherOffsets: name = "textureGatherOffsets"; break;
@@ -350,7 +369,7 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         default: break;
     }
     refuse(node, std::string(name) + " is not supported (supported: texture, texture2D, texture3D with or without a "
-                 "bias, their Proj and Lod forms, texelFetch, textureSize)");
+                 "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize)");
 }
 
 }  // namespace qs::frontend

@@ -189,7 +189,9 @@ RunResult Machine<F>::run() {
             case ir::Op::Inverse:
                 matrix(in);
                 break;
-            case ir::Op::Texture: case ir::Op::TextureBias: case ir::Op::TextureLod: case ir::Op::TexelFetch:
+            case ir::Op::Texture: case ir::Op::TextureBias: case ir::Op::TextureLod: case ir::Op::TextureGrad:
+            case ir::Op::TextureOffset: case ir::Op::TextureBiasOffset: case ir::Op::TextureLodOffset:
+            case ir::Op::TextureGradOffset: case ir::Op::TexelFetch: case ir::Op::TexelFetchOffset:
             case ir::Op::TextureSize:
                 texture(in);
                 break;
@@ -458,44 +460,47 @@ void Machine<F>::matrix(const ir::Instr& in) {
 
 template <class F>
 void Machine<F>::texture(const ir::Instr& in) {
-    F* const f = f_;
     const glsl::Texture& t = *textures_[in.count];
-    glsl::vec<F, 4> c;
-    switch (in.op) {
-        case ir::Op::TextureSize:
-            if (in.n == 2) {
-                const glsl::ivec2<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler2D&>(t), i_[in.b]);
-                for (int i = 0; i < 2; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
-            } else {
-                const glsl::ivec3<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler3D&>(t), i_[in.b]);
-                for (int i = 0; i < 3; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
-            }
-            return;
-        case ir::Op::TexelFetch:
-            if (in.n == 2) {
-                c = glsl::texelFetch<F>(static_cast<const glsl::sampler2D&>(t), glsl::ivec2<F>(i_[in.a], i_[in.a + 1]), i_[in.b]);
-            } else {
-                c = glsl::texelFetch<F>(static_cast<const glsl::sampler3D&>(t),
-                                        glsl::ivec3<F>(i_[in.a], i_[in.a + 1], i_[in.a + 2]), i_[in.b]);
-            }
-            break;
-        default:
-            if (in.n == 2) {
-                const auto& s = static_cast<const glsl::sampler2D&>(t);
-                const glsl::vec<F, 2> p = vector_at<2>(in.a);
-                if (in.op == ir::Op::Texture) c = glsl::texture2D(s, p);
-                else if (in.op == ir::Op::TextureBias) c = glsl::texture2D(s, p, f[in.b]);
-                else c = glsl::textureLod(s, p, f[in.b]);
-            } else {
-                const auto& s = static_cast<const glsl::sampler3D&>(t);
-                const glsl::vec<F, 3> p = vector_at<3>(in.a);
-                if (in.op == ir::Op::Texture) c = glsl::texture3D(s, p);
-                else if (in.op == ir::Op::TextureBias) c = glsl::texture3D(s, p, f[in.b]);
-                else c = glsl::textureLod(s, p, f[in.b]);
-            }
-            break;
+    if (in.op == ir::Op::TextureSize) {
+        if (in.n == 2) {
+            const glsl::ivec2<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler2D&>(t), i_[in.b]);
+            for (int i = 0; i < 2; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
+        } else {
+            const glsl::ivec3<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler3D&>(t), i_[in.b]);
+            for (int i = 0; i < 3; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
+        }
+        return;
     }
-    for (int i = 0; i < 4; ++i) put(in, f[in.d + std::uint32_t(i)], c[i]);
+    glsl::vec<F, 4> c;
+    // The lookup on a sampler of N coordinates: each operation calls the vocabulary's function
+    // of its name.
+    const auto lookup = [&]<int N>(const auto& s) {
+        using IV = glsl::vec<I, N>;
+        const auto ints_at = [&](std::uint32_t first) {
+            IV v;
+            for (int i = 0; i < N; ++i) v[i] = i_[first + std::uint32_t(i)];
+            return v;
+        };
+        if (in.op == ir::Op::TexelFetch) return glsl::texelFetch<F>(s, ints_at(in.a), i_[in.b]);
+        if (in.op == ir::Op::TexelFetchOffset) return glsl::texelFetchOffset<F>(s, ints_at(in.a), i_[in.b], ints_at(in.c));
+        const glsl::vec<F, N> p = vector_at<N>(in.a);
+        switch (in.op) {
+            case ir::Op::Texture: return glsl::texture(s, p);
+            case ir::Op::TextureBias: return glsl::texture(s, p, f_[in.b]);
+            case ir::Op::TextureLod: return glsl::textureLod(s, p, f_[in.b]);
+            case ir::Op::TextureGrad: return glsl::textureGrad(s, p, vector_at<N>(in.b), vector_at<N>(in.b + N));
+            case ir::Op::TextureOffset: return glsl::textureOffset(s, p, ints_at(in.c));
+            case ir::Op::TextureBiasOffset: return glsl::textureOffset(s, p, ints_at(in.c), f_[in.b]);
+            case ir::Op::TextureLodOffset: return glsl::textureLodOffset(s, p, f_[in.b], ints_at(in.c));
+            default: return glsl::textureGradOffset(s, p, vector_at<N>(in.b), vector_at<N>(in.b + N), ints_at(in.c));
+        }
+    };
+    if (in.n == 2) {
+        c = lookup.template operator()<2>(static_cast<const glsl::sampler2D&>(t));
+    } else {
+        c = lookup.template operator()<3>(static_cast<const glsl::sampler3D&>(t));
+    }
+    for (int i = 0; i < 4; ++i) put(in, f_[in.d + std::uint32_t(i)], c[i]);
 }
 
 template <class F>

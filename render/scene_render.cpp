@@ -29,12 +29,13 @@ constexpr std::uint64_t kRayCastBytesPerTriangle = 512;
 
 }  // namespace
 
-const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override) {
+const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override, GlslWay way,
+                           const std::vector<ShadeRequest>& shading) {
     if (shader_override.empty() && !object.glsl_fragment.empty()) {
         try {
             const std::optional<std::filesystem::path> vertex =
                 object.glsl_vertex.empty() ? std::nullopt : std::optional<std::filesystem::path>(object.glsl_vertex);
-            return *load_glsl_shader(object.glsl_fragment, vertex).program;
+            return *load_glsl_shader(object.glsl_fragment, vertex, way, shading).program;
         } catch (const std::runtime_error& e) {
             throw SceneError(scene.file.string() + ": " + object.material + ": extras.glsl: " + e.what());
         }
@@ -51,11 +52,12 @@ const Program& program_for(const Scene& scene, const Object& object, const std::
     return *p;
 }
 
-void check_programs(const Scene& scene, const std::string& shader_override) {
+void check_programs(const Scene& scene, const std::string& shader_override, GlslWay way,
+                    const std::vector<ShadeRequest>& shading) {
     std::vector<std::string> problems;
     for (const Object& o : scene.objects) {
         try {
-            program_for(scene, o, shader_override);
+            program_for(scene, o, shader_override, way, shading);
         } catch (const SceneError& e) {
             if (std::find(problems.begin(), problems.end(), e.what()) == problems.end()) problems.push_back(e.what());
         }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "raster/rasterizer.h"
+#include "render/compiled_glsl.h"
 #include "scenes/scene.h"
 #include "shading/shade_choice.h"
 
@@ -141,9 +142,13 @@ std::uint64_t render_working_bytes(std::uint64_t pixels, std::uint64_t vertices,
 Framebuffer render_frame(Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);
 void render_frame_into(Framebuffer& fb, Scene& scene, const FrameRequest& request, RenderStats* stats = nullptr);
 
-// The shader each object is drawn with under `shader_override`, checked against the catalogue.
-const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override);
+// The shader each object is drawn with under `shader_override`, checked against the catalogue. A
+// material's GLSL (extras.glsl) is loaded once per process, the first time `way` (as --glsl's:
+// render/compiled_glsl.h) for `shading`, and drawn so in every frame after.
+const Program& program_for(const Scene& scene, const Object& object, const std::string& shader_override,
+                           GlslWay way = GlslWay::Cached, const std::vector<ShadeRequest>& shading = {});
 // Throws one SceneError naming every material whose shader the catalogue lacks (program_for).
-void check_programs(const Scene& scene, const std::string& shader_override);
+void check_programs(const Scene& scene, const std::string& shader_override, GlslWay way = GlslWay::Cached,
+                    const std::vector<ShadeRequest>& shading = {});
 
 }  // namespace qs

@@ -363,20 +363,28 @@ using Axis = AxisLanes<Floats>;
 
 // lp_bld_sample_aos.c: the 8-bit fixed-point path, REPEAT and CLAMP_TO_EDGE. Linear filtering
 // along one axis (lp_build_sample_wrap_linear_int); the same for s, t and r.
+//
+// A texel offset (`offset`, or none) is added to the texel coordinate, or, for REPEAT on a size
+// that is not a power of two, to the normalised one divided by the size (lp_build_sample_image_linear
+// and lp_build_sample_wrap_linear_int).
 template <class F>
-AxisLanes<F> aos_linear(const F& s, const IntsLike<F>& size, Wrap wrap, bool pot) {
+AxisLanes<F> aos_linear(const F& s, const IntsLike<F>& size, Wrap wrap, bool pot, const IntsLike<F>* offset = nullptr) {
     using Ints = IntsLike<F>;
     AxisLanes<F> a;
     const Ints last = size - 1;
     // Linear: 8 fractional bits of s * size - 0.5, rounded to even.
-    Ints u;
+    Ints u, i0;
     if (wrap == Wrap::Repeat && !pot) {
-        const F f = s - floor(s);  // lp_build_coord_repeat_npot_linear_int
+        const F so = offset ? s + to_float(*offset) / to_float(size) : s;
+        const F f = so - floor(so);  // lp_build_coord_repeat_npot_linear_int
         u = wrapping_add(cvt_rne((f * to_float(size)) * 256.0f), Ints{} - 128);
+        i0 = u >> 8;
     } else {
         u = wrapping_add(cvt_rne(s * to_float(size << 8)), Ints{} - 128);
+        i0 = u >> 8;
+        if (offset) i0 = wrapping_add(i0, *offset);
     }
-    Ints i0 = u >> 8, l0, l1;
+    Ints l0, l1;
     const Ints w = u & 255;
     if (wrap == Wrap::Repeat) {
         if (pot) {
@@ -395,23 +403,28 @@ AxisLanes<F> aos_linear(const F& s, const IntsLike<F>& size, Wrap wrap, bool pot
 }
 
 // The nearest texel along one axis (lp_build_sample_wrap_nearest_int).
+// An offset as aos_linear's (lp_build_sample_image_nearest, lp_build_sample_wrap_nearest_int).
 template <class F>
-IntsLike<F> aos_nearest(const F& s, const IntsLike<F>& size, Wrap wrap, bool pot) {
+IntsLike<F> aos_nearest(const F& s, const IntsLike<F>& size, Wrap wrap, bool pot, const IntsLike<F>* offset = nullptr) {
     using Ints = IntsLike<F>;
     const Ints last = size - 1;
-    if (wrap == Wrap::Repeat && !pot) return cvt_trunc(minps(s - floor(s), splat_as<F>(0x1.fffffep-1f)) * to_float(size));
-    const Ints i = cvt_trunc(floor(s * to_float(size)));
+    if (wrap == Wrap::Repeat && !pot) {
+        const F so = offset ? s + to_float(*offset) / to_float(size) : s;
+        return cvt_trunc(minps(so - floor(so), splat_as<F>(0x1.fffffep-1f)) * to_float(size));
+    }
+    Ints i = cvt_trunc(floor(s * to_float(size)));
+    if (offset) i = wrapping_add(i, *offset);
     return wrap == Wrap::Repeat ? (i & last) : imin(imax(i, Ints{}), last);
 }
 
 // Linear lanes as aos_linear gives them, the others their nearest texel with weight 0 (which
 // llvmpipe's lerp returns exactly); each part computed only when some lane needs it.
-Axis aos_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints& linear) {
+Axis aos_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints& linear, const Ints* offset) {
     const bool some_linear = any(linear), all_linear = !any(~linear);
     Axis a{};
-    if (some_linear) a = aos_linear(s, size, wrap, pot);
+    if (some_linear) a = aos_linear(s, size, wrap, pot, offset);
     if (!all_linear) {
-        const Ints n = aos_nearest(s, size, wrap, pot);
+        const Ints n = aos_nearest(s, size, wrap, pot, offset);
         a.i0 = linear ? a.i0 : n;
         a.i1 = linear ? a.i1 : n;
         a.w8 = a.w8 & linear;
@@ -430,17 +443,24 @@ Floats mirror(const Floats& s) {
 
 // lp_bld_sample_soa.c: the float path, every wrap mode. `linear`: lanes filtered linearly;
 // `weights_only`: the other lanes go through the linear code too, with weights rounded to 0 or
-// 1 (llvmpipe's lp_build_sample_mipmap_both when some lane of the vector is linear).
-Axis soa_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints& linear, const Ints& weights_only) {
+// 1 (llvmpipe's lp_build_sample_mipmap_both when some lane of the vector is linear). A texel
+// offset (`offset`, or none) is added to the unnormalised coordinate (REPEAT on a power-of-two
+// size, CLAMP_TO_EDGE), or divided by the size to the normalised one (lp_build_sample_wrap_linear,
+// lp_build_sample_wrap_nearest).
+Axis soa_axis(const Floats& s_in, const Ints& size, Wrap wrap, bool pot, const Ints& linear, const Ints& weights_only,
+              const Ints* offset) {
     Axis a{};
     const Ints last = size - 1;
     const Floats fsize = to_float(size);
+    const bool normalised_offset = offset && (wrap == Wrap::MirroredRepeat || (wrap == Wrap::Repeat && !pot));
+    const Floats s = normalised_offset ? s_in + to_float(*offset) / fsize : s_in;
     Floats c, fl;
     Ints l0, l1;
     switch (wrap) {
         case Wrap::Repeat:
             if (pot) {
                 c = s * fsize - 0.5f;
+                if (offset) c = c + to_float(*offset);
                 fl = floor(c);
                 const Ints i = cvt_trunc(fl);
                 l0 = i & last;
@@ -457,6 +477,7 @@ Axis soa_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints
             break;
         case Wrap::ClampToEdge: {
             c = s * fsize;
+            if (offset) c = c + to_float(*offset);
             c = (c < fsize ? c : fsize) - 0.5f;
             c = maxps(c, Floats{});
             fl = floor(c);
@@ -480,9 +501,20 @@ Axis soa_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints
     Ints n;
     switch (wrap) {
         case Wrap::Repeat:
-            n = pot ? cvt_trunc(floor(s * fsize)) & last : cvt_trunc(minps(s - floor(s), splat(0x1.fffffep-1f)) * fsize);
+            if (pot) {
+                n = cvt_trunc(floor(s * fsize));
+                if (offset) n = wrapping_add(n, *offset);
+                n = n & last;
+            } else {
+                n = cvt_trunc(minps(s - floor(s), splat(0x1.fffffep-1f)) * fsize);
+            }
             break;
-        case Wrap::ClampToEdge: n = imin(imax(cvt_trunc(s * fsize), Ints{}), last); break;
+        case Wrap::ClampToEdge: {
+            Floats cn = s * fsize;
+            if (offset) cn = cn + to_float(*offset);
+            n = imin(imax(cvt_trunc(cn), Ints{}), last);
+            break;
+        }
         case Wrap::MirroredRepeat: n = imin(cvt_trunc(mirror(s) * fsize), last); break;
     }
     const Ints through_linear = linear | weights_only;
@@ -497,6 +529,7 @@ Axis soa_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints
 template <int Dims>
 struct Coords {
     Floats c[Dims];
+    const Ints* offset[Dims] = {};  // texel offsets, or none
 };
 template <int Dims>
 struct Axes {
@@ -582,7 +615,9 @@ Pairs aos_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, c
     const LevelLanes lv = level_lanes(tex, level);
     const std::array<bool, 3> pot = pot_sizes<Dims>(tex);
     Axes<Dims> ax;
-    for (int i = 0; i < Dims; ++i) ax.a[i] = aos_axis(co.c[i], size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear);
+    for (int i = 0; i < Dims; ++i) {
+        ax.a[i] = aos_axis(co.c[i], size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, co.offset[i]);
+    }
     const Texels<Dims> k = fetch_texels(tex, lv, ax);
     if (gradient) {
         for (int c = 0; c < 4; ++c) {
@@ -610,7 +645,8 @@ void soa_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, co
     const std::array<bool, 3> pot = pot_sizes<Dims>(tex);
     Axes<Dims> ax;
     for (int i = 0; i < Dims; ++i) {
-        ax.a[i] = soa_axis(co.c[i], size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, weights_only);
+        ax.a[i] = soa_axis(co.c[i], size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, weights_only,
+                           co.offset[i]);
     }
     const Texels<Dims> k = fetch_texels(tex, lv, ax);
     for (int c = 0; c < 4; ++c) {
@@ -657,12 +693,12 @@ bool takes_8bit_path(const Texture& tex, bool per_pixel_lod) {
 
 template <int Dims>
 Sample sample_lanes(const Texture& tex, const Coords<Dims>& co, const Floats* rho2, const Floats* bias, const Floats* lod,
-                    bool quad_vectors, bool gradient) {
+                    bool rho2_per_pixel, bool quad_vectors, bool gradient) {
     const SamplerState& st = tex.sampler;
     const LevelChoice lc = choose_levels(tex, rho2, bias, lod);
     const bool blend = st.mip == MipFilter::Linear && any(bits(lc.blend) != 0);
     Sample out;  // out.d only written (and read) with `gradient`
-    if (takes_8bit_path<Dims>(tex, bias || lod)) {
+    if (takes_8bit_path<Dims>(tex, bias || lod || rho2_per_pixel)) {
         // The second level blends in with an 8-bit weight truncated from the fraction
         // (lp_build_sample_mipmap).
         Pairs q = aos_level(tex, co, lc.level0, lc.linear, gradient, out.d);
@@ -838,9 +874,13 @@ template <int Dims>
     Coords<Dims> co;
     co.c[0] = load_lanes(l.s, base, n), co.c[1] = load_lanes(l.t, base, n);
     if constexpr (Dims == 3) co.c[2] = load_lanes(l.r, base, n);
+    Ints offset[Dims];
+    for (int i = 0; i < Dims; ++i) {
+        if (l.offset[std::size_t(i)]) offset[i] = load_lanes<Ints>(l.offset[std::size_t(i)], base, n), co.offset[i] = &offset[i];
+    }
     const bool gradient = l.d_ds[0] != nullptr;
     const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? &rho2 : nullptr, l.bias ? &bias : nullptr, l.lod ? &lod : nullptr,
-                                        l.quad_vectors, gradient);
+                                        l.rho2_per_pixel, l.quad_vectors, gradient);
     const std::array<float*, 4>* d_out[3] = {&l.d_ds, &l.d_dt, &l.d_dr};
     for (int c = 0; c < 4; ++c) {
         store_lanes(l.rgba[std::size_t(c)], base, n, r.rgba[c]);
@@ -1113,7 +1153,7 @@ bool sample_plain(const Texture& tex, const PlainLookup& l) {
 // Flattened: the helpers above become one straight body (called as functions, their vectors
 // would travel through memory). A descriptor of a plain lookup takes sample_plain, as shaders do.
 [[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
-    if (!l.rho2 && !l.lod && !l.d_ds[0] && sample_plain(tex, {l.lanes, l.s, l.t, l.rgba})) return;
+    if (!l.rho2 && !l.lod && !l.d_ds[0] && !l.offset[0] && sample_plain(tex, {l.lanes, l.s, l.t, l.rgba})) return;
     if (tex.dims == 3) {
         sample_dims<3>(tex, l);
     } else {

@@ -20,6 +20,8 @@
 // the filter's interpolant (texels are constants).
 
 #include <array>
+#include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -105,6 +107,12 @@ struct Lookup {
     const float* bias = nullptr;
     // Per lane, an explicit level of detail (textureLod); rho2 and bias unused.
     const float* lod = nullptr;
+    // Whether rho2 is each lane's own, from explicit derivatives (textureGrad): a level of detail
+    // per pixel, as a bias or an explicit level is, where an implicit one is per quad.
+    bool rho2_per_pixel = false;
+    // Per lane, GLSL's texel offsets along s, t (and r) (textureOffset and its kin), added at
+    // every level as llvmpipe adds them; null for none.
+    std::array<const std::int32_t*, 3> offset{};
     // Lanes 8k..8k+7 are the two side-by-side quads llvmpipe shades as one vector (quads from a
     // 4x4 block); otherwise each lane stands alone. Decides how lookups on the float path with
     // different minification and magnification filters blend (llvmpipe decides that per vector).
@@ -200,19 +208,85 @@ struct float_lanes { using type = F; };
 template <class T, int N, class L>
 struct float_lanes<Lanes<T, N, L>> { using type = Lanes<float, N, L>; };
 
-enum class Lod { Implicit, Bias, Explicit };
+enum class Lod { Implicit, Bias, Explicit, Gradient };
 
-// Every lookup: Dims coordinates, and a bias or an explicit level of detail as `kind` says.
+// GLSL ints of the lanes of an integer number type, lane by lane, and back.
+template <class I>
+void to_ints(const I& x, std::int32_t* out) {
+    if constexpr (is_checked_v<I>) {
+        x.v.store(out);
+    } else {
+        x.store(out);
+    }
+}
+template <class I>
+I from_ints(const std::int32_t* in, LaneCases cases = {}) {
+    if constexpr (is_checked_v<I>) {
+        return I(decltype(I::v)::load(in), cases);
+    } else {
+        return I::load(in);
+    }
+}
+template <class I>
+LaneCases cases_of([[maybe_unused]] const I& x) {
+    if constexpr (is_checked_v<I>) {
+        return x.cases;
+    } else {
+        return {};
+    }
+}
+
+// What a lookup takes beside its coordinates, as `kind` says: a bias or an explicit level
+// (`lod_or_bias`), or the coordinates' explicit derivatives along x and y (`ddx`, `ddy`:
+// textureGrad); and GLSL's texel offsets, or none.
 template <Number F, std::size_t Dims>
-vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, Lod kind, const F& lod_or_bias) {
+struct LookupArgs {
+    Lod kind = Lod::Implicit;
+    const F* lod_or_bias = nullptr;
+    const std::array<F, Dims>* ddx = nullptr;
+    const std::array<F, Dims>* ddy = nullptr;
+    const std::array<int_t<F>, Dims>* offset = nullptr;
+};
+
+// llvmpipe's rho^2 from explicit derivatives (lp_build_rho with derivatives), lane by lane:
+// max((W ddx.s)^2 + (H ddx.t)^2 [+ (D ddx.r)^2], the same of ddy) in float, in that order, with
+// an infinite or NaN result taken as 0. One per pixel, in a fragment shader too (measured on
+// llvmpipe 22.3: derivatives that differ within a quad give each pixel its own level).
+template <std::size_t Dims, int N>
+void gradient_rho2(const float (&ddx)[3][N], const float (&ddy)[3][N], const std::array<float, 3>& size, float (&rho2)[N]) {
+    for (int i = 0; i < N; ++i) {
+        float x = 0.0f, y = 0.0f;
+        for (std::size_t k = 0; k < Dims; ++k) {
+            float a = size[k] * ddx[k][i], b = size[k] * ddy[k][i];
+            a = a * a, b = b * b;
+            x = k == 0 ? a : x + a;
+            y = k == 0 ? b : y + b;
+        }
+        const float r = x > y ? x : y;
+        rho2[i] = std::isfinite(r) ? r : 0.0f;
+    }
+}
+
+// Every lookup: Dims coordinates, and what `args` adds to them.
+template <Number F, std::size_t Dims>
+vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const LookupArgs<F, Dims>& args) {
     constexpr int N = lanes_of<F>();
     alignas(64) float c[3][N], rho2[N], extra[N], rgba[4][N], d_dc[3][4][N];
+    alignas(64) std::int32_t offset[3][N];
+    const Lod kind = args.kind;
     for (std::size_t k = 0; k < Dims; ++k) to_floats(coord[k], c[k]);
-    if (kind != Lod::Implicit) to_floats(lod_or_bias, extra);
+    if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*args.lod_or_bias, extra);
+    if (args.offset) {
+        for (std::size_t k = 0; k < Dims; ++k) to_ints((*args.offset)[k], offset[k]);
+    }
     const bool implicit = kind != Lod::Explicit && tex.needs_lod();
     const std::array<float, 3> size{float(tex.width), float(tex.height), float(tex.depth)};
     [[maybe_unused]] LaneCases lod_cases;  // the quad's lanes a Checked level of detail read
-    if (implicit) {
+    if (implicit && kind == Lod::Gradient) {
+        alignas(64) float gx[3][N], gy[3][N];
+        for (std::size_t k = 0; k < Dims; ++k) to_floats((*args.ddx)[k], gx[k]), to_floats((*args.ddy)[k], gy[k]);
+        gradient_rho2<Dims>(gx, gy, size, rho2);
+    } else if (implicit) {
         if constexpr (is_dual2<F>::value) {
             // The analytic scale factor from the carried partials, in llvmpipe's formula.
             using T = typename F::value_type;
@@ -243,7 +317,8 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, Lod kind, c
     constexpr bool derivatives = is_dual2<F>::value;
     bool plain = false;
     if constexpr (Dims == 2 && !derivatives) {
-        plain = kind != Lod::Explicit && !implicit && sample_plain(tex, {N, c[0], c[1], {rgba[0], rgba[1], rgba[2], rgba[3]}});
+        plain = kind != Lod::Explicit && !implicit && !args.offset &&
+                sample_plain(tex, {N, c[0], c[1], {rgba[0], rgba[1], rgba[2], rgba[3]}});
     }
     for (int i = 0; !plain && i < N; i += kMaxLanes) {
         Lookup l;
@@ -253,6 +328,10 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, Lod kind, c
         l.rho2 = implicit ? rho2 + i : nullptr;
         l.bias = kind == Lod::Bias ? extra + i : nullptr;
         l.lod = kind == Lod::Explicit ? extra + i : nullptr;
+        l.rho2_per_pixel = kind == Lod::Gradient;
+        if (args.offset) {
+            for (std::size_t k = 0; k < Dims; ++k) l.offset[k] = offset[k] + i;
+        }
         l.quad_vectors = QuadNumber<F>;
         for (std::size_t ch = 0; ch < 4; ++ch) {
             l.rgba[ch] = rgba[ch] + i;
@@ -278,39 +357,19 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, Lod kind, c
         } else if constexpr (is_checked_v<F>) {
             LaneCases cases = lod_cases;
             for (std::size_t k = 0; k < Dims; ++k) cases = cases | coord[k].cases;
-            if (kind != Lod::Implicit) cases = cases | lod_or_bias.cases;
+            if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | args.lod_or_bias->cases;
+            if (kind == Lod::Gradient) {
+                for (std::size_t k = 0; k < Dims; ++k) cases = cases | (*args.ddx)[k].cases | (*args.ddy)[k].cases;
+            }
+            if (args.offset) {
+                for (std::size_t k = 0; k < Dims; ++k) cases = cases | (*args.offset)[k].cases;
+            }
             out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
         } else {
             out[ch] = from_floats<F>(rgba[ch]);
         }
     }
     return out;
-}
-
-// GLSL ints of the lanes of an integer number type, lane by lane, and back.
-template <class I>
-void to_ints(const I& x, std::int32_t* out) {
-    if constexpr (is_checked_v<I>) {
-        x.v.store(out);
-    } else {
-        x.store(out);
-    }
-}
-template <class I>
-I from_ints(const std::int32_t* in, LaneCases cases = {}) {
-    if constexpr (is_checked_v<I>) {
-        return I(decltype(I::v)::load(in), cases);
-    } else {
-        return I::load(in);
-    }
-}
-template <class I>
-LaneCases cases_of([[maybe_unused]] const I& x) {
-    if constexpr (is_checked_v<I>) {
-        return x.cases;
-    } else {
-        return {};
-    }
 }
 
 // textureSize of every lane's level. GLSL leaves a level outside the texture's undefined:
@@ -372,46 +431,264 @@ vec4<F> texel_fetch(const Texture& tex, const std::array<int_t<F>, Dims>& p, con
 
 }  // namespace texture_detail
 
+namespace texture_detail {
+
+template <Number F>
+std::array<F, 2> coords(const vec2<F>& p) { return {p.x, p.y}; }
+template <Number F>
+std::array<F, 3> coords(const vec3<F>& p) { return {p.x, p.y, p.z}; }
+template <Number F>
+std::array<int_t<F>, 2> coords(const ivec2<F>& p) { return {p.x, p.y}; }
+template <Number F>
+std::array<int_t<F>, 3> coords(const ivec3<F>& p) { return {p.x, p.y, p.z}; }
+
+template <Number F, std::size_t Dims>
+vec4<F> implicit(const Texture& tex, const std::array<F, Dims>& p, const std::array<int_t<F>, Dims>* offset = nullptr) {
+    return lookup<F, Dims>(tex, p, {Lod::Implicit, nullptr, nullptr, nullptr, offset});
+}
+template <Number F, std::size_t Dims>
+vec4<F> biased(const Texture& tex, const std::array<F, Dims>& p, const F& bias,
+               const std::array<int_t<F>, Dims>* offset = nullptr) {
+    return lookup<F, Dims>(tex, p, {Lod::Bias, &bias, nullptr, nullptr, offset});
+}
+template <Number F, std::size_t Dims>
+vec4<F> at_level(const Texture& tex, const std::array<F, Dims>& p, const F& lod,
+                 const std::array<int_t<F>, Dims>* offset = nullptr) {
+    return lookup<F, Dims>(tex, p, {Lod::Explicit, &lod, nullptr, nullptr, offset});
+}
+template <Number F, std::size_t Dims>
+vec4<F> gradient(const Texture& tex, const std::array<F, Dims>& p, const std::array<F, Dims>& ddx,
+                 const std::array<F, Dims>& ddy, const std::array<int_t<F>, Dims>* offset = nullptr) {
+    return lookup<F, Dims>(tex, p, {Lod::Gradient, nullptr, &ddx, &ddy, offset});
+}
+
+// A projective lookup's coordinates: the first ones times the reciprocal of the last, as Mesa
+// lowers them (nir_lower_tex's projector: a reciprocal and products, not quotients).
+template <Number F>
+std::array<F, 2> projected2(const vec3<F>& p) {
+    const F q = F(1.0f) / p.z;
+    return {p.x * q, p.y * q};
+}
+template <Number F>
+std::array<F, 2> projected2(const vec4<F>& p) {
+    const F q = F(1.0f) / p.w;
+    return {p.x * q, p.y * q};
+}
+template <Number F>
+std::array<F, 3> projected3(const vec4<F>& p) {
+    const F q = F(1.0f) / p.w;
+    return {p.x * q, p.y * q, p.z * q};
+}
+
+}  // namespace texture_detail
+
+// A 2D projective lookup's coordinates: a vec3 or a vec4.
+template <class P>
+concept ProjCoords2 = std::same_as<P, vec3<typename P::value_type>> || std::same_as<P, vec4<typename P::value_type>>;
+
 // GLSL 1.20's lookups with the level of detail from the quad (implicit), and with a bias added
 // to it.
 template <Number F>
 vec4<F> texture2D(const sampler2D& tex, const vec2<F>& st) {
-    return texture_detail::lookup<F, 2>(tex, {st.x, st.y}, texture_detail::Lod::Implicit, F(0.0f));
+    return texture_detail::implicit<F, 2>(tex, texture_detail::coords(st));
 }
 template <Number F>
 vec4<F> texture2D(const sampler2D& tex, const vec2<F>& st, const F& bias) {
-    return texture_detail::lookup<F, 2>(tex, {st.x, st.y}, texture_detail::Lod::Bias, bias);
+    return texture_detail::biased<F, 2>(tex, texture_detail::coords(st), bias);
 }
 template <Number F>
 vec4<F> texture3D(const sampler3D& tex, const vec3<F>& str) {
-    return texture_detail::lookup<F, 3>(tex, {str.x, str.y, str.z}, texture_detail::Lod::Implicit, F(0.0f));
+    return texture_detail::implicit<F, 3>(tex, texture_detail::coords(str));
 }
 template <Number F>
 vec4<F> texture3D(const sampler3D& tex, const vec3<F>& str, const F& bias) {
-    return texture_detail::lookup<F, 3>(tex, {str.x, str.y, str.z}, texture_detail::Lod::Bias, bias);
+    return texture_detail::biased<F, 3>(tex, texture_detail::coords(str), bias);
 }
 // GLSL 1.30's overloaded names.
 template <Number F>
 vec4<F> texture(const sampler2D& tex, const vec2<F>& st) { return texture2D(tex, st); }
 template <Number F>
+vec4<F> texture(const sampler2D& tex, const vec2<F>& st, const F& bias) { return texture2D(tex, st, bias); }
+template <Number F>
 vec4<F> texture(const sampler3D& tex, const vec3<F>& str) { return texture3D(tex, str); }
+template <Number F>
+vec4<F> texture(const sampler3D& tex, const vec3<F>& str, const F& bias) { return texture3D(tex, str, bias); }
 
 // An explicit level of detail per pixel (GLSL 1.30, and texture2DLod of
 // GL_ARB_shader_texture_lod, which llvmpipe compiles to the same bits).
 template <Number F>
 vec4<F> textureLod(const sampler2D& tex, const vec2<F>& st, const F& lod) {
-    return texture_detail::lookup<F, 2>(tex, {st.x, st.y}, texture_detail::Lod::Explicit, lod);
+    return texture_detail::at_level<F, 2>(tex, texture_detail::coords(st), lod);
 }
 template <Number F>
 vec4<F> textureLod(const sampler3D& tex, const vec3<F>& str, const F& lod) {
-    return texture_detail::lookup<F, 3>(tex, {str.x, str.y, str.z}, texture_detail::Lod::Explicit, lod);
+    return texture_detail::at_level<F, 3>(tex, texture_detail::coords(str), lod);
 }
 template <Number F>
 vec4<F> texture2DLod(const sampler2D& tex, const vec2<F>& st, const F& lod) { return textureLod(tex, st, lod); }
+template <Number F>
+vec4<F> texture3DLod(const sampler3D& tex, const vec3<F>& str, const F& lod) { return textureLod(tex, str, lod); }
+
+// The level of detail from explicit derivatives of the coordinates along x and y (GLSL 1.30's
+// textureGrad, and texture2DGradARB): llvmpipe's, one per pixel from its own derivatives, so
+// any number type takes it, quads or not.
+template <Number F>
+vec4<F> textureGrad(const sampler2D& tex, const vec2<F>& st, const vec2<F>& dPdx, const vec2<F>& dPdy) {
+    return texture_detail::gradient<F, 2>(tex, texture_detail::coords(st), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy));
+}
+template <Number F>
+vec4<F> textureGrad(const sampler3D& tex, const vec3<F>& str, const vec3<F>& dPdx, const vec3<F>& dPdy) {
+    return texture_detail::gradient<F, 3>(tex, texture_detail::coords(str), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy));
+}
+
+// Projective lookups: the coordinates divided by the last component (a vec3 or vec4 for a 2D
+// texture, a vec4 for a 3D one).
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProj(const sampler2D& tex, const P& p) {
+    return texture_detail::implicit<F, 2>(tex, texture_detail::projected2(p));
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProj(const sampler2D& tex, const P& p, const F& bias) {
+    return texture_detail::biased<F, 2>(tex, texture_detail::projected2(p), bias);
+}
+template <Number F>
+vec4<F> textureProj(const sampler3D& tex, const vec4<F>& p) {
+    return texture_detail::implicit<F, 3>(tex, texture_detail::projected3(p));
+}
+template <Number F>
+vec4<F> textureProj(const sampler3D& tex, const vec4<F>& p, const F& bias) {
+    return texture_detail::biased<F, 3>(tex, texture_detail::projected3(p), bias);
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProjLod(const sampler2D& tex, const P& p, const F& lod) {
+    return texture_detail::at_level<F, 2>(tex, texture_detail::projected2(p), lod);
+}
+template <Number F>
+vec4<F> textureProjLod(const sampler3D& tex, const vec4<F>& p, const F& lod) {
+    return texture_detail::at_level<F, 3>(tex, texture_detail::projected3(p), lod);
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProjGrad(const sampler2D& tex, const P& p, const vec2<F>& dPdx, const vec2<F>& dPdy) {
+    return texture_detail::gradient<F, 2>(tex, texture_detail::projected2(p), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy));
+}
+template <Number F>
+vec4<F> textureProjGrad(const sampler3D& tex, const vec4<F>& p, const vec3<F>& dPdx, const vec3<F>& dPdy) {
+    return texture_detail::gradient<F, 3>(tex, texture_detail::projected3(p), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy));
+}
+// GLSL 1.20's names of the projective lookups.
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> texture2DProj(const sampler2D& tex, const P& p) { return textureProj(tex, p); }
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> texture2DProj(const sampler2D& tex, const P& p, const F& bias) { return textureProj(tex, p, bias); }
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> texture2DProjLod(const sampler2D& tex, const P& p, const F& lod) { return textureProjLod(tex, p, lod); }
+template <Number F>
+vec4<F> texture3DProj(const sampler3D& tex, const vec4<F>& p) { return textureProj(tex, p); }
+template <Number F>
+vec4<F> texture3DProj(const sampler3D& tex, const vec4<F>& p, const F& bias) { return textureProj(tex, p, bias); }
+template <Number F>
+vec4<F> texture3DProjLod(const sampler3D& tex, const vec4<F>& p, const F& lod) { return textureProjLod(tex, p, lod); }
+
+// Constant texel offsets (GLSL 1.30): added to the texel coordinates at whichever level is read,
+// before the wrap, as llvmpipe adds them (to the unnormalised coordinate; to the normalised one,
+// divided by the level's size, for REPEAT on a size that is not a power of two and for
+// MIRRORED_REPEAT).
+template <Number F>
+vec4<F> textureOffset(const sampler2D& tex, const vec2<F>& st, const ivec2<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::implicit<F, 2>(tex, texture_detail::coords(st), &o);
+}
+template <Number F>
+vec4<F> textureOffset(const sampler2D& tex, const vec2<F>& st, const ivec2<F>& offset, const F& bias) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::biased<F, 2>(tex, texture_detail::coords(st), bias, &o);
+}
+template <Number F>
+vec4<F> textureOffset(const sampler3D& tex, const vec3<F>& str, const ivec3<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::implicit<F, 3>(tex, texture_detail::coords(str), &o);
+}
+template <Number F>
+vec4<F> textureOffset(const sampler3D& tex, const vec3<F>& str, const ivec3<F>& offset, const F& bias) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::biased<F, 3>(tex, texture_detail::coords(str), bias, &o);
+}
+template <Number F>
+vec4<F> textureLodOffset(const sampler2D& tex, const vec2<F>& st, const F& lod, const ivec2<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::at_level<F, 2>(tex, texture_detail::coords(st), lod, &o);
+}
+template <Number F>
+vec4<F> textureLodOffset(const sampler3D& tex, const vec3<F>& str, const F& lod, const ivec3<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::at_level<F, 3>(tex, texture_detail::coords(str), lod, &o);
+}
+template <Number F>
+vec4<F> textureGradOffset(const sampler2D& tex, const vec2<F>& st, const vec2<F>& dPdx, const vec2<F>& dPdy,
+                          const ivec2<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::gradient<F, 2>(tex, texture_detail::coords(st), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy), &o);
+}
+template <Number F>
+vec4<F> textureGradOffset(const sampler3D& tex, const vec3<F>& str, const vec3<F>& dPdx, const vec3<F>& dPdy,
+                          const ivec3<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::gradient<F, 3>(tex, texture_detail::coords(str), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy), &o);
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProjOffset(const sampler2D& tex, const P& p, const ivec2<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::implicit<F, 2>(tex, texture_detail::projected2(p), &o);
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProjOffset(const sampler2D& tex, const P& p, const ivec2<F>& offset, const F& bias) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::biased<F, 2>(tex, texture_detail::projected2(p), bias, &o);
+}
+template <Number F>
+vec4<F> textureProjOffset(const sampler3D& tex, const vec4<F>& p, const ivec3<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::implicit<F, 3>(tex, texture_detail::projected3(p), &o);
+}
+template <Number F>
+vec4<F> textureProjOffset(const sampler3D& tex, const vec4<F>& p, const ivec3<F>& offset, const F& bias) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::biased<F, 3>(tex, texture_detail::projected3(p), bias, &o);
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProjLodOffset(const sampler2D& tex, const P& p, const F& lod, const ivec2<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::at_level<F, 2>(tex, texture_detail::projected2(p), lod, &o);
+}
+template <Number F>
+vec4<F> textureProjLodOffset(const sampler3D& tex, const vec4<F>& p, const F& lod, const ivec3<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::at_level<F, 3>(tex, texture_detail::projected3(p), lod, &o);
+}
+template <ProjCoords2 P, Number F = typename P::value_type>
+vec4<F> textureProjGradOffset(const sampler2D& tex, const P& p, const vec2<F>& dPdx, const vec2<F>& dPdy,
+                              const ivec2<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::gradient<F, 2>(tex, texture_detail::projected2(p), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy), &o);
+}
+template <Number F>
+vec4<F> textureProjGradOffset(const sampler3D& tex, const vec4<F>& p, const vec3<F>& dPdx, const vec3<F>& dPdy,
+                              const ivec3<F>& offset) {
+    const auto o = texture_detail::coords<F>(offset);
+    return texture_detail::gradient<F, 3>(tex, texture_detail::projected3(p), texture_detail::coords(dPdx),
+                                          texture_detail::coords(dPdy), &o);
+}
 
 // GLSL 1.30's size query and unfiltered fetch, with the integer level per fragment. Their
 // arguments are integers, so the float type is named: textureSize<F>(teximage, 0),
-// texelFetch<F>(teximage, ivec2<F>(p), level).
+// texelFetch<F>(teximage, ivec2<F>(p), level), texelFetchOffset<F>(teximage, p, level, offset).
 template <Number F>
 ivec2<F> textureSize(const sampler2D& tex, const int_t<F>& lod) {
     const auto s = texture_detail::size_query<F, 2>(tex, lod);
@@ -424,13 +701,21 @@ ivec3<F> textureSize(const sampler3D& tex, const int_t<F>& lod) {
 }
 template <Number F>
 vec4<F> texelFetch(const sampler2D& tex, const ivec2<F>& p, const int_t<F>& lod) {
-    return texture_detail::texel_fetch<F, 2>(tex, {p.x, p.y}, lod);
+    return texture_detail::texel_fetch<F, 2>(tex, texture_detail::coords<F>(p), lod);
 }
 template <Number F>
 vec4<F> texelFetch(const sampler3D& tex, const ivec3<F>& p, const int_t<F>& lod) {
-    return texture_detail::texel_fetch<F, 3>(tex, {p.x, p.y, p.z}, lod);
+    return texture_detail::texel_fetch<F, 3>(tex, texture_detail::coords<F>(p), lod);
+}
+// The offset is added to the texel coordinates before the fetch, which reads (0, 0, 0, 0) outside
+// the level as texelFetch does (llvmpipe's lp_build_fetch_texel).
+template <Number F>
+vec4<F> texelFetchOffset(const sampler2D& tex, const ivec2<F>& p, const int_t<F>& lod, const ivec2<F>& offset) {
+    return texelFetch<F>(tex, p + offset, lod);
 }
 template <Number F>
-vec4<F> texture3DLod(const sampler3D& tex, const vec3<F>& str, const F& lod) { return textureLod(tex, str, lod); }
+vec4<F> texelFetchOffset(const sampler3D& tex, const ivec3<F>& p, const int_t<F>& lod, const ivec3<F>& offset) {
+    return texelFetch<F>(tex, p + offset, lod);
+}
 
 }  // namespace qs::glsl

@@ -45,6 +45,23 @@ XDG_CACHE_HOME=$work/no-cache "$bin/quadshade" render "$scene" $size --glsl "$fr
     -o "$work/coarse-interpreted.png" 2> /dev/null
 same "$work/coarse-interpreted.png" "$work/coarse.png"
 
+# A material naming the GLSL (extras.glsl) follows the same rule: render --compile compiles it
+# into an empty cache, and a render without it finds it there; the interpreter's picture each time.
+mkdir -p "$work/material"
+cp -r "$frag" "$(dirname "$scene")"/table-1.1-plane.bin "$(dirname "$scene")"/textures "$work/material/"
+sed 's/"shader": *"perlin"/"glsl": "stripes.frag"/' "$scene" > "$work/material/plane.gltf"
+grep -q '"glsl": "stripes.frag"' "$work/material/plane.gltf"
+XDG_CACHE_HOME=$work/material-cache "$bin/quadshade" render "$work/material/plane.gltf" $size --compile \
+    -o "$work/material/compiled.png" 2> "$work/material/compile.txt"
+grep -q "compiled stripes.frag in" "$work/material/compile.txt"
+XDG_CACHE_HOME=$work/material-cache "$bin/quadshade" render "$work/material/plane.gltf" $size \
+    -o "$work/material/cached.png" 2> "$work/material/cached.txt"
+if grep -q "compil\|warning" "$work/material/cached.txt"; then cat "$work/material/cached.txt" >&2; exit 1; fi
+XDG_CACHE_HOME=$work/no-cache "$bin/quadshade" render "$work/material/plane.gltf" $size \
+    -o "$work/material/interpreted.png" 2> /dev/null
+same "$work/material/interpreted.png" "$work/material/compiled.png"
+same "$work/material/interpreted.png" "$work/material/cached.png"
+
 # A cache that cannot be written: the interpreter's picture, and one warning.
 touch "$work/not-a-folder"
 XDG_CACHE_HOME=$work/not-a-folder "$bin/quadshade" render "$scene" $size --glsl "$frag" --compile \

@@ -160,16 +160,16 @@ void main() {
 })"},
 };
 
-// `fragment` (with the vertex shader the front end writes for it) drawn on the Table 1.1 plane by
-// the interpreter and by llvmpipe, held to the bar with `over_1` pixels allowed past 1/255.
+// `fragment` (with the vertex shader the front end writes for it) drawn on `scene` by the
+// interpreter and by llvmpipe, held to the bar with `over_1` pixels allowed past 1/255.
 void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context, GlPrograms& programs, int size,
-                            const std::string& name, const std::string& fragment, std::size_t over_1, const char* cause) {
+                            const std::string& name, const std::string& fragment, std::size_t over_1, const char* cause,
+                            Scene scene) {
     const std::filesystem::path frag = dir / (name + ".frag"), vert = dir / (name + ".vert");
     std::ofstream(frag) << fragment;
     std::ofstream(vert) << frontend::default_vertex_shader({frag.string(), fragment}).text;
     const GlslShader shader = load_glsl_shader(frag, vert);
 
-    Scene scene = load_scene(kPlane);
     FrameRequest r;
     r.width = r.height = size;
     r.shader_override = std::string(shader.program->info().name);
@@ -183,6 +183,84 @@ void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context
     CHECK(n.over_1 <= over_1);
     if (n.over_1 > 0) write_comparison(ours, reference, dir / (name + "-comparison.png"));
 }
+// ... on the Table 1.1 plane.
+void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context, GlPrograms& programs, int size,
+                            const std::string& name, const std::string& fragment, std::size_t over_1, const char* cause) {
+    check_against_llvmpipe(dir, context, programs, size, name, fragment, over_1, cause, load_scene(kPlane));
+}
+
+// Texture lookups with explicit derivatives (textureGrad) and texel offsets (the *Offset forms):
+// whole fragment shaders (GLSL 1.30) that read `st`, `teximage` (2D) and `volume` (3D) and write
+// `color`, each drawn on the plane under every sampler below. The derivatives vary within a
+// quad (llvmpipe takes its upper-left pixel's), reach every level, and overflow to infinity on
+// a band (llvmpipe reads level 0 there); the offsets go past the texture's edges under each wrap.
+const LanguageCase kTextureLookups[] = {
+    {"texture_grad", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+void main() {
+    vec2 p = st * 3.0 - 1.0;
+    float k = exp2(fract(st.x * 5.0) * 9.0 - 3.0);
+    vec2 dx = vec2(0.01 * k, 0.003 * gl_FragCoord.y / 64.0), dy = vec2(0.002, 0.012 * k) * (0.5 + st.y);
+    if (st.y > 0.9) dx.x = 1e30;
+    color = vec4(textureGrad(teximage, p, dx, dy).rgb, 1.0);
+})"},
+    {"texture_proj_grad_3d", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler3D volume;
+void main() {
+    vec4 p = vec4(st * 2.0 - 0.5, st.x * 0.75 - st.y * 0.5, 1.0) * (1.0 + st.y);
+    vec3 dx = dFdx(p.xyz) * exp2(st.x * 6.0 - 1.0), dy = vec3(0.0, 0.004, 0.03 * st.y);
+    color = vec4(0.5 * (textureGrad(volume, p.xyz / p.w, dx, dy).rgb + textureProjGrad(volume, p, dy, dx).rgb), 1.0);
+})"},
+    {"texture_offset", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+void main() {
+    vec2 p = st * 4.0 - 1.5;
+    vec3 a = textureOffset(teximage, p, ivec2(-3, 2)).rgb;
+    vec3 b = textureOffset(teximage, p * 0.5, ivec2(7, -8), st.x * 3.0 - 1.0).rgb;
+    vec3 c = textureProjOffset(teximage, vec3(p, 1.0 + st.y), ivec2(1, 5)).rgb;
+    color = vec4(st.x < 0.33 ? a : st.x < 0.67 ? b : c, 1.0);
+})"},
+    {"texture_lod_grad_offset", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+void main() {
+    vec2 p = st * 2.5 - 0.75;
+    vec3 a = textureLodOffset(teximage, p, st.y * 6.0 - 1.0, ivec2(-8, 7)).rgb;
+    vec3 b = textureGradOffset(teximage, p, vec2(0.05 * st.y, 0.0), vec2(0.0, 0.02), ivec2(4, -1)).rgb;
+    vec3 c = textureProjLodOffset(teximage, vec4(p, 0.0, 2.0), 1.0, ivec2(-2, -6)).rgb;
+    color = vec4(st.x < 0.33 ? a : st.x < 0.67 ? b : c, 1.0);
+})"},
+    {"texel_fetch_offset", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+uniform sampler3D volume;
+void main() {
+    ivec2 size = textureSize(teximage, 0);
+    ivec2 texel = ivec2(st * vec2(size + 8)) - 4;
+    vec4 a = texelFetchOffset(teximage, texel, int(st.y * 3.0), ivec2(3, -2));
+    vec4 b = texelFetchOffset(volume, ivec3(texel, int(st.x * 40.0) - 4), 0, ivec3(-1, 2, 3));
+    color = vec4(st.x < 0.5 ? a.rgb : b.rgb, 1.0);
+})"},
+    {"texture_offset_3d", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler3D volume;
+void main() {
+    vec3 p = vec3(st * 3.0 - 1.0, st.x - st.y);
+    vec3 a = textureOffset(volume, p, ivec3(2, -3, 1)).rgb;
+    vec3 b = textureLodOffset(volume, p, st.y * 4.0 - 0.5, ivec3(-5, 0, 6)).rgb;
+    vec3 c = textureGradOffset(volume, p, vec3(0.03, 0.0, 0.01) * st.y, vec3(0.0, 0.02, 0.0), ivec3(1, 1, -7)).rgb;
+    color = vec4(st.x < 0.33 ? a : st.x < 0.67 ? b : c, 1.0);
+})"},
+};
 
 }  // namespace
 
@@ -206,6 +284,49 @@ TEST_CASE("the language where lanes diverge, run by the interpreter, matches OSM
     for (const LanguageCase& c : kLanguage) {
         check_against_llvmpipe(dir, *context, programs, size, c.name, std::string("#version 130") + c.source + "\n", c.over_1,
                                c.cause);
+    }
+}
+
+TEST_CASE("textureGrad and the Offset lookups, run by the interpreter, match OSMesa llvmpipe under each sampler",
+          "[interpreter][reference][textures]") {
+    const std::filesystem::path dir = temp_dir("glsl-textures");
+    const int size = 64;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    constexpr Wrap kRepeat = Wrap::Repeat, kMirror = Wrap::MirroredRepeat, kClamp = Wrap::ClampToEdge;
+    constexpr Filter kLinear = Filter::Linear, kNearest = Filter::Nearest;
+    struct SamplerCase {
+        const char* name;
+        const char* image;  // 2D; the volume is the shipped 32^3 one
+        Sampler sampler;
+    };
+    // The 8-bit path (REPEAT, CLAMP_TO_EDGE) and the float one (MIRRORED_REPEAT, or different min
+    // and mag filters with a level per pixel); sizes that are powers of two and that are not;
+    // every mipmap filter.
+    const SamplerCase samplers[] = {
+        {"trilinear", "texture-64x32.png", {kLinear, Filter::LinearMipmapLinear, kRepeat, kRepeat, kRepeat}},
+        {"nearest-mipmaps-npot", "texture-37x19.png", {kNearest, Filter::NearestMipmapNearest, kRepeat, kClamp, kRepeat}},
+        {"linear-mipmap-nearest-npot", "texture-37x19.png", {kLinear, Filter::LinearMipmapNearest, kRepeat, kRepeat, kClamp}},
+        {"mirrored", "texture-13x7.png", {kLinear, Filter::NearestMipmapLinear, kMirror, kMirror, kMirror}},
+        {"clamp-min-mag", "texture-16x8.png", {kNearest, Filter::LinearMipmapLinear, kClamp, kClamp, kClamp}},
+        {"one-level", "texture-16x16.png", {kLinear, kLinear, kRepeat, kMirror, kRepeat}},
+    };
+    for (const SamplerCase& sc : samplers) {
+        Scene scene = load_scene(kPlane);
+        scene.textures.at(0).image.file = kSource / "scenes/assets/conformance/images" / sc.image;
+        scene.textures.at(0).sampler = sc.sampler;
+        Texture volume;
+        volume.image.file = kSource / "scenes/assets/textures/fast-noise-volume.png";
+        volume.sampler = sc.sampler;
+        volume.dims = 3, volume.depth = 32;
+        volume.field = "volume";
+        scene.textures.push_back(volume);
+        scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
+        for (const LanguageCase& c : kTextureLookups) {
+            const std::string name = std::string(c.name) + "-" + sc.name;
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string("#version 130") + c.source + "\n", c.over_1,
+                                   c.cause, scene);
+        }
     }
 }
 

@@ -26,6 +26,7 @@
 #include "translated_chained_assignment/translated_chained_assignment.h"
 #include "translated_sampler_parameter/translated_sampler_parameter.h"
 #include "translated_constant_vector_table/translated_constant_vector_table.h"
+#include "translated_texture_lookups/translated_texture_lookups.h"
 
 namespace {
 
@@ -95,6 +96,18 @@ TEST_CASE("a translation names GLSL's identifiers safely and keeps file names ou
 
 namespace {
 
+// Every derivative rule, and double precision: a translation is written over the number type.
+struct Mode {
+    const char* what;
+    Derivatives derivatives;
+    Precision precision;
+};
+constexpr Mode kModes[] = {{"fine", Derivatives::Fine, Precision::Float},
+                           {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
+                           {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
+                           {"analytic", Derivatives::Analytic, Precision::Float},
+                           {"double", Derivatives::Fine, Precision::Double}};
+
 // A compiled translation and the GLSL it was written from: a catalogue shader's, or a file of
 // tests/translate (with the default vertex stage) on the Table 1.1 plane.
 struct TranslatedCase {
@@ -129,16 +142,6 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_sampler_parameter::TranslatedSamplerParameter>, "sampler_parameter", false},
         {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
          false}};
-    struct Mode {
-        const char* what;
-        Derivatives derivatives;
-        Precision precision;
-    };
-    const Mode modes[] = {{"fine", Derivatives::Fine, Precision::Float},
-                          {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
-                          {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
-                          {"analytic", Derivatives::Analytic, Precision::Float},
-                          {"double", Derivatives::Fine, Precision::Double}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -157,7 +160,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         const Program& interpreted = add_compiled_program(std::move(glsl_program), "interpreted", vertex, frag.text);
         const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
-        for (const Mode& m : modes) {
+        for (const Mode& m : kModes) {
             FrameRequest r;
             r.width = 64, r.height = 48;
             r.shading.derivatives = m.derivatives;
@@ -219,4 +222,42 @@ TEST_CASE("a render's modes: those of a draw with and without a texture's level 
           bit(Derivatives::Fine, Precision::Float, true));
     CHECK(ShadeModes{}.covers(modes_for(Needs{}, ShadeRequest{})));
     CHECK_FALSE(ShadeModes{bit(Derivatives::Fine)}.covers(ShadeModes{bit(Derivatives::Fine) | bit(Derivatives::None)}));
+}
+
+TEST_CASE("a translation's texture lookups, every form, draw what the interpreter draws, to the bit, under each rule",
+          "[translate][textures]") {
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_lookups.frag");
+    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
+    const std::string vertex = compiled_glsl.vertex.text;
+    const Program& interpreted = add_compiled_program(
+        std::make_unique<interpreter::GlslProgram>("interpreted texture_lookups", std::move(compiled_glsl)),
+        "interpreted", vertex, frag.text);
+    const Program& compiled = add_compiled_program(
+        make_program<translated_texture_lookups::TranslatedTextureLookups>(), "translated", vertex, frag.text);
+    // The plane's texture and the shipped volume as `volume`, both with trilinear mipmaps and a
+    // mirrored wrap, so that offsets and explicit levels reach every filter's path.
+    Scene scene = load_scene(test::kPlane);
+    const Sampler trilinear{Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::MirroredRepeat,
+                            Wrap::Repeat};
+    scene.textures.at(0).sampler = trilinear;
+    Texture volume;
+    volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
+    volume.sampler = trilinear;
+    volume.dims = 3, volume.depth = 32;
+    volume.field = "volume";
+    scene.textures.push_back(volume);
+    scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
+    for (const Mode& m : kModes) {
+        FrameRequest r;
+        r.width = 64, r.height = 48;
+        r.shading.derivatives = m.derivatives;
+        r.shading.precision = m.precision;
+        r.shader_override = interpreted.info().name;
+        const Framebuffer expected = render_frame(scene, r);
+        r.shader_override = compiled.info().name;
+        const Framebuffer got = render_frame(scene, r);
+        INFO(m.what);
+        CHECK(differing_pixels(expected, got) == 0);
+        CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
+    }
 }
