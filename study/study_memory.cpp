@@ -26,22 +26,26 @@ MemoryPlan plan_memory(const Request& r, Scene& scene, const std::vector<Mode>& 
 
     FrameRequest f;
     f.width = int(w), f.height = int(h);
-    f.shader_override = r.shaders.shader;
     std::uint64_t held = 0, loading = 0;
     // A renderer's frame of `rows` rows at the study's size, what it holds beside noted.
-    auto measure = [&](Backend backend, int rows) {
+    auto measure = [&](Backend backend, const std::string& shader, int rows) {
         f.backend = backend;
+        f.shader_override = shader;
         SceneRenderer renderer(scene, f);
         const SceneRenderer::HeldBytes b = renderer.held_bytes();
         held = std::max(held, b.scene + b.textures);
         loading = std::max(loading, b.texture_loading);
         return renderer.frame_bytes(rows);
     };
-    // No rows: the vertices and triangles a frame adds beside its pixels, at any size.
-    const std::uint64_t geometry = measure(Backend::Rasterizer, 0);
+    // No rows: the vertices and triangles a frame adds beside its pixels, at any size. Each
+    // variant's renderer, for the textures it samples.
+    std::uint64_t geometry = 0;
+    for (const std::string& shader : {r.shaders.shader, r.shaders.unfiltered, r.shaders.alternative}) {
+        if (!shader.empty()) geometry = std::max(geometry, measure(Backend::Rasterizer, shader, 0));
+    }
     std::uint64_t caster_frame = 0;  // the ray caster renders at the study's size only
     if (std::any_of(modes.begin(), modes.end(), [](const Mode& m) { return m.backend == Backend::RayCaster; })) {
-        caster_frame = measure(Backend::RayCaster, int(h));
+        caster_frame = measure(Backend::RayCaster, r.shaders.shader, int(h));
     }
     // Held throughout: the scene as the study loaded it, one renderer's, and a render's overhead.
     const std::uint64_t base = kRenderOverheadBytes + scene_bytes(scene) + held;

@@ -29,8 +29,8 @@ struct MemoryPlan {
 };
 
 // The plan of `request` on `scene` (as drawn: its objects kept, at the study's size) with `modes`.
-// Builds the renderers it measures (a rasterizer's, and a ray caster's for its modes); renders
-// nothing.
+// Builds the renderers it measures (a rasterizer's for each variant of the shader, and a ray
+// caster's for its modes); renders nothing.
 MemoryPlan plan_memory(const Request& request, Scene& scene, const std::vector<Mode>& modes);
 
 // Throws MemoryError naming the step, what it needs and `limit`, when the plan needs more.
