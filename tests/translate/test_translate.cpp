@@ -128,6 +128,25 @@ std::unique_ptr<Program> make_program() {
     return std::make_unique<ProgramOf<Shader>>();
 }
 
+// Renders `scene` with the interpreted program and then the compiled one under each of kModes:
+// the two must agree to the bit, on a picture rather than one colour.
+void check_same_pixels(Scene& scene, const Program& interpreted, const Program& compiled,
+                       const std::string& what) {
+    for (const Mode& m : kModes) {
+        FrameRequest r;
+        r.width = 64, r.height = 48;
+        r.shading.derivatives = m.derivatives;
+        r.shading.precision = m.precision;
+        r.shader_override = interpreted.info().name;
+        const Framebuffer expected = render_frame(scene, r);
+        r.shader_override = compiled.info().name;
+        const Framebuffer got = render_frame(scene, r);
+        INFO(what << ", " << m.what);
+        CHECK(differing_pixels(expected, got) == 0);
+        CHECK(differing_pixels(expected, uniform_like(expected)) > 0);
+    }
+}
+
 }  // namespace
 
 TEST_CASE("compiled translations draw what the interpreter draws, to the bit, under each rule", "[translate]") {
@@ -160,19 +179,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         const Program& interpreted = add_compiled_program(std::move(glsl_program), "interpreted", vertex, frag.text);
         const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
-        for (const Mode& m : kModes) {
-            FrameRequest r;
-            r.width = 64, r.height = 48;
-            r.shading.derivatives = m.derivatives;
-            r.shading.precision = m.precision;
-            r.shader_override = interpreted.info().name;
-            const Framebuffer expected = render_frame(scene, r);
-            r.shader_override = compiled.info().name;
-            const Framebuffer got = render_frame(scene, r);
-            INFO(name << ", " << m.what);
-            CHECK(differing_pixels(expected, got) == 0);
-            CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
-        }
+        check_same_pixels(scene, interpreted, compiled, name);
     }
 }
 
@@ -247,17 +254,5 @@ TEST_CASE("a translation's texture lookups, every form, draw what the interprete
     volume.field = "volume";
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    for (const Mode& m : kModes) {
-        FrameRequest r;
-        r.width = 64, r.height = 48;
-        r.shading.derivatives = m.derivatives;
-        r.shading.precision = m.precision;
-        r.shader_override = interpreted.info().name;
-        const Framebuffer expected = render_frame(scene, r);
-        r.shader_override = compiled.info().name;
-        const Framebuffer got = render_frame(scene, r);
-        INFO(m.what);
-        CHECK(differing_pixels(expected, got) == 0);
-        CHECK(differing_pixels(expected, uniform_like(expected)) > 0);  // a picture, not one colour
-    }
+    check_same_pixels(scene, interpreted, compiled, "texture_lookups");
 }
