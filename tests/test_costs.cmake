@@ -1,11 +1,11 @@
-# Read by ctest, not by CMake: the slowest tests' seconds (one `ctest -j 2` of a Release build on
-# the 2-core host), so that a fresh clone's ctest, which has no timings of its own yet, starts them
+# Read by ctest, not by CMake: the slowest tests' seconds (a Release build's, measured on a 2-core
+# host), so that a fresh clone's ctest, which has no timings of its own yet, starts them
 # first and the other core runs the short tests beside them, instead of ending on them alone. Only
 # the order matters; ctest keeps its own measured costs once it has run (Testing/Temporary), and a
 # name here that a build does not have (QUADSHADE_REFERENCE=OFF) is ignored.
 set(slowest_tests
     "every shader matches OSMesa softpipe under the coarse-lower rule" 283
-    "check: every catalogue shader meets the bar on the shipped scenes (llvmpipe)" 217
+    "check: every catalogue shader meets the bar on the shipped scenes (llvmpipe)" 123
     "every shader matches OSMesa llvmpipe under the fine rule" 107
     "examples/ build against the installed package as the README says, optimised, and match OSMesa" 58
     "docs/writing-shaders.md: its examples build as a plugin and match OSMesa" 44
