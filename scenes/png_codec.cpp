@@ -93,14 +93,13 @@ bool read_interlaced(PngStream& s, png_bytepp rows) {
 
 bool write_header(PngStream& s, png_uint_32 width, png_uint_32 height, int color_type, png_textp text, int texts) {
     if (setjmp(png_jmpbuf(s.png))) return false;
-    // OpenImageIO's settings and chunks (zlib level 6, no filters, an oFFs chunk of origin 0, 0,
-    // then the text): a file is the same byte for byte whichever of the two writes it.
-    png_set_compression_level(s.png, 6);
-    png_set_compression_strategy(s.png, Z_DEFAULT_STRATEGY);
-    png_set_filter(s.png, 0, PNG_NO_FILTERS);
+    // zlib's fastest level over rows filtered by the row above: a third to a sixth of the time of
+    // OpenImageIO's level 6 unfiltered, for files mostly 10-40% larger (docs/results.md, "The
+    // cost of one call").
+    png_set_compression_level(s.png, Z_BEST_SPEED);
+    png_set_filter(s.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
     png_set_IHDR(s.png, s.info, width, height, 8, color_type, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
-    png_set_oFFs(s.png, s.info, 0, 0, PNG_OFFSET_PIXEL);
     if (texts > 0) png_set_text(s.png, s.info, text, texts);
     png_write_info(s.png, s.info);
     return true;

@@ -5,8 +5,8 @@
 // read or written is the same whichever library handles it: every PNG kind expanded to 8 or 16
 // bits (palette to RGB, gray below 8 bits to 8, a tRNS chunk to alpha), no gamma or sRGB
 // conversion, alpha associated on reading unless kept as stored, samples converted as OpenImageIO
-// converts them, and files written byte for byte as OpenImageIO writes them, string attributes as
-// text chunks (tests/scenes/test_png_codec.cpp checks all of it against OpenImageIO).
+// converts them, and string attributes written as text chunks (tests/scenes/test_png_codec.cpp
+// checks all of it against OpenImageIO).
 
 #include <memory>
 #include <span>
