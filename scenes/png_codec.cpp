@@ -117,7 +117,9 @@ bool write_end(PngStream& s) {
     return true;
 }
 
-std::string libpng_error(const PngStream& s) { return std::string("libpng: ") + (s.error[0] ? s.error : "unknown error"); }
+std::string libpng_error(const PngStream& s) {
+    return std::string("libpng: ") + (s.error[0] ? s.error : "unknown error");
+}
 
 template <class T>
 T load(const unsigned char* p) {
@@ -143,14 +145,16 @@ void associate_alpha(unsigned char* row, std::size_t width, int channels, float 
         for (std::size_t x = 0; x < width; ++x) {
             unsigned char* p = row + x * stride;
             const unsigned alpha = load<T>(p + std::size_t(a) * sizeof(T));
-            for (int c = 0; c < a; ++c) store<T>(p + std::size_t(c) * sizeof(T), T(load<T>(p + std::size_t(c) * sizeof(T)) * alpha / max));
+            for (int c = 0; c < a; ++c)
+                store<T>(p + std::size_t(c) * sizeof(T), T(load<T>(p + std::size_t(c) * sizeof(T)) * alpha / max));
         }
         return;
     }
     const float inv_max = float(1.0 / max);
     for (std::size_t x = 0; x < width; ++x) {
         unsigned char* p = row + x * stride;
-        const float factor = float(std::pow(double(float(load<T>(p + std::size_t(a) * sizeof(T))) * inv_max), double(gamma)));
+        const float factor =
+            float(std::pow(double(float(load<T>(p + std::size_t(a) * sizeof(T))) * inv_max), double(gamma)));
         for (int c = 0; c < a; ++c) {
             store<T>(p + std::size_t(c) * sizeof(T), T(float(load<T>(p + std::size_t(c) * sizeof(T))) * factor));
         }
@@ -224,7 +228,8 @@ private:
     // 8-bit is decoded straight into `out`.
     template <class T>
     bool read_pixels(int channels, T* out) {
-        if (channels < 1 || channels > shape_.channels) return fail("cannot read " + std::to_string(channels) + " channels");
+        if (channels < 1 || channels > shape_.channels)
+            return fail("cannot read " + std::to_string(channels) + " channels");
         if (read_ && !start()) return false;  // the reader reads once: a second read starts again
         read_ = true;
         const std::size_t width = std::size_t(shape_.width), height = std::size_t(shape_.height);
@@ -247,8 +252,10 @@ private:
             unsigned char* row = row_of(y);
             if (!interlaced_ && !read_row(stream_, row)) return fail(libpng_error(stream_));
             if (associate) {
-                if (bytes == 1) associate_alpha<std::uint8_t>(row, width, shape_.channels, gamma_);
-                else associate_alpha<std::uint16_t>(row, width, shape_.channels, gamma_);
+                if (bytes == 1)
+                    associate_alpha<std::uint8_t>(row, width, shape_.channels, gamma_);
+                else
+                    associate_alpha<std::uint16_t>(row, width, shape_.channels, gamma_);
             }
             if (direct) continue;
             T* o = out + y * width * std::size_t(channels);
@@ -283,17 +290,21 @@ public:
         static const int kColourTypes[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
                                            PNG_COLOR_TYPE_RGB_ALPHA};
         if (spec.floats) return fail("PNG is written with 8-bit samples only");
-        if (spec.channels < 1 || spec.channels > 4) return fail("PNG holds 1 to 4 channels, not " + std::to_string(spec.channels));
+        if (spec.channels < 1 || spec.channels > 4)
+            return fail("PNG holds 1 to 4 channels, not " + std::to_string(spec.channels));
         if (spec.width <= 0 || spec.height <= 0) return fail("PNG cannot hold an image of no pixels");
         width_ = std::size_t(spec.width), height_ = spec.height, channels_ = spec.channels;
         // Each attribute a tEXt chunk in order, a later one of the same name (in any case)
         // replacing the earlier, and none without a name: as OpenImageIO's attributes.
         for (const auto& [key, value] : spec.attributes) {
             if (key.empty()) continue;
-            const auto same = std::find_if(text_.begin(), text_.end(),
-                                           [&](const auto& t) { return ::strcasecmp(t.first.c_str(), key.c_str()) == 0; });
-            if (same != text_.end()) *same = {key, value};
-            else text_.emplace_back(key, value);
+            const auto same = std::find_if(text_.begin(), text_.end(), [&](const auto& t) {
+                return ::strcasecmp(t.first.c_str(), key.c_str()) == 0;
+            });
+            if (same != text_.end())
+                *same = {key, value};
+            else
+                text_.emplace_back(key, value);
         }
         std::vector<png_text> chunks(text_.size());
         for (std::size_t i = 0; i < text_.size(); ++i) {
@@ -330,7 +341,8 @@ public:
                 for (std::size_t x = 0; x < width_; ++x) {
                     std::uint8_t* p = &row_[x * std::size_t(channels_)];
                     if (p[a] == 0) continue;
-                    for (std::size_t c = 0; c < a; ++c) p[c] = std::uint8_t(std::min(255u, unsigned(p[c]) * 255u / p[a]));
+                    for (std::size_t c = 0; c < a; ++c)
+                        p[c] = std::uint8_t(std::min(255u, unsigned(p[c]) * 255u / p[a]));
                 }
             }
             if (!write_row(stream_, row_.data())) return fail(libpng_error(stream_));

@@ -28,8 +28,8 @@ struct PngKind {
     std::string name;
     int colour_type = PNG_COLOR_TYPE_RGB, bits = 8, width = 61, height = 37;
     bool interlaced = false, transparency = false;  // transparency: a tRNS chunk
-    double gamma = 0.0;                              // > 0: a gAMA chunk
-    bool srgb = false;                               // an sRGB chunk
+    double gamma = 0.0;                             // > 0: a gAMA chunk
+    bool srgb = false;                              // an sRGB chunk
     // Every value (one channel: across the image; two: every pair of 256 levels, x and y), else
     // values mixed from x, y and the channel.
     bool every_value = false;
@@ -40,7 +40,9 @@ void append(png_structp png, png_bytep data, std::size_t size) {
     out->insert(out->end(), data, data + size);
 }
 
-unsigned mixed(int x, int y, int c, unsigned max) { return (unsigned(x) * 97u + unsigned(y) * 753u + unsigned(c) * 71u) % (max + 1); }
+unsigned mixed(int x, int y, int c, unsigned max) {
+    return (unsigned(x) * 97u + unsigned(y) * 753u + unsigned(c) * 71u) % (max + 1);
+}
 
 unsigned sample(const PngKind& k, int x, int y, int c, int channels, unsigned max) {
     if (!k.every_value) return mixed(x, y, c, max);
@@ -57,7 +59,8 @@ Bytes make_png(const PngKind& k) {
     // across the rows' destructors.
     png_set_write_fn(png, &out, append, nullptr);
     png_set_IHDR(png, info, png_uint_32(k.width), png_uint_32(k.height), k.bits, k.colour_type,
-                 k.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+                 k.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
     const unsigned max = (1u << k.bits) - 1;
     int channels = 1;
     if (k.colour_type == PNG_COLOR_TYPE_PALETTE) {
@@ -70,9 +73,10 @@ Bytes make_png(const PngKind& k) {
         png_set_PLTE(png, info, palette.data(), int(palette.size()));
         if (k.transparency) png_set_tRNS(png, info, alpha.data(), int(alpha.size()), nullptr);
     } else {
-        channels = k.colour_type == PNG_COLOR_TYPE_GRAY ? 1 : k.colour_type == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
-                   : k.colour_type == PNG_COLOR_TYPE_RGB                                           ? 3
-                                                                                                   : 4;
+        channels = k.colour_type == PNG_COLOR_TYPE_GRAY         ? 1
+                   : k.colour_type == PNG_COLOR_TYPE_GRAY_ALPHA ? 2
+                   : k.colour_type == PNG_COLOR_TYPE_RGB        ? 3
+                                                                : 4;
         if (k.transparency) {
             png_color_16 colour{};
             colour.gray = png_uint_16(mixed(1, 0, 0, max));
@@ -94,9 +98,12 @@ Bytes make_png(const PngKind& k) {
             for (int c = 0; c < channels; ++c) {
                 const unsigned v = sample(k, x, y, c, channels, max);
                 const std::size_t i = std::size_t(x) * std::size_t(channels) + std::size_t(c);
-                if (k.bits == 16) row[2 * i] = png_byte(v >> 8), row[2 * i + 1] = png_byte(v);
-                else if (k.bits == 8) row[i] = png_byte(v);
-                else row[i * std::size_t(k.bits) / 8] |= png_byte(v << (8 - k.bits - int(i * std::size_t(k.bits) % 8)));
+                if (k.bits == 16)
+                    row[2 * i] = png_byte(v >> 8), row[2 * i + 1] = png_byte(v);
+                else if (k.bits == 8)
+                    row[i] = png_byte(v);
+                else
+                    row[i * std::size_t(k.bits) / 8] |= png_byte(v << (8 - k.bits - int(i * std::size_t(k.bits) % 8)));
             }
         }
         pointers.push_back(row.data());
@@ -139,8 +146,8 @@ void check_same_pixels(const Bytes& bytes, bool unassociated_alpha, int channels
     const std::size_t n = std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels);
     std::vector<T> a(n), b(n);
     REQUIRE(ours->read(channels, a.data()));
-    REQUIRE(theirs.in->read_image(0, 0, 0, channels, std::is_same_v<T, float> ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8,
-                                  b.data()));
+    REQUIRE(theirs.in->read_image(0, 0, 0, channels,
+                                  std::is_same_v<T, float> ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, b.data()));
     std::size_t differing = 0;
     for (std::size_t i = 0; i < n; ++i) differing += std::memcmp(&a[i], &b[i], sizeof(T)) != 0;
     CHECK(differing == 0);
@@ -157,7 +164,8 @@ public:
         return room;
     }
     std::size_t read_at(void* data, std::size_t size, std::int64_t offset) override {
-        const std::size_t n = std::size_t(offset) < bytes.size() ? std::min(size, bytes.size() - std::size_t(offset)) : 0;
+        const std::size_t n =
+            std::size_t(offset) < bytes.size() ? std::min(size, bytes.size() - std::size_t(offset)) : 0;
         std::memcpy(data, bytes.data() + offset, n);
         return n;
     }
@@ -166,7 +174,8 @@ public:
     std::size_t limit = std::size_t(-1);  // writes past it fail, as on a full disk
 };
 
-Bytes encode(image_library::Encoder& encoder, const image_library::EncoderSpec& spec, const std::vector<std::uint8_t>& pixels) {
+Bytes encode(image_library::Encoder& encoder, const image_library::EncoderSpec& spec,
+             const std::vector<std::uint8_t>& pixels) {
     MemorySink sink;
     REQUIRE(encoder.open("test.png", sink, spec));
     const std::size_t row = std::size_t(spec.width) * std::size_t(spec.channels);
@@ -182,8 +191,10 @@ Bytes encode(image_library::Encoder& encoder, const image_library::EncoderSpec& 
 
 TEST_CASE("libpng decodes every kind of PNG to OpenImageIO's channels and bits", "[images][png]") {
     std::vector<PngKind> kinds;
-    for (int bits : {1, 2, 4, 8, 16}) kinds.push_back({"gray " + std::to_string(bits) + "-bit", PNG_COLOR_TYPE_GRAY, bits});
-    for (int bits : {1, 2, 4, 8}) kinds.push_back({"palette " + std::to_string(bits) + "-bit", PNG_COLOR_TYPE_PALETTE, bits});
+    for (int bits : {1, 2, 4, 8, 16})
+        kinds.push_back({"gray " + std::to_string(bits) + "-bit", PNG_COLOR_TYPE_GRAY, bits});
+    for (int bits : {1, 2, 4, 8})
+        kinds.push_back({"palette " + std::to_string(bits) + "-bit", PNG_COLOR_TYPE_PALETTE, bits});
     for (int bits : {8, 16}) {
         const std::string b = bits == 8 ? " 8-bit" : " 16-bit";
         kinds.push_back({"gray+alpha" + b, PNG_COLOR_TYPE_GRAY_ALPHA, bits});
@@ -202,7 +213,8 @@ TEST_CASE("libpng decodes every kind of PNG to OpenImageIO's channels and bits",
     kinds.push_back({"palette with tRNS 2-bit, interlaced", PNG_COLOR_TYPE_PALETTE, 2, 61, 37, true, true});
     kinds.push_back({"gray 4-bit, interlaced", PNG_COLOR_TYPE_GRAY, 4, 61, 37, true});
     kinds.push_back({"every 16-bit gray value", PNG_COLOR_TYPE_GRAY, 16, 256, 256, false, false, 0.0, false, true});
-    kinds.push_back({"every 8-bit gray and alpha pair", PNG_COLOR_TYPE_GRAY_ALPHA, 8, 256, 256, false, false, 0.0, false, true});
+    kinds.push_back(
+        {"every 8-bit gray and alpha pair", PNG_COLOR_TYPE_GRAY_ALPHA, 8, 256, 256, false, false, 0.0, false, true});
     kinds.push_back({"one pixel", PNG_COLOR_TYPE_RGBA, 8, 1, 1});
     for (const PngKind& k : kinds) {
         const Bytes bytes = make_png(k);
@@ -241,7 +253,8 @@ TEST_CASE("libpng writes the pixels and text OpenImageIO's PNG writer does", "[i
     }
 }
 
-TEST_CASE("a damaged PNG is refused with a message naming it, and a failed write is reported", "[images][png][hostile]") {
+TEST_CASE("a damaged PNG is refused with a message naming it, and a failed write is reported",
+          "[images][png][hostile]") {
     const Bytes whole = make_png({"RGB", PNG_COLOR_TYPE_RGB, 8, 19, 11});
     // Every truncation, and every byte of the file flipped: refused or decoded, never a crash
     // (libpng's errors jump out of its reader), and a refusal names the file.
@@ -255,7 +268,8 @@ TEST_CASE("a damaged PNG is refused with a message naming it, and a failed write
             CHECK_THAT(e.what(), Catch::StartsWith("damaged.png: "));
         }
     };
-    for (std::size_t size = 0; size < whole.size(); ++size) decode(Bytes(whole.begin(), whole.begin() + std::ptrdiff_t(size)));
+    for (std::size_t size = 0; size < whole.size(); ++size)
+        decode(Bytes(whole.begin(), whole.begin() + std::ptrdiff_t(size)));
     CHECK(refused >= whole.size() - 12);  // all but a file cut in its IEND chunk
     for (std::size_t i = 0; i < whole.size(); ++i) {
         Bytes flipped = whole;
@@ -274,7 +288,8 @@ TEST_CASE("a damaged PNG is refused with a message naming it, and a failed write
     sink.limit = 100;
     const auto encoder = image_library::create_png();
     bool written = encoder->open("full.png", sink, spec);
-    for (int y = 0; written && y < 64; ++y) written = encoder->write_rows(y, y + 1, false, pixels.data() + std::size_t(y) * 64 * 3);
+    for (int y = 0; written && y < 64; ++y)
+        written = encoder->write_rows(y, y + 1, false, pixels.data() + std::size_t(y) * 64 * 3);
     written = written && encoder->close();
     CHECK_FALSE(written);
     CHECK_THAT(encoder->error(), Catch::Contains("write"));
