@@ -99,8 +99,10 @@ std::string texture_extension(const ImageSource& source) {
     if (source.kind == ImageSource::Kind::File) return lowercase_extension(source.file);
     const std::string& mime = source.mime_type;
     const std::vector<std::uint8_t>& bytes = source.bytes;
-    const bool png = mime == "image/png" || (mime.empty() && bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P');
-    const bool jpeg = mime == "image/jpeg" || (mime.empty() && bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8);
+    const bool png =
+        mime == "image/png" || (mime.empty() && bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P');
+    const bool jpeg =
+        mime == "image/jpeg" || (mime.empty() && bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8);
     return png ? ".png" : jpeg ? ".jpg" : "";
 }
 
@@ -285,7 +287,8 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
     s.is_float = is_float_format(path);
     if (width <= 0 || height <= 0) throw ImageError(path.string() + ": cannot write an image of " + size_text(width, height));
     std::string error;
-    s.out = needs_image_library(path) ? image_library::library().create(path.string(), error) : image_library::create_png();
+    s.out = needs_image_library(path) ? image_library::library().create(path.string(), error)
+                                      : image_library::create_png();
     if (!s.out) throw ImageError(path.string() + ": " + error);
     try {
         s.file = std::make_unique<TemporaryFile>(path);
@@ -305,14 +308,20 @@ ImageWriter::~ImageWriter() = default;
 std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha) {
     const std::uint64_t channels = alpha ? 4u : 3u, values = std::uint64_t(width) * std::uint64_t(rows) * channels;
     std::uint64_t encoder = 0;
-    if (lowercase_extension(path) == ".exr") {
+    const std::string ext = lowercase_extension(path);
+    if (ext == ".png") {
+        // libpng's row and the row above (for the Up filter), and the encoder's copy of the row
+        // it divides by alpha; zlib's state, 256 KiB whatever the size, is in the writer's own
+        // state (kRenderOverheadBytes).
+        encoder = 3 * (std::uint64_t(width) * channels + 1);
+    } else if (ext == ".exr") {
         // OpenEXR keeps two line buffers per thread of its pool (one thread per core), each of 16
         // rows of the file's pixels, and its ZIP compressor two more of that size for each:
         // 8192x64 float RGB took 13.3 MiB more than as TIFF.
         const std::uint64_t buffers = 2 * std::max(1u, std::thread::hardware_concurrency());
         encoder = buffers * 3 * 16 * std::uint64_t(width) * channels * sizeof(float);
     }
-    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1)) + encoder;
+    return values * (is_float_format(path) ? sizeof(float) : 1) + encoder;
 }
 
 void ImageWriter::write_rows(int rows, const std::uint8_t* rgba) {
@@ -345,18 +354,22 @@ void ImageWriter::write_rows(int rows, const float* rgba) {
     if (rows <= 0 || s.next_row + rows > s.height) throw std::logic_error("ImageWriter: more rows than the image has");
     const std::size_t n = std::size_t(s.width) * std::size_t(rows);
     const std::size_t nc = std::size_t(s.channels);
-    s.floats.resize(n * nc);
-    for (std::size_t p = 0; p < n; ++p) {
-        for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = rgba[p * 4 + c];
-    }
-    const void* pixels = s.floats.data();
-    if (!s.is_float) {
+    const void* pixels = nullptr;
+    if (s.is_float) {
+        s.floats.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = rgba[p * 4 + c];
+        }
+        pixels = s.floats.data();
+    } else {
         // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
-        s.bytes.resize(s.floats.size());
-        for (std::size_t i = 0; i < s.bytes.size(); ++i) {
-            float c = s.floats[i];
-            c = std::isnan(c) ? 0.0f : std::min(std::max(c, 0.0f), 1.0f);
-            s.bytes[i] = std::uint8_t(std::rint(c * 255.0f));  // as lrint, but inlined (it sets no errno)
+        s.bytes.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) {
+                float v = rgba[p * 4 + c];
+                v = std::isnan(v) ? 0.0f : std::min(std::max(v, 0.0f), 1.0f);
+                s.bytes[p * nc + c] = std::uint8_t(std::rint(v * 255.0f));  // as lrint, but inlined (it sets no errno)
+            }
         }
         pixels = s.bytes.data();
     }
