@@ -171,12 +171,12 @@ int cmd_bake(BakeArgs a) {
         }
     }
     if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
-    load_image_library();  // the bake's memory is measured from here
-    reset_peak_resident();
-    const std::uint64_t resident_before = resident_bytes();
+    reset_peak_resident();  // the bake's memory is measured from here; its maps are PNG
+    std::uint64_t resident_before = resident_bytes();
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
+    resident_before += load_image_library_for(scene);
     const std::string stem = output.stem().string();
     const std::string bin = stem + ".bin", color_file = stem + "-color.png", height_file = stem + "-height.png",
                       normal_file = stem + "-normal.png";
