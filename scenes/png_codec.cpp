@@ -296,15 +296,16 @@ public:
         width_ = std::size_t(spec.width), height_ = spec.height, channels_ = spec.channels;
         // Each attribute a tEXt chunk in order, a later one of the same name (in any case)
         // replacing the earlier, and none without a name: as OpenImageIO's attributes.
-        for (const auto& [key, value] : spec.attributes) {
+        for (const auto& attribute : spec.attributes) {
+            const std::string& key = attribute.first;
             if (key.empty()) continue;
             const auto same = std::find_if(text_.begin(), text_.end(), [&](const auto& t) {
                 return ::strcasecmp(t.first.c_str(), key.c_str()) == 0;
             });
             if (same != text_.end())
-                *same = {key, value};
+                *same = attribute;
             else
-                text_.emplace_back(key, value);
+                text_.push_back(attribute);
         }
         std::vector<png_text> chunks(text_.size());
         for (std::size_t i = 0; i < text_.size(); ++i) {
