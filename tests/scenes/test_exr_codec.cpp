@@ -154,14 +154,16 @@ Bytes make_exr(const ExrKind& k) {
     return Bytes(bytes.begin(), bytes.end());
 }
 
-// OpenImageIO's reader on OpenEXR bytes in memory, as openimageio_library.cpp opens one.
+// OpenImageIO's reader on OpenEXR bytes in memory, as openimageio_library.cpp opens one (a
+// texture's with its alpha as stored, which changes nothing for OpenEXR).
 struct OiioExr {
     OIIO::Filesystem::IOMemReader memory;
     std::unique_ptr<OIIO::ImageInput> in;
-    explicit OiioExr(const Bytes& bytes) : memory(bytes.data(), bytes.size()) {
+    explicit OiioExr(const Bytes& bytes, bool unassociated_alpha = false) : memory(bytes.data(), bytes.size()) {
         in = OIIO::ImageInput::create("exr", false);
         REQUIRE(in);
         OIIO::ImageSpec config, spec;
+        if (unassociated_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
         void* proxy = &memory;
         config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
         REQUIRE(in->set_ioproxy(&memory));
@@ -170,12 +172,12 @@ struct OiioExr {
 };
 
 template <class T>
-void check_same_pixels(const Bytes& bytes, int channels) {
+void check_same_pixels(const Bytes& bytes, int channels, bool unassociated_alpha = false) {
     std::string error;
     const auto ours = image_library::open_exr(bytes, "test.exr", error);
     INFO(error);
     REQUIRE(ours);
-    OiioExr theirs(bytes);
+    OiioExr theirs(bytes, unassociated_alpha);
     const OIIO::ImageSpec& spec = theirs.in->spec();
     const image_library::ImageShape shape = ours->shape();
     CHECK(shape.width == spec.width);
@@ -275,6 +277,7 @@ TEST_CASE("OpenEXR decodes every kind of OpenEXR file to OpenImageIO's channels 
         check_same_pixels<std::uint8_t>(bytes, 0);
         check_same_pixels<float>(bytes, 1);  // the first channels only
         check_same_pixels<std::uint8_t>(bytes, std::min(4, int(k.channels.size())));
+        check_same_pixels<std::uint8_t>(bytes, std::min(4, int(k.channels.size())), /*unassociated_alpha=*/true);
     }
 }
 
