@@ -14,6 +14,8 @@
 #include <GL/osmesa.h>
 #elif defined(QUADSHADE_PROBE_LIBPNG)
 #include <png.h>
+#elif defined(QUADSHADE_PROBE_OPENEXR)
+#include <ImfThreading.h>
 #endif
 
 int main() {
@@ -28,6 +30,8 @@ int main() {
     linked = OSMesaGetCurrentContext() == nullptr;
 #elif defined(QUADSHADE_PROBE_LIBPNG)
     linked = png_access_version_number() > 0;
+#elif defined(QUADSHADE_PROBE_OPENEXR)
+    linked = Imf::globalThreadCount() >= 0;
 #endif
     return linked ? 0 : 1;
 }

@@ -112,6 +112,20 @@ int main(int argc, char** argv) {
                      {quadshade, "render", plane, "--size", "64x64", "-o", (fs::path(out) / "plane-64.png").string()},
                      true, "<= 60 ms",
                      [](double wall, double, double) { return wall <= 60.0; }});
+    calls.push_back({"`quadshade render` Table 1.1 plane, 64x64, OpenEXR",
+                     {quadshade, "render", plane, "--size", "64x64", "-o", (fs::path(out) / "plane-64.exr").string()},
+                     true, "", nullptr});
+    // One reference image, as `quadshade check` has each of its cases rendered: OSMesa's frame,
+    // written as OpenEXR. Its frame time is not on a summary line of quadshade's.
+    const fs::path reference = fs::path(quadshade).parent_path() / "quadshade-reference";
+    const fs::path glsl = QUADSHADE_GLSL_DIR;  // the shaders' GLSL, exported by the build
+    if (fs::exists(reference) && fs::exists(glsl)) {
+        calls.push_back({"`quadshade-reference` Table 1.1 plane, checker, 64x64, OpenEXR",
+                         {reference.string(), plane, "--shader", "checker", "--size", "64x64", "--glsl",
+                          glsl.string(), "-o",
+                          (fs::path(out) / "reference-64.exr").string()},
+                         false, "", nullptr});
+    }
     calls.push_back({"`quadshade render` Figure 1.1, 1264x400, PNG",
                      {quadshade, "render", (assets / "figure-1.1.gltf").string(), "-o",
                       (fs::path(out) / "figure-1.1.png").string()},
@@ -125,7 +139,7 @@ int main(int argc, char** argv) {
                      {quadshade, "render", (assets / "figure-1.1.gltf").string(), "--backend", "raycast", "-o",
                       (fs::path(out) / "figure-1.1-raycast.png").string()},
                      true, "", nullptr});
-    for (const char* library : {"none", "tbb", "libpng", "embree", "osmesa", "openimageio"}) {
+    for (const char* library : {"none", "tbb", "libpng", "openexr", "embree", "osmesa", "openimageio"}) {
         const fs::path probe = bin / (std::string("quadshade-load-probe-") + library);
         if (!fs::exists(probe)) continue;  // not built: that library was not found
         calls.push_back({std::string("a program linking ") +

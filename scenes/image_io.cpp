@@ -1,5 +1,5 @@
-// Image files: every decision about them is here; libpng's calls are in png_codec.cpp and
-// OpenImageIO's in openimageio_library.cpp, both behind image_library.h.
+// Image files: every decision about them is here; libpng's calls are in png_codec.cpp, OpenEXR's
+// in exr_codec.cpp and OpenImageIO's in openimageio_library.cpp, all behind image_library.h.
 #include "scenes/image_io.h"
 
 #include <unistd.h>
@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "modules/module_loader.h"
+#include "scenes/exr_codec.h"
 #include "scenes/image_checks.h"
 #include "scenes/image_library.h"
 #include "scenes/limits.h"
@@ -89,7 +90,10 @@ private:
 
 void load_image_library() { image_library::library(); }
 
-bool needs_image_library(const std::filesystem::path& file) { return lowercase_extension(file) != ".png"; }
+bool needs_image_library(const std::filesystem::path& file) {
+    const std::string ext = lowercase_extension(file);
+    return ext != ".png" && ext != ".exr";
+}
 
 namespace {
 
@@ -111,7 +115,7 @@ std::string texture_extension(const ImageSource& source) {
 bool needs_image_library(const Scene& scene) {
     return std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) {
         const std::string ext = texture_extension(t.image);
-        return !ext.empty() && ext != ".png";
+        return !ext.empty() && ext != ".png" && ext != ".exr";
     });
 }
 
@@ -150,8 +154,10 @@ std::unique_ptr<image_library::Decoder> open_image(std::span<const unsigned char
         throw ImageError(name + ": cannot read image: " + problem);
     }
     std::string error;
-    auto in = ext == ".png" ? image_library::open_png(bytes, unassociated_alpha, error)
-                            : image_library::library().open(bytes, name, ext.substr(1), unassociated_alpha, error);
+    // OpenEXR's alpha is associated whatever `unassociated_alpha` asks, as OpenImageIO reads it.
+    auto in = ext == ".png"   ? image_library::open_png(bytes, unassociated_alpha, error)
+              : ext == ".exr" ? image_library::open_exr(bytes, name, error)
+                              : image_library::library().open(bytes, name, ext.substr(1), unassociated_alpha, error);
     if (!in) throw ImageError(name + ": cannot read image: " + error);
     const image_library::ImageShape spec = in->shape();
     // The header's size, checked before a pixel is decoded: a small file can declare a huge image.
@@ -287,8 +293,10 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
     s.is_float = is_float_format(path);
     if (width <= 0 || height <= 0) throw ImageError(path.string() + ": cannot write an image of " + size_text(width, height));
     std::string error;
-    s.out = needs_image_library(path) ? image_library::library().create(path.string(), error)
-                                      : image_library::create_png();
+    const std::string ext = lowercase_extension(path);
+    s.out = ext == ".png"   ? image_library::create_png()
+            : ext == ".exr" ? image_library::create_exr()
+                            : image_library::library().create(path.string(), error);
     if (!s.out) throw ImageError(path.string() + ": " + error);
     try {
         s.file = std::make_unique<TemporaryFile>(path);
@@ -315,9 +323,9 @@ std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, i
         // state (kRenderOverheadBytes).
         encoder = 3 * (std::uint64_t(width) * channels + 1);
     } else if (ext == ".exr") {
-        // OpenEXR keeps two line buffers per thread of its pool (one thread per core), each of 16
-        // rows of the file's pixels, and its ZIP compressor two more of that size for each:
-        // 8192x64 float RGB took 13.3 MiB more than as TIFF.
+        // OpenEXR keeps two line buffers per thread of its pool (at most one thread per core,
+        // exr_codec.cpp), each of 16 rows of the file's pixels, and its ZIP compressor two more of
+        // that size for each: 8192x64 float RGB took 13.3 MiB more than as TIFF on a thread per core.
         const std::uint64_t buffers = 2 * std::max(1u, std::thread::hardware_concurrency());
         encoder = buffers * 3 * 16 * std::uint64_t(width) * channels * sizeof(float);
     }

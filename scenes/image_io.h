@@ -50,7 +50,7 @@ struct ImageReadLimits {
 void load_image_library();
 
 // Whether reading or writing `file` (its extension names the format) needs OpenImageIO: every
-// format but PNG, which libpng (linked into quadshade) decodes and encodes.
+// format but PNG and OpenEXR, which libpng and OpenEXR (linked into quadshade) decode and encode.
 bool needs_image_library(const std::filesystem::path& file);
 // Whether decoding one of `scene`'s textures does.
 bool needs_image_library(const Scene& scene);

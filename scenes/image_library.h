@@ -3,7 +3,8 @@
 // into bytes that quadshade writes (and checks) itself, and the comparison, heat map and text
 // drawing of `quadshade compare` and `gallery`. image_io.cpp keeps every decision (which formats,
 // which library, which sizes, the RGBA layout, GL's unorm conversion, where the bytes go). PNG's
-// Decoder and Encoder are libpng's (png_codec.h, linked); the other formats and the rest are
+// Decoder and Encoder are libpng's (png_codec.h), OpenEXR's the OpenEXR library's (exr_codec.h),
+// both linked; the other formats and the rest are
 // OpenImageIO's: openimageio_library.cpp only calls it, in a module of its own
 // (modules/module_loader.h) loaded by the first call of image_library::library(). Nothing here
 // throws across the module's edge: failures come back as messages.
