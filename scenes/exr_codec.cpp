@@ -260,20 +260,7 @@ public:
             Imf::Header header(spec.width, spec.height);  // ZIP compression, rows top-down, as OpenImageIO's
             for (int c = 0; c < spec.channels; ++c)
                 header.channels().insert(kChannelNames[spec.channels - 1][c], Imf::FLOAT);
-            // Each attribute a string in the header, a later one of the same name (in any case)
-            // replacing the earlier, none without a name: as OpenImageIO's attributes.
-            std::vector<std::pair<std::string, std::string>> attributes;
-            for (const auto& [key, value] : spec.attributes) {
-                if (key.empty()) continue;
-                const auto same = std::find_if(attributes.begin(), attributes.end(), [&](const auto& a) {
-                    return ::strcasecmp(a.first.c_str(), key.c_str()) == 0;
-                });
-                if (same != attributes.end())
-                    *same = {key, value};
-                else
-                    attributes.emplace_back(key, value);
-            }
-            for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
+            for (const auto& [key, value] : spec.attributes) header.insert(key, Imf::StringAttribute(value));
             stream_ = std::make_unique<SinkStream>(sink, file_name);
             file_ = std::make_unique<Imf::OutputFile>(*stream_, header, threads_for(spec.height));
         } catch (const std::exception& e) {

@@ -2,6 +2,7 @@
 // in exr_codec.cpp and OpenImageIO's in openimageio_library.cpp, all behind image_library.h.
 #include "scenes/image_io.h"
 
+#include <strings.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -272,6 +273,29 @@ bool is_float_format(const std::filesystem::path& path) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".hdr" || ext == ".pfm";
 }
 
+namespace {
+
+// The attributes a file is written with: the caller's and the program's name, each once. A later
+// one of the same name (in any case) replaces the earlier in its place, and one without a name is
+// dropped, as OpenImageIO keeps its attributes; every encoder then writes them in order.
+Metadata file_attributes(const Metadata& metadata) {
+    Metadata all = metadata, out;
+    all.emplace_back("Software", "quadshade");
+    for (const auto& attribute : all) {
+        if (attribute.first.empty()) continue;
+        const auto same = std::find_if(out.begin(), out.end(), [&](const auto& kept) {
+            return ::strcasecmp(kept.first.c_str(), attribute.first.c_str()) == 0;
+        });
+        if (same != out.end())
+            *same = attribute;
+        else
+            out.push_back(attribute);
+    }
+    return out;
+}
+
+}  // namespace
+
 struct ImageWriter::State {
     std::filesystem::path path;
     int width = 0, height = 0, channels = 0, next_row = 0;
@@ -304,8 +328,7 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
         throw ImageError(std::string("cannot write image: ") + e.what());
     }
     s.sink = std::make_unique<TemporaryFileSink>(*s.file);
-    image_library::EncoderSpec spec{width, height, s.channels, s.is_float, metadata};
-    spec.attributes.emplace_back("Software", "quadshade");
+    const image_library::EncoderSpec spec{width, height, s.channels, s.is_float, file_attributes(metadata)};
     if (!s.out->open(s.file->path().string(), *s.sink, spec)) {
         throw ImageError(path.string() + ": cannot write image (" + s.write_failure() + ")");
     }

@@ -5,7 +5,6 @@
 #include "scenes/png_codec.h"
 
 #include <png.h>
-#include <strings.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -294,19 +293,7 @@ public:
             return fail("PNG holds 1 to 4 channels, not " + std::to_string(spec.channels));
         if (spec.width <= 0 || spec.height <= 0) return fail("PNG cannot hold an image of no pixels");
         width_ = std::size_t(spec.width), height_ = spec.height, channels_ = spec.channels;
-        // Each attribute a tEXt chunk in order, a later one of the same name (in any case)
-        // replacing the earlier, and none without a name: as OpenImageIO's attributes.
-        for (const auto& attribute : spec.attributes) {
-            const std::string& key = attribute.first;
-            if (key.empty()) continue;
-            const auto same = std::find_if(text_.begin(), text_.end(), [&](const auto& t) {
-                return ::strcasecmp(t.first.c_str(), key.c_str()) == 0;
-            });
-            if (same != text_.end())
-                *same = attribute;
-            else
-                text_.push_back(attribute);
-        }
+        text_ = spec.attributes;  // each a tEXt chunk, in order
         std::vector<png_text> chunks(text_.size());
         for (std::size_t i = 0; i < text_.size(); ++i) {
             chunks[i] = png_text{};

@@ -8,14 +8,19 @@
 #include <OpenImageIO/imageio.h>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "scenes/image_io.h"
 #include "scenes/image_library.h"
 #include "scenes/png_codec.h"
+#include "tests/test_paths.h"
 
 namespace qs {
 
@@ -230,8 +235,7 @@ TEST_CASE("libpng decodes every kind of PNG to OpenImageIO's channels and bits",
 TEST_CASE("libpng writes the pixels and text OpenImageIO's PNG writer does", "[images][png]") {
     for (int channels : {3, 4}) {
         INFO(channels << " channels");
-        image_library::EncoderSpec spec{67, 23, channels, false, {{"quadshade:scene", "a.gltf"}, {"Software", "x"}}};
-        spec.attributes.emplace_back("software", "quadshade");  // replaces the other, as in OpenImageIO
+        image_library::EncoderSpec spec{67, 23, channels, false, {{"quadshade:scene", "a.gltf"}, {"Software", "quadshade"}}};
         std::vector<std::uint8_t> pixels(std::size_t(spec.width * spec.height * channels));
         for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = std::uint8_t(i * 7 % 256 < 16 ? 0 : i * 13 % 256);
         const Bytes ours = encode(*image_library::create_png(), spec, pixels);
@@ -246,11 +250,28 @@ TEST_CASE("libpng writes the pixels and text OpenImageIO's PNG writer does", "[i
         REQUIRE(b.in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pb.data()));
         CHECK(pa == pb);
         if (channels == 3) CHECK(pa == pixels);
-        for (const char* key : {"quadshade:scene", "Software", "software"}) {
+        for (const char* key : {"quadshade:scene", "Software"}) {
             CHECK(a.in->spec().get_string_attribute(key) == b.in->spec().get_string_attribute(key));
         }
         CHECK(a.in->spec().get_string_attribute("Software") == "quadshade");
     }
+}
+
+TEST_CASE("an image file holds each attribute once, a later one of the same name in any case replacing the earlier",
+          "[images][png]") {
+    const std::filesystem::path file = test::temp_dir("png-attributes") / "a.png";
+    const Image image{2, 1, std::vector<float>(8, 0.5f)};
+    write_image(file, image, {{"software", "x"}, {"quadshade:scene", "a.gltf"}, {"", "nameless"}, {"QUADSHADE:Scene", "b"}});
+    std::ifstream in(file, std::ios::binary);
+    const Bytes bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const OiioPng png(bytes, true);
+    std::vector<std::string> names;
+    for (const OIIO::ParamValue& p : png.in->spec().extra_attribs) names.push_back(p.name().string());
+    CHECK(std::count(names.begin(), names.end(), "Software") == 1);
+    CHECK(std::count(names.begin(), names.end(), "software") == 0);
+    CHECK(png.in->spec().get_string_attribute("Software") == "quadshade");  // the program's name, last
+    CHECK(png.in->spec().get_string_attribute("quadshade:scene") == "b");
+    CHECK(std::count(names.begin(), names.end(), "") == 0);
 }
 
 TEST_CASE("a damaged PNG is refused with a message naming it, and a failed write is reported",
