@@ -284,7 +284,8 @@ TEST_CASE("OpenEXR decodes every kind of OpenEXR file to OpenImageIO's channels 
 TEST_CASE("OpenEXR writes the pixels, channels and attributes OpenImageIO's OpenEXR writer does", "[images][exr]") {
     for (int channels : {1, 2, 3, 4}) {
         INFO(channels << " channels");
-        image_library::EncoderSpec spec{67, 23, channels, true, {{"quadshade:scene", "a.gltf"}, {"Software", "quadshade"}}};
+        const Metadata attributes{{"quadshade:scene", "a.gltf"}, {"Software", "quadshade"}};
+        image_library::EncoderSpec spec{67, 23, channels, true, attributes};
         std::vector<float> pixels(std::size_t(spec.width * spec.height * channels));
         for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % 301) / 255.0f - 0.1f;
         pixels[5] = std::numeric_limits<float>::quiet_NaN();

@@ -235,7 +235,8 @@ TEST_CASE("libpng decodes every kind of PNG to OpenImageIO's channels and bits",
 TEST_CASE("libpng writes the pixels and text OpenImageIO's PNG writer does", "[images][png]") {
     for (int channels : {3, 4}) {
         INFO(channels << " channels");
-        image_library::EncoderSpec spec{67, 23, channels, false, {{"quadshade:scene", "a.gltf"}, {"Software", "quadshade"}}};
+        const Metadata attributes{{"quadshade:scene", "a.gltf"}, {"Software", "quadshade"}};
+        image_library::EncoderSpec spec{67, 23, channels, false, attributes};
         std::vector<std::uint8_t> pixels(std::size_t(spec.width * spec.height * channels));
         for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = std::uint8_t(i * 7 % 256 < 16 ? 0 : i * 13 % 256);
         const Bytes ours = encode(*image_library::create_png(), spec, pixels);
@@ -261,7 +262,8 @@ TEST_CASE("an image file holds each attribute once, a later one of the same name
           "[images][png]") {
     const std::filesystem::path file = test::temp_dir("png-attributes") / "a.png";
     const Image image{2, 1, std::vector<float>(8, 0.5f)};
-    write_image(file, image, {{"software", "x"}, {"quadshade:scene", "a.gltf"}, {"", "nameless"}, {"QUADSHADE:Scene", "b"}});
+    write_image(file, image,
+                {{"software", "x"}, {"quadshade:scene", "a.gltf"}, {"", "nameless"}, {"QUADSHADE:Scene", "b"}});
     std::ifstream in(file, std::ios::binary);
     const Bytes bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     const OiioPng png(bytes, true);
