@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "apps/command_line.h"
-#include "apps/frame_pattern.h"
+#include "render/frame_pattern.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/undefined_mask.h"

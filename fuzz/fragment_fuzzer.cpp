@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "apps/golden_suite.h"
+#include "regression/golden_suite.h"
 #include "fuzz/fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

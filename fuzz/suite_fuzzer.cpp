@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "apps/golden_suite.h"
+#include "regression/golden_suite.h"
 #include "fuzz/fuzz_check.h"
 
 namespace {

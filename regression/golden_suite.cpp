@@ -1,4 +1,4 @@
-#include "apps/golden_suite.h"
+#include "regression/golden_suite.h"
 
 #include <algorithm>
 #include <atomic>

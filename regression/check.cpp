@@ -1,4 +1,4 @@
-#include "apps/check.h"
+#include "regression/check.h"
 
 #include <algorithm>
 #include <atomic>
@@ -318,7 +318,7 @@ int run_check(const CheckRequest& request) {
         checker.scenes.push_back(load_scene(checker.files[s]));
         for (const fs::path& input : checker.scenes.back().inputs) checker.inputs.add(input);
         for (const Program* program : programs) {
-            // The default set's texture scenes (apps/texture_scenes.h) test sampling: they are for
+            // The default set's texture scenes (generators/texture_scenes.h) test sampling: they are for
             // the shaders that sample a texture; the others are checked on the geometry scenes.
             const bool texture_scene = request.scenes.empty() && checker.files[s].stem().string().starts_with("texture-");
             if (!binds_samplers(checker.scenes.back(), program->info()) ||

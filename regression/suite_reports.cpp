@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/golden_suite.h"
+#include "regression/golden_suite.h"
 #include "scenes/scene.h"
 #include "scenes/scene_files.h"
 
