@@ -23,6 +23,7 @@
 #include "apps/translate_command.h"
 #include "regression/check.h"
 #include "regression/golden_suite.h"
+#include "regression/suite_reports.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"
