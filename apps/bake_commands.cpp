@@ -302,12 +302,12 @@ int cmd_bake(BakeArgs a) {
     const BakeMaps maps = maps_asked(a);
     const HeightField* field = height_field_for(a.shader, maps);
     if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
-    load_image_library();  // the bake's memory is measured from here
-    reset_peak_resident();
-    const std::uint64_t resident_before = resident_bytes();
+    reset_peak_resident();  // the bake's memory is measured from here; its maps are PNG
+    std::uint64_t resident_before = resident_bytes();
     SceneLoadOptions load;
     load.paths.allow_outside = a.allow_outside;
     Scene scene = load_scene(a.mesh, load);
+    resident_before += load_image_library_for(scene);
     const BakeFiles files = bake_files(output, scene, maps);
     const Program* program = find_program(a.shader);
     if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");

@@ -6,6 +6,7 @@
 #include "interpreter/glsl_program.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
+#include "scenes/image_io.h"
 #include "scenes/output_file.h"
 
 namespace qs::app {
@@ -89,6 +90,14 @@ std::uint64_t memory_limit(const std::string& option) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--memory-limit: ") + e.what());
     }
+}
+
+std::uint64_t load_image_library_for(const Scene& scene) {
+    if (!needs_image_library(scene)) return 0;
+    const std::uint64_t before = resident_bytes();
+    load_image_library();
+    const std::uint64_t after = resident_bytes();
+    return after > before ? after - before : 0;
 }
 
 const char* precision_name(Precision p) { return p == Precision::Double ? "double" : "float"; }

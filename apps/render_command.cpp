@@ -335,12 +335,15 @@ int cmd_render(RenderArgs& a) {
     const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, req.shader_override, {shade_request(req)});
     // The libraries first: the render's memory is measured from here, and its plan is checked
     // against what is left.
-    load_image_library();
+    if (needs_image_library(a.output) || (!a.mask_output.empty() && needs_image_library(a.mask_output))) {
+        load_image_library();
+    }
     load_libraries(req);
     const std::uint64_t limit = memory_limit(a.memory_limit);
     reset_peak_resident();
-    const std::uint64_t resident_before = resident_bytes();
+    std::uint64_t resident_before = resident_bytes();
     Scene scene = load_scene(a.scene, a.load);
+    resident_before += load_image_library_for(scene);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
     check_programs(scene, req.shader_override, glsl_way(a.compile_glsl), {shade_request(req)});  // fail before any work
     for (int f = first; f <= last; ++f) {

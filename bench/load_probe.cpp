@@ -12,6 +12,8 @@
 #include <tbb/task_arena.h>
 #elif defined(QUADSHADE_PROBE_OSMESA)
 #include <GL/osmesa.h>
+#elif defined(QUADSHADE_PROBE_LIBPNG)
+#include <png.h>
 #endif
 
 int main() {
@@ -24,6 +26,8 @@ int main() {
     linked = tbb::this_task_arena::max_concurrency() > 0;
 #elif defined(QUADSHADE_PROBE_OSMESA)
     linked = OSMesaGetCurrentContext() == nullptr;
+#elif defined(QUADSHADE_PROBE_LIBPNG)
+    linked = png_access_version_number() > 0;
 #endif
     return linked ? 0 : 1;
 }

@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
                      {quadshade, "render", (assets / "figure-1.1.gltf").string(), "--backend", "raycast", "-o",
                       (fs::path(out) / "figure-1.1-raycast.png").string()},
                      true, "", nullptr});
-    for (const char* library : {"none", "tbb", "embree", "osmesa", "openimageio"}) {
+    for (const char* library : {"none", "tbb", "libpng", "embree", "osmesa", "openimageio"}) {
         const fs::path probe = bin / (std::string("quadshade-load-probe-") + library);
         if (!fs::exists(probe)) continue;  // not built: that library was not found
         calls.push_back({std::string("a program linking ") +

@@ -30,19 +30,11 @@ void limit_child_resources() {
     setrlimit(RLIMIT_CPU, &cpu);
 }
 
-// Runs in the child: the preprocessed size, or UINT64_MAX when glslang ran out of memory.
+// Runs in the child: the preprocessed size, or UINT64_MAX when glslang ran out of memory. A
+// preprocessing error is left to the parse that follows, which reports it with the rest.
 std::uint64_t preprocessed_size(const std::string& file, const std::string& text, bool fragment) {
     try {
-        glslang::TShader shader(fragment ? EShLangFragment : EShLangVertex);
-        const char* strings = text.c_str();
-        const int length = int(text.size());
-        const char* name = file.c_str();
-        shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
-        std::string out;
-        glslang::TShader::ForbidIncluder no_includes;
-        // A preprocessing error is left to the parse that follows, which reports it with the rest.
-        shader.preprocess(GetDefaultResources(), 110, ENoProfile, false, false, EShMsgDefault, &out, no_includes);
-        return out.size();
+        return preprocess(file, text, fragment).text.size();
     } catch (...) {
         return UINT64_MAX;
     }
@@ -85,6 +77,20 @@ void check_macro_expansion(const std::string& file, const std::string& text, boo
     if (size > kMaxPreprocessedBytes) {
         throw GlslError(file + ": error: its macros expand to " + std::to_string(size) + " bytes of text, past what a shader may take here " + bounds);
     }
+}
+
+Preprocessed preprocess(const std::string& file, const std::string& text, bool fragment) {
+    glslang::TShader shader(fragment ? EShLangFragment : EShLangVertex);
+    const char* strings = text.c_str();
+    const int length = int(text.size());
+    const char* name = file.c_str();
+    shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
+    Preprocessed p;
+    glslang::TShader::ForbidIncluder no_includes;
+    const auto messages = EShMessages(EShMsgDefault | EShMsgEnhanced);
+    p.ok = shader.preprocess(GetDefaultResources(), 110, ENoProfile, false, false, messages, &p.text, no_includes);
+    if (!p.ok) p.log = std::string(shader.getInfoLog()) + shader.getInfoDebugLog();
+    return p;
 }
 
 }  // namespace qs::frontend

@@ -80,19 +80,12 @@ std::string reword(const std::string& log, std::vector<std::string>* warnings) {
 
 // `text` as glslang's preprocessor writes it: comments gone, macros expanded, lines kept.
 std::string preprocessed(const std::string& file, const std::string& text, EShLanguage stage) {
-    glslang::TShader shader(stage);
-    const char* strings = text.c_str();
-    const int length = int(text.size());
-    const char* name = file.c_str();
-    shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
-    std::string out;
-    glslang::TShader::ForbidIncluder no_includes;
-    const auto messages = EShMessages(EShMsgDefault | EShMsgEnhanced);
-    if (!shader.preprocess(GetDefaultResources(), 110, ENoProfile, false, false, messages, &out, no_includes)) {
-        const std::string errors = reword(std::string(shader.getInfoLog()) + shader.getInfoDebugLog(), nullptr);
+    Preprocessed p = preprocess(file, text, stage == EShLangFragment);
+    if (!p.ok) {
+        const std::string errors = reword(p.log, nullptr);
         throw GlslError(errors.empty() ? file + ": error: the shader does not preprocess" : errors);
     }
-    return out;
+    return std::move(p.text);
 }
 
 }  // namespace

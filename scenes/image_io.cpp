@@ -1,5 +1,5 @@
-// Image files: every decision about them is here; OpenImageIO's calls are in
-// openimageio_library.cpp, behind image_library.h.
+// Image files: every decision about them is here; libpng's calls are in png_codec.cpp and
+// OpenImageIO's in openimageio_library.cpp, both behind image_library.h.
 #include "scenes/image_io.h"
 
 #include <unistd.h>
@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <iterator>
 #include <memory>
 #include <thread>
@@ -15,6 +16,7 @@
 #include "scenes/image_checks.h"
 #include "scenes/image_library.h"
 #include "scenes/limits.h"
+#include "scenes/png_codec.h"
 #include "scenes/scene.h"
 #include "scenes/scene_files.h"
 #include "scenes/temporary_file.h"
@@ -60,7 +62,8 @@ public:
             const ssize_t n = ::pwrite(file_.fd(), static_cast<const char*>(buf) + done, size - done, offset + std::int64_t(done));
             if (n < 0 && errno == EINTR) continue;
             if (n <= 0) {
-                file_.note_write_error(n < 0 ? errno : ENOSPC);
+                if (!error_) error_ = n < 0 ? errno : ENOSPC;
+                file_.note_write_error(error_);
                 break;
             }
             done += std::size_t(n);
@@ -73,15 +76,44 @@ public:
         return n > 0 ? std::size_t(n) : 0;
     }
     std::int64_t size() const override { return end_; }
+    // Why the first write that failed did (errno), or 0.
+    int error() const { return error_; }
 
 private:
     TemporaryFile& file_;
     std::int64_t end_ = 0;
+    int error_ = 0;
 };
 
 }  // namespace
 
 void load_image_library() { image_library::library(); }
+
+bool needs_image_library(const std::filesystem::path& file) { return lowercase_extension(file) != ".png"; }
+
+namespace {
+
+// The format of a texture's image, as an extension: a file's own, embedded bytes' by their MIME
+// type (glTF's two), else by their signature; empty when neither PNG nor JPEG.
+std::string texture_extension(const ImageSource& source) {
+    if (source.kind == ImageSource::Kind::File) return lowercase_extension(source.file);
+    const std::string& mime = source.mime_type;
+    const std::vector<std::uint8_t>& bytes = source.bytes;
+    const bool png =
+        mime == "image/png" || (mime.empty() && bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P');
+    const bool jpeg =
+        mime == "image/jpeg" || (mime.empty() && bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8);
+    return png ? ".png" : jpeg ? ".jpg" : "";
+}
+
+}  // namespace
+
+bool needs_image_library(const Scene& scene) {
+    return std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) {
+        const std::string ext = texture_extension(t.image);
+        return !ext.empty() && ext != ".png";
+    });
+}
 
 std::uint64_t image_read_bytes(std::uint64_t width, std::uint64_t height) {
     // Up to four decoded float channels, then the RGBA copy.
@@ -118,7 +150,8 @@ std::unique_ptr<image_library::Decoder> open_image(std::span<const unsigned char
         throw ImageError(name + ": cannot read image: " + problem);
     }
     std::string error;
-    auto in = image_library::library().open(bytes, name, ext.substr(1), unassociated_alpha, error);
+    auto in = ext == ".png" ? image_library::open_png(bytes, unassociated_alpha, error)
+                            : image_library::library().open(bytes, name, ext.substr(1), unassociated_alpha, error);
     if (!in) throw ImageError(name + ": cannot read image: " + error);
     const image_library::ImageShape spec = in->shape();
     // The header's size, checked before a pixel is decoded: a small file can declare a huge image.
@@ -198,7 +231,7 @@ Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_byt
     limits.max_pixels = limits::kTextureTexels;
     std::vector<unsigned char> file_bytes;
     std::span<const unsigned char> bytes = source.bytes;
-    std::string name = source.file.string(), ext = lowercase_extension(source.file);
+    std::string name = source.file.string(), ext = texture_extension(source);
     if (source.kind == ImageSource::Kind::File) {
         try {
             file_bytes = read_scene_file(source.file, limits::kResourceFileBytes);  // resolved already: no links
@@ -207,13 +240,8 @@ Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_byt
         }
         bytes = file_bytes;
     } else {
-        // Embedded: the format its MIME type gives (glTF's two), else its signature.
-        const std::string& mime = source.mime_type;
-        const bool png = mime == "image/png" || (mime.empty() && bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P');
-        const bool jpeg = mime == "image/jpeg" || (mime.empty() && bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8);
         name = source.kind == ImageSource::Kind::DataUri ? "data: URI image" : "bufferView image";
-        ext = png ? ".png" : jpeg ? ".jpg" : "";
-        if (ext.empty()) throw ImageError(name + ": not a PNG or JPEG image (MIME type '" + mime + "')");
+        if (ext.empty()) throw ImageError(name + ": not a PNG or JPEG image (MIME type '" + source.mime_type + "')");
     }
     // PNG alpha stays as stored (unassociated), as GL uploads it.
     const auto in = open_image(bytes, name, ext, limits, /*unassociated_alpha=*/true);
@@ -247,6 +275,9 @@ struct ImageWriter::State {
     std::unique_ptr<image_library::Encoder> out;  // destroyed first: it writes into sink
     std::vector<float> floats;
     std::vector<std::uint8_t> bytes;
+    // Why the encoder failed: the file's own error when a write to it did (a full disk, a file
+    // size limit), else the encoder's message.
+    std::string write_failure() const { return sink && sink->error() ? std::strerror(sink->error()) : out->error(); }
 };
 
 ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int height, bool alpha, const Metadata& metadata)
@@ -256,7 +287,8 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
     s.is_float = is_float_format(path);
     if (width <= 0 || height <= 0) throw ImageError(path.string() + ": cannot write an image of " + size_text(width, height));
     std::string error;
-    s.out = image_library::library().create(path.string(), error);
+    s.out = needs_image_library(path) ? image_library::library().create(path.string(), error)
+                                      : image_library::create_png();
     if (!s.out) throw ImageError(path.string() + ": " + error);
     try {
         s.file = std::make_unique<TemporaryFile>(path);
@@ -267,7 +299,7 @@ ImageWriter::ImageWriter(const std::filesystem::path& path, int width, int heigh
     image_library::EncoderSpec spec{width, height, s.channels, s.is_float, metadata};
     spec.attributes.emplace_back("Software", "quadshade");
     if (!s.out->open(s.file->path().string(), *s.sink, spec)) {
-        throw ImageError(path.string() + ": cannot write image (" + s.out->error() + ")");
+        throw ImageError(path.string() + ": cannot write image (" + s.write_failure() + ")");
     }
 }
 
@@ -276,14 +308,20 @@ ImageWriter::~ImageWriter() = default;
 std::uint64_t ImageWriter::conversion_bytes(const std::filesystem::path& path, int width, int rows, bool alpha) {
     const std::uint64_t channels = alpha ? 4u : 3u, values = std::uint64_t(width) * std::uint64_t(rows) * channels;
     std::uint64_t encoder = 0;
-    if (lowercase_extension(path) == ".exr") {
+    const std::string ext = lowercase_extension(path);
+    if (ext == ".png") {
+        // libpng's row and the row above (for the Up filter), and the encoder's copy of the row
+        // it divides by alpha; zlib's state, 256 KiB whatever the size, is in the writer's own
+        // state (kRenderOverheadBytes).
+        encoder = 3 * (std::uint64_t(width) * channels + 1);
+    } else if (ext == ".exr") {
         // OpenEXR keeps two line buffers per thread of its pool (one thread per core), each of 16
         // rows of the file's pixels, and its ZIP compressor two more of that size for each:
         // 8192x64 float RGB took 13.3 MiB more than as TIFF.
         const std::uint64_t buffers = 2 * std::max(1u, std::thread::hardware_concurrency());
         encoder = buffers * 3 * 16 * std::uint64_t(width) * channels * sizeof(float);
     }
-    return values * (sizeof(float) + (is_float_format(path) ? 0 : 1)) + encoder;
+    return values * (is_float_format(path) ? sizeof(float) : 1) + encoder;
 }
 
 void ImageWriter::write_rows(int rows, const std::uint8_t* rgba) {
@@ -306,7 +344,7 @@ void ImageWriter::write_rows(int rows, const std::uint8_t* rgba) {
         pixels = s.bytes.data();
     }
     if (!s.out->write_rows(s.next_row, s.next_row + rows, s.is_float, pixels)) {
-        throw ImageError(s.path.string() + ": cannot write image (" + s.out->error() + ")");
+        throw ImageError(s.path.string() + ": cannot write image (" + s.write_failure() + ")");
     }
     s.next_row += rows;
 }
@@ -316,23 +354,27 @@ void ImageWriter::write_rows(int rows, const float* rgba) {
     if (rows <= 0 || s.next_row + rows > s.height) throw std::logic_error("ImageWriter: more rows than the image has");
     const std::size_t n = std::size_t(s.width) * std::size_t(rows);
     const std::size_t nc = std::size_t(s.channels);
-    s.floats.resize(n * nc);
-    for (std::size_t p = 0; p < n; ++p) {
-        for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = rgba[p * 4 + c];
-    }
-    const void* pixels = s.floats.data();
-    if (!s.is_float) {
+    const void* pixels = nullptr;
+    if (s.is_float) {
+        s.floats.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) s.floats[p * nc + c] = rgba[p * 4 + c];
+        }
+        pixels = s.floats.data();
+    } else {
         // GL's unorm8 conversion (clamp, scale, round to nearest), not OIIO's own.
-        s.bytes.resize(s.floats.size());
-        for (std::size_t i = 0; i < s.bytes.size(); ++i) {
-            float c = s.floats[i];
-            c = std::isnan(c) ? 0.0f : std::min(std::max(c, 0.0f), 1.0f);
-            s.bytes[i] = std::uint8_t(std::lrint(c * 255.0f));
+        s.bytes.resize(n * nc);
+        for (std::size_t p = 0; p < n; ++p) {
+            for (std::size_t c = 0; c < nc; ++c) {
+                float v = rgba[p * 4 + c];
+                v = std::isnan(v) ? 0.0f : std::min(std::max(v, 0.0f), 1.0f);
+                s.bytes[p * nc + c] = std::uint8_t(std::rint(v * 255.0f));  // as lrint, but inlined (it sets no errno)
+            }
         }
         pixels = s.bytes.data();
     }
     if (!s.out->write_rows(s.next_row, s.next_row + rows, s.is_float, pixels)) {
-        throw ImageError(s.path.string() + ": cannot write image (" + s.out->error() + ")");
+        throw ImageError(s.path.string() + ": cannot write image (" + s.write_failure() + ")");
     }
     s.next_row += rows;
 }
@@ -341,7 +383,7 @@ void ImageWriter::commit() {
     State& s = *state_;
     if (s.next_row != s.height) throw std::logic_error("ImageWriter: commit before every row was written");
     const bool closed = s.out->close();
-    const std::string error = closed ? "" : s.out->error();
+    const std::string error = closed ? "" : s.write_failure();
     s.out.reset();
     if (!closed) throw ImageError(s.path.string() + ": cannot write image (" + error + ")");
     try {

@@ -1,5 +1,6 @@
 #pragma once
-// Image files through OpenImageIO (behind image_library.h, loaded on first use): reading
+// Image files, PNG through libpng and the other formats through OpenImageIO (both behind
+// image_library.h; OpenImageIO loaded on first use): reading
 // textures and images to compare (regular files only, their size checked on the header before
 // anything is decoded), writing renders safely (a temporary file, every write checked, renamed
 // into place: see temporary_file.h), in one piece or row band by row band, and comparing images.
@@ -43,10 +44,16 @@ struct ImageReadLimits {
 };
 
 // Loads OpenImageIO (a module of its own: image_library.h), as the first image read or written
-// does. Throws ImageError naming it when it cannot be loaded. A command that will write an image
-// calls it first, so that its frame times and memory measurements do not count the library's
-// own start-up.
+// in a format other than PNG does, and the first comparison, heat map or text drawn. Throws
+// ImageError naming it when it cannot be loaded. A command that will need it calls it first, so
+// that its frame times and memory measurements do not count the library's own start-up.
 void load_image_library();
+
+// Whether reading or writing `file` (its extension names the format) needs OpenImageIO: every
+// format but PNG, which libpng (linked into quadshade) decodes and encodes.
+bool needs_image_library(const std::filesystem::path& file);
+// Whether decoding one of `scene`'s textures does.
+bool needs_image_library(const Scene& scene);
 
 // Reads PNG, JPEG, OpenEXR, TIFF and HDR files, the format named by the extension;
 // grey/RGB are expanded to RGBA (alpha 1). Only regular files are opened (never a FIFO or

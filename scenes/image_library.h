@@ -1,11 +1,12 @@
 #pragma once
-// What image_io.cpp asks of the image library, OpenImageIO: decoding an image from its bytes,
-// encoding rows into bytes that quadshade writes (and checks) itself, and the comparison, heat map
-// and text drawing of `quadshade compare` and `gallery`. image_io.cpp keeps every decision (which
-// formats, which sizes, the RGBA layout, GL's unorm conversion, where the bytes go);
-// openimageio_library.cpp only calls OpenImageIO, in a module of its own (modules/module_loader.h)
-// loaded by the first call of image_library::library(). Nothing here throws across the module's edge:
-// failures come back as messages.
+// What image_io.cpp asks of the image libraries: decoding an image from its bytes, encoding rows
+// into bytes that quadshade writes (and checks) itself, and the comparison, heat map and text
+// drawing of `quadshade compare` and `gallery`. image_io.cpp keeps every decision (which formats,
+// which library, which sizes, the RGBA layout, GL's unorm conversion, where the bytes go). PNG's
+// Decoder and Encoder are libpng's (png_codec.h, linked); the other formats and the rest are
+// OpenImageIO's: openimageio_library.cpp only calls it, in a module of its own
+// (modules/module_loader.h) loaded by the first call of image_library::library(). Nothing here
+// throws across the module's edge: failures come back as messages.
 
 #include <cstddef>
 #include <cstdint>

@@ -23,6 +23,25 @@ GROUP_MARKERS = {"derivatives": "o", "anti-aliasing": "s", "precision": "^"}
 FLOOR = 1e-6  # an exact mode, drawn on the log axis
 
 
+LABEL_POINTS = 7
+
+
+def label(ax, rows):
+    """Names each point beside it; a name that would cover one already placed (modes of the same
+    cost and error, e.g. two derivative rules) moves down below it instead."""
+    placed = []  # (x0, x1, y0, y1) in pixels
+    height = LABEL_POINTS * ax.figure.dpi / 72 * 1.25
+    for r in sorted(rows, key=lambda r: -max(float(r["rms_vs_truth"]), FLOOR)):
+        x, y = float(r["ms"]), max(float(r["rms_vs_truth"]), FLOOR)
+        px, py = ax.transData.transform((x, y))
+        width = 0.62 * len(r["mode"]) * height
+        dy = 3
+        while any(px < b[1] and px + width > b[0] and py + dy < b[3] and py + dy + height > b[2] for b in placed):
+            dy -= height
+        placed.append((px, px + width, py + dy, py + dy + height))
+        ax.annotate(r["mode"], (x, y), textcoords="offset pixels", xytext=(4, dy), fontsize=LABEL_POINTS)
+
+
 def plot(title, rows, path):
     fig, ax = plt.subplots(figsize=(7.5, 4.8), dpi=100)
     for r in rows:
@@ -30,7 +49,6 @@ def plot(title, rows, path):
         x, y = float(r["ms"]), max(float(r["rms_vs_truth"]), FLOOR)
         ax.scatter(x, y, marker=GROUP_MARKERS.get(r["group"], "o"), s=60 if on_front else 30,
                    facecolors="tab:red" if on_front else "none", edgecolors="tab:red" if on_front else "tab:blue")
-        ax.annotate(r["mode"], (x, y), textcoords="offset points", xytext=(4, 3), fontsize=7)
     front = sorted((r for r in rows if r["front"] == "1"), key=lambda r: float(r["ms"]))
     ax.plot([float(r["ms"]) for r in front], [max(float(r["rms_vs_truth"]), FLOOR) for r in front], color="tab:red",
             lw=1, label="Pareto front")
@@ -44,6 +62,7 @@ def plot(title, rows, path):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
+    label(ax, rows)  # placed in pixels, once the axes have their final size
     fig.savefig(path)
     plt.close(fig)
 

@@ -1,10 +1,11 @@
 #!/bin/sh
 # loaded_libraries.sh QUADSHADE SOURCE_DIR WORK MODULE_DIR_FROM_BIN: each command loads the outside
 # libraries it uses and no others, as the dynamic loader reports them (LD_DEBUG=files): `--help`
-# and `shaders` load neither OpenImageIO, Embree nor OSMesa; a rasterized render to PNG loads
-# OpenImageIO and not Embree; a ray-cast one loads Embree (where it is built). A module that cannot
-# be loaded is named, with its library, in the message of a render that needs it (exit 1, no
-# output), while --help still runs without it.
+# and `shaders` load neither OpenImageIO, Embree nor OSMesa; a rasterized render to PNG loads none
+# of them (libpng is linked), one to OpenEXR loads OpenImageIO and not Embree; a ray-cast one loads
+# Embree (where it is built). A module that cannot be loaded is named, with its library, in the
+# message of a render that needs it (exit 1, no output), while --help and a render to PNG still run
+# without it.
 set -eu
 quadshade=$1 source=$2 work=$3 modules=$4
 rm -rf "$work"
@@ -34,21 +35,26 @@ for args in "--help" "shaders" "render --help"; do
     refuse "quadshade $args" "$outside" "$(loaded "$quadshade" $args)"
 done
 raster=$(loaded "$quadshade" render "$plane" --size 16x16 -o "$work/raster.png")
-require "a rasterized render to PNG" 'libquadshade-openimageio' "$raster"
-require "a rasterized render to PNG" 'libOpenImageIO' "$raster"
-refuse "a rasterized render" 'libembree|libOSMesa|libquadshade-embree' "$raster"
+refuse "a rasterized render to PNG" "$outside" "$raster"
+require "a rasterized render to PNG" 'libpng' "$raster"
+exr=$(loaded "$quadshade" render "$plane" --size 16x16 -o "$work/raster.exr")
+require "a rasterized render to OpenEXR" 'libquadshade-openimageio' "$exr"
+require "a rasterized render to OpenEXR" 'libOpenImageIO' "$exr"
+refuse "a rasterized render" 'libembree|libOSMesa|libquadshade-embree' "$exr"
 if [ -e "$(dirname "$quadshade")/$modules/libquadshade-embree.so" ]; then  # built with the ray caster
     raycast=$(loaded "$quadshade" render "$plane" --size 16x16 --backend raycast -o "$work/raycast.png")
     require "a ray-cast render" 'libquadshade-embree' "$raycast"
     require "a ray-cast render" 'libembree' "$raycast"
 fi
 
-# quadshade with a broken image module beside it: --help runs, a render names OpenImageIO.
+# quadshade with a broken image module beside it: --help and a render to PNG run, a render to
+# OpenEXR names OpenImageIO.
 mkdir -p "$work/copy/bin" "$work/copy/bin/$modules"
 cp "$quadshade" "$work/copy/bin/quadshade"
 : > "$work/copy/bin/$modules/libquadshade-openimageio.so"
 "$work/copy/bin/quadshade" --help > /dev/null
-if "$work/copy/bin/quadshade" render "$plane" --size 16x16 -o "$work/none.png" 2> "$work/broken.txt"; then
+"$work/copy/bin/quadshade" render "$plane" --size 16x16 -o "$work/without-module.png" 2> /dev/null
+if "$work/copy/bin/quadshade" render "$plane" --size 16x16 -o "$work/none.exr" 2> "$work/broken.txt"; then
     echo "loaded_libraries.sh: a render without its image module succeeded" >&2
     exit 1
 else
@@ -57,5 +63,5 @@ fi
 cat "$work/broken.txt"
 [ "$status" -eq 1 ] || { echo "loaded_libraries.sh: exit $status, expected 1" >&2; exit 1; }
 grep -q 'cannot load OpenImageIO (needed to read and write images): .*libquadshade-openimageio.so' "$work/broken.txt"
-[ ! -e "$work/none.png" ] || { echo "loaded_libraries.sh: an output was left" >&2; exit 1; }
+[ ! -e "$work/none.exr" ] || { echo "loaded_libraries.sh: an output was left" >&2; exit 1; }
 echo "each command loaded only the libraries it uses"
