@@ -139,55 +139,63 @@ int cmd_bake_volume(VolumeArgs a) {
     return 0;
 }
 
-int cmd_bake(BakeArgs a) {
-    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, a.shader);
-    if (a.shader.empty()) throw UsageError("bake: give the shader to bake: --shader NAME or --glsl FRAG");
-    const fs::path output(a.output);
-    if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
-    bool height = false, normal = false, color = false;
+namespace {
+
+struct BakeMaps {
+    bool color = false, height = false, normal = false;
+};
+
+// The maps --maps names, and the normal map's options only where it is asked for.
+BakeMaps maps_asked(const BakeArgs& a) {
+    BakeMaps maps;
     for (const std::string& map : a.maps) {
         if (map != "color" && map != "height" && map != "normal") {
             throw UsageError("--maps: '" + map + "' is not a map bake makes (color, height, normal)");
         }
-        bool& wanted = map == "color" ? color : map == "height" ? height : normal;
+        bool& wanted = map == "color" ? maps.color : map == "height" ? maps.height : maps.normal;
         if (wanted) throw UsageError("--maps: '" + map + "' is named twice");
         wanted = true;
     }
-    if (!color) throw UsageError("--maps: color is required (the baked scene is drawn with it)");
-    if (!normal && (a.normals_option->count() || a.normal_step || a.precision_option->count())) {
+    if (!maps.color) throw UsageError("--maps: color is required (the baked scene is drawn with it)");
+    if (!maps.normal && (a.normals_option->count() || a.normal_step || a.precision_option->count())) {
         throw UsageError("--normals, --normal-step and --normal-precision make the normal map: add normal to --maps");
     }
     if (a.normal_step && a.normals != NormalMethod::FiniteDifferences) {
         throw UsageError("--normal-step is the finite differences' step: it needs --normals finite");
     }
-    const HeightField* field = nullptr;
-    if (height || normal) {
-        field = find_height_field(a.shader);
-        if (!field) {
-            std::string with;
-            for (const HeightField* f : height_fields()) with += (with.empty() ? "" : ", ") + std::string(f->shader());
-            throw UsageError("--maps " + std::string(normal ? "normal" : "height") + ": shader '" + a.shader +
-                             "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
-        }
-    }
-    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
-    reset_peak_resident();  // the bake's memory is measured from here; its maps are PNG
-    std::uint64_t resident_before = resident_bytes();
-    SceneLoadOptions load;
-    load.paths.allow_outside = a.allow_outside;
-    Scene scene = load_scene(a.mesh, load);
-    resident_before += load_image_library_for(scene);
-    const std::string stem = output.stem().string();
-    const std::string bin = stem + ".bin", color_file = stem + "-color.png", height_file = stem + "-height.png",
-                      normal_file = stem + "-normal.png";
-    check_output(output, scene.inputs, "-o");
-    check_output(output.parent_path() / bin, scene.inputs, "-o (its buffer)");
-    check_output(output.parent_path() / color_file, scene.inputs, "-o (its texture)");
-    if (height) check_output(output.parent_path() / height_file, scene.inputs, "-o (its height map)");
-    if (normal) check_output(output.parent_path() / normal_file, scene.inputs, "-o (its normal map)");
-    const Program* program = find_program(a.shader);
-    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+    return maps;
+}
 
+// The shader's height, where a height or normal map is asked for (nullptr otherwise).
+const HeightField* height_field_for(const std::string& shader, const BakeMaps& maps) {
+    if (!maps.height && !maps.normal) return nullptr;
+    const HeightField* field = find_height_field(shader);
+    if (!field) {
+        std::string with;
+        for (const HeightField* f : height_fields()) with += (with.empty() ? "" : ", ") + std::string(f->shader());
+        throw UsageError("--maps " + std::string(maps.normal ? "normal" : "height") + ": shader '" + shader +
+                         "' has no height (shaders with one: " + (with.empty() ? "none in this build" : with) + ")");
+    }
+    return field;
+}
+
+// The files beside OUT.gltf, each checked against the scene's inputs.
+struct BakeFiles {
+    std::string bin, color, height, normal;
+};
+
+BakeFiles bake_files(const fs::path& output, const Scene& scene, const BakeMaps& maps) {
+    const std::string stem = output.stem().string();
+    const BakeFiles files{stem + ".bin", stem + "-color.png", stem + "-height.png", stem + "-normal.png"};
+    check_output(output, scene.inputs, "-o");
+    check_output(output.parent_path() / files.bin, scene.inputs, "-o (its buffer)");
+    check_output(output.parent_path() / files.color, scene.inputs, "-o (its texture)");
+    if (maps.height) check_output(output.parent_path() / files.height, scene.inputs, "-o (its height map)");
+    if (maps.normal) check_output(output.parent_path() / files.normal, scene.inputs, "-o (its normal map)");
+    return files;
+}
+
+AtlasRequest atlas_request(const BakeArgs& a) {
     AtlasRequest req;
     req.size = a.size;
     req.skirt = a.skirt;
@@ -196,26 +204,34 @@ int cmd_bake(BakeArgs a) {
     req.frame.shading.derivatives = a.derivatives;
     req.frame.shading.threads = a.threads;
     for (const std::string& u : a.uniforms) req.frame.uniforms.push_back(parse_uniform_option(u));
+    return req;
+}
+
+NormalBakeRequest normal_request(const BakeArgs& a) {
     NormalBakeRequest n;
     n.size = a.size, n.skirt = a.skirt, n.method = a.normals, n.precision = a.normal_precision, n.threads = a.threads;
     if (a.normal_step) n.step = *a.normal_step;
+    return n;
+}
 
-    // Before any work: the folder the files go to (their staging folder is made in it now), and
-    // the memory of the largest map (each map is written, and its memory freed, before the next)
-    // beside what the bake holds throughout: the scene as loaded and kRenderOverheadBytes.
-    OutputSet out(output);
+// The memory of the largest map (each map is written, and its memory freed, before the next)
+// beside what the bake holds throughout: the scene as loaded and kRenderOverheadBytes. Throws
+// MemoryError when a map would not fit in --memory-limit; returns the most the bake will hold.
+std::uint64_t plan_bake_memory(const BakeArgs& a, const Scene& scene, const AtlasRequest& req,
+                               const NormalBakeRequest& n, const BakeMaps& maps, const BakeFiles& files) {
     const std::uint64_t limit = memory_limit(a.memory_limit);
     const std::uint64_t held = kRenderOverheadBytes + scene_bytes(scene);
     const std::string side = std::to_string(a.size) + "x" + std::to_string(a.size);
     // An atlas is written a row at a time; the normal map as a whole image once it is made.
-    const std::uint64_t atlas = atlas_bake_bytes(scene, req) + ImageWriter::conversion_bytes(color_file, a.size, 1, true);
+    const std::uint64_t atlas =
+        atlas_bake_bytes(scene, req) + ImageWriter::conversion_bytes(files.color, a.size, 1, true);
     std::vector<std::pair<std::string, std::uint64_t>> needs = {{"the colour atlas", atlas}};
-    if (height) needs.emplace_back("the height map", atlas);
-    if (normal) {
+    if (maps.height) needs.emplace_back("the height map", atlas);
+    if (maps.normal) {
         const std::uint64_t image = std::uint64_t(a.size) * std::uint64_t(a.size) * 4 * sizeof(float);
         needs.emplace_back("the normal map",
                            std::max(normal_bake_bytes(scene, n),
-                                    image + ImageWriter::conversion_bytes(normal_file, a.size, a.size, true)));
+                                    image + ImageWriter::conversion_bytes(files.normal, a.size, a.size, true)));
     }
     std::uint64_t planned = 0;
     for (const auto& [map, bytes] : needs) {
@@ -226,7 +242,16 @@ int cmd_bake(BakeArgs a) {
         }
         planned = std::max(planned, held + bytes);
     }
+    return planned;
+}
 
+struct BakeTimes {
+    double color_ms = 0.0, height_ms = 0.0, normal_ms = 0.0;
+};
+
+// Bakes the maps asked for into `out`'s staging folder, each with metadata saying what it holds.
+BakeTimes bake_maps(const BakeArgs& a, const Scene& scene, const AtlasRequest& req, const NormalBakeRequest& n,
+                    const HeightField* field, const BakeMaps& maps, const BakeFiles& files, OutputSet& out) {
     auto clock = std::chrono::steady_clock::now;
     auto ms_since = [](auto t0) {
         return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -234,14 +259,14 @@ int cmd_bake(BakeArgs a) {
     const Metadata common = {{"quadshade:shader", a.shader},
                              {"quadshade:time", std::to_string(req.frame.time.value_or(double(scene.time)))},
                              {"quadshade:skirt", std::to_string(a.skirt)}};
+    BakeTimes times;
     Metadata meta = common;
     meta.push_back({"quadshade:atlas", "the shader at each texel's surface point (TEXCOORD_0); row 0 is t = 0"});
     meta.push_back({"quadshade:derivatives", rule_name(a.derivatives)});
     auto t0 = clock();
-    write_atlas(out.staged(color_file), render_atlas_frame(scene, req), meta);
-    const double color_ms = ms_since(t0);
-    double height_ms = 0.0, normal_ms = 0.0;
-    if (height) {
+    write_atlas(out.staged(files.color), render_atlas_frame(scene, req), meta);
+    times.color_ms = ms_since(t0);
+    if (maps.height) {
         AtlasRequest h = req;
         h.frame.shader_override = std::string(field->height_shader());
         meta = common;
@@ -249,10 +274,10 @@ int cmd_bake(BakeArgs a) {
                                                "), 0 to 1 for 0 to " + std::to_string(field->amplitude()) +
                                                " object units of relief; row 0 is t = 0"});
         t0 = clock();
-        write_atlas(out.staged(height_file), render_atlas_frame(scene, h), meta);
-        height_ms = ms_since(t0);
+        write_atlas(out.staged(files.height), render_atlas_frame(scene, h), meta);
+        times.height_ms = ms_since(t0);
     }
-    if (normal) {
+    if (maps.normal) {
         meta = common;
         meta.push_back({"quadshade:atlas", "object-space unit normals as 0.5 + 0.5 n (not tangent-space), alpha 0 in the "
                                            "gutter; row 0 is t = 0"});
@@ -261,17 +286,47 @@ int cmd_bake(BakeArgs a) {
                                                  : "finite differences, step " + std::to_string(n.step) + " object units"});
         meta.push_back({"quadshade:precision", n.precision == Precision::Double ? "double" : "float"});
         t0 = clock();
-        write_image(out.staged(normal_file), bake_normal_map(scene, *field, n), meta, true);
-        normal_ms = ms_since(t0);
+        write_image(out.staged(files.normal), bake_normal_map(scene, *field, n), meta, true);
+        times.normal_ms = ms_since(t0);
     }
-    const Scene baked = baked_scene(scene, out.staged(color_file), normal ? out.staged(normal_file) : fs::path(),
-                                    height ? out.staged(height_file) : fs::path());
+    return times;
+}
+
+}  // namespace
+
+int cmd_bake(BakeArgs a) {
+    const Program* glsl = use_glsl_options(a.glsl, a.vertex_glsl, a.compile_glsl, a.shader);
+    if (a.shader.empty()) throw UsageError("bake: give the shader to bake: --shader NAME or --glsl FRAG");
+    const fs::path output(a.output);
+    if (output.extension() != ".gltf") throw UsageError("-o " + a.output + ": the baked scene is written as .gltf");
+    const BakeMaps maps = maps_asked(a);
+    const HeightField* field = height_field_for(a.shader, maps);
+    if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
+    reset_peak_resident();  // the bake's memory is measured from here; its maps are PNG
+    std::uint64_t resident_before = resident_bytes();
+    SceneLoadOptions load;
+    load.paths.allow_outside = a.allow_outside;
+    Scene scene = load_scene(a.mesh, load);
+    resident_before += load_image_library_for(scene);
+    const BakeFiles files = bake_files(output, scene, maps);
+    const Program* program = find_program(a.shader);
+    if (!program) throw UsageError("--shader: no shader named '" + a.shader + "' (quadshade shaders lists them)");
+    const AtlasRequest req = atlas_request(a);
+    const NormalBakeRequest n = normal_request(a);
+
+    // Before any work: the folder the files go to (their staging folder is made in it now), and
+    // the memory.
+    OutputSet out(output);
+    const std::uint64_t planned = plan_bake_memory(a, scene, req, n, maps, files);
+    const BakeTimes times = bake_maps(a, scene, req, n, field, maps, files, out);
+    const Scene baked = baked_scene(scene, out.staged(files.color), maps.normal ? out.staged(files.normal) : fs::path(),
+                                    maps.height ? out.staged(files.height) : fs::path());
     save_scene(baked, out.staged(output.filename().string()));
     out.commit(output.filename().string());
     std::fprintf(stderr, "quadshade: %s: %s baked into a %dx%d atlas in %.1f ms (%s)", a.output.c_str(), a.shader.c_str(),
-                 a.size, a.size, color_ms, color_file.c_str());
-    if (height) std::fprintf(stderr, ", its height in %.1f ms (%s)", height_ms, height_file.c_str());
-    if (normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", normal_ms, normal_file.c_str());
+                 a.size, a.size, times.color_ms, files.color.c_str());
+    if (maps.height) std::fprintf(stderr, ", its height in %.1f ms (%s)", times.height_ms, files.height.c_str());
+    if (maps.normal) std::fprintf(stderr, ", its normal map in %.1f ms (%s)", times.normal_ms, files.normal.c_str());
     const std::uint64_t peak = peak_resident_bytes();
     std::fprintf(stderr, ", peak memory %s (planned %s)\n",
                  byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),

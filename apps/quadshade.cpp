@@ -16,13 +16,14 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/bake_commands.h"
-#include "apps/check.h"
 #include "apps/study_command.h"
 #include "apps/command_line.h"
-#include "apps/golden_suite.h"
 #include "apps/render_command.h"
 #include "apps/shader_test_command.h"
 #include "apps/translate_command.h"
+#include "regression/check.h"
+#include "regression/golden_suite.h"
+#include "regression/suite_reports.h"
 #include "render/glsl_shaders.h"
 #include "render/gallery.h"
 #include "render/plugins.h"

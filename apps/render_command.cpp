@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "apps/command_line.h"
-#include "apps/frame_pattern.h"
+#include "render/frame_pattern.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/undefined_mask.h"
@@ -252,6 +252,68 @@ void print_progress(int done, int total) {
     if (done == total) std::fputc('\n', stderr);
 }
 
+// The file of frame `f` under `pattern` (-o or --undefined-mask): the pattern itself for a still.
+std::string frame_file(const RenderArgs& a, const std::string& pattern, int f) {
+    try {
+        return a.animated() ? frame_path(pattern, f) : pattern;
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+}
+
+// Refuses a bad -o or --undefined-mask pattern before anything is read, and a mask that would be
+// written over any frame's image.
+void check_frame_names(const RenderArgs& a, int first, int last) {
+    frame_file(a, a.output, first);
+    if (!a.mask_output.empty()) frame_file(a, a.mask_output, first);
+    if (!a.mask_output.empty() && a.animated()) {
+        // Every frame's name under both patterns.
+        const std::string image = resolved_pattern(a.output), mask = resolved_pattern(a.mask_output);
+        for (int f = first; f <= last; ++f) {
+            if (const std::optional<int> g = frame_named(mask, frame_path(image, f), first, last)) {
+                throw UsageError("--undefined-mask: frame " + std::to_string(*g) +
+                                 "'s mask would be written over frame " + std::to_string(f) + "'s image " +
+                                 frame_file(a, a.output, f));
+            }
+        }
+    }
+}
+
+// The line that ends a render: frames, size, time, speed, work, bands, depth and memory.
+void print_render_summary(const RenderArgs& a, const SceneRenderer& renderer, const FrameTotals& totals,
+                          int nframes, double total, std::size_t bands, std::uint64_t peak, std::uint64_t planned) {
+    const int w = renderer.width(), h = renderer.height();
+    const double render_seconds = totals.render_seconds;
+    const int renders = totals.renders;
+    const RenderStats& stats = totals.stats;
+    std::fprintf(stderr,
+                 "quadshade: %d frame%s %dx%d in %.3f s (render %.1f ms/frame, %.1f Mpixel/s), %llu triangles, "
+                 "%llu lanes shaded",
+                 nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / renders,
+                 double(w) * h * renders / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
+                 (unsigned long long)stats.lanes_shaded);
+    if (renders < nframes) std::fputs(", rendered once (no drawn shader reads time)", stderr);
+    if (bands > 1) std::fprintf(stderr, ", in %zu bands of rows", bands);
+    if (a.request.backend == Backend::RayCaster) {
+        std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
+    } else {
+        std::fputs(stats.depth_buffer ? ", depth tested"
+                                      : ", no depth buffer (drawn in order, each pixel's nearest surface comes last)",
+                   stderr);
+    }
+    std::fprintf(stderr, ", peak memory %s (planned %s)\n", byte_size_text(peak).c_str(),
+                 byte_size_text(planned).c_str());
+}
+
+void print_undefined(const UndefinedCounts& undefined) {
+    std::fprintf(stderr,
+                 "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "
+                 "built-in outside its domain %llu, integer overflow %llu\n",
+                 (unsigned long long)undefined.pixels, (unsigned long long)undefined.per_case[0],
+                 (unsigned long long)undefined.per_case[1], (unsigned long long)undefined.per_case[2],
+                 (unsigned long long)undefined.per_case[3]);
+}
+
 }  // namespace
 
 int cmd_render(RenderArgs& a) {
@@ -265,26 +327,7 @@ int cmd_render(RenderArgs& a) {
     for (const std::string& u : a.uniforms) req.uniforms.push_back(parse_uniform_option(u));
     if (!a.memory_limit.empty()) memory_limit(a.memory_limit);  // a bad size is refused before anything loads
     const int first = a.animated() ? a.frames.first : 0, last = a.animated() ? a.frames.second : 0;
-    auto path_of = [&](const std::string& pattern, int f) {
-        try {
-            return a.animated() ? frame_path(pattern, f) : pattern;
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(e.what());
-        }
-    };
-    path_of(a.output, first);  // a bad pattern is refused before anything is read
-    if (!a.mask_output.empty()) path_of(a.mask_output, first);
-    if (!a.mask_output.empty() && a.animated()) {
-        // Every frame's name under both patterns: no mask may be written over any frame's image.
-        const std::string image = resolved_pattern(a.output), mask = resolved_pattern(a.mask_output);
-        for (int f = first; f <= last; ++f) {
-            if (const std::optional<int> g = frame_named(mask, frame_path(image, f), first, last)) {
-                throw UsageError("--undefined-mask: frame " + std::to_string(*g) +
-                                 "'s mask would be written over frame " + std::to_string(f) + "'s image " +
-                                 path_of(a.output, f));
-            }
-        }
-    }
+    check_frame_names(a, first, last);
 
     for (const std::string& plugin : a.plugins) {
         for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
@@ -304,8 +347,8 @@ int cmd_render(RenderArgs& a) {
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "quadshade: warning: %s\n", w.c_str());
     check_programs(scene, req.shader_override, glsl_way(a.compile_glsl), {shade_request(req)});  // fail before any work
     for (int f = first; f <= last; ++f) {
-        check_output(path_of(a.output, f), scene.inputs, "-o");
-        if (!a.mask_output.empty()) check_output(path_of(a.mask_output, f), scene.inputs, "--undefined-mask");
+        check_output(frame_file(a, a.output, f), scene.inputs, "-o");
+        if (!a.mask_output.empty()) check_output(frame_file(a, a.mask_output, f), scene.inputs, "--undefined-mask");
     }
     SceneRenderer renderer(scene, req);
     for (const std::string& note : renderer.notes()) std::fprintf(stderr, "quadshade: warning: %s\n", note.c_str());
@@ -321,40 +364,16 @@ int cmd_render(RenderArgs& a) {
     const bool render_once = !renderer.depends_on_time() && bands.size() == 1;
     for (int f = first; f <= last; ++f) {
         const double time = a.animated() ? double(f) / double(a.fps) : req.time.value_or(double(scene.time));
-        const std::string mask = a.mask_output.empty() ? "" : path_of(a.mask_output, f);
-        write_frame(renderer, bands, time, a, path_of(a.output, f), mask, fb, totals, render_once && f > first);
+        const std::string mask = a.mask_output.empty() ? "" : frame_file(a, a.mask_output, f);
+        write_frame(renderer, bands, time, a, frame_file(a, a.output, f), mask, fb, totals, render_once && f > first);
         if (progress) print_progress(f - first + 1, last - first + 1);
     }
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int nframes = last - first + 1, w = renderer.width(), h = renderer.height();
-    const double render_seconds = totals.render_seconds;
-    const int renders = totals.renders;
-    const RenderStats& stats = totals.stats;
-    const UndefinedCounts& undefined = totals.undefined;
-    std::fprintf(stderr, "quadshade: %d frame%s %dx%d in %.3f s (render %.1f ms/frame, %.1f Mpixel/s), %llu triangles, %llu lanes shaded",
-                 nframes, nframes == 1 ? "" : "s", w, h, total, 1e3 * render_seconds / renders,
-                 double(w) * h * renders / render_seconds * 1e-6, (unsigned long long)stats.triangles_setup,
-                 (unsigned long long)stats.lanes_shaded);
-    if (renders < nframes) std::fputs(", rendered once (no drawn shader reads time)", stderr);
-    if (bands.size() > 1) std::fprintf(stderr, ", in %zu bands of rows", bands.size());
-    if (req.backend == Backend::RayCaster) {
-        std::fprintf(stderr, ", BVH built once in %.1f ms", 1e3 * renderer.bvh_build_seconds());
-    } else {
-        std::fputs(stats.depth_buffer ? ", depth tested" : ", no depth buffer (drawn in order, each pixel's nearest surface comes last)", stderr);
-    }
     const std::uint64_t peak = peak_resident_bytes();
-    std::fprintf(stderr, ", peak memory %s (planned %s)\n",
-                 byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
-                 byte_size_text(plan.peak_bytes).c_str());
+    print_render_summary(a, renderer, totals, last - first + 1, total, bands.size(),
+                         peak > resident_before ? peak - resident_before : 0, plan.peak_bytes);
     warn_loop_limit(glsl);
-    if (!a.mask_output.empty()) {
-        std::fprintf(stderr,
-                     "quadshade: undefined GLSL cases on %llu pixels: NaN produced %llu, division by zero %llu, "
-                     "built-in outside its domain %llu, integer overflow %llu\n",
-                     (unsigned long long)undefined.pixels, (unsigned long long)undefined.per_case[0],
-                     (unsigned long long)undefined.per_case[1], (unsigned long long)undefined.per_case[2],
-                     (unsigned long long)undefined.per_case[3]);
-    }
+    if (!a.mask_output.empty()) print_undefined(totals.undefined);
     return 0;
 }
 

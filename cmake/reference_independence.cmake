@@ -4,11 +4,11 @@
 # Included at the end of the top-level CMakeLists.txt, it walks the link closure of the
 # quadshade_reference target (configure fails if a renderer library or the renderer's compiler
 # flags are in it) and scans reference/'s #include lines (configure fails on any header of
-# shading/, core/, raster/, raycast/, render/ or apps/). It writes the closure to the build folder,
-# and the test "reference shares only the scene model and the GLSL" reruns both checks with
-# `cmake -P` on the files as they are when the tests run.
+# shading/, core/, raster/, raycast/, render/, regression/, generators/ or apps/). It writes the
+# closure to the build folder, and the test "reference shares only the scene model and the GLSL"
+# reruns both checks with `cmake -P` on the files as they are when the tests run.
 
-set(QUADSHADE_RENDERER_DIRS shading core raster raycast render apps)
+set(QUADSHADE_RENDERER_DIRS shading core raster raycast render regression generators apps)
 
 # Fails (FATAL_ERROR at configure time, or the -P script's exit code) on a forbidden #include.
 function(quadshade_check_reference_includes source_dir)
@@ -59,7 +59,7 @@ endfunction()
 
 function(quadshade_check_reference_closure closure)
     foreach(t IN LISTS closure)
-        if(t MATCHES "^quadshade_(shading|core|raster|raycast|render|flags)$")
+        if(t MATCHES "^quadshade_(shading|core|raster|raycast|render|regression|flags)$")
             message(FATAL_ERROR "quadshade_reference links ${t}: the reference may link the scene model "
                                 "(quadshade_scenes), OSMesa and its own libraries, nothing of the renderer "
                                 "(link closure: ${closure})")

@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "apps/golden_suite.h"
 #include "fuzz/fuzz_check.h"
+#include "regression/suite_reports.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     namespace fs = std::filesystem;

@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "apps/golden_suite.h"
 #include "fuzz/fuzz_check.h"
+#include "regression/golden_suite.h"
 
 namespace {
 

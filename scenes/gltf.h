@@ -1,5 +1,5 @@
 #pragma once
-// glTF 2.0 scenes through tinygltf (the only file that includes it is gltf.cpp).
+// glTF 2.0 scenes through tinygltf (the files that include it: gltf_load.cpp and gltf_save.cpp).
 //
 // What is read, all of it standard glTF 2.0 (docs/scenes.md has the details):
 //  - each mesh primitive of triangles (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN; points and lines

@@ -133,7 +133,7 @@ constexpr std::array<std::uint32_t, N * kUniformWords> initial_uniform_words(std
     }
     return w;
 }
-// A documented departure from the bar `quadshade check` holds a shader to (apps/check.h): on the
+// A documented departure from the bar `quadshade check` holds a shader to (regression/check.h): on the
 // scene whose file is named `scene` without its extension (empty: every scene), under the
 // derivative rule `rule` ("fine" or "coarse-lower"; empty: both), at most `over_1` pixels more
 // than 1/255 off OSMesa's, `over_2` more than 2/255 off, and `coverage` pixels covered by one and

@@ -1,4 +1,4 @@
-// The geometry conformance scenes (apps/geometry_scenes.h) with every catalogue shader that can
+// The geometry conformance scenes (generators/geometry_scenes.h) with every catalogue shader that can
 // draw on them, against OSMesa rendering the original GLSL: the bar of tests/reference, on scenes
 // that were not designed for the renderer (self-occlusion, overlap in both draw orders, node
 // hierarchies, rolled cameras, the near plane at a grazing angle, slivers, back faces culled

@@ -1,4 +1,4 @@
-// The glTF feature scenes (apps/gltf_scenes.h) and the shipped real model, each drawn by default
+// The glTF feature scenes (generators/gltf_scenes.h) and the shipped real model, each drawn by default
 // (materials that name no shader: the default material) by quadshade's rasterizer and by OSMesa
 // llvmpipe running the default material's GLSL: the conformance bar (coverage identical, no
 // pixel more than 1/255 off) on each feature, the animation at several times, each camera at

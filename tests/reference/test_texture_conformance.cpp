@@ -1,4 +1,4 @@
-// The texture conformance scenes (apps/texture_scenes.h): glTF's orientation, the sampler's
+// The texture conformance scenes (generators/texture_scenes.h): glTF's orientation, the sampler's
 // wraps and filters, mipmaps under minification, non-square and odd images, and where the image
 // comes from (a file, a data: URI, a .glb's bufferView). Every catalogue shader that samples a
 // texture on every scene, against OSMesa decoding and uploading the texture itself, with the bar

@@ -1,7 +1,7 @@
 // The glTF features exporters write, as the scene model reads them: primitive modes, normalized
 // and quantized attributes, animations, instancing, cameras, extensions, the default material's
 // data, transforms in double, and the messages (problems together, warnings counted). The
-// feature scenes are apps/gltf_scenes.cpp's; their pixels are compared with OSMesa in
+// feature scenes are generators/gltf_scenes.cpp's; their pixels are compared with OSMesa in
 // tests/reference/test_gltf_scenes.cpp.
 #include <catch2/catch.hpp>
 

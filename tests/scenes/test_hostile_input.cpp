@@ -18,7 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/frame_pattern.h"
+#include "render/frame_pattern.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "scenes/gltf_checks.h"

@@ -1,4 +1,4 @@
-#include "apps/texture_scenes.h"
+#include "generators/texture_scenes.h"
 
 #include <cmath>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "apps/atlas_scenes.h"
+#include "generators/atlas_scenes.h"
 
 #include <cmath>
 #include <numbers>

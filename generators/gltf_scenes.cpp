@@ -1,4 +1,4 @@
-#include "apps/gltf_scenes.h"
+#include "generators/gltf_scenes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "apps/gltf_writer.h"
+#include "generators/gltf_writer.h"
 #include "scenes/image_io.h"
 
 namespace qs {

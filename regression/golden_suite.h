@@ -3,7 +3,8 @@
 // a scene rendered with given settings and compared with an expected image under a tolerance as
 // OpenImageIO's idiff states one (a pixel fails above `fail`, the case fails when more than
 // `fail_percent` of its pixels do; likewise `warn`). Cases run in parallel; a shard (K/N) runs
-// every N-th case; each run can write a report fragment, and fragments merge into one report.
+// every N-th case; each run can write a report fragment, and fragments merge into one report
+// (suite_reports.h).
 
 #include <cstdint>
 #include <filesystem>
@@ -107,32 +108,6 @@ struct SuiteRequest {
 // cannot fit alone fails with the size it needs. Throws std::runtime_error, before any case runs,
 // when a case would write over a file the suite reads.
 SuiteRun run_suite(const Suite& suite, const SuiteRequest& request);
-
-// Report fragments (JSON) and their merge; the JUnit XML and HTML reports of a run. Reports are
-// written by scenes/output_file.h's rule; a report may be streamed into /dev/stdout, a FIFO or a
-// character device.
-void write_fragment(const SuiteRun& run, const std::filesystem::path& file);
-
-struct MergeOptions {
-    // Whether the fragments' images will be read (an HTML report copies them): then each must lie
-    // in its fragment's folder unless allow_outside.
-    bool reads_images = false;
-    bool allow_outside = false;
-    std::uint64_t memory_limit = 0;  // 0: what the system has available
-};
-// Throws std::runtime_error naming the file (and the field) when fragments are unreadable, of
-// other suites, break their limits or do not hold every shard 1..N and every case exactly once.
-SuiteRun merge_fragments(const std::vector<std::filesystem::path>& files, const MergeOptions& options = {});
-// One fragment from its text, `file` naming it: what merge_fragments reads of each (fuzz/).
-SuiteRun parse_fragment(std::string_view text, const std::filesystem::path& file, const MergeOptions& options = {});
-
-void write_junit(const SuiteRun& run, const std::filesystem::path& file);
-void write_html(const SuiteRun& run, const std::filesystem::path& folder);
-// The files write_html writes in `folder`, to check before the run that none is an input.
-std::vector<std::filesystem::path> html_files(const SuiteRun& run, const std::filesystem::path& folder);
-std::vector<std::filesystem::path> html_files(const Suite& suite, const std::filesystem::path& folder);
-// Prints the summary line and the failures; returns 0, or 3 when a case failed.
-int summarize(const SuiteRun& run);
 
 // The JSON of a suite or fragment file, for load_suite and merge_fragments: a regular file of
 // at most kSuiteFileBytes whose parsed form (kJsonBytesPerByte per byte) fits in `memory_limit`

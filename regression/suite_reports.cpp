@@ -1,5 +1,5 @@
-// The reports of a golden-image suite run: the terminal summary, report fragments (one per shard)
-// and their merge, JUnit XML (as CI systems read it) and an HTML page with the images side by side.
+#include "regression/suite_reports.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/golden_suite.h"
 #include "scenes/scene.h"
 #include "scenes/scene_files.h"
 

@@ -15,10 +15,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "apps/atlas_scenes.h"
-#include "apps/geometry_scenes.h"
-#include "apps/gltf_scenes.h"
-#include "apps/texture_scenes.h"
+#include "generators/atlas_scenes.h"
+#include "generators/geometry_scenes.h"
+#include "generators/gltf_scenes.h"
+#include "generators/texture_scenes.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
 #include "scenes/scene.h"

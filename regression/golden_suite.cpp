@@ -1,7 +1,6 @@
-#include "apps/golden_suite.h"
+#include "regression/golden_suite.h"
 
 #include <algorithm>
-#include <atomic>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -11,11 +10,11 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "core/framebuffer.h"
+#include "regression/case_workers.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
 #include "scenes/gltf.h"
@@ -497,34 +496,28 @@ SuiteRun run_suite(const Suite& suite, const SuiteRequest& request) {
         if (suite.inputs.contains(c.actual)) refuse(c.actual, "failure's actual image");
         if (suite.inputs.contains(c.diff)) refuse(c.diff, "failure's difference image");
     }
-    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    const int jobs = std::clamp(request.jobs > 0 ? request.jobs : cores, 1, std::max(1, int(mine.size())));
+    const CaseWorkers workers = case_workers(request.jobs, mine.size());
     MemoryBudget budget(request.load.memory_limit ? request.load.memory_limit : available_memory());
     CaseSettings settings;
     settings.update = request.update;
-    settings.threads = std::max(1, cores / jobs);  // each case's render shares the cores with the others
+    settings.threads = workers.threads;  // each case's render shares the cores with the others
     settings.load.paths.allow_outside = request.load.allow_outside;
     settings.budget = &budget;
     run.results.resize(mine.size());
-    std::atomic<std::size_t> next{0};
     std::mutex print;
     std::size_t done = 0;
-    auto worker = [&] {
-        for (std::size_t k = next++; k < mine.size(); k = next++) {
-            CaseResult r = run_case(*mine[k], settings);
-            r.index = index[k];
-            const std::lock_guard<std::mutex> lock(print);
-            ++done;
-            std::printf("[%*zu/%zu] %-7s %s (%.0f ms)%s%s\n", int(std::to_string(mine.size()).size()), done, mine.size(),
-                        status_name(r.status), r.name.c_str(), r.seconds * 1e3, r.message.empty() ? "" : ": ", r.message.c_str());
-            std::fflush(stdout);
-            run.results[k] = std::move(r);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
+    run_cases(workers.jobs, mine.size(), [&](int, std::size_t k) {
+        CaseResult r = run_case(*mine[k], settings);
+        r.index = index[k];
+        const std::lock_guard<std::mutex> lock(print);
+        ++done;
+        std::printf("[%*zu/%zu] %-7s %s (%.0f ms)%s%s\n", int(std::to_string(mine.size()).size()), done, mine.size(),
+                    status_name(r.status), r.name.c_str(), r.seconds * 1e3, r.message.empty() ? "" : ": ",
+                    r.message.c_str());
+        std::fflush(stdout);
+        run.results[k] = std::move(r);
+        return true;
+    });
     return run;
 }
 

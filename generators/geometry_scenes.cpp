@@ -1,4 +1,4 @@
-#include "apps/geometry_scenes.h"
+#include "generators/geometry_scenes.h"
 
 #include <cmath>
 #include <numbers>

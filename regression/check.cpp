@@ -1,7 +1,6 @@
-#include "apps/check.h"
+#include "regression/check.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cerrno>
 #include <cmath>
@@ -10,11 +9,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <mutex>
-#include <thread>
 #include <cstring>
 
 #include "core/framebuffer.h"
 #include "raster/driver_settings.h"
+#include "regression/case_workers.h"
 #include "render/frame_image.h"
 #include "render/memory_plan.h"
 #include "render/reference_process.h"
@@ -287,7 +286,7 @@ struct Checker {
         return {};
     }
 
-    void print(const Case& c, const CaseReport& r, std::ostream& csv) const {
+    void print(const Case& c, const CaseReport& r) const {
         const std::string shader(c.program->info().name), scene_name = files[c.scene].stem().string();
         const CaseCounts& n = r.counts;
         std::printf("%s %-34s %-22s %-12s %7zu covered  coverage %zu  over 1/255 %zu (%s)  over 2/255 %zu  max %d/255",
@@ -299,6 +298,12 @@ struct Checker {
         if (!r.heat_map.empty()) std::printf("\n     quadshade | OSMesa | heat map (full scale 8/255): %s", r.heat_map.c_str());
         std::printf("\n");
         std::fflush(stdout);
+    }
+
+    // The case's row of report.csv (kReportColumns).
+    void write_row(const Case& c, const CaseReport& r, std::ostream& csv) const {
+        const std::string shader(c.program->info().name), scene_name = files[c.scene].stem().string();
+        const CaseCounts& n = r.counts;
         csv << scene_name << "," << shader << "," << rule_name(c.rule) << "," << driver_of(c.rule) << "," << r.width << "," << r.height
             << "," << n.covered << "," << n.coverage << "," << n.over_1 << "," << n.over_2 << "," << n.max_steps << "," << n.max_x
             << "," << n.max_y << "," << r.bar.over_1 << "," << r.bar.over_2 << "," << r.bar.coverage << "," << (r.ok ? "ok" : "fail")
@@ -306,52 +311,138 @@ struct Checker {
     }
 };
 
-}  // namespace
+constexpr const char* kReportColumns =
+    "scene,shader,rule,driver,width,height,covered,coverage_mismatch,over_1,over_2,max_steps,max_x,max_y,"
+    "bar_over_1,bar_over_2,bar_coverage,result\n";
 
-int run_check(const CheckRequest& request) {
-    Checker checker{request, reference_executable("check"), request.output / "glsl", {}, {}, {}, nullptr, 1};
-    const std::vector<const Program*> programs = shaders_of(request);
-    checker.files = request.scenes.empty() ? default_scenes() : named_scenes(request.scenes);
+struct CaseList {
     std::vector<Case> cases;
-    std::size_t skipped_pairs = 0;
+    std::size_t skipped_pairs = 0;  // shader-scene pairs left out
+};
+
+// Loads the checker's scene files and lists the cases: each scene with every shader that it can
+// feed, under every rule asked for.
+CaseList list_cases(Checker& checker, const std::vector<const Program*>& programs) {
+    const CheckRequest& request = checker.request;
+    CaseList list;
     for (std::size_t s = 0; s < checker.files.size(); ++s) {
         checker.scenes.push_back(load_scene(checker.files[s]));
         for (const fs::path& input : checker.scenes.back().inputs) checker.inputs.add(input);
         for (const Program* program : programs) {
-            // The default set's texture scenes (apps/texture_scenes.h) test sampling: they are for
+            // The default set's texture scenes (generators/texture_scenes.h) test sampling: they are for
             // the shaders that sample a texture; the others are checked on the geometry scenes.
             const bool texture_scene = request.scenes.empty() && checker.files[s].stem().string().starts_with("texture-");
             if (!binds_samplers(checker.scenes.back(), program->info()) ||
                 (texture_scene && !samples_textures(program->info().needs))) {
-                ++skipped_pairs;
+                ++list.skipped_pairs;
                 continue;
             }
-            for (const CheckRule rule : request.rules) cases.push_back({s, program, rule});
+            for (const CheckRule rule : request.rules) list.cases.push_back({s, program, rule});
         }
     }
-    if (cases.empty()) throw std::runtime_error("no case to check: no scene binds the textures the shaders sample");
-    const fs::path report_file = request.output / "report.csv";
+    if (list.cases.empty()) {
+        throw std::runtime_error("no case to check: no scene binds the textures the shaders sample");
+    }
+    return list;
+}
+
+// The report, the exported GLSL's folder and the output folder itself, made before any case runs;
+// none may be a file a scene reads.
+void make_outputs(const Checker& checker, const fs::path& report_file) {
     for (const fs::path& output : {report_file, checker.glsl}) {
         if (checker.inputs.contains(output))
             throw std::runtime_error(output.string() + ": a file a scene reads; check would overwrite it");
     }
-    make_output_folder(request.output, FolderLink::Followed);
+    make_output_folder(checker.request.output, FolderLink::Followed);
     output_place(report_file, Streams::Refused);
     make_output_folder(checker.glsl, FolderLink::Refused);
+}
 
-    // Each shader's loops, on its first case.
-    std::size_t loop_failures = 0;
+// Each shader's loops, on its first case: a line for each shader that fails; returns their number.
+std::size_t check_loops(const Checker& checker, const std::vector<const Program*>& programs,
+                        const std::vector<Case>& cases) {
+    std::size_t failures = 0;
     for (const Program* program : programs) {
         for (const Case& c : cases) {
             if (c.program != program) continue;
             if (const std::string problem = checker.loop_writes(c); !problem.empty()) {
                 std::printf("FAIL %s: %s\n", std::string(program->info().name).c_str(), problem.c_str());
                 std::fflush(stdout);
-                ++loop_failures;
+                ++failures;
             }
             break;
         }
     }
+    return failures;
+}
+
+// Runs the cases, request.jobs at once, and prints each report and writes its row in case order as
+// they complete; returns the number that failed. The first error stops the workers, and the
+// error of the earliest case that had one is thrown once they have stopped.
+std::size_t run_in_order(Checker& checker, const std::vector<Case>& cases, const fs::path& scratch, std::ostream& csv) {
+    const CaseWorkers workers = case_workers(checker.request.jobs, cases.size());
+    checker.threads = workers.threads;
+    std::vector<CaseReport> reports(cases.size());
+    std::mutex lock;
+    std::size_t printed = 0, failed = 0;
+    run_cases(workers.jobs, cases.size(), [&](int worker, std::size_t k) {
+        const fs::path image = scratch / ("reference-" + std::to_string(worker) + ".exr");
+        const fs::path log = scratch / ("reference-" + std::to_string(worker) + ".log");
+        CaseReport r;
+        try {
+            r = checker.run(cases[k], image, log);
+        } catch (const std::exception& e) {
+            r.error = e.what();
+        }
+        r.done = true;
+        const bool go_on = r.error.empty();
+        const std::lock_guard<std::mutex> guard(lock);
+        reports[k] = std::move(r);
+        for (; printed < cases.size() && reports[printed].done && reports[printed].error.empty(); ++printed) {
+            checker.print(cases[printed], reports[printed]);
+            checker.write_row(cases[printed], reports[printed], csv);
+            failed += !reports[printed].ok;
+        }
+        return go_on;
+    });
+    for (const CaseReport& r : reports) {
+        if (!r.error.empty()) throw std::runtime_error(r.error);
+    }
+    return failed;
+}
+
+struct Tally {
+    std::size_t cases = 0, shaders = 0, scenes = 0, rules = 0;
+    std::size_t failed = 0, loop_failures = 0, skipped_pairs = 0;
+    double seconds = 0.0;
+};
+
+void print_summary(const Tally& t, bool default_scenes) {
+    std::printf("quadshade check: %zu cases (%zu shaders, %zu scenes, %zu rule%s) in %.1f s: %zu passed, %zu failed",
+                t.cases, t.shaders, t.scenes, t.rules, t.rules == 1 ? "" : "s", t.seconds, t.cases - t.failed,
+                t.failed);
+    if (t.loop_failures) {
+        std::printf("; %zu shader%s with a loop that does not hold what it writes", t.loop_failures,
+                    t.loop_failures == 1 ? "" : "s");
+    }
+    if (t.skipped_pairs) {
+        std::printf("; %zu shader-scene pairs left out (the scene binds no texture the shader samples%s)",
+                    t.skipped_pairs, default_scenes ? ", or the shader samples none on a texture scene" : "");
+    }
+}
+
+}  // namespace
+
+int run_check(const CheckRequest& request) {
+    Checker checker{request, reference_executable("check"), request.output / "glsl", {}, {}, {}, nullptr, 1};
+    const std::vector<const Program*> programs = shaders_of(request);
+    checker.files = request.scenes.empty() ? default_scenes() : named_scenes(request.scenes);
+    const CaseList list = list_cases(checker, programs);
+    const fs::path report_file = request.output / "report.csv";
+    make_outputs(checker, report_file);
+    Tally tally{list.cases.size(), programs.size(), checker.files.size(), request.rules.size()};
+    tally.skipped_pairs = list.skipped_pairs;
+    tally.loop_failures = check_loops(checker, programs, list.cases);
     export_glsl(checker.glsl);  // the reference sees the GLSL as any GL application would: the text only
     // The reference images and logs are this run's own (two runs may share -o); the report is
     // written whole once every case is done.
@@ -359,58 +450,14 @@ int run_check(const CheckRequest& request) {
     MemoryBudget budget(request.memory_limit ? request.memory_limit : available_memory());
     checker.budget = &budget;
     std::ostringstream csv;
-    csv << "scene,shader,rule,driver,width,height,covered,coverage_mismatch,over_1,over_2,max_steps,max_x,max_y,"
-           "bar_over_1,bar_over_2,bar_coverage,result\n";
-
-    // Workers take cases in order; the reports are printed in case order as they complete.
-    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    const int jobs = std::clamp(request.jobs > 0 ? request.jobs : cores, 1, int(cases.size()));
-    checker.threads = std::max(1, cores / jobs);
-    std::vector<CaseReport> reports(cases.size());
-    std::atomic<std::size_t> next{0};
-    std::atomic<bool> stop{false};
-    std::mutex lock;
-    std::size_t printed = 0, failed = 0;
+    csv << kReportColumns;
     const auto start = std::chrono::steady_clock::now();
-    auto worker = [&](int id) {
-        const fs::path image = scratch.path() / ("reference-" + std::to_string(id) + ".exr");
-        const fs::path log = scratch.path() / ("reference-" + std::to_string(id) + ".log");
-        for (std::size_t k = next++; k < cases.size() && !stop; k = next++) {
-            CaseReport r;
-            try {
-                r = checker.run(cases[k], image, log);
-            } catch (const std::exception& e) {
-                r.error = e.what();
-                stop = true;
-            }
-            r.done = true;
-            const std::lock_guard<std::mutex> guard(lock);
-            reports[k] = std::move(r);
-            for (; printed < cases.size() && reports[printed].done && reports[printed].error.empty(); ++printed) {
-                checker.print(cases[printed], reports[printed], csv);
-                failed += !reports[printed].ok;
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int j = 1; j < jobs; ++j) pool.emplace_back(worker, j);
-    worker(0);
-    for (std::thread& t : pool) t.join();
-    for (const CaseReport& r : reports) {
-        if (!r.error.empty()) throw std::runtime_error(r.error);
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("quadshade check: %zu cases (%zu shaders, %zu scenes, %zu rule%s) in %.1f s: %zu passed, %zu failed", cases.size(),
-                programs.size(), checker.files.size(), request.rules.size(), request.rules.size() == 1 ? "" : "s", seconds,
-                cases.size() - failed, failed);
-    if (loop_failures) std::printf("; %zu shader%s with a loop that does not hold what it writes", loop_failures, loop_failures == 1 ? "" : "s");
-    if (skipped_pairs) {
-        std::printf("; %zu shader-scene pairs left out (the scene binds no texture the shader samples%s)", skipped_pairs,
-                    request.scenes.empty() ? ", or the shader samples none on a texture scene" : "");
-    }
+    tally.failed = run_in_order(checker, list.cases, scratch.path(), csv);
+    tally.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    print_summary(tally, request.scenes.empty());
     write_output(report_file, csv.str());
     std::printf("\nquadshade check: report %s\n", report_file.string().c_str());
-    return failed || loop_failures ? 3 : 0;
+    return tally.failed || tally.loop_failures ? 3 : 0;
 }
 
 }  // namespace qs

@@ -1,4 +1,4 @@
-#include "apps/gltf_writer.h"
+#include "generators/gltf_writer.h"
 
 #include <algorithm>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "apps/frame_pattern.h"
+#include "render/frame_pattern.h"
 
 #include <charconv>
 #include <filesystem>

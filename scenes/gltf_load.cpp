@@ -1,6 +1,7 @@
-// The one file that includes tinygltf. What tinygltf does not check (file access, offsets,
-// strides, sparse data, the node graph, transforms, counts) is checked here before it is used,
-// with the help of scenes/gltf_checks.h and scenes/scene_files.h.
+// load_scene and parse_scene: glTF 2.0 read through tinygltf into the scene model (save_scene, the
+// other file that includes tinygltf, is gltf_save.cpp). What tinygltf does not check (file access,
+// offsets, strides, sparse data, the node graph, transforms, counts) is checked here before it is
+// used, with the help of scenes/gltf_checks.h and scenes/scene_files.h.
 #include "scenes/gltf.h"
 
 #include <algorithm>
@@ -22,7 +23,6 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
-#include "scenes/base64.h"
 #include "scenes/gltf_checks.h"
 #include "scenes/limits.h"
 #include "scenes/scene_files.h"
@@ -586,9 +586,6 @@ bool keep_embedded_image(tinygltf::Image* image, int, std::string*, std::string*
     image->as_is = true;
     return true;
 }
-
-// tinygltf's image writer: write no file, keep each image's URI (or bufferView) as it is.
-bool keep_image_uri(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) { return false; }
 
 // A material's extras.uniforms: {"uScale": 4.0, "uTint": [1, 0.5, 0.2], ...}, each a number or
 // an array of 2 to 16 numbers (matrices column by column).
@@ -1495,33 +1492,28 @@ private:
     std::size_t skinned_nodes_ = 0, weight_channels_ = 0;
 };
 
-}  // namespace
-
-Scene load_scene(const std::filesystem::path& path, const SceneLoadOptions& options) {
-    return parse_scene(read_scene_file(path, limits::kSceneFileBytes, /*follow_symlink=*/true), path, options);
-}
-
-Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::path& path, const SceneLoadOptions& options) {
-    const bool binary = checks::has_glb_magic(bytes);
-    if (path.extension() == ".glb" && !binary) fail(path, "header", "a .glb file without the binary glTF magic");
+// The JSON of a .gltf file or of a .glb's JSON chunk, its nesting checked before anything parses it.
+std::string_view json_of(std::span<const unsigned char> bytes, bool binary, const std::filesystem::path& path) {
     std::string_view json;
     try {
-        json = binary ? checks::glb_json_chunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+        json = binary ? checks::glb_json_chunk(bytes)
+                      : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     } catch (const SceneError& e) {
         fail(path, "header", e.what());
     }
     if (checks::json_nesting_depth(json, limits::kJsonDepth) > limits::kJsonDepth) {
         fail(path, "JSON", "objects and arrays nest deeper than " + std::to_string(limits::kJsonDepth) + " levels");
     }
-    Scene scene;
-    scene.file = path;
-    std::error_code ec;
-    scene.inputs.push_back(std::filesystem::weakly_canonical(path, ec));
-    check_uris(json, path, options.paths, scene.inputs);
+    return json;
+}
 
+// tinygltf's model of the file: the files it names read through FileAccess (as `policy` allows),
+// its images kept encoded.
+tinygltf::Model read_model(std::span<const unsigned char> bytes, std::string_view json, bool binary,
+                           const std::filesystem::path& path, const ScenePathPolicy& policy) {
     tinygltf::Model m;
     tinygltf::TinyGLTF loader;
-    FileAccess access{path, options.paths};
+    FileAccess access{path, policy};
     loader.SetFsCallbacks({&FileAccess::exists, &FileAccess::expand, &FileAccess::read, &FileAccess::write, &access});
     loader.SetImageLoader(keep_embedded_image, nullptr);
     std::string err, warn;
@@ -1532,224 +1524,33 @@ Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::p
         // tinygltf names the files it looked for under the base it was given: show the folder.
         std::string what = err.empty() ? warn : err;
         const std::string folder = path.parent_path().empty() ? "." : path.parent_path().string();
-        for (std::size_t at; (at = what.find(FileAccess::kBase)) != std::string::npos;) what.replace(at, FileAccess::kBase.size(), folder);
+        for (std::size_t at; (at = what.find(FileAccess::kBase)) != std::string::npos;) {
+            what.replace(at, FileAccess::kBase.size(), folder);
+        }
         throw SceneError(path.string() + ": not a valid glTF file: " + what);
     }
+    return m;
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path, const SceneLoadOptions& options) {
+    return parse_scene(read_scene_file(path, limits::kSceneFileBytes, /*follow_symlink=*/true), path, options);
+}
+
+Scene parse_scene(std::span<const unsigned char> bytes, const std::filesystem::path& path, const SceneLoadOptions& options) {
+    const bool binary = checks::has_glb_magic(bytes);
+    if (path.extension() == ".glb" && !binary) fail(path, "header", "a .glb file without the binary glTF magic");
+    const std::string_view json = json_of(bytes, binary, path);
+    Scene scene;
+    scene.file = path;
+    std::error_code ec;
+    scene.inputs.push_back(std::filesystem::weakly_canonical(path, ec));
+    check_uris(json, path, options.paths, scene.inputs);
+    const tinygltf::Model m = read_model(bytes, json, binary, path, options.paths);
     check_buffer_views(m, path);
     SceneLoader(m, path, options, scene).load();
     return scene;
-}
-
-void save_scene(const Scene& scene, const std::filesystem::path& path, std::span<const SavedNode> nodes) {
-    tinygltf::Model m;
-    m.asset.version = "2.0";
-    m.asset.generator = "quadshade scene generator";
-    tinygltf::Buffer buffer;
-    auto append = [&](const void* data, std::size_t bytes) {
-        while (buffer.data.size() % 4) buffer.data.push_back(0);
-        const std::size_t offset = buffer.data.size();
-        const auto* p = static_cast<const unsigned char*>(data);
-        buffer.data.insert(buffer.data.end(), p, p + bytes);
-        tinygltf::BufferView v;
-        v.buffer = 0, v.byteOffset = offset, v.byteLength = bytes;
-        m.bufferViews.push_back(v);
-        return int(m.bufferViews.size() - 1);
-    };
-    auto accessor = [&](int view, int component, int type, std::size_t count, std::vector<double> mn = {},
-                        std::vector<double> mx = {}) {
-        tinygltf::Accessor a;
-        a.bufferView = view, a.componentType = component, a.type = type, a.count = count;
-        a.minValues = std::move(mn), a.maxValues = std::move(mx);
-        m.accessors.push_back(a);
-        return int(m.accessors.size() - 1);
-    };
-    for (const Mesh& mesh : scene.meshes) {
-        std::vector<float> pos, st;
-        std::vector<double> mn(3, 1e30), mx(3, -1e30);
-        for (const Vertex& v : mesh.vertices) {
-            for (int i = 0; i < 3; ++i) {
-                pos.push_back(v.position[i]);
-                mn[std::size_t(i)] = std::min(mn[std::size_t(i)], double(v.position[i]));
-                mx[std::size_t(i)] = std::max(mx[std::size_t(i)], double(v.position[i]));
-            }
-            st.push_back(v.texcoord.x), st.push_back(v.texcoord.y);
-        }
-        tinygltf::Primitive p;
-        p.mode = TINYGLTF_MODE_TRIANGLES;
-        p.attributes["POSITION"] = accessor(append(pos.data(), pos.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                            TINYGLTF_TYPE_VEC3, mesh.vertices.size(), mn, mx);
-        if (mesh.has_texcoords) p.attributes["TEXCOORD_0"] = accessor(append(st.data(), st.size() * 4), TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                              TINYGLTF_TYPE_VEC2, mesh.vertices.size());
-        p.indices = accessor(append(mesh.indices.data(), mesh.indices.size() * 4),
-                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
-        tinygltf::Mesh gm;
-        gm.name = mesh.name;
-        gm.primitives.push_back(p);
-        m.meshes.push_back(gm);
-    }
-    const bool binary = path.extension() == ".glb";
-    if (!binary) buffer.uri = path.stem().string() + ".bin";
-
-    tinygltf::Scene gs;
-    // Textures as glTF writes them: an image (a file beside the scene, a data: URI or a bufferView),
-    // a sampler, and the texture pairing them; materials bind theirs as baseColorTexture.
-    for (const Texture& t : scene.textures) {
-        tinygltf::Image image;
-        image.mimeType = t.image.mime_type;
-        switch (t.image.kind) {
-            case ImageSource::Kind::File:
-                image.uri = std::filesystem::relative(t.image.file, path.parent_path()).generic_string();
-                image.mimeType.clear();
-                break;
-            case ImageSource::Kind::DataUri:
-                image.uri = "data:" + t.image.mime_type + ";base64," + base64(t.image.bytes);
-                image.mimeType.clear();
-                break;
-            case ImageSource::Kind::BufferView:
-                image.bufferView = append(t.image.bytes.data(), t.image.bytes.size());
-                break;
-        }
-        m.images.push_back(image);
-        tinygltf::Sampler sampler;
-        sampler.magFilter = int(t.sampler.mag_filter), sampler.minFilter = int(t.sampler.min_filter);
-        sampler.wrapS = int(t.sampler.wrap_s), sampler.wrapT = int(t.sampler.wrap_t);
-        m.samplers.push_back(sampler);
-        tinygltf::Texture texture;
-        texture.source = texture.sampler = int(m.images.size() - 1);
-        m.textures.push_back(texture);
-    }
-    std::vector<int> mesh_of_object;
-    for (const Object& o : scene.objects) {
-        tinygltf::Material mat;
-        mat.name = o.name;
-        mat.doubleSided = o.double_sided;
-        tinygltf::Value::Object extras;
-        if (!o.shader.empty()) extras["shader"] = tinygltf::Value(o.shader);
-        if (!o.glsl_fragment.empty()) {
-            auto beside = [&](const std::filesystem::path& f) {
-                return tinygltf::Value(std::filesystem::relative(f, path.parent_path()).generic_string());
-            };
-            tinygltf::Value::Object glsl{{"fragment", beside(o.glsl_fragment)}};
-            if (!o.glsl_vertex.empty()) glsl["vertex"] = beside(o.glsl_vertex);
-            extras["glsl"] = tinygltf::Value(glsl);
-        }
-        if (!o.uniforms.empty()) {
-            tinygltf::Value::Object uniforms;
-            for (const UniformSetting& u : o.uniforms) {
-                if (u.values.size() == 1) {
-                    uniforms[u.name] = tinygltf::Value(u.values[0]);
-                } else {
-                    tinygltf::Value::Array a;
-                    for (double x : u.values) a.emplace_back(x);
-                    uniforms[u.name] = tinygltf::Value(std::move(a));
-                }
-            }
-            extras["uniforms"] = tinygltf::Value(std::move(uniforms));
-        }
-        if (!extras.empty()) mat.extras = tinygltf::Value(std::move(extras));
-        mat.pbrMetallicRoughness.baseColorTexture.index = o.texture;
-        if (!o.samplers.empty()) {
-            tinygltf::Value::Object named;
-            for (const SamplerBinding& b : o.samplers) {
-                const Texture& t = scene.textures[std::size_t(b.texture)];
-                if (t.dims == 2) {
-                    named[b.uniform] = tinygltf::Value(b.texture);
-                } else {
-                    named[b.uniform] = tinygltf::Value(tinygltf::Value::Object{{"texture", tinygltf::Value(b.texture)},
-                                                                              {"depth", tinygltf::Value(t.depth)},
-                                                                              {"wrapR", tinygltf::Value(int(t.sampler.wrap_r))}});
-                }
-            }
-            tinygltf::Value::Object extras =
-                mat.extras.IsObject() ? mat.extras.Get<tinygltf::Value::Object>() : tinygltf::Value::Object{};
-            extras["textures"] = tinygltf::Value(named);
-            mat.extras = tinygltf::Value(extras);
-        }
-        m.materials.push_back(mat);
-        // A mesh per object, since glTF puts the material on the primitive.
-        tinygltf::Mesh gm = m.meshes[o.mesh];
-        gm.name = o.name;
-        gm.primitives[0].material = int(m.materials.size() - 1);
-        m.meshes.push_back(gm);
-        mesh_of_object.push_back(int(m.meshes.size() - 1));
-        if (!nodes.empty()) continue;
-        tinygltf::Node n;
-        n.name = o.name;
-        n.mesh = mesh_of_object.back();
-        n.matrix.assign(glm::value_ptr(o.world_from_object), glm::value_ptr(o.world_from_object) + 16);
-        m.nodes.push_back(n);
-        gs.nodes.push_back(int(m.nodes.size() - 1));
-    }
-    std::vector<int> carried(scene.objects.size(), 0);
-    const std::size_t first_node = m.nodes.size();  // glTF index of nodes[0]
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const SavedNode& sn = nodes[i];
-        const std::string field = path.string() + ": saving node " + std::to_string(i) + " '" + sn.name + "': ";
-        if (sn.parent >= int(i) || sn.parent < -1) throw SceneError(field + "its parent must be an earlier node");
-        if (sn.object >= int(scene.objects.size()) || sn.object < -1) throw SceneError(field + "no such object");
-        tinygltf::Node n;
-        n.name = sn.name;
-        if (sn.object >= 0) n.mesh = mesh_of_object[std::size_t(sn.object)], ++carried[std::size_t(sn.object)];
-        if (sn.matrix) {
-            n.matrix.assign(glm::value_ptr(*sn.matrix), glm::value_ptr(*sn.matrix) + 16);
-        } else {
-            n.translation = {sn.translation.x, sn.translation.y, sn.translation.z};
-            n.rotation = {sn.rotation.x, sn.rotation.y, sn.rotation.z, sn.rotation.w};
-            n.scale = {sn.scale.x, sn.scale.y, sn.scale.z};
-        }
-        m.nodes.push_back(n);
-        const int index = int(first_node + i);
-        if (sn.parent < 0) gs.nodes.push_back(index);
-        else m.nodes[first_node + std::size_t(sn.parent)].children.push_back(index);
-    }
-    if (!nodes.empty() && std::count(carried.begin(), carried.end(), 1) != std::ptrdiff_t(carried.size())) {
-        throw SceneError(path.string() + ": saving nodes: every object must sit on exactly one node");
-    }
-    // Drop the material-less template meshes: objects' meshes follow them.
-    const int templates = int(scene.meshes.size());
-    m.meshes.erase(m.meshes.begin(), m.meshes.begin() + templates);
-    for (tinygltf::Node& n : m.nodes) {
-        if (n.mesh >= 0) n.mesh -= templates;
-    }
-
-    tinygltf::Camera cam;
-    if (scene.camera.kind == Camera::Kind::Perspective) {
-        cam.type = "perspective";
-        cam.perspective.yfov = scene.camera.yfov;
-        cam.perspective.znear = scene.camera.znear;
-        cam.perspective.zfar = scene.camera.zfar;
-    } else {
-        cam.type = "orthographic";
-        cam.orthographic.xmag = scene.camera.xmag, cam.orthographic.ymag = scene.camera.ymag;
-        cam.orthographic.znear = scene.camera.znear, cam.orthographic.zfar = scene.camera.zfar;
-    }
-    m.cameras.push_back(cam);
-    tinygltf::Node cn;
-    cn.name = "camera";
-    cn.camera = 0;
-    // Inverted in float, as the scenes written so far were: the shipped files stay as they are.
-    const glm::mat4 world_from_view = glm::inverse(glm::mat4(scene.camera.view));
-    cn.matrix.assign(glm::value_ptr(world_from_view), glm::value_ptr(world_from_view) + 16);
-    m.nodes.push_back(cn);
-    gs.nodes.insert(gs.nodes.begin(), int(m.nodes.size() - 1));
-
-    tinygltf::Value::Array clear;
-    for (int i = 0; i < 4; ++i) clear.push_back(tinygltf::Value(double(scene.clear_color[i])));
-    tinygltf::Value::Object scene_extras{
-        {"clear_color", tinygltf::Value(clear)},
-        {"time", tinygltf::Value(double(scene.time))},
-        {"size", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(scene.width), tinygltf::Value(scene.height)})}};
-    if (scene.camera.stretch) scene_extras["stretch"] = tinygltf::Value(true);
-    gs.extras = tinygltf::Value(std::move(scene_extras));
-    m.scenes.push_back(gs);
-    m.defaultScene = 0;
-
-    m.buffers.push_back(buffer);  // last: textures above may append to it
-    tinygltf::TinyGLTF writer;
-    writer.SetImageWriter(keep_image_uri, nullptr);
-    if (!writer.WriteGltfSceneToFile(&m, path.string(), false, binary, !binary, binary)) {
-        throw SceneError(path.string() + ": cannot write glTF");
-    }
 }
 
 }  // namespace qs
