@@ -27,12 +27,14 @@
 #include "scenes/exr_codec.h"
 #include "scenes/image_io.h"
 #include "scenes/image_library.h"
+#include "tests/scenes/codec_test_files.h"
 
 namespace qs {
 
 namespace {
 
-using Bytes = std::vector<unsigned char>;
+using test::Bytes;
+using test::MemorySink;
 
 struct ExrChannel {
     std::string name;
@@ -201,39 +203,6 @@ void check_same_pixels(const Bytes& bytes, int channels, bool unassociated_alpha
     CHECK(differing == 0);
 }
 
-// An in-memory file for an encoder.
-class MemorySink final : public image_library::ByteSink {
-public:
-    std::size_t write_at(const void* data, std::size_t size, std::int64_t offset) override {
-        const std::size_t room = std::size_t(offset) < limit ? std::min(size, limit - std::size_t(offset)) : 0;
-        if (room == 0) return 0;
-        if (bytes.size() < std::size_t(offset) + room) bytes.resize(std::size_t(offset) + room);
-        std::memcpy(bytes.data() + offset, data, room);
-        return room;
-    }
-    std::size_t read_at(void* data, std::size_t size, std::int64_t offset) override {
-        const std::size_t n =
-            std::size_t(offset) < bytes.size() ? std::min(size, bytes.size() - std::size_t(offset)) : 0;
-        std::memcpy(data, bytes.data() + offset, n);
-        return n;
-    }
-    std::int64_t size() const override { return std::int64_t(bytes.size()); }
-    Bytes bytes;
-    std::size_t limit = std::size_t(-1);  // writes past it fail, as on a full disk
-};
-
-Bytes encode(image_library::Encoder& encoder, const image_library::EncoderSpec& spec,
-             const std::vector<float>& pixels) {
-    MemorySink sink;
-    REQUIRE(encoder.open("test.exr", sink, spec));
-    const std::size_t row = std::size_t(spec.width) * std::size_t(spec.channels);
-    for (int y = 0; y < spec.height; y += 5) {  // a few rows at a time, as ImageWriter writes them
-        const int end = std::min(y + 5, spec.height);
-        REQUIRE(encoder.write_rows(y, end, true, pixels.data() + std::size_t(y) * row));
-    }
-    REQUIRE(encoder.close());
-    return sink.bytes;
-}
 
 }  // namespace
 
@@ -289,11 +258,11 @@ TEST_CASE("OpenEXR writes the pixels, channels and attributes OpenImageIO's Open
         std::vector<float> pixels(std::size_t(spec.width * spec.height * channels));
         for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = float(i % 301) / 255.0f - 0.1f;
         pixels[5] = std::numeric_limits<float>::quiet_NaN();
-        const Bytes ours = encode(*image_library::create_exr(), spec, pixels);
+        const Bytes ours = test::encode(*image_library::create_exr(), "test.exr", spec, pixels);
         std::string error;
         const auto oiio_encoder = image_library::library().create("test.exr", error);
         REQUIRE(oiio_encoder);
-        const Bytes theirs = encode(*oiio_encoder, spec, pixels);
+        const Bytes theirs = test::encode(*oiio_encoder, "test.exr", spec, pixels);
         OiioExr a(ours), b(theirs);
         CHECK(a.in->spec().nchannels == channels);
         CHECK(a.in->spec().channelnames == b.in->spec().channelnames);

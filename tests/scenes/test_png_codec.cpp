@@ -19,6 +19,7 @@
 
 #include "scenes/image_io.h"
 #include "scenes/image_library.h"
+#include "tests/scenes/codec_test_files.h"
 #include "scenes/png_codec.h"
 #include "tests/test_paths.h"
 
@@ -26,7 +27,8 @@ namespace qs {
 
 namespace {
 
-using Bytes = std::vector<unsigned char>;
+using test::Bytes;
+using test::MemorySink;
 
 // A PNG of one kind, made by libpng, its samples from a generator of (x, y, channel).
 struct PngKind {
@@ -158,39 +160,6 @@ void check_same_pixels(const Bytes& bytes, bool unassociated_alpha, int channels
     CHECK(differing == 0);
 }
 
-// An in-memory file for an encoder.
-class MemorySink final : public image_library::ByteSink {
-public:
-    std::size_t write_at(const void* data, std::size_t size, std::int64_t offset) override {
-        const std::size_t room = std::size_t(offset) < limit ? std::min(size, limit - std::size_t(offset)) : 0;
-        if (room == 0) return 0;
-        if (bytes.size() < std::size_t(offset) + room) bytes.resize(std::size_t(offset) + room);
-        std::memcpy(bytes.data() + offset, data, room);
-        return room;
-    }
-    std::size_t read_at(void* data, std::size_t size, std::int64_t offset) override {
-        const std::size_t n =
-            std::size_t(offset) < bytes.size() ? std::min(size, bytes.size() - std::size_t(offset)) : 0;
-        std::memcpy(data, bytes.data() + offset, n);
-        return n;
-    }
-    std::int64_t size() const override { return std::int64_t(bytes.size()); }
-    Bytes bytes;
-    std::size_t limit = std::size_t(-1);  // writes past it fail, as on a full disk
-};
-
-Bytes encode(image_library::Encoder& encoder, const image_library::EncoderSpec& spec,
-             const std::vector<std::uint8_t>& pixels) {
-    MemorySink sink;
-    REQUIRE(encoder.open("test.png", sink, spec));
-    const std::size_t row = std::size_t(spec.width) * std::size_t(spec.channels);
-    for (int y = 0; y < spec.height; y += 5) {  // a few rows at a time, as ImageWriter writes them
-        const int end = std::min(y + 5, spec.height);
-        REQUIRE(encoder.write_rows(y, end, false, pixels.data() + std::size_t(y) * row));
-    }
-    REQUIRE(encoder.close());
-    return sink.bytes;
-}
 
 }  // namespace
 
@@ -239,11 +208,11 @@ TEST_CASE("libpng writes the pixels and text OpenImageIO's PNG writer does", "[i
         image_library::EncoderSpec spec{67, 23, channels, false, attributes};
         std::vector<std::uint8_t> pixels(std::size_t(spec.width * spec.height * channels));
         for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = std::uint8_t(i * 7 % 256 < 16 ? 0 : i * 13 % 256);
-        const Bytes ours = encode(*image_library::create_png(), spec, pixels);
+        const Bytes ours = test::encode(*image_library::create_png(), "test.png", spec, pixels);
         std::string error;
         const auto oiio_encoder = image_library::library().create("test.png", error);
         REQUIRE(oiio_encoder);
-        const Bytes theirs = encode(*oiio_encoder, spec, pixels);
+        const Bytes theirs = test::encode(*oiio_encoder, "test.png", spec, pixels);
         OiioPng a(ours, true), b(theirs, true);
         CHECK(a.in->spec().nchannels == channels);
         std::vector<std::uint8_t> pa(pixels.size()), pb(pixels.size());
