@@ -156,21 +156,11 @@ Bytes make_exr(const ExrKind& k) {
     return Bytes(bytes.begin(), bytes.end());
 }
 
-// OpenImageIO's reader on OpenEXR bytes in memory, as openimageio_library.cpp opens one (a
-// texture's with its alpha as stored, which changes nothing for OpenEXR).
-struct OiioExr {
-    OIIO::Filesystem::IOMemReader memory;
-    std::unique_ptr<OIIO::ImageInput> in;
-    explicit OiioExr(const Bytes& bytes, bool unassociated_alpha = false) : memory(bytes.data(), bytes.size()) {
-        in = OIIO::ImageInput::create("exr", false);
-        REQUIRE(in);
-        OIIO::ImageSpec config, spec;
-        if (unassociated_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
-        void* proxy = &memory;
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        REQUIRE(in->set_ioproxy(&memory));
-        REQUIRE(in->open("test.exr", spec, config));
-    }
+// OpenImageIO's reader on OpenEXR bytes (a texture's with its alpha as stored changes nothing for
+// OpenEXR).
+struct OiioExr : test::OiioReader {
+    explicit OiioExr(const Bytes& bytes, bool unassociated_alpha = false)
+        : OiioReader(bytes, "exr", unassociated_alpha) {}
 };
 
 template <class T>
@@ -179,28 +169,7 @@ void check_same_pixels(const Bytes& bytes, int channels, bool unassociated_alpha
     const auto ours = image_library::open_exr(bytes, "test.exr", error);
     INFO(error);
     REQUIRE(ours);
-    OiioExr theirs(bytes, unassociated_alpha);
-    const OIIO::ImageSpec& spec = theirs.in->spec();
-    const image_library::ImageShape shape = ours->shape();
-    CHECK(shape.width == spec.width);
-    CHECK(shape.height == spec.height);
-    CHECK(shape.channels == spec.nchannels);
-    CHECK(shape.channel_bytes == int(spec.format.size()));
-    if (channels == 0) channels = spec.nchannels;
-    const std::size_t n = std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels);
-    std::vector<T> a(n), b(n);
-    REQUIRE(ours->read(channels, a.data()));
-    REQUIRE(theirs.in->read_image(0, 0, 0, channels,
-                                  std::is_same_v<T, float> ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, b.data()));
-    std::size_t differing = 0, first = n;
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool differs = std::memcmp(&a[i], &b[i], sizeof(T)) != 0;
-        if (differs && first == n) first = i;
-        differing += differs;
-    }
-    INFO("first differing sample " << first << ": " << (first < n ? double(a[first]) : 0.0) << " vs "
-                                   << (first < n ? double(b[first]) : 0.0));
-    CHECK(differing == 0);
+    test::check_same_as_oiio<T>(*ours, bytes, "exr", unassociated_alpha, channels);
 }
 
 

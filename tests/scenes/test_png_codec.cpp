@@ -121,20 +121,8 @@ Bytes make_png(const PngKind& k) {
     return out;
 }
 
-// OpenImageIO's reader on PNG bytes in memory, as openimageio_library.cpp opens one.
-struct OiioPng {
-    OIIO::Filesystem::IOMemReader memory;
-    std::unique_ptr<OIIO::ImageInput> in;
-    OiioPng(const Bytes& bytes, bool unassociated_alpha) : memory(bytes.data(), bytes.size()) {
-        in = OIIO::ImageInput::create("png", false);
-        REQUIRE(in);
-        OIIO::ImageSpec config, spec;
-        if (unassociated_alpha) config.attribute("oiio:UnassociatedAlpha", 1);
-        void* proxy = &memory;
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        REQUIRE(in->set_ioproxy(&memory));
-        REQUIRE(in->open("test.png", spec, config));
-    }
+struct OiioPng : test::OiioReader {
+    OiioPng(const Bytes& bytes, bool unassociated_alpha) : OiioReader(bytes, "png", unassociated_alpha) {}
 };
 
 template <class T>
@@ -142,22 +130,7 @@ void check_same_pixels(const Bytes& bytes, bool unassociated_alpha, int channels
     std::string error;
     const auto ours = image_library::open_png(bytes, unassociated_alpha, error);
     REQUIRE(ours);
-    OiioPng theirs(bytes, unassociated_alpha);
-    const OIIO::ImageSpec& spec = theirs.in->spec();
-    const image_library::ImageShape shape = ours->shape();
-    CHECK(shape.width == spec.width);
-    CHECK(shape.height == spec.height);
-    CHECK(shape.channels == spec.nchannels);
-    CHECK(shape.channel_bytes == int(spec.format.size()));
-    if (channels == 0) channels = spec.nchannels;
-    const std::size_t n = std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels);
-    std::vector<T> a(n), b(n);
-    REQUIRE(ours->read(channels, a.data()));
-    REQUIRE(theirs.in->read_image(0, 0, 0, channels,
-                                  std::is_same_v<T, float> ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, b.data()));
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < n; ++i) differing += std::memcmp(&a[i], &b[i], sizeof(T)) != 0;
-    CHECK(differing == 0);
+    test::check_same_as_oiio<T>(*ours, bytes, "png", unassociated_alpha, channels);
 }
 
 
