@@ -16,6 +16,7 @@ docs/results.md is prose around tables; each table sits between `<!-- results:NA
                STUDY_DIR/{throughput,figure-1.1-frame}.md (quadshade-bench-throughput)
   scaling      STUDY_DIR/scaling.md                  (quadshade-bench-throughput --scaling)
   interpreter  STUDY_DIR/interpreter.md              (quadshade-bench-throughput --interpreted)
+  generated    STUDY_DIR/generated.md                (quadshade-bench-throughput --generated)
   guard        STUDY_DIR/compare-builds.md           (bench/compare-builds, run-study --previous);
                a study run without --previous says so in the block
   error        STUDY_DIR/study.csv              (quadshade study --study bench/study.txt)
@@ -273,6 +274,7 @@ def main():
         "frame": lambda: markdown_file(study, "figure-1.1-frame.md"),
         "scaling": lambda: markdown_file(study, "scaling.md"),
         "interpreter": lambda: markdown_file(study, "interpreter.md"),
+        "generated": lambda: markdown_file(study, "generated.md"),
         "guard": lambda: guard_table(study),
         "error": lambda: error_table(study),
         "bake": lambda: markdown_file(study, "bake.md"),
