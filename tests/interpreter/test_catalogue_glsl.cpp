@@ -15,6 +15,7 @@
 #include "render/scene_render.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
+#include "tests/shading_modes.h"
 #include "tests/test_paths.h"
 
 namespace {
@@ -88,15 +89,6 @@ TEST_CASE("every catalogue shader's GLSL compiles for the interpreter", "[interp
 TEST_CASE("every catalogue shader's GLSL renders as its translation does, under each rule", "[interpreter]") {
     std::vector<Scene> scenes;
     for (const auto& f : {test::kPlane, test::kLawlorPlane, test::kSphere, test::kProcTexGenSpheres}) scenes.push_back(load_scene(f));
-    struct Mode {
-        const char* what;
-        Derivatives derivatives;
-        Precision precision;
-    };
-    const Mode modes[] = {{"fine", Derivatives::Fine, Precision::Float},
-                          {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
-                          {"analytic", Derivatives::Analytic, Precision::Float},
-                          {"double", Derivatives::Fine, Precision::Double}};
     int compared = 0;
     for (const auto& [name, program] : interpreted()) {
         if (!program) continue;
@@ -105,7 +97,7 @@ TEST_CASE("every catalogue shader's GLSL renders as its translation does, under 
         std::vector<Scene> candidates;
         const Scene* scene = scene_for(info, scenes);
         if (!scene) continue;  // a shader no shipped scene binds (the baked scenes' own)
-        for (const Mode& m : modes) {
+        for (const test::ShadingMode& m : test::kShadingModes) {
             FrameRequest r;
             r.width = 48, r.height = 32;
             r.shading.derivatives = m.derivatives;

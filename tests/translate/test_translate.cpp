@@ -18,6 +18,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "shading/program_of.h"
+#include "tests/shading_modes.h"
 #include "tests/test_paths.h"
 
 #include "translated_lawlor_mandelbrot/translated_lawlor_mandelbrot.h"
@@ -96,18 +97,6 @@ TEST_CASE("a translation names GLSL's identifiers safely and keeps file names ou
 
 namespace {
 
-// Every derivative rule, and double precision: a translation is written over the number type.
-struct Mode {
-    const char* what;
-    Derivatives derivatives;
-    Precision precision;
-};
-constexpr Mode kModes[] = {{"fine", Derivatives::Fine, Precision::Float},
-                           {"coarse-lower", Derivatives::CoarseLower, Precision::Float},
-                           {"coarse-upper", Derivatives::CoarseUpper, Precision::Float},
-                           {"analytic", Derivatives::Analytic, Precision::Float},
-                           {"double", Derivatives::Fine, Precision::Double}};
-
 // A compiled translation and the GLSL it was written from: a catalogue shader's, or a file of
 // tests/translate (with the default vertex stage) on the Table 1.1 plane.
 struct TranslatedCase {
@@ -128,11 +117,11 @@ std::unique_ptr<Program> make_program() {
     return std::make_unique<ProgramOf<Shader>>();
 }
 
-// Renders `scene` with the interpreted program and then the compiled one under each of kModes:
+// Renders `scene` with the interpreted program and then the compiled one under each shading mode:
 // the two must agree to the bit, on a picture rather than one colour.
 void check_same_pixels(Scene& scene, const Program& interpreted, const Program& compiled,
                        const std::string& what) {
-    for (const Mode& m : kModes) {
+    for (const test::ShadingMode& m : test::kShadingModes) {
         FrameRequest r;
         r.width = 64, r.height = 48;
         r.shading.derivatives = m.derivatives;
