@@ -91,10 +91,15 @@ private:
 
 void load_image_library() { image_library::library(); }
 
-bool needs_image_library(const std::filesystem::path& file) {
-    const std::string ext = lowercase_extension(file);
-    return ext != ".png" && ext != ".exr";
-}
+namespace {
+
+// Whether quadshade reads and writes the format (an extension) itself, through libpng or OpenEXR,
+// without OpenImageIO.
+bool own_codec(const std::string& ext) { return ext == ".png" || ext == ".exr"; }
+
+}  // namespace
+
+bool needs_image_library(const std::filesystem::path& file) { return !own_codec(lowercase_extension(file)); }
 
 namespace {
 
@@ -116,7 +121,7 @@ std::string texture_extension(const ImageSource& source) {
 bool needs_image_library(const Scene& scene) {
     return std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) {
         const std::string ext = texture_extension(t.image);
-        return !ext.empty() && ext != ".png" && ext != ".exr";
+        return !ext.empty() && !own_codec(ext);
     });
 }
 
