@@ -1148,6 +1148,28 @@ std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
     return out;
 }
 
+// Whether a lane can leave `l` before its condition ends it, or pause in it: a break or continue
+// of its own, or a return or discard anywhere in it.
+static bool lanes_may_leave(glslang::TIntermLoop* l) {
+    struct Finder : glslang::TIntermTraverser {
+        Finder() : glslang::TIntermTraverser(true, false, true) {}
+        int depth = 0;  // loops inside l
+        bool found = false;
+        bool visitBranch(glslang::TVisit, glslang::TIntermBranch* b) override {
+            const glslang::TOperator op = b->getFlowOp();
+            found = found || op == glslang::EOpReturn || op == glslang::EOpKill ||
+                    (depth == 0 && (op == glslang::EOpBreak || op == glslang::EOpContinue));
+            return true;
+        }
+        bool visitLoop(glslang::TVisit visit, glslang::TIntermLoop*) override {
+            depth += visit == glslang::EvPreVisit ? 1 : -1;
+            return true;
+        }
+    } f;
+    if (l->getBody()) l->getBody()->traverse(&f);
+    return f.found;
+}
+
 void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     const std::vector<long long> vars = assigned_outside(l);
     std::string list;
@@ -1156,14 +1178,6 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         if (locals_.contains(id) && locals_[id].plain_counter) continue;
         list += ", " + n;
     }
-    // Each loop of a function has its own name: loop, loop2, ...
-    const std::string name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
-    std::string head;
-    if (!loops_.empty()) head = "Loop " + name + "(" + loops_.back().name + list + ");";
-    else if (!masks_.empty()) head = "Loop " + name + "(inside(" + mask() + ")" + list + ");";
-    else head = "Loop " + name + "(" + (list.empty() ? "" : list.substr(2)) + ");";
-    if (list.empty() && loops_.empty() && masks_.empty()) head = "Loop<Bool<F>> " + name + ";";
-    line(head + "  // the variables the loop assigns", nullptr);
     std::string init_text;
     if (init) {
         auto* b = init->getAsBinaryNode();
@@ -1176,6 +1190,21 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         init_text = (lo.plain_counter ? "int" : type(s->getType(), b)) + " " + lo.name + " = " + v.text;
     }
     Expr c = l->getTest() ? expr(l->getTest()) : Expr{"true", kPrimary, true};
+    // A loop every lane runs the same number of times is a C++ loop, as a person writes it: its
+    // condition is the same for every lane and no lane leaves or pauses it on its own.
+    const bool plain = c.plain && !lanes_may_leave(l);
+    std::string name;
+    if (!plain) {
+        // Each Loop of a function has its own name: loop, loop2, ...
+        name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
+        std::string head;
+        if (!loops_.empty()) head = "Loop " + name + "(" + loops_.back().name + list + ");";
+        else if (!masks_.empty()) head = "Loop " + name + "(inside(" + mask() + ")" + list + ");";
+        else head = "Loop " + name + "(" + (list.empty() ? "" : list.substr(2)) + ");";
+        if (list.empty() && loops_.empty() && masks_.empty()) head = "Loop<Bool<F>> " + name + ";";
+        line(head + "  // the variables the loop assigns", nullptr);
+    }
+    const std::string test = plain ? c.text : name + "(" + c.text + ")";
     std::string step;
     if (TIntermTyped* t = l->getTerminal()) {
         if (auto* u = t->getAsUnaryNode(); u && u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) {
@@ -1194,9 +1223,6 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         } else {
             refuse(t, "this loop step");
         }
-        if (!assigned_outside(l->getBody() ? l->getBody() : t).empty() || true) {
-            // lanes that continued rejoin before the step
-        }
     }
     const bool has_continue = [&] {
         struct Finder : glslang::TIntermTraverser {
@@ -1211,22 +1237,22 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         return f.found;
     }();
     if (has_continue && !step.empty()) step = name + ".next(), " + step;
-    loops_.push_back({name, int(masks_.size())});
+    if (!plain) loops_.push_back({name, int(masks_.size())});
     if (!l->testFirst()) {
         if (c.plain && c.text == "true") refuse(l, "a do loop without a condition");
         line("do {", l);
         block(l->getBody());
-        line("} while (" + name + "(" + c.text + "));", nullptr);
+        line("} while (" + test + ");", nullptr);
     } else if (init || !step.empty()) {
-        line("for (" + init_text + "; " + name + "(" + c.text + "); " + step + ") {", l);
+        line("for (" + init_text + "; " + test + "; " + step + ") {", l);
         block(l->getBody());
         line("}", nullptr);
     } else {
-        line("while (" + name + "(" + (c.text == "true" ? "" : c.text) + ")) {", l);
+        line("while (" + (plain || c.text != "true" ? test : name + "()") + ") {", l);
         block(l->getBody());
         line("}", nullptr);
     }
-    loops_.pop_back();
+    if (!plain) loops_.pop_back();
 }
 
 void StageWriter::statement(TIntermNode* n) {
@@ -1635,7 +1661,8 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "// written by `quadshade translate`: each line ends with its GLSL line. The shader's functions are\n"
       << "// members of a struct that holds what GLSL keeps at global scope (uniforms, inputs, outputs,\n"
       << "// globals), over the number type F. A condition that varies per fragment runs both sides, each\n"
-      << "// write keeping the lanes of the other side (select); loops are Loop objects (shading/glsl/control.h).\n"
+      << "// write keeping the lanes of the other side (select); a loop a lane can leave early is a Loop object\n"
+      << "// (shading/glsl/control.h), one every lane runs equally often a C++ loop.\n"
       << "#include \"shading/glsl.h\"\n"
       << "#include \"shading/glsl/generated.h\"\n"
       << "#include \"shading/program_of.h\"\n"
