@@ -13,6 +13,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include "frontend/binding_names.h"
+#include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
 
 namespace qs::frontend {
@@ -1170,6 +1171,17 @@ static bool lanes_may_leave(glslang::TIntermLoop* l) {
     return f.found;
 }
 
+// The C++ of a for loop's step `x op= v`, or null for another step.
+static const char* step_operator(glslang::TOperator op) {
+    switch (op) {
+        case glslang::EOpAddAssign: return " += ";
+        case glslang::EOpSubAssign: return " -= ";
+        case glslang::EOpMulAssign: return " *= ";
+        case glslang::EOpDivAssign: return " /= ";
+        default: return nullptr;
+    }
+}
+
 void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     const std::vector<long long> vars = assigned_outside(l);
     std::string list;
@@ -1214,12 +1226,14 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
             const glslang::TBasicType bt = u->getOperand()->getType().getBasicType();
             const std::string one = bt == glslang::EbtFloat ? "1.0f" : scalar_type(bt, u) + "(1)";
             step = plain ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
-        } else if (auto* b = t->getAsBinaryNode(); b && b->getOp() > glslang::EOpAssign && b->getOp() <= glslang::EOpSubAssign) {
+        } else if (auto* b = t->getAsBinaryNode(); b && b->getLeft()->getType().isScalar() && step_operator(b->getOp())) {
             Expr r = expr(b->getRight());
-            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !locals_[b->getLeft()->getAsSymbolNode() ? b->getLeft()->getAsSymbolNode()->getId() : 0].plain_counter) {
+            auto* sym = b->getLeft()->getAsSymbolNode();
+            const bool plain = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !plain) {
                 r = as_typed(b->getRight(), b->getRight()->getType());
             }
-            step = lvalue(b->getLeft()) + (b->getOp() == glslang::EOpAddAssign ? " += " : " -= ") + r.text;
+            step = lvalue(b->getLeft()) + step_operator(b->getOp()) + r.text;
         } else {
             refuse(t, "this loop step");
         }
@@ -1637,6 +1651,15 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
     const std::string vertex_body = vw.write();
     StageWriter fw(Stage::Fragment, fragment.file, *fp.shader->getIntermediate(), p);
     const std::string fragment_body = fw.write();
+    std::string unbounded;  // where a loop may reach llvmpipe's limit, which C++ loops do not keep
+    for (const auto& [stage, file] : {std::pair{&vp, compiled.vertex.file}, std::pair{&fp, fragment.file}}) {
+        const LoopBound b = loop_bound(*stage->shader->getIntermediate());
+        if (!b.within_limit() && unbounded.empty()) {
+            const TIntermNode* at = b.unbounded_loop;
+            unbounded = source_position(file, at ? at->getLoc().line : 0, at ? at->getLoc().column : 0) +
+                        (at ? "this loop may go round" : "the loops may go round") + " 65,535 times";
+        }
+    }
 
     // The varyings the fragment stage reads, in the interpreter's order: name and floats.
     std::vector<std::pair<std::string, int>> varyings;
@@ -1662,7 +1685,12 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "// members of a struct that holds what GLSL keeps at global scope (uniforms, inputs, outputs,\n"
       << "// globals), over the number type F. A condition that varies per fragment runs both sides, each\n"
       << "// write keeping the lanes of the other side (select); a loop a lane can leave early is a Loop object\n"
-      << "// (shading/glsl/control.h), one every lane runs equally often a C++ loop.\n"
+      << "// (shading/glsl/control.h), one every lane runs equally often a C++ loop.\n";
+    if (!unbounded.empty()) {
+        h << "// " << comment_text(unbounded) << ", where llvmpipe leaves\n"
+          << "// a shader's loops and this translation does not: quadshade runs this shader in its interpreter.\n";
+    }
+    h
       << "#include \"shading/glsl.h\"\n"
       << "#include \"shading/glsl/generated.h\"\n"
       << "#include \"shading/program_of.h\"\n"
@@ -1768,6 +1796,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
                "#include \"" + name + ".h\"\n\n" + "namespace " + name + " {\n\nQUADSHADE_SHADERS(" + struct_name +
                ")\n\n}  // namespace " + name + "\n";
     t.vertex_glsl = without_version_line(compiled.vertex.text);
+    t.unbounded_loop = unbounded;
     t.fragment_glsl = without_version_line(fragment.text);
     const std::string glsl_files = name + ".vert " + name + ".frag";
     t.cmake = "# " + name + " as a plugin, built against the installed quadshade package:\n"
