@@ -99,103 +99,117 @@ Constants constants_of(TIntermNode* root) {
     return values;
 }
 
-// How many times `loop`, whose counter `init` sets (or null), goes round at most: its counter run
-// in GLSL's arithmetic (float, or 32-bit integers), or nothing where the loop is not of that form
-// or goes round kLoopLimit times.
-std::optional<long long> trips(TIntermLoop* loop, TIntermBinary* init, const Constants& known) {
+// A loop of the counted form: its counter starts at `start`, moves by `step` `by` each time round,
+// and the loop goes round while `counter compare bound`.
+struct CountedLoop {
+    double start = 0, bound = 0, by = 1;
+    glslang::TOperator compare = glslang::EOpNull, step = glslang::EOpNull;
+    glslang::TBasicType type = glslang::EbtInt;
+    bool test_first = true;  // false: a do loop
+};
+
+// The comparison `c` with its sides swapped: 10 > i is i < 10.
+glslang::TOperator swapped(glslang::TOperator c) {
+    switch (c) {
+        case glslang::EOpLessThan: return glslang::EOpGreaterThan;
+        case glslang::EOpGreaterThan: return glslang::EOpLessThan;
+        case glslang::EOpLessThanEqual: return glslang::EOpGreaterThanEqual;
+        case glslang::EOpGreaterThanEqual: return glslang::EOpLessThanEqual;
+        default: return c;
+    }
+}
+
+// `loop`, whose counter `init` sets (or null), read as a counted loop, or nothing where it is not
+// one: a test that is not the counter against a constant, a step that is not a constant one, or a
+// body that changes the counter.
+std::optional<CountedLoop> counted(TIntermLoop* loop, TIntermBinary* init, const Constants& known) {
     auto* test = loop->getTest() ? loop->getTest()->getAsBinaryNode() : nullptr;
     if (!init || !test) return std::nullopt;
     const long long id = symbol_id(init->getLeft());
     const std::optional<double> start = constant(init->getRight());
     if (id < 0 || !start) return std::nullopt;
-    glslang::TOperator compare = test->getOp();
-    std::optional<double> bound = constant(test->getRight(), known);
-    if (symbol_id(test->getLeft()) != id) {  // the constant on the left: 10 > i is i < 10
-        if (symbol_id(test->getRight()) != id) return std::nullopt;
-        bound = constant(test->getLeft(), known);
-        switch (compare) {
-            case glslang::EOpLessThan: compare = glslang::EOpGreaterThan; break;
-            case glslang::EOpGreaterThan: compare = glslang::EOpLessThan; break;
-            case glslang::EOpLessThanEqual: compare = glslang::EOpGreaterThanEqual; break;
-            case glslang::EOpGreaterThanEqual: compare = glslang::EOpLessThanEqual; break;
-            default: break;
-        }
-    } else if (symbol_id(test->getRight()) == id) {
-        return std::nullopt;
+    CountedLoop c{.start = *start, .type = init->getLeft()->getType().getBasicType(), .test_first = loop->testFirst()};
+    std::optional<double> bound;
+    if (symbol_id(test->getLeft()) == id && symbol_id(test->getRight()) != id) {
+        c.compare = test->getOp(), bound = constant(test->getRight(), known);
+    } else if (symbol_id(test->getRight()) == id && symbol_id(test->getLeft()) != id) {
+        c.compare = swapped(test->getOp()), bound = constant(test->getLeft(), known);
     }
     if (!bound) return std::nullopt;
+    c.bound = *bound;
 
-    glslang::TOperator step = glslang::EOpNull;
-    double by = 1.0;
     TIntermTyped* terminal = loop->getTerminal();
     if (auto* u = terminal ? terminal->getAsUnaryNode() : nullptr) {
-        if (symbol_id(u->getOperand()) != id) return std::nullopt;
-        const bool up = u->getOp() == glslang::EOpPostIncrement || u->getOp() == glslang::EOpPreIncrement;
-        const bool down = u->getOp() == glslang::EOpPostDecrement || u->getOp() == glslang::EOpPreDecrement;
-        if (!up && !down) return std::nullopt;
-        step = up ? glslang::EOpAddAssign : glslang::EOpSubAssign;
+        const glslang::TOperator op = u->getOp();
+        const bool up = op == glslang::EOpPostIncrement || op == glslang::EOpPreIncrement;
+        const bool down = op == glslang::EOpPostDecrement || op == glslang::EOpPreDecrement;
+        if (symbol_id(u->getOperand()) != id || (!up && !down)) return std::nullopt;
+        c.step = up ? glslang::EOpAddAssign : glslang::EOpSubAssign;
     } else if (auto* b = terminal ? terminal->getAsBinaryNode() : nullptr) {
-        const std::optional<double> v = constant(b->getRight(), known);
-        if (symbol_id(b->getLeft()) != id || !v) return std::nullopt;
-        step = b->getOp();
-        by = *v;
+        const std::optional<double> by = constant(b->getRight(), known);
+        if (symbol_id(b->getLeft()) != id || !by) return std::nullopt;
+        c.step = b->getOp(), c.by = *by;
     } else {
         return std::nullopt;
     }
     if (assigns(loop->getBody(), id) || assigns(loop->getTest(), id)) return std::nullopt;
+    return c;
+}
 
-    const bool is_float = init->getLeft()->getType().getBasicType() == glslang::EbtFloat;
-    const bool is_uint = init->getLeft()->getType().getBasicType() == glslang::EbtUint;
-    // The counter's next value, as GLSL computes it; nothing where an integer would overflow or
-    // divide by zero.
-    auto next = [&](double x) -> std::optional<double> {
-        if (is_float) {
-            const float a = float(x), b = float(by);
-            switch (step) {
-                case glslang::EOpAddAssign: return double(a + b);
-                case glslang::EOpSubAssign: return double(a - b);
-                case glslang::EOpMulAssign: return double(a * b);
-                case glslang::EOpDivAssign: return double(a / b);
-                default: return std::nullopt;
-            }
-        }
-        const auto a = std::int64_t(x), b = std::int64_t(by);
-        std::int64_t r;
-        switch (step) {
-            case glslang::EOpAddAssign: r = a + b; break;
-            case glslang::EOpSubAssign: r = a - b; break;
-            case glslang::EOpMulAssign: r = a * b; break;
-            case glslang::EOpDivAssign:
-                if (b == 0) return std::nullopt;
-                r = a / b;
-                break;
+// The counter's next value, as GLSL computes it (float, or 32-bit integers); nothing where an
+// integer would overflow or divide by zero, or for another step.
+std::optional<double> next(const CountedLoop& c, double x) {
+    if (c.type == glslang::EbtFloat) {
+        const float a = float(x), b = float(c.by);
+        switch (c.step) {
+            case glslang::EOpAddAssign: return double(a + b);
+            case glslang::EOpSubAssign: return double(a - b);
+            case glslang::EOpMulAssign: return double(a * b);
+            case glslang::EOpDivAssign: return double(a / b);
             default: return std::nullopt;
         }
-        if (is_uint ? (r < 0 || r > INT64_C(0xffffffff)) : (r < INT32_MIN || r > INT32_MAX)) return std::nullopt;
-        return double(r);
-    };
-    auto holds = [&](double x) {
-        const double y = is_float ? double(float(x)) : x, c = is_float ? double(float(*bound)) : *bound;
-        switch (compare) {
-            case glslang::EOpLessThan: return y < c;
-            case glslang::EOpLessThanEqual: return y <= c;
-            case glslang::EOpGreaterThan: return y > c;
-            case glslang::EOpGreaterThanEqual: return y >= c;
-            case glslang::EOpNotEqual: return y != c;
-            case glslang::EOpEqual: return y == c;
-            default: return true;  // not a comparison: unknown, so never ending here
-        }
-    };
-    double x = is_float ? double(float(*start)) : *start;
+    }
+    const auto a = std::int64_t(x), b = std::int64_t(c.by);
+    std::int64_t r;
+    switch (c.step) {
+        case glslang::EOpAddAssign: r = a + b; break;
+        case glslang::EOpSubAssign: r = a - b; break;
+        case glslang::EOpMulAssign: r = a * b; break;
+        case glslang::EOpDivAssign:
+            if (b == 0) return std::nullopt;
+            r = a / b;
+            break;
+        default: return std::nullopt;
+    }
+    const bool fits = c.type == glslang::EbtUint ? r >= 0 && r <= INT64_C(0xffffffff) : r >= INT32_MIN && r <= INT32_MAX;
+    return fits ? std::optional<double>(double(r)) : std::nullopt;
+}
+
+// Whether a loop goes round again with its counter at x.
+bool holds(const CountedLoop& c, double x) {
+    const bool f = c.type == glslang::EbtFloat;
+    const double y = f ? double(float(x)) : x, bound = f ? double(float(c.bound)) : c.bound;
+    switch (c.compare) {
+        case glslang::EOpLessThan: return y < bound;
+        case glslang::EOpLessThanEqual: return y <= bound;
+        case glslang::EOpGreaterThan: return y > bound;
+        case glslang::EOpGreaterThanEqual: return y >= bound;
+        case glslang::EOpNotEqual: return y != bound;
+        case glslang::EOpEqual: return y == bound;
+        default: return true;  // not a comparison: unknown, so never ending here
+    }
+}
+
+// How many times a counted loop goes round, its counter run; nothing where it reaches kLoopLimit.
+std::optional<long long> trips(const CountedLoop& c) {
+    double x = c.type == glslang::EbtFloat ? double(float(c.start)) : c.start;
     long long n = 0;
-    if (!loop->testFirst()) ++n, x = next(x).value_or(NAN);  // a do loop goes round once first
-    for (; !std::isnan(x) && holds(x); ++n) {
+    for (bool first = true; (!c.test_first && first) || holds(c, x); first = false, ++n) {
         if (n >= kLoopLimit) return std::nullopt;
-        const std::optional<double> v = next(x);
-        if (!v) return std::nullopt;
+        const std::optional<double> v = next(c, x);
+        if (!v || std::isnan(*v)) return std::nullopt;
         x = *v;
     }
-    if (std::isnan(x)) return std::nullopt;
     return n;
 }
 
@@ -272,7 +286,8 @@ public:
     // A loop's iterations, its inner loops' included: each time round counts once, as llvmpipe's
     // limiter counts.
     long long loop(TIntermLoop* l, TIntermBinary* init) {
-        const std::optional<long long> n = trips(l, init, constants_);
+        const std::optional<CountedLoop> c = counted(l, init, constants_);
+        const std::optional<long long> n = c ? trips(*c) : std::nullopt;
         if (!n) {
             if (!unbounded_) unbounded_ = l;
             return kMany;
