@@ -152,6 +152,12 @@ std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
 bool is_assignment(TOperator op) { return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign; }
 
 // A for loop as glslang nests it: its initialiser (one declarator) and the loop.
+// GLSL 1.50's block of the vertex stage's built-in outputs (gl_Position, gl_PointSize,
+// gl_ClipDistance[]), which the translation writes as its gl_Position alone.
+bool is_per_vertex_block(const TType& t) {
+    return t.getBasicType() == glslang::EbtBlock && std::string(t.getTypeName().c_str()) == "gl_PerVertex";
+}
+
 bool is_for_sequence(TIntermAggregate* a) {
     if (!a || a->getOp() != glslang::EOpSequence) return false;
     const std::vector<TIntermNode*> s = statements_of(a);
@@ -219,6 +225,14 @@ private:
     void uniform_member(TIntermSymbol* s, const std::string& name);
     void input_member(TIntermSymbol* s, const std::string& name);
     void output_member(TIntermSymbol* s, const std::string& name);
+    // A member of gl_PerVertex: gl_Position, the one the translation writes.
+    std::string per_vertex_member(TIntermBinary* b) {
+        if (TIntermSymbol* block = b->getLeft()->getAsSymbolNode()) symbol_name(block);  // declares gl_Position
+        const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+        const std::string field = (*b->getLeft()->getType().getStruct())[std::size_t(i)].type->getFieldName().c_str();
+        if (field != "gl_Position") refuse(b, field + " (a vertex output other than gl_Position or a varying)");
+        return "gl_Position";
+    }
 
     // ---- expressions ---------------------------------------------------------------------------
     Expr expr(TIntermTyped* n);
@@ -319,6 +333,14 @@ std::string StageWriter::symbol_name(TIntermSymbol* s) {
 std::string StageWriter::global_member(TIntermSymbol* s) {
     const glslang::TQualifier& q = s->getQualifier();
     const std::string glsl = s->getName().c_str();
+    if (is_per_vertex_block(s->getType()) && stage_ == Stage::Vertex && q.storage == glslang::EvqVaryingOut) {
+        globals_[s->getId()] = "gl_PerVertex";  // its members are read and written by name
+        if (member_names_.insert("gl_Position").second) {
+            member_lines_.push_back("vec4<F> gl_Position{};");
+            position_output = "gl_Position";
+        }
+        return "gl_PerVertex";
+    }
     std::string name;
     if (q.builtIn != glslang::EbvNone || glsl.rfind("gl_", 0) == 0) {
         name = glsl;
@@ -605,6 +627,7 @@ std::string StageWriter::lvalue(TIntermTyped* n) {
                 return base + "[" + std::to_string(i) + "]";
             }
             case glslang::EOpIndexDirectStruct: {
+                if (is_per_vertex_block(b->getLeft()->getType())) return per_vertex_member(b);
                 const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
                 return base + "." + cpp_identifier((*b->getLeft()->getType().getStruct())[std::size_t(i)].type->getFieldName().c_str(), where(b));
             }
@@ -627,6 +650,9 @@ Expr StageWriter::binary(TIntermBinary* b) {
     const TOperator op = b->getOp();
     switch (op) {
         case glslang::EOpIndexDirect: case glslang::EOpIndexDirectStruct: case glslang::EOpVectorSwizzle: {
+            if (op == glslang::EOpIndexDirectStruct && is_per_vertex_block(b->getLeft()->getType())) {
+                return {per_vertex_member(b), kPrimary, false};
+            }
             Expr base = expr(b->getLeft());
             if (op == glslang::EOpIndexDirect && b->getLeft()->getAsConstantUnion()) break;
             const std::string lv = [&] {
@@ -895,6 +921,14 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         case glslang::EOpBitfieldExtract: return fn("bitfieldExtract");
         case glslang::EOpBitfieldInsert: return fn("bitfieldInsert");
         case glslang::EOpLdexp: return fn("ldexp");
+        case glslang::EOpModf: case glslang::EOpFrexp: {
+            // The whole part or exponent goes to a variable, written for every lane.
+            if (!masks_.empty()) refuse(node, "modf or frexp under a condition that varies per fragment");
+            if (!args[1]->getAsSymbolNode()) refuse(node, "modf or frexp into a part of a variable");
+            return {std::string(op == glslang::EOpModf ? "modf(" : "frexp(") + v[0] + ", " +
+                        lvalue(args[1]->getAsTyped()) + ")",
+                    kPostfix, false};
+        }
         case glslang::EOpFtransform:
             if (stage_ != Stage::Vertex) refuse(node, "ftransform() outside a vertex shader");
             {
@@ -1512,7 +1546,7 @@ void StageWriter::function(TIntermAggregate* f) {
 
 // The struct types the stage uses, inner ones first.
 void collect_structs(const TType& t, std::vector<const TType*>& out, std::set<std::string>& seen) {
-    if (!t.isStruct()) return;
+    if (!t.isStruct() || is_per_vertex_block(t)) return;
     for (const glslang::TTypeLoc& m : *t.getStruct()) collect_structs(*m.type, out, seen);
     const std::string name = t.getTypeName().c_str();
     if (seen.insert(name).second) out.push_back(&t);

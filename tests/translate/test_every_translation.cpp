@@ -92,5 +92,5 @@ TEST_CASE("every catalogue shader's GLSL, compiled, draws what the interpreter d
     }
     INFO(compared << " compared, " << refused << " not translated or not compiled");
     CHECK(compared > 0);
-    CHECK(refused <= 4);  // the three probes of arrays of unknown size, and loop_probe's while loop
+    CHECK(refused <= 2);  // builtins_probe's modf under a condition, loop_probe's while loop
 }
