@@ -143,7 +143,13 @@ void main() {
     }
     color = vec4(w, dFdx(p.y * p.y), dFdy(sin(p.x)) * 0.5 + 0.5, 1.0);
 })",
-     7, "not yet explained: fwidth inside a loop that discarded lanes go on running as helpers, on 7 of 4096 pixels"},
+     // llvmpipe's discarded lanes do not advance the loop: their i stays 0, so a pixel whose quad
+     // neighbour discarded takes fwidth of p.x p.y (i + 1) against the neighbour's p.x p.y from
+     // the second iteration on, where quadshade's helper lanes carry the loop's i. A float model
+     // of the quads with discarded lanes kept at i = 0 gives llvmpipe's red on exactly these 7
+     // pixels, the one with helpers carrying i gives ours; w saturates elsewhere (red = w).
+     7, "llvmpipe's discarded lanes keep i = 0 in the loop, quadshade's helpers carry it: fwidth differs beside "
+        "them where w < 1, on 7 of 4096 pixels"},
     {"loop_that_never_ends", R"(
 in vec2 st;
 out vec4 color;
