@@ -28,6 +28,7 @@
 #include "translated_sampler_parameter/translated_sampler_parameter.h"
 #include "translated_constant_vector_table/translated_constant_vector_table.h"
 #include "translated_texture_lookups/translated_texture_lookups.h"
+#include "translated_texture_queries/translated_texture_queries.h"
 
 namespace {
 
@@ -244,4 +245,30 @@ TEST_CASE("a translation's texture lookups, every form, draw what the interprete
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
     check_same_pixels(scene, interpreted, compiled, "texture_lookups");
+}
+
+TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter draws, to the bit, under each rule",
+          "[translate][textures]") {
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_queries.frag");
+    const frontend::GlslSource vert = frontend::read_glsl_file(test::kSource / "tests/translate/texture_queries.vert");
+    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, vert);
+    const std::string vertex = compiled_glsl.vertex.text;
+    const Program& interpreted = add_compiled_program(
+        std::make_unique<interpreter::GlslProgram>("interpreted texture_queries", std::move(compiled_glsl)),
+        "interpreted", vertex, frag.text);
+    const Program& compiled = add_compiled_program(
+        make_program<translated_texture_queries::TranslatedTextureQueries>(), "translated", vertex, frag.text);
+    // Mipmaps and a mirrored wrap, so that the gathers reach each wrap's code and the query each level.
+    Scene scene = load_scene(test::kPlane);
+    const Sampler mipmapped{Filter::Linear, Filter::NearestMipmapNearest, Wrap::MirroredRepeat, Wrap::ClampToEdge,
+                            Wrap::Repeat};
+    scene.textures.at(0).sampler = mipmapped;
+    Texture volume;
+    volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
+    volume.sampler = {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
+    volume.dims = 3, volume.depth = 32;
+    volume.field = "volume";
+    scene.textures.push_back(volume);
+    scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
+    check_same_pixels(scene, interpreted, compiled, "texture_queries");
 }
