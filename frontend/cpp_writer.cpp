@@ -971,6 +971,17 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             if (op == glslang::EOpTextureProjGradOffset) return fn("textureProjGradOffset");
             refuse(node, "a texture lookup in a vertex shader");
         }
+        case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
+            // The channel, a constant expression, as the plain int the function takes.
+            const std::size_t comp_arg = op == glslang::EOpTextureGatherOffset ? 3 : 2;
+            if (args.size() > comp_arg) {
+                const glslang::TIntermConstantUnion* k = args[comp_arg]->getAsConstantUnion();
+                if (!k) refuse(node, "textureGather with a channel that is not a constant");
+                v[comp_arg] = std::to_string(k->getConstArray()[0].getIConst());
+            }
+            return fn(op == glslang::EOpTextureGather ? "textureGather" : "textureGatherOffset");
+        }
+        case glslang::EOpTextureQueryLod: return fn("textureQueryLod");
         default: break;
     }
     refuse(node, "this built-in function");

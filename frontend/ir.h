@@ -88,6 +88,9 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TexelFetch)   /* d..d+3 = texelFetch(s, I[a..], I[b]) */                                        \
     X(TexelFetchOffset) /* ... at I[a..] + I[c..] */                                                  \
     X(TextureSize)  /* I[d..] = textureSize(s, I[b]) */                                               \
+    X(TextureGather)       /* d..d+3 = textureGather(s, a, a+1, m): channel m of level 0's texels */   \
+    X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
+    X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
     /* control flow: the running mask of lanes; jump targets in Instr::target */                      \
     X(If)           /* lanes of B[a] run the then-part; none: jump to target (Else or EndIf) */       \
     X(Else)         /* the other lanes run the else-part; none: jump to target (EndIf) */              \

@@ -357,19 +357,42 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
             e.d = r[0].reg, e.b = lod[0].reg, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
             return r;
         }
+        case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
+            // The channel is a constant expression (glslang checks it is one, 0 to 3).
+            const bool offset = op == glslang::EOpTextureGatherOffset;
+            const std::size_t comp_arg = offset ? 3 : 2;
+            int comp = 0;
+            if (args.size() > comp_arg) {
+                const glslang::TIntermConstantUnion* k = args[comp_arg]->getAsConstantUnion();
+                if (!k) refuse(node, "textureGather's channel must be a constant expression");
+                comp = k->getConstArray()[0].getIConst();
+            }
+            if (dims != 2 || comp < 0 || comp > 3) refuse(node, "textureGather on this sampler or of this channel");
+            const ir::Op o = offset ? ir::Op::TextureGatherOffset : ir::Op::TextureGather;
+            Place r = lookup(o, v[0], nullptr, nullptr, nullptr, offset ? &v[1] : nullptr);
+            stage_.code.back().m = std::uint8_t(comp);
+            return r;
+        }
+        case glslang::EOpTextureQueryLod: {
+            if (vertex) refuse(node, "textureQueryLod exists in fragment shaders only");
+            stage_.derivatives = true;  // the quad's, as an implicit lookup's
+            const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + dims));
+            Place r = temps(B::Float, 2);
+            ir::Instr& e = emit(ir::Op::TextureQueryLod);
+            e.d = r[0].reg, e.a = a, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+            return r;
+        }
         default: break;
     }
     const char* name = "this texture function";
     switch (op) {
-        case glslang::EOpTextureGather: name = "textureGather"; break;
-        case glslang::EOpTextureGatherOffset: name = "textureGatherOffset"; break;
         case glslang::EOpTextureGatherOffsets: name = "textureGatherOffsets"; break;
-        case glslang::EOpTextureQueryLod: name = "textureQueryLod"; break;
         case glslang::EOpTextureQueryLevels: name = "textureQueryLevels"; break;
         default: break;
     }
     refuse(node, std::string(name) + " is not supported (supported: texture, texture2D, texture3D with or without a "
-                 "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize)");
+                 "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
+                 "textureGather, textureGatherOffset, textureQueryLod)");
 }
 
 }  // namespace qs::frontend

@@ -5,6 +5,7 @@
 // values in registers.
 
 #include "interpreter/executor.h"
+#include "shading/glsl/texture_queries.h"
 
 namespace qs::interpreter {
 
@@ -192,7 +193,8 @@ RunResult Machine<F>::run() {
             case ir::Op::Texture: case ir::Op::TextureBias: case ir::Op::TextureLod: case ir::Op::TextureGrad:
             case ir::Op::TextureOffset: case ir::Op::TextureBiasOffset: case ir::Op::TextureLodOffset:
             case ir::Op::TextureGradOffset: case ir::Op::TexelFetch: case ir::Op::TexelFetchOffset:
-            case ir::Op::TextureSize:
+            case ir::Op::TextureSize: case ir::Op::TextureGather: case ir::Op::TextureGatherOffset:
+            case ir::Op::TextureQueryLod:
                 texture(in);
                 break;
             case ir::Op::LoadIndexed: case ir::Op::StoreIndexed: indexed(in); break;
@@ -471,6 +473,13 @@ void Machine<F>::texture(const ir::Instr& in) {
         }
         return;
     }
+    if (in.op == ir::Op::TextureQueryLod) {
+        using glsl::sampler2D, glsl::sampler3D;
+        const glsl::vec2<F> q = in.n == 2 ? glsl::textureQueryLod(static_cast<const sampler2D&>(t), vector_at<2>(in.a))
+                                          : glsl::textureQueryLod(static_cast<const sampler3D&>(t), vector_at<3>(in.a));
+        for (int i = 0; i < 2; ++i) put(in, f_[in.d + std::uint32_t(i)], q[i]);
+        return;
+    }
     glsl::vec<F, 4> c;
     // The lookup on a sampler of N coordinates: each operation calls the vocabulary's function
     // of its name.
@@ -484,6 +493,10 @@ void Machine<F>::texture(const ir::Instr& in) {
         if (in.op == ir::Op::TexelFetch) return glsl::texelFetch<F>(s, ints_at(in.a), i_[in.b]);
         if (in.op == ir::Op::TexelFetchOffset) return glsl::texelFetchOffset<F>(s, ints_at(in.a), i_[in.b], ints_at(in.c));
         const glsl::vec<F, N> p = vector_at<N>(in.a);
+        if constexpr (N == 2) {
+            if (in.op == ir::Op::TextureGather) return glsl::textureGather(s, p, in.m);
+            if (in.op == ir::Op::TextureGatherOffset) return glsl::textureGatherOffset(s, p, ints_at(in.c), in.m);
+        }
         switch (in.op) {
             case ir::Op::Texture: return glsl::texture(s, p);
             case ir::Op::TextureBias: return glsl::texture(s, p, f_[in.b]);

@@ -8,6 +8,7 @@
 
 #include "shading/glsl/mat.h"
 #include "shading/glsl/texture.h"
+#include "shading/glsl/texture_queries.h"
 
 namespace qs::glsl {
 

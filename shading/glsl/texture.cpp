@@ -12,6 +12,7 @@
 // the same bits).
 
 #include "shading/glsl/texture.h"
+#include "shading/glsl/texture_queries.h"
 #include "shading/number/sin_cos.h"
 
 #include <algorithm>
@@ -1177,6 +1178,69 @@ void fetch(const Texture& tex, const Fetch& f) {
         const Ints index = lv.offset + ((z & in) * lv.height + (y & in)) * lv.width + (x & in);
         const Uints texel = gather(tex.texels.data(), index & in) & Uints(in);
         for (int c = 0; c < 4; ++c) store_lanes(f.rgba[std::size_t(c)], base, n, unorm(channel(texel, c)));
+    }
+}
+
+namespace {
+// One axis of a gather: the bilinear lookup's two texels (lp_build_sample_wrap_linear with
+// is_gather). REPEAT is the lookup's. CLAMP_TO_EDGE and MIRRORED_REPEAT take their own code
+// there, so that a coordinate within half a texel of an edge reads the edge texel twice:
+// CLAMP_TO_EDGE i0 = trunc(c - 0.5), i1 = min(trunc(c + 0.5), size - 1) from c = s size (+
+// offset) clamped to [0, size]; MIRRORED_REPEAT mirrors s once, signed (2 (s/2 - round_even(s/2)),
+// negative in a mirrored period), then i0 = floor(c size - 0.5), i1 = i0 + 1, each negative one
+// complemented (-1 is 0, -2 is 1) and clamped to size - 1.
+Axis gather_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const Ints* offset) {
+    if (wrap == Wrap::Repeat) return soa_axis(s, size, wrap, pot, splat(-1), Ints{}, offset);
+    const Floats fsize = to_float(size);
+    Axis a{};
+    if (wrap == Wrap::MirroredRepeat) {
+        const Floats half = (offset ? s + to_float(*offset) / fsize : s) * 0.5f;
+        const Floats m = half - round_even(half);
+        const Ints i0 = cvt_trunc(floor((m + m) * fsize - 0.5f)), i1 = i0 + 1;
+        a.i0 = imin(i0 ^ (i0 < 0), size - 1);
+        a.i1 = imin(i1 ^ (i1 < 0), size - 1);
+        return a;
+    }
+    Floats c = s * fsize;
+    if (offset) c = c + to_float(*offset);
+    c = maxps(c < fsize ? c : fsize, Floats{});
+    a.i0 = cvt_trunc(c - 0.5f);
+    a.i1 = imin(cvt_trunc(c + 0.5f), size - 1);
+    return a;
+}
+}  // namespace
+
+void gather_channel(const Texture& tex, const Gather& g) {
+    const std::array<bool, 3> pot = pot_sizes<2>(tex);
+    const LevelLanes lv = level_lanes(tex, Ints{});
+    for (int base = 0; base < g.lanes; base += L) {
+        const int n = std::min(g.lanes - base, L);
+        Axes<2> ax;
+        for (int i = 0; i < 2; ++i) {
+            Ints offset;
+            if (g.offset[std::size_t(i)]) offset = load_lanes<Ints>(g.offset[std::size_t(i)], base, n);
+            ax.a[i] = gather_axis(load_lanes(i == 0 ? g.s : g.t, base, n), size_of(lv, i), wrap_of(tex.sampler, i),
+                                  pot[std::size_t(i)], g.offset[std::size_t(i)] ? &offset : nullptr);
+        }
+        const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
+        const Uints order[4] = {k.k[0][1][0], k.k[0][1][1], k.k[0][0][1], k.k[0][0][0]};
+        for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
+    }
+}
+
+// lp_build_lod_selector with is_lodq (no fast path: log2 of rho^2 halved), and
+// lp_build_sample_common's level: 0 without mipmaps, lp_build_round (to even) then clamped to
+// [0, last] with NEAREST ones, clamped with LINEAR.
+void query_lod(const Texture& tex, const LodQuery& q) {
+    const Floats last = splat(float(int(tex.levels.size()) - 1));
+    for (int base = 0; base < q.lanes; base += L) {
+        const int n = std::min(q.lanes - base, L);
+        const Floats lod = fast_log2(load_lanes(q.rho2, base, n)) * 0.5f;
+        Floats level{};
+        if (tex.sampler.mip == MipFilter::Nearest) level = minps(maxps(round_even(lod), Floats{}), last);
+        if (tex.sampler.mip == MipFilter::Linear) level = minps(maxps(lod, Floats{}), last);
+        store_lanes(q.level, base, n, level);
+        store_lanes(q.lod, base, n, lod);
     }
 }
 

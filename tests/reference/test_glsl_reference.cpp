@@ -143,7 +143,13 @@ void main() {
     }
     color = vec4(w, dFdx(p.y * p.y), dFdy(sin(p.x)) * 0.5 + 0.5, 1.0);
 })",
-     7, "not yet explained: fwidth inside a loop that discarded lanes go on running as helpers, on 7 of 4096 pixels"},
+     // llvmpipe's discarded lanes do not advance the loop: their i stays 0, so a pixel whose quad
+     // neighbour discarded takes fwidth of p.x p.y (i + 1) against the neighbour's p.x p.y from
+     // the second iteration on, where quadshade's helper lanes carry the loop's i. A float model
+     // of the quads with discarded lanes kept at i = 0 gives llvmpipe's red on exactly these 7
+     // pixels, the one with helpers carrying i gives ours; w saturates elsewhere (red = w).
+     7, "llvmpipe's discarded lanes keep i = 0 in the loop, quadshade's helpers carry it: fwidth differs beside "
+        "them where w < 1, on 7 of 4096 pixels"},
     {"loop_that_never_ends", R"(
 in vec2 st;
 out vec4 color;
@@ -262,6 +268,36 @@ void main() {
 })"},
 };
 
+// GLSL 4.00's gathers and level-of-detail query: whole fragment shaders, drawn as the lookups
+// above. Each gather's four texels show in stripes; the gathers go past the texture's edges
+// under each wrap; the level of detail spans magnified and minified quads and every level.
+const LanguageCase kTextureQueries[] = {
+    {"texture_gather", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+void main() {
+    vec2 p = st * 3.0 - 1.0;
+    vec4 r = textureGather(teximage, p);
+    vec4 g = textureGather(teximage, p * 0.5 + 0.25, 1);
+    vec4 b = textureGatherOffset(teximage, p, ivec2(-3, 5), 2);
+    vec4 a = textureGatherOffset(teximage, p * 1.5, ivec2(7, -8), 3);
+    vec4 q = st.y < 0.5 ? (st.x < 0.5 ? r : g) : (st.x < 0.5 ? b : a);
+    color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
+})"},
+    {"texture_query_lod", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+uniform sampler3D volume;
+void main() {
+    vec2 p = st * exp2(st.x * 8.0 - 2.0);
+    vec2 a = textureQueryLod(teximage, p);
+    vec2 b = textureQueryLod(volume, vec3(p.yx, st.y * exp2(st.y * 6.0)));
+    color = vec4(a.x / 6.0, a.y / 16.0 + 0.5, st.x < 0.5 ? b.x / 6.0 : b.y / 16.0 + 0.5, 1.0);
+})"},
+};
+
 }  // namespace
 
 TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interpreter][reference]") {
@@ -287,7 +323,8 @@ TEST_CASE("the language where lanes diverge, run by the interpreter, matches OSM
     }
 }
 
-TEST_CASE("textureGrad and the Offset lookups, run by the interpreter, match OSMesa llvmpipe under each sampler",
+TEST_CASE("textureGrad, the Offset lookups, gathers and textureQueryLod, run by the interpreter, match OSMesa llvmpipe "
+          "under each sampler",
           "[interpreter][reference][textures]") {
     const std::filesystem::path dir = temp_dir("glsl-textures");
     const int size = 64;
@@ -326,6 +363,11 @@ TEST_CASE("textureGrad and the Offset lookups, run by the interpreter, match OSM
             const std::string name = std::string(c.name) + "-" + sc.name;
             check_against_llvmpipe(dir, *context, programs, size, name, std::string("#version 130") + c.source + "\n", c.over_1,
                                    c.cause, scene);
+        }
+        for (const LanguageCase& c : kTextureQueries) {
+            const std::string name = std::string(c.name) + "-" + sc.name;
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string("#version 400") + c.source + "\n",
+                                   c.over_1, c.cause, scene);
         }
     }
 }

@@ -30,6 +30,7 @@
 #include "translated_constant_vector_table/translated_constant_vector_table.h"
 #include "translated_texture_lookups/translated_texture_lookups.h"
 #include "translated_counted_loops/translated_counted_loops.h"
+#include "translated_texture_queries/translated_texture_queries.h"
 
 namespace {
 
@@ -242,4 +243,31 @@ TEST_CASE("a shader whose loops may reach llvmpipe's limit is not compiled: the 
                                                           "  while (true) { x += 1.0; if (x < -1.0) break; }\n"
                                                           "  gl_FragColor = vec4(x); }\n"};
     CHECK(compiled_glsl_program(never_ending, std::nullopt, "never", GlslWay::Compile) == nullptr);
+}
+
+TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter draws, to the bit, under each rule",
+          "[translate][textures]") {
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_queries.frag");
+    // GLSL 4.00 with the vertex stage the front end writes for it: a GLSL 1.50 and later one, whose
+    // gl_Position is gl_PerVertex's.
+    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
+    const std::string vertex = compiled_glsl.vertex.text;
+    const Program& interpreted = add_compiled_program(
+        std::make_unique<interpreter::GlslProgram>("interpreted texture_queries", std::move(compiled_glsl)),
+        "interpreted", vertex, frag.text);
+    const Program& compiled = add_compiled_program(
+        make_program<translated_texture_queries::TranslatedTextureQueries>(), "translated", vertex, frag.text);
+    // Mipmaps and a mirrored wrap, so that the gathers reach each wrap's code and the query each level.
+    Scene scene = load_scene(test::kPlane);
+    const Sampler mipmapped{Filter::Linear, Filter::NearestMipmapNearest, Wrap::MirroredRepeat, Wrap::ClampToEdge,
+                            Wrap::Repeat};
+    scene.textures.at(0).sampler = mipmapped;
+    Texture volume;
+    volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
+    volume.sampler = {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
+    volume.dims = 3, volume.depth = 32;
+    volume.field = "volume";
+    scene.textures.push_back(volume);
+    scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
+    test::check_same_pixels(scene, interpreted, compiled, "texture_queries");
 }

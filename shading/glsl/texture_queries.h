@@ -1,0 +1,148 @@
+#pragma once
+// GLSL 4.00's texture gathers and level-of-detail query on sampler2D and sampler3D, as Mesa's
+// llvmpipe answers them (lp_bld_sample_soa.c, lp_bld_sample.c): textureGather and
+// textureGatherOffset return one channel of the four texels a bilinear lookup of level 0 reads;
+// textureQueryLod the level of detail an implicit lookup computes, and the level it reads.
+//
+// Apart from texture.h so that what includes the lookups alone (every hand translation) does not
+// depend on these: the interpreter and generated translations include both.
+
+#include "shading/glsl/texture.h"
+
+namespace qs::glsl {
+
+namespace texture_detail {
+
+// textureGather's lanes: the texels a bilinear lookup at (s, t) reads at level 0, whatever the
+// sampler's filters, as llvmpipe's gather takes the linear path with no mipmaps; channel
+// `component` of each, in GL's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+struct Gather {
+    int lanes = 0;
+    const float* s = nullptr;
+    const float* t = nullptr;
+    std::array<const std::int32_t*, 2> offset{};  // texel offsets, or none
+    int component = 0;
+    std::array<float*, 4> out{};
+};
+void gather_channel(const Texture& tex, const Gather& gather);
+
+// textureQueryLod's lanes from the implicit level's squared scale factor `rho2` (Lookup's):
+// `lod` = log2(rho) as llvmpipe computes it (lp_build_fast_log2 of rho^2, halved), and `level`
+// the mipmap level it reads (0 without mipmaps; rounded to even and clamped to the levels with
+// NEAREST mipmaps, clamped with LINEAR).
+struct LodQuery {
+    int lanes = 0;
+    const float* rho2 = nullptr;
+    float* level = nullptr;
+    float* lod = nullptr;
+};
+void query_lod(const Texture& tex, const LodQuery& query);
+
+// The implicit level's squared scale factor per lane, as `lookup` computes it: per quad from the
+// quad's coordinates, or from Dual2's carried partials. `cases`: the lanes a Checked quad read.
+template <Number F, std::size_t Dims>
+void implicit_rho2(const std::array<F, Dims>& coord, const Texture& tex, float* rho2,
+                   [[maybe_unused]] LaneCases& cases) {
+    const std::array<float, 3> size{float(tex.width), float(tex.height), float(tex.depth)};
+    if constexpr (is_dual2<F>::value) {
+        using T = typename F::value_type;
+        T x, y;
+        for (std::size_t k = 0; k < Dims; ++k) {
+            const T w(size[k]);
+            T a = w * coord[k].dx, b = w * coord[k].dy;
+            a = a * a, b = b * b;
+            x = k == 0 ? a : x + a;
+            y = k == 0 ? b : y + b;
+        }
+        to_floats(T(select(x > y, x, y)), rho2);
+    } else if constexpr (QuadNumber<F>) {
+        using V = typename float_lanes<F>::type;
+        if constexpr (std::is_same_v<V, F>) {
+            const F r = quad_rho2(coord, size);
+            to_floats(r, rho2);
+            if constexpr (is_checked_v<F>) cases = r.cases;
+        } else {
+            constexpr int N = lanes_of<F>();
+            alignas(64) float c[3][N];
+            std::array<V, Dims> narrow;
+            for (std::size_t k = 0; k < Dims; ++k) to_floats(coord[k], c[k]), narrow[k] = from_floats<V>(c[k]);
+            to_floats(quad_rho2(narrow, size), rho2);
+        }
+    } else {
+        throw_lod_without_quads();
+    }
+}
+
+// Floats as F, with a Checked result's cases; constants under Dual2 (a gathered texel, a level
+// of detail taken once per quad).
+template <Number F>
+F constant_lanes(const float* v, [[maybe_unused]] LaneCases cases) {
+    if constexpr (is_dual2<F>::value) {
+        using T = typename F::value_type;
+        return F(from_floats<T>(v), T(0.0f), T(0.0f));
+    } else if constexpr (is_checked_v<F>) {
+        return F(from_floats<F>(v).v, cases);
+    } else {
+        return from_floats<F>(v);
+    }
+}
+
+template <Number F>
+vec4<F> gather_lanes(const Texture& tex, const vec2<F>& p, const ivec2<F>* offset, int component) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float s[N], t[N], out[4][N];
+    alignas(64) std::int32_t o[2][N];
+    to_floats(p.x, s), to_floats(p.y, t);
+    Gather g;
+    g.lanes = N, g.s = s, g.t = t, g.component = component;
+    LaneCases cases = cases_of(p.x) | cases_of(p.y);
+    if (offset) {
+        to_ints(offset->x, o[0]), to_ints(offset->y, o[1]);
+        g.offset = {o[0], o[1]};
+        cases = cases | cases_of(offset->x) | cases_of(offset->y);
+    }
+    for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
+    gather_channel(tex, g);
+    return vec4<F>(constant_lanes<F>(out[0], cases), constant_lanes<F>(out[1], cases), constant_lanes<F>(out[2], cases),
+                   constant_lanes<F>(out[3], cases));
+}
+
+template <Number F, std::size_t Dims>
+vec2<F> lod_query(const Texture& tex, const std::array<F, Dims>& coord) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float rho2[N], level[N], lod[N];
+    LaneCases cases;
+    implicit_rho2(coord, tex, rho2, cases);
+    query_lod(tex, {N, rho2, level, lod});
+    return vec2<F>(constant_lanes<F>(level, cases), constant_lanes<F>(lod, cases));
+}
+
+}  // namespace texture_detail
+
+// textureGather(s, P [, comp]): channel `comp` (0: red, a constant) of the four texels a bilinear
+// lookup at P reads on level 0, in GL's order (i0 j1, i1 j1, i1 j0, i0 j0). The texels are
+// constants: under Dual2 the result's derivatives are 0.
+template <Number F>
+vec4<F> textureGather(const sampler2D& tex, const vec2<F>& p, int comp = 0) {
+    return texture_detail::gather_lanes<F>(tex, p, nullptr, comp);
+}
+// ... with texel offsets added as a lookup's are.
+template <Number F>
+vec4<F> textureGatherOffset(const sampler2D& tex, const vec2<F>& p, const ivec2<F>& offset, int comp = 0) {
+    return texture_detail::gather_lanes<F>(tex, p, &offset, comp);
+}
+
+// textureQueryLod(s, P): (the mipmap level an implicit lookup at P reads, its level of detail
+// relative to the base level), as llvmpipe computes them, one per quad. Needs the quad's
+// derivatives (quads, or Dual2's partials); the result is constant over the quad: its Dual2
+// derivatives are 0.
+template <Number F>
+vec2<F> textureQueryLod(const sampler2D& tex, const vec2<F>& p) {
+    return texture_detail::lod_query<F, 2>(tex, texture_detail::coords(p));
+}
+template <Number F>
+vec2<F> textureQueryLod(const sampler3D& tex, const vec3<F>& p) {
+    return texture_detail::lod_query<F, 3>(tex, texture_detail::coords(p));
+}
+
+}  // namespace qs::glsl
