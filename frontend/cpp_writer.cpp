@@ -151,13 +151,13 @@ std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
 
 bool is_assignment(TOperator op) { return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign; }
 
-// A for loop as glslang nests it: its initialiser (one declarator) and the loop.
 // GLSL 1.50's block of the vertex stage's built-in outputs (gl_Position, gl_PointSize,
 // gl_ClipDistance[]), which the translation writes as its gl_Position alone.
 bool is_per_vertex_block(const TType& t) {
     return t.getBasicType() == glslang::EbtBlock && std::string(t.getTypeName().c_str()) == "gl_PerVertex";
 }
 
+// A for loop as glslang nests it: its initialiser (one declarator) and the loop.
 bool is_for_sequence(TIntermAggregate* a) {
     if (!a || a->getOp() != glslang::EOpSequence) return false;
     const std::vector<TIntermNode*> s = statements_of(a);
@@ -1267,15 +1267,15 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         if (auto* u = t->getAsUnaryNode(); u && u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) {
             const bool inc = u->getOp() == glslang::EOpPostIncrement || u->getOp() == glslang::EOpPreIncrement;
             auto* sym = u->getOperand()->getAsSymbolNode();
-            const bool plain = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            const bool plain_counter = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
             const glslang::TBasicType bt = u->getOperand()->getType().getBasicType();
             const std::string one = bt == glslang::EbtFloat ? "1.0f" : scalar_type(bt, u) + "(1)";
-            step = plain ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
+            step = plain_counter ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
         } else if (auto* b = t->getAsBinaryNode(); b && b->getLeft()->getType().isScalar() && step_operator(b->getOp())) {
             Expr r = expr(b->getRight());
             auto* sym = b->getLeft()->getAsSymbolNode();
-            const bool plain = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
-            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !plain) {
+            const bool plain_counter = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !plain_counter) {
                 r = as_typed(b->getRight(), b->getRight()->getType());
             }
             step = lvalue(b->getLeft()) + step_operator(b->getOp()) + r.text;
