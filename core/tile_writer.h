@@ -79,6 +79,7 @@ public:
     }
 
     const Counts& counts() const { return counts_; }
+    bool clears() const { return clears_; }
 
 protected:
     // Shades in_[0] into out_[0] with draw d; `lanes`: how many lanes are fragments.

@@ -78,7 +78,7 @@ public:
 
     // Clears the blocks no triangle wrote and stores the depth.
     void finish() {
-        if (!touched_.all()) {
+        if (clears() && !touched_.all()) {
             for (int block = 0; block < kTileBlocks; ++block) {
                 if (!touched_[std::size_t(block)]) clear_block(block_x(block), block_y(block), RowStores::Streamed);
             }
