@@ -16,12 +16,11 @@
 
 #include "core/block_layout.h"
 #include "core/block_rows.h"
-#include "core/float_environment.h"
 #include "core/lane_batch.h"
 #include "core/lanes16.h"
-#include "core/parallel.h"
 #include "core/prepared_draw.h"
-#include "core/tile_loop.h"
+#include "core/tile_frame.h"
+#include "core/tile_writer.h"
 #include "core/vertex_stage.h"
 #include "raster/clipper.h"
 #include "raster/depth_buffer.h"
@@ -51,25 +50,23 @@ bool misses_tile(const TriangleSetup& t, int x0, int y0) {
 }
 
 // Renders the triangles of one tile, in submission order, straight into the tile's part of the
-// framebuffer (no thread else writes there, so the result is the same for any thread count).
-// A whole block's colour is transposed in registers from lane order into its four pixel rows,
-// streamed past the caches (cache_lines.h) where they are final: the tile's last triangle
-// writing a block no other wrote, and the clear colour of blocks none wrote (streaming more, or
-// from a tile buffer, measures slower: docs/design.md, The renderer core).
+// framebuffer (no thread else writes there, so the result is the same for any thread count),
+// through its TileWriter. Whole blocks' rows are streamed past the caches where they are final:
+// the tile's last triangle writing a block no other wrote, and the clear colour of blocks none
+// wrote (streaming more, or from a tile buffer, measures slower: docs/design.md, The renderer
+// core).
 // Blocks are cleared lazily: a block's first partial write clears it first, blocks never
 // written are cleared by finish(), and a block covered at once is never cleared at all.
 // Depth, when the frame needs it, stays tile-local in lane order, as the 24-bit values the
 // reference's depth buffer holds (depth_buffer.h), and is stored once at the end.
-class TileRenderer {
+class TileRenderer : public TileWriter {
 public:
     // `clear`: the colour of what no triangle writes (none: the framebuffer keeps it);
     // `depth_test`: LESS test and depth write, for every draw of the frame or none; `fused`: fused
     // plane evaluation; `general`: every depth tested, even where it provably passes.
     TileRenderer(Framebuffer& fb, const std::vector<PreparedDraw>& draws, const std::optional<glm::vec4>& clear,
                  bool depth_test, bool fused, bool general)
-        : fb_(fb), draws_(draws), clears_(clear.has_value()), depth_test_(depth_test), fused_(fused), general_(general) {
-        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear ? (*clear)[i % 4] : 0.0f;
-    }
+        : TileWriter(fb, clear), draws_(draws), depth_test_(depth_test), fused_(fused), general_(general) {}
 
     // Starts the tile whose top-left pixel is (x0, y0); one renderer per thread renders its tiles
     // one after the other.
@@ -81,9 +78,9 @@ public:
 
     // Clears the blocks no triangle wrote and stores the depth.
     void finish() {
-        if (clears_ && !touched_.all()) {
+        if (clears() && !touched_.all()) {
             for (int block = 0; block < kTileBlocks; ++block) {
-                if (!touched_[std::size_t(block)]) clear_block(block, RowStores::Streamed);
+                if (!touched_[std::size_t(block)]) clear_block(block_x(block), block_y(block), RowStores::Streamed);
             }
         }
         if (fb_.depth.empty()) return;
@@ -145,8 +142,7 @@ public:
             } else {
                 shade_tile<false>(x0, y0);
             }
-            if (d.quads) quads_ += std::uint64_t(kTileBlocks * kBatchQuads);
-            lanes_ += std::uint64_t(kTilePixels);
+            if (d.quads) count_quads(kTileBlocks * kBatchQuads);
             return;
         }
         // Each edge function at the blocks' top-left pixels, stepped block to block, and its
@@ -179,11 +175,22 @@ public:
         return true;
     }
 
-    std::uint64_t quads() const { return quads_; }
-    std::uint64_t lanes() const { return lanes_; }
-    std::uint64_t written() const { return written_; }
-
 private:
+    // A whole block waiting to be shaded with the next (shade_block): its top-left pixel packed in
+    // one word, stored and loaded whole. Stored as two ints and loaded as one 8-byte pair, it
+    // would be a load the store buffer cannot forward, waiting for every older store to reach the
+    // cache, the previous pair's framebuffer rows among them (docs/design.md, The renderer core).
+    struct WaitingBlock {
+        std::uint64_t at;
+        std::uint32_t mask;  // the lanes that write
+
+        static std::uint64_t pack(int bx, int by) {
+            return std::uint64_t(std::uint32_t(bx)) | std::uint64_t(std::uint32_t(by)) << 32;
+        }
+        int bx() const { return int(std::uint32_t(at)); }
+        int by() const { return int(std::uint32_t(at >> 32)); }
+    };
+
     struct BlockEdges {
         std::int64_t at[3];     // edge k at the block's top-left pixel centre
         std::int64_t most[3];   // the largest offset from there over the block's pixel centres
@@ -213,7 +220,7 @@ private:
             // A quad runs when any of its lanes writes; its other lanes are helpers. Blocks whose
             // four quads all run are shaded as they are, the others' running quads are gathered.
             const std::uint32_t running = running_quads(mask);
-            quads_ += std::uint64_t(std::popcount(running) / 4);
+            count_quads(std::uint64_t(std::popcount(running) / 4));
             if (running == kAllLanes) {
                 shade_block(bx, by, mask);
                 return;
@@ -261,14 +268,14 @@ private:
     template <class Fill>
     [[gnu::always_inline]] void shade_tile_with(int x0, int y0, const Fill& fill) {
         static_assert(kTileColumns % 2 == 0);
-        const Program& program = *draw_->call->program;
+        const PreparedDraw& draw = *draw_;
         for (int by = y0; by < y0 + kTileSize; by += kBlock) {
             const lanes16::Floats y = lanes_y(by);
             for (int column = 0; column < kTileColumns; column += 2) {
                 const int bx = x0 + kBlock * column;
                 fill(in_[0], column, y);
                 fill(in_[1], column + 1, y);
-                program.shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
+                shade_pair(draw);
                 tile_block(0, bx, by);
                 tile_block(1, bx + kBlock, by);
             }
@@ -292,10 +299,9 @@ private:
         }
         const int block = block_base(bx, by) / kBatchLanes;
         const bool final = last_ && !touched_[std::size_t(block)];
-        store_block(fb_, bx, by, out_[h], draw_->mode.check_undefined, final ? RowStores::Streamed : RowStores::Cached);
+        TileWriter::write_whole(*draw_, h, bx, by, final ? RowStores::Streamed : RowStores::Cached);
         touched_[std::size_t(block)] = true;
         if (depth_test_) lanes16::store(&depth_[block * kBatchLanes], depth24(lanes16::load(in_[h].frag_coord[2])));
-        written_ += kBatchLanes;
     }
 
     // The framebuffer x and y of the lanes of the block whose top-left pixel is (bx, by).
@@ -307,25 +313,26 @@ private:
     // for flush_blocks() at the end of the triangle. The two are different pixels of one triangle,
     // so the order they are written in does not matter.
     void shade_block(int bx, int by, std::uint32_t mask) {
-        if (!waiting_) {
-            waiting_ = true, waiting_at_ = WaitingBlock::pack(bx, by), waiting_mask_ = mask;
-            return;
-        }
-        const WaitingBlock first = take_waiting();
-        interpolate_block(in_[0], first.bx, first.by);
-        interpolate_block(in_[1], bx, by);
-        draw_->call->program->shade_pair(draw_->mode, in_[0], in_[1], draw_->call->uniforms, out_[0], out_[1]);
-        write_block(0, first.bx, first.by, first.mask);
-        write_block(1, bx, by, mask);
+        pairs_.next() = {WaitingBlock::pack(bx, by), mask};
+        pairs_.add([](const WaitingBlock&, const WaitingBlock&) { return true; },
+                   [&](const WaitingBlock& first, const WaitingBlock& second) {
+                       interpolate_block(in_[0], first.bx(), first.by());
+                       interpolate_block(in_[1], second.bx(), second.by());
+                       shade_pair(*draw_);
+                       write_block(0, first.bx(), first.by(), first.mask);
+                       write_block(1, second.bx(), second.by(), second.mask);
+                   },
+                   [&](const WaitingBlock& b) { shade_alone(b); });
     }
 
     // Shades the block left waiting, if any.
     void flush_blocks() {
-        if (!waiting_) return;
-        const WaitingBlock b = take_waiting();
-        interpolate_block(in_[0], b.bx, b.by);
-        draw_->call->program->shade(draw_->mode, in_[0], draw_->call->uniforms, out_[0]);
-        write_block(0, b.bx, b.by, b.mask);
+        pairs_.flush([&](const WaitingBlock& b) { shade_alone(b); });
+    }
+    void shade_alone(const WaitingBlock& b) {
+        interpolate_block(in_[0], b.bx(), b.by());
+        shade(*draw_);
+        write_block(0, b.bx(), b.by(), b.mask);
     }
 
     void interpolate_block(FragmentBatch& in, int bx, int by) { interpolate(in, lanes_x(bx), lanes_y(by)); }
@@ -334,7 +341,6 @@ private:
     // that write.
     void write_block(int h, int bx, int by, std::uint32_t mask) {
         const ColorBatch& out = out_[h];
-        lanes_ += kBatchLanes;
         mask &= ~out.discarded;  // GLSL discard: no colour, no depth
         if (mask != kAllLanes) {
             for (int i = 0; i < kBatchLanes; ++i) {
@@ -393,54 +399,29 @@ private:
         const Ints used = kLane < b.count;
         const Ints x = load(b.x), y = load(b.y);
         interpolate(in_[0], to_float(used ? x : Ints{} + x[0]), to_float(used ? y : Ints{} + y[0]));
-        draw_->call->program->shade(draw_->mode, in_[0], draw_->call->uniforms, out_[0]);
-        lanes_ += std::uint64_t(b.count);
+        shade(*draw_, b.count);
         const std::uint32_t write = b.write & ~out_[0].discarded;  // GLSL discard: no colour, no depth
         for (int i = 0; i < b.count; ++i) {
             if (write >> i & 1) write_lane(0, i, b.x[i], b.y[i]);
         }
     }
 
-    // Writes lane i of batch h's colour (and depth, and undefined cases) to pixel (x, y).
+    // Writes lane i of batch h (and its depth) to pixel (x, y), clearing its block first if
+    // nothing wrote it yet.
     void write_lane(int h, int i, int x, int y) {
         const int t = tile_index(x, y);
-        if (!touched_[std::size_t(t / kBatchLanes)]) {
-            clear_block(t / kBatchLanes, RowStores::Cached);
-            touched_[std::size_t(t / kBatchLanes)] = true;
+        const int block = t / kBatchLanes;
+        if (!touched_[std::size_t(block)]) {
+            clear_block(block_x(block), block_y(block), RowStores::Cached);
+            touched_[std::size_t(block)] = true;
         }
-        float* p = fb_.pixel(x, y);
-        const bool blend = draw_->call->blend;
-        if (blend) {
-            const float a = out_[h].rgba[3][i];
-            for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i] * a + p[c] * (1.0f - a);
-        } else {
-            for (int c = 0; c < 4; ++c) p[c] = out_[h].rgba[c][i];
-        }
-        if (draw_->mode.check_undefined) *undefined_at(x, y) = out_[h].undefined[i];
-        if (depth_test_ && !blend) depth_[t] = depth24(in_[h].frag_coord[2][i]);
-        ++written_;
+        TileWriter::write_lane(*draw_, h, i, x, y);
+        if (depth_test_ && !draw_->call->blend) depth_[t] = depth24(in_[h].frag_coord[2][i]);
     }
 
     // Framebuffer position of a tile block's top-left pixel.
     int block_x(int block) const { return x0_ + (block % (kTileSize / kBlock)) * kBlock; }
     int block_y(int block) const { return y0_ + (block / (kTileSize / kBlock)) * kBlock; }
-
-    // Writes the clear colour into the block's pixels that lie inside the framebuffer (where the
-    // frame clears).
-    void clear_block(int block, RowStores stores) {
-        if (!clears_) return;
-        const int x = block_x(block), y = block_y(block);
-        const int n = std::min(kBlock, fb_.width - x);
-        const bool whole = n == kBlock && y >= 0 && y + kBlock <= fb_.height;
-        if (whole) fill_block_rows(fb_, x, y, clear_row_, stores);
-        for (int r = 0; r < kBlock; ++r) {
-            if (n <= 0 || y + r < 0 || y + r >= fb_.height) continue;
-            if (!whole) std::memcpy(fb_.pixel(x, y + r), &clear_row_, 4 * std::size_t(n) * sizeof(float));
-            if (!fb_.undefined.empty()) std::fill_n(undefined_at(x, y + r), n, std::uint8_t(0));
-        }
-    }
-
-    std::uint8_t* undefined_at(int x, int y) { return &fb_.undefined[fb_.index(x, y)]; }
 
     // Index in the tile of lane 0 of the block holding pixel (x, y).
     int block_base(int x, int y) const {
@@ -455,43 +436,17 @@ private:
     static constexpr int kTilePixels = kTileSize * kTileSize;
     static constexpr int kTileBlocks = kTilePixels / kBatchLanes;
     static constexpr int kTileColumns = kTileSize / kBlock;  // columns of blocks
-    Framebuffer& fb_;
     const std::vector<PreparedDraw>& draws_;
-    lanes16::Floats clear_row_;  // four pixels of the clear colour
-    bool clears_;                // false: what no triangle writes keeps its colour
     bool depth_test_, fused_, general_;
     bool last_ = false;  // render()'s
     int x0_ = 0, y0_ = 0;
     std::bitset<kTileBlocks> touched_;  // blocks holding their final pixels or the clear colour
     alignas(64) float depth_[kTilePixels];  // 24-bit depths (depth24), exact in float
-    std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
     const PreparedDraw* draw_ = nullptr;
     FragmentInputs inputs_;  // the current triangle's
     LaneBatch pending_;
     bool frag_coord_set_ = true;  // in_[].frag_coord may hold numbers (it starts uninitialised)
-    // The whole block waiting to be shaded with the next (shade_block), while waiting_: its
-    // top-left pixel packed in one word, stored and loaded whole. Stored as two ints and loaded as
-    // one 8-byte pair, it would be a load the store buffer cannot forward, waiting for every older
-    // store to reach the cache, the previous pair's framebuffer rows among them (docs/design.md,
-    // The renderer core).
-    struct WaitingBlock {
-        int bx, by;
-        std::uint32_t mask;
-
-        static std::uint64_t pack(int bx, int by) {
-            return std::uint64_t(std::uint32_t(bx)) | std::uint64_t(std::uint32_t(by)) << 32;
-        }
-    };
-    WaitingBlock take_waiting() {
-        waiting_ = false;
-        return {int(std::uint32_t(waiting_at_)), int(std::uint32_t(waiting_at_ >> 32)), waiting_mask_};
-    }
-    bool waiting_ = false;
-    std::uint64_t waiting_at_ = 0;
-    std::uint32_t waiting_mask_ = 0;
-    // Two batches: the gathered batch uses the first, pairs of whole blocks both.
-    FragmentBatch in_[2];
-    ColorBatch out_[2];
+    BlockPairs<WaitingBlock> pairs_;
 };
 
 }  // namespace
@@ -510,21 +465,15 @@ namespace {
 void rasterize_frame(Framebuffer& fb, int width, int height, const std::optional<glm::vec4>& clear, bool depth_test,
                      std::span<const DrawCall> draws, const RasterOptions& options, RenderStats* stats_out, RowBand band,
                      RasterMemory* memory) {
-    check_image_size(width, height);
-    band = checked_band(band, height, options.pairing);
-    const std::vector<PreparedDraw> prepared = prepare_draws(
-        draws, {options.derivatives, options.precision, options.check_undefined, options.force_general_path});
-    const ThreadLimit limit(options.threads);
-
-    RenderStats stats;
-    // Vertex stage, clipping and setup, per draw, triangles kept in submission order; with
-    // denormals flushed, as Mesa's draw module runs them.
+    TileFrame frame(width, height, band, draws, options, options.force_general_path);
+    const std::vector<PreparedDraw>& prepared = frame.draws();
+    RenderStats& stats = frame.stats();
+    // Vertex stage, clipping and setup, per draw, triangles kept in submission order.
     const Viewport viewport(width, height);
     RasterMemory own;
     RasterMemory& kept = memory ? *memory : own;
     std::vector<TriangleSetup>& triangles = kept.triangles;
     triangles.clear();
-    const FlushDenormals ftz;
     for (std::size_t di = 0; di < prepared.size(); ++di) {
         const DrawCall& call = *prepared[di].call;
         const std::vector<VertexOut> outs = run_vertex_stage(call);
@@ -537,11 +486,6 @@ void rasterize_frame(Framebuffer& fb, int width, int height, const std::optional
         for (std::size_t i = 0; i + 2 < call.indices.size(); i += 3) {
             ++stats.triangles_in;
             const std::uint32_t a = call.indices[i], b = call.indices[i + 1], c = call.indices[i + 2];
-            if (a >= verts.size() || b >= verts.size() || c >= verts.size()) {
-                throw std::invalid_argument("triangle " + std::to_string(i / 3) + " indexes vertex " +
-                                            std::to_string(std::max({a, b, c})) + " of " +
-                                            std::to_string(verts.size()));
-            }
             clipped.clear();
             clip_triangle(verts[a], verts[b], verts[c], prepared[di].varyings, viewport, clipped,
                           {call.clip_distances, prepared[di].noperspective});
@@ -558,12 +502,11 @@ void rasterize_frame(Framebuffer& fb, int width, int height, const std::optional
     // Depth is tested for every draw or none: GL tests it always, and leaving it out is only
     // allowed where it provably changes nothing (depth_buffer.h).
     const bool depth = depth_test && (options.force_general_path || kept.depth.matters(triangles, width, height));
-    stats.depth_buffer = depth;
 
     // Binning: bins[i] holds the triangles that may touch tile i of the band, in submission order:
     // those whose bounding box reaches the tile, less those its edges keep out of it (a tile's
     // last triangle streams its rows, TileRenderer).
-    const TileGrid grid(width, height, options.pairing, band);
+    const TileGrid& grid = frame.grid();
     std::vector<std::vector<std::uint32_t>>& bins = kept.bins;
     bins.resize(std::size_t(grid.count()));
     for (std::vector<std::uint32_t>& bin : bins) bin.clear();
@@ -579,10 +522,8 @@ void rasterize_frame(Framebuffer& fb, int width, int height, const std::optional
         }
     }
 
-    // Every pixel is stored by its tile, or kept: reuse the caller's memory, no clearing pass.
-    fb.hold(width, height, band, depth, options.check_undefined);
-    const auto tiles = for_each_tile<TileRenderer>(
-        grid,
+    frame.render_tiles<TileRenderer>(
+        fb, depth,
         [&] {
             return std::make_unique<TileRenderer>(fb, prepared, clear, depth, options.fused_interpolation,
                                                   options.force_general_path);
@@ -595,9 +536,8 @@ void rasterize_frame(Framebuffer& fb, int width, int height, const std::optional
                 tile.render(triangles[bin[k]], x0, y0, x0 + kTileSize - 1, y0 + kTileSize - 1, k + 1 == bin.size());
             }
             tile.finish();
-        });
-    for (const auto& tile : tiles) stats.add_work(tile->quads(), tile->lanes(), tile->written());
-    if (stats_out) *stats_out = stats;
+        },
+        stats_out);
 }
 
 }  // namespace

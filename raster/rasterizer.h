@@ -2,7 +2,7 @@
 // The 2x2-quad rasterizer: draw calls in, a framebuffer out, as a GL driver would produce it.
 //
 // Pipeline per frame: vertex stage (per vertex, in parallel) -> clipping (clipper.h) -> triangle
-// setup -> binning into 64x64 tiles (core/tile_grid.h) -> tiles in parallel (core/tile_loop.h),
+// setup -> binning into 64x64 tiles (core/tile_grid.h) -> tiles in parallel (core/tile_frame.h),
 // each tile's triangles in submission order -> quads (or single pixels for derivative-free
 // shaders) batched kBatchLanes lanes at a time -> early depth test (unless no two triangles overlap: depth_buffer.h) -> shading -> colour
 // and depth writes for covered lanes only.

@@ -19,9 +19,10 @@
 #include "core/block_layout.h"
 #include "core/block_rows.h"
 #include "core/lane_batch.h"
-#include "core/parallel.h"
+#include "core/float_environment.h"
 #include "core/prepared_draw.h"
-#include "core/tile_loop.h"
+#include "core/tile_frame.h"
+#include "core/tile_writer.h"
 #include "core/vertex_stage.h"
 #include "raycast/embree_scene.h"
 #include "raycast/eye.h"
@@ -105,13 +106,12 @@ struct HitBatch {
 };
 
 // Casts and shades the tiles of one thread, one after the other (tile_loop.h).
-class TileCaster {
+class TileCaster : public TileWriter {
 public:
     TileCaster(Framebuffer& fb, const EmbreeScene& bvh, const Eye& eye, const std::vector<PreparedDraw>& draws,
                const std::vector<Mesh>& meshes, const BlockCoverage& covered, glm::vec4 clear)
-        : fb_(fb), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), covered_(covered), pending_(draws.size()) {
-        for (int i = 0; i < kBatchLanes; ++i) clear_row_[i] = clear[i % 4];
-    }
+        : TileWriter(fb, clear), bvh_(bvh), eye_(eye), draws_(draws), meshes_(meshes), covered_(covered),
+          pending_(draws.size()) {}
 
     // Casts, shades and writes the tile whose top-left pixel is (x0, y0).
     void tile(int x0, int y0) {
@@ -121,10 +121,6 @@ public:
         finish();
         cast_past_discards();
     }
-
-    std::uint64_t quads() const { return quads_; }
-    std::uint64_t lanes() const { return lanes_; }
-    std::uint64_t written() const { return written_; }
 
 private:
     // Pixel centres in GL window coordinates.
@@ -158,7 +154,7 @@ private:
         if (only && tnear) return clear_lanes(bx, by, rays.active);
         // Every lane's ray; Embree reads the active ones. They are computed where the block would
         // wait, should it be whole.
-        WholeBlock& whole = whole_[waiting_ ? 1 - first_ : first_];
+        WholeBlock& whole = pairs_.next();
         BlockRays& cast = whole.cast;
         cast.w = centres(bx + lanes16::load(kLaneDx), by + lanes16::load(kLaneDy));
         cast.r = eye_.rays(cast.w.x, cast.w.y);
@@ -190,7 +186,7 @@ private:
                 b.lane[i] = std::uint8_t(i), b.primitive[i] = hits.primitive[i], b.t[i] = hits.t[i];
             }
             b.lanes.count = kBatchLanes, b.lanes.write = kAllLanes;
-            if (draws_[whole.draw].quads) quads_ += kBatchQuads;
+            if (draws_[whole.draw].quads) count_quads(kBatchQuads);
             whole_block_cast();
             return;
         }
@@ -210,27 +206,8 @@ private:
                     const int at = 4 * q + k;
                     if (d.quads || (owned >> k & 1)) append(g, at, bx + kLaneDx[at], by + kLaneDy[at], p, hits.t[at], owned >> k & 1);
                 }
-                quads_ += d.quads;
+                count_quads(d.quads);
             }
-        }
-    }
-
-    // Writes the clear colour into the lanes `lanes` of the block at (bx, by).
-    void clear_lanes(int bx, int by, std::uint32_t lanes) {
-        if (lanes == kAllLanes) {
-            // A whole block (it lies inside the image): four rows, streamed, as every whole block
-            // (a ray caster writes each pixel once a frame).
-            fill_block_rows(fb_, bx, by, clear_row_, RowStores::Streamed);
-            if (!fb_.undefined.empty()) {
-                for (int r = 0; r < kBlock; ++r) std::fill_n(undefined_at(bx, by + r), kBlock, std::uint8_t(0));
-            }
-            return;
-        }
-        for (std::uint32_t m = lanes; m != 0; m &= m - 1) {
-            const int i = std::countr_zero(m);
-            float* p = fb_.pixel(bx + kLaneDx[i], by + kLaneDy[i]);
-            std::memcpy(p, &clear_row_, 4 * sizeof(float));
-            if (!fb_.undefined.empty()) *undefined_at(bx + kLaneDx[i], by + kLaneDy[i]) = 0;
         }
     }
 
@@ -248,49 +225,39 @@ private:
         return lanes16::equal(primitive, first) == kAllLanes;
     }
 
-    // A whole block was cast into the free one of whole_. Whole blocks are shaded two at a time
-    // (Program::shade_pair), as the rasterizer shades them: the first waits for the next of
-    // the same draw, or for finish().
+    // A whole block was cast into pairs_.next(). Whole blocks are shaded two at a time, as the
+    // rasterizer shades them: the first waits for the next of the same draw, or for finish().
     void whole_block_cast() {
-        if (!waiting_) {
-            waiting_ = true;
-            return;
-        }
-        const WholeBlock &first = whole_[first_], &second = whole_[1 - first_];
-        if (first.draw != second.draw) {
-            // The first is shaded alone; the second waits in its place.
-            shade_whole(first_);
-            first_ = 1 - first_;
-            return;
-        }
-        const PreparedDraw& d = draws_[first.draw];
-        set_up(d, meshes_[first.draw], first.batch, &first.cast, in_[0]);
-        set_up(d, meshes_[second.draw], second.batch, &second.cast, in_[1]);
-        d.call->program->shade_pair(d.mode, in_[0], in_[1], d.call->uniforms, out_[0], out_[1]);
-        lanes_ += 2 * kBatchLanes;
-        write_whole(first, out_[0]);
-        write_whole(second, out_[1]);
-        waiting_ = false;
+        pairs_.add([](const WholeBlock& first, const WholeBlock& second) { return first.draw == second.draw; },
+                   [&](const WholeBlock& first, const WholeBlock& second) {
+                       const PreparedDraw& d = draws_[first.draw];
+                       set_up(d, meshes_[first.draw], first.batch, &first.cast, in_[0]);
+                       set_up(d, meshes_[second.draw], second.batch, &second.cast, in_[1]);
+                       shade_pair(d);
+                       write_whole(first, 0);
+                       write_whole(second, 1);
+                   },
+                   [&](const WholeBlock& w) { shade_whole(w); });
     }
 
-    // Shades and writes whole_[i] alone.
-    void shade_whole(int i) {
-        const WholeBlock& w = whole_[i];
+    // Shades and writes whole block w alone.
+    void shade_whole(const WholeBlock& w) {
         shade(w.draw, w.batch, &w.cast);
-        write_whole(w, out_[0]);
+        write_whole(w, 0);
     }
 
-    void write_whole(const WholeBlock& w, const ColorBatch& out) {
-        if (out.discarded != 0) return write(w.draw, w.batch, out);
-        // The block lies inside the image (every lane was cast): four rows at once.
-        store_block(fb_, w.bx, w.by, out, draws_[w.draw].mode.check_undefined, RowStores::Streamed);
-        written_ += kBatchLanes;
+    // Writes out_[h], shaded for whole block w: four rows at once (it lies inside the image:
+    // every lane was cast), streamed, as every whole block (a ray caster writes each pixel once a
+    // frame).
+    void write_whole(const WholeBlock& w, int h) {
+        if (out_[h].discarded != 0) return write(w.draw, w.batch, h);
+        TileWriter::write_whole(draws_[w.draw], h, w.bx, w.by, RowStores::Streamed);
     }
 
     // Shades what waits: the gathered batches and a whole block.
     void finish() {
         for (std::size_t g = 0; g < pending_.size(); ++g) flush(g);
-        if (waiting_) shade_whole(first_), waiting_ = false;
+        pairs_.flush([&](const WholeBlock& w) { shade_whole(w); });
     }
 
     // GLSL discard leaves the pixel to whatever lies behind: the rays of discarded fragments
@@ -428,7 +395,7 @@ private:
         if (b.lanes.count == 0) return;
         b.lanes.pad();
         shade(g, b, nullptr);
-        write(g, b, out_[0]);
+        write(g, b, 0);
         b.lanes.clear();
     }
 
@@ -436,51 +403,37 @@ private:
     void shade(std::size_t g, const HitBatch& b, const BlockRays* cast) {
         const PreparedDraw& d = draws_[g];
         set_up(d, meshes_[g], b, cast, in_[0]);
-        d.call->program->shade(d.mode, in_[0], d.call->uniforms, out_[0]);
-        lanes_ += std::uint64_t(b.lanes.count);
+        TileWriter::shade(d, b.lanes.count);
     }
 
-    // Writes the lanes of batch b of draw g, shaded into `out`, lane by lane; the ones that
+    // Writes the lanes of batch b of draw g, shaded into out_[h], lane by lane; the ones that
     // discarded wait to be cast again.
-    void write(std::size_t g, const HitBatch& b, const ColorBatch& out) {
+    void write(std::size_t g, const HitBatch& b, int h) {
         const PreparedDraw& d = draws_[g];
         const LaneBatch& at = b.lanes;
         for (int i = 0; i < at.count; ++i) {
             if (!(at.write >> i & 1)) continue;
-            if (out.discarded >> i & 1) {
+            if (out_[h].discarded >> i & 1) {
                 discarded_.push_back({at.x[i] - kLaneDx[b.lane[i]], at.y[i] - kLaneDy[b.lane[i]], b.lane[i], b.t[i]});
                 continue;
             }
-            float* p = fb_.pixel(at.x[i], at.y[i]);
-            for (int c = 0; c < 4; ++c) p[c] = out.rgba[c][i];
-            if (d.mode.check_undefined) *undefined_at(at.x[i], at.y[i]) = out.undefined[i];
-            ++written_;
+            write_lane(d, h, i, at.x[i], at.y[i]);
         }
     }
 
-    std::uint8_t* undefined_at(int x, int y) { return &fb_.undefined[fb_.index(x, y)]; }
-
-    Framebuffer& fb_;
     const EmbreeScene& bvh_;
     const Eye& eye_;
     const std::vector<PreparedDraw>& draws_;
     const std::vector<Mesh>& meshes_;  // per draw
     const BlockCoverage& covered_;     // what each block's rays may hit
     std::vector<HitBatch> pending_;    // per draw
-    WholeBlock whole_[2];              // whole blocks: whole_[first_] waits when waiting_
-    lanes16::Floats clear_row_;        // four pixels of the frame's clear colour
-    int first_ = 0;
-    bool waiting_ = false;
+    BlockPairs<WholeBlock> pairs_;
     // Fragments that discarded: their block, lane and where their ray met the surface.
     struct Discarded {
         int bx, by, lane;
         float t;
     };
     std::vector<Discarded> discarded_;
-    std::uint64_t quads_ = 0, lanes_ = 0, written_ = 0;
-    // Two batches: gathered batches and lone whole blocks use the first, pairs of whole blocks both.
-    FragmentBatch in_[2];
-    ColorBatch out_[2];
 };
 
 // Runs every draw's vertex stage into meshes[i].out.
@@ -524,12 +477,7 @@ struct RayCaster::Impl {
             m.triangles.clear(), m.planes.clear(), m.front.clear();
             const auto& idx = draws[i].indices;
             for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
-                const Triangle t{idx[k], idx[k + 1], idx[k + 2]};
-                if (std::max({t[0], t[1], t[2]}) >= positions.size()) {
-                    throw std::invalid_argument("triangle " + std::to_string(k / 3) + " indexes vertex " +
-                                                std::to_string(std::max({t[0], t[1], t[2]})) + " of " +
-                                                std::to_string(positions.size()));
-                }
+                const Triangle t{idx[k], idx[k + 1], idx[k + 2]};  // in range: run_vertex_stage checked
                 auto finite = [&](std::uint32_t v) {
                     return std::isfinite(positions[v].x) && std::isfinite(positions[v].y) && std::isfinite(positions[v].z);
                 };
@@ -565,6 +513,7 @@ RayCaster::RayCaster(std::span<const DrawCall> draws, const glm::mat4& clip_from
     impl_->eye.world_from_clip = glm::inverse(impl_->eye.clip_from_world);
     impl_->meshes.resize(draws.size());
     for (std::size_t i = 0; i < draws.size(); ++i) impl_->meshes[i].culling = draws[i].culling;
+    const FlushDenormals ftz;  // as every frame's geometry (TileFrame)
     run_vertex_stages(draws, impl_->meshes);
     impl_->update_positions();
     impl_->build(draws);
@@ -577,15 +526,14 @@ double RayCaster::build_seconds() const { return impl_->build_seconds; }
 void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                             const ShadingSettings& options, RenderStats* stats_out, RowBand band) {
     Impl& im = *impl_;
-    check_image_size(width, height);
-    band = checked_band(band, height, options.pairing);
-    const std::vector<PreparedDraw> prepared =
-        prepare_draws(draws, {options.derivatives, options.precision, options.check_undefined});
+    TileFrame frame(width, height, band, draws, options);
+    const std::vector<PreparedDraw>& prepared = frame.draws();
     // Rays meet the surface in 3D: nothing is interpolated in the window or clipped by a plane.
+    // Each pixel is its nearest surface's: nothing is blended.
     for (const PreparedDraw& p : prepared) {
-        if (p.noperspective || p.call->clip_distances) {
-            throw UnsupportedRequest("the ray caster has no noperspective varyings or user clip planes: those are the "
-                                     "rasterizer's");
+        if (p.noperspective || p.call->clip_distances || p.call->blend) {
+            throw UnsupportedRequest("the ray caster has no noperspective varyings, user clip planes or blending: "
+                                     "those are the rasterizer's");
         }
     }
     if (draws.size() != im.meshes.size()) throw std::invalid_argument("ray caster: the draws are not the ones its BVH holds");
@@ -594,7 +542,6 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
             throw std::invalid_argument("ray caster: draw " + std::to_string(i) + " has other vertices than its BVH");
         }
     }
-    const ThreadLimit limit(options.threads);
     run_vertex_stages(draws, im.meshes);
     bool culling_changed = false;
     for (std::size_t i = 0; i < draws.size(); ++i) {
@@ -603,7 +550,7 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     }
     if (im.update_positions() || culling_changed) im.build(draws);
 
-    RenderStats stats;
+    RenderStats& stats = frame.stats();
     for (std::size_t i = 0; i < draws.size(); ++i) {
         stats.triangles_in += draws[i].indices.size() / 3;
         stats.triangles_setup += im.meshes[i].triangles.size();
@@ -611,14 +558,12 @@ void RayCaster::render_into(Framebuffer& fb, int width, int height, glm::vec4 cl
     im.eye.ndc_per_x = 2.0 / width, im.eye.ndc_per_y = 2.0 / height;
     check_rays(im.eye, width, height);
 
-    fb.hold(width, height, band, false, options.check_undefined);
-    const TileGrid grid(width, height, options.pairing, band);
+    const TileGrid& grid = frame.grid();
     const BlockCoverage& covered = im.footprint->blocks(width, height, grid.y0(0), grid.y0(0) + grid.rows * kTileSize);
-    const auto casters = for_each_tile<TileCaster>(
-        grid, [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes, covered, clear); },
-        [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i)); });
-    for (const auto& caster : casters) stats.add_work(caster->quads(), caster->lanes(), caster->written());
-    if (stats_out) *stats_out = stats;
+    frame.render_tiles<TileCaster>(
+        fb, false,
+        [&] { return std::make_unique<TileCaster>(fb, *im.bvh, im.eye, prepared, im.meshes, covered, clear); },
+        [&](TileCaster& caster, int i) { caster.tile(grid.x0(i), grid.y0(i)); }, stats_out);
 }
 
 }  // namespace qs

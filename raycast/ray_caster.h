@@ -45,6 +45,8 @@ public:
     // Renders `draws` (the construction's meshes in the same order; uniforms may change, e.g.
     // time) into a width x height framebuffer cleared to `clear`, or only the rows of `band`
     // (core/tile_grid.h). Writes colour only: visibility is the closest hit, no depth buffer.
+    // Throws UnsupportedRequest for a draw with noperspective varyings, user clip planes or
+    // blending, which are the rasterizer's.
     void render_into(Framebuffer& fb, int width, int height, glm::vec4 clear, std::span<const DrawCall> draws,
                      const ShadingSettings& settings, RenderStats* stats = nullptr, RowBand band = {});
 

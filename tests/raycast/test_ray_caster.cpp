@@ -11,6 +11,8 @@
 
 #include "shading/catalogue.h"
 #include "scenes/gltf.h"
+#include "raster/rasterizer.h"
+#include "raycast/ray_caster.h"
 #include "render/scene_render.h"
 #include "tests/test_paths.h"
 
@@ -247,6 +249,27 @@ TEST_CASE("ray caster: bit-identical for 1 and 2 threads, BVH built once for man
     const double built = dual.bvh_build_seconds();
     for (float t : {1.0f, 2.0f, 3.0f}) dual.render_into(two, t);
     CHECK(dual.bvh_build_seconds() == built);  // time moves the shading, not the geometry
+}
+
+TEST_CASE("both backends refuse a triangle indexing a missing vertex, the ray caster a blended draw", "[raycast]") {
+    const std::vector<VertexIn> vertices = {
+        {{-1.0f, -1.0f, 0.0f}, {}}, {{1.0f, -1.0f, 0.0f}, {}}, {{-1.0f, 1.0f, 0.0f}, {}}};
+    const std::vector<std::uint32_t> good = {0, 1, 2}, bad = {0, 1, 2, 2, 1, 3};
+    DrawCall draw;
+    draw.vertices = vertices, draw.program = find_program("constant_color"), draw.indices = bad;
+    REQUIRE(draw.program);
+    const std::string message = "triangle 1 indexes vertex 3 of 3";
+    CHECK_THROWS_WITH(rasterize(8, 8, glm::vec4(0.0f), std::span<const DrawCall>(&draw, 1), {}), message);
+    CHECK_THROWS_WITH(RayCaster(std::span<const DrawCall>(&draw, 1), glm::mat4(1.0f)), message);
+    draw.indices = good;
+    RayCaster caster(std::span<const DrawCall>(&draw, 1), glm::mat4(1.0f));
+    Framebuffer fb;
+    caster.render_into(fb, 8, 8, glm::vec4(0.0f), std::span<const DrawCall>(&draw, 1), {});
+    draw.indices = bad;  // the same vertices, so the same BVH: refused each frame all the same
+    CHECK_THROWS_WITH(caster.render_into(fb, 8, 8, glm::vec4(0.0f), std::span<const DrawCall>(&draw, 1), {}), message);
+    draw.indices = good, draw.blend = true;
+    CHECK_THROWS_AS(caster.render_into(fb, 8, 8, glm::vec4(0.0f), std::span<const DrawCall>(&draw, 1), {}),
+                    UnsupportedRequest);
 }
 
 }  // namespace qs
