@@ -15,6 +15,7 @@
 #include "frontend/binding_names.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
+#include "frontend/variable_writes.h"
 
 namespace qs::frontend {
 
@@ -334,12 +335,12 @@ std::string StageWriter::global_member(TIntermSymbol* s) {
     const glslang::TQualifier& q = s->getQualifier();
     const std::string glsl = s->getName().c_str();
     if (is_per_vertex_block(s->getType()) && stage_ == Stage::Vertex && q.storage == glslang::EvqVaryingOut) {
-        globals_[s->getId()] = "gl_PerVertex";  // its members are read and written by name
+        globals_[s->getId()] = "gl_Position";  // the one member the translation has
         if (member_names_.insert("gl_Position").second) {
             member_lines_.push_back("vec4<F> gl_Position{};");
             position_output = "gl_Position";
         }
-        return "gl_PerVertex";
+        return "gl_Position";
     }
     std::string name;
     if (q.builtIn != glslang::EbvNone || glsl.rfind("gl_", 0) == 0) {
@@ -1156,33 +1157,10 @@ void StageWriter::branch(glslang::TIntermBranch* b) {
 
 // Symbols of locals declared outside `body` that `body` assigns.
 std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
-    struct Finder : glslang::TIntermTraverser {
-        std::vector<long long> ids;
-        void add(TIntermTyped* n) {
-            while (auto* b = n->getAsBinaryNode()) n = b->getLeft();
-            if (auto* s = n->getAsSymbolNode()) ids.push_back(s->getId());
-        }
-        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (is_assignment(b->getOp())) add(b->getLeft());
-            return true;
-        }
-        bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
-            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) add(u->getOperand());
-            return true;
-        }
-        bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
-            if (a->getOp() == glslang::EOpFunctionCall) {
-                const glslang::TQualifierList& q = a->getQualifierList();
-                for (std::size_t i = 0; i < a->getSequence().size() && i < q.size(); ++i) {
-                    if (q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut) add(a->getSequence()[i]->getAsTyped());
-                }
-            }
-            return true;
-        }
-    } f;
-    body->traverse(&f);
+    std::vector<long long> ids;
+    for_each_write(body, [&](long long id, glslang::TIntermTyped*) { ids.push_back(id); });
     std::vector<long long> out;
-    for (long long id : f.ids) {
+    for (long long id : ids) {
         auto it = locals_.find(id);
         if (it == locals_.end()) {
             if (!globals_.contains(id)) continue;
@@ -1326,10 +1304,14 @@ void StageWriter::statement(TIntermNode* n) {
             if (is_for_sequence(a)) {
                 const std::vector<TIntermNode*> s = statements_of(a);
                 auto* sym = s[0]->getAsBinaryNode()->getLeft()->getAsSymbolNode();
-                if (locals_.contains(sym->getId()) && locals_[sym->getId()].declaring == s[0]) {
+                if (sym && locals_.contains(sym->getId()) && locals_[sym->getId()].declaring == s[0]) {
                     loop(s[1]->getAsLoopNode(), s[0]);
                     return;
                 }
+                // An initialiser that declares nothing (`for (i = 0; ...)`): an assignment before the loop.
+                statement(s[0]);
+                loop(s[1]->getAsLoopNode(), nullptr);
+                return;
             }
             line("{", nullptr);
             block(a);
@@ -1455,31 +1437,26 @@ bool StageWriter::plain_counter(TIntermAggregate* seq, long long id) {
     if (t.getBasicType() != glslang::EbtInt || !t.isScalar() || !init->getRight()->getAsConstantUnion() || !lp->testFirst()) {
         return false;
     }
-    struct Writes : glslang::TIntermTraverser {
+    // Written in the body, or handed to a function (whose parameter is a per-lane int): not plain.
+    bool written = false;
+    for_each_write(lp->getBody(), [&](long long written_id, glslang::TIntermTyped*) { written = written || written_id == id; });
+    struct Arguments : glslang::TIntermTraverser {
         long long id;
-        int n = 0;
-        void check(TIntermTyped* x) {
-            while (auto* b = x->getAsBinaryNode()) x = b->getLeft();
-            if (auto* s = x->getAsSymbolNode(); s && s->getId() == id) ++n;
-        }
-        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (is_assignment(b->getOp())) check(b->getLeft());
-            return true;
-        }
-        bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
-            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) check(u->getOperand());
-            return true;
-        }
+        bool found = false;
         bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
-            if (a->getOp() == glslang::EOpFunctionCall) {
-                for (TIntermNode* x : a->getSequence()) check(x->getAsTyped());
+            if (a->getOp() != glslang::EOpFunctionCall) return true;
+            for (TIntermNode* x : a->getSequence()) {
+                TIntermTyped* arg = x->getAsTyped();
+                while (auto* b = arg->getAsBinaryNode()) arg = b->getLeft();
+                found = found || (arg->getAsSymbolNode() && arg->getAsSymbolNode()->getId() == id);
             }
             return true;
         }
     } w;
     w.id = id;
     if (lp->getBody()) lp->getBody()->traverse(&w);
-    if (w.n != 0) return false;
+    if (written || w.found) return false;
+
     TIntermTyped* step = lp->getTerminal();
     if (!step) return false;
     if (auto* b = step->getAsBinaryNode(); b && !b->getRight()->getAsConstantUnion()) return false;

@@ -1,4 +1,5 @@
 #include "frontend/loop_bound.h"
+#include "frontend/variable_writes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glslang/Include/intermediate.h>
@@ -23,8 +25,7 @@ constexpr long long kMany = 1LL << 40;  // past any limit; sums and products sto
 long long add(long long a, long long b) { return std::min(a + b, kMany); }
 long long times(long long a, long long b) { return a == 0 || b == 0 ? 0 : a > kMany / b ? kMany : std::min(a * b, kMany); }
 
-// Variables written once, by an assignment of a constant (`float k = 5.0;` that nothing changes),
-// by symbol id: their value.
+// Variables, by symbol id, that hold a constant (`float k = 5.0;` that nothing changes): their value.
 using Constants = std::map<long long, double>;
 
 // A scalar constant's value, or nothing for anything else.
@@ -50,46 +51,14 @@ long long symbol_id(TIntermNode* n) {
     return s ? s->getId() : -1;
 }
 
-// Every write in `n` (assignment, ++/--, an out or inout argument): the variable's symbol id and
-// the writing node, the value's for a plain assignment.
-template <class Write>
-void for_each_write(TIntermNode* n, const Write& write) {
-    struct Finder : glslang::TIntermTraverser {
-        const Write* write;
-        void target(TIntermTyped* t, TIntermTyped* value) {
-            while (auto* b = t->getAsBinaryNode()) t = b->getLeft(), value = nullptr;  // a part of it
-            if (const long long id = symbol_id(t); id >= 0) (*write)(id, value);
-        }
-        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (b->getOp() == glslang::EOpAssign) target(b->getLeft(), b->getRight());
-            else if (b->getOp() > glslang::EOpAssign && b->getOp() <= glslang::EOpRightShiftAssign) target(b->getLeft(), nullptr);
-            return true;
-        }
-        bool visitUnary(glslang::TVisit, glslang::TIntermUnary* u) override {
-            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) target(u->getOperand(), nullptr);
-            return true;
-        }
-        bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
-            if (a->getOp() == glslang::EOpFunctionCall) {
-                const glslang::TQualifierList& q = a->getQualifierList();
-                for (std::size_t i = 0; i < a->getSequence().size() && i < q.size(); ++i) {
-                    if (q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut) target(a->getSequence()[i]->getAsTyped(), nullptr);
-                }
-            }
-            return true;
-        }
-    } f;
-    f.write = &write;
-    if (n) n->traverse(&f);
-}
-
 bool assigns(TIntermNode* n, long long id) {
     bool found = false;
     for_each_write(n, [&](long long written, TIntermTyped*) { found = found || written == id; });
     return found;
 }
 
-Constants constants_of(TIntermNode* root) {
+// The variables `root` writes once, by assigning a constant: their value.
+Constants written_once(TIntermNode* root) {
     std::map<long long, int> writes;
     Constants values;
     for_each_write(root, [&](long long id, TIntermTyped* value) {
@@ -97,6 +66,15 @@ Constants constants_of(TIntermNode* root) {
         else if (const std::optional<double> v = constant(value)) values[id] = *v;
     });
     return values;
+}
+
+// `n` as the assignment of a constant to a variable written nowhere else, or nothing.
+std::optional<std::pair<long long, double>> constant_set(TIntermNode* n, const Constants& once) {
+    auto* b = n ? n->getAsBinaryNode() : nullptr;
+    if (!b || b->getOp() != glslang::EOpAssign) return std::nullopt;
+    const auto it = once.find(symbol_id(b->getLeft()));
+    if (it == once.end()) return std::nullopt;
+    return *it;
 }
 
 // A loop of the counted form: its counter starts at `start`, moves by `step` `by` each time round,
@@ -125,9 +103,12 @@ glslang::TOperator swapped(glslang::TOperator c) {
 std::optional<CountedLoop> counted(TIntermLoop* loop, TIntermBinary* init, const Constants& known) {
     auto* test = loop->getTest() ? loop->getTest()->getAsBinaryNode() : nullptr;
     if (!init || !test) return std::nullopt;
-    const long long id = symbol_id(init->getLeft());
+    // A local: a global could be changed by a function the loop calls.
+    auto* counter = init->getLeft()->getAsSymbolNode();
+    if (!counter || counter->getQualifier().storage != glslang::EvqTemporary) return std::nullopt;
+    const long long id = counter->getId();
     const std::optional<double> start = constant(init->getRight());
-    if (id < 0 || !start) return std::nullopt;
+    if (!start) return std::nullopt;
     CountedLoop c{.start = *start, .type = init->getLeft()->getType().getBasicType(), .test_first = loop->testFirst()};
     std::optional<double> bound;
     if (symbol_id(test->getLeft()) == id && symbol_id(test->getRight()) != id) {
@@ -230,12 +211,18 @@ std::vector<TIntermNode*> flattened(TIntermAggregate* a) {
 
 class Counter {
 public:
-    explicit Counter(TIntermNode* root) : constants_(constants_of(root)) {
+    explicit Counter(TIntermNode* root) : once_(written_once(root)) {
         auto* top = root ? root->getAsAggregate() : nullptr;
         if (!top) return;
         for (TIntermNode* n : top->getSequence()) {
             auto* f = n->getAsAggregate();
-            if (f && f->getOp() == glslang::EOpFunction) functions_[std::string(f->getName().c_str())] = f;
+            if (f && f->getOp() == glslang::EOpFunction) {
+                functions_[std::string(f->getName().c_str())] = f;
+            } else if (f && f->getOp() == glslang::EOpSequence) {  // globals' initialisers, run before main()
+                for (TIntermNode* g : flattened(f)) {
+                    if (const auto set = constant_set(g, once_)) globals_.insert(*set);
+                }
+            }
         }
     }
 
@@ -245,7 +232,10 @@ public:
         auto it = functions_.find(name);
         if (it == functions_.end()) return 0;
         done_[name] = kMany;  // GLSL has no recursion (the front end refuses it); this ends a cycle
-        return done_[name] = of(it->second);
+        Constants caller = std::exchange(known_, globals_);  // what it knows is its own and the globals'
+        const long long n = of(it->second);
+        known_ = std::move(caller);
+        return done_[name] = n;
     }
 
     // The iterations of the loops in `n`, the loops of the functions it calls included.
@@ -264,9 +254,14 @@ public:
                     return true;  // and its arguments
                 }
                 if (a->getOp() != glslang::EOpSequence) return true;
-                // A loop's counter is set by the statement before it (a for loop's initialiser).
+                // In order: a loop's counter is set by the statement before it (a for loop's
+                // initialiser), and a constant set once is known from there to the sequence's end.
                 const std::vector<TIntermNode*> s = flattened(a);
+                std::vector<long long> set_here;
                 for (std::size_t i = 0; i < s.size(); ++i) {
+                    if (const auto set = constant_set(s[i], counter->once_); set && counter->known_.insert(*set).second) {
+                        set_here.push_back(set->first);
+                    }
                     TIntermLoop* l = s[i] ? s[i]->getAsLoopNode() : nullptr;
                     if (!l) {
                         total = add(total, counter->of(s[i]));
@@ -275,6 +270,7 @@ public:
                     auto* init = i > 0 && s[i - 1] ? s[i - 1]->getAsBinaryNode() : nullptr;
                     total = add(total, counter->loop(l, init && init->getOp() == glslang::EOpAssign ? init : nullptr));
                 }
+                for (long long id : set_here) counter->known_.erase(id);
                 return false;
             }
         } w;
@@ -286,7 +282,7 @@ public:
     // A loop's iterations, its inner loops' included: each time round counts once, as llvmpipe's
     // limiter counts.
     long long loop(TIntermLoop* l, TIntermBinary* init) {
-        const std::optional<CountedLoop> c = counted(l, init, constants_);
+        const std::optional<CountedLoop> c = counted(l, init, known_);
         const std::optional<long long> n = c ? trips(*c) : std::nullopt;
         if (!n) {
             if (!unbounded_) unbounded_ = l;
@@ -299,7 +295,9 @@ public:
     const TIntermNode* unbounded() const { return unbounded_; }
 
 private:
-    Constants constants_;
+    Constants once_;     // variables written once, by assigning a constant
+    Constants globals_;  // of those, the globals set before main() runs
+    Constants known_;    // of those, the ones set where the walk is
     std::map<std::string, TIntermAggregate*> functions_;
     std::map<std::string, long long> done_;
     const TIntermNode* unbounded_ = nullptr;

@@ -1,5 +1,7 @@
+#version 130
 // Loops every fragment runs equally often (C++ loops in the translation) beside and inside loops a
-// fragment leaves on its own (Loop objects), and inside a condition that varies per fragment.
+// fragment leaves on its own (Loop objects), and inside a condition that varies per fragment; a
+// built-in's out argument written in a loop lanes leave.
 varying vec2 st;
 
 float octaves(vec2 p) {
@@ -32,6 +34,12 @@ void main() {
     float o = 0.0;
     if (st.y > 0.4) {
         for (float f = 8.0; f >= 0.25; f *= 0.5) o += octaves(st * f) / f;
+        for (int j = 0; j < 3; j++) o += 0.125 * fract(st.x * float(j + 2));
     }
-    gl_FragColor = vec4(escape / 8.0, fract(inner), steps / 8.0, o * 0.25);
+    float whole = 0.0, parts = 0.0;
+    for (int i = 0; i < 6; i++) {
+        if (st.x < 0.15 * float(i)) break;
+        parts += modf(st.y * float(i) * 1.7, whole);
+    }
+    gl_FragColor = vec4(escape / 8.0, fract(inner + whole * 0.1), steps / 8.0 + fract(parts), o * 0.25);
 }

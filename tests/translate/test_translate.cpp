@@ -213,8 +213,8 @@ TEST_CASE("a translation's texture lookups, every form, draw what the interprete
 
 TEST_CASE("a shader whose loops may reach llvmpipe's limit is not compiled: the interpreter keeps the limit", "[translate]") {
     // The iterations of main() and what it calls, each loop's counter run as GLSL runs it.
-    const auto unbounded = [](const std::string& body) {
-        const std::string text = "varying vec2 st;\nuniform int n;\n" + body;
+    const auto unbounded = [](const std::string& body, const std::string& version = "") {
+        const std::string text = version + "varying vec2 st;\nuniform int n;\n" + body;
         return frontend::translate_glsl({"loops.frag", text}, std::nullopt, "loops").unbounded_loop;
     };
     const std::string sum = "float f(float x) { float s = 0.0; for (int i = 0; i < 250; i++) s += x; return s; }\n";
@@ -238,6 +238,17 @@ TEST_CASE("a shader whose loops may reach llvmpipe's limit is not compiled: the 
     CHECK(unbounded("void main() { float s = 0.0;\n"
                     "  for (int i = 0; i < 4; i++) { s += 1.0; i += int(st.x); }\n"  // the body moves the counter
                     "  gl_FragColor = vec4(s); }\n") == "loops.frag:4:3: this loop may go round 65,535 times");
+    CHECK(unbounded("int i;\nvoid restart() { i = 0; }\nvoid main() {\n"
+                    "  for (i = 0; i < 10; i++) restart();\n"  // a global counter a called function changes
+                    "  gl_FragColor = vec4(st, 0.0, 1.0); }\n") == "loops.frag:6:3: this loop may go round 65,535 times");
+    CHECK(unbounded("void main() { float s = 0.0; int m;\n"
+                    "  for (int i = 1; i != m; i++) s += 1.0;\n"  // read before it is set
+                    "  m = 3;\n"
+                    "  gl_FragColor = vec4(s); }\n") == "loops.frag:4:3: this loop may go round 65,535 times");
+    CHECK(unbounded("void main() { float s = 0.0;\n"
+                    "  for (int i = 0; i < 4; i++) s += frexp(st.x, i);\n"  // a built-in's out argument
+                    "  gl_FragColor = vec4(s); }\n",
+                    "#version 400\n") == "loops.frag:5:3: this loop may go round 65,535 times");
     // Not compiled, so that the interpreter runs it: nothing to compile, no plugin cache needed.
     const frontend::GlslSource never_ending{"never.frag", "varying vec2 st;\nvoid main() { float x = st.x;\n"
                                                           "  while (true) { x += 1.0; if (x < -1.0) break; }\n"
