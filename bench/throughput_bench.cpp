@@ -797,9 +797,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if ((o.interpreted || o.generated) && app.count("--widths") > 0) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --widths is not an option of --%s (quadshade alone)\n",
-                     o.interpreted ? "interpreted" : "generated");
+    if (o.interpreted && app.count("--widths") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --widths is not an option of --interpreted (quadshade alone)\n");
         return 2;
     }
     if (!o.scaling && app.count("--scaling-threads") > 0) {
