@@ -10,6 +10,8 @@
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -365,65 +367,109 @@ int cmd_test(const TestArgs& a) {
 
 }  // namespace
 
+namespace {
+
+// A subcommand: its options (held by the lambda), the plugins to load before it runs (render loads
+// its own once its options are checked) and what it runs.
+struct Command {
+    CLI::App* app;
+    const std::vector<std::string>* plugins;
+    std::function<int()> run;
+};
+
+// The subcommand `name` with the options add_options gives it into `args`, run by `run(args)`.
+template <class Args, class AddOptions, class Run>
+Command command(CLI::App& app, const char* name, const char* about, AddOptions add_options, Run run,
+                const std::vector<std::string> Args::*plugins = nullptr) {
+    auto args = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand(name, about);
+    add_options(*sub, *args);
+    return {sub, plugins ? &((*args).*plugins) : nullptr, [args, run] { return run(*args); }};
+}
+
+struct ShadersArgs {
+    std::string export_dir;
+    std::vector<std::string> plugins;
+};
+
+std::vector<Command> add_commands(CLI::App& app) {
+    std::vector<Command> c;
+    c.push_back(command<RenderArgs>(
+        app, "render", "render a glTF scene", add_render_options, [&app](RenderArgs& a) {
+            note_raster_only(*app.get_subcommand("render"), a);
+            return cmd_render(a);
+        }));
+    c.push_back(command<ShadersArgs>(
+        app, "shaders", "list the shader catalogue, with what each shader needs",
+        [](CLI::App& sub, ShadersArgs& a) {
+            add_plugin_option(sub, a.plugins);
+            sub.add_option("--export-glsl", a.export_dir,
+                           "write each shader's complete GLSL (DIR/NAME.vert, DIR/NAME.frag) as an OpenGL program "
+                           "compiles it (quadshade-reference --glsl DIR renders scenes from it)")
+                ->option_text("DIR");
+        },
+        [](ShadersArgs& a) { return cmd_shaders(a.export_dir); }, &ShadersArgs::plugins));
+    c.push_back(command<CompareArgs>(app, "compare",
+                                     "compare two images' RGB with OpenImageIO: mean, RMS, PSNR and the largest error",
+                                     add_compare_options, cmd_compare));
+    c.push_back(command<CheckArgs>(
+        app, "check",
+        "render shaders with quadshade and their GLSL with OSMesa (quadshade-reference) on a\n"
+        "set of scenes and compare: exit 0 when every case meets the bar, 3 otherwise",
+        add_check_options, cmd_check, &CheckArgs::plugins));
+    c.push_back(command<TestArgs>(app, "test",
+                                  "run a golden-image suite: render its cases, compare with the expected images, report\n"
+                                  "(exit 3 when a case fails)",
+                                  add_test_options, cmd_test, &TestArgs::plugins));
+    c.push_back(command<VolumeArgs>(
+        app, "bake-volume", "evaluate a shader on an N^3 grid of object positions into a 3D texture (a sampler3D)",
+        add_volume_options, cmd_bake_volume, &VolumeArgs::plugins));
+    c.push_back(command<GalleryArgs>(
+        app, "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (source)",
+        add_gallery_options, cmd_gallery, &GalleryArgs::plugins));
+    c.push_back(command<BakeArgs>(app, "bake",
+                                  "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
+                                  "mesh drawn with the baked texture",
+                                  add_bake_options, cmd_bake, &BakeArgs::plugins));
+    c.push_back(command<StudyArgs>(app, "study",
+                                   "measure a shader's error against its run time under every derivative, anti-aliasing\n"
+                                   "and precision mode, on the scene's camera and generated views; writes CSV and a report",
+                                   [](CLI::App& sub, StudyArgs& a) { add_study_options(sub, a); }, cmd_study,
+                                   &StudyArgs::plugins));
+    c.push_back(command<TranslateArgs>(
+        app, "translate",
+        "write a GLSL shader as a C++ translation to read, edit and build as a plugin (with a\n"
+        "CMakeLists.txt that builds it against the installed quadshade)",
+        add_translate_options, cmd_translate));
+    c.push_back(command<ShaderTestArgs>(
+        app, "shader-test",
+        "run piglit's .shader_test files with quadshade as the GL driver: a line per test, a\n"
+        "summary by folder and skip reason (exit 3 when a test fails or crashes)",
+        add_shader_test_options, cmd_shader_test));
+    struct NoArgs {};
+    c.push_back(command<NoArgs>(
+        app, "help", "this help", [](CLI::App&, NoArgs&) {},
+        [&app](NoArgs&) {
+            std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
+            return 0;
+        }));
+    return c;
+}
+
+// A usage error (exit 2): options that contradict each other or name what the scene lacks.
+bool is_usage_error(const std::exception& e) {
+    return dynamic_cast<const UsageError*>(&e) || dynamic_cast<const UniformOptionError*>(&e) ||
+           dynamic_cast<const CameraOptionError*>(&e) || dynamic_cast<const UnsupportedRequest*>(&e);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     remove_temporaries_on_signals();
     CLI::App app("quadshade: CPU renderer of GLSL procedural shaders with GPU-exact derivatives", "quadshade");
     app.require_subcommand(1, 1);
     app.get_formatter()->column_width(26);
-    RenderArgs render;
-    CompareArgs compare;
-    CLI::App* render_cmd = app.add_subcommand("render", "render a glTF scene");
-    add_render_options(*render_cmd, render);
-    CLI::App* shaders_cmd = app.add_subcommand("shaders", "list the shader catalogue, with what each shader needs");
-    std::string export_dir;
-    std::vector<std::string> shader_plugins;
-    add_plugin_option(*shaders_cmd, shader_plugins);
-    shaders_cmd->add_option("--export-glsl", export_dir,
-                            "write each shader's complete GLSL (DIR/NAME.vert, DIR/NAME.frag) as an OpenGL program "
-                            "compiles it (quadshade-reference --glsl DIR renders scenes from it)")
-        ->option_text("DIR");
-    CLI::App* compare_cmd = app.add_subcommand(
-        "compare", "compare two images' RGB with OpenImageIO: mean, RMS, PSNR and the largest error");
-    add_compare_options(*compare_cmd, compare);
-    CheckArgs check;
-    CLI::App* check_cmd = app.add_subcommand(
-        "check", "render shaders with quadshade and their GLSL with OSMesa (quadshade-reference) on a\n"
-                 "set of scenes and compare: exit 0 when every case meets the bar, 3 otherwise");
-    add_check_options(*check_cmd, check);
-    TestArgs test;
-    CLI::App* test_cmd = app.add_subcommand(
-        "test", "run a golden-image suite: render its cases, compare with the expected images, report\n"
-                "(exit 3 when a case fails)");
-    add_test_options(*test_cmd, test);
-    VolumeArgs volume;
-    CLI::App* volume_cmd = app.add_subcommand(
-        "bake-volume", "evaluate a shader on an N^3 grid of object positions into a 3D texture (a sampler3D)");
-    add_volume_options(*volume_cmd, volume);
-    GalleryArgs gallery;
-    CLI::App* gallery_cmd = app.add_subcommand(
-        "gallery", "render every catalogue shader into labelled contact sheets, one PNG per collection (source)");
-    add_gallery_options(*gallery_cmd, gallery);
-    BakeArgs bake;
-    CLI::App* bake_cmd = app.add_subcommand(
-        "bake", "render a shader into a mesh's UV atlas (each triangle at its TEXCOORD_0) and write the\n"
-                "mesh drawn with the baked texture");
-    add_bake_options(*bake_cmd, bake);
-    StudyArgs study;
-    CLI::App* study_cmd = app.add_subcommand(
-        "study", "measure a shader's error against its run time under every derivative, anti-aliasing\n"
-                 "and precision mode, on the scene's camera and generated views; writes CSV and a report");
-    add_study_options(*study_cmd, study);
-    TranslateArgs translate;
-    CLI::App* translate_cmd = app.add_subcommand(
-        "translate", "write a GLSL shader as a C++ translation to read, edit and build as a plugin (with a\n"
-                     "CMakeLists.txt that builds it against the installed quadshade)");
-    add_translate_options(*translate_cmd, translate);
-    ShaderTestArgs shader_test;
-    CLI::App* shader_test_cmd = app.add_subcommand(
-        "shader-test", "run piglit's .shader_test files with quadshade as the GL driver: a line per test, a\n"
-                       "summary by folder and skip reason (exit 3 when a test fails or crashes)");
-    add_shader_test_options(*shader_test_cmd, shader_test);
-    CLI::App* help_cmd = app.add_subcommand("help", "this help");
+    const std::vector<Command> commands = add_commands(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -432,45 +478,17 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "quadshade: %s\n\n%s", e.what(), app.help().c_str());
         return kExitUsage;
     }
-    note_raster_only(*render_cmd, render);
     try {
-        if (render_cmd->parsed()) return cmd_render(render);  // loads its plugins once its options are checked
-        const std::vector<std::string>& plugins = check_cmd->parsed()    ? check.plugins
-                                                  : test_cmd->parsed()   ? test.plugins
-                                                  : volume_cmd->parsed() ? volume.plugins
-                                                  : gallery_cmd->parsed() ? gallery.plugins
-                                                  : bake_cmd->parsed()   ? bake.plugins
-                                                  : study_cmd->parsed()  ? study.plugins
-                                                                         : shader_plugins;
-        for (const std::string& plugin : plugins) {
-            for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+        for (const Command& c : commands) {
+            if (!c.app->parsed()) continue;
+            for (const std::string& plugin : c.plugins ? *c.plugins : std::vector<std::string>{}) {
+                for (const std::string& warning : load_plugin(plugin)) std::fprintf(stderr, "quadshade: warning: %s\n", warning.c_str());
+            }
+            return c.run();
         }
-        if (shaders_cmd->parsed()) return cmd_shaders(export_dir);
-        if (compare_cmd->parsed()) return cmd_compare(compare);
-        if (check_cmd->parsed()) return cmd_check(check);
-        if (test_cmd->parsed()) return cmd_test(test);
-        if (volume_cmd->parsed()) return cmd_bake_volume(volume);
-        if (gallery_cmd->parsed()) return cmd_gallery(gallery);
-        if (bake_cmd->parsed()) return cmd_bake(bake);
-        if (study_cmd->parsed()) return cmd_study(study);
-        if (translate_cmd->parsed()) return cmd_translate(translate);
-        if (shader_test_cmd->parsed()) return cmd_shader_test(shader_test);
-        if (help_cmd->parsed()) std::fputs(app.get_formatter()->make_help(&app, "quadshade", CLI::AppFormatMode::Normal).c_str(), stdout);
         return 0;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "quadshade: %s\n", e.what());
-        return kExitUsage;
-    } catch (const UniformOptionError& e) {  // a bad --uniform, or one no drawn shader takes
-        std::fprintf(stderr, "quadshade: %s\n", e.what());
-        return kExitUsage;
-    } catch (const CameraOptionError& e) {  // a --camera the scene does not have
-        std::fprintf(stderr, "quadshade: %s\n", e.what());
-        return kExitUsage;
-    } catch (const UnsupportedRequest& e) {  // options no backend honours together
-        std::fprintf(stderr, "quadshade: %s\n", e.what());
-        return kExitUsage;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "quadshade: %s\n", e.what());
-        return kExitInput;
+        return is_usage_error(e) ? kExitUsage : kExitInput;
     }
 }

@@ -13,7 +13,9 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 
 #include "frontend/binding_names.h"
+#include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
+#include "frontend/variable_writes.h"
 
 namespace qs::frontend {
 
@@ -150,6 +152,12 @@ std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
 
 bool is_assignment(TOperator op) { return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign; }
 
+// GLSL 1.50's block of the vertex stage's built-in outputs (gl_Position, gl_PointSize,
+// gl_ClipDistance[]), which the translation writes as its gl_Position alone.
+bool is_per_vertex_block(const TType& t) {
+    return t.getBasicType() == glslang::EbtBlock && std::string(t.getTypeName().c_str()) == "gl_PerVertex";
+}
+
 // A for loop as glslang nests it: its initialiser (one declarator) and the loop.
 bool is_for_sequence(TIntermAggregate* a) {
     if (!a || a->getOp() != glslang::EOpSequence) return false;
@@ -218,6 +226,14 @@ private:
     void uniform_member(TIntermSymbol* s, const std::string& name);
     void input_member(TIntermSymbol* s, const std::string& name);
     void output_member(TIntermSymbol* s, const std::string& name);
+    // A member of gl_PerVertex: gl_Position, the one the translation writes.
+    std::string per_vertex_member(TIntermBinary* b) {
+        if (TIntermSymbol* block = b->getLeft()->getAsSymbolNode()) symbol_name(block);  // declares gl_Position
+        const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
+        const std::string field = (*b->getLeft()->getType().getStruct())[std::size_t(i)].type->getFieldName().c_str();
+        if (field != "gl_Position") refuse(b, field + " (a vertex output other than gl_Position or a varying)");
+        return "gl_Position";
+    }
 
     // ---- expressions ---------------------------------------------------------------------------
     Expr expr(TIntermTyped* n);
@@ -318,6 +334,14 @@ std::string StageWriter::symbol_name(TIntermSymbol* s) {
 std::string StageWriter::global_member(TIntermSymbol* s) {
     const glslang::TQualifier& q = s->getQualifier();
     const std::string glsl = s->getName().c_str();
+    if (is_per_vertex_block(s->getType()) && stage_ == Stage::Vertex && q.storage == glslang::EvqVaryingOut) {
+        globals_[s->getId()] = "gl_Position";  // the one member the translation has
+        if (member_names_.insert("gl_Position").second) {
+            member_lines_.push_back("vec4<F> gl_Position{};");
+            position_output = "gl_Position";
+        }
+        return "gl_Position";
+    }
     std::string name;
     if (q.builtIn != glslang::EbvNone || glsl.rfind("gl_", 0) == 0) {
         name = glsl;
@@ -604,6 +628,7 @@ std::string StageWriter::lvalue(TIntermTyped* n) {
                 return base + "[" + std::to_string(i) + "]";
             }
             case glslang::EOpIndexDirectStruct: {
+                if (is_per_vertex_block(b->getLeft()->getType())) return per_vertex_member(b);
                 const int i = b->getRight()->getAsConstantUnion()->getConstArray()[0].getIConst();
                 return base + "." + cpp_identifier((*b->getLeft()->getType().getStruct())[std::size_t(i)].type->getFieldName().c_str(), where(b));
             }
@@ -626,6 +651,9 @@ Expr StageWriter::binary(TIntermBinary* b) {
     const TOperator op = b->getOp();
     switch (op) {
         case glslang::EOpIndexDirect: case glslang::EOpIndexDirectStruct: case glslang::EOpVectorSwizzle: {
+            if (op == glslang::EOpIndexDirectStruct && is_per_vertex_block(b->getLeft()->getType())) {
+                return {per_vertex_member(b), kPrimary, false};
+            }
             Expr base = expr(b->getLeft());
             if (op == glslang::EOpIndexDirect && b->getLeft()->getAsConstantUnion()) break;
             const std::string lv = [&] {
@@ -894,6 +922,14 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         case glslang::EOpBitfieldExtract: return fn("bitfieldExtract");
         case glslang::EOpBitfieldInsert: return fn("bitfieldInsert");
         case glslang::EOpLdexp: return fn("ldexp");
+        case glslang::EOpModf: case glslang::EOpFrexp: {
+            // The whole part or exponent goes to a variable, written for every lane.
+            if (!masks_.empty()) refuse(node, "modf or frexp under a condition that varies per fragment");
+            if (!args[1]->getAsSymbolNode()) refuse(node, "modf or frexp into a part of a variable");
+            return {std::string(op == glslang::EOpModf ? "modf(" : "frexp(") + v[0] + ", " +
+                        lvalue(args[1]->getAsTyped()) + ")",
+                    kPostfix, false};
+        }
         case glslang::EOpFtransform:
             if (stage_ != Stage::Vertex) refuse(node, "ftransform() outside a vertex shader");
             {
@@ -1121,33 +1157,10 @@ void StageWriter::branch(glslang::TIntermBranch* b) {
 
 // Symbols of locals declared outside `body` that `body` assigns.
 std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
-    struct Finder : glslang::TIntermTraverser {
-        std::vector<long long> ids;
-        void add(TIntermTyped* n) {
-            while (auto* b = n->getAsBinaryNode()) n = b->getLeft();
-            if (auto* s = n->getAsSymbolNode()) ids.push_back(s->getId());
-        }
-        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (is_assignment(b->getOp())) add(b->getLeft());
-            return true;
-        }
-        bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
-            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) add(u->getOperand());
-            return true;
-        }
-        bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
-            if (a->getOp() == glslang::EOpFunctionCall) {
-                const glslang::TQualifierList& q = a->getQualifierList();
-                for (std::size_t i = 0; i < a->getSequence().size() && i < q.size(); ++i) {
-                    if (q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut) add(a->getSequence()[i]->getAsTyped());
-                }
-            }
-            return true;
-        }
-    } f;
-    body->traverse(&f);
+    std::vector<long long> ids;
+    for_each_write(body, [&](long long id, glslang::TIntermTyped*) { ids.push_back(id); });
     std::vector<long long> out;
-    for (long long id : f.ids) {
+    for (long long id : ids) {
         auto it = locals_.find(id);
         if (it == locals_.end()) {
             if (!globals_.contains(id)) continue;
@@ -1159,6 +1172,39 @@ std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
     return out;
 }
 
+// Whether a lane can leave `l` before its condition ends it, or pause in it: a break or continue
+// of its own, or a return or discard anywhere in it.
+static bool lanes_may_leave(glslang::TIntermLoop* l) {
+    struct Finder : glslang::TIntermTraverser {
+        Finder() : glslang::TIntermTraverser(true, false, true) {}
+        int depth = 0;  // loops inside l
+        bool found = false;
+        bool visitBranch(glslang::TVisit, glslang::TIntermBranch* b) override {
+            const glslang::TOperator op = b->getFlowOp();
+            found = found || op == glslang::EOpReturn || op == glslang::EOpKill ||
+                    (depth == 0 && (op == glslang::EOpBreak || op == glslang::EOpContinue));
+            return true;
+        }
+        bool visitLoop(glslang::TVisit visit, glslang::TIntermLoop*) override {
+            depth += visit == glslang::EvPreVisit ? 1 : -1;
+            return true;
+        }
+    } f;
+    if (l->getBody()) l->getBody()->traverse(&f);
+    return f.found;
+}
+
+// The C++ of a for loop's step `x op= v`, or null for another step.
+static const char* step_operator(glslang::TOperator op) {
+    switch (op) {
+        case glslang::EOpAddAssign: return " += ";
+        case glslang::EOpSubAssign: return " -= ";
+        case glslang::EOpMulAssign: return " *= ";
+        case glslang::EOpDivAssign: return " /= ";
+        default: return nullptr;
+    }
+}
+
 void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     const std::vector<long long> vars = assigned_outside(l);
     std::string list;
@@ -1167,14 +1213,6 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         if (locals_.contains(id) && locals_[id].plain_counter) continue;
         list += ", " + n;
     }
-    // Each loop of a function has its own name: loop, loop2, ...
-    const std::string name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
-    std::string head;
-    if (!loops_.empty()) head = "Loop " + name + "(" + loops_.back().name + list + ");";
-    else if (!masks_.empty()) head = "Loop " + name + "(inside(" + mask() + ")" + list + ");";
-    else head = "Loop " + name + "(" + (list.empty() ? "" : list.substr(2)) + ");";
-    if (list.empty() && loops_.empty() && masks_.empty()) head = "Loop<Bool<F>> " + name + ";";
-    line(head + "  // the variables the loop assigns", nullptr);
     std::string init_text;
     if (init) {
         auto* b = init->getAsBinaryNode();
@@ -1187,26 +1225,40 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         init_text = (lo.plain_counter ? "int" : type(s->getType(), b)) + " " + lo.name + " = " + v.text;
     }
     Expr c = l->getTest() ? expr(l->getTest()) : Expr{"true", kPrimary, true};
+    // A loop every lane runs the same number of times is a C++ loop, as a person writes it: its
+    // condition is the same for every lane and no lane leaves or pauses it on its own.
+    const bool plain = c.plain && !lanes_may_leave(l);
+    std::string name;
+    if (!plain) {
+        // Each Loop of a function has its own name: loop, loop2, ...
+        name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
+        std::string head;
+        if (!loops_.empty()) head = "Loop " + name + "(" + loops_.back().name + list + ");";
+        else if (!masks_.empty()) head = "Loop " + name + "(inside(" + mask() + ")" + list + ");";
+        else head = "Loop " + name + "(" + (list.empty() ? "" : list.substr(2)) + ");";
+        if (list.empty() && loops_.empty() && masks_.empty()) head = "Loop<Bool<F>> " + name + ";";
+        line(head + "  // the variables the loop assigns", nullptr);
+    }
+    const std::string test = plain ? c.text : name + "(" + c.text + ")";
     std::string step;
     if (TIntermTyped* t = l->getTerminal()) {
         if (auto* u = t->getAsUnaryNode(); u && u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) {
             const bool inc = u->getOp() == glslang::EOpPostIncrement || u->getOp() == glslang::EOpPreIncrement;
             auto* sym = u->getOperand()->getAsSymbolNode();
-            const bool plain = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            const bool plain_counter = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
             const glslang::TBasicType bt = u->getOperand()->getType().getBasicType();
             const std::string one = bt == glslang::EbtFloat ? "1.0f" : scalar_type(bt, u) + "(1)";
-            step = plain ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
-        } else if (auto* b = t->getAsBinaryNode(); b && b->getOp() > glslang::EOpAssign && b->getOp() <= glslang::EOpSubAssign) {
+            step = plain_counter ? lvalue(u->getOperand()) + (inc ? "++" : "--") : lvalue(u->getOperand()) + (inc ? " += " : " -= ") + one;
+        } else if (auto* b = t->getAsBinaryNode(); b && b->getLeft()->getType().isScalar() && step_operator(b->getOp())) {
             Expr r = expr(b->getRight());
-            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !locals_[b->getLeft()->getAsSymbolNode() ? b->getLeft()->getAsSymbolNode()->getId() : 0].plain_counter) {
+            auto* sym = b->getLeft()->getAsSymbolNode();
+            const bool plain_counter = sym && locals_.contains(sym->getId()) && locals_[sym->getId()].plain_counter;
+            if (r.plain && b->getRight()->getType().getBasicType() != glslang::EbtFloat && !plain_counter) {
                 r = as_typed(b->getRight(), b->getRight()->getType());
             }
-            step = lvalue(b->getLeft()) + (b->getOp() == glslang::EOpAddAssign ? " += " : " -= ") + r.text;
+            step = lvalue(b->getLeft()) + step_operator(b->getOp()) + r.text;
         } else {
             refuse(t, "this loop step");
-        }
-        if (!assigned_outside(l->getBody() ? l->getBody() : t).empty() || true) {
-            // lanes that continued rejoin before the step
         }
     }
     const bool has_continue = [&] {
@@ -1222,22 +1274,22 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         return f.found;
     }();
     if (has_continue && !step.empty()) step = name + ".next(), " + step;
-    loops_.push_back({name, int(masks_.size())});
+    if (!plain) loops_.push_back({name, int(masks_.size())});
     if (!l->testFirst()) {
         if (c.plain && c.text == "true") refuse(l, "a do loop without a condition");
         line("do {", l);
         block(l->getBody());
-        line("} while (" + name + "(" + c.text + "));", nullptr);
+        line("} while (" + test + ");", nullptr);
     } else if (init || !step.empty()) {
-        line("for (" + init_text + "; " + name + "(" + c.text + "); " + step + ") {", l);
+        line("for (" + init_text + "; " + test + "; " + step + ") {", l);
         block(l->getBody());
         line("}", nullptr);
     } else {
-        line("while (" + name + "(" + (c.text == "true" ? "" : c.text) + ")) {", l);
+        line("while (" + (plain || c.text != "true" ? test : name + "()") + ") {", l);
         block(l->getBody());
         line("}", nullptr);
     }
-    loops_.pop_back();
+    if (!plain) loops_.pop_back();
 }
 
 void StageWriter::statement(TIntermNode* n) {
@@ -1252,10 +1304,14 @@ void StageWriter::statement(TIntermNode* n) {
             if (is_for_sequence(a)) {
                 const std::vector<TIntermNode*> s = statements_of(a);
                 auto* sym = s[0]->getAsBinaryNode()->getLeft()->getAsSymbolNode();
-                if (locals_.contains(sym->getId()) && locals_[sym->getId()].declaring == s[0]) {
+                if (sym && locals_.contains(sym->getId()) && locals_[sym->getId()].declaring == s[0]) {
                     loop(s[1]->getAsLoopNode(), s[0]);
                     return;
                 }
+                // An initialiser that declares nothing (`for (i = 0; ...)`): an assignment before the loop.
+                statement(s[0]);
+                loop(s[1]->getAsLoopNode(), nullptr);
+                return;
             }
             line("{", nullptr);
             block(a);
@@ -1381,31 +1437,26 @@ bool StageWriter::plain_counter(TIntermAggregate* seq, long long id) {
     if (t.getBasicType() != glslang::EbtInt || !t.isScalar() || !init->getRight()->getAsConstantUnion() || !lp->testFirst()) {
         return false;
     }
-    struct Writes : glslang::TIntermTraverser {
+    // Written in the body, or handed to a function (whose parameter is a per-lane int): not plain.
+    bool written = false;
+    for_each_write(lp->getBody(), [&](long long written_id, glslang::TIntermTyped*) { written = written || written_id == id; });
+    struct Arguments : glslang::TIntermTraverser {
         long long id;
-        int n = 0;
-        void check(TIntermTyped* x) {
-            while (auto* b = x->getAsBinaryNode()) x = b->getLeft();
-            if (auto* s = x->getAsSymbolNode(); s && s->getId() == id) ++n;
-        }
-        bool visitBinary(glslang::TVisit, TIntermBinary* b) override {
-            if (is_assignment(b->getOp())) check(b->getLeft());
-            return true;
-        }
-        bool visitUnary(glslang::TVisit, TIntermUnary* u) override {
-            if (u->getOp() >= glslang::EOpPostIncrement && u->getOp() <= glslang::EOpPreDecrement) check(u->getOperand());
-            return true;
-        }
+        bool found = false;
         bool visitAggregate(glslang::TVisit, TIntermAggregate* a) override {
-            if (a->getOp() == glslang::EOpFunctionCall) {
-                for (TIntermNode* x : a->getSequence()) check(x->getAsTyped());
+            if (a->getOp() != glslang::EOpFunctionCall) return true;
+            for (TIntermNode* x : a->getSequence()) {
+                TIntermTyped* arg = x->getAsTyped();
+                while (auto* b = arg->getAsBinaryNode()) arg = b->getLeft();
+                found = found || (arg->getAsSymbolNode() && arg->getAsSymbolNode()->getId() == id);
             }
             return true;
         }
     } w;
     w.id = id;
     if (lp->getBody()) lp->getBody()->traverse(&w);
-    if (w.n != 0) return false;
+    if (written || w.found) return false;
+
     TIntermTyped* step = lp->getTerminal();
     if (!step) return false;
     if (auto* b = step->getAsBinaryNode(); b && !b->getRight()->getAsConstantUnion()) return false;
@@ -1483,7 +1534,7 @@ void StageWriter::function(TIntermAggregate* f) {
 
 // The struct types the stage uses, inner ones first.
 void collect_structs(const TType& t, std::vector<const TType*>& out, std::set<std::string>& seen) {
-    if (!t.isStruct()) return;
+    if (!t.isStruct() || is_per_vertex_block(t)) return;
     for (const glslang::TTypeLoc& m : *t.getStruct()) collect_structs(*m.type, out, seen);
     const std::string name = t.getTypeName().c_str();
     if (seen.insert(name).second) out.push_back(&t);
@@ -1622,6 +1673,15 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
     const std::string vertex_body = vw.write();
     StageWriter fw(Stage::Fragment, fragment.file, *fp.shader->getIntermediate(), p);
     const std::string fragment_body = fw.write();
+    std::string unbounded;  // where a loop may reach llvmpipe's limit, which C++ loops do not keep
+    for (const auto& [stage, file] : {std::pair{&vp, compiled.vertex.file}, std::pair{&fp, fragment.file}}) {
+        const LoopBound b = loop_bound(*stage->shader->getIntermediate());
+        if (!b.within_limit() && unbounded.empty()) {
+            const TIntermNode* at = b.unbounded_loop;
+            unbounded = source_position(file, at ? at->getLoc().line : 0, at ? at->getLoc().column : 0) +
+                        (at ? "this loop may go round" : "the loops may go round") + " 65,535 times";
+        }
+    }
 
     // The varyings the fragment stage reads, in the interpreter's order: name and floats.
     std::vector<std::pair<std::string, int>> varyings;
@@ -1646,7 +1706,13 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "// written by `quadshade translate`: each line ends with its GLSL line. The shader's functions are\n"
       << "// members of a struct that holds what GLSL keeps at global scope (uniforms, inputs, outputs,\n"
       << "// globals), over the number type F. A condition that varies per fragment runs both sides, each\n"
-      << "// write keeping the lanes of the other side (select); loops are Loop objects (shading/glsl/control.h).\n"
+      << "// write keeping the lanes of the other side (select); a loop a lane can leave early is a Loop object\n"
+      << "// (shading/glsl/control.h), one every lane runs equally often a C++ loop.\n";
+    if (!unbounded.empty()) {
+        h << "// " << comment_text(unbounded) << ", where llvmpipe leaves\n"
+          << "// a shader's loops and this translation does not: quadshade runs this shader in its interpreter.\n";
+    }
+    h
       << "#include \"shading/glsl.h\"\n"
       << "#include \"shading/glsl/generated.h\"\n"
       << "#include \"shading/program_of.h\"\n"
@@ -1752,6 +1818,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
                "#include \"" + name + ".h\"\n\n" + "namespace " + name + " {\n\nQUADSHADE_SHADERS(" + struct_name +
                ")\n\n}  // namespace " + name + "\n";
     t.vertex_glsl = without_version_line(compiled.vertex.text);
+    t.unbounded_loop = unbounded;
     t.fragment_glsl = without_version_line(fragment.text);
     const std::string glsl_files = name + ".vert " + name + ".frag";
     t.cmake = "# " + name + " as a plugin, built against the installed quadshade package:\n"

@@ -28,6 +28,10 @@ struct Translation {
     // fragment shader, their #version lines blank (ShaderInfo::glsl_version writes it)
     std::string vertex_glsl;
     std::string fragment_glsl;
+    // FILE:LINE:COL and why, where a loop may go round as often as llvmpipe's limit (65,535 times,
+    // frontend/loop_bound.h), which llvmpipe and the interpreter keep and a C++ loop does not;
+    // empty where every loop is bounded below it
+    std::string unbounded_loop;
 };
 
 // The translation of `fragment` (with `vertex`, or the vertex shader quadshade writes for it),

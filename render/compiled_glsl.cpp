@@ -179,6 +179,13 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
         if (way == GlslWay::Compile) std::fprintf(stderr, "quadshade: not compiled: %s\n", e.what());
         return nullptr;
     }
+    if (!t.unbounded_loop.empty()) {
+        if (way == GlslWay::Compile) {
+            std::fprintf(stderr, "quadshade: not compiled: %s, where llvmpipe leaves a shader's loops and C++ does not\n",
+                         t.unbounded_loop.c_str());
+        }
+        return nullptr;
+    }
     t.source = registration_source(t, ShadeModes{});  // hashed without the modes: the folder's name ends with them
     const std::optional<std::string> cache = plugin_cache_dir();
     if (!cache) {

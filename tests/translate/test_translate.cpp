@@ -14,11 +14,12 @@
 
 #include "frontend/cpp_writer.h"
 #include "interpreter/glsl_program.h"
+#include "render/compiled_glsl.h"
 #include "render/scene_render.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "shading/program_of.h"
-#include "tests/shading_modes.h"
+#include "tests/translate/same_pixels.h"
 #include "tests/test_paths.h"
 
 #include "translated_lawlor_mandelbrot/translated_lawlor_mandelbrot.h"
@@ -28,6 +29,7 @@
 #include "translated_sampler_parameter/translated_sampler_parameter.h"
 #include "translated_constant_vector_table/translated_constant_vector_table.h"
 #include "translated_texture_lookups/translated_texture_lookups.h"
+#include "translated_counted_loops/translated_counted_loops.h"
 #include "translated_texture_queries/translated_texture_queries.h"
 
 namespace {
@@ -37,27 +39,6 @@ using namespace qs;
 frontend::Translation translate(const Program& p, const std::string& name) {
     return frontend::translate_glsl({name + ".frag", glsl_source(p, false)}, frontend::GlslSource{name + ".vert", glsl_source(p, true)},
                                     name);
-}
-
-std::size_t differing_pixels(const Framebuffer& a, const Framebuffer& b) {
-    std::size_t n = 0;
-    for (std::size_t p = 0; p < a.rgba.size() / 4; ++p) {
-        bool differs = false;
-        for (std::size_t c = 0; c < 4; ++c) {
-            differs = differs || std::bit_cast<std::uint32_t>(a.rgba[p * 4 + c]) != std::bit_cast<std::uint32_t>(b.rgba[p * 4 + c]);
-        }
-        n += differs;
-    }
-    return n;
-}
-
-// A frame of the first pixel's colour everywhere.
-Framebuffer uniform_like(const Framebuffer& f) {
-    Framebuffer u = f;
-    for (std::size_t p = 0; p < u.rgba.size() / 4; ++p) {
-        for (std::size_t c = 0; c < 4; ++c) u.rgba[p * 4 + c] = f.rgba[c];
-    }
-    return u;
 }
 
 }  // namespace
@@ -81,7 +62,7 @@ TEST_CASE("every catalogue shader's GLSL is translated, or refused with its line
         }
     }
     INFO(translated << " translated, " << refused << " refused");
-    CHECK(translated >= 113);
+    CHECK(translated >= 118);
 }
 
 TEST_CASE("a translation names GLSL's identifiers safely and keeps file names out of code", "[translate]") {
@@ -118,31 +99,13 @@ std::unique_ptr<Program> make_program() {
     return std::make_unique<ProgramOf<Shader>>();
 }
 
-// Renders `scene` with the interpreted program and then the compiled one under each shading mode:
-// the two must agree to the bit, on a picture rather than one colour.
-void check_same_pixels(Scene& scene, const Program& interpreted, const Program& compiled,
-                       const std::string& what) {
-    for (const test::ShadingMode& m : test::kShadingModes) {
-        FrameRequest r;
-        r.width = 64, r.height = 48;
-        r.shading.derivatives = m.derivatives;
-        r.shading.precision = m.precision;
-        r.shader_override = interpreted.info().name;
-        const Framebuffer expected = render_frame(scene, r);
-        r.shader_override = compiled.info().name;
-        const Framebuffer got = render_frame(scene, r);
-        INFO(what << ", " << m.what);
-        CHECK(differing_pixels(expected, got) == 0);
-        CHECK(differing_pixels(expected, uniform_like(expected)) > 0);
-    }
-}
-
 }  // namespace
 
 TEST_CASE("compiled translations draw what the interpreter draws, to the bit, under each rule", "[translate]") {
     // A loop with a break that varies per fragment; a function of derivatives; nested loops
     // around an if and else that vary per fragment, with a texture; chained assignments; functions
-    // taking a sampler; constant arrays of vectors read per fragment.
+    // taking a sampler; constant arrays of vectors read per fragment; C++ loops beside and inside
+    // Loop objects.
     const TranslatedCase cases[] = {
         {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
         {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
@@ -150,7 +113,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_chained_assignment::TranslatedChainedAssignment>, "chained_assignment", false},
         {make_program<translated_sampler_parameter::TranslatedSamplerParameter>, "sampler_parameter", false},
         {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
-         false}};
+         false},
+        {make_program<translated_counted_loops::TranslatedCountedLoops>, "counted_loops", false}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -169,7 +133,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         const Program& interpreted = add_compiled_program(std::move(glsl_program), "interpreted", vertex, frag.text);
         const Program& compiled = add_compiled_program(c.make(), "translated", vertex, frag.text);
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
-        check_same_pixels(scene, interpreted, compiled, name);
+        test::check_same_pixels(scene, interpreted, compiled, name);
     }
 }
 
@@ -244,14 +208,60 @@ TEST_CASE("a translation's texture lookups, every form, draw what the interprete
     volume.field = "volume";
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    check_same_pixels(scene, interpreted, compiled, "texture_lookups");
+    test::check_same_pixels(scene, interpreted, compiled, "texture_lookups");
+}
+
+TEST_CASE("a shader whose loops may reach llvmpipe's limit is not compiled: the interpreter keeps the limit", "[translate]") {
+    // The iterations of main() and what it calls, each loop's counter run as GLSL runs it.
+    const auto unbounded = [](const std::string& body, const std::string& version = "") {
+        const std::string text = version + "varying vec2 st;\nuniform int n;\n" + body;
+        return frontend::translate_glsl({"loops.frag", text}, std::nullopt, "loops").unbounded_loop;
+    };
+    const std::string sum = "float f(float x) { float s = 0.0; for (int i = 0; i < 250; i++) s += x; return s; }\n";
+    CHECK(unbounded("void main() { float s = 0.0;\n"
+                    "  for (float f = 8.0; f >= 0.25; f *= 0.5) s += f;\n"     // 6 times
+                    "  float k = 5.0; for (float i = 0.; i < k; i++) s += i;\n"  // k is never changed
+                    "  for (int i = 10; 0 < i; i -= 3) s += 1.0;\n"              // 4 times
+                    "  gl_FragColor = vec4(s); }\n")
+              .empty());
+    CHECK(unbounded(sum + "void main() { float s = 0.0; for (int j = 0; j < 261; j++) s += f(st.x);\n"
+                          "  gl_FragColor = vec4(s); }\n")  // 261 * 251 = 65,511 of 65,535
+              .empty());
+    CHECK(unbounded(sum + "void main() { float s = 0.0; for (int j = 0; j < 262; j++) s += f(st.x);\n"
+                          "  gl_FragColor = vec4(s); }\n") == "loops.frag: the loops may go round 65,535 times");
+    CHECK(unbounded("void main() { float s = 0.0;\n"
+                    "  for (int i = 0; i < n; i++) s += 1.0;\n"  // a uniform bound
+                    "  gl_FragColor = vec4(s); }\n") == "loops.frag:4:3: this loop may go round 65,535 times");
+    CHECK(unbounded("void main() { float x = st.x;\n"
+                    "  while (x < 1e30) x *= 2.0;\n"  // a value the body computes
+                    "  gl_FragColor = vec4(x); }\n") == "loops.frag:4:3: this loop may go round 65,535 times");
+    CHECK(unbounded("void main() { float s = 0.0;\n"
+                    "  for (int i = 0; i < 4; i++) { s += 1.0; i += int(st.x); }\n"  // the body moves the counter
+                    "  gl_FragColor = vec4(s); }\n") == "loops.frag:4:3: this loop may go round 65,535 times");
+    CHECK(unbounded("int i;\nvoid restart() { i = 0; }\nvoid main() {\n"
+                    "  for (i = 0; i < 10; i++) restart();\n"  // a global counter a called function changes
+                    "  gl_FragColor = vec4(st, 0.0, 1.0); }\n") == "loops.frag:6:3: this loop may go round 65,535 times");
+    CHECK(unbounded("void main() { float s = 0.0; int m;\n"
+                    "  for (int i = 1; i != m; i++) s += 1.0;\n"  // read before it is set
+                    "  m = 3;\n"
+                    "  gl_FragColor = vec4(s); }\n") == "loops.frag:4:3: this loop may go round 65,535 times");
+    CHECK(unbounded("void main() { float s = 0.0;\n"
+                    "  for (int i = 0; i < 4; i++) s += frexp(st.x, i);\n"  // a built-in's out argument
+                    "  gl_FragColor = vec4(s); }\n",
+                    "#version 400\n") == "loops.frag:5:3: this loop may go round 65,535 times");
+    // Not compiled, so that the interpreter runs it: nothing to compile, no plugin cache needed.
+    const frontend::GlslSource never_ending{"never.frag", "varying vec2 st;\nvoid main() { float x = st.x;\n"
+                                                          "  while (true) { x += 1.0; if (x < -1.0) break; }\n"
+                                                          "  gl_FragColor = vec4(x); }\n"};
+    CHECK(compiled_glsl_program(never_ending, std::nullopt, "never", GlslWay::Compile) == nullptr);
 }
 
 TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter draws, to the bit, under each rule",
           "[translate][textures]") {
     const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_queries.frag");
-    const frontend::GlslSource vert = frontend::read_glsl_file(test::kSource / "tests/translate/texture_queries.vert");
-    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, vert);
+    // GLSL 4.00 with the vertex stage the front end writes for it: a GLSL 1.50 and later one, whose
+    // gl_Position is gl_PerVertex's.
+    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
     const std::string vertex = compiled_glsl.vertex.text;
     const Program& interpreted = add_compiled_program(
         std::make_unique<interpreter::GlslProgram>("interpreted texture_queries", std::move(compiled_glsl)),
@@ -270,5 +280,5 @@ TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter
     volume.field = "volume";
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    check_same_pixels(scene, interpreted, compiled, "texture_queries");
+    test::check_same_pixels(scene, interpreted, compiled, "texture_queries");
 }
