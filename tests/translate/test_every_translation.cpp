@@ -1,7 +1,7 @@
 // Every catalogue shader's GLSL the C++ writer translates, compiled into a plugin as `--compile`
 // compiles it (render/compiled_glsl.h) and drawn beside the interpreter running the same GLSL under
 // every shading mode: the two call the vocabulary's functions in the same order, so the images are
-// identical to the bit. About 115 plugins take about 40 CPU-minutes to compile, so this test is
+// identical to the bit. About 115 plugins take about 14 CPU-minutes to compile, so this test is
 // built only where it is asked for (tools/setup --translations); QUADSHADE_SHARD=k/n runs the
 // shaders k, k + n, k + 2n ... of the catalogue, so that ctest runs shards side by side.
 
