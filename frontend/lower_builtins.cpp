@@ -438,7 +438,10 @@ Place StageLowering::eval_shadow(glslang::TOperator op, TIntermTyped* node, int 
     ir::Instr& e = emit(offset ? ir::Op::TextureShadowOffset : ir::Op::TextureShadow);
     e.d = r[0].reg, e.a = a, e.c = c, e.n = 2, e.count = std::uint16_t(slot);
     if (node->getType().getVectorSize() != 4) return r;
-    return {r[0], r[0], r[0], {B::Float, float_constant(1.0f)}};
+    Place luminance = temps(B::Float, 4);
+    for (int i = 0; i < 3; ++i) move(luminance[std::size_t(i)], r[0], false);
+    move(luminance[3], {B::Float, float_constant(1.0f)}, false);
+    return luminance;
 }
 
 }  // namespace qs::frontend
