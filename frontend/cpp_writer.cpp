@@ -14,6 +14,7 @@
 
 #include "frontend/binding_names.h"
 #include "frontend/parse_stage.h"
+#include "frontend/shadow_lookup.h"
 #include "frontend/side_effects.h"
 
 namespace qs::frontend {
@@ -813,29 +814,16 @@ Expr StageWriter::call(TIntermAggregate* a) {
 // which change nothing, are left out (refused where leaving them out would drop a side effect).
 Expr StageWriter::shadow_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
                                 const std::vector<std::string>& v) {
-    bool projective = false, offset = false;
-    switch (op) {
-        case glslang::EOpTexture: case glslang::EOpTextureLod: case glslang::EOpTextureGrad: break;
-        case glslang::EOpTextureOffset: case glslang::EOpTextureLodOffset: case glslang::EOpTextureGradOffset:
-            offset = true;
-            break;
-        case glslang::EOpTextureProj: case glslang::EOpTextureProjLod: case glslang::EOpTextureProjGrad: projective = true; break;
-        case glslang::EOpTextureProjOffset: case glslang::EOpTextureProjLodOffset: case glslang::EOpTextureProjGradOffset:
-            projective = offset = true;
-            break;
-        default: refuse(node, "this texture function on a sampler2DShadow");
-    }
-    // the offset follows P, or P and the level; after the two derivatives of a Grad form
-    const std::size_t at = !offset ? 0
-                           : op == glslang::EOpTextureGradOffset || op == glslang::EOpTextureProjGradOffset ? 4
-                           : op == glslang::EOpTextureLodOffset || op == glslang::EOpTextureProjLodOffset   ? 3
-                                                                                                            : 2;
+    const std::optional<ShadowLookupForm> form = shadow_lookup_form(op);
+    if (!form) refuse(node, "this texture function on a sampler2DShadow");
+    const std::size_t at = std::size_t(form->offset_arg);
     for (std::size_t i = 2; i < args.size(); ++i) {
-        if (i != at && has_side_effects(args[i])) refuse(node, "a shadow lookup whose level, bias or derivatives change a variable");
+        if (i != at && has_side_effects(args[i])) {
+            refuse(node, "a shadow lookup whose level, bias or derivatives change a variable");
+        }
     }
-    std::string t = std::string(projective ? "textureShadowProj" : "textureShadow") + (offset ? "Offset(" : "(") + v[0] + ", " + v[1];
-    if (offset) t += ", " + v[at];
-    t += ")";
+    std::string t = std::string(form->projective ? "textureShadowProj" : "textureShadow") + (at ? "Offset(" : "(") + v[0] +
+                    ", " + v[1] + (at ? ", " + v[at] : "") + ")";
     if (node->getType().getVectorSize() == 4) t = "depthLuminance(" + t + ")";
     return {t, kPostfix, false};
 }
@@ -950,7 +938,9 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         case glslang::EOpTextureLodOffset: case glslang::EOpTextureProjLodOffset: case glslang::EOpTextureGradOffset:
         case glslang::EOpTextureProjGradOffset: case glslang::EOpTextureFetchOffset: {
             const TType& st = args[0]->getAsTyped()->getType();
-            if (st.getSampler().isShadow() && op != glslang::EOpTextureQuerySize) return shadow_lookup(op, node, args, v);
+            if (st.getSampler().isShadow() && op != glslang::EOpTextureQuerySize) {
+                return shadow_lookup(op, node, args, v);
+            }
             const bool three = st.getSampler().dim == glslang::Esd3D;
             const std::string base = three ? "texture3D" : "texture2D";
             const bool vertex = stage_ == Stage::Vertex;

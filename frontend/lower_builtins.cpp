@@ -3,6 +3,7 @@
 // defines it so, on whole vectors and matrices where it does not.
 
 #include "frontend/glsl_types.h"
+#include "frontend/shadow_lookup.h"
 #include "frontend/lowering.h"
 
 namespace qs::frontend {
@@ -404,33 +405,21 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
 // side effects and left out. shadow2D and its kin return (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's
 // default, GL_LUMINANCE, makes them.
 Place StageLowering::eval_shadow(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<Place>& v) {
-    bool projective = false, offset = false;
-    switch (op) {
-        case glslang::EOpTexture: case glslang::EOpTextureLod: case glslang::EOpTextureGrad: break;
-        case glslang::EOpTextureOffset: case glslang::EOpTextureLodOffset: case glslang::EOpTextureGradOffset:
-            offset = true;
-            break;
-        case glslang::EOpTextureProj: case glslang::EOpTextureProjLod: case glslang::EOpTextureProjGrad: projective = true; break;
-        case glslang::EOpTextureProjOffset: case glslang::EOpTextureProjLodOffset: case glslang::EOpTextureProjGradOffset:
-            projective = offset = true;
-            break;
-        default:
-            refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
-                         "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod and textureSize are)");
+    const std::optional<ShadowLookupForm> form = shadow_lookup_form(op);
+    if (!form) {
+        refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
+                     "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod and textureSize are)");
     }
     Place p(v[0].begin(), v[0].begin() + 3);
-    if (projective) {
+    if (form->projective) {
         // times the reciprocal of q, as Mesa lowers a projective lookup, the reference value too
         const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), v[0][3].reg);
         for (Slot& s : p) s = {B::Float, emit1(ir::Op::FMul, B::Float, s.reg, q)};
     }
+    const bool offset = form->offset_arg > 0;
     std::uint32_t c = 0;
     if (offset) {
-        // the offset follows P, or P and the level; after the two derivatives of a Grad form
-        const std::size_t at = op == glslang::EOpTextureGradOffset || op == glslang::EOpTextureProjGradOffset ? 3
-                               : op == glslang::EOpTextureLodOffset || op == glslang::EOpTextureProjLodOffset ? 2
-                                                                                                             : 1;
-        const Place o_int = convert_bits(v[at], B::Int);
+        const Place o_int = convert_bits(v[std::size_t(form->offset_arg - 1)], B::Int);  // v leaves the sampler out
         c = consecutive(Place(o_int.begin(), o_int.begin() + 2));
     }
     const std::uint32_t a = consecutive(p);

@@ -289,7 +289,8 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
         std::vector<Binding> bindings;
         for (const SamplerUniform& s : samplers_of(p)) {
             const int unit = int(bindings.size());
-            bindings.push_back({glGetUniformLocation(p, s.name.c_str()), unit, &texture_of(o, name, s.name, s.dims, s.shadow)});
+            const Texture& t = texture_of(o, name, s.name, s.dims, s.shadow);
+            bindings.push_back({glGetUniformLocation(p, s.name.c_str()), unit, &t});
         }
         bound_.push_back(std::move(bindings));
         // Under --shader a material's uniforms were written for its own shader: only the ones the
