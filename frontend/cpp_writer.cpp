@@ -15,6 +15,8 @@
 #include "frontend/binding_names.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
+#include "frontend/shadow_lookup.h"
+#include "frontend/side_effects.h"
 #include "frontend/variable_writes.h"
 
 namespace qs::frontend {
@@ -245,6 +247,8 @@ private:
     Expr aggregate(TIntermAggregate* a);
     Expr call(TIntermAggregate* a);
     Expr builtin(const std::string& name, TIntermTyped* node, const glslang::TIntermSequence& args);
+    Expr shadow_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
+                       const std::vector<std::string>& v);
     Expr constructor(TIntermAggregate* a);
     Expr conversion(TIntermTyped* from, const TType& to, TIntermTyped* at);
     std::string swizzle(TIntermBinary* b);
@@ -291,10 +295,10 @@ std::string StageWriter::scalar_type(glslang::TBasicType b, const TIntermNode* a
 // A sampler's texture (shading/glsl/texture.h): one of the kinds the renderer binds.
 std::string StageWriter::sampler_type(const TType& t, const TIntermNode* at) const {
     const glslang::TSampler& s = t.getSampler();
-    const bool plain = !t.isArray() && s.isCombined() && !s.isShadow() && !s.isArrayed() && !s.isMultiSample() &&
+    const bool plain = !t.isArray() && s.isCombined() && !s.isArrayed() && !s.isMultiSample() &&
                        s.getBasicType() == glslang::EbtFloat;
-    if (plain && s.dim == glslang::Esd2D) return "sampler2D";
-    if (plain && s.dim == glslang::Esd3D) return "sampler3D";
+    if (plain && s.dim == glslang::Esd2D) return "sampler2D";  // a sampler2DShadow's depth comparison texture too
+    if (plain && !s.isShadow() && s.dim == glslang::Esd3D) return "sampler3D";
     refuse(at, "a sampler of this kind");
 }
 
@@ -833,6 +837,25 @@ Expr StageWriter::call(TIntermAggregate* a) {
     return {text + ")", kPostfix, false};
 }
 
+// A lookup in a sampler2DShadow (shading/glsl/texture_shadow.h), as the lowering makes it: a
+// depth comparison texture has one level and one filter, so a level, a bias or derivatives,
+// which change nothing, are left out (refused where leaving them out would drop a side effect).
+Expr StageWriter::shadow_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
+                                const std::vector<std::string>& v) {
+    const std::optional<ShadowLookupForm> form = shadow_lookup_form(op);
+    if (!form) refuse(node, "this texture function on a sampler2DShadow");
+    const std::size_t at = std::size_t(form->offset_arg);
+    for (std::size_t i = 2; i < args.size(); ++i) {
+        if (i != at && has_side_effects(args[i])) {
+            refuse(node, "a shadow lookup whose level, bias or derivatives change a variable");
+        }
+    }
+    std::string t = std::string(form->projective ? "textureShadowProj" : "textureShadow") + (at ? "Offset(" : "(") + v[0] +
+                    ", " + v[1] + (at ? ", " + v[at] : "") + ")";
+    if (node->getType().getVectorSize() == 4) t = "depthLuminance(" + t + ")";
+    return {t, kPostfix, false};
+}
+
 Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang::TIntermSequence& args) {
     const TOperator op = node->getAsOperator()->getOp();
     std::vector<std::string> v;
@@ -951,6 +974,9 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         case glslang::EOpTextureLodOffset: case glslang::EOpTextureProjLodOffset: case glslang::EOpTextureGradOffset:
         case glslang::EOpTextureProjGradOffset: case glslang::EOpTextureFetchOffset: {
             const TType& st = args[0]->getAsTyped()->getType();
+            if (st.getSampler().isShadow() && op != glslang::EOpTextureQuerySize) {
+                return shadow_lookup(op, node, args, v);
+            }
             const bool three = st.getSampler().dim == glslang::Esd3D;
             const std::string base = three ? "texture3D" : "texture2D";
             const bool vertex = stage_ == Stage::Vertex;

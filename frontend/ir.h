@@ -91,6 +91,8 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TextureGather)       /* d..d+3 = textureGather(s, a, a+1, m): channel m of level 0's texels */   \
     X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
+    X(TextureShadow)       /* d = a sampler2DShadow's comparison of a+2 with the depth at a, a+1 */   \
+    X(TextureShadowOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     /* control flow: the running mask of lanes; jump targets in Instr::target */                      \
     X(If)           /* lanes of B[a] run the then-part; none: jump to target (Else or EndIf) */       \
     X(Else)         /* the other lanes run the else-part; none: jump to target (EndIf) */              \
@@ -189,10 +191,12 @@ struct Uniform {
     std::array<std::uint32_t, 16> initial{};  // the declaration's initializer, or zeros
 };
 
-// A sampler uniform: its name and how many coordinates it takes.
+// A sampler uniform: its name, how many coordinates it takes, and whether it is a shadow
+// sampler (sampler2DShadow), which reads a depth comparison texture.
 struct Sampler {
     std::string name;
     int dims = 2;
+    bool shadow = false;
 };
 
 struct Stage {

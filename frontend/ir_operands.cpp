@@ -134,6 +134,8 @@ Operands operands(const Instr& in) {
         case Op::TextureGather: o.add(Field::D, F, 4, true), o.add(Field::A, F, 2); break;
         case Op::TextureGatherOffset: o.add(Field::D, F, 4, true), o.add(Field::A, F, 2), o.add(Field::C, I, 2); break;
         case Op::TextureQueryLod: o.add(Field::D, F, 2, true), o.add(Field::A, F, in.n); break;
+        case Op::TextureShadow: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3); break;
+        case Op::TextureShadowOffset: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3), o.add(Field::C, I, 2); break;
         case Op::If: case Op::BreakUnless: o.add(Field::A, B); break;
         case Op::Else: case Op::EndIf: case Op::LoopBegin: case Op::LoopContinue: case Op::LoopEnd: case Op::Break:
         case Op::Continue: case Op::SwitchBegin: case Op::SwitchEnd: case Op::CallBegin: case Op::CallEnd:
@@ -150,7 +152,7 @@ bool is_texture(Op op) {
         case Op::Texture: case Op::TextureBias: case Op::TextureLod: case Op::TextureGrad: case Op::TextureOffset:
         case Op::TextureBiasOffset: case Op::TextureLodOffset: case Op::TextureGradOffset: case Op::TexelFetch:
         case Op::TexelFetchOffset: case Op::TextureSize: case Op::TextureGather: case Op::TextureGatherOffset:
-        case Op::TextureQueryLod:
+        case Op::TextureQueryLod: case Op::TextureShadow: case Op::TextureShadowOffset:
             return true;
         default: return false;
     }

@@ -3,6 +3,7 @@
 // defines it so, on whole vectors and matrices where it does not.
 
 #include "frontend/glsl_types.h"
+#include "frontend/shadow_lookup.h"
 #include "frontend/lowering.h"
 
 namespace qs::frontend {
@@ -310,6 +311,9 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         return coords;
     };
     const bool vertex = kind_ == StageKind::Vertex;
+    if (interface_.program.samplers[std::size_t(slot)].shadow && op != glslang::EOpTextureQuerySize) {
+        return eval_shadow(op, node, slot, v);
+    }
     const Place zero{{B::Float, float_constant(0.0f)}};
     // A vertex shader's implicit lookups read level 0 (it has no neighbours to take a level from).
     const auto implicit = [&](const Place& coords, const Place* bias, const Place* offset) {
@@ -393,6 +397,40 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     refuse(node, std::string(name) + " is not supported (supported: texture, texture2D, texture3D with or without a "
                  "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
                  "textureGather, textureGatherOffset, textureQueryLod)");
+}
+
+// A lookup in a sampler2DShadow: P is (s, t, the reference value), (s, t, r, q) projected. A depth
+// comparison texture has one level and one filter (the scene refuses others), so a level of
+// detail, a bias or derivatives change nothing that llvmpipe reads: they are evaluated for their
+// side effects and left out. shadow2D and its kin return (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's
+// default, GL_LUMINANCE, makes them.
+Place StageLowering::eval_shadow(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<Place>& v) {
+    const std::optional<ShadowLookupForm> form = shadow_lookup_form(op);
+    if (!form) {
+        refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
+                     "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod and textureSize are)");
+    }
+    Place p(v[0].begin(), v[0].begin() + 3);
+    if (form->projective) {
+        // times the reciprocal of q, as Mesa lowers a projective lookup, the reference value too
+        const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), v[0][3].reg);
+        for (Slot& s : p) s = {B::Float, emit1(ir::Op::FMul, B::Float, s.reg, q)};
+    }
+    const bool offset = form->offset_arg > 0;
+    std::uint32_t c = 0;
+    if (offset) {
+        const Place o_int = convert_bits(v[std::size_t(form->offset_arg - 1)], B::Int);  // v leaves the sampler out
+        c = consecutive(Place(o_int.begin(), o_int.begin() + 2));
+    }
+    const std::uint32_t a = consecutive(p);
+    Place r = temps(B::Float, 1);
+    ir::Instr& e = emit(offset ? ir::Op::TextureShadowOffset : ir::Op::TextureShadow);
+    e.d = r[0].reg, e.a = a, e.c = c, e.n = 2, e.count = std::uint16_t(slot);
+    if (node->getType().getVectorSize() != 4) return r;
+    Place luminance = temps(B::Float, 4);
+    for (int i = 0; i < 3; ++i) move(luminance[std::size_t(i)], r[0], false);
+    move(luminance[3], {B::Float, float_constant(1.0f)}, false);
+    return luminance;
 }
 
 }  // namespace qs::frontend

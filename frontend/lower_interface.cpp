@@ -219,7 +219,10 @@ Place StageLowering::ftransform() {
 
 int StageLowering::sampler_uniform(TIntermSymbol* node, const std::string& name, const glslang::TType& type) {
     const glslang::TSampler& s = type.getSampler();
-    if (s.isShadow()) refuse(node, "shadow samplers are not supported");
+    if (s.isShadow() && s.dim != glslang::Esd2D) {
+        refuse(node, "sampler type '" + std::string(type.getSampler().getString().c_str()) +
+                         "' is not supported (of the shadow samplers, sampler2DShadow is)");
+    }
     if (s.isArrayed() || s.isMultiSample() || s.isBuffer() || s.isRect() || s.isImage() || s.isSubpass() ||
         s.isExternal() || s.isYuv() || s.type != glslang::EbtFloat) {
         refuse(node, "sampler type '" + std::string(type.getSampler().getString().c_str()) +
@@ -233,7 +236,7 @@ int StageLowering::sampler_uniform(TIntermSymbol* node, const std::string& name,
             refuse(node, "sampler type '" + std::string(type.getSampler().getString().c_str()) +
                              "' is not supported (sampler2D and sampler3D are)");
     }
-    const int slot = interface_.sampler(name, dims, where(node));
+    const int slot = interface_.sampler(name, dims, s.isShadow(), where(node));
     if (!type.isArray() && name == node->getName().c_str()) global_samplers_.emplace(node->getId(), slot);
     return slot;
 }

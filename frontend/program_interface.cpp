@@ -38,15 +38,15 @@ int ProgramInterface::uniform(const ir::Uniform& u, const std::string& where, bo
     return int(program.uniforms.size() - 1);
 }
 
-int ProgramInterface::sampler(const std::string& name, int dims, const std::string& where) {
+int ProgramInterface::sampler(const std::string& name, int dims, bool shadow, const std::string& where) {
     for (std::size_t i = 0; i < program.samplers.size(); ++i) {
         if (program.samplers[i].name != name) continue;
-        if (program.samplers[i].dims != dims) {
+        if (program.samplers[i].dims != dims || program.samplers[i].shadow != shadow) {
             throw GlslLinkError(where + "sampler '" + name + "' is declared with another type in the other stage");
         }
         return int(i);
     }
-    program.samplers.push_back({name, dims});
+    program.samplers.push_back({name, dims, shadow});
     return int(program.samplers.size() - 1);
 }
 

@@ -34,8 +34,8 @@ struct ProgramInterface {
     // The slot of the user uniform `u`, added on first use; a second declaration must agree,
     // in its type and, where both have one, in its initializer (u.initial, when `initialised`).
     int uniform(const ir::Uniform& u, const std::string& where, bool initialised);
-    // The slot of the sampler `name`.
-    int sampler(const std::string& name, int dims, const std::string& where);
+    // The slot of the sampler `name` (`shadow`: a sampler2DShadow).
+    int sampler(const std::string& name, int dims, bool shadow, const std::string& where);
     // The fragment stage's varying `name`, added on first use.
     VaryingSlot& fragment_varying(const std::string& name, int components, ir::Bank bank, bool flat,
                                   const std::string& where, bool noperspective = false);

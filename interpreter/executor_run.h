@@ -6,6 +6,7 @@
 
 #include "interpreter/executor.h"
 #include "shading/glsl/texture_queries.h"
+#include "shading/glsl/texture_shadow.h"
 
 namespace qs::interpreter {
 
@@ -194,7 +195,7 @@ RunResult Machine<F>::run() {
             case ir::Op::TextureOffset: case ir::Op::TextureBiasOffset: case ir::Op::TextureLodOffset:
             case ir::Op::TextureGradOffset: case ir::Op::TexelFetch: case ir::Op::TexelFetchOffset:
             case ir::Op::TextureSize: case ir::Op::TextureGather: case ir::Op::TextureGatherOffset:
-            case ir::Op::TextureQueryLod:
+            case ir::Op::TextureQueryLod: case ir::Op::TextureShadow: case ir::Op::TextureShadowOffset:
                 texture(in);
                 break;
             case ir::Op::LoadIndexed: case ir::Op::StoreIndexed: indexed(in); break;
@@ -478,6 +479,15 @@ void Machine<F>::texture(const ir::Instr& in) {
         const glsl::vec2<F> q = in.n == 2 ? glsl::textureQueryLod(static_cast<const sampler2D&>(t), vector_at<2>(in.a))
                                           : glsl::textureQueryLod(static_cast<const sampler3D&>(t), vector_at<3>(in.a));
         for (int i = 0; i < 2; ++i) put(in, f_[in.d + std::uint32_t(i)], q[i]);
+        return;
+    }
+    if (in.op == ir::Op::TextureShadow || in.op == ir::Op::TextureShadowOffset) {
+        const auto& depth = static_cast<const glsl::sampler2D&>(t);
+        const glsl::vec3<F> p = vector_at<3>(in.a);
+        const F r = in.op == ir::Op::TextureShadow
+                        ? glsl::textureShadow(depth, p)
+                        : glsl::textureShadowOffset(depth, p, glsl::vec<I, 2>(i_[in.c], i_[in.c + 1]));
+        put(in, f_[in.d], r);
         return;
     }
     glsl::vec<F, 4> c;

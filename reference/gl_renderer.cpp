@@ -89,11 +89,18 @@ std::vector<std::pair<std::string, GLenum>> active_attributes(GLuint p) {
     return r;
 }
 
-// Its sampler uniforms, bound per object by name, as (name, dimensions).
-std::vector<std::pair<std::string, int>> samplers_of(GLuint p) {
-    std::vector<std::pair<std::string, int>> r;
+// Its sampler uniforms, bound per object by name.
+struct SamplerUniform {
+    std::string name;
+    int dims;
+    bool shadow;  // a sampler2DShadow
+};
+std::vector<SamplerUniform> samplers_of(GLuint p) {
+    std::vector<SamplerUniform> r;
     for (const auto& [name, type] : active_uniforms(p)) {
-        if (type == GL_SAMPLER_2D || type == GL_SAMPLER_3D) r.emplace_back(name, type == GL_SAMPLER_3D ? 3 : 2);
+        if (type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_SHADOW) {
+            r.push_back({name, type == GL_SAMPLER_3D ? 3 : 2, type == GL_SAMPLER_2D_SHADOW});
+        }
     }
     return r;
 }
@@ -163,7 +170,8 @@ GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& na
         throw std::runtime_error(name + ": " + why);
     };
     for (const auto& [u, type] : active_uniforms(p)) {
-        const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D;  // bound per object, by name
+        // bound per object, by name
+        const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_SHADOW;
         if (const SceneMatrixName* m = find_scene_matrix(u)) {
             if (type != (m->columns == 4 ? GL_FLOAT_MAT4 : GL_FLOAT_MAT3)) {
                 refuse("uniform '" + u + "' is the scene's transform: declare it " + (m->columns == 4 ? "mat4" : "mat3"));
@@ -279,9 +287,10 @@ void GlSceneRenderer::prepare(GlPrograms& programs) {
         const GLuint p = programs.program(name, request_.atlas);
         programs_.push_back(p);
         std::vector<Binding> bindings;
-        for (const auto& [uniform, dims] : samplers_of(p)) {
+        for (const SamplerUniform& s : samplers_of(p)) {
             const int unit = int(bindings.size());
-            bindings.push_back({glGetUniformLocation(p, uniform.c_str()), unit, &texture_of(o, name, uniform, dims)});
+            const Texture& t = texture_of(o, name, s.name, s.dims, s.shadow);
+            bindings.push_back({glGetUniformLocation(p, s.name.c_str()), unit, &t});
         }
         bound_.push_back(std::move(bindings));
         // Under --shader a material's uniforms were written for its own shader: only the ones the
@@ -397,13 +406,17 @@ GlSceneRenderer::AttributeArray GlSceneRenderer::attribute_array(const Mesh& mes
 }
 
 const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
-                                                            const std::string& uniform, int dims) {
+                                                            const std::string& uniform, int dims, bool shadow) {
     const int index = o.texture_for(uniform);
     const std::string what = scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
-                             (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + uniform + "'";
+                             (dims == 3 ? "a sampler3D" : shadow ? "a sampler2DShadow" : "a sampler2D") + " '" + uniform + "'";
     if (index < 0) return white(dims);
     const qs::Texture& source = scene_.textures[std::size_t(index)];
     if (source.dims != dims) throw std::runtime_error(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture");
+    if (source.compare != shadow) {
+        throw std::runtime_error(what + " but " + source.field +
+                                 (shadow ? " is not a depth comparison texture" : " is a depth comparison texture"));
+    }
     Texture& t = textures_[std::size_t(index)];
     if (t.id) return t;
     DecodedImage image;
@@ -428,6 +441,20 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
         }
         t.height = image.height / source.depth;
         glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, image.width, t.height, source.depth, 0, GL_RGBA, type, image.bytes.data());
+    } else if (source.compare) {
+        // The depth is the red byte as llvmpipe turns a unorm8 into a float (times the float
+        // nearest 1/255), uploaded as floats so that no conversion (GL_DEPTH_COMPONENT from bytes
+        // is 24-bit unorm) comes between; GL_LEQUAL is GL's default compare function.
+        if (image.sixteen_bits) {
+            throw std::runtime_error(scene_.file.string() + ": " + source.field +
+                                     ": a depth comparison texture is an 8-bit image (its red channel is the depth)");
+        }
+        std::vector<float> depth(std::size_t(image.width) * std::size_t(image.height));
+        for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = float(image.bytes[4 * i]) * float(1.0 / 255.0);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, image.width, image.height, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                     depth.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     } else {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, type, image.bytes.data());
     }

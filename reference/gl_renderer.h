@@ -135,7 +135,8 @@ private:
     void prepare(GlPrograms& programs);
     std::vector<UniformValue> uniform_values(unsigned program, const std::string& shader,
                                              const std::vector<UniformSetting>& settings, const std::filesystem::path& glsl_dir) const;
-    const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims);
+    // `shadow`: for a sampler2DShadow, which reads a depth comparison texture (and only it does).
+    const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims, bool shadow);
     const Texture& white(int dims);
 
     const Scene& scene_;

@@ -11,6 +11,7 @@
 #include "render/glsl_shaders.h"
 #include "render/textures.h"
 #include "render/uniform_binding.h"
+#include "interpreter/glsl_program.h"
 #include "scenes/object_uniforms.h"
 #include "scenes/shader_inputs.h"
 #if defined(QUADSHADE_HAS_RAYCAST)
@@ -83,6 +84,21 @@ ShadeRequest shade_request(const FrameRequest& request) {
     return {s.derivatives, s.precision, s.check_undefined, request.raster.force_general_path};
 }
 
+namespace {
+
+// Whether `program` is GLSL run by the interpreter whose sampler `uniform` is a sampler2DShadow;
+// nullopt for a shader of C++, which says nothing of it.
+std::optional<bool> shadow_sampler(const Program& program, std::string_view uniform) {
+    const auto* glsl = dynamic_cast<const interpreter::GlslProgram*>(&program);
+    if (!glsl) return std::nullopt;
+    for (const ir::Sampler& s : glsl->program().samplers) {
+        if (s.name == uniform) return s.shadow;
+    }
+    return false;
+}
+
+}  // namespace
+
 void check_supported(const FrameRequest& request) {
     check_supported(shade_request(request));
     if (request.backend != Backend::RayCaster) return;
@@ -117,6 +133,14 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
                          (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + std::string(uniform) + "' but " +
                          source.field + " is a " + std::to_string(source.dims) + "D texture" +
                          (dims == 3 ? " (a 3D texture's binding gives its depth)" : ""));
+    }
+    // A shadow sampler reads a depth comparison texture, and only it does (GL leaves either
+    // mismatch undefined).
+    if (const std::optional<bool> shadow = shadow_sampler(program, uniform); shadow && *shadow != source.compare) {
+        throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
+                         (*shadow ? "a sampler2DShadow '" : "a sampler2D '") + std::string(uniform) + "' but " + source.field +
+                         (*shadow ? " is not a depth comparison texture (its binding needs \"compare\": \"LEQUAL\")"
+                                  : " is a depth comparison texture, for a sampler2DShadow"));
     }
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
     if (!t) {

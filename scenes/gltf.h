@@ -23,7 +23,11 @@
 //                                top to bottom: slice z (r = (z + 0.5) / 32) is rows
 //                                [z H, (z + 1) H) of an image of 32 H rows, each slice's first
 //                                row at t = 0 (a 32^3 volume is a 32x1024 image)
-//        "wrapR": 33071 }        the r axis's wrap (3D only; glTF has none): REPEAT by default;
+//        "wrapR": 33071,         the r axis's wrap (3D only; glTF has none): REPEAT by default;
+//        "compare": "LEQUAL" }   a depth comparison texture for a sampler2DShadow (2D only): the
+//                                image's red channel is the depth (red / 255), compared with
+//                                GL_LEQUAL (the one function supported, GL's default); its
+//                                sampler's minFilter is NEAREST or LINEAR, the same as magFilter;
 //    "teximage" may be bound this way too (instead of baseColorTexture; not with extras.teximage).
 //    Volumes are 8-bit images (PNG), as a GL_RGBA8 3D texture holds them;
 //  - nodes with EXT_mesh_gpu_instancing draw their mesh once per instance; animations of node

@@ -707,8 +707,9 @@ private:
         if (v.IsString()) return file_texture(v.Get<std::string>(), field, Sampler{}, 2, 1);
         if (!v.IsObject()) fail(file_, field, "expected a textures[] index, an image file name or an object");
         for (const std::string& key : v.Keys()) {
-            if (key != "texture" && key != "image" && key != "sampler" && key != "depth" && key != "wrapR") {
-                fail(file_, field + "." + key, "unknown key (texture, image, sampler, depth, wrapR)");
+            if (key != "texture" && key != "image" && key != "sampler" && key != "depth" && key != "wrapR" &&
+                key != "compare") {
+                fail(file_, field + "." + key, "unknown key (texture, image, sampler, depth, wrapR, compare)");
             }
         }
         if (v.Has("texture") == v.Has("image")) fail(file_, field, "needs exactly one of texture (an index) and image (a file)");
@@ -730,30 +731,54 @@ private:
             const tinygltf::Value& w = v.Get("wrapR");
             sampler.wrap_r = wrap_of(w.IsInt() ? w.Get<int>() : -1, field + ".wrapR");
         }
-        if (v.Has("image")) {
-            if (!v.Get("image").IsString()) fail(file_, field + ".image", "expected a file name");
-            return file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims, depth);
+        bool compare = false;
+        if (v.Has("compare")) {
+            const tinygltf::Value& c = v.Get("compare");
+            if (!c.IsString() || c.Get<std::string>() != "LEQUAL") {
+                fail(file_, field + ".compare", "expected \"LEQUAL\" (the one compare function supported, GL's default)");
+            }
+            if (dims != 2) fail(file_, field + ".compare", "a depth comparison texture is 2D (no depth)");
+            compare = true;
         }
-        return texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth);
+        if (v.Has("image") && !v.Get("image").IsString()) fail(file_, field + ".image", "expected a file name");
+        const int t = v.Has("image") ? file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims, depth,
+                                                    compare)
+                                     : texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth,
+                                                     compare);
+        if (compare) {
+            // One level and one filter: what llvmpipe reads then needs no level of detail, and a
+            // depth texture's mipmaps (a float blit) are not modelled.
+            const Sampler& s = scene_.textures[std::size_t(t)].sampler;
+            const std::string where = own_sampler ? field + ".sampler" : field;
+            if (uses_mipmaps(s.min_filter)) {
+                fail(file_, where, "a depth comparison texture has one level: its sampler's minFilter must be NEAREST "
+                                   "or LINEAR, not a mipmapped filter (glTF's default sampler is one)");
+            }
+            if ((s.min_filter == Filter::Linear) != (s.mag_filter == Filter::Linear)) {
+                fail(file_, where, "a depth comparison texture needs the same minFilter and magFilter");
+            }
+        }
+        return t;
     }
 
     int texture_index(const tinygltf::Value& v, const std::string& field, const Sampler& sampler, bool own_sampler, int dims,
-                      int depth) {
+                      int depth, bool compare = false) {
         if (!v.IsInt()) fail(file_, field, "expected a textures[] index");
         Texture t = read_texture(v.Get<int>(), field);
         const Wrap wrap_r = sampler.wrap_r;
         if (own_sampler) t.sampler = sampler;
         t.sampler.wrap_r = wrap_r;
-        t.dims = dims, t.depth = depth;
+        t.dims = dims, t.depth = depth, t.compare = compare;
         return add_once(std::move(t));
     }
 
-    int file_texture(const std::string& uri, const std::string& field, const Sampler& sampler, int dims, int depth) {
+    int file_texture(const std::string& uri, const std::string& field, const Sampler& sampler, int dims, int depth,
+                     bool compare = false) {
         Texture t;
         t.field = field;
         t.image = named_file(uri, field);
         t.sampler = sampler;
-        t.dims = dims, t.depth = depth;
+        t.dims = dims, t.depth = depth, t.compare = compare;
         return add_once(std::move(t));
     }
 

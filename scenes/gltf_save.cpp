@@ -124,12 +124,16 @@ tinygltf::Value uniforms_value(const std::vector<UniformSetting>& settings) {
     return tinygltf::Value(std::move(uniforms));
 }
 
-// A material's extras.textures: a 2D texture by its index, a volume with its depth and r wrap.
+// A material's extras.textures: a 2D texture by its index, a volume with its depth and r wrap, a
+// depth comparison texture with its compare function.
 tinygltf::Value samplers_value(const Scene& scene, const std::vector<SamplerBinding>& samplers) {
     tinygltf::Value::Object named;
     for (const SamplerBinding& b : samplers) {
         const Texture& t = scene.textures[std::size_t(b.texture)];
-        if (t.dims == 2) {
+        if (t.compare) {
+            named[b.uniform] = tinygltf::Value(tinygltf::Value::Object{
+                {"texture", tinygltf::Value(b.texture)}, {"compare", tinygltf::Value(std::string("LEQUAL"))}});
+        } else if (t.dims == 2) {
             named[b.uniform] = tinygltf::Value(b.texture);
         } else {
             named[b.uniform] = tinygltf::Value(tinygltf::Value::Object{

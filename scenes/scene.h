@@ -123,6 +123,10 @@ struct Texture {
     // each slice's first row at t = 0, as a 2D texture's.
     int dims = 2;
     int depth = 1;
+    // A depth comparison texture, for a sampler2DShadow: the image's red channel is the depth
+    // (red / 255), compared with GL_LEQUAL, GL's default function; one level (no mipmapped
+    // minification filter) and one filter for minification and magnification.
+    bool compare = false;
     // What names it, for messages: "materials[0].pbrMetallicRoughness.baseColorTexture (images[1])"
     // or "materials[0].extras.teximage".
     std::string field;

@@ -9,6 +9,7 @@
 #include "shading/glsl/mat.h"
 #include "shading/glsl/texture.h"
 #include "shading/glsl/texture_queries.h"
+#include "shading/glsl/texture_shadow.h"
 
 namespace qs::glsl {
 

@@ -13,6 +13,7 @@
 
 #include "shading/glsl/texture.h"
 #include "shading/glsl/texture_queries.h"
+#include "shading/glsl/texture_shadow.h"
 #include "shading/number/sin_cos.h"
 
 #include <algorithm>
@@ -1225,6 +1226,35 @@ void gather_channel(const Texture& tex, const Gather& g) {
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Uints order[4] = {k.k[0][1][0], k.k[0][1][1], k.k[0][0][1], k.k[0][0][0]};
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
+    }
+}
+
+// lp_build_sample_image_nearest and _linear with a comparison (lp_bld_sample_soa.c): level 0's
+// texel, or its four bilinear texels, each compared with the reference value (ordered, as
+// GL_LEQUAL: ref <= depth), the 0/1 results blended with the bilinear weights as colours are
+// (lp_build_masklerp2d). The float path's coordinates, as a GL_DEPTH_COMPONENT32F texture's.
+void sample_shadow(const Texture& tex, const ShadowLookup& l) {
+    const std::array<bool, 3> pot = pot_sizes<2>(tex);
+    const LevelLanes lv = level_lanes(tex, Ints{});
+    const Ints linear = tex.sampler.mag == Filter::Linear ? splat(-1) : Ints{};
+    for (int base = 0; base < l.lanes; base += L) {
+        const int n = std::min(l.lanes - base, L);
+        Axes<2> ax;
+        for (int i = 0; i < 2; ++i) {
+            Ints offset;
+            if (l.offset[std::size_t(i)]) offset = load_lanes<Ints>(l.offset[std::size_t(i)], base, n);
+            ax.a[i] = soa_axis(load_lanes(i == 0 ? l.s : l.t, base, n), size_of(lv, i), wrap_of(tex.sampler, i),
+                               pot[std::size_t(i)], linear, Ints{}, l.offset[std::size_t(i)] ? &offset : nullptr);
+        }
+        const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
+        const Floats ref = load_lanes(l.ref, base, n);
+        const auto passes = [&](const Uints& texel) {
+            const Ints pass = ref <= unorm(channel(texel, 0));
+            return pass ? splat(1.0f) : Floats{};
+        };
+        const Floats r0 = lerp(ax.a[0].w, passes(k.k[0][0][0]), passes(k.k[0][0][1]));
+        const Floats r1 = lerp(ax.a[0].w, passes(k.k[0][1][0]), passes(k.k[0][1][1]));
+        store_lanes(l.out, base, n, lerp(ax.a[1].w, r0, r1));
     }
 }
 

@@ -42,9 +42,12 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
         {"#version 400\nuniform sampler2D t;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = textureGatherOffsets(t, st, ivec2[4](ivec2(0), ivec2(1), ivec2(2), ivec2(3)));\n}\n",
          "user.frag:6", "textureGatherOffsets"},
-        {"#version 130\nuniform sampler2DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = vec4(texture(depth, vec3(st, 0.5)));\n}\n",
-         "user.frag:6", "shadow"},
+        {"#version 130\nuniform samplerCubeShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
+         "  c = vec4(texture(depth, vec4(st, 1.0, 0.5)));\n}\n",
+         "user.frag:6", "samplerCubeShadow"},
+        {"#version 400\nuniform sampler2DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
+         "  c = textureGather(depth, st, 0.5);\n}\n",
+         "user.frag:6", "sampler2DShadow"},
         {"#version 130\nin vec2 unknown_varying;\nout vec4 c;\nvoid main() { c = vec4(unknown_varying, 0.0, 1.0); }\n",
          "user.frag:4", "unknown_varying"},
         // glslang's own message for GLSL that does not compile

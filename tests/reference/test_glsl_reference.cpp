@@ -298,6 +298,47 @@ void main() {
 })"},
 };
 
+// sampler2DShadow's lookups: whole fragment shaders that read `st` and a depth comparison
+// texture `depth`. The reference values run from below 0 to above 1 across the depths, and meet
+// them exactly in a band (where GL_LEQUAL and GL_LESS differ); the
+// lookups go past the texture's edges under each wrap; a level, a bias or derivatives change
+// nothing on a texture of one level and one filter.
+const LanguageCase kShadowLookups[] = {
+    {"shadow_texture", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform sampler2DShadow depth;
+void main() {
+    vec2 p = st * 2.5 - 0.7;
+    float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
+    float a = texture(depth, vec3(p, ref));
+    float b = textureOffset(depth, vec3(p, ref), ivec2(-3, 2));
+    float c = textureProj(depth, vec4(vec3(p, ref) * (1.0 + st.y), 1.0 + st.y));
+    float d = textureLod(depth, vec3(p * 1.3, ref), 2.0);
+    float e = textureGrad(depth, vec3(p, ref), vec2(0.1, 0.0), vec2(0.0, 0.3) * st.x);
+    float f = texture(depth, vec3(p * 0.7, ref), st.y * 4.0 - 2.0);
+    float g = textureProjOffset(depth, vec4(p, ref, 1.0) * (2.0 - st.x), ivec2(5, -7));
+    float h = textureLodOffset(depth, vec3(p, ref), 0.5, ivec2(1, 1));
+    float i = textureGradOffset(depth, vec3(p, ref), vec2(0.2), vec2(0.1), ivec2(-8, 7));
+    float j = texture(depth, vec3(p, floor(st.x * 256.0) * (1.0 / 255.0)));  // equal to depths
+    vec2 size = vec2(textureSize(depth, 0)) / 64.0;
+    color = st.y < 0.25 ? vec4(a, b, c, 1.0) : st.y < 0.5 ? vec4(d, e, f, 1.0) : st.y < 0.75 ? vec4(g, h, i, 1.0)
+                        : vec4(j, size, 1.0);
+})"},
+    {"shadow_legacy", R"(#version 120
+#extension GL_ARB_shader_texture_lod : require
+varying vec2 st;
+uniform sampler2DShadow depth;
+void main() {
+    vec2 p = st * 3.0 - 1.0;
+    float ref = fract(st.y * 2.0 + st.x * 0.6) * 1.1 - 0.05;
+    vec4 a = shadow2D(depth, vec3(p, ref));
+    vec4 b = shadow2DProj(depth, vec4(p, ref, 1.0) * (0.5 + st.x));
+    vec4 c = shadow2DLod(depth, vec3(p.yx, ref), 1.0);
+    gl_FragColor = st.x < 0.33 ? a : st.x < 0.67 ? vec4(b.xy, a.w, b.w) : vec4(c.x, b.x, c.zw);
+})"},
+};
+
 }  // namespace
 
 TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interpreter][reference]") {
@@ -368,6 +409,43 @@ TEST_CASE("textureGrad, the Offset lookups, gathers and textureQueryLod, run by 
             const std::string name = std::string(c.name) + "-" + sc.name;
             check_against_llvmpipe(dir, *context, programs, size, name, std::string("#version 400") + c.source + "\n",
                                    c.over_1, c.cause, scene);
+        }
+    }
+}
+
+TEST_CASE("sampler2DShadow's lookups, run by the interpreter, match OSMesa llvmpipe under each filter and wrap",
+          "[interpreter][reference][textures]") {
+    const std::filesystem::path dir = temp_dir("glsl-shadow");
+    const int size = 64;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    constexpr Wrap kRepeat = Wrap::Repeat, kMirror = Wrap::MirroredRepeat, kClamp = Wrap::ClampToEdge;
+    struct SamplerCase {
+        const char* name;
+        const char* image;  // its red channel is the depth
+        Sampler sampler;
+    };
+    // Sizes that are powers of two and that are not, each wrap, both filters.
+    const SamplerCase samplers[] = {
+        {"nearest-clamp", "texture-16x16.png", {Filter::Nearest, Filter::Nearest, kClamp, kClamp, kRepeat}},
+        {"linear-repeat", "texture-16x8.png", {Filter::Linear, Filter::Linear, kRepeat, kRepeat, kRepeat}},
+        {"linear-npot", "texture-37x19.png", {Filter::Linear, Filter::Linear, kRepeat, kClamp, kRepeat}},
+        {"linear-mirrored", "texture-13x7.png", {Filter::Linear, Filter::Linear, kMirror, kMirror, kRepeat}},
+        {"nearest-mirrored-npot", "texture-13x7.png", {Filter::Nearest, Filter::Nearest, kMirror, kRepeat, kRepeat}},
+    };
+    for (const SamplerCase& sc : samplers) {
+        Scene scene = load_scene(kPlane);
+        Texture depth;
+        depth.image.file = kSource / "scenes/assets/conformance/images" / sc.image;
+        depth.sampler = sc.sampler;
+        depth.compare = true;
+        depth.field = "depth";
+        scene.textures.push_back(depth);
+        scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
+        for (const LanguageCase& c : kShadowLookups) {
+            const std::string name = std::string(c.name) + "-" + sc.name;
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
+                                   scene);
         }
     }
 }

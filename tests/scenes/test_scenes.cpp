@@ -232,7 +232,8 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
         return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
             "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
             "materials": [{"extras": )" + extras + R"(}],
-            "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 33071}, {"minFilter": 9728, "wrapT": 33648}],
+            "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 33071}, {"minFilter": 9728, "wrapT": 33648},
+                                                           {"minFilter": 9729, "magFilter": 9729}],
             "images": [{"uri": "images/volume.png"}],
             "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
                            "min": [-1, -1, 0], "max": [1, 1, 0]}],
@@ -270,6 +271,32 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
         CHECK(v2.sampler == volume.sampler);
         CHECK(v2.image.file == volume.image.file);
     }
+    SECTION("a depth comparison texture for a sampler2DShadow; saved and loaded the same; the two kinds not mixed") {
+        write_text(dir / "shadow.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform sampler2DShadow depth;\n"
+                                        "void main() { c = vec4(texture(depth, vec3(st, 0.5))); }\n");
+        write_text(dir / "d.gltf", gltf(R"({"glsl": "shadow.frag", "textures": {
+            "depth": {"image": "images/flat.png", "sampler": 2, "compare": "LEQUAL"}}})"));
+        Scene s = load_scene(dir / "d.gltf");
+        const Texture& depth = s.textures[std::size_t(s.objects[0].texture_for("depth"))];
+        CHECK(depth.compare);
+        CHECK_NOTHROW(render_frame(s, {}));
+        save_scene(s, dir / "saved-depth.gltf");
+        const Scene again = load_scene(dir / "saved-depth.gltf");
+        CHECK(again.textures[std::size_t(again.objects[0].texture_for("depth"))].compare);
+
+        write_text(dir / "plain.gltf", gltf(R"({"glsl": "shadow.frag", "textures": {"depth": "images/flat.png"}})"));
+        Scene plain = load_scene(dir / "plain.gltf");
+        CHECK_THROWS_WITH(render_frame(plain, {}),
+                          Catch::Contains("plain.gltf") && Catch::Contains("sampler2DShadow 'depth'") &&
+                              Catch::Contains("not a depth comparison texture"));
+        write_text(dir / "colour.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform sampler2D depth;\n"
+                                        "void main() { c = texture(depth, st); }\n");
+        write_text(dir / "mixed.gltf", gltf(R"({"glsl": "colour.frag", "textures": {
+            "depth": {"image": "images/flat.png", "sampler": 2, "compare": "LEQUAL"}}})"));
+        Scene mixed = load_scene(dir / "mixed.gltf");
+        CHECK_THROWS_WITH(render_frame(mixed, {}),
+                          Catch::Contains("mixed.gltf") && Catch::Contains("is a depth comparison texture"));
+    }
     SECTION("teximage by name") {
         write_text(dir / "b.gltf", gltf(R"({"shader": "single_texture", "textures": {"teximage": "images/flat.png"}})"));
         Scene s = load_scene(dir / "b.gltf");
@@ -291,6 +318,13 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
             {R"({"textures": {"u": {"image": "/etc/passwd"}}})", "extras.textures.u.image"},
             {R"({"teximage": "images/flat.png", "textures": {"teximage": 0}})", "bound twice"},
             {R"({"textures": {"teximage": {"texture": 0, "depth": 3}}})", "sampler2D"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 2, "compare": "LESS"}}})",
+             "extras.textures.u.compare"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 2, "depth": 2, "compare": "LEQUAL"}}})",
+             "is 2D"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "compare": "LEQUAL"}}})", "one level"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 1, "compare": "LEQUAL"}}})",
+             "extras.textures.u.sampler"},
         };
         for (const auto& [extras, message] : bad) {
             INFO(extras);

@@ -31,6 +31,7 @@
 #include "translated_texture_lookups/translated_texture_lookups.h"
 #include "translated_counted_loops/translated_counted_loops.h"
 #include "translated_texture_queries/translated_texture_queries.h"
+#include "translated_texture_shadow/translated_texture_shadow.h"
 
 namespace {
 
@@ -281,4 +282,27 @@ TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
     test::check_same_pixels(scene, interpreted, compiled, "texture_queries");
+}
+
+TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter draws, to the bit, under each rule",
+          "[translate][textures]") {
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_shadow.frag");
+    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
+    const std::string vertex = compiled_glsl.vertex.text;
+    const Program& interpreted = add_compiled_program(
+        std::make_unique<interpreter::GlslProgram>("interpreted texture_shadow", std::move(compiled_glsl)),
+        "interpreted", vertex, frag.text);
+    const Program& compiled = add_compiled_program(
+        make_program<translated_texture_shadow::TranslatedTextureShadow>(), "translated", vertex, frag.text);
+    // A linear depth texture of a size that is no power of two, mirrored, so that the blend of the
+    // comparisons and the offsets reach each wrap's code.
+    Scene scene = load_scene(test::kPlane);
+    Texture depth;
+    depth.image.file = test::kSource / "scenes/assets/conformance/images/texture-37x19.png";
+    depth.sampler = {Filter::Linear, Filter::Linear, Wrap::MirroredRepeat, Wrap::Repeat, Wrap::Repeat};
+    depth.compare = true;
+    depth.field = "depth";
+    scene.textures.push_back(depth);
+    scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
+    test::check_same_pixels(scene, interpreted, compiled, "texture_shadow");
 }
