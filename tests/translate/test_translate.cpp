@@ -186,30 +186,44 @@ TEST_CASE("a render's modes: those of a draw with and without a texture's level 
     CHECK_FALSE(ShadeModes{bit(Derivatives::Fine)}.covers(ShadeModes{bit(Derivatives::Fine) | bit(Derivatives::None)}));
 }
 
-TEST_CASE("a translation's texture lookups, every form, draw what the interpreter draws, to the bit, under each rule",
-          "[translate][textures]") {
-    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_lookups.frag");
+namespace {
+
+// A file of tests/translate drawn on `scene` by the interpreter and by its translation compiled
+// into this test (with the vertex stage the front end writes for it), to the bit under each rule.
+void check_file_on(const std::string& name, std::unique_ptr<Program> (*translated)(), Scene& scene) {
+    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate" / (name + ".frag"));
     frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
     const std::string vertex = compiled_glsl.vertex.text;
     const Program& interpreted = add_compiled_program(
-        std::make_unique<interpreter::GlslProgram>("interpreted texture_lookups", std::move(compiled_glsl)),
-        "interpreted", vertex, frag.text);
-    const Program& compiled = add_compiled_program(
-        make_program<translated_texture_lookups::TranslatedTextureLookups>(), "translated", vertex, frag.text);
-    // The plane's texture and the shipped volume as `volume`, both with trilinear mipmaps and a
-    // mirrored wrap, so that offsets and explicit levels reach every filter's path.
-    Scene scene = load_scene(test::kPlane);
-    const Sampler trilinear{Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::MirroredRepeat,
-                            Wrap::Repeat};
-    scene.textures.at(0).sampler = trilinear;
+        std::make_unique<interpreter::GlslProgram>("interpreted " + name, std::move(compiled_glsl)), "interpreted",
+        vertex, frag.text);
+    const Program& compiled = add_compiled_program(translated(), "translated", vertex, frag.text);
+    test::check_same_pixels(scene, interpreted, compiled, name);
+}
+
+// The shipped noise volume bound to the plane as `volume`.
+void bind_volume(Scene& scene, const Sampler& sampler) {
     Texture volume;
     volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
-    volume.sampler = trilinear;
+    volume.sampler = sampler;
     volume.dims = 3, volume.depth = 32;
     volume.field = "volume";
     scene.textures.push_back(volume);
     scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    test::check_same_pixels(scene, interpreted, compiled, "texture_lookups");
+}
+
+}  // namespace
+
+TEST_CASE("a translation's texture lookups, every form, draw what the interpreter draws, to the bit, under each rule",
+          "[translate][textures]") {
+    // The plane's texture and the shipped volume, both with trilinear mipmaps and a mirrored wrap,
+    // so that offsets and explicit levels reach every filter's path.
+    Scene scene = load_scene(test::kPlane);
+    const Sampler trilinear{Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::MirroredRepeat,
+                            Wrap::Repeat};
+    scene.textures.at(0).sampler = trilinear;
+    bind_volume(scene, trilinear);
+    check_file_on("texture_lookups", make_program<translated_texture_lookups::TranslatedTextureLookups>, scene);
 }
 
 TEST_CASE("a shader whose loops may reach llvmpipe's limit is not compiled: the interpreter keeps the limit", "[translate]") {
@@ -259,41 +273,18 @@ TEST_CASE("a shader whose loops may reach llvmpipe's limit is not compiled: the 
 
 TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter draws, to the bit, under each rule",
           "[translate][textures]") {
-    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_queries.frag");
-    // GLSL 4.00 with the vertex stage the front end writes for it: a GLSL 1.50 and later one, whose
-    // gl_Position is gl_PerVertex's.
-    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
-    const std::string vertex = compiled_glsl.vertex.text;
-    const Program& interpreted = add_compiled_program(
-        std::make_unique<interpreter::GlslProgram>("interpreted texture_queries", std::move(compiled_glsl)),
-        "interpreted", vertex, frag.text);
-    const Program& compiled = add_compiled_program(
-        make_program<translated_texture_queries::TranslatedTextureQueries>(), "translated", vertex, frag.text);
-    // Mipmaps and a mirrored wrap, so that the gathers reach each wrap's code and the query each level.
+    // GLSL 4.00, whose vertex stage the front end writes in GLSL 1.50 or later (gl_Position is
+    // gl_PerVertex's). Mipmaps and a mirrored wrap, so that the gathers reach each wrap's code and
+    // the query each level.
     Scene scene = load_scene(test::kPlane);
-    const Sampler mipmapped{Filter::Linear, Filter::NearestMipmapNearest, Wrap::MirroredRepeat, Wrap::ClampToEdge,
-                            Wrap::Repeat};
-    scene.textures.at(0).sampler = mipmapped;
-    Texture volume;
-    volume.image.file = test::kSource / "scenes/assets/textures/fast-noise-volume.png";
-    volume.sampler = {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
-    volume.dims = 3, volume.depth = 32;
-    volume.field = "volume";
-    scene.textures.push_back(volume);
-    scene.objects.at(0).samplers = {{"volume", int(scene.textures.size()) - 1}};
-    test::check_same_pixels(scene, interpreted, compiled, "texture_queries");
+    scene.textures.at(0).sampler = {Filter::Linear, Filter::NearestMipmapNearest, Wrap::MirroredRepeat,
+                                    Wrap::ClampToEdge, Wrap::Repeat};
+    bind_volume(scene, {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat});
+    check_file_on("texture_queries", make_program<translated_texture_queries::TranslatedTextureQueries>, scene);
 }
 
 TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter draws, to the bit, under each rule",
           "[translate][textures]") {
-    const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate/texture_shadow.frag");
-    frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
-    const std::string vertex = compiled_glsl.vertex.text;
-    const Program& interpreted = add_compiled_program(
-        std::make_unique<interpreter::GlslProgram>("interpreted texture_shadow", std::move(compiled_glsl)),
-        "interpreted", vertex, frag.text);
-    const Program& compiled = add_compiled_program(
-        make_program<translated_texture_shadow::TranslatedTextureShadow>(), "translated", vertex, frag.text);
     // A linear depth texture of a size that is no power of two, mirrored, so that the blend of the
     // comparisons and the offsets reach each wrap's code.
     Scene scene = load_scene(test::kPlane);
@@ -304,5 +295,5 @@ TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter dra
     depth.field = "depth";
     scene.textures.push_back(depth);
     scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
-    test::check_same_pixels(scene, interpreted, compiled, "texture_shadow");
+    check_file_on("texture_shadow", make_program<translated_texture_shadow::TranslatedTextureShadow>, scene);
 }
