@@ -1209,6 +1209,20 @@ Axis gather_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const I
     a.i1 = imin(cvt_trunc(c + 0.5f), size - 1);
     return a;
 }
+
+// The two axes of a lookup's lanes [base, base + n): its s and t (and texel offsets, where it has
+// them) handed to `axis(i, coordinate, offset or null)`.
+template <class Lookup, class Axis>
+Axes<2> axes_of(const Lookup& l, int base, int n, const Axis& axis) {
+    Axes<2> ax;
+    for (int i = 0; i < 2; ++i) {
+        const std::int32_t* given = l.offset[std::size_t(i)];
+        Ints offset;
+        if (given) offset = load_lanes<Ints>(given, base, n);
+        ax.a[i] = axis(i, load_lanes(i == 0 ? l.s : l.t, base, n), given ? &offset : nullptr);
+    }
+    return ax;
+}
 }  // namespace
 
 void gather_channel(const Texture& tex, const Gather& g) {
@@ -1216,13 +1230,9 @@ void gather_channel(const Texture& tex, const Gather& g) {
     const LevelLanes lv = level_lanes(tex, Ints{});
     for (int base = 0; base < g.lanes; base += L) {
         const int n = std::min(g.lanes - base, L);
-        Axes<2> ax;
-        for (int i = 0; i < 2; ++i) {
-            Ints offset;
-            if (g.offset[std::size_t(i)]) offset = load_lanes<Ints>(g.offset[std::size_t(i)], base, n);
-            ax.a[i] = gather_axis(load_lanes(i == 0 ? g.s : g.t, base, n), size_of(lv, i), wrap_of(tex.sampler, i),
-                                  pot[std::size_t(i)], g.offset[std::size_t(i)] ? &offset : nullptr);
-        }
+        const Axes<2> ax = axes_of(g, base, n, [&](int i, const Floats& c, const Ints* offset) {
+            return gather_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], offset);
+        });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Uints order[4] = {k.k[0][1][0], k.k[0][1][1], k.k[0][0][1], k.k[0][0][0]};
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
@@ -1239,13 +1249,9 @@ void sample_shadow(const Texture& tex, const ShadowLookup& l) {
     const Ints linear = tex.sampler.mag == Filter::Linear ? splat(-1) : Ints{};
     for (int base = 0; base < l.lanes; base += L) {
         const int n = std::min(l.lanes - base, L);
-        Axes<2> ax;
-        for (int i = 0; i < 2; ++i) {
-            Ints offset;
-            if (l.offset[std::size_t(i)]) offset = load_lanes<Ints>(l.offset[std::size_t(i)], base, n);
-            ax.a[i] = soa_axis(load_lanes(i == 0 ? l.s : l.t, base, n), size_of(lv, i), wrap_of(tex.sampler, i),
-                               pot[std::size_t(i)], linear, Ints{}, l.offset[std::size_t(i)] ? &offset : nullptr);
-        }
+        const Axes<2> ax = axes_of(l, base, n, [&](int i, const Floats& c, const Ints* offset) {
+            return soa_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, Ints{}, offset);
+        });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Floats ref = load_lanes(l.ref, base, n);
         const auto passes = [&](const Uints& texel) {
