@@ -3,11 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "files/output_file.h"
 #include "interpreter/glsl_program.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
 #include "scenes/image_io.h"
-#include "scenes/output_file.h"
 
 namespace qs::app {
 

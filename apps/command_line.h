@@ -11,8 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "files/output_file.h"
 #include "render/compiled_glsl.h"
-#include "scenes/output_file.h"
 #include "scenes/scene.h"
 #include "shading/program.h"
 
@@ -32,7 +32,7 @@ struct UsageError : std::runtime_error {
 std::filesystem::path resolved(const std::filesystem::path& p);
 
 // Refuses (UsageError) an output that cannot be written where it is named (a folder, a device,
-// a stream unless `streams` allows one: scenes/output_file.h) or is one of `inputs` (the scene's
+// a stream unless `streams` allows one: files/output_file.h) or is one of `inputs` (the scene's
 // own files, a suite's...). Cheap for a million frames: only an output named like an input has
 // its folder resolved.
 void check_output(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs,

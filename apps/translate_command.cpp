@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "files/temporary_file.h"
 #include "frontend/cpp_writer.h"
-#include "scenes/temporary_file.h"
 
 namespace qs::app {
 

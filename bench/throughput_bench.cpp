@@ -410,6 +410,54 @@ void measure_round(const Options& o, qs::Scene& scene, RowSeries& s) {
     s.general.push_back(stats_of(general_ms));
 }
 
+// One row's lines of throughput.csv, throughput.md and specialisation.md, over its rounds.
+void tabulate(const Options& o, const RowSeries& s, std::ostream& csv, std::ostream& md, std::ostream& special) {
+    const double frags = double(s.size) * s.size * 1e-3;  // per ms -> Mfrag/s
+    std::vector<double> q_rate, q_ms, g_ms, saving, speedup;
+    std::vector<int> best_widths;
+    for (int r = 0; r < o.rounds; ++r) {
+        const Stats& q = s.quadshade[std::size_t(r)];
+        const Stats& g = s.general[std::size_t(r)];
+        q_rate.push_back(frags / q.median), q_ms.push_back(q.median), g_ms.push_back(g.median);
+        saving.push_back(100.0 * (1.0 - q.median / g.median));
+        csv << s.row->shader << "," << s.size << "," << o.threads << "," << r + 1 << "," << q.median << "," << q.min
+            << "," << q.max;
+        for (const PeerRun& p : s.peers[std::size_t(r)]) {
+            if (p.report) {
+                csv << "," << p.report->median_ms << "," << p.report->min_ms << "," << p.report->max_ms << ","
+                    << p.report->setup_ms;
+            } else {
+                csv << ",,,,";
+            }
+        }
+        if (const PeerRun* best = fastest(s.peers[std::size_t(r)])) {
+            const double lm = frags / best->report->median_ms;
+            speedup.push_back(frags / q.median / lm);
+            best_widths.push_back(best->width);
+            csv << "," << best->width << "," << frags / q.median << "," << lm << "," << speedup.back() << "\n";
+        } else {
+            csv << ",," << frags / q.median << ",,\n";
+        }
+    }
+    special << format("| %s | %d | %s | ", s.row->book_name, s.size, s.needs.c_str()) << over_rounds("%.2f", q_ms)
+            << " | " << over_rounds("%.2f", g_ms) << " | " << over_rounds("%.0f", saving, "%") << " |\n";
+    md << format("| %s | %d | ", s.row->book_name, s.size) << over_rounds("%.0f", q_rate);
+    std::string setups;
+    for (std::size_t w = 0; w < o.widths.size(); ++w) {
+        std::vector<const PeerRun*> runs;
+        std::vector<double> setup;
+        for (const std::vector<PeerRun>& round : s.peers) {
+            runs.push_back(&round[w]);
+            if (round[w].report) setup.push_back(round[w].report->setup_ms);
+        }
+        md << " | " << peer_cell(runs, [&](double ms) { return frags / ms; }, "%.0f");
+        setups += (w ? " / " : "") + (setup.empty() ? std::string("-") : format("%.0f", stats_of(setup).median));
+    }
+    md << " | " << over_rounds("%.2f", speedup, "x", widths_named(best_widths));
+    md << format(" | %s | %d / %d / %d / %d |\n", setups.c_str(), s.row->book[0], s.row->book[1], s.row->book[2],
+                 s.row->book[3]);
+}
+
 int run_throughput(const Options& o) {
     std::vector<RowSeries> series;
     for (int size : o.sizes) {
@@ -448,52 +496,7 @@ int run_throughput(const Options& o) {
     std::ostringstream special;
     special << "| shader | size | what the shader needs | specialised ms | general path ms | saving |\n"
                "|---|---|---|---|---|---|\n";
-    for (const RowSeries& s : series) {
-        const double frags = double(s.size) * s.size * 1e-3;  // per ms -> Mfrag/s
-        std::vector<double> q_rate, q_ms, g_ms, saving, speedup;
-        std::vector<int> best_widths;
-        for (int r = 0; r < o.rounds; ++r) {
-            const Stats& q = s.quadshade[std::size_t(r)];
-            const Stats& g = s.general[std::size_t(r)];
-            q_rate.push_back(frags / q.median), q_ms.push_back(q.median), g_ms.push_back(g.median);
-            saving.push_back(100.0 * (1.0 - q.median / g.median));
-            csv << s.row->shader << "," << s.size << "," << o.threads << "," << r + 1 << "," << q.median << "," << q.min
-                << "," << q.max;
-            for (const PeerRun& p : s.peers[std::size_t(r)]) {
-                if (p.report) {
-                    csv << "," << p.report->median_ms << "," << p.report->min_ms << "," << p.report->max_ms << ","
-                        << p.report->setup_ms;
-                } else {
-                    csv << ",,,,";
-                }
-            }
-            if (const PeerRun* best = fastest(s.peers[std::size_t(r)])) {
-                const double lm = frags / best->report->median_ms;
-                speedup.push_back(frags / q.median / lm);
-                best_widths.push_back(best->width);
-                csv << "," << best->width << "," << frags / q.median << "," << lm << "," << speedup.back() << "\n";
-            } else {
-                csv << ",," << frags / q.median << ",,\n";
-            }
-        }
-        special << format("| %s | %d | %s | ", s.row->book_name, s.size, s.needs.c_str()) << over_rounds("%.2f", q_ms)
-                << " | " << over_rounds("%.2f", g_ms) << " | " << over_rounds("%.0f", saving, "%") << " |\n";
-        md << format("| %s | %d | ", s.row->book_name, s.size) << over_rounds("%.0f", q_rate);
-        std::string setups;
-        for (std::size_t w = 0; w < o.widths.size(); ++w) {
-            std::vector<const PeerRun*> runs;
-            std::vector<double> setup;
-            for (const std::vector<PeerRun>& round : s.peers) {
-                runs.push_back(&round[w]);
-                if (round[w].report) setup.push_back(round[w].report->setup_ms);
-            }
-            md << " | " << peer_cell(runs, [&](double ms) { return frags / ms; }, "%.0f");
-            setups += (w ? " / " : "") + (setup.empty() ? std::string("-") : format("%.0f", stats_of(setup).median));
-        }
-        md << " | " << over_rounds("%.2f", speedup, "x", widths_named(best_widths));
-        md << format(" | %s | %d / %d / %d / %d |\n", setups.c_str(), s.row->book[0], s.row->book[1], s.row->book[2],
-                     s.row->book[3]);
-    }
+    for (const RowSeries& s : series) tabulate(o, s, csv, md, special);
     std::fprintf(stderr, "\r%50s\r", "");
     std::ofstream(out / "throughput.md") << md.str();
     std::printf("%d threads; each cell the median over %d rounds of each round's median of %d frames (quadshade's "

@@ -856,6 +856,94 @@ Expr StageWriter::shadow_lookup(TOperator op, TIntermTyped* node, const glslang:
     return {t, kPostfix, false};
 }
 
+// The built-in functions written as calls of the same name in the vocabulary (shading/glsl/),
+// their arguments as they are: GLSL's operator, and the name it is written with.
+const char* same_name_builtin(TOperator op) {
+    switch (op) {
+        case glslang::EOpRadians: return "radians";
+        case glslang::EOpDegrees: return "degrees";
+        case glslang::EOpSin: return "sin";
+        case glslang::EOpCos: return "cos";
+        case glslang::EOpTan: return "tan";
+        case glslang::EOpAsin: return "asin";
+        case glslang::EOpAcos: return "acos";
+        case glslang::EOpAtan: return "atan";
+        case glslang::EOpSinh: return "sinh";
+        case glslang::EOpCosh: return "cosh";
+        case glslang::EOpTanh: return "tanh";
+        case glslang::EOpAsinh: return "asinh";
+        case glslang::EOpAcosh: return "acosh";
+        case glslang::EOpAtanh: return "atanh";
+        case glslang::EOpPow: return "pow";
+        case glslang::EOpExp: return "exp";
+        case glslang::EOpLog: return "log";
+        case glslang::EOpExp2: return "exp2";
+        case glslang::EOpLog2: return "log2";
+        case glslang::EOpSqrt: return "sqrt";
+        case glslang::EOpInverseSqrt: return "inversesqrt";
+        case glslang::EOpAbs: return "abs";
+        case glslang::EOpSign: return "sign";
+        case glslang::EOpFloor: return "floor";
+        case glslang::EOpTrunc: return "trunc";
+        case glslang::EOpRound: return "roundEven";
+        case glslang::EOpRoundEven: return "roundEven";
+        case glslang::EOpCeil: return "ceil";
+        case glslang::EOpFract: return "fract";
+        case glslang::EOpMod: return "mod";
+        case glslang::EOpMin: return "min";
+        case glslang::EOpMax: return "max";
+        case glslang::EOpClamp: return "clamp";
+        case glslang::EOpMix: return "mix";
+        case glslang::EOpStep: return "step";
+        case glslang::EOpSmoothStep: return "smoothstep";
+        case glslang::EOpFma: return "fma";
+        case glslang::EOpIsNan: return "isnan";
+        case glslang::EOpIsInf: return "isinf";
+        case glslang::EOpLength: return "length";
+        case glslang::EOpDistance: return "distance";
+        case glslang::EOpDot: return "dot";
+        case glslang::EOpCross: return "cross";
+        case glslang::EOpNormalize: return "normalize";
+        case glslang::EOpFaceForward: return "faceforward";
+        case glslang::EOpReflect: return "reflect";
+        case glslang::EOpRefract: return "refract";
+        case glslang::EOpDPdx: return "dFdx";
+        case glslang::EOpDPdy: return "dFdy";
+        case glslang::EOpFwidth: return "fwidth";
+        case glslang::EOpDPdxFine: return "dFdxFine";
+        case glslang::EOpDPdyFine: return "dFdyFine";
+        case glslang::EOpFwidthFine: return "fwidthFine";
+        case glslang::EOpDPdxCoarse: return "dFdxCoarse";
+        case glslang::EOpDPdyCoarse: return "dFdyCoarse";
+        case glslang::EOpFwidthCoarse: return "fwidthCoarse";
+        case glslang::EOpLessThan: return "lessThan";
+        case glslang::EOpLessThanEqual: return "lessThanEqual";
+        case glslang::EOpGreaterThan: return "greaterThan";
+        case glslang::EOpGreaterThanEqual: return "greaterThanEqual";
+        case glslang::EOpVectorEqual: return "equal";
+        case glslang::EOpVectorNotEqual: return "notEqual";
+        case glslang::EOpAny: return "any";
+        case glslang::EOpAll: return "all";
+        case glslang::EOpTranspose: return "transpose";
+        case glslang::EOpDeterminant: return "determinant";
+        case glslang::EOpMatrixInverse: return "inverse";
+        case glslang::EOpOuterProduct: return "outerProduct";
+        case glslang::EOpMul: return "matrixCompMult";
+        case glslang::EOpFloatBitsToInt: return "floatBitsToInt";
+        case glslang::EOpFloatBitsToUint: return "floatBitsToUint";
+        case glslang::EOpIntBitsToFloat: return "intBitsToFloat";
+        case glslang::EOpUintBitsToFloat: return "uintBitsToFloat";
+        case glslang::EOpBitFieldReverse: return "bitfieldReverse";
+        case glslang::EOpBitCount: return "bitCount";
+        case glslang::EOpFindLSB: return "findLSB";
+        case glslang::EOpFindMSB: return "findMSB";
+        case glslang::EOpBitfieldExtract: return "bitfieldExtract";
+        case glslang::EOpBitfieldInsert: return "bitfieldInsert";
+        case glslang::EOpLdexp: return "ldexp";
+        default: return nullptr;
+    }
+}
+
 Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang::TIntermSequence& args) {
     const TOperator op = node->getAsOperator()->getOp();
     std::vector<std::string> v;
@@ -865,86 +953,8 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         for (std::size_t i = 0; i < v.size(); ++i) t += (i ? ", " : "") + v[i];
         return Expr{t + ")", kPostfix, false};
     };
+    if (const char* name = same_name_builtin(op)) return fn(name);
     switch (op) {
-        case glslang::EOpRadians: return fn("radians");
-        case glslang::EOpDegrees: return fn("degrees");
-        case glslang::EOpSin: return fn("sin");
-        case glslang::EOpCos: return fn("cos");
-        case glslang::EOpTan: return fn("tan");
-        case glslang::EOpAsin: return fn("asin");
-        case glslang::EOpAcos: return fn("acos");
-        case glslang::EOpAtan: return fn("atan");
-        case glslang::EOpSinh: return fn("sinh");
-        case glslang::EOpCosh: return fn("cosh");
-        case glslang::EOpTanh: return fn("tanh");
-        case glslang::EOpAsinh: return fn("asinh");
-        case glslang::EOpAcosh: return fn("acosh");
-        case glslang::EOpAtanh: return fn("atanh");
-        case glslang::EOpPow: return fn("pow");
-        case glslang::EOpExp: return fn("exp");
-        case glslang::EOpLog: return fn("log");
-        case glslang::EOpExp2: return fn("exp2");
-        case glslang::EOpLog2: return fn("log2");
-        case glslang::EOpSqrt: return fn("sqrt");
-        case glslang::EOpInverseSqrt: return fn("inversesqrt");
-        case glslang::EOpAbs: return fn("abs");
-        case glslang::EOpSign: return fn("sign");
-        case glslang::EOpFloor: return fn("floor");
-        case glslang::EOpTrunc: return fn("trunc");
-        case glslang::EOpRound: case glslang::EOpRoundEven: return fn("roundEven");
-        case glslang::EOpCeil: return fn("ceil");
-        case glslang::EOpFract: return fn("fract");
-        case glslang::EOpMod: return fn("mod");
-        case glslang::EOpMin: return fn("min");
-        case glslang::EOpMax: return fn("max");
-        case glslang::EOpClamp: return fn("clamp");
-        case glslang::EOpMix: return fn("mix");
-        case glslang::EOpStep: return fn("step");
-        case glslang::EOpSmoothStep: return fn("smoothstep");
-        case glslang::EOpFma: return fn("fma");
-        case glslang::EOpIsNan: return fn("isnan");
-        case glslang::EOpIsInf: return fn("isinf");
-        case glslang::EOpLength: return fn("length");
-        case glslang::EOpDistance: return fn("distance");
-        case glslang::EOpDot: return fn("dot");
-        case glslang::EOpCross: return fn("cross");
-        case glslang::EOpNormalize: return fn("normalize");
-        case glslang::EOpFaceForward: return fn("faceforward");
-        case glslang::EOpReflect: return fn("reflect");
-        case glslang::EOpRefract: return fn("refract");
-        case glslang::EOpDPdx: return fn("dFdx");
-        case glslang::EOpDPdy: return fn("dFdy");
-        case glslang::EOpFwidth: return fn("fwidth");
-        case glslang::EOpDPdxFine: return fn("dFdxFine");
-        case glslang::EOpDPdyFine: return fn("dFdyFine");
-        case glslang::EOpFwidthFine: return fn("fwidthFine");
-        case glslang::EOpDPdxCoarse: return fn("dFdxCoarse");
-        case glslang::EOpDPdyCoarse: return fn("dFdyCoarse");
-        case glslang::EOpFwidthCoarse: return fn("fwidthCoarse");
-        case glslang::EOpLessThan: return fn("lessThan");
-        case glslang::EOpLessThanEqual: return fn("lessThanEqual");
-        case glslang::EOpGreaterThan: return fn("greaterThan");
-        case glslang::EOpGreaterThanEqual: return fn("greaterThanEqual");
-        case glslang::EOpVectorEqual: return fn("equal");
-        case glslang::EOpVectorNotEqual: return fn("notEqual");
-        case glslang::EOpAny: return fn("any");
-        case glslang::EOpAll: return fn("all");
-        case glslang::EOpTranspose: return fn("transpose");
-        case glslang::EOpDeterminant: return fn("determinant");
-        case glslang::EOpMatrixInverse: return fn("inverse");
-        case glslang::EOpOuterProduct: return fn("outerProduct");
-        case glslang::EOpMul: return fn("matrixCompMult");
-        case glslang::EOpFloatBitsToInt: return fn("floatBitsToInt");
-        case glslang::EOpFloatBitsToUint: return fn("floatBitsToUint");
-        case glslang::EOpIntBitsToFloat: return fn("intBitsToFloat");
-        case glslang::EOpUintBitsToFloat: return fn("uintBitsToFloat");
-        case glslang::EOpBitFieldReverse: return fn("bitfieldReverse");
-        case glslang::EOpBitCount: return fn("bitCount");
-        case glslang::EOpFindLSB: return fn("findLSB");
-        case glslang::EOpFindMSB: return fn("findMSB");
-        case glslang::EOpBitfieldExtract: return fn("bitfieldExtract");
-        case glslang::EOpBitfieldInsert: return fn("bitfieldInsert");
-        case glslang::EOpLdexp: return fn("ldexp");
         case glslang::EOpModf: case glslang::EOpFrexp: {
             // The whole part or exponent goes to a variable, written for every lane.
             if (!masks_.empty()) refuse(node, "modf or frexp under a condition that varies per fragment");
@@ -955,10 +965,6 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         }
         case glslang::EOpFtransform:
             if (stage_ != Stage::Vertex) refuse(node, "ftransform() outside a vertex shader");
-            {
-                TIntermSymbol* dummy = nullptr;
-                (void)dummy;
-            }
             if (!member_names_.contains("gl_ModelViewProjectionMatrix")) {
                 member_names_.insert("gl_ModelViewProjectionMatrix");
                 member_lines_.push_back("const mat4<F> gl_ModelViewProjectionMatrix = transform<F>(u.model_view_projection);");

@@ -156,7 +156,7 @@ enum class Source : std::uint8_t {
     Color,         // the fragment colour, component `index` (fragment output)
 };
 
-// The vertex inputs quadshade's scenes provide (VertexIn, shading/program.h).
+// The vertex inputs quadshade's scenes provide (VertexIn, shading/batches.h).
 enum class Attribute : std::uint8_t { Position, Normal, Color, Texcoord0, Texcoord1 };
 
 // The matrices the renderer knows: GL's built-in ones as the reference sets them (the scene's

@@ -54,21 +54,11 @@ std::string command_name(const char* prefix) {
     return s;
 }
 
-Command parse(const std::string& line) {
+// The draw commands: rectangles and arrays.
+std::optional<Command> parse_draw(const std::string& line) {
     const char* rest = nullptr;
-    float c[12] = {};
-    int x = 0, y = 0, w = 0, h = 0;
+    int x = 0, y = 0;
     char word[32] = {};
-    // In shader_runner's order: a prefix of one command can begin another ("clear color", "clear").
-    if (starts(line, "active shader program") || starts(line, "atomic counter")) return Unsupported{command_name("atomic counter")};
-    if (starts(line, "clear color ", &rest)) return ClearColor{floats<4>(rest)};
-    if (starts(line, "clear depth ", &rest)) return ClearDepth{floats<1>(rest)[0]};
-    if (starts(line, "clear")) return Clear{};
-    double d[4] = {};
-    if (std::sscanf(line.c_str(), "clip plane %d %lf %lf %lf %lf", &x, &d[0], &d[1], &d[2], &d[3]) == 5) {
-        return ClipPlane{x, {d[0], d[1], d[2], d[3]}};
-    }
-    if (starts(line, "color ", &rest)) return CurrentColor{floats<4>(rest)};
     if (starts(line, "draw rect tex ", &rest)) {
         const std::array<float, 8> v = floats<8>(rest);
         return DrawRect{false, {v[0], v[1], v[2], v[3]}, std::array<float, 4>{v[4], v[5], v[6], v[7]}};
@@ -80,37 +70,20 @@ Command parse(const std::string& line) {
     if (starts(line, "draw rect ", &rest)) return DrawRect{false, floats<4>(rest), std::nullopt};
     if (starts(line, "draw arrays instanced ")) return Unsupported{"draw arrays instanced"};
     if (std::sscanf(line.c_str(), "draw arrays %31s %d %d", word, &x, &y) == 3) return DrawArrays{word, x, y};
-    if (starts(line, "disable ", &rest) || starts(line, "enable ", &rest)) {
-        const bool on = line[0] == 'e';
-        std::string what = rest;
-        what = what.substr(0, what.find_first_of(" \t"));
-        for (const char* e : kEnables) {
-            if (std::strncmp(rest, e, std::strlen(e)) == 0) return Enable{e, on};
-        }
-        return Invalid{"bad enable/disable enum '" + what + "'"};
-    }
-    if (starts(line, "frustum", &rest)) {
-        const std::array<float, 6> v = floats<6>(rest);
-        return Frustum{v};
-    }
-    if (starts(line, "hint")) return NoEffect{};
-    if (std::sscanf(line.c_str(), "ortho %f %f %f %f", &c[0], &c[1], &c[2], &c[3]) == 4) {
-        return Ortho{std::array<float, 4>{c[0], c[1], c[2], c[3]}};
-    }
-    if (starts(line, "ortho")) return Ortho{};
+    return std::nullopt;
+}
+
+// The probes of the colour buffer at pixels: one pixel, a rectangle or the whole window, RGB or
+// RGBA.
+std::optional<Command> parse_probe(const std::string& line) {
+    const char* rest = nullptr;
+    float c[4] = {};
+    int x = 0, y = 0, w = 0, h = 0;
     if (starts(line, "probe rgba ", &rest)) {
         const std::array<float, 6> v = floats<6>(rest);
         Probe p;
         p.at = {float(int(v[0])), float(int(v[1])), 1, 1};
         p.expected = {v[2], v[3], v[4], v[5]};
-        return p;
-    }
-    if (std::sscanf(line.c_str(), "relative probe rgba ( %f , %f ) ( %f , %f , %f , %f )", &c[0], &c[1], &c[2], &c[3],
-                    &c[4], &c[5]) == 6) {
-        Probe p;
-        p.relative = true;
-        p.at = {c[0], c[1], 0, 0};
-        p.expected = {c[2], c[3], c[4], c[5]};
         return p;
     }
     if (starts(line, "probe rgb ", &rest)) {
@@ -121,19 +94,47 @@ Command parse(const std::string& line) {
         p.expected = {v[2], v[3], v[4], 0};
         return p;
     }
-    if (std::sscanf(line.c_str(), "relative probe rgb ( %f , %f ) ( %f , %f , %f )", &c[0], &c[1], &c[2], &c[3], &c[4]) == 5) {
-        Probe p;
-        p.relative = true, p.components = 3;
-        p.at = {c[0], c[1], 0, 0};
-        p.expected = {c[2], c[3], c[4], 0};
-        return p;
-    }
     if (std::sscanf(line.c_str(), "probe rect rgba ( %d , %d , %d , %d ) ( %f , %f , %f , %f )", &x, &y, &w, &h, &c[0], &c[1],
                     &c[2], &c[3]) == 8) {
         Probe p;
         p.area = Probe::Area::Rect;
         p.at = {float(x), float(y), float(w), float(h)};
         p.expected = {c[0], c[1], c[2], c[3]};
+        return p;
+    }
+    if (starts(line, "probe all rgba ", &rest) || starts(line, "probe warn all rgba ", &rest)) {
+        Probe p;
+        p.area = Probe::Area::All;
+        p.warn = line.compare(0, 10, "probe warn") == 0;
+        p.expected = floats<4>(rest);
+        return p;
+    }
+    if (starts(line, "probe all rgb", &rest)) {
+        Probe p;
+        p.area = Probe::Area::All, p.components = 3;
+        const std::array<float, 3> v = floats<3>(rest);
+        p.expected = {v[0], v[1], v[2], 0};
+        return p;
+    }
+    return std::nullopt;
+}
+
+// The probes at coordinates relative to the window's size, a point or a rectangle.
+std::optional<Command> parse_relative_probe(const std::string& line) {
+    float c[8] = {};
+    if (std::sscanf(line.c_str(), "relative probe rgba ( %f , %f ) ( %f , %f , %f , %f )", &c[0], &c[1], &c[2], &c[3],
+                    &c[4], &c[5]) == 6) {
+        Probe p;
+        p.relative = true;
+        p.at = {c[0], c[1], 0, 0};
+        p.expected = {c[2], c[3], c[4], c[5]};
+        return p;
+    }
+    if (std::sscanf(line.c_str(), "relative probe rgb ( %f , %f ) ( %f , %f , %f )", &c[0], &c[1], &c[2], &c[3], &c[4]) == 5) {
+        Probe p;
+        p.relative = true, p.components = 3;
+        p.at = {c[0], c[1], 0, 0};
+        p.expected = {c[2], c[3], c[4], 0};
         return p;
     }
     if (std::sscanf(line.c_str(), "relative probe rect rgb ( %f , %f , %f , %f ) ( %f , %f , %f )", &c[0], &c[1], &c[2],
@@ -152,23 +153,14 @@ Command parse(const std::string& line) {
         p.expected = {c[4], c[5], c[6], c[7]};
         return p;
     }
-    if (starts(line, "probe all rgba ", &rest) || starts(line, "probe warn all rgba ", &rest)) {
-        Probe p;
-        p.area = Probe::Area::All;
-        p.warn = line.compare(0, 10, "probe warn") == 0;
-        p.expected = floats<4>(rest);
-        return p;
-    }
-    if (starts(line, "probe all rgb", &rest)) {
-        Probe p;
-        p.area = Probe::Area::All, p.components = 3;
-        const std::array<float, 3> v = floats<3>(rest);
-        p.expected = {v[0], v[1], v[2], 0};
-        return p;
-    }
-    if (starts(line, "tolerance", &rest)) return Tolerance{floats<4>(rest)};
-    if (starts(line, "shade model smooth")) return ShadeModel{false};
-    if (starts(line, "shade model flat")) return ShadeModel{true};
+    return std::nullopt;
+}
+
+// The textures a test makes, and texture coordinates and parameters.
+std::optional<Command> parse_texture(const std::string& line) {
+    const char* rest = nullptr;
+    float c[8] = {};
+    int x = 0, y = 0, w = 0, h = 0;
     if (std::sscanf(line.c_str(), "texture rgbw %d ( %d", &x, &w) == 2) {
         char format[32] = {};
         const int n = std::sscanf(line.c_str(), "texture rgbw %d ( %d , %d ) %31s", &x, &w, &h, format);
@@ -188,6 +180,48 @@ Command parse(const std::string& line) {
         if (std::sscanf(rest, "%31s %31s %63s", target, parameter, value) != 3) return Invalid{"texparameter: expected TARGET PARAMETER VALUE"};
         return TexParameter{target, parameter, value};
     }
+    return std::nullopt;
+}
+
+Command parse(const std::string& line) {
+    const char* rest = nullptr;
+    float c[4] = {};
+    int x = 0;
+    // In shader_runner's order: a prefix of one command can begin another ("clear color", "clear").
+    if (starts(line, "active shader program") || starts(line, "atomic counter")) return Unsupported{command_name("atomic counter")};
+    if (starts(line, "clear color ", &rest)) return ClearColor{floats<4>(rest)};
+    if (starts(line, "clear depth ", &rest)) return ClearDepth{floats<1>(rest)[0]};
+    if (starts(line, "clear")) return Clear{};
+    double d[4] = {};
+    if (std::sscanf(line.c_str(), "clip plane %d %lf %lf %lf %lf", &x, &d[0], &d[1], &d[2], &d[3]) == 5) {
+        return ClipPlane{x, {d[0], d[1], d[2], d[3]}};
+    }
+    if (starts(line, "color ", &rest)) return CurrentColor{floats<4>(rest)};
+    if (auto draw = parse_draw(line)) return *draw;
+    if (starts(line, "disable ", &rest) || starts(line, "enable ", &rest)) {
+        const bool on = line[0] == 'e';
+        std::string what = rest;
+        what = what.substr(0, what.find_first_of(" \t"));
+        for (const char* e : kEnables) {
+            if (std::strncmp(rest, e, std::strlen(e)) == 0) return Enable{e, on};
+        }
+        return Invalid{"bad enable/disable enum '" + what + "'"};
+    }
+    if (starts(line, "frustum", &rest)) {
+        const std::array<float, 6> v = floats<6>(rest);
+        return Frustum{v};
+    }
+    if (starts(line, "hint")) return NoEffect{};
+    if (std::sscanf(line.c_str(), "ortho %f %f %f %f", &c[0], &c[1], &c[2], &c[3]) == 4) {
+        return Ortho{std::array<float, 4>{c[0], c[1], c[2], c[3]}};
+    }
+    if (starts(line, "ortho")) return Ortho{};
+    if (auto probe = parse_probe(line)) return *probe;
+    if (auto probe = parse_relative_probe(line)) return *probe;
+    if (starts(line, "tolerance", &rest)) return Tolerance{floats<4>(rest)};
+    if (starts(line, "shade model smooth")) return ShadeModel{false};
+    if (starts(line, "shade model flat")) return ShadeModel{true};
+    if (auto texture = parse_texture(line)) return *texture;
     if (starts(line, "uniform ", &rest)) {
         char type[64] = {}, name[512] = {};
         int consumed = 0;

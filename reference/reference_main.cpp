@@ -13,15 +13,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "files/temporary_file.h"
 #include "reference/gl_renderer.h"
 #include "scenes/gltf.h"
-#include "scenes/temporary_file.h"
 
 namespace {
 
 struct Options {
     std::string scene, shader, glsl, size;
     std::vector<std::string> outputs, uniforms;
+    std::string driver_name = "llvmpipe";
     qs::GlDriver driver = qs::GlDriver::Llvmpipe;
     std::optional<double> time;
     std::string camera;
@@ -29,15 +30,7 @@ struct Options {
     bool atlas = false;
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    qs::remove_temporaries_on_signals();
-    Options o;
-    CLI::App app("quadshade-reference: renders a glTF scene through OSMesa from the shaders' original GLSL, as any "
-                 "OpenGL application would. The outputs record the driver, renderer string and Mesa version in their "
-                 "metadata.",
-                 "quadshade-reference");
+void add_options(CLI::App& app, Options& o) {
     app.add_option("scene", o.scene, "the glTF scene (.gltf or .glb)")->required();
     app.add_option("-o,--output", o.outputs,
                    "an image to write: .exr/.tif keep float, .png is GL's 8-bit conversion (glReadPixels); repeatable")
@@ -45,8 +38,7 @@ int main(int argc, char** argv) {
     app.add_option("--glsl", o.glsl, "folder of NAME.vert / NAME.frag (quadshade shaders --export-glsl DIR)")
         ->required()
         ->check(CLI::ExistingDirectory);
-    std::string driver = "llvmpipe";
-    app.add_option("--driver", driver, "llvmpipe (default) or softpipe")->check(CLI::IsMember({"llvmpipe", "softpipe"}));
+    app.add_option("--driver", o.driver_name, "llvmpipe (default) or softpipe")->check(CLI::IsMember({"llvmpipe", "softpipe"}));
     app.add_option("--size", o.size, "image size WxH (default: the scene's)");
     app.add_option("--time", o.time, "the `time` uniform and the time animations are posed at (default: the scene's)");
     app.add_option("--camera", o.camera,
@@ -65,37 +57,26 @@ int main(int argc, char** argv) {
     app.add_option("--threads", o.threads, "LP_NUM_THREADS for llvmpipe")->check(CLI::Range(0, 1024));
     app.add_option("--repeat", o.repeat, "render N times and report the median frame time (glFinish per frame)")
         ->check(CLI::Range(1, 100000));
+}
+
+// --size WxH, each within 1..16384; false when it is not that.
+bool parse_size(const std::string& size, int& width, int& height) {
+    const std::size_t x = size.find('x');
     try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e) == 0 ? 0 : 2;
+        if (x == std::string::npos) return false;
+        std::size_t used = 0;
+        width = std::stoi(size.substr(0, x), &used);
+        if (used != x) return false;
+        height = std::stoi(size.substr(x + 1), &used);
+        if (used != size.size() - x - 1) return false;
+    } catch (const std::exception&) {
+        return false;
     }
-    o.driver = driver == "softpipe" ? qs::GlDriver::Softpipe : qs::GlDriver::Llvmpipe;
-    std::vector<qs::UniformSetting> uniforms;
-    try {
-        for (const std::string& u : o.uniforms) uniforms.push_back(qs::parse_uniform_option(u));
-    } catch (const qs::UniformOptionError& e) {
-        std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
-        return 2;
-    }
-    int width = 0, height = 0;
-    if (!o.size.empty()) {
-        std::size_t x = o.size.find('x');
-        try {
-            if (x == std::string::npos) throw std::invalid_argument("no x");
-            std::size_t used = 0;
-            width = std::stoi(o.size.substr(0, x), &used);
-            if (used != x) throw std::invalid_argument("trailing");
-            height = std::stoi(o.size.substr(x + 1), &used);
-            if (used != o.size.size() - x - 1) throw std::invalid_argument("trailing");
-        } catch (const std::exception&) {
-            width = 0;
-        }
-        if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
-            std::fprintf(stderr, "quadshade-reference: --size expects WxH within 1..16384, got '%s'\n", o.size.c_str());
-            return 2;
-        }
-    }
+    return width > 0 && height > 0 && width <= 16384 && height <= 16384;
+}
+
+// Renders the scene, writes the outputs and prints the frame times; the exit code.
+int render(const Options& o, const std::vector<qs::UniformSetting>& uniforms, int width, int height) {
     try {
         qs::SceneLoadOptions load;
         load.camera = o.camera;
@@ -144,4 +125,35 @@ int main(int argc, char** argv) {
         return 1;
     }
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    qs::remove_temporaries_on_signals();
+    Options o;
+    CLI::App app("quadshade-reference: renders a glTF scene through OSMesa from the shaders' original GLSL, as any "
+                 "OpenGL application would. The outputs record the driver, renderer string and Mesa version in their "
+                 "metadata.",
+                 "quadshade-reference");
+    add_options(app, o);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    o.driver = o.driver_name == "softpipe" ? qs::GlDriver::Softpipe : qs::GlDriver::Llvmpipe;
+    std::vector<qs::UniformSetting> uniforms;
+    try {
+        for (const std::string& u : o.uniforms) uniforms.push_back(qs::parse_uniform_option(u));
+    } catch (const qs::UniformOptionError& e) {
+        std::fprintf(stderr, "quadshade-reference: %s\n", e.what());
+        return 2;
+    }
+    int width = 0, height = 0;
+    if (!o.size.empty() && !parse_size(o.size, width, height)) {
+        std::fprintf(stderr, "quadshade-reference: --size expects WxH within 1..16384, got '%s'\n", o.size.c_str());
+        return 2;
+    }
+    return render(o, uniforms, width, height);
 }

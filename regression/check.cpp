@@ -12,6 +12,8 @@
 #include <cstring>
 
 #include "core/framebuffer.h"
+#include "files/output_file.h"
+#include "files/temporary_file.h"
 #include "raster/driver_settings.h"
 #include "regression/case_workers.h"
 #include "render/frame_image.h"
@@ -19,8 +21,6 @@
 #include "render/reference_process.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
-#include "scenes/output_file.h"
-#include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 

@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
+#include "files/output_file.h"
 #include "render/compiled_glsl.h"
 #include "render/scene_render.h"
-#include "scenes/output_file.h"
 
 namespace qs {
 

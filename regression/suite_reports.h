@@ -12,7 +12,7 @@
 
 namespace qs {
 
-// Reports are written by scenes/output_file.h's rule; a report may be streamed into /dev/stdout,
+// Reports are written by files/output_file.h's rule; a report may be streamed into /dev/stdout,
 // a FIFO or a character device.
 void write_fragment(const SuiteRun& run, const std::filesystem::path& file);
 

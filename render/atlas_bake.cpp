@@ -52,9 +52,9 @@ bool overlap_in_uv(const UvTriangle& a, const UvTriangle& b, double slack) {
     return true;
 }
 
-}  // namespace
-
-std::size_t check_atlas(const Scene& scene) {
+// Every triangle of the scene's meshes at its TEXCOORD_0, checked to lie in the atlas; those with
+// no area there are left out (refused if they have some in POSITION).
+std::vector<AtlasTriangle> atlas_triangles(const Scene& scene) {
     std::vector<AtlasTriangle> triangles;
     for (std::size_t oi = 0; oi < scene.objects.size(); ++oi) {
         const Object& o = scene.objects[oi];
@@ -87,6 +87,11 @@ std::size_t check_atlas(const Scene& scene) {
             }
         }
     }
+    return triangles;
+}
+
+// Throws SceneError naming the first two triangles found to overlap; the pairs it compared.
+std::size_t sweep_for_overlaps(const Scene& scene, std::vector<AtlasTriangle>& triangles) {
     // A sweep over s (Shamos and Hoey's, for polygons): the triangles the sweep line crosses are
     // kept in the order of their cross-sections, which cannot change between two triangles until
     // they overlap, so the first overlap is between two triangles that are neighbours in that
@@ -160,6 +165,13 @@ std::size_t check_atlas(const Scene& scene) {
         }
     }
     return compared;
+}
+
+}  // namespace
+
+std::size_t check_atlas(const Scene& scene) {
+    std::vector<AtlasTriangle> triangles = atlas_triangles(scene);
+    return sweep_for_overlaps(scene, triangles);
 }
 
 std::uint64_t atlas_bake_bytes(const Scene& scene, const AtlasRequest& request) {

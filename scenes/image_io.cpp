@@ -13,6 +13,7 @@
 #include <memory>
 #include <thread>
 
+#include "files/temporary_file.h"
 #include "modules/module_loader.h"
 #include "scenes/exr_codec.h"
 #include "scenes/image_checks.h"
@@ -21,7 +22,6 @@
 #include "scenes/png_codec.h"
 #include "scenes/scene.h"
 #include "scenes/scene_files.h"
-#include "scenes/temporary_file.h"
 
 namespace qs {
 

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "scenes/output_file.h"
+#include "files/output_file.h"
 #include "shading/catalogue.h"
 
 namespace qs {

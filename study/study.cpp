@@ -8,12 +8,12 @@
 #include <stdexcept>
 
 #include "core/tile_grid.h"
+#include "files/output_file.h"
+#include "files/temporary_file.h"
 #include "render/frame_image.h"
 #include "render/reference_process.h"
 #include "scenes/gltf.h"
 #include "scenes/image_io.h"
-#include "scenes/output_file.h"
-#include "scenes/temporary_file.h"
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "study/derivative_maps.h"

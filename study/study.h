@@ -11,7 +11,7 @@
 // (derivative_maps.h), and measures its float image against its double one and marks the
 // undefined GLSL cases it meets (stability.h). Its memory is planned before it runs
 // (study_memory.h).
-// It writes, in the output folder, by scenes/output_file.h's rule: study.csv (one row per view and
+// It writes, in the output folder, by files/output_file.h's rule: study.csv (one row per view and
 // mode), views.csv,
 // derivatives.csv (one row per view, input and rule), stability.csv (one per view), the images
 // (images/CASE/MODE.png, its heat map against the truth, llvmpipe's, the truth's, the derivative

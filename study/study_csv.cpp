@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "scenes/output_file.h"
+#include "files/output_file.h"
 
 namespace qs::study {
 

@@ -53,7 +53,7 @@ struct Tables {
     std::string study, views, derivatives, stability;
 };
 
-// study.csv, views.csv, derivatives.csv and stability.csv in `output`, by scenes/output_file.h's
+// study.csv, views.csv, derivatives.csv and stability.csv in `output`, by files/output_file.h's
 // rule. Throws OutputError naming the file that could not be written.
 void write_tables(const std::filesystem::path& output, const Tables& tables);
 

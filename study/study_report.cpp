@@ -9,10 +9,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "files/output_file.h"
+#include "files/temporary_file.h"
 #include "render/reference_process.h"
 #include "scenes/base64.h"
-#include "scenes/output_file.h"
-#include "scenes/temporary_file.h"
 #include "study/study.h"
 #include "study/study_csv.h"
 
@@ -171,47 +171,119 @@ std::string derivative_section(const fs::path& root, const std::vector<Row>& row
     return out.str();
 }
 
-}  // namespace
+// The study's tables, grouped by case (a shader on a view), in the order the cases first appear.
+using Case = std::pair<std::string, std::string>;
+struct Study {
+    std::vector<Row> rows;                           // study.csv: one per mode and case
+    std::vector<Case> cases;
+    std::map<Case, std::vector<const Row*>> of_case;  // rows of each case
+    std::map<Case, Row> views;                        // views.csv
+    std::map<Case, Row> stable;                       // stability.csv, where measured
+    std::map<Case, std::vector<Row>> maps;            // derivatives.csv, where measured
+    std::map<Case, std::vector<std::string>> fronts;  // the modes on each case's Pareto front
+    std::map<Case, std::string> plot_names;           // named as the case's images' folder is
+};
 
-void write_report(const fs::path& root) {
-    const std::vector<Row> rows = read_csv(root / "study.csv");
-    std::map<std::pair<std::string, std::string>, Row> views;
-    for (Row& v : read_csv(root / "views.csv")) views[{v.at("shader"), v.at("view")}] = v;
-    std::vector<std::pair<std::string, std::string>> cases;  // in order of first appearance
-    std::map<std::pair<std::string, std::string>, std::vector<const Row*>> of_case;
-    for (const Row& r : rows) {
-        const auto key = std::make_pair(r.at("shader"), r.at("view"));
-        if (!of_case.count(key)) cases.push_back(key);
-        of_case[key].push_back(&r);
+Study read_study(const fs::path& root) {
+    Study st;
+    st.rows = read_csv(root / "study.csv");
+    for (Row& v : read_csv(root / "views.csv")) st.views[{v.at("shader"), v.at("view")}] = v;
+    for (const Row& r : st.rows) {
+        const Case key{r.at("shader"), r.at("view")};
+        if (!st.of_case.count(key)) st.cases.push_back(key);
+        st.of_case[key].push_back(&r);
     }
-    // Each case's points for the plot script, named as its images' folder is.
+    for (const Case& key : st.cases) {
+        st.fronts[key] = pareto_front(st.of_case[key]);
+        st.plot_names[key] = fs::path(st.of_case[key].front()->at("image")).parent_path().filename().string();
+    }
+    if (fs::exists(root / "stability.csv")) {
+        for (Row& s : read_csv(root / "stability.csv")) st.stable[{s.at("shader"), s.at("view")}] = std::move(s);
+    }
+    if (fs::exists(root / "derivatives.csv")) {
+        for (Row& d : read_csv(root / "derivatives.csv")) st.maps[{d.at("shader"), d.at("view")}].push_back(std::move(d));
+    }
+    return st;
+}
+
+// Each case's points for the plot script, then the plots; what draw_plots says when it drew none.
+std::string plot_cases(const fs::path& root, Study& st) {
     make_output_folder(root / "plots", FolderLink::Refused);
-    std::map<std::pair<std::string, std::string>, std::vector<std::string>> fronts;
-    std::map<std::pair<std::string, std::string>, std::string> plot_names;
-    for (const auto& key : cases) {
-        fronts[key] = pareto_front(of_case[key]);
-        const std::string folder = fs::path(of_case[key].front()->at("image")).parent_path().filename().string();
-        plot_names[key] = folder;
+    std::vector<std::string> plotted;
+    for (const Case& key : st.cases) {
+        const std::vector<std::string>& front = st.fronts[key];
         std::string points = csv_line({"case", "mode", "group", "ms", "rms_vs_truth", "front"});
-        for (const Row* r : of_case[key]) {
-            const bool on = std::count(fronts[key].begin(), fronts[key].end(), r->at("mode")) > 0;
+        for (const Row* r : st.of_case[key]) {
+            const bool on = std::count(front.begin(), front.end(), r->at("mode")) > 0;
             points += csv_line({key.first + ", " + key.second, r->at("mode"), r->at("group"), r->at("ms"),
                                 r->at("rms_vs_truth"), on ? "1" : "0"});
         }
-        write_output(root / "plots" / (folder + ".csv"), points);
+        write_output(root / "plots" / (st.plot_names[key] + ".csv"), points);
+        plotted.push_back(st.plot_names[key]);
     }
-    std::vector<std::string> plotted;
-    for (const auto& key : cases) plotted.push_back(plot_names[key]);
-    const std::string no_plots = draw_plots(root, plotted);
-    std::map<std::pair<std::string, std::string>, Row> stable;
-    if (fs::exists(root / "stability.csv")) {
-        for (Row& st : read_csv(root / "stability.csv")) stable[{st.at("shader"), st.at("view")}] = std::move(st);
-    }
-    std::map<std::pair<std::string, std::string>, std::vector<Row>> maps;
-    if (fs::exists(root / "derivatives.csv")) {
-        for (Row& d : read_csv(root / "derivatives.csv")) maps[{d.at("shader"), d.at("view")}].push_back(std::move(d));
-    }
+    return draw_plots(root, plotted);
+}
 
+// A case's table of modes, with the truth's and llvmpipe's images beside.
+std::string modes_table(const fs::path& root, const std::vector<const Row*>& rs, const std::vector<std::string>& front) {
+    std::ostringstream out;
+    out << "<table><tr><th>mode</th><th>group</th><th>shader</th><th>ms (range)</th><th>RMS vs llvmpipe</th>"
+           "<th>max vs llvmpipe</th><th>RMS vs truth</th><th>max vs truth</th></tr>\n";
+    for (const Row* r : rs) {
+        const bool on = std::count(front.begin(), front.end(), r->at("mode")) > 0;
+        out << "<tr" << (on ? " class='front'" : "") << "><td class='l'>" << escape(r->at("mode"))
+            << "</td><td class='l'>" << escape(r->at("group")) << "</td><td class='l'>" << escape(r->at("variant"))
+            << "</td><td>" << format("%.3f", value(*r, "ms")) << " (" << format("%.3f", value(*r, "ms_min")) << "-"
+            << format("%.3f", value(*r, "ms_max")) << ")</td><td>" << format("%.2e", value(*r, "rms_vs_llvmpipe"))
+            << "</td><td>" << format("%.3f", value(*r, "max_vs_llvmpipe")) << "</td><td>"
+            << format("%.2e", value(*r, "rms_vs_truth")) << "</td><td>" << format("%.3f", value(*r, "max_vs_truth"))
+            << "</td></tr>\n";
+    }
+    out << "</table>\n<div>" << figure(root, rs.front()->at("truth_image"), "truth");
+    std::vector<std::string> shown;
+    for (const Row* r : rs) {
+        const std::string& gl = r->at("llvmpipe_image");
+        if (gl.empty() || std::count(shown.begin(), shown.end(), gl)) continue;
+        shown.push_back(gl);
+        out << figure(root, gl,
+                      "OSMesa llvmpipe: " + r->at("variant") + " " +
+                          fs::path(gl).stem().string().substr(fs::path(gl).stem().string().rfind('-') + 1));
+    }
+    out << "</div>\n";
+    return out.str();
+}
+
+// A case's section: the view, the plot, the modes, stability and derivatives, every mode's image.
+std::string case_section(const fs::path& root, Study& st, const Case& key, const std::string& no_plots) {
+    std::ostringstream out;
+    const std::vector<const Row*>& rs = st.of_case[key];
+    const Row* v = st.views.count(key) ? &st.views[key] : nullptr;
+    out << "<h2 id='" << escape(st.plot_names[key]) << "'>" << escape(key.first) << ", " << escape(key.second)
+        << "</h2>\n<p>";
+    if (v)
+        out << escape(v->at("description")) << "; " << escape(v->at("width")) << "x" << escape(v->at("height"))
+            << " pixels. Truth: " << escape(v->at("truth")) << ".";
+    out << "</p>\n";
+    if (no_plots.empty()) {
+        out << "<img src='" << data_uri(root / "plots" / (st.plot_names[key] + ".png")) << "' alt='error against time'>\n";
+    } else {
+        out << "<p class='no-plot'>" << escape(no_plots) << "</p>\n";
+    }
+    out << modes_table(root, rs, st.fronts[key]);
+    if (st.stable.count(key)) out << stability_section(root, st.stable[key], v);
+    out << derivative_section(root, st.maps[key]);
+    for (const Row* r : rs) {
+        out << "<div><b>" << escape(r->at("mode")) << "</b><br>" << figure(root, r->at("image"), "quadshade")
+            << figure(root, r->at("heat_image"), "|quadshade - truth|") << "</div>\n";
+    }
+    return out.str();
+}
+
+}  // namespace
+
+void write_report(const fs::path& root) {
+    Study st = read_study(root);
+    const std::string no_plots = plot_cases(root, st);
     std::ostringstream out;
     out << "<!DOCTYPE html><html><head><meta charset='utf-8'><title>quadshade study</title><style>"
            "body{font-family:sans-serif;margin:1.5em;max-width:1400px}table{border-collapse:collapse;font-size:13px}"
@@ -226,57 +298,12 @@ void write_report(const fs::path& root) {
            "on the Pareto front (nothing is both faster and more accurate) are shaded. Heat maps show "
            "|mode - truth|, full scale 0.25.</p>\n"
            "<p id='image-check'>images: not checked</p>\n<ul>";
-    for (const auto& [shader, view] : cases) {
-        out << "<li><a href='#" << escape(plot_names[{shader, view}]) << "'>" << escape(shader) << ", " << escape(view)
+    for (const auto& [shader, view] : st.cases) {
+        out << "<li><a href='#" << escape(st.plot_names[{shader, view}]) << "'>" << escape(shader) << ", " << escape(view)
             << "</a></li>";
     }
     out << "</ul>\n";
-    for (const auto& key : cases) {
-        const std::vector<const Row*>& rs = of_case[key];
-        const Row* v = views.count(key) ? &views[key] : nullptr;
-        out << "<h2 id='" << escape(plot_names[key]) << "'>" << escape(key.first) << ", " << escape(key.second)
-            << "</h2>\n<p>";
-        if (v)
-            out << escape(v->at("description")) << "; " << escape(v->at("width")) << "x" << escape(v->at("height"))
-                << " pixels. Truth: " << escape(v->at("truth")) << ".";
-        out << "</p>\n";
-        if (no_plots.empty()) {
-            out << "<img src='" << data_uri(root / "plots" / (plot_names[key] + ".png"))
-                << "' alt='error against time'>\n";
-        } else {
-            out << "<p class='no-plot'>" << escape(no_plots) << "</p>\n";
-        }
-        out << "<table><tr><th>mode</th><th>group</th><th>shader</th><th>ms (range)</th><th>RMS vs llvmpipe</th>"
-               "<th>max vs llvmpipe</th><th>RMS vs truth</th><th>max vs truth</th></tr>\n";
-        const std::vector<std::string>& front = fronts[key];
-        for (const Row* r : rs) {
-            const bool on = std::count(front.begin(), front.end(), r->at("mode")) > 0;
-            out << "<tr" << (on ? " class='front'" : "") << "><td class='l'>" << escape(r->at("mode"))
-                << "</td><td class='l'>" << escape(r->at("group")) << "</td><td class='l'>" << escape(r->at("variant"))
-                << "</td><td>" << format("%.3f", value(*r, "ms")) << " (" << format("%.3f", value(*r, "ms_min")) << "-"
-                << format("%.3f", value(*r, "ms_max")) << ")</td><td>" << format("%.2e", value(*r, "rms_vs_llvmpipe"))
-                << "</td><td>" << format("%.3f", value(*r, "max_vs_llvmpipe")) << "</td><td>"
-                << format("%.2e", value(*r, "rms_vs_truth")) << "</td><td>" << format("%.3f", value(*r, "max_vs_truth"))
-                << "</td></tr>\n";
-        }
-        out << "</table>\n<div>" << figure(root, rs.front()->at("truth_image"), "truth");
-        std::vector<std::string> shown;
-        for (const Row* r : rs) {
-            const std::string& gl = r->at("llvmpipe_image");
-            if (gl.empty() || std::count(shown.begin(), shown.end(), gl)) continue;
-            shown.push_back(gl);
-            out << figure(root, gl,
-                          "OSMesa llvmpipe: " + r->at("variant") + " " +
-                              fs::path(gl).stem().string().substr(fs::path(gl).stem().string().rfind('-') + 1));
-        }
-        out << "</div>\n";
-        if (stable.count(key)) out << stability_section(root, stable[key], v);
-        out << derivative_section(root, maps[key]);
-        for (const Row* r : rs) {
-            out << "<div><b>" << escape(r->at("mode")) << "</b><br>" << figure(root, r->at("image"), "quadshade")
-                << figure(root, r->at("heat_image"), "|quadshade - truth|") << "</div>\n";
-        }
-    }
+    for (const Case& key : st.cases) out << case_section(root, st, key, no_plots);
     // Tells a headless browser (and a reader) whether every image loaded.
     out << "<script>\nwindow.addEventListener('load', () => {\n"
            "  const images = Array.from(document.images);\n"

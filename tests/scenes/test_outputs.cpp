@@ -1,4 +1,4 @@
-// How every output is written (scenes/output_file.h, docs/reliability.md "Outputs"): a temporary
+// How every output is written (files/output_file.h, docs/reliability.md "Outputs"): a temporary
 // beside the target renamed over it, links replaced and never written through, streams written
 // into and never renamed over, sets of files committed all or nothing, temporaries (any number of
 // them, files and folders) removed on signals, concurrent writers of one file all succeeding.
@@ -22,8 +22,8 @@
 #include <thread>
 #include <vector>
 
-#include "scenes/output_file.h"
-#include "scenes/temporary_file.h"
+#include "files/output_file.h"
+#include "files/temporary_file.h"
 #include "tests/test_paths.h"
 
 namespace qs {

@@ -1,4 +1,4 @@
-#include "scenes/output_file.h"
+#include "files/output_file.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "scenes/temporary_file.h"
+#include "files/temporary_file.h"
 
 namespace qs {
 

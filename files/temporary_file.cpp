@@ -1,4 +1,4 @@
-#include "scenes/temporary_file.h"
+#include "files/temporary_file.h"
 
 #include <fcntl.h>
 #include <pthread.h>
@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "scenes/output_file.h"
+#include "files/output_file.h"
 
 namespace qs {
 

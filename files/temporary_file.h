@@ -5,7 +5,7 @@
 // O_NOFOLLOW, so a planted file or symlink is never followed), every write to it is checked, and
 // it is flushed to the disk (fsync) before the rename. It is removed when anything fails, when its
 // owner is destroyed without commit(), and on SIGINT/SIGTERM/SIGHUP once
-// remove_temporaries_on_signals() ran. scenes/output_file.h states the whole rule and writes
+// remove_temporaries_on_signals() ran. files/output_file.h states the whole rule and writes
 // whole outputs through it; docs/reliability.md ("Outputs") says it once for users.
 
 #include <cstdint>
