@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "render/normal_bake.h"
-#include "shading/program.h"
+#include "shading/shade_mode.h"
 
 namespace qs::app {
 

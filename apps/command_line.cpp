@@ -4,10 +4,11 @@
 #include <cstdio>
 
 #include "files/output_file.h"
+#include "images/image_io.h"
 #include "interpreter/glsl_program.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
-#include "scenes/image_io.h"
+#include "scenes/texture_files.h"
 
 namespace qs::app {
 

@@ -89,7 +89,7 @@ void warn_loop_limit(const Program* program);
 // --memory-limit's bytes; empty: what the system has available.
 std::uint64_t memory_limit(const std::string& option);
 
-// Loads OpenImageIO when one of `scene`'s textures needs it (scenes/image_io.h), for a command
+// Loads OpenImageIO when one of `scene`'s textures needs it (images/image_io.h), for a command
 // that measures its memory from before it loaded the scene: returns the resident memory the
 // loading added, which is the program's, not the command's.
 std::uint64_t load_image_library_for(const Scene& scene);

@@ -9,11 +9,11 @@
 #include <optional>
 
 #include "apps/command_line.h"
+#include "images/image_io.h"
 #include "render/frame_pattern.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
 #include "render/undefined_mask.h"
-#include "scenes/image_io.h"
 #include "scenes/scene_files.h"
 #include "scenes/uniforms.h"
 

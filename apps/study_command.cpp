@@ -6,9 +6,9 @@
 
 #include "apps/command_line.h"
 #include "core/tile_grid.h"
+#include "images/image_io.h"
 #include "render/memory_plan.h"
 #include "render/plugins.h"
-#include "scenes/image_io.h"
 #include "scenes/scene_files.h"
 
 namespace qs::app {

@@ -28,11 +28,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "images/image_io.h"
 #include "render/atlas_bake.h"
 #include "render/frame_image.h"
 #include "render/normal_bake.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "shading/height_field.h"
 
 namespace {

@@ -1,7 +1,7 @@
 // quadshade-bench-png-encoding FILE.png...: what zlib's level and libpng's row filter cost a PNG
 // as quadshade writes one (8-bit, not interlaced): each file decoded, then encoded in memory at
 // level 6 over unfiltered rows (OpenImageIO's settings) and at level 1 over rows filtered by the
-// row above (scenes/png_codec.cpp's), the best of 5 runs of each; prints a Markdown table of the
+// row above (images/png_codec.cpp's), the best of 5 runs of each; prints a Markdown table of the
 // time and the size.
 
 #include <png.h>

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "shading/program.h"
+#include "shading/batches.h"
 
 namespace qs {
 

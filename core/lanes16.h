@@ -14,7 +14,7 @@
 #include <immintrin.h>
 #endif
 
-#include "shading/program.h"
+#include "shading/batches.h"
 
 namespace qs::lanes16 {
 

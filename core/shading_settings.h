@@ -4,7 +4,7 @@
 // RasterSettings); the ray caster has none.
 
 #include "core/tile_grid.h"
-#include "shading/program.h"
+#include "shading/shade_mode.h"
 
 namespace qs {
 

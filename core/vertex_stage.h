@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/draw_call.h"
-#include "shading/program.h"
+#include "shading/batches.h"
 
 namespace qs {
 

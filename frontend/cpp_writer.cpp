@@ -856,8 +856,9 @@ Expr StageWriter::shadow_lookup(TOperator op, TIntermTyped* node, const glslang:
     return {t, kPostfix, false};
 }
 
-// The built-in functions written as calls of the same name in the vocabulary (shading/glsl/),
-// their arguments as they are: GLSL's operator, and the name it is written with.
+// The GLSL built-ins the vocabulary (shading/glsl/) has under their GLSL names, taking their
+// arguments as they are; null for the others. round() is roundEven: GLSL leaves halves to the
+// implementation, and llvmpipe rounds them to even.
 const char* same_name_builtin(TOperator op) {
     switch (op) {
         case glslang::EOpRadians: return "radians";

@@ -12,7 +12,7 @@
 #include "fuzz/fuzz_check.h"
 #include "scenes/gltf.h"
 #include "scenes/gltf_checks.h"
-#include "scenes/image_io.h"
+#include "scenes/texture_files.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <iterator>
 
 #include "fuzz/fuzz_check.h"
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const char* const kNames[] = {"f.png", "f.exr", "f.tif", "f.jpg", "f.hdr"};

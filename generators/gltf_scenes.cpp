@@ -12,7 +12,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "generators/gltf_writer.h"
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 namespace qs {
 

@@ -19,8 +19,8 @@
 #include "generators/geometry_scenes.h"
 #include "generators/gltf_scenes.h"
 #include "generators/texture_scenes.h"
+#include "images/image_io.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "scenes/scene.h"
 #include "shading/noise/improved_noise.h"
 

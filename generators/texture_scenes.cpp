@@ -6,8 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "images/image_io.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "scenes/scene.h"
 
 namespace qs {

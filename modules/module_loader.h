@@ -1,6 +1,6 @@
 #pragma once
 // Modules: shared libraries of quadshade's own, each the one wrapper of an outside library that
-// only some commands need (OpenImageIO: scenes/openimageio_library.cpp; Embree:
+// only some commands need (OpenImageIO: images/openimageio_library.cpp; Embree:
 // raycast/embree_scene.cpp). The executables do not link those libraries: a module is loaded the
 // first time a call needs it, so that `quadshade --help` or a listing never pays for OpenImageIO's
 // dozens of dependencies, nor a rasterized frame for Embree (docs/results.md, "The cost of one

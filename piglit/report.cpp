@@ -53,6 +53,16 @@ std::string probe_text(const ProbeMismatch& p) {
     return s;
 }
 
+// A failure's message and its probes' mismatches, a line each.
+std::string failure_details(const TestResult& r) {
+    std::string details = r.message;
+    for (const ProbeMismatch& p : r.probes) {
+        if (!details.empty()) details += '\n';
+        details += probe_text(p);
+    }
+    return details;
+}
+
 }  // namespace
 
 std::string test_name(const std::string& file) {
@@ -78,8 +88,7 @@ void print_result(std::FILE* out, const TestResult& r) {
     if (r.status == Status::Skip) std::fprintf(out, " (%s)", r.reason.c_str());
     std::fprintf(out, "\n");
     if (r.status == Status::Pass || r.status == Status::Skip) return;
-    std::string details = r.message;
-    for (const ProbeMismatch& p : r.probes) details += (details.empty() ? "" : "\n") + probe_text(p);
+    const std::string details = failure_details(r);
     std::size_t at = 0;
     while (at < details.size()) {
         std::size_t end = details.find('\n', at);
@@ -144,8 +153,7 @@ void write_junit(const std::filesystem::path& path, const std::vector<TestResult
         out << "  <testcase classname=\"" << xml_escaped(classname) << "\" name=\""
             << xml_escaped(slash == std::string::npos ? name : name.substr(slash + 1)) << "\" time=\"" << r.seconds
             << "\" status=\"" << status_word(r.status) << "\">";
-        std::string details = r.message;
-        for (const ProbeMismatch& p : r.probes) details += (details.empty() ? "" : "\n") + probe_text(p);
+        const std::string details = failure_details(r);
         switch (r.status) {
             case Status::Fail:
                 out << "<failure type=\"fail\" message=\"" << xml_escaped(details.substr(0, details.find('\n'))) << "\">"

@@ -4,7 +4,8 @@
 #include <cctype>
 #include <cstdlib>
 
-#include "shading/program.h"
+#include "shading/batches.h"
+#include "shading/shader_uniforms.h"
 
 namespace qs::piglit {
 

@@ -10,7 +10,7 @@
 
 #include "piglit/test_result.h"
 #include "render/scene_render.h"
-#include "shading/program.h"
+#include "shading/shade_mode.h"
 
 namespace qs::piglit {
 

@@ -27,7 +27,8 @@
 
 #include <glm/vec4.hpp>
 
-#include "shading/program.h"
+#include "shading/batches.h"
+#include "shading/shader_info.h"
 
 namespace qs {
 

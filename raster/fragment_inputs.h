@@ -14,7 +14,8 @@
 #include "core/prepared_draw.h"
 #include "raster/plane_equation.h"
 #include "raster/triangle_setup.h"
-#include "shading/program.h"
+#include "shading/batches.h"
+#include "shading/shade_mode.h"
 
 namespace qs {
 

@@ -23,7 +23,7 @@
 #include "raster/edge_function.h"
 #include "raster/plane_equation.h"
 #include "raster/triangle_setup.h"
-#include "shading/program.h"
+#include "shading/batches.h"
 
 namespace qs {
 

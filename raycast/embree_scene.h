@@ -13,7 +13,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "shading/program.h"
+#include "shading/batches.h"
 
 namespace qs {
 

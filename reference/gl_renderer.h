@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "images/image_io.h"
 #include "reference/gl_context.h"
-#include "scenes/image_io.h"
 #include "scenes/scene.h"
 #include "scenes/shader_inputs.h"
 

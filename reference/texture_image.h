@@ -1,6 +1,6 @@
 #pragma once
 // A texture's image decoded as the reference's own (stb_image: the only file that includes it is
-// texture_image.cpp), not through the renderer's decoder (scenes/image_io.h, OpenImageIO), so
+// texture_image.cpp), not through the renderer's decoder (images/image_io.h, OpenImageIO), so
 // that a decoding error of either shows as a difference.
 
 #include <cstdint>

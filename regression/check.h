@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 namespace qs {
 

@@ -14,12 +14,12 @@
 #include <nlohmann/json.hpp>
 
 #include "core/framebuffer.h"
+#include "images/image_io.h"
 #include "regression/case_workers.h"
 #include "render/glsl_shaders.h"
 #include "render/memory_plan.h"
 #include "scenes/gltf.h"
 #include "scenes/gltf_checks.h"
-#include "scenes/image_io.h"
 #include "scenes/scene_files.h"
 #include "scenes/uniforms.h"
 

@@ -15,8 +15,8 @@
 #include <filesystem>
 #include <string>
 
+#include "images/image_io.h"
 #include "render/scene_render.h"
-#include "scenes/image_io.h"
 #include "scenes/scene.h"
 
 namespace qs {

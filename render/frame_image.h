@@ -1,9 +1,9 @@
 #pragma once
-// A frame's colour as an Image (scenes/image_io.h), to write or compare: the rows the framebuffer
+// A frame's colour as an Image (images/image_io.h), to write or compare: the rows the framebuffer
 // holds, top-down (the whole image, or the band rendered).
 
 #include "core/framebuffer.h"
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 namespace qs {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "images/image_io.h"
 #include "render/scene_render.h"
-#include "scenes/image_io.h"
-#include "shading/program.h"
+#include "shading/shader_info.h"
 
 namespace qs {
 

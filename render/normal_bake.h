@@ -34,7 +34,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 #include "scenes/scene.h"
 #include "shading/height_field.h"
 

@@ -127,7 +127,7 @@ private:
 };
 
 // Loads the outside libraries a render of `request` uses, as its first frame would: Embree for
-// the ray caster (OpenImageIO, for its textures and its output, is scenes/image_io.h's). A caller
+// the ray caster (OpenImageIO, for its textures and its output, is images/image_io.h's). A caller
 // that measures a render's time or memory calls it first, to count the render's own. Throws
 // std::runtime_error naming the library when it cannot be loaded.
 void load_libraries(const FrameRequest& request);

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-#include "scenes/image_io.h"
+#include "scenes/texture_files.h"
 
 namespace qs {
 

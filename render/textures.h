@@ -1,5 +1,5 @@
 #pragma once
-// A scene's textures as the renderer samples them: the image decoded (scenes/image_io.h) and
+// A scene's textures as the renderer samples them: the image decoded (images/image_io.h) and
 // uploaded in glTF's orientation (UV (0, 0) is the image's first row, so rows are not flipped; a
 // 3D texture's slices are the image's bands of rows, top first), the glTF sampler in the texture
 // unit's terms, and mipmaps when its minification filter reads them, made as llvmpipe's

@@ -14,7 +14,7 @@
 #include <cstdint>
 
 #include "core/framebuffer.h"
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 #include "shading/number/checked.h"
 
 namespace qs {

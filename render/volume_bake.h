@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "images/image_io.h"
 #include "render/scene_render.h"
-#include "scenes/image_io.h"
 #include "scenes/scene.h"
 
 namespace qs {

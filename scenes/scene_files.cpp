@@ -1,12 +1,7 @@
 #include "scenes/scene_files.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
+#include <cctype>
 #include <system_error>
 
 #include "scenes/scene.h"
@@ -90,51 +85,11 @@ std::filesystem::path resolve_scene_uri(const std::filesystem::path& scene_file,
 
 std::vector<unsigned char> read_scene_file(const std::filesystem::path& path, std::uint64_t max_bytes,
                                            bool follow_symlink) {
-    const std::string name = path.string();
-    const int fd = ::open(name.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK | (follow_symlink ? 0 : O_NOFOLLOW));
-    if (fd < 0) {
-        const int e = errno;
-        if (e == ENOENT) throw SceneError(name + ": no such file");
-        if (e == ELOOP) throw SceneError(name + ": is a symbolic link (links are resolved before reading; this one changed)");
-        throw SceneError(name + ": cannot open: " + std::strerror(e));
+    try {
+        return read_regular_file(path, max_bytes, follow_symlink);
+    } catch (const FileError& e) {
+        throw SceneError(e.what());
     }
-    struct Closer {
-        int fd;
-        ~Closer() { ::close(fd); }
-    } closer{fd};
-    struct stat st {};
-    if (::fstat(fd, &st) != 0) throw SceneError(name + ": cannot stat: " + std::strerror(errno));
-    if (S_ISDIR(st.st_mode)) throw SceneError(name + ": is a folder, not a file");
-    if (!S_ISREG(st.st_mode)) throw SceneError(name + ": is not a regular file (a device, FIFO or socket is never read)");
-    const std::uint64_t size = std::uint64_t(st.st_size);
-    if (size > max_bytes) {
-        throw SceneError(name + ": is " + byte_size_text(size) + ", more than the " + byte_size_text(max_bytes) +
-                         " quadshade reads");
-    }
-    std::vector<unsigned char> bytes(size);
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw SceneError(name + ": cannot read: " + std::strerror(errno));
-        if (n == 0) throw SceneError(name + ": became shorter while being read");
-        done += std::size_t(n);
-    }
-    return bytes;
-}
-
-std::string byte_size_text(std::uint64_t bytes) {
-    const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
-    double v = double(bytes);
-    int u = 0;
-    while (v >= 1024.0 && u < 6) v /= 1024.0, ++u;
-    char text[32];
-    if (u == 0) {
-        std::snprintf(text, sizeof text, "%llu bytes", (unsigned long long)bytes);
-    } else {
-        std::snprintf(text, sizeof text, "%.1f %s", v, units[u]);
-    }
-    return text;
 }
 
 }  // namespace qs

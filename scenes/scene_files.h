@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "files/read_file.h"
+
 namespace qs {
 
 struct ScenePathPolicy {
@@ -29,13 +31,8 @@ struct ScenePathPolicy {
 std::filesystem::path resolve_scene_uri(const std::filesystem::path& scene_file, std::string_view reference,
                                         const ScenePathPolicy& policy, std::string_view kind = "scene");
 
-// The whole content of `path`, which must be a regular file of at most `max_bytes` (opened
-// without following a final symlink and without blocking, so that a FIFO or device is refused,
-// never waited on or read forever). Throws SceneError naming the path.
+// read_regular_file (files/read_file.h), throwing SceneError.
 std::vector<unsigned char> read_scene_file(const std::filesystem::path& path, std::uint64_t max_bytes,
                                            bool follow_symlink = false);
-
-// "2.0 GiB", "512 KiB": for messages about sizes.
-std::string byte_size_text(std::uint64_t bytes);
 
 }  // namespace qs

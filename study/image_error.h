@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 namespace qs::study {
 

@@ -5,9 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "images/image_io.h"
 #include "render/frame_image.h"
 #include "render/scene_render.h"
-#include "scenes/image_io.h"
 #include "shading/shade_choice.h"
 #include "study/image_error.h"
 

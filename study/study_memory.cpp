@@ -4,9 +4,9 @@
 #include <set>
 
 #include "core/tile_grid.h"
+#include "images/image_io.h"
 #include "render/memory_plan.h"
 #include "render/scene_render.h"
-#include "scenes/image_io.h"
 #include "scenes/scene_files.h"
 
 namespace qs::study {

@@ -2,7 +2,7 @@
 // The ways of shading a same-pixels test runs a shader under: every derivative rule, and double
 // precision, since a translation and the interpreter are both written over the number type.
 
-#include "shading/program.h"
+#include "shading/shade_mode.h"
 
 namespace qs::test {
 

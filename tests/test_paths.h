@@ -10,7 +10,7 @@
 
 #include "scenes/gltf.h"
 #include "scenes/scene.h"
-#include "shading/program.h"
+#include "shading/shader_info.h"
 
 namespace qs::test {
 

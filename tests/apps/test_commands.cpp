@@ -12,7 +12,7 @@
 #include <chrono>
 #include <thread>
 
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 #include "tests/apps/command_tests.h"
 
 namespace qs {

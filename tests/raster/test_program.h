@@ -6,8 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "shading/program_of.h"
 #include "raster/rasterizer.h"
+#include "shading/program_of.h"
 #include "shading/varyings.h"
 #include "shading/vertex.h"
 
@@ -32,7 +32,7 @@ struct PassThrough {
 
 // Writes (1, 1, 1, 1): coverage.
 struct Flat {
-    static constexpr ShaderInfo info{.name = "test_flat", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
+    static constexpr ShaderInfo info{.name = "test_flat", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>&, const Uniforms&) { return vec4<F>(1.0f); }
@@ -40,7 +40,7 @@ struct Flat {
 
 // Writes the object position: interpolation.
 struct Position {
-    static constexpr ShaderInfo info{.name = "test_position", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
+    static constexpr ShaderInfo info{.name = "test_position", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) { return vec4<F>(in.P, 1.0f); }
@@ -48,7 +48,7 @@ struct Position {
 
 // Writes x flat (the provoking vertex's) and y smooth.
 struct FlatX {
-    static constexpr ShaderInfo info{.name = "test_flat_x", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
+    static constexpr ShaderInfo info{.name = "test_flat_x", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     struct VertexStage {
         static constexpr GlslFiles glsl{};
         template <class T>
@@ -70,7 +70,7 @@ struct FlatX {
 
 // Writes dFdx and dFdy of the object x and x itself.
 struct Slopes {
-    static constexpr ShaderInfo info{.name = "test_slopes", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true}};
+    static constexpr ShaderInfo info{.name = "test_slopes", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {

@@ -14,8 +14,8 @@
 #include "core/lanes16.h"
 #include "core/tile_grid.h"
 #include "raster/fragment_inputs.h"
-#include "scenes/gltf.h"
 #include "render/scene_render.h"
+#include "scenes/gltf.h"
 #include "tests/raster/test_program.h"
 
 namespace qs::test {
@@ -28,7 +28,7 @@ const ProgramOf<Slopes> kSlopes;
 
 // Writes dFdx and dFdy of gl_FragCoord.y squared.
 struct SquareY {
-    static constexpr ShaderInfo info{.name = "test_y2", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true, .frag_coord = true}};
+    static constexpr ShaderInfo info{.name = "test_y2", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true, .frag_coord = true}};
     using VertexStage = PassThrough;
     template <class F>
     static vec4<F> fragment(const FragmentIn<F, VertexStage>& in, const Uniforms&) {
@@ -40,7 +40,7 @@ const ProgramOf<SquareY> kSquareY;
 
 // The same shader not saying that it reads gl_FragCoord.
 struct UndeclaredSquareY : SquareY {
-    static constexpr ShaderInfo info{.name = "test_y2_undeclared", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true}};
+    static constexpr ShaderInfo info{.name = "test_y2_undeclared", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = true}};
 };
 const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 
@@ -49,7 +49,7 @@ const ProgramOf<UndeclaredSquareY> kUndeclaredSquareY;
 // four of them, fill for five) against the general path's.
 template <int N>
 struct SmoothVaryings {
-    static constexpr ShaderInfo info{.name = "test_smooth_varyings", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
+    static constexpr ShaderInfo info{.name = "test_smooth_varyings", .description = "a test shader", .needs = {.coordinates = Coordinates::Object3D, .derivatives = false}};
     struct VertexStage {
         static constexpr GlslFiles glsl{};
         template <class T>

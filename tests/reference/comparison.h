@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "core/framebuffer.h"
+#include "images/image_io.h"
 #include "raster/driver_settings.h"
 #include "reference/gl_context.h"
-#include "scenes/image_io.h"
 
 namespace qs::test {
 

@@ -16,14 +16,14 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/framebuffer.h"
+#include "images/image_io.h"
 #include "render/frame_image.h"
 #include "render/glsl_shaders.h"
-#include "shading/catalogue.h"
-#include "core/framebuffer.h"
-#include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "render/scene_render.h"
 #include "render/volume_bake.h"
+#include "scenes/gltf.h"
+#include "shading/catalogue.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_command.h"
 #include "tests/test_paths.h"

@@ -16,10 +16,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "images/image_io.h"
 #include "reference/gl_renderer.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "shading/catalogue.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_paths.h"

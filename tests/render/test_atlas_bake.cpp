@@ -11,10 +11,10 @@
 #include <fstream>
 #include <iterator>
 
+#include "images/image_io.h"
 #include "render/atlas_bake.h"
 #include "render/atlas_skirts.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "tests/test_command.h"
 #include "tests/test_paths.h"
 

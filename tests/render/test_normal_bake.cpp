@@ -13,10 +13,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "images/image_io.h"
 #include "render/atlas_bake.h"
 #include "render/normal_bake.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "shading/height_field.h"
 #include "tests/test_command.h"
 #include "tests/test_paths.h"

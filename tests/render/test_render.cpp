@@ -16,11 +16,11 @@
 #include <sstream>
 #include <thread>
 
+#include "images/image_io.h"
 #include "render/gallery.h"
 #include "render/memory_plan.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "shading/catalogue.h"
 #include "tests/test_paths.h"
 

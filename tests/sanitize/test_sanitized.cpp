@@ -7,9 +7,9 @@
 
 #include <cstring>
 
+#include "images/image_io.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
-#include "scenes/image_io.h"
 #include "shading/catalogue.h"
 #include "shading/shade_choice.h"
 #include "tests/test_paths.h"

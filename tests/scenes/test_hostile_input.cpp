@@ -18,11 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "images/image_io.h"
 #include "render/frame_pattern.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "scenes/gltf_checks.h"
-#include "scenes/image_io.h"
 #include "tests/test_paths.h"
 
 namespace qs {

@@ -21,12 +21,12 @@
 #include <glm/trigonometric.hpp>
 #include <OpenImageIO/imageio.h>
 
-#include "shading/catalogue.h"
-#include "scenes/gltf.h"
-#include "scenes/image_io.h"
-#include "shading/number/checked.h"
+#include "images/image_io.h"
 #include "render/scene_render.h"
 #include "render/undefined_mask.h"
+#include "scenes/gltf.h"
+#include "shading/catalogue.h"
+#include "shading/number/checked.h"
 #include "tests/test_paths.h"
 
 namespace qs {

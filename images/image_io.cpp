@@ -1,6 +1,6 @@
 // Image files: every decision about them is here; libpng's calls are in png_codec.cpp, OpenEXR's
 // in exr_codec.cpp and OpenImageIO's in openimageio_library.cpp, all behind image_library.h.
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 #include <strings.h>
 #include <unistd.h>
@@ -13,15 +13,13 @@
 #include <memory>
 #include <thread>
 
+#include "files/read_file.h"
 #include "files/temporary_file.h"
+#include "images/exr_codec.h"
+#include "images/image_checks.h"
+#include "images/image_library.h"
+#include "images/png_codec.h"
 #include "modules/module_loader.h"
-#include "scenes/exr_codec.h"
-#include "scenes/image_checks.h"
-#include "scenes/image_library.h"
-#include "scenes/limits.h"
-#include "scenes/png_codec.h"
-#include "scenes/scene.h"
-#include "scenes/scene_files.h"
 
 namespace qs {
 
@@ -43,12 +41,6 @@ const Library& library() {
 }  // namespace image_library
 
 namespace {
-
-std::string lowercase_extension(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 std::string size_text(std::int64_t width, std::int64_t height) { return std::to_string(width) + "x" + std::to_string(height); }
 
@@ -91,39 +83,15 @@ private:
 
 void load_image_library() { image_library::library(); }
 
-namespace {
-
-// Whether quadshade reads and writes the format (an extension) itself, through libpng or OpenEXR,
-// without OpenImageIO.
-bool own_codec(const std::string& ext) { return ext == ".png" || ext == ".exr"; }
-
-}  // namespace
-
-bool needs_image_library(const std::filesystem::path& file) { return !own_codec(lowercase_extension(file)); }
-
-namespace {
-
-// The format of a texture's image, as an extension: a file's own, embedded bytes' by their MIME
-// type (glTF's two), else by their signature; empty when neither PNG nor JPEG.
-std::string texture_extension(const ImageSource& source) {
-    if (source.kind == ImageSource::Kind::File) return lowercase_extension(source.file);
-    const std::string& mime = source.mime_type;
-    const std::vector<std::uint8_t>& bytes = source.bytes;
-    const bool png =
-        mime == "image/png" || (mime.empty() && bytes.size() >= 4 && bytes[0] == 0x89 && bytes[1] == 'P');
-    const bool jpeg =
-        mime == "image/jpeg" || (mime.empty() && bytes.size() >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8);
-    return png ? ".png" : jpeg ? ".jpg" : "";
+std::string lowercase_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
 }
 
-}  // namespace
+bool has_own_codec(const std::string& ext) { return ext == ".png" || ext == ".exr"; }
 
-bool needs_image_library(const Scene& scene) {
-    return std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) {
-        const std::string ext = texture_extension(t.image);
-        return !ext.empty() && !own_codec(ext);
-    });
-}
+bool needs_image_library(const std::filesystem::path& file) { return !has_own_codec(lowercase_extension(file)); }
 
 std::uint64_t image_read_bytes(std::uint64_t width, std::uint64_t height) {
     // Up to four decoded float channels, then the RGBA copy.
@@ -133,8 +101,8 @@ std::uint64_t image_read_bytes(std::uint64_t width, std::uint64_t height) {
 Image read_image(const std::filesystem::path& path, const ImageReadLimits& limits) {
     std::vector<unsigned char> bytes;
     try {
-        bytes = read_scene_file(path, limits.max_file_bytes, limits.follow_symlink);
-    } catch (const SceneError& e) {
+        bytes = read_regular_file(path, limits.max_file_bytes, limits.follow_symlink);
+    } catch (const FileError& e) {
         throw ImageError(e.what());
     }
     return decode_image(bytes, path, limits);
@@ -237,36 +205,17 @@ Image decode_image(std::span<const unsigned char> bytes, const std::filesystem::
     return img;
 }
 
-Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes) {
-    ImageReadLimits limits;
-    limits.max_side = limits::kTextureSide;
-    limits.max_pixels = limits::kTextureTexels;
-    std::vector<unsigned char> file_bytes;
-    std::span<const unsigned char> bytes = source.bytes;
-    std::string name = source.file.string(), ext = texture_extension(source);
-    if (source.kind == ImageSource::Kind::File) {
-        try {
-            file_bytes = read_scene_file(source.file, limits::kResourceFileBytes);  // resolved already: no links
-        } catch (const SceneError& e) {
-            throw ImageError(e.what());
-        }
-        bytes = file_bytes;
-    } else {
-        name = source.kind == ImageSource::Kind::DataUri ? "data: URI image" : "bufferView image";
-        if (ext.empty()) throw ImageError(name + ": not a PNG or JPEG image (MIME type '" + source.mime_type + "')");
-    }
-    // PNG alpha stays as stored (unassociated), as GL uploads it.
-    const auto in = open_image(bytes, name, ext, limits, /*unassociated_alpha=*/true);
-    Image8 img = decode8(*in, name, decoding_bytes);
-    if (decoding_bytes) *decoding_bytes += file_bytes.size() + img.rgba.size();
-    return img;
+Image8 decode_image8(std::span<const unsigned char> bytes, const std::string& name, const std::string& ext,
+                     const ImageReadLimits& limits, bool unassociated_alpha, std::uint64_t* decoding_bytes) {
+    const auto in = open_image(bytes, name, ext, limits, unassociated_alpha);
+    return decode8(*in, name, decoding_bytes);
 }
 
 Image8 read_image8(const std::filesystem::path& path, const ImageReadLimits& limits) {
     std::vector<unsigned char> bytes;
     try {
-        bytes = read_scene_file(path, limits.max_file_bytes, limits.follow_symlink);
-    } catch (const SceneError& e) {
+        bytes = read_regular_file(path, limits.max_file_bytes, limits.follow_symlink);
+    } catch (const FileError& e) {
         throw ImageError(e.what());
     }
     const auto in = open_image(bytes, path.string(), lowercase_extension(path), limits);

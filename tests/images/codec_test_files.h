@@ -14,7 +14,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "scenes/image_library.h"
+#include "images/image_library.h"
 
 namespace qs::test {
 

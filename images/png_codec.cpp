@@ -2,7 +2,7 @@
 // back to the setjmp of the function that made the call: those functions (read_header, read_row,
 // read_interlaced, write_header, write_row, write_end) hold only trivially destructible locals, and
 // what libpng's callbacks reach is plain data (PngStream), so that no jump passes a destructor.
-#include "scenes/png_codec.h"
+#include "images/png_codec.h"
 
 #include <png.h>
 #include <zlib.h>

@@ -7,7 +7,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
-#include "scenes/image_library.h"
+#include "images/image_library.h"
 
 namespace qs::image_library {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <string_view>
 
-#include "scenes/image_io.h"
+#include "images/image_io.h"
 
 namespace qs::image_library {
 

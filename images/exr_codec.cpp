@@ -1,6 +1,6 @@
 // OpenEXR through the OpenEXR library (exr_codec.h). Every call into it is inside a try block of
 // the Decoder's or Encoder's own: its Iex exceptions (and std::bad_alloc) become messages here.
-#include "scenes/exr_codec.h"
+#include "images/exr_codec.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -21,7 +21,7 @@
 #include <thread>
 #include <vector>
 
-#include "scenes/limits.h"
+#include "images/image_io.h"
 
 namespace qs::image_library {
 
@@ -31,8 +31,8 @@ namespace {
 // larger than quadshade reads or writes.
 void set_size_limits() {
     static const bool once = [] {
-        Imf::Header::setMaxImageSize(limits::kImageSide, limits::kImageSide);
-        Imf::Header::setMaxTileSize(limits::kImageSide, limits::kImageSide);
+        Imf::Header::setMaxImageSize(kMaxImageSide, kMaxImageSide);
+        Imf::Header::setMaxTileSize(kMaxImageSide, kMaxImageSide);
         return true;
     }();
     (void)once;

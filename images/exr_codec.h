@@ -6,14 +6,14 @@
 // a tiled file, channels in OpenImageIO's order (by layer, then R, G, B, Y, A..., then as stored),
 // half, float and unsigned samples converted as OpenImageIO converts them; and they write what its
 // writer does: float R, G, B(, A) channels, ZIP compression, string attributes in the header
-// (tests/scenes/test_exr_codec.cpp checks all of it against OpenImageIO). OpenEXR's exceptions stop
+// (tests/images/test_exr_codec.cpp checks all of it against OpenImageIO). OpenEXR's exceptions stop
 // at this edge and come back as messages.
 
 #include <memory>
 #include <span>
 #include <string>
 
-#include "scenes/image_library.h"
+#include "images/image_library.h"
 
 namespace qs::image_library {
 

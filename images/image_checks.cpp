@@ -1,4 +1,4 @@
-#include "scenes/image_checks.h"
+#include "images/image_checks.h"
 
 #include <cstdint>
 #include <cstring>

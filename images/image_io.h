@@ -15,7 +15,6 @@
 #include <utility>
 #include <vector>
 
-#include "scenes/scene.h"
 
 namespace qs {
 
@@ -32,9 +31,13 @@ struct Image {
 
 using Metadata = std::vector<std::pair<std::string, std::string>>;
 
+// The largest side of an image quadshade reads or writes (its renders' largest: the rasterizer's
+// fixed-point guard band).
+inline constexpr int kMaxImageSide = 1 << 15;
+
 // What read_image accepts, checked on the file's header before any pixel is decoded.
 struct ImageReadLimits {
-    int max_side = 1 << 15;
+    int max_side = kMaxImageSide;
     std::uint64_t max_pixels = std::uint64_t(1) << 28;
     std::uint64_t max_file_bytes = std::uint64_t(1) << 31;
     bool follow_symlink = true;  // false for files a scene names (their links are resolved already)
@@ -52,8 +55,6 @@ void load_image_library();
 // Whether reading or writing `file` (its extension names the format) needs OpenImageIO: every
 // format but PNG and OpenEXR, which libpng and OpenEXR (linked into quadshade) decode and encode.
 bool needs_image_library(const std::filesystem::path& file);
-// Whether decoding one of `scene`'s textures does.
-bool needs_image_library(const Scene& scene);
 
 // Reads PNG, JPEG, OpenEXR, TIFF and HDR files, the format named by the extension;
 // grey/RGB are expanded to RGBA (alpha 1). Only regular files are opened (never a FIFO or
@@ -75,15 +76,21 @@ struct Image8 {
 // read_image's memory, for comparisons made in 8-bit steps.
 Image8 read_image8(const std::filesystem::path& path, const ImageReadLimits& limits = {});
 
-// A texture's image decoded as a GL application uploads it: rows in the file's order (glTF puts
-// UV (0, 0) at the first row), alpha as stored (never premultiplied), grey and RGB expanded to
-// RGBA (alpha 255), deeper channels rounded to 8 bits. A file is read as read_image reads one
-// (a regular file, the reader its extension names) and embedded bytes by their MIME type; both
-// within the texture limits of scenes/limits.h, checked on the header. Throws ImageError naming
-// the file (or the embedded image's kind) when it cannot be read. `decoding_bytes`, when given,
-// receives the most the decoding held at once: the file, the samples as stored (when not 8-bit)
-// and as 8-bit, and the RGBA image.
-Image8 read_texture_image(const ImageSource& source, std::uint64_t* decoding_bytes = nullptr);
+// Encoded bytes in the format `ext` names (".png", ".jpg", ...; lower case) decoded to 8 bits per
+// channel as read_image8 decodes a file, `name` naming them in messages. With
+// `unassociated_alpha`, alpha stays as stored (never premultiplied), as GL uploads a texture.
+// `decoding_bytes`, when given, receives the most the decoding held beside its result: the
+// samples as stored (when not 8-bit) and as 8-bit.
+Image8 decode_image8(std::span<const unsigned char> bytes, const std::string& name, const std::string& ext,
+                     const ImageReadLimits& limits, bool unassociated_alpha = false,
+                     std::uint64_t* decoding_bytes = nullptr);
+
+// A file name's extension in lower case (".png"): what names its format.
+std::string lowercase_extension(const std::filesystem::path& path);
+
+// Whether quadshade reads and writes the format (an extension such as ".png", lower case) itself,
+// through libpng or OpenEXR, without OpenImageIO.
+bool has_own_codec(const std::string& ext);
 
 // Bytes an image of width x height takes as read_image's result at its peak (decoded channels
 // and the RGBA copy), for checking memory before reading.

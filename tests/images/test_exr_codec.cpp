@@ -1,4 +1,4 @@
-// OpenEXR through the OpenEXR library (scenes/exr_codec.h) against OpenImageIO, which read and
+// OpenEXR through the OpenEXR library (images/exr_codec.h) against OpenImageIO, which read and
 // wrote quadshade's OpenEXR files before and still reads its other formats: half, float and
 // unsigned channels under any names, scanline and tiled files, every compression, a data window
 // apart from the display window and multi-part files decode to the same channels and the same
@@ -24,10 +24,10 @@
 #include <string>
 #include <vector>
 
-#include "scenes/exr_codec.h"
-#include "scenes/image_io.h"
-#include "scenes/image_library.h"
-#include "tests/scenes/codec_test_files.h"
+#include "images/exr_codec.h"
+#include "images/image_io.h"
+#include "images/image_library.h"
+#include "tests/images/codec_test_files.h"
 
 namespace qs {
 

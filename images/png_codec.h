@@ -5,14 +5,14 @@
 // read or written is the same whichever library handles it: every PNG kind expanded to 8 or 16
 // bits (palette to RGB, gray below 8 bits to 8, a tRNS chunk to alpha), no gamma or sRGB
 // conversion, alpha associated on reading unless kept as stored, samples converted as OpenImageIO
-// converts them, and string attributes written as text chunks (tests/scenes/test_png_codec.cpp
+// converts them, and string attributes written as text chunks (tests/images/test_png_codec.cpp
 // checks all of it against OpenImageIO).
 
 #include <memory>
 #include <span>
 #include <string>
 
-#include "scenes/image_library.h"
+#include "images/image_library.h"
 
 namespace qs::image_library {
 

@@ -1,4 +1,4 @@
-// PNG through libpng (scenes/png_codec.h) against OpenImageIO, which read and wrote quadshade's
+// PNG through libpng (images/png_codec.h) against OpenImageIO, which read and wrote quadshade's
 // PNGs before and still reads its other formats: every kind of PNG libpng makes decodes to the
 // same channels and the same bits, float and 8-bit, alpha associated or as stored; written files
 // hold the pixels and text OpenImageIO's writer gives; a damaged file is refused with a message.
@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "scenes/image_io.h"
-#include "scenes/image_library.h"
-#include "tests/scenes/codec_test_files.h"
-#include "scenes/png_codec.h"
+#include "images/image_io.h"
+#include "images/image_library.h"
+#include "images/png_codec.h"
+#include "tests/images/codec_test_files.h"
 #include "tests/test_paths.h"
 
 namespace qs {
