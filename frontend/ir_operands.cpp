@@ -134,7 +134,7 @@ Operands operands(const Instr& in) {
         case Op::TextureGather: o.add(Field::D, F, 4, true), o.add(Field::A, F, 2); break;
         case Op::TextureGatherOffset: o.add(Field::D, F, 4, true), o.add(Field::A, F, 2), o.add(Field::C, I, 2); break;
         case Op::TextureQueryLod: o.add(Field::D, F, 2, true), o.add(Field::A, F, in.n); break;
-        case Op::TextureShadow: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3); break;
+        case Op::TextureShadow: o.add(Field::D, F, 1, true), o.add(Field::A, F, in.n + 1u); break;
         case Op::TextureShadowOffset: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3), o.add(Field::C, I, 2); break;
         case Op::If: case Op::BreakUnless: o.add(Field::A, B); break;
         case Op::Else: case Op::EndIf: case Op::LoopBegin: case Op::LoopContinue: case Op::LoopEnd: case Op::Break:
