@@ -14,6 +14,7 @@
 #include "reference/gl_renderer.h"
 #include "render/glsl_shaders.h"
 #include "render/scene_render.h"
+#include "tests/cube_map.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_paths.h"
 
@@ -433,39 +434,6 @@ void main() {
 })"},
 };
 
-// Six square faces of `size` texels, distinct patterns of hashed texels, written as PNG files in
-// `dir`: the scene's cube map (the faces of a depth comparison cube map are the same images).
-Texture cube_map(const std::filesystem::path& dir, int size, const Sampler& sampler, bool compare) {
-    Texture t;
-    t.dims = kCubeMap;
-    t.sampler = sampler;
-    t.compare = compare;
-    t.field = "env";
-    for (int f = 0; f < 6; ++f) {
-        Image8 image;
-        image.width = image.height = size;
-        image.rgba.resize(std::size_t(size) * std::size_t(size) * 4);
-        for (int y = 0; y < size; ++y) {
-            for (int x = 0; x < size; ++x) {
-                std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^ std::uint32_t(f + 1) * 83492791u;
-                h ^= h >> 13, h *= 0x5bd1e995u, h ^= h >> 15;
-                std::uint8_t* px = &image.rgba[(std::size_t(y) * std::size_t(size) + std::size_t(x)) * 4];
-                // smooth ramps under the hash, so that each face and each level reads differently
-                px[0] = std::uint8_t((x * 255 / size + (h & 63)) & 255);
-                px[1] = std::uint8_t((y * 255 / size + ((h >> 8) & 63)) & 255);
-                px[2] = std::uint8_t(f * 40 + ((h >> 16) & 31));
-                px[3] = 255;
-            }
-        }
-        const std::filesystem::path file = dir / ("face" + std::to_string(f) + ".png");
-        write_image(file, image);
-        ImageSource face;
-        face.file = file;
-        t.faces.push_back(face);
-    }
-    return t;
-}
-
 }  // namespace
 
 TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interpreter][reference]") {
@@ -601,7 +569,7 @@ TEST_CASE("samplerCube's lookups, run by the interpreter, match OSMesa llvmpipe 
     };
     for (const SamplerCase& sc : samplers) {
         Scene scene = load_scene(kPlane);
-        scene.textures.push_back(cube_map(dir, 32, sc.sampler, false));
+        scene.textures.push_back(cube_map(dir, 32, sc.sampler, false, "env"));
         scene.objects.at(0).samplers = {{"env", int(scene.textures.size()) - 1}};
         for (const LanguageCase& c : kCubeLookups) {
             const std::string name = std::string(c.name) + "-" + sc.name;
@@ -619,7 +587,7 @@ TEST_CASE("samplerCubeShadow's lookups, run by the interpreter, match OSMesa llv
     GlPrograms programs(dir);
     for (const Filter filter : {Filter::Nearest, Filter::Linear}) {
         Scene scene = load_scene(kPlane);
-        scene.textures.push_back(cube_map(dir, 16, {filter, filter, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, true));
+        scene.textures.push_back(cube_map(dir, 16, {filter, filter, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, true, "depth"));
         scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
         for (const LanguageCase& c : kCubeShadowLookups) {
             const std::string name = std::string(c.name) + (filter == Filter::Linear ? "-linear" : "-nearest");
