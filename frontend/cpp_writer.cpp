@@ -875,7 +875,21 @@ Expr StageWriter::cube_lookup(TOperator op, TIntermTyped* node, const glslang::T
         return Expr{t + ")", kPostfix, false};
     };
     if (op == glslang::EOpTextureQuerySize) return call("textureSize<F>", v.size());
-    if (args[0]->getAsTyped()->getType().getSampler().isShadow()) {
+    const bool shadow = args[0]->getAsTyped()->getType().getSampler().isShadow();
+    if (op == glslang::EOpTextureGather) {
+        if (shadow) return call("textureGatherCompare", 3);
+        // The channel, a constant expression, as the plain int the function takes.
+        std::vector<std::string> w = v;
+        if (args.size() > 2) {
+            const glslang::TIntermConstantUnion* k = args[2]->getAsConstantUnion();
+            if (!k) refuse(node, "textureGather with a channel that is not a constant");
+            w[2] = std::to_string(k->getConstArray()[0].getIConst());
+        }
+        std::string t = "textureGather(";
+        for (std::size_t i = 0; i < w.size(); ++i) t += (i ? ", " : "") + w[i];
+        return {t + ")", kPostfix, false};
+    }
+    if (shadow) {
         if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) refuse(node, "this texture function on a samplerCubeShadow");
         for (std::size_t i = 2; i < args.size(); ++i) {
             if (has_side_effects(args[i])) refuse(node, "a shadow lookup whose bias or derivatives change a variable");
@@ -1034,6 +1048,7 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             refuse(node, "a texture lookup in a vertex shader");
         }
         case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
+            if (args[0]->getAsTyped()->getType().getSampler().dim == glslang::EsdCube) return cube_lookup(op, node, args, v);
             // The channel, a constant expression, as the plain int the function takes.
             const std::size_t comp_arg = op == glslang::EOpTextureGatherOffset ? 3 : 2;
             if (args.size() > comp_arg) {

@@ -88,7 +88,8 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TexelFetch)   /* d..d+3 = texelFetch(s, I[a..], I[b]) */                                        \
     X(TexelFetchOffset) /* ... at I[a..] + I[c..] */                                                  \
     X(TextureSize)  /* I[d..] = textureSize(s, I[b]) */                                               \
-    X(TextureGather)       /* d..d+3 = textureGather(s, a, a+1, m): channel m of level 0's texels */   \
+    X(TextureGather)       /* d..d+3 = textureGather(s, a..a+n-1, m): channel m of level 0's texels */ \
+                           /*   (m = 4: a samplerCubeShadow's, each compared with F[b]) */            \
     X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
     X(TextureShadow)       /* d = a shadow sampler's comparison of a+n with the depth at a..a+n-1 */  \

@@ -311,7 +311,7 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         return coords;
     };
     const bool vertex = kind_ == StageKind::Vertex;
-    if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, v);
+    if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
     if (interface_.program.samplers[std::size_t(slot)].shadow && op != glslang::EOpTextureQuerySize) {
         return eval_shadow(op, node, slot, v);
     }
@@ -404,8 +404,28 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
 // reference value). GLSL gives a cube no projective, offset or fetch lookups. A depth comparison
 // texture has one level and one filter, so a shadow lookup's bias or derivatives change nothing
 // llvmpipe reads: evaluated for their side effects and left out.
-Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<Place>& v) {
+Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<TIntermTyped*>& args,
+                               const std::vector<Place>& v) {
     const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
+    if (op == glslang::EOpTextureGather) {
+        // The channel is a constant expression (glslang checks it is one, 0 to 3); a shadow
+        // gather's third argument is the reference value instead, marked by channel 4.
+        int comp = 0;
+        std::uint32_t b = 0;
+        if (shadow) {
+            comp = 4, b = v[1][0].reg;
+        } else if (args.size() > 2) {
+            const glslang::TIntermConstantUnion* k = args[2]->getAsConstantUnion();
+            if (!k) refuse(node, "textureGather's channel must be a constant expression");
+            comp = k->getConstArray()[0].getIConst();
+        }
+        if (comp < 0 || comp > 4) refuse(node, "textureGather of this channel");
+        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 3));
+        Place r = temps(B::Float, 4);
+        ir::Instr& e = emit(ir::Op::TextureGather);
+        e.d = r[0].reg, e.a = a, e.b = b, e.n = 3, e.m = std::uint8_t(comp), e.count = std::uint16_t(slot);
+        return r;
+    }
     if (op == glslang::EOpTextureQuerySize) {
         Place r = temps(B::Int, 2);
         const Place lod = v.empty() ? Place{{B::Int, int_constant(0)}} : convert_bits(v[0], B::Int);
@@ -416,7 +436,7 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
     if (shadow) {
         if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) {
             refuse(node, "this texture function on a samplerCubeShadow is not supported (texture with or without a bias, "
-                         "textureGrad and textureSize are)");
+                         "textureGrad, textureGather and textureSize are)");
         }
         const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 4));
         Place r = temps(B::Float, 1);
@@ -449,7 +469,7 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
         default: break;
     }
     refuse(node, "this texture function on a samplerCube is not supported (texture and textureCube with or without a "
-                 "bias, textureLod, textureCubeLod, textureGrad and textureSize are)");
+                 "bias, textureLod, textureCubeLod, textureGrad, textureGather and textureSize are)");
 }
 
 // A lookup in a sampler2DShadow: P is (s, t, the reference value), (s, t, r, q) projected. A depth

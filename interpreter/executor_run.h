@@ -467,6 +467,7 @@ template <class F>
 void Machine<F>::texture(const ir::Instr& in) {
     const glsl::Texture& t = *textures_[in.count];
     if (t.dims == glsl::kCubeDims) return cube_texture(in, static_cast<const glsl::samplerCube&>(t));
+    if (in.op == ir::Op::TextureGather && in.n != 2) throw std::logic_error("a cube map's gather on a texture that is not one");
     if (in.op == ir::Op::TextureSize) {
         if (in.n == 2) {
             const glsl::ivec2<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler2D&>(t), i_[in.b]);
@@ -548,6 +549,9 @@ void Machine<F>::cube_texture(const ir::Instr& in, const glsl::samplerCube& cube
         case ir::Op::TextureBias: c = glsl::textureCube(cube, p, f_[in.b]); break;
         case ir::Op::TextureLod: c = glsl::textureCubeLod(cube, p, f_[in.b]); break;
         case ir::Op::TextureGrad: c = glsl::textureGrad(cube, p, vector_at<3>(in.b), vector_at<3>(in.b + 3)); break;
+        case ir::Op::TextureGather:
+            c = in.m == 4 ? glsl::textureGatherCompare(cube, p, f_[in.b]) : glsl::textureGather(cube, p, in.m);
+            break;
         default: throw std::logic_error(std::string("a cube map is bound to a sampler that ") + ir::name(in.op) + " reads");
     }
     for (int i = 0; i < 4; ++i) put(in, f_[in.d + std::uint32_t(i)], c[i]);

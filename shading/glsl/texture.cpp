@@ -1285,14 +1285,25 @@ Axes<2> axes_of(const Lookup& l, int base, int n, const Axis& axis) {
 
 void gather_channel(const Texture& tex, const Gather& g) {
     const std::array<bool, 3> pot = pot_sizes<2>(tex);
-    const LevelLanes lv = level_lanes(tex, Ints{});
     for (int base = 0; base < g.lanes; base += L) {
         const int n = std::min(g.lanes - base, L);
+        Ints face{};
+        if (g.face) face = load_lanes<Ints>(g.face, base, n);
+        const LevelLanes lv = face_level_lanes(tex, Ints{}, g.face ? &face : nullptr);
         const Axes<2> ax = axes_of(g, base, n, [&](int i, const Floats& c, const Ints* offset) {
             return gather_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], offset);
         });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Uints order[4] = {k.k[0][1][0], k.k[0][1][1], k.k[0][0][1], k.k[0][0][0]};
+        if (g.ref) {
+            // each texel's comparison, as a shadow lookup's (GL_LEQUAL: ref <= depth)
+            const Floats ref = load_lanes(g.ref, base, n);
+            for (std::size_t c = 0; c < 4; ++c) {
+                const Ints pass = ref <= unorm(channel(order[c], 0));
+                store_lanes(g.out[c], base, n, pass ? splat(1.0f) : Floats{});
+            }
+            continue;
+        }
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
     }
 }

@@ -250,7 +250,52 @@ F cube_shadow(const Texture& tex, const vec4<F>& p) {
     return constant_lanes<F>(out, cases_of(p.x) | cases_of(p.y) | cases_of(p.z) | cases_of(p.w));
 }
 
+// textureGather on a cube map: the face's four texels a bilinear lookup at direction p reads on
+// level 0, as gather_channel reads a 2D texture's (CLAMP_TO_EDGE's gather wrap); channel
+// `component`, or, with a reference value, each texel's comparison with it.
+template <Number F>
+vec4<F> cube_gather(const Texture& tex, const vec3<F>& p, int component, const F* ref) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float c[3][N], s[N], t[N], r[N], out[4][N];
+    alignas(64) std::int32_t face[N];
+    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
+    const bool need_derivs = tex.needs_lod();
+    for (int i = 0; i < N; ++i) {
+        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
+        face[i] = f.face;
+        const float a = std::fabs(f.ma);
+        const float scale = need_derivs ? std::fabs(0.5f * (1.0f / f.ma)) : a > 0.0f ? 0.5f / a : 0.0f;
+        s[i] = f.sc * scale + 0.5f;
+        t[i] = f.tc * scale + 0.5f;
+    }
+    Gather g;
+    g.lanes = N, g.s = s, g.t = t, g.component = component, g.face = face;
+    LaneCases cases = cases_of(p.x) | cases_of(p.y) | cases_of(p.z);
+    if (ref) {
+        to_floats(*ref, r);
+        g.ref = r;
+        cases = cases | cases_of(*ref);
+    }
+    for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
+    gather_channel(tex, g);
+    return vec4<F>(constant_lanes<F>(out[0], cases), constant_lanes<F>(out[1], cases), constant_lanes<F>(out[2], cases),
+                   constant_lanes<F>(out[3], cases));
+}
+
 }  // namespace texture_detail
+
+// textureGather(samplerCube, P [, comp]): channel `comp` (0: red, a constant) of the four texels
+// a bilinear lookup in direction P reads on its face's level 0, in GL's order; constants under
+// Dual2.
+template <Number F>
+vec4<F> textureGather(const samplerCube& tex, const vec3<F>& p, int comp = 0) {
+    return texture_detail::cube_gather<F>(tex, p, comp, nullptr);
+}
+// textureGather(samplerCubeShadow, P, refZ): each of those texels' comparison with refZ.
+template <Number F>
+vec4<F> textureGatherCompare(const samplerCube& depth, const vec3<F>& p, const F& ref) {
+    return texture_detail::cube_gather<F>(depth, p, 0, &ref);
+}
 
 // GLSL's lookups in a samplerCube: a direction (any length but 0), the level of detail from the
 // quad (implicit), a bias added to it, an explicit level, or explicit derivatives of the direction.

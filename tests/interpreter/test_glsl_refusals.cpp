@@ -33,8 +33,6 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
         const char* words;     // a part of the message that names the construct
     };
     const Case cases[] = {
-        {"#version 400\nuniform samplerCube sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = textureGather(sky, vec3(st, 1.0));\n}\n",
-         "user.frag:6", "samplerCube"},
         {"#version 400\nuniform samplerCube sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = vec4(textureQueryLod(sky, vec3(st, 1.0)), 0.0, 1.0);\n}\n",
          "user.frag:6", "samplerCube"},
@@ -49,7 +47,7 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
          "  c = textureGatherOffsets(t, st, ivec2[4](ivec2(0), ivec2(1), ivec2(2), ivec2(3)));\n}\n",
          "user.frag:6", "textureGatherOffsets"},
         {"#version 400\nuniform samplerCubeShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = textureGather(depth, vec3(st, 1.0), 0.5);\n}\n",
+         "  c = vec4(textureQueryLod(depth, vec3(st, 1.0)), 0.0, 1.0);\n}\n",
          "user.frag:6", "samplerCubeShadow"},
         {"#version 130\nuniform sampler1DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = vec4(texture(depth, vec3(st, 0.5)));\n}\n",

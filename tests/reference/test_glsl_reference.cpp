@@ -385,6 +385,19 @@ void main() {
     vec2 p = st * 2.0 - 1.0;
     color = vec4(texture(env, vec3(p * 40.0, 3.0)).rgb, 1.0);
 })"},
+    {"cube_gather", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec3 dir = vec3(p.x * 2.5, p.y * 2.5, st.x < 0.5 ? 1.0 : -1.0);
+    vec4 r = textureGather(env, dir);
+    vec4 g = textureGather(env, dir.zxy, 1);
+    vec4 b = textureGather(env, dir.yzx * vec3(1.0, -1.0, 1.0), 2);
+    vec4 q = st.y < 0.33 ? r : st.y < 0.67 ? g : b;
+    color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
+})"},
     {"cube_lod_grad_size", R"(#version 130
 in vec2 st;
 out vec4 color;
@@ -431,6 +444,16 @@ void main() {
     float d = texture(depth, vec4(p.x, p.x, 1.0, floor(st.y * 256.0) * (1.0 / 255.0)));  // ties, equal to depths
     vec2 size = vec2(textureSize(depth, 0)) / 64.0;
     color = st.y < 0.5 ? vec4(a, b, c, 1.0) : vec4(d, size, 1.0);
+})"},
+    {"cube_shadow_gather", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform samplerCubeShadow depth;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
+    vec4 q = textureGather(depth, vec3(p * 2.5, st.y < 0.5 ? 1.0 : -1.0), ref);
+    color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
 })"},
 };
 
