@@ -87,7 +87,11 @@ ShadeRequest shade_request(const FrameRequest& request) {
 
 namespace {
 
-// Whether `program` is GLSL run by the interpreter whose sampler `uniform` is a sampler2DShadow;
+// A cube map's kind has one number in the scene (a texture's dims), a GLSL program (a sampler's)
+// and the sampled texture, which this file passes from one to the next.
+static_assert(kCubeMap == glsl::kCubeDims && ir::kCubeSampler == glsl::kCubeDims);
+
+// Whether `program` is GLSL run by the interpreter whose sampler `uniform` is a shadow sampler;
 // nullopt for a shader of C++, which says nothing of it.
 std::optional<bool> shadow_sampler(const Program& program, std::string_view uniform) {
     const auto* glsl = dynamic_cast<const interpreter::GlslProgram*>(&program);
