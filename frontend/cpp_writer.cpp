@@ -75,7 +75,7 @@ const std::set<std::string>& reserved_names() {
         "F", "T", "M", "u", "in", "out", "std", "qs", "glsl", "simd", "select", "any", "none", "Loop", "loop", "Return",
         "ret", "inside", "table", "uniform", "vec", "mat", "Bool", "int_t", "uint_t", "Uniforms", "VertexIn",
         "FragmentIn", "FragmentOut", "VertexOutputs", "VertexStage", "Varyings", "fields", "vertex", "fragment",
-        "info", "sampler2D", "sampler3D", "Texture", "shade", "transform_point", "ShaderInfo", "Needs",
+        "info", "sampler2D", "sampler3D", "samplerCube", "Texture", "shade", "transform_point", "ShaderInfo", "Needs",
         "UniformDecl", "main_", "Lanes", "Pixels", "Quads", "Dual2", "Checked", "kUniforms"};
     return names;
 }
@@ -249,6 +249,8 @@ private:
     Expr builtin(const std::string& name, TIntermTyped* node, const glslang::TIntermSequence& args);
     Expr shadow_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
                        const std::vector<std::string>& v);
+    Expr cube_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
+                     const std::vector<std::string>& v);
     Expr constructor(TIntermAggregate* a);
     Expr conversion(TIntermTyped* from, const TType& to, TIntermTyped* at);
     std::string swizzle(TIntermBinary* b);
@@ -299,6 +301,7 @@ std::string StageWriter::sampler_type(const TType& t, const TIntermNode* at) con
                        s.getBasicType() == glslang::EbtFloat;
     if (plain && s.dim == glslang::Esd2D) return "sampler2D";  // a sampler2DShadow's depth comparison texture too
     if (plain && !s.isShadow() && s.dim == glslang::Esd3D) return "sampler3D";
+    if (plain && s.dim == glslang::EsdCube) return "samplerCube";  // a samplerCubeShadow's too
     refuse(at, "a sampler of this kind");
 }
 
@@ -384,6 +387,11 @@ void StageWriter::uniform_member(TIntermSymbol* s, const std::string& name) {
         for (const ir::Sampler& p : program_.samplers) {
             if (p.name == "teximage" && p.dims == 2) continue;
             if (p.name == glsl) {
+                if (p.dims == ir::kCubeSampler) {
+                    member_lines_.push_back("const samplerCube& " + name + " = static_cast<const samplerCube&>(*u.samplers[" +
+                                            std::to_string(other) + "]);");
+                    return;
+                }
                 const std::string kind = p.dims == 3 ? "sampler3D" : "sampler2D";
                 member_lines_.push_back("const " + kind + "& " + name + " = u." + kind + "(" + std::to_string(other) + ");");
                 return;
@@ -945,6 +953,46 @@ const char* same_name_builtin(TOperator op) {
     }
 }
 
+// A lookup in a samplerCube or samplerCubeShadow (shading/glsl/texture_cube.h), as the lowering
+// makes it: a shadow lookup's bias or derivatives, which change nothing on a depth comparison
+// texture, are left out (refused where leaving them out would drop a side effect).
+Expr StageWriter::cube_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
+                              const std::vector<std::string>& v) {
+    const auto call = [&](const std::string& name, std::size_t n) {
+        std::string t = name + "(";
+        for (std::size_t i = 0; i < n; ++i) t += (i ? ", " : "") + v[i];
+        return Expr{t + ")", kPostfix, false};
+    };
+    if (op == glslang::EOpTextureQuerySize) return call("textureSize<F>", v.size());
+    const bool shadow = args[0]->getAsTyped()->getType().getSampler().isShadow();
+    if (op == glslang::EOpTextureGather) {
+        if (shadow) return call("textureGatherCompare", 3);
+        // The channel, a constant expression, as the plain int the function takes.
+        std::vector<std::string> w = v;
+        if (args.size() > 2) {
+            const glslang::TIntermConstantUnion* k = args[2]->getAsConstantUnion();
+            if (!k) refuse(node, "textureGather with a channel that is not a constant");
+            w[2] = std::to_string(k->getConstArray()[0].getIConst());
+        }
+        std::string t = "textureGather(";
+        for (std::size_t i = 0; i < w.size(); ++i) t += (i ? ", " : "") + w[i];
+        return {t + ")", kPostfix, false};
+    }
+    if (shadow) {
+        if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) refuse(node, "this texture function on a samplerCubeShadow");
+        for (std::size_t i = 2; i < args.size(); ++i) {
+            if (has_side_effects(args[i])) refuse(node, "a shadow lookup whose bias or derivatives change a variable");
+        }
+        return call("textureCubeShadow", 2);
+    }
+    const bool vertex = stage_ == Stage::Vertex;
+    if (op == glslang::EOpTexture && !vertex) return call("textureCube", v.size());
+    if (op == glslang::EOpTextureLod) return call("textureCubeLod", v.size());
+    if (op == glslang::EOpTextureGrad) return call("textureGrad", v.size());
+    refuse(node, vertex && op == glslang::EOpTexture ? "a texture lookup in a vertex shader"
+                                                     : "this texture function on a samplerCube");
+}
+
 Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang::TIntermSequence& args) {
     const TOperator op = node->getAsOperator()->getOp();
     std::vector<std::string> v;
@@ -981,6 +1029,7 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
         case glslang::EOpTextureLodOffset: case glslang::EOpTextureProjLodOffset: case glslang::EOpTextureGradOffset:
         case glslang::EOpTextureProjGradOffset: case glslang::EOpTextureFetchOffset: {
             const TType& st = args[0]->getAsTyped()->getType();
+            if (st.getSampler().dim == glslang::EsdCube) return cube_lookup(op, node, args, v);
             if (st.getSampler().isShadow() && op != glslang::EOpTextureQuerySize) {
                 return shadow_lookup(op, node, args, v);
             }
@@ -1006,6 +1055,7 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             refuse(node, "a texture lookup in a vertex shader");
         }
         case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
+            if (args[0]->getAsTyped()->getType().getSampler().dim == glslang::EsdCube) return cube_lookup(op, node, args, v);
             // The channel, a constant expression, as the plain int the function takes.
             const std::size_t comp_arg = op == glslang::EOpTextureGatherOffset ? 3 : 2;
             if (args.size() > comp_arg) {

@@ -76,7 +76,7 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(MatTimesMat)  /* d = a (count columns of m rows) * b (n columns of count rows) */               \
     X(Determinant)  /* d = determinant(a), a n x n */                                                 \
     X(Inverse)      /* d = inverse(a), a n x n */                                                     \
-    /* textures: sampler slot in Instr::count, dimensions in n */                                     \
+    /* textures: sampler slot in Instr::count, coordinates in n (3 for a samplerCube's direction) */   \
     X(Texture)      /* d..d+3 = texture(s, a..) implicit level of detail */                           \
     X(TextureBias)  /* ... with bias F[b] */                                                          \
     X(TextureLod)   /* ... at level F[b] */                                                           \
@@ -88,10 +88,11 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TexelFetch)   /* d..d+3 = texelFetch(s, I[a..], I[b]) */                                        \
     X(TexelFetchOffset) /* ... at I[a..] + I[c..] */                                                  \
     X(TextureSize)  /* I[d..] = textureSize(s, I[b]) */                                               \
-    X(TextureGather)       /* d..d+3 = textureGather(s, a, a+1, m): channel m of level 0's texels */   \
+    X(TextureGather)       /* d..d+3 = textureGather(s, a..a+n-1, m): channel m of level 0's texels */ \
+                           /*   (m = 4: a samplerCubeShadow's, each compared with F[b]) */            \
     X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
-    X(TextureShadow)       /* d = a sampler2DShadow's comparison of a+2 with the depth at a, a+1 */   \
+    X(TextureShadow)       /* d = a shadow sampler's comparison of a+n with the depth at a..a+n-1 */  \
     X(TextureShadowOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     /* control flow: the running mask of lanes; jump targets in Instr::target */                      \
     X(If)           /* lanes of B[a] run the then-part; none: jump to target (Else or EndIf) */       \
@@ -191,8 +192,10 @@ struct Uniform {
     std::array<std::uint32_t, 16> initial{};  // the declaration's initializer, or zeros
 };
 
-// A sampler uniform: its name, how many coordinates it takes, and whether it is a shadow
-// sampler (sampler2DShadow), which reads a depth comparison texture.
+// A sampler uniform: its name, its kind (2: sampler2D, 3: sampler3D, kCubeSampler: samplerCube),
+// and whether it is a shadow sampler (sampler2DShadow, samplerCubeShadow), which reads a depth
+// comparison texture.
+inline constexpr int kCubeSampler = 6;  // glsl::kCubeDims: a cube map's six faces
 struct Sampler {
     std::string name;
     int dims = 2;

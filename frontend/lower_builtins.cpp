@@ -311,6 +311,7 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         return coords;
     };
     const bool vertex = kind_ == StageKind::Vertex;
+    if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
     if (interface_.program.samplers[std::size_t(slot)].shadow && op != glslang::EOpTextureQuerySize) {
         return eval_shadow(op, node, slot, v);
     }
@@ -397,6 +398,78 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     refuse(node, std::string(name) + " is not supported (supported: texture, texture2D, texture3D with or without a "
                  "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
                  "textureGather, textureGatherOffset, textureQueryLod)");
+}
+
+// A lookup in a samplerCube (P a direction) or a samplerCubeShadow (P.xyz a direction, P.w the
+// reference value). GLSL gives a cube no projective, offset or fetch lookups. A depth comparison
+// texture has one level and one filter, so a shadow lookup's bias or derivatives change nothing
+// llvmpipe reads: evaluated for their side effects and left out.
+Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<TIntermTyped*>& args,
+                               const std::vector<Place>& v) {
+    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
+    if (op == glslang::EOpTextureGather) {
+        // The channel is a constant expression (glslang checks it is one, 0 to 3); a shadow
+        // gather's third argument is the reference value instead, marked by channel 4.
+        int comp = 0;
+        std::uint32_t b = 0;
+        if (shadow) {
+            comp = 4, b = v[1][0].reg;
+        } else if (args.size() > 2) {
+            const glslang::TIntermConstantUnion* k = args[2]->getAsConstantUnion();
+            if (!k) refuse(node, "textureGather's channel must be a constant expression");
+            comp = k->getConstArray()[0].getIConst();
+        }
+        if (comp < 0 || comp > 4) refuse(node, "textureGather of this channel");
+        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 3));
+        Place r = temps(B::Float, 4);
+        ir::Instr& e = emit(ir::Op::TextureGather);
+        e.d = r[0].reg, e.a = a, e.b = b, e.n = 3, e.m = std::uint8_t(comp), e.count = std::uint16_t(slot);
+        return r;
+    }
+    if (op == glslang::EOpTextureQuerySize) {
+        Place r = temps(B::Int, 2);
+        const Place lod = v.empty() ? Place{{B::Int, int_constant(0)}} : convert_bits(v[0], B::Int);
+        ir::Instr& e = emit(ir::Op::TextureSize);
+        e.d = r[0].reg, e.b = lod[0].reg, e.n = 2, e.count = std::uint16_t(slot);
+        return r;
+    }
+    if (shadow) {
+        if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) {
+            refuse(node, "this texture function on a samplerCubeShadow is not supported (texture with or without a bias, "
+                         "textureGrad, textureGather and textureSize are)");
+        }
+        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 4));
+        Place r = temps(B::Float, 1);
+        ir::Instr& e = emit(ir::Op::TextureShadow);
+        e.d = r[0].reg, e.a = a, e.n = 3, e.count = std::uint16_t(slot);
+        return r;
+    }
+    const auto lookup = [&](ir::Op o, const Place* extra, const Place* ddx = nullptr, const Place* ddy = nullptr) {
+        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 3));
+        std::uint32_t b = 0;
+        if (extra) b = (*extra)[0].reg;
+        if (ddx) {
+            Place both(ddx->begin(), ddx->begin() + 3);
+            both.insert(both.end(), ddy->begin(), ddy->begin() + 3);
+            b = consecutive(both);
+        }
+        Place r = temps(B::Float, 4);
+        ir::Instr& e = emit(o);
+        e.d = r[0].reg, e.a = a, e.b = b, e.n = 3, e.count = std::uint16_t(slot);
+        return r;
+    };
+    const Place zero{{B::Float, float_constant(0.0f)}};
+    switch (op) {
+        case glslang::EOpTexture:
+            // A vertex shader's implicit lookups read level 0 (it has no neighbours to take a level from).
+            if (kind_ == StageKind::Vertex) return lookup(ir::Op::TextureLod, &zero);
+            return v.size() == 2 ? lookup(ir::Op::TextureBias, &v[1]) : lookup(ir::Op::Texture, nullptr);
+        case glslang::EOpTextureLod: return lookup(ir::Op::TextureLod, &v[1]);
+        case glslang::EOpTextureGrad: return lookup(ir::Op::TextureGrad, nullptr, &v[1], &v[2]);
+        default: break;
+    }
+    refuse(node, "this texture function on a samplerCube is not supported (texture and textureCube with or without a "
+                 "bias, textureLod, textureCubeLod, textureGrad, textureGather and textureSize are)");
 }
 
 // A lookup in a sampler2DShadow: P is (s, t, the reference value), (s, t, r, q) projected. A depth

@@ -219,22 +219,23 @@ Place StageLowering::ftransform() {
 
 int StageLowering::sampler_uniform(TIntermSymbol* node, const std::string& name, const glslang::TType& type) {
     const glslang::TSampler& s = type.getSampler();
-    if (s.isShadow() && s.dim != glslang::Esd2D) {
+    if (s.isShadow() && s.dim != glslang::Esd2D && s.dim != glslang::EsdCube) {
         refuse(node, "sampler type '" + std::string(type.getSampler().getString().c_str()) +
-                         "' is not supported (of the shadow samplers, sampler2DShadow is)");
+                         "' is not supported (of the shadow samplers, sampler2DShadow and samplerCubeShadow are)");
     }
     if (s.isArrayed() || s.isMultiSample() || s.isBuffer() || s.isRect() || s.isImage() || s.isSubpass() ||
         s.isExternal() || s.isYuv() || s.type != glslang::EbtFloat) {
         refuse(node, "sampler type '" + std::string(type.getSampler().getString().c_str()) +
-                         "' is not supported (sampler2D and sampler3D are)");
+                         "' is not supported (sampler2D, sampler3D and samplerCube are)");
     }
     int dims = 0;
     switch (s.dim) {
         case glslang::Esd2D: dims = 2; break;
         case glslang::Esd3D: dims = 3; break;
+        case glslang::EsdCube: dims = ir::kCubeSampler; break;
         default:
             refuse(node, "sampler type '" + std::string(type.getSampler().getString().c_str()) +
-                             "' is not supported (sampler2D and sampler3D are)");
+                             "' is not supported (sampler2D, sampler3D and samplerCube are)");
     }
     const int slot = interface_.sampler(name, dims, s.isShadow(), where(node));
     if (!type.isArray() && name == node->getName().c_str()) global_samplers_.emplace(node->getId(), slot);

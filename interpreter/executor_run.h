@@ -5,6 +5,7 @@
 // values in registers.
 
 #include "interpreter/executor.h"
+#include "shading/glsl/texture_cube.h"
 #include "shading/glsl/texture_queries.h"
 #include "shading/glsl/texture_shadow.h"
 
@@ -89,6 +90,7 @@ private:
     [[gnu::noinline]] void geometric(const ir::Instr& in);
     [[gnu::noinline]] void matrix(const ir::Instr& in);
     [[gnu::noinline]] void texture(const ir::Instr& in);
+    [[gnu::noinline]] void cube_texture(const ir::Instr& in, const glsl::samplerCube& cube);
     [[gnu::noinline]] void indexed(const ir::Instr& in);
     [[gnu::noinline]] void integer(const ir::Instr& in);
     [[gnu::noinline]] void rare_float(const ir::Instr& in);
@@ -464,6 +466,8 @@ void Machine<F>::matrix(const ir::Instr& in) {
 template <class F>
 void Machine<F>::texture(const ir::Instr& in) {
     const glsl::Texture& t = *textures_[in.count];
+    if (t.dims == glsl::kCubeDims) return cube_texture(in, static_cast<const glsl::samplerCube&>(t));
+    if (in.op == ir::Op::TextureGather && in.n != 2) throw std::logic_error("a cube map's gather on a texture that is not one");
     if (in.op == ir::Op::TextureSize) {
         if (in.n == 2) {
             const glsl::ivec2<F> s = glsl::textureSize<F>(static_cast<const glsl::sampler2D&>(t), i_[in.b]);
@@ -522,6 +526,33 @@ void Machine<F>::texture(const ir::Instr& in) {
         c = lookup.template operator()<2>(static_cast<const glsl::sampler2D&>(t));
     } else {
         c = lookup.template operator()<3>(static_cast<const glsl::sampler3D&>(t));
+    }
+    for (int i = 0; i < 4; ++i) put(in, f_[in.d + std::uint32_t(i)], c[i]);
+}
+
+// A samplerCube's or samplerCubeShadow's operation (the renderer binds a cube map to those only).
+template <class F>
+void Machine<F>::cube_texture(const ir::Instr& in, const glsl::samplerCube& cube) {
+    if (in.op == ir::Op::TextureSize) {
+        const glsl::ivec2<F> s = glsl::textureSize<F>(cube, i_[in.b]);
+        for (int i = 0; i < 2; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
+        return;
+    }
+    if (in.op == ir::Op::TextureShadow) {
+        put(in, f_[in.d], glsl::textureCubeShadow(cube, vector_at<4>(in.a)));
+        return;
+    }
+    const glsl::vec3<F> p = vector_at<3>(in.a);
+    glsl::vec<F, 4> c;
+    switch (in.op) {
+        case ir::Op::Texture: c = glsl::textureCube(cube, p); break;
+        case ir::Op::TextureBias: c = glsl::textureCube(cube, p, f_[in.b]); break;
+        case ir::Op::TextureLod: c = glsl::textureCubeLod(cube, p, f_[in.b]); break;
+        case ir::Op::TextureGrad: c = glsl::textureGrad(cube, p, vector_at<3>(in.b), vector_at<3>(in.b + 3)); break;
+        case ir::Op::TextureGather:
+            c = in.m == 4 ? glsl::textureGatherCompare(cube, p, f_[in.b]) : glsl::textureGather(cube, p, in.m);
+            break;
+        default: throw std::logic_error(std::string("a cube map is bound to a sampler that ") + ir::name(in.op) + " reads");
     }
     for (int i = 0; i < 4; ++i) put(in, f_[in.d + std::uint32_t(i)], c[i]);
 }

@@ -707,7 +707,7 @@ private:
         // The textures of the units the samplers read, in the order GlslProgram binds them.
         int other = 0;
         for (const ir::Sampler& s : program().program().samplers) {
-            if (s.dims != 2) skip("sampler3D textures");
+            if (s.dims != 2) skip(s.dims == 3 ? "sampler3D textures" : "samplerCube textures");
             const auto unit = sampler_units_.find(s.name);
             const auto tex = textures_.find(unit == sampler_units_.end() ? 0 : unit->second);
             if (tex == textures_.end()) skip("a sampler reading no texture", at_line(line_) + "sampler '" + s.name + "' reads no texture");

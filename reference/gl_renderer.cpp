@@ -6,6 +6,7 @@
 #include "reference/gl_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -92,15 +93,19 @@ std::vector<std::pair<std::string, GLenum>> active_attributes(GLuint p) {
 // Its sampler uniforms, bound per object by name.
 struct SamplerUniform {
     std::string name;
-    int dims;
-    bool shadow;  // a sampler2DShadow
+    int dims;     // 2, 3, or kCubeMap
+    bool shadow;  // a sampler2DShadow or samplerCubeShadow
 };
+bool is_sampler(GLenum type) {
+    return type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_SHADOW || type == GL_SAMPLER_CUBE ||
+           type == GL_SAMPLER_CUBE_SHADOW;
+}
 std::vector<SamplerUniform> samplers_of(GLuint p) {
     std::vector<SamplerUniform> r;
     for (const auto& [name, type] : active_uniforms(p)) {
-        if (type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_SHADOW) {
-            r.push_back({name, type == GL_SAMPLER_3D ? 3 : 2, type == GL_SAMPLER_2D_SHADOW});
-        }
+        if (!is_sampler(type)) continue;
+        const int dims = type == GL_SAMPLER_3D ? 3 : type == GL_SAMPLER_CUBE || type == GL_SAMPLER_CUBE_SHADOW ? kCubeMap : 2;
+        r.push_back({name, dims, type == GL_SAMPLER_2D_SHADOW || type == GL_SAMPLER_CUBE_SHADOW});
     }
     return r;
 }
@@ -171,7 +176,7 @@ GLuint link_program(const std::filesystem::path& glsl_dir, const std::string& na
     };
     for (const auto& [u, type] : active_uniforms(p)) {
         // bound per object, by name
-        const bool sampler = type == GL_SAMPLER_2D || type == GL_SAMPLER_3D || type == GL_SAMPLER_2D_SHADOW;
+        const bool sampler = is_sampler(type);
         if (const SceneMatrixName* m = find_scene_matrix(u)) {
             if (type != (m->columns == 4 ? GL_FLOAT_MAT4 : GL_FLOAT_MAT3)) {
                 refuse("uniform '" + u + "' is the scene's transform: declare it " + (m->columns == 4 ? "mat4" : "mat3"));
@@ -408,17 +413,25 @@ GlSceneRenderer::AttributeArray GlSceneRenderer::attribute_array(const Mesh& mes
 const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, const std::string& shader,
                                                             const std::string& uniform, int dims, bool shadow) {
     const int index = o.texture_for(uniform);
+    const bool cube = dims == kCubeMap;
     const std::string what = scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
-                             (dims == 3 ? "a sampler3D" : shadow ? "a sampler2DShadow" : "a sampler2D") + " '" + uniform + "'";
+                             (dims == 3 ? "a sampler3D"
+                              : cube    ? (shadow ? "a samplerCubeShadow" : "a samplerCube")
+                                        : (shadow ? "a sampler2DShadow" : "a sampler2D")) +
+                             " '" + uniform + "'";
     if (index < 0) return white(dims);
     const qs::Texture& source = scene_.textures[std::size_t(index)];
-    if (source.dims != dims) throw std::runtime_error(what + " but " + source.field + " is a " + std::to_string(source.dims) + "D texture");
+    if (source.dims != dims) {
+        throw std::runtime_error(what + " but " + source.field + " is " +
+                                 (source.dims == kCubeMap ? std::string("a cube map") : std::to_string(source.dims) + "D texture"));
+    }
     if (source.compare != shadow) {
         throw std::runtime_error(what + " but " + source.field +
                                  (shadow ? " is not a depth comparison texture" : " is a depth comparison texture"));
     }
     Texture& t = textures_[std::size_t(index)];
     if (t.id) return t;
+    if (cube) return upload_cube(source, t);
     DecodedImage image;
     try {
         image = decode_texture_image(source.image);
@@ -472,16 +485,74 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
     return t;
 }
 
+// A cube map's six faces, +X first, each a GL_TEXTURE_CUBE_MAP face image in GL's order; a depth
+// comparison cube map's red bytes as GL_DEPTH_COMPONENT32F, as a 2D one's. GL's default leaves
+// GL_TEXTURE_CUBE_MAP_SEAMLESS off: a lookup stays on its face.
+const GlSceneRenderer::Texture& GlSceneRenderer::upload_cube(const qs::Texture& source, Texture& t) {
+    std::array<DecodedImage, 6> faces;
+    for (std::size_t f = 0; f < 6; ++f) {
+        const std::string where = scene_.file.string() + ": " + source.field + "[" + std::to_string(f) + "]: ";
+        try {
+            faces[f] = decode_texture_image(source.faces.at(f));
+        } catch (const std::exception& e) {
+            throw std::runtime_error(where + e.what());
+        }
+        if (faces[f].width != faces[f].height || faces[f].width != faces[0].width) {
+            throw std::runtime_error(where + "a cube map's faces are square and of one size");
+        }
+        if (source.compare && faces[f].sixteen_bits) {
+            throw std::runtime_error(where + "a depth comparison texture is an 8-bit image (its red channel is the depth)");
+        }
+    }
+    t.target = GL_TEXTURE_CUBE_MAP;
+    t.width = t.height = faces[0].width;
+    glGenTextures(1, &t.id);
+    glBindTexture(t.target, t.id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (std::size_t f = 0; f < 6; ++f) {
+        const GLenum face = GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f);
+        const DecodedImage& image = faces[f];
+        if (source.compare) {
+            std::vector<float> depth(std::size_t(image.width) * std::size_t(image.height));
+            for (std::size_t i = 0; i < depth.size(); ++i) depth[i] = float(image.bytes[4 * i]) * float(1.0 / 255.0);
+            glTexImage2D(face, 0, GL_DEPTH_COMPONENT32F, image.width, image.height, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         depth.data());
+        } else {
+            const GLenum type = image.sixteen_bits ? GL_UNSIGNED_SHORT : GL_UNSIGNED_BYTE;
+            glTexImage2D(face, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, type, image.bytes.data());
+        }
+    }
+    if (source.compare) {
+        glTexParameteri(t.target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(t.target, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    }
+    const Sampler& s = source.sampler;
+    glTexParameteri(t.target, GL_TEXTURE_MIN_FILTER, gl_enum(s.min_filter));
+    glTexParameteri(t.target, GL_TEXTURE_MAG_FILTER, gl_enum(s.mag_filter));
+    glTexParameteri(t.target, GL_TEXTURE_WRAP_S, gl_enum(s.wrap_s));
+    glTexParameteri(t.target, GL_TEXTURE_WRAP_T, gl_enum(s.wrap_t));
+    if (uses_mipmaps(s.min_filter)) glGenerateMipmap(t.target);
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+        throw std::runtime_error(scene_.file.string() + ": " + source.field + ": OpenGL error " + std::to_string(e) +
+                                 " uploading the cube map");
+    }
+    return t;
+}
+
 const GlSceneRenderer::Texture& GlSceneRenderer::white(int dims) {
-    Texture& t = white_[dims == 3 ? 1 : 0];
+    Texture& t = white_[dims == 3 ? 1 : dims == kCubeMap ? 2 : 0];
     if (t.id) return t;
     const GLubyte texel[4] = {255, 255, 255, 255};
-    t.target = dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+    t.target = dims == 3 ? GL_TEXTURE_3D : dims == kCubeMap ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
     t.width = t.height = 1;
     glGenTextures(1, &t.id);
     glBindTexture(t.target, t.id);
     if (dims == 3) {
         glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    } else if (dims == kCubeMap) {
+        for (int f = 0; f < 6; ++f) {
+            glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+        }
     } else {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
     }

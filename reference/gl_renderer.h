@@ -100,7 +100,7 @@ public:
 private:
     struct Texture {
         unsigned id = 0;
-        unsigned target = 0;  // GL_TEXTURE_2D or GL_TEXTURE_3D
+        unsigned target = 0;  // GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP
         int width = 0, height = 0;
     };
     // A sampler uniform of an object's program and the texture unit it reads.
@@ -138,6 +138,7 @@ private:
     // `shadow`: for a sampler2DShadow, which reads a depth comparison texture (and only it does).
     const Texture& texture_of(const Object& o, const std::string& shader, const std::string& uniform, int dims, bool shadow);
     const Texture& white(int dims);
+    const Texture& upload_cube(const qs::Texture& source, Texture& t);
 
     const Scene& scene_;
     GlFrameRequest request_;
@@ -149,7 +150,7 @@ private:
     std::vector<std::vector<MatrixBinding>> matrices_;       // per object
     std::vector<std::vector<AttributeBinding>> attributes_;  // per object
     std::vector<Texture> textures_;        // per scene texture, id 0 until uploaded
-    Texture white_[2];                     // 2D and 3D, id 0 until made
+    Texture white_[3];                     // 2D, 3D and a cube map, id 0 until made
     std::vector<std::string> shaders_;     // per object, the shader it is drawn with
 };
 

@@ -10,6 +10,7 @@
 #include "render/memory_plan.h"
 #include "render/glsl_shaders.h"
 #include "render/textures.h"
+#include "shading/glsl/texture_cube.h"
 #include "render/uniform_binding.h"
 #include "interpreter/glsl_program.h"
 #include "scenes/object_uniforms.h"
@@ -86,7 +87,11 @@ ShadeRequest shade_request(const FrameRequest& request) {
 
 namespace {
 
-// Whether `program` is GLSL run by the interpreter whose sampler `uniform` is a sampler2DShadow;
+// A cube map's kind has one number in the scene (a texture's dims), a GLSL program (a sampler's)
+// and the sampled texture, which this file passes from one to the next.
+static_assert(kCubeMap == glsl::kCubeDims && ir::kCubeSampler == glsl::kCubeDims);
+
+// Whether `program` is GLSL run by the interpreter whose sampler `uniform` is a shadow sampler;
 // nullopt for a shader of C++, which says nothing of it.
 std::optional<bool> shadow_sampler(const Program& program, std::string_view uniform) {
     const auto* glsl = dynamic_cast<const interpreter::GlslProgram*>(&program);
@@ -128,19 +133,31 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
         return white_texture(dims);
     }
     const Texture& source = scene_.textures[std::size_t(index)];
+    const std::optional<bool> shadow = shadow_sampler(program, uniform);
+    const bool cube = dims == glsl::kCubeDims;
+    const auto kind = [](int d, bool depth) {
+        return std::string(d == glsl::kCubeDims ? (depth ? "samplerCubeShadow" : "samplerCube")
+                           : d == 3             ? "sampler3D"
+                                                : (depth ? "sampler2DShadow" : "sampler2D"));
+    };
+    const auto texture_kind = [](const Texture& t) {
+        return std::string(t.dims == kCubeMap ? "a cube map" : t.dims == 3 ? "a 3D texture" : "a 2D texture");
+    };
     if (source.dims != dims) {
-        throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
-                         (dims == 3 ? "a sampler3D" : "a sampler2D") + " '" + std::string(uniform) + "' but " +
-                         source.field + " is a " + std::to_string(source.dims) + "D texture" +
-                         (dims == 3 ? " (a 3D texture's binding gives its depth)" : ""));
+        throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples a " +
+                         kind(dims, shadow.value_or(false)) + " '" + std::string(uniform) + "' but " + source.field + " is " +
+                         texture_kind(source) +
+                         (dims == 3 ? " (a 3D texture's binding gives its depth)"
+                          : cube    ? " (a cube map's binding gives its six faces)"
+                                    : ""));
     }
     // A shadow sampler reads a depth comparison texture, and only it does (GL leaves either
     // mismatch undefined).
-    if (const std::optional<bool> shadow = shadow_sampler(program, uniform); shadow && *shadow != source.compare) {
-        throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples " +
-                         (*shadow ? "a sampler2DShadow '" : "a sampler2D '") + std::string(uniform) + "' but " + source.field +
+    if (shadow && *shadow != source.compare) {
+        throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples a " +
+                         kind(dims, *shadow) + " '" + std::string(uniform) + "' but " + source.field +
                          (*shadow ? " is not a depth comparison texture (its binding needs \"compare\": \"LEQUAL\")"
-                                  : " is a depth comparison texture, for a sampler2DShadow"));
+                                  : " is a depth comparison texture, for a " + kind(dims, true)));
     }
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];
     if (!t) {

@@ -1,8 +1,12 @@
 #include "render/textures.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
+#include <string>
 
 #include "scenes/texture_files.h"
+#include "shading/glsl/texture_cube.h"
 
 namespace qs {
 
@@ -29,7 +33,45 @@ glsl::SamplerState sampler_state(const Sampler& s) {
     return r;
 }
 
+namespace {
+
+// A cube map's six faces, each read and checked against the first: square, of one size.
+std::unique_ptr<glsl::Texture> load_cube(const Scene& scene, const Texture& texture, std::uint64_t* loading_bytes) {
+    static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    std::array<Image8, 6> faces;
+    for (std::size_t f = 0; f < 6; ++f) {
+        const std::string where = scene.file.string() + ": " + texture.field + "[" + std::to_string(f) + "] (face " + kFaces[f] + "): ";
+        std::uint64_t loading = 0;
+        try {
+            faces[f] = read_texture_image(texture.faces.at(f), &loading);
+        } catch (const ImageError& e) {
+            throw SceneError(where + e.what());
+        }
+        if (loading_bytes) *loading_bytes = std::max(*loading_bytes, loading);
+        const Image8& image = faces[f];
+        if (image.width != image.height) {
+            throw SceneError(where + "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                             " image: a cube map's faces are square");
+        }
+        if (image.width != faces[0].width) {
+            throw SceneError(where + "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                             " image where face +X is " + std::to_string(faces[0].width) + "x" +
+                             std::to_string(faces[0].height) + ": a cube map's faces are of one size");
+        }
+    }
+    std::array<const std::uint8_t*, 6> rgba;
+    for (std::size_t f = 0; f < 6; ++f) rgba[f] = faces[f].rgba.data();
+    try {
+        return std::make_unique<glsl::samplerCube>(faces[0].width, rgba, sampler_state(texture.sampler));
+    } catch (const std::invalid_argument& e) {
+        throw SceneError(scene.file.string() + ": " + texture.field + ": " + e.what());
+    }
+}
+
+}  // namespace
+
 std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture, std::uint64_t* loading_bytes) {
+    if (texture.dims == kCubeMap) return load_cube(scene, texture, loading_bytes);
     const std::string where = scene.file.string() + ": " + texture.field + ": ";
     try {
         const Image8 image = read_texture_image(texture.image, loading_bytes);
@@ -53,7 +95,9 @@ const glsl::Texture& white_texture(int dims) {
     static const std::uint8_t white[4] = {255, 255, 255, 255};
     static const glsl::sampler2D flat(1, 1, white, glsl::SamplerState{});
     static const glsl::sampler3D volume(1, 1, 1, white, glsl::SamplerState{});
+    static const glsl::samplerCube cube(1, {white, white, white, white, white, white}, glsl::SamplerState{});
     if (dims == 3) return volume;
+    if (dims == glsl::kCubeDims) return cube;
     return flat;
 }
 

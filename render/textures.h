@@ -15,15 +15,17 @@ namespace qs {
 
 glsl::SamplerState sampler_state(const Sampler& sampler);
 
-// A glsl::sampler2D or, for a texture with dims 3, a glsl::sampler3D. Throws SceneError naming
-// the scene file and the texture's field when the image cannot be read, or its rows do not
-// divide into the texture's depth. `loading_bytes`, when given, receives the most the loading
+// A glsl::sampler2D or, for a texture with dims 3, a glsl::sampler3D, for a cube map a
+// glsl::samplerCube (shading/glsl/texture_cube.h). Throws SceneError naming the scene file and the
+// texture's field (a cube map's face by its index) when an image cannot be read, its rows do not
+// divide into the texture's depth, or a cube map's faces are not square or not of one size. `loading_bytes`, when given, receives the most the loading
 // held at once beside the texture it made (read_texture_image's decoding_bytes).
 std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture,
                                             std::uint64_t* loading_bytes = nullptr);
 
-// A 1x1 (x1) opaque white texture of `dims` dimensions: what a sampler reads where the material
-// binds no texture to it (a lookup gives (1, 1, 1, 1) at any coordinate, level and filter).
+// A 1x1 (x1) opaque white texture of `dims` dimensions (a cube map of 1x1 faces for
+// glsl::kCubeDims): what a sampler reads where the material binds no texture to it (a lookup
+// gives (1, 1, 1, 1) at any coordinate, level and filter).
 const glsl::Texture& white_texture(int dims);
 
 }  // namespace qs

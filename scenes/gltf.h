@@ -13,19 +13,22 @@
 //  - the shaders' `teximage` is the material's pbrMetallicRoughness.baseColorTexture (an image
 //    file, a data: URI or a bufferView, with its sampler), or the file extras.teximage names
 //    (relative to the .gltf; it keeps the baseColorTexture's sampler, if any);
-//  - a shader's other samplers (sampler2D or sampler3D uniforms) are bound by their GLSL name in
-//    materials[i].extras.textures = { "NAME": BINDING, ... }, where BINDING is
+//  - a shader's other samplers (sampler2D, sampler3D or samplerCube uniforms) are bound by their
+//    GLSL name in materials[i].extras.textures = { "NAME": BINDING, ... }, where BINDING is
 //      3                         glTF textures[3] (its image and sampler), a sampler2D;
 //      "images/wood.png"         an image file relative to the .gltf, glTF's default sampler;
-//      { "texture": 3 | "image": "noise3d.png",   exactly one of the two
+//      { "texture": 3 | "image": "noise3d.png" | "faces": ["px.png", ...],   exactly one;
+//                                faces: a samplerCube's six files, +X -X +Y -Y +Z -Z, square
+//                                images of one size, each clamped to its edges whatever the wraps
 //        "sampler": 1,           glTF samplers[1] instead of the texture's own (or the default)
 //        "depth": 32,            a sampler3D of 32 slices (1..2048), stacked in the image from
 //                                top to bottom: slice z (r = (z + 0.5) / 32) is rows
 //                                [z H, (z + 1) H) of an image of 32 H rows, each slice's first
 //                                row at t = 0 (a 32^3 volume is a 32x1024 image)
 //        "wrapR": 33071,         the r axis's wrap (3D only; glTF has none): REPEAT by default;
-//        "compare": "LEQUAL" }   a depth comparison texture for a sampler2DShadow (2D only): the
-//                                image's red channel is the depth (red / 255), compared with
+//        "compare": "LEQUAL" }   a depth comparison texture for a sampler2DShadow (2D), or with
+//                                faces a samplerCubeShadow: the image's (each face's) red
+//                                channel is the depth (red / 255), compared with
 //                                GL_LEQUAL (the one function supported, GL's default); its
 //                                sampler's minFilter is NEAREST or LINEAR, the same as magFilter;
 //    "teximage" may be bound this way too (instead of baseColorTexture; not with extras.teximage).

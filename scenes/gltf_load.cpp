@@ -677,7 +677,7 @@ public:
             const int t = binding(all.Get(name), field);
             if (name == "teximage") {
                 if (mat.extras.Has("teximage")) fail(file_, field, "teximage is bound twice (extras.teximage too)");
-                if (scene_.textures[std::size_t(t)].dims != 2) fail(file_, field, "teximage is a sampler2D: no depth");
+                if (scene_.textures[std::size_t(t)].dims != 2) fail(file_, field, "teximage is a sampler2D: no depth, no faces");
                 o.texture = t;
             } else {
                 o.samplers.push_back({name, t});
@@ -707,13 +707,16 @@ private:
         if (v.IsString()) return file_texture(v.Get<std::string>(), field, Sampler{}, 2, 1);
         if (!v.IsObject()) fail(file_, field, "expected a textures[] index, an image file name or an object");
         for (const std::string& key : v.Keys()) {
-            if (key != "texture" && key != "image" && key != "sampler" && key != "depth" && key != "wrapR" &&
-                key != "compare") {
-                fail(file_, field + "." + key, "unknown key (texture, image, sampler, depth, wrapR, compare)");
+            if (key != "texture" && key != "image" && key != "faces" && key != "sampler" && key != "depth" &&
+                key != "wrapR" && key != "compare") {
+                fail(file_, field + "." + key, "unknown key (texture, image, faces, sampler, depth, wrapR, compare)");
             }
         }
-        if (v.Has("texture") == v.Has("image")) fail(file_, field, "needs exactly one of texture (an index) and image (a file)");
-        int dims = 2, depth = 1;
+        if (int(v.Has("texture")) + int(v.Has("image")) + int(v.Has("faces")) != 1) {
+            fail(file_, field, "needs exactly one of texture (an index), image (a file) and faces (a cube map's six files)");
+        }
+        if (v.Has("faces") && v.Has("depth")) fail(file_, field + ".depth", "a cube map (faces) has no depth");
+        int dims = v.Has("faces") ? kCubeMap : 2, depth = 1;
         if (v.Has("depth")) {
             const tinygltf::Value& d = v.Get("depth");
             if (!d.IsInt() || d.Get<int>() < 1 || d.Get<int>() > 2048) fail(file_, field + ".depth", "expected a slice count in 1..2048");
@@ -737,14 +740,15 @@ private:
             if (!c.IsString() || c.Get<std::string>() != "LEQUAL") {
                 fail(file_, field + ".compare", "expected \"LEQUAL\" (the one compare function supported, GL's default)");
             }
-            if (dims != 2) fail(file_, field + ".compare", "a depth comparison texture is 2D (no depth)");
+            if (dims == 3) fail(file_, field + ".compare", "a depth comparison texture is 2D or a cube map (no depth)");
             compare = true;
         }
         if (v.Has("image") && !v.Get("image").IsString()) fail(file_, field + ".image", "expected a file name");
-        const int t = v.Has("image") ? file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims, depth,
-                                                    compare)
-                                     : texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth,
-                                                     compare);
+        const int t = v.Has("faces")   ? cube_texture(v.Get("faces"), field + ".faces", sampler, compare)
+                      : v.Has("image") ? file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims,
+                                                      depth, compare)
+                                       : texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth,
+                                                       compare);
         if (compare) {
             // One level and one filter: what llvmpipe reads then needs no level of detail, and a
             // depth texture's mipmaps (a float blit) are not modelled.
@@ -779,6 +783,24 @@ private:
         t.image = named_file(uri, field);
         t.sampler = sampler;
         t.dims = dims, t.depth = depth, t.compare = compare;
+        return add_once(std::move(t));
+    }
+
+    // A cube map from six image files in GL's face order (+X, -X, +Y, -Y, +Z, -Z); their sizes
+    // are checked when the images are read.
+    int cube_texture(const tinygltf::Value& v, const std::string& field, const Sampler& sampler, bool compare) {
+        if (!v.IsArray() || v.ArrayLen() != 6) {
+            fail(file_, field, "expected an array of six image files, the faces +X, -X, +Y, -Y, +Z, -Z");
+        }
+        Texture t;
+        t.field = field;
+        for (int i = 0; i < 6; ++i) {
+            const std::string face_field = field + "[" + std::to_string(i) + "]";
+            if (!v.Get(i).IsString()) fail(file_, face_field, "expected an image file name");
+            t.faces.push_back(named_file(v.Get(i).Get<std::string>(), face_field));
+        }
+        t.sampler = sampler;
+        t.dims = kCubeMap, t.compare = compare;
         return add_once(std::move(t));
     }
 

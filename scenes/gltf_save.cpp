@@ -84,18 +84,21 @@ void add_textures(const Scene& scene, const fs::path& path, BufferWriter& buffer
     tinygltf::Model& m = buffer.m;
     for (const Texture& t : scene.textures) {
         tinygltf::Image image;
-        image.mimeType = t.image.mime_type;
-        switch (t.image.kind) {
+        // A cube map's faces are files its binding lists (samplers_value); its texture keeps the
+        // indices of the others and pairs its first face with its sampler.
+        const ImageSource& source = t.dims == kCubeMap ? t.faces.at(0) : t.image;
+        image.mimeType = source.mime_type;
+        switch (source.kind) {
             case ImageSource::Kind::File:
-                image.uri = fs::relative(t.image.file, path.parent_path()).generic_string();
+                image.uri = fs::relative(source.file, path.parent_path()).generic_string();
                 image.mimeType.clear();
                 break;
             case ImageSource::Kind::DataUri:
-                image.uri = "data:" + t.image.mime_type + ";base64," + base64(t.image.bytes);
+                image.uri = "data:" + source.mime_type + ";base64," + base64(source.bytes);
                 image.mimeType.clear();
                 break;
             case ImageSource::Kind::BufferView:
-                image.bufferView = buffer.view(t.image.bytes.data(), t.image.bytes.size());
+                image.bufferView = buffer.view(source.bytes.data(), source.bytes.size());
                 break;
         }
         m.images.push_back(image);
@@ -125,12 +128,18 @@ tinygltf::Value uniforms_value(const std::vector<UniformSetting>& settings) {
 }
 
 // A material's extras.textures: a 2D texture by its index, a volume with its depth and r wrap, a
-// depth comparison texture with its compare function.
-tinygltf::Value samplers_value(const Scene& scene, const std::vector<SamplerBinding>& samplers) {
+// cube map by its faces (files) and sampler, a depth comparison texture with its compare function.
+tinygltf::Value samplers_value(const Scene& scene, const std::vector<SamplerBinding>& samplers, const fs::path& path) {
     tinygltf::Value::Object named;
     for (const SamplerBinding& b : samplers) {
         const Texture& t = scene.textures[std::size_t(b.texture)];
-        if (t.compare) {
+        if (t.dims == kCubeMap) {
+            tinygltf::Value::Array faces;
+            for (const ImageSource& f : t.faces) faces.emplace_back(fs::relative(f.file, path.parent_path()).generic_string());
+            tinygltf::Value::Object cube{{"faces", tinygltf::Value(std::move(faces))}, {"sampler", tinygltf::Value(b.texture)}};
+            if (t.compare) cube["compare"] = tinygltf::Value(std::string("LEQUAL"));
+            named[b.uniform] = tinygltf::Value(std::move(cube));
+        } else if (t.compare) {
             named[b.uniform] = tinygltf::Value(tinygltf::Value::Object{
                 {"texture", tinygltf::Value(b.texture)}, {"compare", tinygltf::Value(std::string("LEQUAL"))}});
         } else if (t.dims == 2) {
@@ -162,7 +171,7 @@ tinygltf::Material material_of(const Scene& scene, const Object& o, const fs::pa
         extras["glsl"] = tinygltf::Value(glsl);
     }
     if (!o.uniforms.empty()) extras["uniforms"] = uniforms_value(o.uniforms);
-    if (!o.samplers.empty()) extras["textures"] = samplers_value(scene, o.samplers);
+    if (!o.samplers.empty()) extras["textures"] = samplers_value(scene, o.samplers, path);
     if (!extras.empty()) mat.extras = tinygltf::Value(std::move(extras));
     mat.pbrMetallicRoughness.baseColorTexture.index = o.texture;
     return mat;

@@ -115,17 +115,24 @@ struct ImageSource {
     bool operator==(const ImageSource&) const = default;
 };
 
+// Texture::dims of a cube map.
+inline constexpr int kCubeMap = 6;
+
 struct Texture {
     ImageSource image;
     Sampler sampler;
     // 2: a sampler2D. 3: a sampler3D of `depth` slices, stacked in the image from top to bottom:
     // slice z (r = (z + 0.5) / depth) is rows [z H, (z + 1) H) of an image of depth * H rows,
-    // each slice's first row at t = 0, as a 2D texture's.
+    // each slice's first row at t = 0, as a 2D texture's. 6 (kCubeMap): a samplerCube of the six
+    // images `faces` (`image` unused), in GL's order +X, -X, +Y, -Y, +Z, -Z, square and of one
+    // size, each face's first row at t = 0.
     int dims = 2;
     int depth = 1;
-    // A depth comparison texture, for a sampler2DShadow: the image's red channel is the depth
-    // (red / 255), compared with GL_LEQUAL, GL's default function; one level (no mipmapped
-    // minification filter) and one filter for minification and magnification.
+    std::vector<ImageSource> faces;
+    // A depth comparison texture, for a sampler2DShadow (or a samplerCubeShadow, of a cube map):
+    // the image's red channel is the depth (red / 255), compared with GL_LEQUAL, GL's default
+    // function; one level (no mipmapped minification filter) and one filter for minification and
+    // magnification.
     bool compare = false;
     // What names it, for messages: "materials[0].pbrMetallicRoughness.baseColorTexture (images[1])"
     // or "materials[0].extras.teximage".

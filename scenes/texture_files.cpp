@@ -31,9 +31,12 @@ std::string texture_extension(const ImageSource& source) {
 }  // namespace
 
 bool needs_image_library(const Scene& scene) {
-    return std::any_of(scene.textures.begin(), scene.textures.end(), [](const Texture& t) {
-        const std::string ext = texture_extension(t.image);
+    const auto needs = [](const ImageSource& image) {
+        const std::string ext = texture_extension(image);
         return !ext.empty() && !has_own_codec(ext);
+    };
+    return std::any_of(scene.textures.begin(), scene.textures.end(), [&](const Texture& t) {
+        return needs(t.image) || std::any_of(t.faces.begin(), t.faces.end(), needs);
     });
 }
 

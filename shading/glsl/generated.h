@@ -8,6 +8,7 @@
 
 #include "shading/glsl/mat.h"
 #include "shading/glsl/texture.h"
+#include "shading/glsl/texture_cube.h"
 #include "shading/glsl/texture_queries.h"
 #include "shading/glsl/texture_shadow.h"
 

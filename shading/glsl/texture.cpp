@@ -12,6 +12,7 @@
 // the same bits).
 
 #include "shading/glsl/texture.h"
+#include "shading/glsl/texture_cube.h"
 #include "shading/glsl/texture_queries.h"
 #include "shading/glsl/texture_shadow.h"
 #include "shading/number/sin_cos.h"
@@ -532,7 +533,16 @@ template <int Dims>
 struct Coords {
     Floats c[Dims];
     const Ints* offset[Dims] = {};  // texel offsets, or none
+    const Ints* face = nullptr;     // a cube map's face per lane (its levels hold six faces each), or none
 };
+
+// A level's lanes, on each lane's face of a cube map (`face`, or none): the faces of a level
+// follow one another, +X first, each width x height texels.
+LevelLanes face_level_lanes(const Texture& tex, const Ints& level, const Ints* face) {
+    LevelLanes lv = level_lanes(tex, level);
+    if (face) lv.offset = lv.offset + *face * lv.width * lv.height;
+    return lv;
+}
 template <int Dims>
 struct Axes {
     Axis a[Dims];
@@ -614,7 +624,7 @@ struct Sample {
 template <int Dims>
 Pairs aos_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, const Ints& linear, bool gradient,
                 Floats (&d)[3][4]) {
-    const LevelLanes lv = level_lanes(tex, level);
+    const LevelLanes lv = face_level_lanes(tex, level, co.face);
     const std::array<bool, 3> pot = pot_sizes<Dims>(tex);
     Axes<Dims> ax;
     for (int i = 0; i < Dims; ++i) {
@@ -643,7 +653,7 @@ Pairs aos_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, c
 template <int Dims>
 void soa_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, const Ints& linear,
                const Ints& weights_only, bool gradient, Floats (&out)[4], Floats (&d)[3][4]) {
-    const LevelLanes lv = level_lanes(tex, level);
+    const LevelLanes lv = face_level_lanes(tex, level, co.face);
     const std::array<bool, 3> pot = pot_sizes<Dims>(tex);
     Axes<Dims> ax;
     for (int i = 0; i < Dims; ++i) {
@@ -832,6 +842,47 @@ Texture::Texture(int n, int w, int h, int d, const std::uint8_t* rgba, SamplerSt
     }
 }
 
+samplerCube::samplerCube(int size, const std::array<const std::uint8_t*, 6>& faces, SamplerState s) {
+    dims = kCubeDims;
+    width = height = size;
+    // llvmpipe clamps a cube map's faces to their edges whatever the sampler's wraps
+    // (lp_build_sample_soa_code's derived sampler state); without seamless filtering (GL's
+    // default) a lookup never leaves its face.
+    s.wrap_s = s.wrap_t = s.wrap_r = Wrap::ClampToEdge;
+    sampler = s;
+    if (size < 1 || size > 16384) {
+        throw std::invalid_argument("cube map face size " + std::to_string(size) + " is outside 1..16384");
+    }
+    std::int64_t total = 0;
+    for (int l = size;; l = std::max(1, l / 2)) {
+        levels.push_back({l, l, 1, std::int32_t(total)});
+        total += std::int64_t(6) * l * l;
+        if (sampler.mip == MipFilter::None || l == 1) break;
+    }
+    if (total > std::int64_t(1) << 30) {
+        throw std::invalid_argument("cube map of " + std::to_string(total) + " texels with its mipmaps: more than 2^30");
+    }
+    if (levels.size() == 1) sampler.mip = MipFilter::None;
+    texels.resize(std::size_t(total));
+    const std::size_t face_texels = std::size_t(size) * std::size_t(size);
+    for (std::size_t f = 0; f < 6; ++f) {
+        const std::uint8_t* rgba = faces[f];
+        for (std::size_t i = 0; i < face_texels; ++i) {
+            texels[f * face_texels + i] = std::uint32_t(rgba[4 * i]) | std::uint32_t(rgba[4 * i + 1]) << 8 |
+                                          std::uint32_t(rgba[4 * i + 2]) << 16 | std::uint32_t(rgba[4 * i + 3]) << 24;
+        }
+    }
+    // Each face's levels as a 2D texture's (Mesa's mipmap blit draws the faces one by one).
+    for (std::size_t l = 1; l < levels.size(); ++l) {
+        const Level& a = levels[l - 1];
+        const Level& b = levels[l];
+        for (std::size_t f = 0; f < 6; ++f) {
+            next_level(&texels[std::size_t(a.offset) + f * std::size_t(a.width * a.height)], a,
+                       &texels[std::size_t(b.offset) + f * std::size_t(b.width * b.height)], b, 2);
+        }
+    }
+}
+
 std::array<int, 3> Texture::size(int lod) const {
     // lp_build_size_query with is_sviewinfo (NIR's txs): a level outside the texture's gives 0.
     if (lod < 0 || lod >= int(levels.size())) return {0, 0, 0};
@@ -868,7 +919,8 @@ void store_lanes(float* p, int base, int n, const F& v) {
 
 // One register's worth of a lookup's lanes, from `base`.
 template <int Dims>
-[[gnu::always_inline]] inline void sample_register(const Texture& tex, const Lookup& l, int base) {
+[[gnu::always_inline]] inline void sample_register(const Texture& tex, const Lookup& l, int base,
+                                                   const std::int32_t* faces = nullptr) {
     const int n = std::min(l.lanes - base, L);
     const Floats rho2 = l.rho2 ? load_lanes(l.rho2, base, n) : Floats{};
     const Floats bias = l.bias ? load_lanes(l.bias, base, n) : Floats{};
@@ -880,6 +932,8 @@ template <int Dims>
     for (int i = 0; i < Dims; ++i) {
         if (l.offset[std::size_t(i)]) offset[i] = load_lanes<Ints>(l.offset[std::size_t(i)], base, n), co.offset[i] = &offset[i];
     }
+    Ints face{};
+    if (faces) face = load_lanes<Ints>(faces, base, n), co.face = &face;
     const bool gradient = l.d_ds[0] != nullptr;
     const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? &rho2 : nullptr, l.bias ? &bias : nullptr, l.lod ? &lod : nullptr,
                                         l.rho2_per_pixel, l.quad_vectors, gradient);
@@ -1163,6 +1217,10 @@ bool sample_plain(const Texture& tex, const PlainLookup& l) {
     }
 }
 
+void sample_cube(const Texture& tex, const Lookup& l, const std::int32_t* face) {
+    for (int base = 0; base < l.lanes; base += L) sample_register<2>(tex, l, base, face);
+}
+
 // lp_build_fetch_texel: the level is lod + first level (0); a lane outside the level's size or
 // a level outside the texture's reads zero, alpha included. A gather per register, from texel 0
 // where the lane reads nothing.
@@ -1227,14 +1285,25 @@ Axes<2> axes_of(const Lookup& l, int base, int n, const Axis& axis) {
 
 void gather_channel(const Texture& tex, const Gather& g) {
     const std::array<bool, 3> pot = pot_sizes<2>(tex);
-    const LevelLanes lv = level_lanes(tex, Ints{});
     for (int base = 0; base < g.lanes; base += L) {
         const int n = std::min(g.lanes - base, L);
+        Ints face{};
+        if (g.face) face = load_lanes<Ints>(g.face, base, n);
+        const LevelLanes lv = face_level_lanes(tex, Ints{}, g.face ? &face : nullptr);
         const Axes<2> ax = axes_of(g, base, n, [&](int i, const Floats& c, const Ints* offset) {
             return gather_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], offset);
         });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Uints order[4] = {k.k[0][1][0], k.k[0][1][1], k.k[0][0][1], k.k[0][0][0]};
+        if (g.ref) {
+            // each texel's comparison, as a shadow lookup's (GL_LEQUAL: ref <= depth)
+            const Floats ref = load_lanes(g.ref, base, n);
+            for (std::size_t c = 0; c < 4; ++c) {
+                const Ints pass = ref <= unorm(channel(order[c], 0));
+                store_lanes(g.out[c], base, n, pass ? splat(1.0f) : Floats{});
+            }
+            continue;
+        }
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
     }
 }
@@ -1245,10 +1314,12 @@ void gather_channel(const Texture& tex, const Gather& g) {
 // (lp_build_masklerp2d). The float path's coordinates, as a GL_DEPTH_COMPONENT32F texture's.
 void sample_shadow(const Texture& tex, const ShadowLookup& l) {
     const std::array<bool, 3> pot = pot_sizes<2>(tex);
-    const LevelLanes lv = level_lanes(tex, Ints{});
     const Ints linear = tex.sampler.mag == Filter::Linear ? splat(-1) : Ints{};
     for (int base = 0; base < l.lanes; base += L) {
         const int n = std::min(l.lanes - base, L);
+        Ints face{};
+        if (l.face) face = load_lanes<Ints>(l.face, base, n);
+        const LevelLanes lv = face_level_lanes(tex, Ints{}, l.face ? &face : nullptr);
         const Axes<2> ax = axes_of(l, base, n, [&](int i, const Floats& c, const Ints* offset) {
             return soa_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, Ints{}, offset);
         });

@@ -22,6 +22,10 @@ struct Gather {
     const float* t = nullptr;
     std::array<const std::int32_t*, 2> offset{};  // texel offsets, or none
     int component = 0;
+    const std::int32_t* face = nullptr;  // a cube map's face per lane, or none
+    // A depth comparison texture's reference value per lane, or none: each texel's comparison
+    // (1 or 0) in place of a channel.
+    const float* ref = nullptr;
     std::array<float*, 4> out{};
 };
 void gather_channel(const Texture& tex, const Gather& gather);

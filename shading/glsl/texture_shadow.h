@@ -27,6 +27,7 @@ struct ShadowLookup {
     const float* t = nullptr;
     const float* ref = nullptr;
     std::array<const std::int32_t*, 2> offset{};  // texel offsets, or none
+    const std::int32_t* face = nullptr;           // a cube map's face per lane, or none
     float* out = nullptr;
 };
 void sample_shadow(const Texture& tex, const ShadowLookup& lookup);

@@ -33,8 +33,12 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
         const char* words;     // a part of the message that names the construct
     };
     const Case cases[] = {
-        {"#version 130\nuniform samplerCube sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = texture(sky, vec3(st, 1.0));\n}\n",
+        {"#version 400\nuniform samplerCube sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
+         "  c = vec4(textureQueryLod(sky, vec3(st, 1.0)), 0.0, 1.0);\n}\n",
          "user.frag:6", "samplerCube"},
+        {"#version 400\nuniform samplerCubeArray sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
+         "  c = texture(sky, vec4(st, 1.0, 0.0));\n}\n",
+         "user.frag:6", "samplerCubeArray"},
         {"#version 110\nfloat f(float x) { return x < 1.0 ? x : f(x - 1.0); }\nvoid main() { gl_FragColor = vec4(f(2.0)); }\n",
          "user.frag:2", "recurs"},
         {"#version 130\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = vec4(gl_PointCoord, 0.0, 1.0);\n}\n",
@@ -42,9 +46,12 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
         {"#version 400\nuniform sampler2D t;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = textureGatherOffsets(t, st, ivec2[4](ivec2(0), ivec2(1), ivec2(2), ivec2(3)));\n}\n",
          "user.frag:6", "textureGatherOffsets"},
-        {"#version 130\nuniform samplerCubeShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = vec4(texture(depth, vec4(st, 1.0, 0.5)));\n}\n",
+        {"#version 400\nuniform samplerCubeShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
+         "  c = vec4(textureQueryLod(depth, vec3(st, 1.0)), 0.0, 1.0);\n}\n",
          "user.frag:6", "samplerCubeShadow"},
+        {"#version 130\nuniform sampler1DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
+         "  c = vec4(texture(depth, vec3(st, 0.5)));\n}\n",
+         "user.frag:6", "sampler1DShadow"},
         {"#version 400\nuniform sampler2DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = textureGather(depth, st, 0.5);\n}\n",
          "user.frag:6", "sampler2DShadow"},

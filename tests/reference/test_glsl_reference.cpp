@@ -14,6 +14,7 @@
 #include "reference/gl_renderer.h"
 #include "render/glsl_shaders.h"
 #include "render/scene_render.h"
+#include "tests/cube_map.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_paths.h"
 
@@ -167,10 +168,11 @@ void main() {
 };
 
 // `fragment` (with the vertex shader the front end writes for it) drawn on `scene` by the
-// interpreter and by llvmpipe, held to the bar with `over_1` pixels allowed past 1/255.
+// interpreter and by llvmpipe, held to the bar with `over_1` pixels allowed past 1/255, or
+// (`exact`) to llvmpipe's 8-bit colours.
 void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context, GlPrograms& programs, int size,
                             const std::string& name, const std::string& fragment, std::size_t over_1, const char* cause,
-                            Scene scene) {
+                            Scene scene, bool exact = false) {
     const std::filesystem::path frag = dir / (name + ".frag"), vert = dir / (name + ".vert");
     std::ofstream(frag) << fragment;
     std::ofstream(vert) << frontend::default_vertex_shader({frag.string(), fragment}).text;
@@ -183,11 +185,13 @@ void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context
     const Framebuffer ours = render_frame(scene, r);
     const Image reference = GlSceneRenderer(scene, {size, size, {}, name, {}}, context, programs).render();
     const Counts n = count(ours, reference);
-    INFO(name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, coverage differs on "
-              << n.coverage_mismatch << (cause ? std::string(" (") + cause + ")" : std::string()));
+    INFO(name << ": " << n.over_1 << " pixels over 1/255, " << n.over_2 << " over 2/255, at most " << n.max_steps
+              << " steps, coverage differs on " << n.coverage_mismatch
+              << (cause ? std::string(" (") + cause + ")" : std::string()));
     CHECK(n.coverage_mismatch == 0);
     CHECK(n.over_1 <= over_1);
-    if (n.over_1 > 0) write_comparison(ours, reference, dir / (name + "-comparison.png"));
+    if (exact) CHECK(n.max_steps == 0);
+    if (n.over_1 > 0 || (exact && n.max_steps > 0)) write_comparison(ours, reference, dir / (name + "-comparison.png"));
 }
 // ... on the Table 1.1 plane.
 void check_against_llvmpipe(const std::filesystem::path& dir, GlContext& context, GlPrograms& programs, int size,
@@ -339,6 +343,120 @@ void main() {
 })"},
 };
 
+// samplerCube's lookups: whole fragment shaders that read `st` and a cube map `env`, drawn on the
+// plane under every sampler below. The directions sweep every face, its edges and corners, and
+// the ties between axes (z over y over x); the derivatives span magnified and minified quads and
+// every level, and differ within a quad where a direction crosses from face to face.
+const LanguageCase kCubeLookups[] = {
+    {"cube_faces", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec3 a = texture(env, vec3(p * 2.5, 1.0)).rgb;                      // +Z, its four sides and corners
+    vec3 b = texture(env, vec3(-1.0, p.yx * vec2(3.0, -2.0))).rgb;      // -X
+    vec3 c = texture(env, vec3(p.x * 1.7, -1.0 + 0.1 * p.y, p.y * 2.2)).rgb;  // -Y, +Y beyond
+    color = vec4(st.y < 0.33 ? a : st.y < 0.67 ? b : c, 1.0);
+})"},
+    {"cube_ties", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec3 d = texture(env, vec3(p.x, p.x, 1.0) * (st.y < 0.5 ? 1.0 : -1.0)).rgb;
+    vec3 e = texture(env, vec3(1.0, p.y, 1.0) * (0.5 + st.x)).rgb;
+    color = vec4(st.x < 0.5 ? d : e, 1.0);
+})"},
+    {"cube_bias", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    color = vec4(texture(env, vec3(p.x * 3.0, 1.0, p.y * 2.0 - 0.4), p.x * 2.0 + p.y).rgb, 1.0);
+})"},
+    {"cube_minified", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    color = vec4(texture(env, vec3(p * 40.0, 3.0)).rgb, 1.0);
+})"},
+    {"cube_gather", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec3 dir = vec3(p.x * 2.5, p.y * 2.5, st.x < 0.5 ? 1.0 : -1.0);
+    vec4 r = textureGather(env, dir);
+    vec4 g = textureGather(env, dir.zxy, 1);
+    vec4 b = textureGather(env, dir.yzx * vec3(1.0, -1.0, 1.0), 2);
+    vec4 q = st.y < 0.33 ? r : st.y < 0.67 ? g : b;
+    color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
+})"},
+    {"cube_lod_grad_size", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec3 dir = vec3(p.x * 3.0, 0.8 - p.y, p.y * 2.0 - 0.3);
+    vec3 a = textureLod(env, dir, st.y * 7.0 - 1.0).rgb;
+    float k = exp2(fract(st.x * 5.0) * 9.0 - 6.0);
+    vec3 dx = vec3(0.05 * k, 0.01 * gl_FragCoord.y / 64.0, 0.0), dy = vec3(0.0, 0.02, 0.08 * k) * (0.5 + st.y);
+    if (st.y > 0.9) dx.x = 1e30;
+    vec3 b = textureGrad(env, dir, dx, dy).rgb;
+    vec3 c = textureGrad(env, dir.zxy, dFdx(dir) * 8.0, dFdy(dir.yxz)).rgb;
+    vec2 size = vec2(textureSize(env, 0) + textureSize(env, 2)) / 64.0;
+    color = vec4(st.x < 0.33 ? a : st.x < 0.67 ? (st.y < 0.5 ? b : c) : vec3(size, 0.5), 1.0);
+})"},
+    {"cube_legacy", R"(#version 120
+#extension GL_ARB_shader_texture_lod : require
+varying vec2 st;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec4 a = textureCube(env, vec3(1.0, p * 1.5));
+    vec4 b = textureCube(env, vec3(p.y * 6.0, p.x * 6.0, -1.0), st.x * 3.0 - 1.0);
+    vec4 c = textureCubeLod(env, vec3(p, -0.5), st.x * 5.0);
+    gl_FragColor = st.y < 0.33 ? a : st.y < 0.67 ? b : c;
+})"},
+};
+
+// samplerCubeShadow's lookups on a depth comparison cube map `depth` (each face's red channel
+// its depth): the reference values cross the depths; a bias or derivatives change nothing on a
+// texture of one level and one filter.
+const LanguageCase kCubeShadowLookups[] = {
+    {"cube_shadow", R"(#version 130
+in vec2 st;
+out vec4 color;
+uniform samplerCubeShadow depth;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
+    float a = texture(depth, vec4(p * 2.5, 1.0, ref));
+    float b = texture(depth, vec4(-1.0, p.yx * 3.0, ref), st.y * 4.0 - 2.0);
+    float c = textureGrad(depth, vec4(p.x, -1.0, p.y * 1.5, ref), vec3(0.1, 0.0, 0.0), vec3(0.0, 0.3 * st.x, 0.0));
+    float d = texture(depth, vec4(p.x, p.x, 1.0, floor(st.y * 256.0) * (1.0 / 255.0)));  // ties, equal to depths
+    vec2 size = vec2(textureSize(depth, 0)) / 64.0;
+    color = st.y < 0.5 ? vec4(a, b, c, 1.0) : vec4(d, size, 1.0);
+})"},
+    {"cube_shadow_gather", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform samplerCubeShadow depth;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
+    vec4 q = textureGather(depth, vec3(p * 2.5, st.y < 0.5 ? 1.0 : -1.0), ref);
+    color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
+})"},
+};
+
 }  // namespace
 
 TEST_CASE("webgl-noise run by the interpreter matches OSMesa llvmpipe", "[interpreter][reference]") {
@@ -446,6 +564,58 @@ TEST_CASE("sampler2DShadow's lookups, run by the interpreter, match OSMesa llvmp
             const std::string name = std::string(c.name) + "-" + sc.name;
             check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
                                    scene);
+        }
+    }
+}
+
+TEST_CASE("samplerCube's lookups, run by the interpreter, match OSMesa llvmpipe under each filter",
+          "[interpreter][reference][textures]") {
+    const std::filesystem::path dir = temp_dir("glsl-cube");
+    const int size = 64;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    constexpr Wrap kRepeat = Wrap::Repeat, kMirror = Wrap::MirroredRepeat, kClamp = Wrap::ClampToEdge;
+    constexpr Filter kLinear = Filter::Linear, kNearest = Filter::Nearest;
+    struct SamplerCase {
+        const char* name;
+        Sampler sampler;
+    };
+    // Every mipmap filter, the float path (different min and mag filters with a level per
+    // pixel), one level; the wraps, which a cube map's lookup ignores, of every kind.
+    const SamplerCase samplers[] = {
+        {"trilinear", {kLinear, Filter::LinearMipmapLinear, kRepeat, kRepeat, kRepeat}},
+        {"nearest-mipmaps", {kNearest, Filter::NearestMipmapNearest, kMirror, kClamp, kRepeat}},
+        {"linear-mipmap-nearest", {kLinear, Filter::LinearMipmapNearest, kClamp, kClamp, kClamp}},
+        {"min-mag-mipmap-linear", {kLinear, Filter::NearestMipmapLinear, kMirror, kMirror, kMirror}},
+        {"min-mag-one-level", {kNearest, kLinear, kRepeat, kRepeat, kRepeat}},
+        {"linear-one-level", {kLinear, kLinear, kRepeat, kMirror, kRepeat}},
+    };
+    for (const SamplerCase& sc : samplers) {
+        Scene scene = load_scene(kPlane);
+        scene.textures.push_back(cube_map(dir, 32, sc.sampler, false, "env"));
+        scene.objects.at(0).samplers = {{"env", int(scene.textures.size()) - 1}};
+        for (const LanguageCase& c : kCubeLookups) {
+            const std::string name = std::string(c.name) + "-" + sc.name;
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
+                                   scene, true);
+        }
+    }
+}
+
+TEST_CASE("samplerCubeShadow's lookups, run by the interpreter, match OSMesa llvmpipe under each filter",
+          "[interpreter][reference][textures]") {
+    const std::filesystem::path dir = temp_dir("glsl-cube-shadow");
+    const int size = 64;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    for (const Filter filter : {Filter::Nearest, Filter::Linear}) {
+        Scene scene = load_scene(kPlane);
+        scene.textures.push_back(cube_map(dir, 16, {filter, filter, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, true, "depth"));
+        scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
+        for (const LanguageCase& c : kCubeShadowLookups) {
+            const std::string name = std::string(c.name) + (filter == Filter::Linear ? "-linear" : "-nearest");
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
+                                   scene, true);
         }
     }
 }

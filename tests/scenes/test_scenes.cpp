@@ -297,6 +297,72 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
         CHECK_THROWS_WITH(render_frame(mixed, {}),
                           Catch::Contains("mixed.gltf") && Catch::Contains("is a depth comparison texture"));
     }
+    SECTION("a cube map of six faces for a samplerCube and, compared, a samplerCubeShadow; saved and loaded the same") {
+        for (int f = 0; f < 6; ++f) {
+            write_image(dir / "images" / ("face" + std::to_string(f) + ".png"), Image{4, 4, std::vector<float>(64, 0.1f * float(f))});
+        }
+        write_image(dir / "images" / "big.png", Image{8, 8, std::vector<float>(256, 0.5f)});
+        const std::string faces = R"(["images/face0.png", "images/face1.png", "images/face2.png", "images/face3.png",
+                                      "images/face4.png", "images/face5.png"])";
+        write_text(dir / "cube.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform samplerCube env;\n"
+                                      "void main() { c = texture(env, vec3(st * 2.0 - 1.0, 0.5)); }\n");
+        write_text(dir / "cube.gltf", gltf(R"({"glsl": "cube.frag", "textures": {"env": {"faces": )" + faces + "}}}"));
+        Scene s = load_scene(dir / "cube.gltf");
+        const Texture& cube = s.textures[std::size_t(s.objects[0].texture_for("env"))];
+        CHECK(cube.dims == kCubeMap);
+        REQUIRE(cube.faces.size() == 6);
+        CHECK(cube.faces[3].file == dir / "images" / "face3.png");
+        CHECK_NOTHROW(render_frame(s, {}));
+        save_scene(s, dir / "saved-cube.gltf");
+        const Scene again = load_scene(dir / "saved-cube.gltf");
+        const Texture& cube2 = again.textures[std::size_t(again.objects[0].texture_for("env"))];
+        CHECK(cube2.dims == kCubeMap);
+        CHECK(cube2.faces == cube.faces);
+        CHECK(cube2.sampler == cube.sampler);
+
+        write_text(dir / "cube-shadow.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform samplerCubeShadow env;\n"
+                                             "void main() { c = vec4(texture(env, vec4(st * 2.0 - 1.0, 0.5, st.x))); }\n");
+        write_text(dir / "cube-depth.gltf", gltf(R"({"glsl": "cube-shadow.frag", "textures": {"env": {"faces": )" + faces +
+                                                 R"(, "sampler": 2, "compare": "LEQUAL"}}})"));
+        Scene depth = load_scene(dir / "cube-depth.gltf");
+        CHECK(depth.textures[std::size_t(depth.objects[0].texture_for("env"))].compare);
+        CHECK_NOTHROW(render_frame(depth, {}));
+        save_scene(depth, dir / "saved-cube-depth.gltf");
+        CHECK(load_scene(dir / "saved-cube-depth.gltf").textures.at(0).compare);
+
+        // What the faces' images are, and which sampler reads which kind, is checked where a shader
+        // samples them, naming the field, the face and the sampler.
+        const auto with_face = [&](int face, const std::string& file) {
+            std::string f = faces;
+            const std::string name = "images/face" + std::to_string(face) + ".png";
+            f.replace(f.find(name), name.size(), file);
+            return f;
+        };
+        const std::pair<std::string, const char*> bad[] = {
+            {R"({"glsl": "cube.frag", "textures": {"env": {"faces": )" + with_face(3, "images/flat.png") + "}}}",
+             "extras.textures.env.faces[3] (face -Y): a 4x2 image: a cube map's faces are square"},
+            {R"({"glsl": "cube.frag", "textures": {"env": {"faces": )" + with_face(5, "images/big.png") + "}}}",
+             "extras.textures.env.faces[5] (face -Z): a 8x8 image where face +X is 4x4"},
+            {R"({"glsl": "cube.frag", "textures": {"env": {"faces": )" + with_face(1, "images/missing.png") + "}}}",
+             "extras.textures.env.faces[1] (face -X)"},
+            {R"({"glsl": "cube.frag", "textures": {"env": "images/flat.png"}})",
+             "samples a samplerCube 'env' but materials[0].extras.textures.env is a 2D texture"},
+            {R"({"glsl": "shadow.frag", "textures": {"depth": {"faces": )" + faces + R"(, "sampler": 2, "compare": "LEQUAL"}}})",
+             "samples a sampler2DShadow 'depth' but materials[0].extras.textures.depth.faces is a cube map"},
+            {R"({"glsl": "cube-shadow.frag", "textures": {"env": {"faces": )" + faces + "}}}",
+             "samples a samplerCubeShadow 'env' but materials[0].extras.textures.env.faces is not a depth comparison texture"},
+            {R"({"glsl": "cube.frag", "textures": {"env": {"faces": )" + faces + R"(, "sampler": 2, "compare": "LEQUAL"}}})",
+             "is a depth comparison texture, for a samplerCubeShadow"},
+        };
+        write_text(dir / "shadow.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform sampler2DShadow depth;\n"
+                                        "void main() { c = vec4(texture(depth, vec3(st, 0.5))); }\n");
+        for (const auto& [extras, message] : bad) {
+            INFO(extras);
+            write_text(dir / "bad-cube.gltf", gltf(extras));
+            Scene b = load_scene(dir / "bad-cube.gltf");
+            CHECK_THROWS_WITH(render_frame(b, {}), Catch::Contains("bad-cube.gltf") && Catch::Contains(message));
+        }
+    }
     SECTION("teximage by name") {
         write_text(dir / "b.gltf", gltf(R"({"shader": "single_texture", "textures": {"teximage": "images/flat.png"}})"));
         Scene s = load_scene(dir / "b.gltf");
@@ -325,6 +391,14 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
             {R"({"textures": {"u": {"image": "images/flat.png", "compare": "LEQUAL"}}})", "one level"},
             {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 1, "compare": "LEQUAL"}}})",
              "extras.textures.u.sampler"},
+            {R"({"textures": {"u": {"faces": ["images/flat.png", "images/flat.png"]}}})",
+             "extras.textures.u.faces: expected an array of six image files"},
+            {R"({"textures": {"u": {"faces": ["a.png", "b.png", 3, "d.png", "e.png", "f.png"]}}})",
+             "extras.textures.u.faces[2]"},
+            {R"({"textures": {"u": {"faces": ["a.png"], "image": "images/flat.png"}}})", "exactly one of"},
+            {R"({"textures": {"u": {"faces": ["a.png"], "depth": 2}}})", "a cube map (faces) has no depth"},
+            {R"({"textures": {"teximage": {"faces": ["a.png", "b.png", "c.png", "d.png", "e.png", "f.png"]}}})",
+             "teximage is a sampler2D"},
         };
         for (const auto& [extras, message] : bad) {
             INFO(extras);

@@ -19,6 +19,7 @@
 #include "shading/catalogue.h"
 #include "shading/glsl_export.h"
 #include "shading/program_of.h"
+#include "tests/cube_map.h"
 #include "tests/translate/same_pixels.h"
 #include "tests/test_paths.h"
 
@@ -32,6 +33,7 @@
 #include "translated_counted_loops/translated_counted_loops.h"
 #include "translated_texture_queries/translated_texture_queries.h"
 #include "translated_texture_shadow/translated_texture_shadow.h"
+#include "translated_texture_cube/translated_texture_cube.h"
 
 namespace {
 
@@ -296,4 +298,20 @@ TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter dra
     scene.textures.push_back(depth);
     scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
     check_file_on("texture_shadow", make_program<translated_texture_shadow::TranslatedTextureShadow>, scene);
+}
+
+TEST_CASE("a translation's samplerCube and samplerCubeShadow lookups draw what the interpreter draws, to the bit, under "
+          "each rule",
+          "[translate][textures]") {
+    // A trilinear cube map, whose implicit lookups take a level per pixel, and a linear depth
+    // comparison cube map.
+    const std::filesystem::path dir = test::temp_dir("translate-cube");
+    Scene scene = load_scene(test::kPlane);
+    scene.textures.push_back(test::cube_map(
+        dir, 32, {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, false, "env"));
+    scene.textures.push_back(
+        test::cube_map(dir, 16, {Filter::Linear, Filter::Linear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, true, "depth"));
+    const int n = int(scene.textures.size());
+    scene.objects.at(0).samplers = {{"env", n - 2}, {"depth", n - 1}};
+    check_file_on("texture_cube", make_program<translated_texture_cube::TranslatedTextureCube>, scene);
 }

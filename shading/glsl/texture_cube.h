@@ -1,0 +1,341 @@
+#pragma once
+// samplerCube and samplerCubeShadow, and GLSL's lookups in them, as Mesa's llvmpipe samples a
+// GL_RGBA8 (or GL_DEPTH_COMPONENT32F) GL_TEXTURE_CUBE_MAP with GL_TEXTURE_CUBE_MAP_SEAMLESS off,
+// GL's default (lp_build_cube_lookup in lp_bld_sample.c, lp_build_sample_common in
+// lp_bld_sample_soa.c):
+//  - the face per pixel from the direction's largest magnitude, z over y over x where two are
+//    equal; the face's coordinates mirrored from the other two by the major one's sign and
+//    projected by 0.5 / |major| (s = sc 0.5 / |ma| + 0.5);
+//  - the face then sampled as a 2D texture clamped to its edges whatever the sampler's wraps (a
+//    lookup never leaves its face), with the filters, mipmaps and 8-bit or float path a 2D
+//    texture takes (texture.h);
+//  - a level of detail from the direction's derivatives carried through the projection, pixel by
+//    pixel: (d.sc - sc d.ma / ma) 0.5 / ma, the derivatives of the direction fine ones (along x
+//    the pixel's row of its quad, along y its column); each pixel keeps its own level (so a
+//    lookup with different minification and magnification filters takes the float path), but
+//    for an implicit lookup on a texture without mipmaps, which takes its quad's upper-left
+//    pixel's (and the 8-bit path). Measured bit for bit against llvmpipe 22.3 under every filter
+//    (tests/reference/test_glsl_reference.cpp).
+// Where a texture needs no level of detail (or the level is explicit), llvmpipe projects with
+// 0.5 / |ma| (0 where ma is 0); otherwise with |0.5 (1 / ma)|, the same bits for any ma but 0.
+//
+// A cube map is a Texture whose levels each hold the six faces one after another, in GL's order
+// (+X, -X, +Y, -Y, +Z, -Z), every face square; its `dims` is kCubeDims. Apart from texture.h so
+// that what includes the lookups alone (every hand translation) does not depend on these: the
+// interpreter and generated translations include both.
+
+#include <bit>
+#include <cmath>
+
+#include "shading/glsl/texture.h"
+#include "shading/glsl/texture_queries.h"
+#include "shading/glsl/texture_shadow.h"
+
+namespace qs::glsl {
+
+// Texture::dims of a cube map, and a shader's SamplerUse::dims for a samplerCube.
+inline constexpr int kCubeDims = 6;
+
+struct samplerCube : Texture {
+    samplerCube() { dims = kCubeDims; }
+    // Six square faces of size x size RGBA8 texels (4 bytes each, rows from t = 0), in GL's order
+    // +X, -X, +Y, -Y, +Z, -Z; mipmaps face by face as glGenerateMipmap makes them when the
+    // sampler's minification filter reads them. Throws std::invalid_argument for a size outside
+    // 1..16384 (GL_MAX_CUBE_MAP_TEXTURE_SIZE).
+    samplerCube(int size, const std::array<const std::uint8_t*, 6>& faces, SamplerState sampler);
+};
+
+namespace texture_detail {
+
+// `lookup` on each lane's face (0..5) of a cube map; its s and t are the face's coordinates.
+void sample_cube(const Texture& cube, const Lookup& lookup, const std::int32_t* face);
+
+// One lane's face: llvmpipe's selection and mirroring, on the floats' bits as llvmpipe does them
+// (a sign flipped is an xor, so -0 and NaN keep their bits).
+struct CubeFace {
+    int face;   // 0..5: +X, -X, +Y, -Y, +Z, -Z
+    int axis;   // 0, 1, 2: the major axis
+    float ma;   // the major coordinate
+    float sc, tc;  // the face's coordinates before the projection
+    std::uint32_t sign;  // ma's sign bit
+};
+inline CubeFace cube_face(float s, float t, float r) {
+    constexpr std::uint32_t kSign = 0x80000000u;
+    const float as = std::fabs(s), at = std::fabs(t), ar = std::fabs(r);
+    const bool x_over_y = as > at;
+    const float larger = as > at ? as : at;  // maxps
+    CubeFace f;
+    f.axis = ar >= larger ? 2 : x_over_y ? 0 : 1;
+    f.ma = f.axis == 0 ? s : f.axis == 1 ? t : r;
+    f.sign = std::bit_cast<std::uint32_t>(f.ma) & kSign;
+    const std::uint32_t si = std::bit_cast<std::uint32_t>(s), ti = std::bit_cast<std::uint32_t>(t),
+                        ri = std::bit_cast<std::uint32_t>(r);
+    f.sc = std::bit_cast<float>(f.axis == 0 ? f.sign ^ ri ^ kSign : f.axis == 1 ? si : f.sign ^ si);
+    f.tc = std::bit_cast<float>(f.axis == 1 ? f.sign ^ ri : ti ^ kSign);
+    f.face = 2 * f.axis + int(f.sign >> 31);
+    return f;
+}
+// The derivative (dx, dy, dz) of the direction mirrored as the face mirrors it: its (d.sc, d.tc)
+// and d.ma.
+struct FaceDerivative {
+    float sc, tc, ma;
+};
+inline FaceDerivative face_derivative(const CubeFace& f, float dx, float dy, float dz) {
+    constexpr std::uint32_t kSign = 0x80000000u;
+    const std::uint32_t xi = std::bit_cast<std::uint32_t>(dx), yi = std::bit_cast<std::uint32_t>(dy),
+                        zi = std::bit_cast<std::uint32_t>(dz);
+    FaceDerivative d;
+    d.ma = f.axis == 0 ? dx : f.axis == 1 ? dy : dz;
+    d.sc = std::bit_cast<float>(f.axis == 0 ? f.sign ^ zi ^ kSign : f.axis == 1 ? xi : f.sign ^ xi);
+    d.tc = std::bit_cast<float>(f.axis == 1 ? f.sign ^ zi : yi ^ kSign);
+    return d;
+}
+
+// The lanes of F's quads: upper-left, upper-right, lower-left, lower-right in GL's window (the
+// layout quad_rho2 reads).
+inline constexpr int quad_tl(int i) { return (i & ~3) | 2; }
+inline constexpr int quad_tr(int i) { return (i & ~3) | 3; }
+inline constexpr int quad_bl(int i) { return i & ~3; }
+inline constexpr int quad_br(int i) { return (i & ~3) | 1; }
+
+// Every lookup in a samplerCube: the direction p, and what `kind` adds to it (a bias or an
+// explicit level in `lod_or_bias`, derivatives of p in `ddx` and `ddy`).
+template <Number F>
+vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod_or_bias, const vec3<F>* ddx,
+                    const vec3<F>* ddy) {
+    constexpr int N = lanes_of<F>();
+    constexpr bool derivatives = is_dual2<F>::value;
+    alignas(64) float c[3][N], gx[3][N], gy[3][N], s[N], t[N], rho2[N], extra[N], rgba[4][N], d_dc[2][4][N];
+    alignas(64) float ds[2][N], dt[2][N];  // the face coordinates' derivatives along x, y
+    alignas(64) std::int32_t face[N];
+    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
+    if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*lod_or_bias, extra);
+    // llvmpipe carries derivatives through the projection where the texture needs a level of
+    // detail and the lookup gives none; Dual2 carries its partials through it as well.
+    const bool need_derivs = kind != Lod::Explicit && tex.needs_lod();
+    [[maybe_unused]] LaneCases lod_cases;
+    bool have_derivs = derivatives;
+    if (kind == Lod::Gradient && need_derivs) {
+        for (int k = 0; k < 3; ++k) to_floats((*ddx)[k], gx[k]), to_floats((*ddy)[k], gy[k]);
+        have_derivs = true;
+    } else if constexpr (derivatives) {
+        for (int k = 0; k < 3; ++k) to_floats(p[k].dx, gx[k]), to_floats(p[k].dy, gy[k]);
+    } else if (need_derivs) {
+        if constexpr (QuadNumber<F>) {
+            // lp_build_ddx and lp_build_ddy: along x the difference across the pixel's row of
+            // its quad, along y across its column.
+            for (int k = 0; k < 3; ++k) {
+                for (int i = 0; i < N; ++i) {
+                    const bool upper = (i & 2) != 0, left = (i & 1) == 0;
+                    gx[k][i] = upper ? c[k][quad_tr(i)] - c[k][quad_tl(i)] : c[k][quad_br(i)] - c[k][quad_bl(i)];
+                    gy[k][i] = left ? c[k][quad_bl(i)] - c[k][quad_tl(i)] : c[k][quad_br(i)] - c[k][quad_tr(i)];
+                }
+            }
+            if constexpr (is_checked_v<F>) {
+                // every lane reads its whole quad
+                const LaneCases own = p.x.cases | p.y.cases | p.z.cases;
+                const auto at = [](int (*lane)(int)) { return [lane](std::size_t i) { return std::size_t(lane(int(i))); }; };
+                lod_cases = own.permute(at(quad_tl), N) | own.permute(at(quad_tr), N) | own.permute(at(quad_bl), N) |
+                            own.permute(at(quad_br), N);
+            }
+            have_derivs = true;
+        } else {
+            throw_lod_without_quads();
+        }
+    }
+    const float size = float(tex.width);
+    for (int i = 0; i < N; ++i) {
+        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
+        face[i] = f.face;
+        const float ima = 1.0f / f.ma, imahalf = 0.5f * ima;
+        float scale;
+        if (need_derivs) {
+            scale = std::fabs(imahalf);
+        } else {
+            const float a = std::fabs(f.ma);
+            scale = a > 0.0f ? 0.5f / a : 0.0f;
+        }
+        s[i] = f.sc * scale + 0.5f;
+        t[i] = f.tc * scale + 0.5f;
+        if (!have_derivs) continue;
+        // dx.s = 0.5 (dx.sc - sc dx.ma / ma) / ma, in llvmpipe's order of operations
+        for (int a = 0; a < 2; ++a) {
+            const float(&g)[3][N] = a == 0 ? gx : gy;
+            const FaceDerivative d = face_derivative(f, g[0][i], g[1][i], g[2][i]);
+            const float ma_over_ma = d.ma * ima;
+            ds[a][i] = (d.sc - ma_over_ma * f.sc) * imahalf;
+            dt[a][i] = (d.tc - ma_over_ma * f.tc) * imahalf;
+        }
+        if (need_derivs) {
+            // lp_build_rho from explicit derivatives: max((W ds/dx)^2 + (H dt/dx)^2, the same
+            // along y), 0 where infinite or NaN
+            float x = size * ds[0][i], y = size * ds[1][i];
+            float xt = size * dt[0][i], yt = size * dt[1][i];
+            x = x * x, y = y * y, xt = xt * xt, yt = yt * yt;
+            x = x + xt, y = y + yt;
+            const float r = x > y ? x : y;
+            rho2[i] = std::isfinite(r) ? r : 0.0f;
+        }
+    }
+    // llvmpipe keeps a level of detail per pixel where the texture has mipmaps (its default,
+    // GALLIVM_PERF without quad_lod, for a cube map), and where a bias or derivatives are given;
+    // an implicit one that only chooses between the minification and magnification filters is
+    // its quad's, from its upper-left pixel (the quad's first element in llvmpipe's order).
+    const bool quad_lod = need_derivs && kind == Lod::Implicit && tex.sampler.mip == MipFilter::None;
+    if constexpr (QuadNumber<F> && !derivatives) {
+        if (quad_lod) {
+            float own[N];
+            for (int i = 0; i < N; ++i) own[i] = rho2[i];
+            for (int i = 0; i < N; ++i) rho2[i] = own[quad_tl(i)];
+        }
+    }
+    for (int i = 0; i < N; i += kMaxLanes) {
+        Lookup l;
+        l.lanes = N - i < kMaxLanes ? N - i : kMaxLanes;
+        l.s = s + i, l.t = t + i;
+        l.rho2 = need_derivs ? rho2 + i : nullptr;
+        l.bias = kind == Lod::Bias ? extra + i : nullptr;
+        l.lod = kind == Lod::Explicit ? extra + i : nullptr;
+        l.rho2_per_pixel = !quad_lod;
+        l.quad_vectors = QuadNumber<F>;
+        for (std::size_t ch = 0; ch < 4; ++ch) {
+            l.rgba[ch] = rgba[ch] + i;
+            if (derivatives) l.d_ds[ch] = d_dc[0][ch] + i, l.d_dt[ch] = d_dc[1][ch] + i;
+        }
+        sample_cube(tex, l, face + i);
+    }
+    vec4<F> out;
+    for (int ch = 0; ch < 4; ++ch) {
+        if constexpr (derivatives) {
+            // d(colour) = d(colour)/ds ds + d(colour)/dt dt, along x and along y
+            using T = typename F::value_type;
+            const T g_s = from_floats<T>(d_dc[0][ch]), g_t = from_floats<T>(d_dc[1][ch]);
+            const T dx = g_s * from_floats<T>(ds[0]) + g_t * from_floats<T>(dt[0]);
+            const T dy = g_s * from_floats<T>(ds[1]) + g_t * from_floats<T>(dt[1]);
+            out[ch] = F(from_floats<T>(rgba[ch]), dx, dy);
+        } else if constexpr (is_checked_v<F>) {
+            LaneCases cases = lod_cases | p.x.cases | p.y.cases | p.z.cases;
+            if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | lod_or_bias->cases;
+            if (kind == Lod::Gradient) {
+                for (int k = 0; k < 3; ++k) cases = cases | (*ddx)[k].cases | (*ddy)[k].cases;
+            }
+            out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
+        } else {
+            out[ch] = from_floats<F>(rgba[ch]);
+        }
+    }
+    return out;
+}
+
+// A samplerCubeShadow's comparison at direction p.xyz with reference value p.w: the depth
+// comparison texture has one level and one filter, so llvmpipe projects without derivatives.
+template <Number F>
+F cube_shadow(const Texture& tex, const vec4<F>& p) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float c[3][N], s[N], t[N], ref[N], out[N];
+    alignas(64) std::int32_t face[N];
+    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
+    to_floats(p.w, ref);
+    for (int i = 0; i < N; ++i) {
+        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
+        face[i] = f.face;
+        const float a = std::fabs(f.ma);
+        const float scale = a > 0.0f ? 0.5f / a : 0.0f;
+        s[i] = f.sc * scale + 0.5f;
+        t[i] = f.tc * scale + 0.5f;
+    }
+    ShadowLookup l;
+    l.lanes = N, l.s = s, l.t = t, l.ref = ref, l.face = face, l.out = out;
+    sample_shadow(tex, l);
+    return constant_lanes<F>(out, cases_of(p.x) | cases_of(p.y) | cases_of(p.z) | cases_of(p.w));
+}
+
+// textureGather on a cube map: the face's four texels a bilinear lookup at direction p reads on
+// level 0, as gather_channel reads a 2D texture's (CLAMP_TO_EDGE's gather wrap); channel
+// `component`, or, with a reference value, each texel's comparison with it.
+template <Number F>
+vec4<F> cube_gather(const Texture& tex, const vec3<F>& p, int component, const F* ref) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float c[3][N], s[N], t[N], r[N], out[4][N];
+    alignas(64) std::int32_t face[N];
+    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
+    const bool need_derivs = tex.needs_lod();
+    for (int i = 0; i < N; ++i) {
+        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
+        face[i] = f.face;
+        const float a = std::fabs(f.ma);
+        const float scale = need_derivs ? std::fabs(0.5f * (1.0f / f.ma)) : a > 0.0f ? 0.5f / a : 0.0f;
+        s[i] = f.sc * scale + 0.5f;
+        t[i] = f.tc * scale + 0.5f;
+    }
+    Gather g;
+    g.lanes = N, g.s = s, g.t = t, g.component = component, g.face = face;
+    LaneCases cases = cases_of(p.x) | cases_of(p.y) | cases_of(p.z);
+    if (ref) {
+        to_floats(*ref, r);
+        g.ref = r;
+        cases = cases | cases_of(*ref);
+    }
+    for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
+    gather_channel(tex, g);
+    return vec4<F>(constant_lanes<F>(out[0], cases), constant_lanes<F>(out[1], cases), constant_lanes<F>(out[2], cases),
+                   constant_lanes<F>(out[3], cases));
+}
+
+}  // namespace texture_detail
+
+// textureGather(samplerCube, P [, comp]): channel `comp` (0: red, a constant) of the four texels
+// a bilinear lookup in direction P reads on its face's level 0, in GL's order; constants under
+// Dual2.
+template <Number F>
+vec4<F> textureGather(const samplerCube& tex, const vec3<F>& p, int comp = 0) {
+    return texture_detail::cube_gather<F>(tex, p, comp, nullptr);
+}
+// textureGather(samplerCubeShadow, P, refZ): each of those texels' comparison with refZ.
+template <Number F>
+vec4<F> textureGatherCompare(const samplerCube& depth, const vec3<F>& p, const F& ref) {
+    return texture_detail::cube_gather<F>(depth, p, 0, &ref);
+}
+
+// GLSL's lookups in a samplerCube: a direction (any length but 0), the level of detail from the
+// quad (implicit), a bias added to it, an explicit level, or explicit derivatives of the direction.
+template <Number F>
+vec4<F> textureCube(const samplerCube& tex, const vec3<F>& p) {
+    return texture_detail::cube_lookup<F>(tex, p, texture_detail::Lod::Implicit, nullptr, nullptr, nullptr);
+}
+template <Number F>
+vec4<F> textureCube(const samplerCube& tex, const vec3<F>& p, const F& bias) {
+    return texture_detail::cube_lookup<F>(tex, p, texture_detail::Lod::Bias, &bias, nullptr, nullptr);
+}
+template <Number F>
+vec4<F> textureCubeLod(const samplerCube& tex, const vec3<F>& p, const F& lod) {
+    return texture_detail::cube_lookup<F>(tex, p, texture_detail::Lod::Explicit, &lod, nullptr, nullptr);
+}
+template <Number F>
+vec4<F> texture(const samplerCube& tex, const vec3<F>& p) { return textureCube(tex, p); }
+template <Number F>
+vec4<F> texture(const samplerCube& tex, const vec3<F>& p, const F& bias) { return textureCube(tex, p, bias); }
+template <Number F>
+vec4<F> textureLod(const samplerCube& tex, const vec3<F>& p, const F& lod) { return textureCubeLod(tex, p, lod); }
+// llvmpipe's level from the given derivatives, pixel by pixel, carried through the projection.
+template <Number F>
+vec4<F> textureGrad(const samplerCube& tex, const vec3<F>& p, const vec3<F>& dPdx, const vec3<F>& dPdy) {
+    return texture_detail::cube_lookup<F>(tex, p, texture_detail::Lod::Gradient, nullptr, &dPdx, &dPdy);
+}
+// A face's size at level `lod`: textureSize<F>(cube, lod).
+template <Number F>
+ivec2<F> textureSize(const samplerCube& tex, const int_t<F>& lod) {
+    const auto s = texture_detail::size_query<F, 2>(tex, lod);
+    return ivec2<F>(s[0], s[1]);
+}
+
+// texture(samplerCubeShadow, P [, bias]) and textureGrad(samplerCubeShadow, ...): P.w compared
+// with the depth in direction P.xyz (a bias or derivatives change nothing on a texture of one
+// level and one filter). The result is a step of the comparison: under Dual2 its derivatives
+// are 0.
+template <Number F>
+F textureCubeShadow(const samplerCube& depth, const vec4<F>& p) {
+    return texture_detail::cube_shadow<F>(depth, p);
+}
+
+}  // namespace qs::glsl
