@@ -32,15 +32,17 @@ public:
           affine_(t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f), affine_rcp_(1.0f / t.inv_w.a0),
           height_(float(height)) {}
 
-    // Plane p at the lanes' pixels (x, y), each lane as PlaneEquation::at (or at_fused).
+    // Plane p at the lanes' pixels (x, y), each lane as PlaneEquation::at (or at_fused). Always
+    // inlined, as the two below: where sixteen floats are not one register (AVX2), a call passes
+    // them and its result through memory, in pieces a whole load cannot be forwarded from.
     template <bool Fused>
-    static lanes16::Floats at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
+    [[gnu::always_inline]] static lanes16::Floats at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
         return at_row<Fused>(p.dady, at_column<Fused>(p, x), y);
     }
     // The same in two steps, as both forms add x's term first: x's term (a0 + dadx x, fused
     // fma(dadx, x, a0)), which a column of pixels shares, then y's.
     template <bool Fused>
-    static lanes16::Floats at_column(const PlaneEquation& p, const lanes16::Floats& x) {
+    [[gnu::always_inline]] static lanes16::Floats at_column(const PlaneEquation& p, const lanes16::Floats& x) {
         using lanes16::broadcast;
         if constexpr (Fused) {
             return lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0));
@@ -49,7 +51,7 @@ public:
         }
     }
     template <bool Fused>
-    static lanes16::Floats at_row(float dady, const lanes16::Floats& column, const lanes16::Floats& y) {
+    [[gnu::always_inline]] static lanes16::Floats at_row(float dady, const lanes16::Floats& column, const lanes16::Floats& y) {
         if constexpr (Fused) {
             return lanes16::fma(lanes16::broadcast(dady), y, column);
         } else {
@@ -122,22 +124,30 @@ public:
     public:
         // `lanes_x(i)`: the lanes' x in column i.
         template <class LanesX>
-        ColumnVaryings(const FragmentInputs& in, const LanesX& lanes_x) : rcp_(lanes16::broadcast(in.affine_rcp_)) {
-            for (int v = 0; v < Count; ++v) dady_[v] = in.varyings_[std::size_t(v)].dady;
+        ColumnVaryings(const FragmentInputs& in, const LanesX& lanes_x) : rcp_(Wide::splat(in.affine_rcp_)) {
+            for (int v = 0; v < Count; ++v) dady_[v] = Wide::splat(in.varyings_[std::size_t(v)].dady);
             for (int i = 0; i < Columns; ++i) {
                 const lanes16::Floats x = lanes_x(i);
-                for (int v = 0; v < Count; ++v) column_[i][v] = at_column<Fused>(in.varyings_[std::size_t(v)], x);
+                for (int v = 0; v < Count; ++v) {
+                    const lanes16::Floats column = at_column<Fused>(in.varyings_[std::size_t(v)], x);
+                    column_[i][v] = lanes16::to_wide(column);
+                }
             }
         }
-        // The inputs of the block in column i whose lanes' y is y.
+        // The inputs of the block in column i whose lanes' y is y: at_row's value, in registers.
         [[gnu::always_inline]] void fill(FragmentBatch& batch, int i, const lanes16::Floats& y) const {
-            for (int v = 0; v < Count; ++v) lanes16::store(batch.varying[v], at_row<Fused>(dady_[v], column_[i][v], y) * rcp_);
+            const Wide wy = lanes16::to_wide(y);
+            for (int v = 0; v < Count; ++v) {
+                const Wide value = Fused ? lanes16::fma(dady_[v], wy, column_[i][v]) : column_[i][v] + dady_[v] * wy;
+                (value * rcp_).store(batch.varying[v]);
+            }
         }
 
     private:
-        lanes16::Floats column_[Columns][Count];
-        lanes16::Floats rcp_;
-        float dady_[Count];
+        using Wide = lanes16::Wide;  // the block's values in registers (core/lanes16.h: why)
+        Wide column_[Columns][Count];
+        Wide rcp_;
+        Wide dady_[Count];
     };
 
 private:
