@@ -58,6 +58,29 @@ public:
             return column + dady * y;
         }
     }
+    // The same three on register-wide parts (lanes16::Wide), the same operations.
+    template <bool Fused>
+    [[gnu::always_inline]] static lanes16::Wide at(const PlaneEquation& p, const lanes16::Wide& x, const lanes16::Wide& y) {
+        return at_row<Fused>(p.dady, at_column<Fused>(p, x), y);
+    }
+    template <bool Fused>
+    [[gnu::always_inline]] static lanes16::Wide at_column(const PlaneEquation& p, const lanes16::Wide& x) {
+        using Wide = lanes16::Wide;
+        if constexpr (Fused) {
+            return lanes16::fma(Wide::splat(p.dadx), x, Wide::splat(p.a0));
+        } else {
+            return Wide::splat(p.a0) + Wide::splat(p.dadx) * x;
+        }
+    }
+    template <bool Fused>
+    [[gnu::always_inline]] static lanes16::Wide at_row(float dady, const lanes16::Wide& column, const lanes16::Wide& y) {
+        using Wide = lanes16::Wide;
+        if constexpr (Fused) {
+            return lanes16::fma(Wide::splat(dady), y, column);
+        } else {
+            return column + Wide::splat(dady) * y;
+        }
+    }
 
     // The window depth at the lanes' pixels.
     template <bool Fused>
@@ -65,45 +88,49 @@ public:
         return at<Fused>(z_, x, y);
     }
 
-    // The inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) into `in`.
+    // The inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) into `in`,
+    // computed on register-wide parts (lanes16::Wide: where sixteen floats are two registers,
+    // lanes16::Floats temporaries went through the stack piece by piece).
     template <bool Fused>
-    [[gnu::always_inline]] void fill(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) const {
-        using lanes16::broadcast, lanes16::store, lanes16::Floats;
+    [[gnu::always_inline]] void fill(FragmentBatch& in, const lanes16::Floats& x16, const lanes16::Floats& y16) const {
+        using Wide = lanes16::Wide;
+        const auto splat = [](float v) { return Wide::splat(v); };
+        const Wide x = lanes16::to_wide(x16), y = lanes16::to_wide(y16);
         if (frag_coord_) {
-            store(in.frag_coord[0], x + 0.5f);
-            store(in.frag_coord[1], height_ - (y + 0.5f));  // GL window y points up
-            store(in.frag_coord[2], at<Fused>(z_, x, y));
-            store(in.frag_coord[3], at<Fused>(inv_w_, x, y));
+            (x + splat(0.5f)).store(in.frag_coord[0]);
+            (splat(height_) - (y + splat(0.5f))).store(in.frag_coord[1]);  // GL window y points up
+            at<Fused>(z_, x, y).store(in.frag_coord[2]);
+            at<Fused>(inv_w_, x, y).store(in.frag_coord[3]);
         } else if (depth_) {
-            store(in.frag_coord[2], at<Fused>(z_, x, y));  // the depth written
+            at<Fused>(z_, x, y).store(in.frag_coord[2]);  // the depth written
         }
         if (analytic_ && frag_coord_) {
             // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
-            store(in.frag_coord_dx[0], broadcast(z_.dadx));
-            store(in.frag_coord_dy[0], broadcast(-z_.dady));
-            store(in.frag_coord_dx[1], broadcast(inv_w_.dadx));
-            store(in.frag_coord_dy[1], broadcast(-inv_w_.dady));
+            splat(z_.dadx).store(in.frag_coord_dx[0]);
+            splat(-z_.dady).store(in.frag_coord_dy[0]);
+            splat(inv_w_.dadx).store(in.frag_coord_dx[1]);
+            splat(-inv_w_.dady).store(in.frag_coord_dy[1]);
         }
         if (count_ == 0) return;
-        const Floats rcp = affine_ ? broadcast(affine_rcp_) : 1.0f / at<Fused>(inv_w_, x, y);
+        const Wide rcp = affine_ ? splat(affine_rcp_) : splat(1.0f) / at<Fused>(inv_w_, x, y);
         for (int v = 0; v < count_; ++v) {
             const PlaneEquation& p = varyings_[std::size_t(v)];
             const bool flat = flat_ >> v & 1;
             // flat_ holds the noperspective varyings too: neither is divided by the interpolated w.
-            const Floats value = (linear_ >> v & 1) ? at<Fused>(p, x, y) : flat ? broadcast(p.a0) : at<Fused>(p, x, y) * rcp;
-            store(in.varying[v], value);
+            const Wide value = (linear_ >> v & 1) ? at<Fused>(p, x, y) : flat ? splat(p.a0) : at<Fused>(p, x, y) * rcp;
+            value.store(in.varying[v]);
             if (analytic_) {
                 // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
                 // varying enters as 0 (its plane is constant: zero derivatives); a noperspective
                 // one's are its plane's.
                 if (linear_ >> v & 1) {
-                    store(in.varying_dx[v], broadcast(p.dadx));
-                    store(in.varying_dy[v], broadcast(-p.dady));
+                    splat(p.dadx).store(in.varying_dx[v]);
+                    splat(-p.dady).store(in.varying_dy[v]);
                     continue;
                 }
-                const Floats v0 = flat ? broadcast(0.0f) : value;
-                store(in.varying_dx[v], (p.dadx - v0 * inv_w_.dadx) * rcp);
-                store(in.varying_dy[v], -((p.dady - v0 * inv_w_.dady) * rcp));
+                const Wide v0 = flat ? splat(0.0f) : value;
+                ((splat(p.dadx) - v0 * splat(inv_w_.dadx)) * rcp).store(in.varying_dx[v]);
+                (-((splat(p.dady) - v0 * splat(inv_w_.dady)) * rcp)).store(in.varying_dy[v]);
             }
         }
     }
