@@ -293,9 +293,10 @@ private:
         }
     }
 
-    // The batch through the shader, in runs of F's lanes.
+    // The batch through the shader, in runs of F's lanes. Flattened: a whole batch is the
+    // shader's body itself, halves one body that the loop enters twice.
     template <class F>
-    static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
+    QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
         constexpr int lanes = program_detail::lanes_of<F>;
         static_assert(kBatchLanes % lanes == 0 && lanes % 4 == 0, "runs of whole quads");
         out.discarded = 0;
