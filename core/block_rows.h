@@ -55,23 +55,25 @@ inline void block_to_rows(const float* const (&rgba)[4], lanes16::Floats (&rows)
     // Per half h (lanes 8h .. 8h + 7, block rows 2h and 2h + 1): interleave red with green and
     // blue with alpha, gather each pixel's four components, then pair the 128-bit halves into
     // rows. Row 2h holds lanes 8h + {2, 3, 6, 7}, row 2h + 1 lanes 8h + {0, 1, 4, 5} (kLaneAt).
+    // Each row's two halves are stored into it as they are: a row made whole in registers first
+    // (one shuffle of the two) has no register to live in and was assembled float by float
+    // through the stack.
     static_assert(kLaneAt[0][0] == 2 && kLaneAt[0][2] == 6 && kLaneAt[1][0] == 0 && kLaneAt[1][2] == 4 &&
                   kLaneAt[2][0] == 10 && kLaneAt[3][0] == 8);
-    typedef float Eight __attribute__((vector_size(8 * sizeof(float))));
     for (int h = 0; h < 2; ++h) {
         const __m256 r = _mm256_loadu_ps(rgba[0] + 8 * h), g = _mm256_loadu_ps(rgba[1] + 8 * h);
         const __m256 b = _mm256_loadu_ps(rgba[2] + 8 * h), a = _mm256_loadu_ps(rgba[3] + 8 * h);
         const __m256 rg_low = _mm256_unpacklo_ps(r, g), rg_high = _mm256_unpackhi_ps(r, g);  // r0 g0 r1 g1 | r4 ..
         const __m256 ba_low = _mm256_unpacklo_ps(b, a), ba_high = _mm256_unpackhi_ps(b, a);
-        auto row = [](__m256 rg, __m256 ba) {
+        auto row = [](__m256 rg, __m256 ba, lanes16::Floats& out) {
             const __m256 first = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(1, 0, 1, 0));   // pixel k, k + 4
             const __m256 second = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(3, 2, 3, 2));  // pixel k + 1, k + 5
-            const Eight left = Eight(_mm256_permute2f128_ps(first, second, 0x20));
-            const Eight right = Eight(_mm256_permute2f128_ps(first, second, 0x31));
-            return lanes16::Floats(__builtin_shufflevector(left, right, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+            float* const to = reinterpret_cast<float*>(&out);
+            _mm256_storeu_ps(to, _mm256_permute2f128_ps(first, second, 0x20));
+            _mm256_storeu_ps(to + 8, _mm256_permute2f128_ps(first, second, 0x31));
         };
-        rows[2 * h] = row(rg_high, ba_high);
-        rows[2 * h + 1] = row(rg_low, ba_low);
+        row(rg_high, ba_high, rows[2 * h]);
+        row(rg_low, ba_low, rows[2 * h + 1]);
     }
 #else
     using namespace block_detail;

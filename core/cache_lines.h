@@ -43,8 +43,11 @@ inline void stream_line(float* line, const Floats& v) {
 #if defined(__AVX512F__)
     _mm512_stream_ps(line, __m512(v));
 #elif defined(__AVX__)
-    _mm256_stream_ps(line, __m256(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)));
-    _mm256_stream_ps(line + 8, __m256(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
+    // Two registers of eight, loaded as such from where v lies (sixteen floats have no register
+    // here: its halves taken by shuffles were moved through the stack float by float).
+    const float* const from = reinterpret_cast<const float*>(&v);
+    _mm256_stream_ps(line, _mm256_loadu_ps(from));
+    _mm256_stream_ps(line + 8, _mm256_loadu_ps(from + 8));
 #elif defined(__SSE__)
     for (int i = 0; i < 4; ++i) {
         __m128 q;

@@ -3,7 +3,10 @@
 // vector. One register on AVX-512, several on narrower ISAs; plain IEEE operations lane by lane
 // (the build does not contract a * b + c). Written with these instead of loops over arrays, the
 // compiler needs no run-time checks that the arrays overlap, and nothing falls back to scalar
-// code, whose stores a vector load cannot take straight from the store buffer.
+// code, whose stores a vector load cannot take straight from the store buffer. Every function
+// here is always inlined: where sixteen floats are more than a register (AVX2), a call takes and
+// returns them through memory, stored in pieces that a whole load then waits for (an out-of-line
+// fma was a third of a constant-colour frame's time on the general path).
 
 #include <bit>
 #include <cmath>
@@ -15,6 +18,7 @@
 #endif
 
 #include "shading/batches.h"
+#include "shading/number/wide_vector.h"
 
 namespace qs::lanes16 {
 
@@ -23,7 +27,7 @@ typedef std::int32_t Ints __attribute__((vector_size(kBatchLanes * sizeof(std::i
 
 // v in every lane, -0 included (`Floats{} + v` would add +0 to it: +0 for -0, and an addition
 // the compiler cannot leave out, where a broadcast operand of the instruction using it is free).
-inline Floats broadcast(float v) {
+[[gnu::always_inline]] inline Floats broadcast(float v) {
 #if defined(__AVX512F__)
     static_assert(sizeof(Floats) == sizeof(__m512));
     return Floats(_mm512_set1_ps(v));
@@ -41,19 +45,19 @@ inline Floats broadcast(float v) {
 #endif
 }
 
-inline Floats load(const float* p) {
+[[gnu::always_inline]] inline Floats load(const float* p) {
     Floats v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline Ints load(const int* p) {
+[[gnu::always_inline]] inline Ints load(const int* p) {
     Ints v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
 // Sixteen lanes of T (float or int) stored at p.
 template <class T, class Lanes>
-inline void store_lanes(T* p, const Lanes& v) {
+[[gnu::always_inline]] inline void store_lanes(T* p, const Lanes& v) {
     static_assert(sizeof v == kBatchLanes * sizeof(T));
 #if defined(__AVX__) && !defined(__AVX512F__)
     // Two registers of eight, stored as such (a copy of the whole went through general registers).
@@ -65,13 +69,13 @@ inline void store_lanes(T* p, const Lanes& v) {
     std::memcpy(p, &v, sizeof v);
 #endif
 }
-inline void store(float* p, const Floats& v) { store_lanes(p, v); }
-inline void store(int* p, const Ints& v) { store_lanes(p, v); }
+[[gnu::always_inline]] inline void store(float* p, const Floats& v) { store_lanes(p, v); }
+[[gnu::always_inline]] inline void store(int* p, const Ints& v) { store_lanes(p, v); }
 
-inline Floats to_float(const Ints& v) { return __builtin_convertvector(v, Floats); }
+[[gnu::always_inline]] inline Floats to_float(const Ints& v) { return __builtin_convertvector(v, Floats); }
 
 // a * b + c rounded once on every lane, as std::fma.
-inline Floats fma(const Floats& a, const Floats& b, const Floats& c) {
+[[gnu::always_inline]] inline Floats fma(const Floats& a, const Floats& b, const Floats& c) {
 #if defined(__AVX512F__)
     static_assert(sizeof(Floats) == sizeof(__m512));
     return Floats(_mm512_fmadd_ps(__m512(a), __m512(b), __m512(c)));
@@ -90,13 +94,40 @@ inline Floats fma(const Floats& a, const Floats& b, const Floats& c) {
 #endif
 }
 
+// Sixteen floats as register-wide parts (shading/number/wide_vector.h): one AVX-512 register or
+// two AVX2 ones, each part a value the compiler keeps in a register. A Floats wider than the
+// registers has none: kept across a loop, it is copied through the stack in 16-byte pieces on
+// every use. Values a tile's loop reuses are held as these (FragmentInputs::ColumnVaryings).
+using Wide = simd::Wide<float, kBatchLanes>;
+
+[[gnu::always_inline]] inline Wide to_wide(const Floats& v) { return Wide::load(reinterpret_cast<const float*>(&v)); }
+
+// fma above on register-wide parts.
+[[gnu::always_inline]] inline Wide fma(const Wide& a, const Wide& b, const Wide& c) {
+    return Wide::map([](const Wide::Part& x, const Wide::Part& y, const Wide::Part& z) {
+#if defined(__AVX512F__)
+        if constexpr (sizeof(Wide::Part) == sizeof(__m512)) {
+            return simd::by_register<__m512>(x, y, z, [](__m512 p, __m512 q, __m512 r) { return _mm512_fmadd_ps(p, q, r); });
+        }
+#endif
+#if defined(__FMA__)
+        if constexpr (sizeof(Wide::Part) == sizeof(__m256)) {
+            return simd::by_register<__m256>(x, y, z, [](__m256 p, __m256 q, __m256 r) { return _mm256_fmadd_ps(p, q, r); });
+        }
+#endif
+        Wide::Part r;
+        for (int i = 0; i < Wide::part_size; ++i) r[i] = std::fma(x[i], y[i], z[i]);
+        return r;
+    }, a, b, c);
+}
+
 // Sixteen 64-bit integers: the edge functions' values (raster/edge_function.h).
 typedef std::int64_t Longs __attribute__((vector_size(kBatchLanes * sizeof(std::int64_t))));
 
 // Lane masks (bit i for lane i) of comparisons, on whole registers: GCC splits a comparison of
 // these vectors wider than a register into one scalar comparison per lane.
 // a < b
-inline std::uint32_t less(const Floats& a, const Floats& b) {
+[[gnu::always_inline]] inline std::uint32_t less(const Floats& a, const Floats& b) {
 #if defined(__AVX512F__)
     return _mm512_cmp_ps_mask(__m512(a), __m512(b), _CMP_LT_OQ);
 #elif defined(__AVX__)
@@ -112,7 +143,7 @@ inline std::uint32_t less(const Floats& a, const Floats& b) {
 #endif
 }
 // a == b
-inline std::uint32_t equal(const Ints& a, const Ints& b) {
+[[gnu::always_inline]] inline std::uint32_t equal(const Ints& a, const Ints& b) {
 #if defined(__AVX512F__)
     return _mm512_cmpeq_epi32_mask(__m512i(a), __m512i(b));
 #elif defined(__AVX2__)
@@ -130,7 +161,7 @@ inline std::uint32_t equal(const Ints& a, const Ints& b) {
 #endif
 }
 // a + b > 0, a the same for every lane
-inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
+[[gnu::always_inline]] inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
 #if defined(__AVX512F__)
     __m512i y[2];
     std::memcpy(y, &b, sizeof y);
@@ -159,7 +190,7 @@ inline std::uint32_t sum_positive(std::int64_t a, const Longs& b) {
 // registers, so that a batch gathered block by block is stored whole each time and its next
 // (whole) load is forwarded from that store: gathered with scalar or variable-length copies, the
 // load waited for every older store to reach the cache.
-inline Ints append(const Ints& to, int first, std::uint32_t lanes, const Ints& v) {
+[[gnu::always_inline]] inline Ints append(const Ints& to, int first, std::uint32_t lanes, const Ints& v) {
 #if defined(__AVX512F__)
     const __mmask16 slots = __mmask16(((1u << std::popcount(lanes)) - 1u) << first);
     return Ints(_mm512_mask_expand_epi32(__m512i(to), slots, _mm512_maskz_compress_epi32(__mmask16(lanes), __m512i(v))));

@@ -39,8 +39,8 @@ inline float depth24(float z) {
     return std::nearbyint((above < 1.0f ? above : 1.0f) * kDepthCleared);
 }
 
-// depth24 on every lane of a batch, to the bit.
-inline lanes16::Floats depth24(const lanes16::Floats& z) {
+// depth24 on every lane of a batch, to the bit (always inlined, as core/lanes16.h says why).
+[[gnu::always_inline]] inline lanes16::Floats depth24(const lanes16::Floats& z) {
     // max(z, 0) takes 0 where z is NaN (its second operand), as std::fmax; rounding control 0xC is
     // the current rounding mode without exceptions: std::nearbyint.
 #if defined(__AVX512F__)

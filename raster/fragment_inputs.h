@@ -33,15 +33,17 @@ public:
           affine_(t.inv_w.dadx == 0.0f && t.inv_w.dady == 0.0f), affine_rcp_(1.0f / t.inv_w.a0),
           height_(float(height)) {}
 
-    // Plane p at the lanes' pixels (x, y), each lane as PlaneEquation::at (or at_fused).
+    // Plane p at the lanes' pixels (x, y), each lane as PlaneEquation::at (or at_fused). Always
+    // inlined, as the two below: where sixteen floats are not one register (AVX2), a call passes
+    // them and its result through memory, in pieces a whole load cannot be forwarded from.
     template <bool Fused>
-    static lanes16::Floats at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
+    [[gnu::always_inline]] static lanes16::Floats at(const PlaneEquation& p, const lanes16::Floats& x, const lanes16::Floats& y) {
         return at_row<Fused>(p.dady, at_column<Fused>(p, x), y);
     }
     // The same in two steps, as both forms add x's term first: x's term (a0 + dadx x, fused
     // fma(dadx, x, a0)), which a column of pixels shares, then y's.
     template <bool Fused>
-    static lanes16::Floats at_column(const PlaneEquation& p, const lanes16::Floats& x) {
+    [[gnu::always_inline]] static lanes16::Floats at_column(const PlaneEquation& p, const lanes16::Floats& x) {
         using lanes16::broadcast;
         if constexpr (Fused) {
             return lanes16::fma(broadcast(p.dadx), x, broadcast(p.a0));
@@ -50,11 +52,34 @@ public:
         }
     }
     template <bool Fused>
-    static lanes16::Floats at_row(float dady, const lanes16::Floats& column, const lanes16::Floats& y) {
+    [[gnu::always_inline]] static lanes16::Floats at_row(float dady, const lanes16::Floats& column, const lanes16::Floats& y) {
         if constexpr (Fused) {
             return lanes16::fma(lanes16::broadcast(dady), y, column);
         } else {
             return column + dady * y;
+        }
+    }
+    // The same three on register-wide parts (lanes16::Wide), the same operations.
+    template <bool Fused>
+    [[gnu::always_inline]] static lanes16::Wide at(const PlaneEquation& p, const lanes16::Wide& x, const lanes16::Wide& y) {
+        return at_row<Fused>(p.dady, at_column<Fused>(p, x), y);
+    }
+    template <bool Fused>
+    [[gnu::always_inline]] static lanes16::Wide at_column(const PlaneEquation& p, const lanes16::Wide& x) {
+        using Wide = lanes16::Wide;
+        if constexpr (Fused) {
+            return lanes16::fma(Wide::splat(p.dadx), x, Wide::splat(p.a0));
+        } else {
+            return Wide::splat(p.a0) + Wide::splat(p.dadx) * x;
+        }
+    }
+    template <bool Fused>
+    [[gnu::always_inline]] static lanes16::Wide at_row(float dady, const lanes16::Wide& column, const lanes16::Wide& y) {
+        using Wide = lanes16::Wide;
+        if constexpr (Fused) {
+            return lanes16::fma(Wide::splat(dady), y, column);
+        } else {
+            return column + Wide::splat(dady) * y;
         }
     }
 
@@ -64,45 +89,49 @@ public:
         return at<Fused>(z_, x, y);
     }
 
-    // The inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) into `in`.
+    // The inputs of the lanes at pixels (x, y) (framebuffer coordinates, y down) into `in`,
+    // computed on register-wide parts (lanes16::Wide: where sixteen floats are two registers,
+    // lanes16::Floats temporaries went through the stack piece by piece).
     template <bool Fused>
-    [[gnu::always_inline]] void fill(FragmentBatch& in, const lanes16::Floats& x, const lanes16::Floats& y) const {
-        using lanes16::broadcast, lanes16::store, lanes16::Floats;
+    [[gnu::always_inline]] void fill(FragmentBatch& in, const lanes16::Floats& x16, const lanes16::Floats& y16) const {
+        using Wide = lanes16::Wide;
+        const auto splat = [](float v) { return Wide::splat(v); };
+        const Wide x = lanes16::to_wide(x16), y = lanes16::to_wide(y16);
         if (frag_coord_) {
-            store(in.frag_coord[0], x + 0.5f);
-            store(in.frag_coord[1], height_ - (y + 0.5f));  // GL window y points up
-            store(in.frag_coord[2], at<Fused>(z_, x, y));
-            store(in.frag_coord[3], at<Fused>(inv_w_, x, y));
+            (x + splat(0.5f)).store(in.frag_coord[0]);
+            (splat(height_) - (y + splat(0.5f))).store(in.frag_coord[1]);  // GL window y points up
+            at<Fused>(z_, x, y).store(in.frag_coord[2]);
+            at<Fused>(inv_w_, x, y).store(in.frag_coord[3]);
         } else if (depth_) {
-            store(in.frag_coord[2], at<Fused>(z_, x, y));  // the depth written
+            at<Fused>(z_, x, y).store(in.frag_coord[2]);  // the depth written
         }
         if (analytic_ && frag_coord_) {
             // Framebuffer y points down, GL's up: d/dy_GL = -d/dy_framebuffer.
-            store(in.frag_coord_dx[0], broadcast(z_.dadx));
-            store(in.frag_coord_dy[0], broadcast(-z_.dady));
-            store(in.frag_coord_dx[1], broadcast(inv_w_.dadx));
-            store(in.frag_coord_dy[1], broadcast(-inv_w_.dady));
+            splat(z_.dadx).store(in.frag_coord_dx[0]);
+            splat(-z_.dady).store(in.frag_coord_dy[0]);
+            splat(inv_w_.dadx).store(in.frag_coord_dx[1]);
+            splat(-inv_w_.dady).store(in.frag_coord_dy[1]);
         }
         if (count_ == 0) return;
-        const Floats rcp = affine_ ? broadcast(affine_rcp_) : 1.0f / at<Fused>(inv_w_, x, y);
+        const Wide rcp = affine_ ? splat(affine_rcp_) : splat(1.0f) / at<Fused>(inv_w_, x, y);
         for (int v = 0; v < count_; ++v) {
             const PlaneEquation& p = varyings_[std::size_t(v)];
             const bool flat = flat_ >> v & 1;
             // flat_ holds the noperspective varyings too: neither is divided by the interpolated w.
-            const Floats value = (linear_ >> v & 1) ? at<Fused>(p, x, y) : flat ? broadcast(p.a0) : at<Fused>(p, x, y) * rcp;
-            store(in.varying[v], value);
+            const Wide value = (linear_ >> v & 1) ? at<Fused>(p, x, y) : flat ? splat(p.a0) : at<Fused>(p, x, y) * rcp;
+            value.store(in.varying[v]);
             if (analytic_) {
                 // value = A / W with A, W linear: d(value)/dx = (dA/dx - value dW/dx) / W; a flat
                 // varying enters as 0 (its plane is constant: zero derivatives); a noperspective
                 // one's are its plane's.
                 if (linear_ >> v & 1) {
-                    store(in.varying_dx[v], broadcast(p.dadx));
-                    store(in.varying_dy[v], broadcast(-p.dady));
+                    splat(p.dadx).store(in.varying_dx[v]);
+                    splat(-p.dady).store(in.varying_dy[v]);
                     continue;
                 }
-                const Floats v0 = flat ? broadcast(0.0f) : value;
-                store(in.varying_dx[v], (p.dadx - v0 * inv_w_.dadx) * rcp);
-                store(in.varying_dy[v], -((p.dady - v0 * inv_w_.dady) * rcp));
+                const Wide v0 = flat ? splat(0.0f) : value;
+                ((splat(p.dadx) - v0 * splat(inv_w_.dadx)) * rcp).store(in.varying_dx[v]);
+                (-((splat(p.dady) - v0 * splat(inv_w_.dady)) * rcp)).store(in.varying_dy[v]);
             }
         }
     }
@@ -123,22 +152,30 @@ public:
     public:
         // `lanes_x(i)`: the lanes' x in column i.
         template <class LanesX>
-        ColumnVaryings(const FragmentInputs& in, const LanesX& lanes_x) : rcp_(lanes16::broadcast(in.affine_rcp_)) {
-            for (int v = 0; v < Count; ++v) dady_[v] = in.varyings_[std::size_t(v)].dady;
+        ColumnVaryings(const FragmentInputs& in, const LanesX& lanes_x) : rcp_(Wide::splat(in.affine_rcp_)) {
+            for (int v = 0; v < Count; ++v) dady_[v] = Wide::splat(in.varyings_[std::size_t(v)].dady);
             for (int i = 0; i < Columns; ++i) {
                 const lanes16::Floats x = lanes_x(i);
-                for (int v = 0; v < Count; ++v) column_[i][v] = at_column<Fused>(in.varyings_[std::size_t(v)], x);
+                for (int v = 0; v < Count; ++v) {
+                    const lanes16::Floats column = at_column<Fused>(in.varyings_[std::size_t(v)], x);
+                    column_[i][v] = lanes16::to_wide(column);
+                }
             }
         }
-        // The inputs of the block in column i whose lanes' y is y.
+        // The inputs of the block in column i whose lanes' y is y: at_row's value, in registers.
         [[gnu::always_inline]] void fill(FragmentBatch& batch, int i, const lanes16::Floats& y) const {
-            for (int v = 0; v < Count; ++v) lanes16::store(batch.varying[v], at_row<Fused>(dady_[v], column_[i][v], y) * rcp_);
+            const Wide wy = lanes16::to_wide(y);
+            for (int v = 0; v < Count; ++v) {
+                const Wide value = Fused ? lanes16::fma(dady_[v], wy, column_[i][v]) : column_[i][v] + dady_[v] * wy;
+                (value * rcp_).store(batch.varying[v]);
+            }
         }
 
     private:
-        lanes16::Floats column_[Columns][Count];
-        lanes16::Floats rcp_;
-        float dady_[Count];
+        using Wide = lanes16::Wide;  // the block's values in registers (core/lanes16.h: why)
+        Wide column_[Columns][Count];
+        Wide rcp_;
+        Wide dady_[Count];
     };
 
 private:

@@ -39,6 +39,20 @@ inline constexpr bool kWidePairs = true;
 inline constexpr bool kWidePairs = false;
 #endif
 
+// How many lanes of float a shader that does not ask for wide batches is run on at once: one
+// register's worth where a batch would take two (AVX2: the batch's halves, two quads or eight
+// pixels each, one after the other). It is the choice ShaderInfo::wide_batches makes on AVX-512,
+// one width down: one register per value, or two for the shaders whose dependency chains gain
+// more from two independent instructions per operation than they lose to values that no longer
+// fit the sixteen registers. 5x Perlin's and Worley's bodies (no wide batches) take 0.67 and 0.85
+// of their time as two runs of eight; Perlin's (wide batches) 1.3x as long (GCC 12, Zen 4, an
+// AVX2 build).
+#if defined(__AVX__) && !defined(__AVX512F__)
+inline constexpr int kNarrowLanes = kBatchLanes / 2;
+#else
+inline constexpr int kNarrowLanes = kBatchLanes;
+#endif
+
 // What a fragment stage that may discard returns (one that never does returns its colour).
 template <class F>
 struct FragmentOut {
@@ -88,6 +102,14 @@ void store_pair(const F& v, float* a, float* b) {
     std::memcpy(a, both, kBatchLanes * sizeof(float));
     std::memcpy(b, both + kBatchLanes, kBatchLanes * sizeof(float));
 }
+
+// How many fragments one F holds.
+template <class F>
+inline constexpr int lanes_of = F::size;
+template <class G>
+inline constexpr int lanes_of<Dual2<G>> = lanes_of<G>;
+template <class L>
+inline constexpr int lanes_of<Checked<L>> = lanes_of<L>;
 
 // A fragment stage's colour and discarded lanes (bit i: lane i), whichever it returns.
 template <class F>
@@ -174,18 +196,18 @@ public:
             case Derivatives::None:
                 if constexpr (!kNeeds.derivatives) {
                     return dbl ? shade_as<Pixels<double, kBatchLanes>, None, Precision::Double>(in, u, out)
-                               : shade_as<Pixels<float, kBatchLanes>, None>(in, u, out);
+                               : shade_as<Pixels<float, kFloatLanes>, None>(in, u, out);
                 } else {
                     throw std::logic_error(std::string(kInfo.name) +
                                            " takes derivatives: it cannot be shaded per pixel");
                 }
             case Derivatives::Fine:
                 return dbl ? shade_as<Quads<double, kBatchQuads, DerivativeRule::Fine>, Fine, Precision::Double>(in, u, out)
-                           : shade_as<Quads<float, kBatchQuads, DerivativeRule::Fine>, Fine>(in, u, out);
+                           : shade_as<Quads<float, kFloatQuads, DerivativeRule::Fine>, Fine>(in, u, out);
             case Derivatives::CoarseLower:
-                return shade_as<Quads<float, kBatchQuads, DerivativeRule::CoarseLower>, CoarseLower>(in, u, out);
+                return shade_as<Quads<float, kFloatQuads, DerivativeRule::CoarseLower>, CoarseLower>(in, u, out);
             case Derivatives::CoarseUpper:
-                return shade_as<Quads<float, kBatchQuads, DerivativeRule::CoarseUpper>, CoarseUpper>(in, u, out);
+                return shade_as<Quads<float, kFloatQuads, DerivativeRule::CoarseUpper>, CoarseUpper>(in, u, out);
             case Derivatives::Analytic:
                 return dbl ? shade_as<Dual2<Pixels<double, kBatchLanes>>, Analytic, Precision::Double>(in, u, out)
                            : shade_as<Dual2<Pixels<float, kBatchLanes>>, Analytic>(in, u, out);
@@ -213,6 +235,10 @@ public:
     }
 
 private:
+    // The lanes and quads of one run in float pixels and quads (kNarrowLanes above).
+    static constexpr int kFloatLanes = kInfo.wide_batches ? kBatchLanes : kNarrowLanes;
+    static constexpr int kFloatQuads = kFloatLanes / 4;
+
     // The shader's own uniforms at their initial values, for callers that set none (tests and
     // benchmarks drawing without a scene).
     static constexpr std::size_t kUserUniforms = kInfo.uniforms.size();
@@ -267,12 +293,23 @@ private:
         }
     }
 
+    // The batch through the shader, in runs of F's lanes. Flattened: a whole batch is the
+    // shader's body itself, halves one body that the loop enters twice.
     template <class F>
     QS_FLATTEN static void run(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
-        const auto result = fragment<F>(in, u);
+        constexpr int lanes = program_detail::lanes_of<F>;
+        static_assert(kBatchLanes % lanes == 0 && lanes % 4 == 0, "runs of whole quads");
+        out.discarded = 0;
+        for (int first = 0; first < kBatchLanes; first += lanes) run_lanes<F>(in, first, u, out);
+    }
+
+    // Lanes first .. first + F's lanes - 1 of the batch.
+    template <class F>
+    QS_FLATTEN static void run_lanes(const FragmentBatch& in, int first, const Uniforms& u, ColorBatch& out) {
+        const auto result = fragment<F>(in, first, u);
         const glsl::vec4<F>& c = program_detail::color_of(result);
-        for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k]);
-        out.discarded = program_detail::discarded_of(result);
+        for (int k = 0; k < 4; ++k) program_detail::store(c[k], out.rgba[k] + first);
+        out.discarded |= program_detail::discarded_of(result) << first;
     }
 
     template <class F>
@@ -293,7 +330,7 @@ private:
     // Not flattened: a debugging mode, and flattening the checks would multiply compile time.
     template <class F>
     static void run_checked(const FragmentBatch& in, const Uniforms& u, ColorBatch& out) {
-        const auto result = fragment<F>(in, u);
+        const auto result = fragment<F>(in, 0, u);
         const glsl::vec4<F>& c = program_detail::color_of(result);
         for (int k = 0; k < 4; ++k) c[k].store(out.rgba[k]);
         out.discarded = program_detail::discarded_of(result);
@@ -301,12 +338,14 @@ private:
         for (int i = 0; i < kBatchLanes; ++i) out.undefined[i] = cases.at(i);
     }
 
-    // The shader's inputs in number type F, and its output: a colour or a FragmentOut.
+    // The shader's inputs in number type F from lane `first` of the batch on, and its output: a
+    // colour or a FragmentOut.
     template <class F>
-    static auto fragment(const FragmentBatch& in, const Uniforms& u) {
+    static auto fragment(const FragmentBatch& in, int first, const Uniforms& u) {
         using program_detail::load;
         FragmentIn<F, Stage> f;
         if constexpr (is_dual2<F>::value) {
+            static_assert(program_detail::lanes_of<F> == kBatchLanes, "analytic derivatives: whole batches");
             // gl_FragCoord: d(x)/dx = 1, d(y)/dy = 1; z and 1/w come with their derivatives.
             alignas(64) float ones[kBatchLanes], zeros[kBatchLanes];
             for (int i = 0; i < kBatchLanes; ++i) ones[i] = 1.0f, zeros[i] = 0.0f;
@@ -314,10 +353,10 @@ private:
                               load<F>(in.frag_coord[2], in.frag_coord_dx[0], in.frag_coord_dy[0]),
                               load<F>(in.frag_coord[3], in.frag_coord_dx[1], in.frag_coord_dy[1])};
         } else {
-            f.gl_FragCoord = {load<F>(in.frag_coord[0], nullptr, nullptr), load<F>(in.frag_coord[1], nullptr, nullptr),
-                              load<F>(in.frag_coord[2], nullptr, nullptr), load<F>(in.frag_coord[3], nullptr, nullptr)};
+            f.gl_FragCoord = {load<F>(in.frag_coord[0] + first, nullptr, nullptr), load<F>(in.frag_coord[1] + first, nullptr, nullptr),
+                              load<F>(in.frag_coord[2] + first, nullptr, nullptr), load<F>(in.frag_coord[3] + first, nullptr, nullptr)};
         }
-        load_varyings(f, [&](int v) { return load<F>(in.varying[v], in.varying_dx[v], in.varying_dy[v]); });
+        load_varyings(f, [&](int v) { return load<F>(in.varying[v] + first, in.varying_dx[v] + first, in.varying_dy[v] + first); });
         return Shader::template fragment<F>(f, u);
     }
 
