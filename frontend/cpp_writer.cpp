@@ -1732,7 +1732,8 @@ std::string without_version_line(const std::string& text) {
             k = line.find_first_not_of(" \t", k + 1);
             version = k != std::string::npos && line.compare(k, 7, "version") == 0;
         }
-        out += (first ? "" : "\n") + (version ? std::string() : line);
+        if (!first) out += '\n';
+        if (!version) out += line;
         first = false;
     }
     if (!text.empty() && text.back() == '\n') out += "\n";

@@ -81,7 +81,11 @@ std::string type_name(const glslang::TType& t) {
             s = prefix + std::to_string(t.getVectorSize());
         }
     }
-    if (t.isArray()) s += "[" + std::to_string(t.getOuterArraySize()) + "]";
+    if (t.isArray()) {
+        s += '[';
+        s += std::to_string(t.getOuterArraySize());
+        s += ']';
+    }
     return s;
 }
 
