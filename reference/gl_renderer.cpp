@@ -570,6 +570,102 @@ GlSceneRenderer::~GlSceneRenderer() {
     }
 }
 
+// Culling and blending for object i, as glTF asks.
+void GlSceneRenderer::set_state(std::size_t i, const Pose& pose) {
+    const Object& o = scene_.objects[i];
+    // glTF: a material that is not doubleSided culls back faces; a mirroring node turns its
+    // front faces clockwise. An atlas bake draws every triangle, in texture space.
+    if (o.double_sided || request_.atlas) {
+        glDisable(GL_CULL_FACE);
+    } else {
+        glEnable(GL_CULL_FACE);
+        glFrontFace(mirrors(pose, i) ? GL_CW : GL_CCW);
+    }
+    // glTF's alphaMode BLEND, for the default material: blended over what is drawn, no depth writes.
+    const bool blend =
+        o.look.alpha_mode == AlphaMode::Blend && shaders_[i] == kDefaultMaterialShader && !request_.atlas;
+    if (blend) {
+        glEnable(GL_BLEND);
+    } else {
+        glDisable(GL_BLEND);
+    }
+    glDepthMask(blend ? GL_FALSE : GL_TRUE);
+}
+
+// Object i's uniforms in its program p: the scene's transforms, time and frame size, the
+// material's and --uniform's values, its textures' units.
+void GlSceneRenderer::set_uniforms(std::size_t i, const Pose& pose, double time, double aspect) {
+    const Object& o = scene_.objects[i];
+    const GLuint p = programs_[i];
+    const int width = context_.width(), height = context_.height();
+    if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, float(time));
+    const ObjectTransforms transforms = object_transforms(scene_, pose, i, aspect);
+    for (const MatrixBinding& m : matrices_[i]) {
+        switch (m.matrix) {
+            case SceneMatrix::ModelViewProjection:
+                glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model_view_projection));
+                break;
+            case SceneMatrix::Model: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model)); break;
+            case SceneMatrix::View: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.view)); break;
+            case SceneMatrix::Projection:
+                glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.projection));
+                break;
+            case SceneMatrix::Normal: glUniformMatrix3fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.normal)); break;
+        }
+    }
+    if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
+        glUniform2f(loc, float(width), float(height));
+    }
+    // The scene's values where the program has the uniform, then the material's and --uniform's.
+    const std::vector<std::pair<std::string, GLenum>> active = active_uniforms(p);
+    for (const UniformSetting& s : object_uniforms(scene_, i, pose, aspect)) {
+        for (const auto& [name, type] : active) {
+            if (name == s.name && gl_uniform_type(type).components == int(s.values.size())) {
+                set_uniform(glGetUniformLocation(p, name.c_str()), type, s.values);
+            }
+        }
+    }
+    for (const UniformValue& u : uniforms_[i]) set_uniform(u.location, u.type, u.values);
+    for (const Binding& b : bound_[i]) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + b.unit));
+        glBindTexture(b.texture->target, b.texture->id);
+        glUniform1i(b.location, b.unit);
+    }
+    if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) {
+        const int teximage = o.texture_for("teximage");
+        const Texture& t = teximage < 0 ? white(2) : textures_[std::size_t(teximage)];
+        if (!t.id) throw std::runtime_error(o.material + ": dims without teximage");
+        glUniform2f(loc, float(t.width), float(t.height));
+    }
+}
+
+// Object i's mesh through its program's vertex inputs.
+void GlSceneRenderer::draw_mesh(std::size_t i) {
+    const Object& o = scene_.objects[i];
+    const Mesh& mesh = scene_.meshes[o.mesh];
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].position);
+    glNormalPointer(GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].normal);
+    glColorPointer(4, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].color);
+    for (const GLenum unit : {GL_TEXTURE0, GL_TEXTURE1}) {  // gl_MultiTexCoord0, gl_MultiTexCoord1
+        glClientActiveTexture(unit);
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex),
+                          unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
+    }
+    glClientActiveTexture(GL_TEXTURE0);
+    const std::string& shader = shaders_[i];
+    for (const AttributeBinding& a : attributes_[i]) {
+        const AttributeArray array = attribute_array(mesh, a.attribute, shader, "");
+        glEnableVertexAttribArray(GLuint(a.location));
+        glVertexAttribPointer(GLuint(a.location), array.components, GL_FLOAT, GL_FALSE, sizeof(Vertex), array.first);
+    }
+    glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
+    for (const AttributeBinding& a : attributes_[i]) glDisableVertexAttribArray(GLuint(a.location));
+}
+
 void GlSceneRenderer::draw() {
     context_.make_current();
     const int width = context_.width(), height = context_.height();
@@ -585,93 +681,16 @@ void GlSceneRenderer::draw() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     for (const std::size_t i : scene_.draw_order(pose)) {
-        const Object& o = scene_.objects[i];
-        const GLuint p = programs_[i];
-        glUseProgram(p);
+        glUseProgram(programs_[i]);
         // The scene model's MVP, as the projection; gl_ModelViewProjectionMatrix = P * I.
         const glm::mat4 mvp = scene_.clip_from_object(pose, i, aspect);
         glMatrixMode(GL_PROJECTION);
         glLoadMatrixf(glm::value_ptr(mvp));
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
-        // glTF: a material that is not doubleSided culls back faces; a mirroring node turns its
-        // front faces clockwise. An atlas bake draws every triangle, in texture space.
-        if (o.double_sided || request_.atlas) {
-            glDisable(GL_CULL_FACE);
-        } else {
-            glEnable(GL_CULL_FACE);
-            glFrontFace(mirrors(pose, i) ? GL_CW : GL_CCW);
-        }
-        // glTF's alphaMode BLEND, for the default material: blended over what is drawn, no depth writes.
-        const bool blend =
-            o.look.alpha_mode == AlphaMode::Blend && shaders_[i] == kDefaultMaterialShader && !request_.atlas;
-        if (blend) {
-            glEnable(GL_BLEND);
-        } else {
-            glDisable(GL_BLEND);
-        }
-        glDepthMask(blend ? GL_FALSE : GL_TRUE);
-        if (GLint loc = glGetUniformLocation(p, "time"); loc >= 0) glUniform1f(loc, float(time));
-        const ObjectTransforms transforms = object_transforms(scene_, pose, i, aspect);
-        for (const MatrixBinding& m : matrices_[i]) {
-            switch (m.matrix) {
-                case SceneMatrix::ModelViewProjection:
-                    glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model_view_projection));
-                    break;
-                case SceneMatrix::Model: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.model)); break;
-                case SceneMatrix::View: glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.view)); break;
-                case SceneMatrix::Projection:
-                    glUniformMatrix4fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.projection));
-                    break;
-                case SceneMatrix::Normal: glUniformMatrix3fv(m.location, 1, GL_FALSE, glm::value_ptr(transforms.normal)); break;
-            }
-        }
-        if (GLint loc = glGetUniformLocation(p, std::string(kResolutionUniform).c_str()); loc >= 0) {
-            glUniform2f(loc, float(width), float(height));
-        }
-        // The scene's values where the program has the uniform, then the material's and --uniform's.
-        const std::vector<std::pair<std::string, GLenum>> active = active_uniforms(p);
-        for (const UniformSetting& s : object_uniforms(scene_, i, pose, aspect)) {
-            for (const auto& [name, type] : active) {
-                if (name == s.name && gl_uniform_type(type).components == int(s.values.size())) {
-                    set_uniform(glGetUniformLocation(p, name.c_str()), type, s.values);
-                }
-            }
-        }
-        for (const UniformValue& u : uniforms_[i]) set_uniform(u.location, u.type, u.values);
-        for (const Binding& b : bound_[i]) {
-            glActiveTexture(GLenum(GL_TEXTURE0 + b.unit));
-            glBindTexture(b.texture->target, b.texture->id);
-            glUniform1i(b.location, b.unit);
-        }
-        if (GLint loc = glGetUniformLocation(p, "dims"); loc >= 0) {
-            const int teximage = o.texture_for("teximage");
-            const Texture& t = teximage < 0 ? white(2) : textures_[std::size_t(teximage)];
-            if (!t.id) throw std::runtime_error(o.material + ": dims without teximage");
-            glUniform2f(loc, float(t.width), float(t.height));
-        }
-        const Mesh& mesh = scene_.meshes[o.mesh];
-        glEnableClientState(GL_VERTEX_ARRAY);
-        glEnableClientState(GL_NORMAL_ARRAY);
-        glEnableClientState(GL_COLOR_ARRAY);
-        glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].position);
-        glNormalPointer(GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].normal);
-        glColorPointer(4, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].color);
-        for (const GLenum unit : {GL_TEXTURE0, GL_TEXTURE1}) {  // gl_MultiTexCoord0, gl_MultiTexCoord1
-            glClientActiveTexture(unit);
-            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-            glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex),
-                              unit == GL_TEXTURE0 ? &mesh.vertices[0].texcoord : &mesh.vertices[0].texcoord1);
-        }
-        glClientActiveTexture(GL_TEXTURE0);
-        const std::string& shader = shaders_[i];
-        for (const AttributeBinding& a : attributes_[i]) {
-            const AttributeArray array = attribute_array(mesh, a.attribute, shader, "");
-            glEnableVertexAttribArray(GLuint(a.location));
-            glVertexAttribPointer(GLuint(a.location), array.components, GL_FLOAT, GL_FALSE, sizeof(Vertex), array.first);
-        }
-        glDrawElements(GL_TRIANGLES, GLsizei(mesh.indices.size()), GL_UNSIGNED_INT, mesh.indices.data());
-        for (const AttributeBinding& a : attributes_[i]) glDisableVertexAttribArray(GLuint(a.location));
+        set_state(i, pose);
+        set_uniforms(i, pose, time, aspect);
+        draw_mesh(i);
     }
     glDepthMask(GL_TRUE);
     glFinish();

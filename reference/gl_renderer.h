@@ -133,6 +133,9 @@ private:
     AttributeArray attribute_array(const Mesh& mesh, VertexAttribute attribute, const std::string& shader,
                                    const std::string& name) const;
     void prepare(GlPrograms& programs);
+    void set_state(std::size_t i, const Pose& pose);
+    void set_uniforms(std::size_t i, const Pose& pose, double time, double aspect);
+    void draw_mesh(std::size_t i);
     std::vector<UniformValue> uniform_values(unsigned program, const std::string& shader,
                                              const std::vector<UniformSetting>& settings, const std::filesystem::path& glsl_dir) const;
     // `shadow`: for a sampler2DShadow, which reads a depth comparison texture (and only it does).
