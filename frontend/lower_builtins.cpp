@@ -276,6 +276,42 @@ int StageLowering::sampler_of(TIntermTyped* node) {
     refuse(node, "a sampler must be a uniform, an element of a uniform array at a constant index, or a parameter");
 }
 
+// texelFetch and texelFetchOffset: integer texel coordinates, a level (0 where none is given).
+Place StageLowering::eval_texel_fetch(glslang::TOperator op, int slot, int dims, const std::vector<Place>& v) {
+    const Place coords = convert_bits(v[0], B::Int);
+    const Place lod = v.size() > 1 ? convert_bits(v[1], B::Int) : Place{{B::Int, int_constant(0)}};
+    const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
+    std::uint32_t c = 0;
+    if (op == glslang::EOpTextureFetchOffset) {
+        const Place offset = convert_bits(v[2], B::Int);
+        c = consecutive(Place(offset.begin(), offset.begin() + dims));
+    }
+    Place r = temps(B::Float, 4);
+    ir::Instr& e = emit(op == glslang::EOpTextureFetch ? ir::Op::TexelFetch : ir::Op::TexelFetchOffset);
+    e.d = r[0].reg, e.a = a, e.b = lod[0].reg, e.c = c, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+    return r;
+}
+
+// textureSize at a level (0 where none is given).
+Place StageLowering::eval_texture_size(int slot, int dims, const std::vector<Place>& v) {
+    Place r = temps(B::Int, dims);
+    const Place lod = v.empty() ? Place{{B::Int, int_constant(0)}} : convert_bits(v[0], B::Int);
+    ir::Instr& e = emit(ir::Op::TextureSize);
+    e.d = r[0].reg, e.b = lod[0].reg, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+    return r;
+}
+
+// textureQueryLod: the level an implicit lookup at the coordinates would take, from the quad.
+Place StageLowering::eval_query_lod(TIntermTyped* node, int slot, int dims, const std::vector<Place>& v) {
+    if (kind_ == StageKind::Vertex) refuse(node, "textureQueryLod exists in fragment shaders only");
+    stage_.derivatives = true;  // the quad's, as an implicit lookup's
+    const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + dims));
+    Place r = temps(B::Float, 2);
+    ir::Instr& e = emit(ir::Op::TextureQueryLod);
+    e.d = r[0].reg, e.a = a, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
+    return r;
+}
+
 Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, const std::vector<TIntermTyped*>& args) {
     const int slot = sampler_of(args[0]);
     const int dims = interface_.program.samplers[std::size_t(slot)].dims;
@@ -341,27 +377,8 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         case glslang::EOpTextureProjGrad: return gradient(project(v[0]), v[1], v[2], nullptr);
         case glslang::EOpTextureGradOffset: return gradient(v[0], v[1], v[2], &v[3]);
         case glslang::EOpTextureProjGradOffset: return gradient(project(v[0]), v[1], v[2], &v[3]);
-        case glslang::EOpTextureFetch: case glslang::EOpTextureFetchOffset: {
-            const Place coords = convert_bits(v[0], B::Int);
-            const Place lod = v.size() > 1 ? convert_bits(v[1], B::Int) : Place{{B::Int, int_constant(0)}};
-            const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
-            std::uint32_t c = 0;
-            if (op == glslang::EOpTextureFetchOffset) {
-                const Place offset = convert_bits(v[2], B::Int);
-                c = consecutive(Place(offset.begin(), offset.begin() + dims));
-            }
-            Place r = temps(B::Float, 4);
-            ir::Instr& e = emit(op == glslang::EOpTextureFetch ? ir::Op::TexelFetch : ir::Op::TexelFetchOffset);
-            e.d = r[0].reg, e.a = a, e.b = lod[0].reg, e.c = c, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
-            return r;
-        }
-        case glslang::EOpTextureQuerySize: {
-            Place r = temps(B::Int, dims);
-            const Place lod = v.empty() ? Place{{B::Int, int_constant(0)}} : convert_bits(v[0], B::Int);
-            ir::Instr& e = emit(ir::Op::TextureSize);
-            e.d = r[0].reg, e.b = lod[0].reg, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
-            return r;
-        }
+        case glslang::EOpTextureFetch: case glslang::EOpTextureFetchOffset: return eval_texel_fetch(op, slot, dims, v);
+        case glslang::EOpTextureQuerySize: return eval_texture_size(slot, dims, v);
         case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
             // The channel is a constant expression (glslang checks it is one, 0 to 3).
             const bool offset = op == glslang::EOpTextureGatherOffset;
@@ -378,15 +395,7 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
             stage_.code.back().m = std::uint8_t(comp);
             return r;
         }
-        case glslang::EOpTextureQueryLod: {
-            if (vertex) refuse(node, "textureQueryLod exists in fragment shaders only");
-            stage_.derivatives = true;  // the quad's, as an implicit lookup's
-            const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + dims));
-            Place r = temps(B::Float, 2);
-            ir::Instr& e = emit(ir::Op::TextureQueryLod);
-            e.d = r[0].reg, e.a = a, e.n = std::uint8_t(dims), e.count = std::uint16_t(slot);
-            return r;
-        }
+        case glslang::EOpTextureQueryLod: return eval_query_lod(node, slot, dims, v);
         default: break;
     }
     const char* name = "this texture function";
