@@ -39,6 +39,7 @@ namespace {
 std::unique_ptr<glsl::Texture> load_cube(const Scene& scene, const Texture& texture, std::uint64_t* loading_bytes) {
     static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
     std::array<Image8, 6> faces;
+    std::uint64_t held = 0;  // the faces read so far, all kept until the cube map is made
     for (std::size_t f = 0; f < 6; ++f) {
         const std::string where = scene.file.string() + ": " + texture.field + "[" + std::to_string(f) + "] (face " + kFaces[f] + "): ";
         std::uint64_t loading = 0;
@@ -47,7 +48,8 @@ std::unique_ptr<glsl::Texture> load_cube(const Scene& scene, const Texture& text
         } catch (const ImageError& e) {
             throw SceneError(where + e.what());
         }
-        if (loading_bytes) *loading_bytes = std::max(*loading_bytes, loading);
+        if (loading_bytes) *loading_bytes = std::max(*loading_bytes, held + loading);
+        held += faces[f].rgba.size();
         const Image8& image = faces[f];
         if (image.width != image.height) {
             throw SceneError(where + "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +

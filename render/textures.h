@@ -18,8 +18,9 @@ glsl::SamplerState sampler_state(const Sampler& sampler);
 // A glsl::sampler2D or, for a texture with dims 3, a glsl::sampler3D, for a cube map a
 // glsl::samplerCube (shading/glsl/texture_cube.h). Throws SceneError naming the scene file and the
 // texture's field (a cube map's face by its index) when an image cannot be read, its rows do not
-// divide into the texture's depth, or a cube map's faces are not square or not of one size. `loading_bytes`, when given, receives the most the loading
-// held at once beside the texture it made (read_texture_image's decoding_bytes).
+// divide into the texture's depth, or a cube map's faces are not square or not of one size.
+// `loading_bytes`, when given, receives the most the loading held at once beside the texture it
+// made (read_texture_image's decoding_bytes; a cube map's faces read before each one included).
 std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& texture,
                                             std::uint64_t* loading_bytes = nullptr);
 

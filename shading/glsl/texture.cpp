@@ -543,6 +543,12 @@ LevelLanes face_level_lanes(const Texture& tex, const Ints& level, const Ints* f
     if (face) lv.offset = lv.offset + *face * lv.width * lv.height;
     return lv;
 }
+// Level 0's lanes [base, base + n), on the faces `faces` gives them (or none).
+LevelLanes level0_lanes(const Texture& tex, const std::int32_t* faces, int base, int n) {
+    if (!faces) return level_lanes(tex, Ints{});
+    const Ints face = load_lanes<Ints>(faces, base, n);
+    return face_level_lanes(tex, Ints{}, &face);
+}
 template <int Dims>
 struct Axes {
     Axis a[Dims];
@@ -1268,6 +1274,13 @@ Axis gather_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const I
     return a;
 }
 
+// A depth comparison texel's test against the reference value: 1 where it passes, else 0;
+// ordered, as GL_LEQUAL (ref <= depth), the one compare function supported.
+Floats depth_passes(const Floats& ref, const Uints& texel) {
+    const Ints pass = ref <= unorm(channel(texel, 0));
+    return pass ? splat(1.0f) : Floats{};
+}
+
 // The two axes of a lookup's lanes [base, base + n): its s and t (and texel offsets, where it has
 // them) handed to `axis(i, coordinate, offset or null)`.
 template <class Lookup, class Axis>
@@ -1287,21 +1300,16 @@ void gather_channel(const Texture& tex, const Gather& g) {
     const std::array<bool, 3> pot = pot_sizes<2>(tex);
     for (int base = 0; base < g.lanes; base += L) {
         const int n = std::min(g.lanes - base, L);
-        Ints face{};
-        if (g.face) face = load_lanes<Ints>(g.face, base, n);
-        const LevelLanes lv = face_level_lanes(tex, Ints{}, g.face ? &face : nullptr);
+        const LevelLanes lv = level0_lanes(tex, g.face, base, n);
         const Axes<2> ax = axes_of(g, base, n, [&](int i, const Floats& c, const Ints* offset) {
             return gather_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], offset);
         });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Uints order[4] = {k.k[0][1][0], k.k[0][1][1], k.k[0][0][1], k.k[0][0][0]};
         if (g.ref) {
-            // each texel's comparison, as a shadow lookup's (GL_LEQUAL: ref <= depth)
+            // each texel's comparison, as a shadow lookup's
             const Floats ref = load_lanes(g.ref, base, n);
-            for (std::size_t c = 0; c < 4; ++c) {
-                const Ints pass = ref <= unorm(channel(order[c], 0));
-                store_lanes(g.out[c], base, n, pass ? splat(1.0f) : Floats{});
-            }
+            for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, depth_passes(ref, order[c]));
             continue;
         }
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
@@ -1317,20 +1325,14 @@ void sample_shadow(const Texture& tex, const ShadowLookup& l) {
     const Ints linear = tex.sampler.mag == Filter::Linear ? splat(-1) : Ints{};
     for (int base = 0; base < l.lanes; base += L) {
         const int n = std::min(l.lanes - base, L);
-        Ints face{};
-        if (l.face) face = load_lanes<Ints>(l.face, base, n);
-        const LevelLanes lv = face_level_lanes(tex, Ints{}, l.face ? &face : nullptr);
+        const LevelLanes lv = level0_lanes(tex, l.face, base, n);
         const Axes<2> ax = axes_of(l, base, n, [&](int i, const Floats& c, const Ints* offset) {
             return soa_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, Ints{}, offset);
         });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Floats ref = load_lanes(l.ref, base, n);
-        const auto passes = [&](const Uints& texel) {
-            const Ints pass = ref <= unorm(channel(texel, 0));
-            return pass ? splat(1.0f) : Floats{};
-        };
-        const Floats r0 = lerp(ax.a[0].w, passes(k.k[0][0][0]), passes(k.k[0][0][1]));
-        const Floats r1 = lerp(ax.a[0].w, passes(k.k[0][1][0]), passes(k.k[0][1][1]));
+        const Floats r0 = lerp(ax.a[0].w, depth_passes(ref, k.k[0][0][0]), depth_passes(ref, k.k[0][0][1]));
+        const Floats r1 = lerp(ax.a[0].w, depth_passes(ref, k.k[0][1][0]), depth_passes(ref, k.k[0][1][1]));
         store_lanes(l.out, base, n, lerp(ax.a[1].w, r0, r1));
     }
 }

@@ -16,8 +16,6 @@
 //    for an implicit lookup on a texture without mipmaps, which takes its quad's upper-left
 //    pixel's (and the 8-bit path). Measured bit for bit against llvmpipe 22.3 under every filter
 //    (tests/reference/test_glsl_reference.cpp).
-// Where a texture needs no level of detail (or the level is explicit), llvmpipe projects with
-// 0.5 / |ma| (0 where ma is 0); otherwise with |0.5 (1 / ma)|, the same bits for any ma but 0.
 //
 // A cube map is a Texture whose levels each hold the six faces one after another, in GL's order
 // (+X, -X, +Y, -Y, +Z, -Z), every face square; its `dims` is kCubeDims. Apart from texture.h so
@@ -75,6 +73,15 @@ inline CubeFace cube_face(float s, float t, float r) {
     f.face = 2 * f.axis + int(f.sign >> 31);
     return f;
 }
+// The projection onto the face, s = sc scale + 0.5: 0.5 / |ma| (0 where ma is 0), or, where the
+// lookup carries derivatives through it, |0.5 (1 / ma)| as llvmpipe computes it then (the same
+// bits for any ma but 0).
+inline float face_scale(float ma, bool with_derivatives) {
+    if (with_derivatives) return std::fabs(0.5f * (1.0f / ma));
+    const float a = std::fabs(ma);
+    return a > 0.0f ? 0.5f / a : 0.0f;
+}
+
 // The derivative (dx, dy, dz) of the direction mirrored as the face mirrors it: its (d.sc, d.tc)
 // and d.ma.
 struct FaceDerivative {
@@ -106,7 +113,7 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
     constexpr int N = lanes_of<F>();
     constexpr bool derivatives = is_dual2<F>::value;
     alignas(64) float c[3][N], gx[3][N], gy[3][N], s[N], t[N], rho2[N], extra[N], rgba[4][N], d_dc[2][4][N];
-    alignas(64) float ds[2][N], dt[2][N];  // the face coordinates' derivatives along x, y
+    alignas(64) float fdx[3][N], fdy[3][N];  // the face's (s, t) derivatives along x and along y
     alignas(64) std::int32_t face[N];
     for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
     if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*lod_or_bias, extra);
@@ -148,13 +155,7 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
         const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
         face[i] = f.face;
         const float ima = 1.0f / f.ma, imahalf = 0.5f * ima;
-        float scale;
-        if (need_derivs) {
-            scale = std::fabs(imahalf);
-        } else {
-            const float a = std::fabs(f.ma);
-            scale = a > 0.0f ? 0.5f / a : 0.0f;
-        }
+        const float scale = face_scale(f.ma, need_derivs);
         s[i] = f.sc * scale + 0.5f;
         t[i] = f.tc * scale + 0.5f;
         if (!have_derivs) continue;
@@ -163,20 +164,13 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
             const float(&g)[3][N] = a == 0 ? gx : gy;
             const FaceDerivative d = face_derivative(f, g[0][i], g[1][i], g[2][i]);
             const float ma_over_ma = d.ma * ima;
-            ds[a][i] = (d.sc - ma_over_ma * f.sc) * imahalf;
-            dt[a][i] = (d.tc - ma_over_ma * f.tc) * imahalf;
-        }
-        if (need_derivs) {
-            // lp_build_rho from explicit derivatives: max((W ds/dx)^2 + (H dt/dx)^2, the same
-            // along y), 0 where infinite or NaN
-            float x = size * ds[0][i], y = size * ds[1][i];
-            float xt = size * dt[0][i], yt = size * dt[1][i];
-            x = x * x, y = y * y, xt = xt * xt, yt = yt * yt;
-            x = x + xt, y = y + yt;
-            const float r = x > y ? x : y;
-            rho2[i] = std::isfinite(r) ? r : 0.0f;
+            float(&out)[3][N] = a == 0 ? fdx : fdy;
+            out[0][i] = (d.sc - ma_over_ma * f.sc) * imahalf;
+            out[1][i] = (d.tc - ma_over_ma * f.tc) * imahalf;
         }
     }
+    // lp_build_rho from the face coordinates' derivatives, as from explicit ones
+    if (need_derivs) gradient_rho2<2>(fdx, fdy, {size, size, 0.0f}, rho2);
     // llvmpipe keeps a level of detail per pixel where the texture has mipmaps (its default,
     // GALLIVM_PERF without quad_lod, for a cube map), and where a bias or derivatives are given;
     // an implicit one that only chooses between the minification and magnification filters is
@@ -210,8 +204,8 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
             // d(colour) = d(colour)/ds ds + d(colour)/dt dt, along x and along y
             using T = typename F::value_type;
             const T g_s = from_floats<T>(d_dc[0][ch]), g_t = from_floats<T>(d_dc[1][ch]);
-            const T dx = g_s * from_floats<T>(ds[0]) + g_t * from_floats<T>(dt[0]);
-            const T dy = g_s * from_floats<T>(ds[1]) + g_t * from_floats<T>(dt[1]);
+            const T dx = g_s * from_floats<T>(fdx[0]) + g_t * from_floats<T>(fdx[1]);
+            const T dy = g_s * from_floats<T>(fdy[0]) + g_t * from_floats<T>(fdy[1]);
             out[ch] = F(from_floats<T>(rgba[ch]), dx, dy);
         } else if constexpr (is_checked_v<F>) {
             LaneCases cases = lod_cases | p.x.cases | p.y.cases | p.z.cases;
@@ -239,8 +233,7 @@ F cube_shadow(const Texture& tex, const vec4<F>& p) {
     for (int i = 0; i < N; ++i) {
         const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
         face[i] = f.face;
-        const float a = std::fabs(f.ma);
-        const float scale = a > 0.0f ? 0.5f / a : 0.0f;
+        const float scale = face_scale(f.ma, false);
         s[i] = f.sc * scale + 0.5f;
         t[i] = f.tc * scale + 0.5f;
     }
@@ -263,8 +256,7 @@ vec4<F> cube_gather(const Texture& tex, const vec3<F>& p, int component, const F
     for (int i = 0; i < N; ++i) {
         const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
         face[i] = f.face;
-        const float a = std::fabs(f.ma);
-        const float scale = need_derivs ? std::fabs(0.5f * (1.0f / f.ma)) : a > 0.0f ? 0.5f / a : 0.0f;
+        const float scale = face_scale(f.ma, need_derivs);
         s[i] = f.sc * scale + 0.5f;
         t[i] = f.tc * scale + 0.5f;
     }
