@@ -543,12 +543,6 @@ LevelLanes face_level_lanes(const Texture& tex, const Ints& level, const Ints* f
     if (face) lv.offset = lv.offset + *face * lv.width * lv.height;
     return lv;
 }
-// Level 0's lanes [base, base + n), on the faces `faces` gives them (or none).
-LevelLanes level0_lanes(const Texture& tex, const std::int32_t* faces, int base, int n) {
-    if (!faces) return level_lanes(tex, Ints{});
-    const Ints face = load_lanes<Ints>(faces, base, n);
-    return face_level_lanes(tex, Ints{}, &face);
-}
 template <int Dims>
 struct Axes {
     Axis a[Dims];
@@ -1272,6 +1266,13 @@ Axis gather_axis(const Floats& s, const Ints& size, Wrap wrap, bool pot, const I
     a.i0 = cvt_trunc(c - 0.5f);
     a.i1 = imin(cvt_trunc(c + 0.5f), size - 1);
     return a;
+}
+
+// Level 0's lanes [base, base + n), on the faces `faces` gives them (or none).
+LevelLanes level0_lanes(const Texture& tex, const std::int32_t* faces, int base, int n) {
+    if (!faces) return level_lanes(tex, Ints{});
+    const Ints face = load_lanes<Ints>(faces, base, n);
+    return face_level_lanes(tex, Ints{}, &face);
 }
 
 // A depth comparison texel's test against the reference value: 1 where it passes, else 0;
