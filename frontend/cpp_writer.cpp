@@ -1055,7 +1055,11 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             refuse(node, "a texture lookup in a vertex shader");
         }
         case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
-            if (args[0]->getAsTyped()->getType().getSampler().dim == glslang::EsdCube) return cube_lookup(op, node, args, v);
+            const glslang::TSampler& sampler = args[0]->getAsTyped()->getType().getSampler();
+            if (sampler.dim == glslang::EsdCube) return cube_lookup(op, node, args, v);
+            if (sampler.isShadow()) {
+                return fn(op == glslang::EOpTextureGather ? "textureGatherCompare" : "textureGatherOffsetCompare");
+            }
             // The channel, a constant expression, as the plain int the function takes.
             const std::size_t comp_arg = op == glslang::EOpTextureGatherOffset ? 3 : 2;
             if (args.size() > comp_arg) {
@@ -1065,7 +1069,13 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             }
             return fn(op == glslang::EOpTextureGather ? "textureGather" : "textureGatherOffset");
         }
-        case glslang::EOpTextureQueryLod: return fn("textureQueryLod");
+        case glslang::EOpTextureQueryLod: {
+            const glslang::TSampler& sampler = args[0]->getAsTyped()->getType().getSampler();
+            if (sampler.dim == glslang::EsdCube && sampler.isShadow()) {
+                refuse(node, "textureQueryLod on a samplerCubeShadow");
+            }
+            return fn("textureQueryLod");
+        }
         default: break;
     }
     refuse(node, "this built-in function");
@@ -1865,17 +1875,18 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "        .needs = {.coordinates = Coordinates::" << coordinates
       << ", .derivatives = " << (p.fragment.derivatives ? "true" : "false");
     bool texture = false;
-    std::vector<std::pair<std::string, int>> samplers;
+    std::vector<const ir::Sampler*> samplers;
     for (const ir::Sampler& s : p.samplers) {
-        if (s.name == "teximage" && s.dims == 2) texture = true;
-        else samplers.push_back({s.name, s.dims});
+        if (s.name == "teximage" && s.dims == 2 && !s.shadow) texture = true;
+        else samplers.push_back(&s);
     }
     h << ", .texture = " << (texture ? "true" : "false") << ", .time = " << (p.reads_time ? "true" : "false")
       << ", .frag_coord = " << (p.reads_frag_coord ? "true" : "false");
     if (!samplers.empty()) {
         h << ", .samplers = {{";
         for (std::size_t i = 0; i < samplers.size(); ++i) {
-            h << (i ? ", " : "") << "{" << string_literal(samplers[i].first) << ", " << samplers[i].second << "}";
+            h << (i ? ", " : "") << "{" << string_literal(samplers[i]->name) << ", " << samplers[i]->dims
+              << (samplers[i]->shadow ? ", true}" : "}");
         }
         h << "}}";
     }

@@ -89,7 +89,7 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TexelFetchOffset) /* ... at I[a..] + I[c..] */                                                  \
     X(TextureSize)  /* I[d..] = textureSize(s, I[b]) */                                               \
     X(TextureGather)       /* d..d+3 = textureGather(s, a..a+n-1, m): channel m of level 0's texels */ \
-                           /*   (m = 4: a samplerCubeShadow's, each compared with F[b]) */            \
+                           /*   (m = 4: a shadow sampler's, each compared with F[b]) */                \
     X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
     X(TextureShadow)       /* d = a shadow sampler's comparison of a+n with the depth at a..a+n-1 */  \

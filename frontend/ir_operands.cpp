@@ -135,7 +135,10 @@ Operands operands(const Instr& in) {
             o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n);
             if (in.m == 4) o.add(Field::B, F);
             break;
-        case Op::TextureGatherOffset: o.add(Field::D, F, 4, true), o.add(Field::A, F, 2), o.add(Field::C, I, 2); break;
+        case Op::TextureGatherOffset:
+            o.add(Field::D, F, 4, true), o.add(Field::A, F, 2), o.add(Field::C, I, 2);
+            if (in.m == 4) o.add(Field::B, F);
+            break;
         case Op::TextureQueryLod: o.add(Field::D, F, 2, true), o.add(Field::A, F, in.n); break;
         case Op::TextureShadow: o.add(Field::D, F, 1, true), o.add(Field::A, F, in.n + 1u); break;
         case Op::TextureShadowOffset: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3), o.add(Field::C, I, 2); break;
@@ -181,11 +184,11 @@ void validate(const Stage& stage, int samplers) {
             if (op.span == 0 || last > stage.registers[std::size_t(op.bank)]) fail(at, "a register outside the stage's");
         }
         if (is_texture(in.op) && (int(in.count) >= samplers || in.n < 1 || in.n > 3)) fail(at, "no such sampler");
-        // a cube map's gather takes a direction, and a samplerCubeShadow's compares (channel 4)
-        if (in.op == Op::TextureGather && !(in.n == 2 && in.m <= 3) && !(in.n == 3 && in.m <= 4)) {
+        // a cube map's gather takes a direction; a shadow sampler's compares (channel 4)
+        if (in.op == Op::TextureGather && ((in.n != 2 && in.n != 3) || in.m > 4)) {
             fail(at, "a gather of no such channel");
         }
-        if (in.op == Op::TextureGatherOffset && (in.n != 2 || in.m > 3)) fail(at, "a gather of no such channel");
+        if (in.op == Op::TextureGatherOffset && (in.n != 2 || in.m > 4)) fail(at, "a gather of no such channel");
         switch (in.op) {
             case Op::If: case Op::LoopBegin: case Op::SwitchBegin: case Op::CallBegin: open.push_back(in.op); break;
             case Op::Else:

@@ -313,6 +313,12 @@ Place StageLowering::eval_query_lod(TIntermTyped* node, int slot, int dims, cons
 }
 
 Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, const std::vector<TIntermTyped*>& args) {
+    switch (op) {
+        case glslang::EOpTextureGatherOffsets: refuse(node, "textureGatherOffsets is not supported");
+        case glslang::EOpTextureQueryLevels: refuse(node, "textureQueryLevels is not supported");
+        case glslang::EOpTextureQuerySamples: refuse(node, "textureSamples is not supported");
+        default: break;
+    }
     const int slot = sampler_of(args[0]);
     const int dims = interface_.program.samplers[std::size_t(slot)].dims;
     std::vector<Place> v;
@@ -348,7 +354,9 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     };
     const bool vertex = kind_ == StageKind::Vertex;
     if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
-    if (interface_.program.samplers[std::size_t(slot)].shadow && op != glslang::EOpTextureQuerySize) {
+    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
+    const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset;
+    if (shadow && !gather && op != glslang::EOpTextureQuerySize && op != glslang::EOpTextureQueryLod) {
         return eval_shadow(op, node, slot, v);
     }
     const Place zero{{B::Float, float_constant(0.0f)}};
@@ -380,8 +388,15 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         case glslang::EOpTextureFetch: case glslang::EOpTextureFetchOffset: return eval_texel_fetch(op, slot, dims, v);
         case glslang::EOpTextureQuerySize: return eval_texture_size(slot, dims, v);
         case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
-            // The channel is a constant expression (glslang checks it is one, 0 to 3).
             const bool offset = op == glslang::EOpTextureGatherOffset;
+            if (shadow) {
+                // the reference value in F[b], marked by channel 4; the offset after it
+                Place r = lookup(offset ? ir::Op::TextureGatherOffset : ir::Op::TextureGather, v[0], &v[1], nullptr,
+                                 nullptr, offset ? &v[2] : nullptr);
+                stage_.code.back().m = 4;
+                return r;
+            }
+            // The channel is a constant expression (glslang checks it is one, 0 to 3).
             const std::size_t comp_arg = offset ? 3 : 2;
             int comp = 0;
             if (args.size() > comp_arg) {
@@ -398,13 +413,7 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         case glslang::EOpTextureQueryLod: return eval_query_lod(node, slot, dims, v);
         default: break;
     }
-    const char* name = "this texture function";
-    switch (op) {
-        case glslang::EOpTextureGatherOffsets: name = "textureGatherOffsets"; break;
-        case glslang::EOpTextureQueryLevels: name = "textureQueryLevels"; break;
-        default: break;
-    }
-    refuse(node, std::string(name) + " is not supported (supported: texture, texture2D, texture3D with or without a "
+    refuse(node, "this texture function is not supported (supported: texture, texture2D, texture3D with or without a "
                  "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
                  "textureGather, textureGatherOffset, textureQueryLod)");
 }
@@ -442,6 +451,12 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
         e.d = r[0].reg, e.b = lod[0].reg, e.n = 2, e.count = std::uint16_t(slot);
         return r;
     }
+    if (op == glslang::EOpTextureQueryLod) {
+        // measured: llvmpipe's level there does not follow the direction's projection (a direction
+        // scaled 64-fold across the image kept one level), so it is not modelled
+        if (shadow) refuse(node, "textureQueryLod on a samplerCubeShadow is not supported (on a samplerCube it is)");
+        return eval_query_lod(node, slot, 3, v);
+    }
     if (shadow) {
         if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) {
             refuse(node, "this texture function on a samplerCubeShadow is not supported (texture with or without a bias, "
@@ -478,7 +493,7 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
         default: break;
     }
     refuse(node, "this texture function on a samplerCube is not supported (texture and textureCube with or without a "
-                 "bias, textureLod, textureCubeLod, textureGrad, textureGather and textureSize are)");
+                 "bias, textureLod, textureCubeLod, textureGrad, textureGather, textureSize and textureQueryLod are)");
 }
 
 // A lookup in a sampler2DShadow: P is (s, t, the reference value), (s, t, r, q) projected. A depth

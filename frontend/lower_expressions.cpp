@@ -551,6 +551,10 @@ Place StageLowering::eval_increment(TIntermUnary* node) {
 
 Place StageLowering::eval_unary(TIntermUnary* node) {
     const glslang::TOperator op = node->getOp();
+    // a texture function of the sampler alone (textureQueryLevels)
+    if (glslang::EOpTextureGuardBegin < op && op < glslang::EOpTextureGuardEnd) {
+        return eval_texture(op, node, {node->getOperand()});
+    }
     switch (op) {
         case glslang::EOpPostIncrement: case glslang::EOpPostDecrement: case glslang::EOpPreIncrement:
         case glslang::EOpPreDecrement:

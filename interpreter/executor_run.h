@@ -508,8 +508,13 @@ void Machine<F>::texture(const ir::Instr& in) {
         if (in.op == ir::Op::TexelFetchOffset) return glsl::texelFetchOffset<F>(s, ints_at(in.a), i_[in.b], ints_at(in.c));
         const glsl::vec<F, N> p = vector_at<N>(in.a);
         if constexpr (N == 2) {
-            if (in.op == ir::Op::TextureGather) return glsl::textureGather(s, p, in.m);
-            if (in.op == ir::Op::TextureGatherOffset) return glsl::textureGatherOffset(s, p, ints_at(in.c), in.m);
+            if (in.op == ir::Op::TextureGather) {
+                return in.m == 4 ? glsl::textureGatherCompare(s, p, f_[in.b]) : glsl::textureGather(s, p, in.m);
+            }
+            if (in.op == ir::Op::TextureGatherOffset) {
+                return in.m == 4 ? glsl::textureGatherOffsetCompare(s, p, f_[in.b], ints_at(in.c))
+                                 : glsl::textureGatherOffset(s, p, ints_at(in.c), in.m);
+            }
         }
         switch (in.op) {
             case ir::Op::Texture: return glsl::texture(s, p);
@@ -543,6 +548,11 @@ void Machine<F>::cube_texture(const ir::Instr& in, const glsl::samplerCube& cube
         return;
     }
     const glsl::vec3<F> p = vector_at<3>(in.a);
+    if (in.op == ir::Op::TextureQueryLod) {
+        const glsl::vec2<F> q = glsl::textureQueryLod(cube, p);
+        for (int i = 0; i < 2; ++i) put(in, f_[in.d + std::uint32_t(i)], q[i]);
+        return;
+    }
     glsl::vec<F, 4> c;
     switch (in.op) {
         case ir::Op::Texture: c = glsl::textureCube(cube, p); break;

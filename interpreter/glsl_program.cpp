@@ -56,7 +56,7 @@ GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled) :
     samplers_.fill(-1);
     int other = 0;
     for (std::size_t s = 0; s < p.samplers.size(); ++s) {
-        if (p.samplers[s].name == "teximage" && p.samplers[s].dims == 2) {
+        if (p.samplers[s].name == "teximage" && p.samplers[s].dims == 2 && !p.samplers[s].shadow) {
             needs.texture = true;
             teximage_ = int(s);
             continue;
@@ -64,7 +64,8 @@ GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled) :
         if (other == kMaxSamplers) {
             throw frontend::GlslUnsupported(where + "more than " + std::to_string(kMaxSamplers) + " samplers besides teximage");
         }
-        needs.samplers[std::size_t(other)] = {strings_.emplace_back(p.samplers[s].name), p.samplers[s].dims};
+        needs.samplers[std::size_t(other)] = {strings_.emplace_back(p.samplers[s].name), p.samplers[s].dims,
+                                              p.samplers[s].shadow};
         samplers_[std::size_t(other++)] = int(s);
     }
     for (const ir::Uniform& u : p.uniforms) {

@@ -425,7 +425,7 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
         throw std::runtime_error(what + " but " + source.field + " is " +
                                  (source.dims == kCubeMap ? std::string("a cube map") : std::to_string(source.dims) + "D texture"));
     }
-    if (source.compare != shadow) {
+    if (source.compare.has_value() != shadow) {
         throw std::runtime_error(what + " but " + source.field +
                                  (shadow ? " is not a depth comparison texture" : " is a depth comparison texture"));
     }
@@ -457,7 +457,7 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
     } else if (source.compare) {
         // The depth is the red byte as llvmpipe turns a unorm8 into a float (times the float
         // nearest 1/255), uploaded as floats so that no conversion (GL_DEPTH_COMPONENT from bytes
-        // is 24-bit unorm) comes between; GL_LEQUAL is GL's default compare function.
+        // is 24-bit unorm) comes between.
         if (image.sixteen_bits) {
             throw std::runtime_error(scene_.file.string() + ": " + source.field +
                                      ": a depth comparison texture is an 8-bit image (its red channel is the depth)");
@@ -467,7 +467,7 @@ const GlSceneRenderer::Texture& GlSceneRenderer::texture_of(const Object& o, con
         glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, image.width, image.height, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                      depth.data());
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GLint(*source.compare));
     } else {
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, type, image.bytes.data());
     }
@@ -524,7 +524,7 @@ const GlSceneRenderer::Texture& GlSceneRenderer::upload_cube(const qs::Texture& 
     }
     if (source.compare) {
         glTexParameteri(t.target, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTexParameteri(t.target, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        glTexParameteri(t.target, GL_TEXTURE_COMPARE_FUNC, GLint(*source.compare));  // GL's values
     }
     const Sampler& s = source.sampler;
     glTexParameteri(t.target, GL_TEXTURE_MIN_FILTER, gl_enum(s.min_filter));

@@ -91,12 +91,9 @@ namespace {
 // and the sampled texture, which this file passes from one to the next.
 static_assert(kCubeMap == glsl::kCubeDims && ir::kCubeSampler == glsl::kCubeDims);
 
-// Whether `program` is GLSL run by the interpreter whose sampler `uniform` is a shadow sampler;
-// nullopt for a shader of C++, which says nothing of it.
-std::optional<bool> shadow_sampler(const Program& program, std::string_view uniform) {
-    const auto* glsl = dynamic_cast<const interpreter::GlslProgram*>(&program);
-    if (!glsl) return std::nullopt;
-    for (const ir::Sampler& s : glsl->program().samplers) {
+// Whether the sampler `uniform` of `program` is a shadow sampler.
+bool shadow_sampler(const Program& program, std::string_view uniform) {
+    for (const SamplerUse& s : program.info().needs.samplers) {
         if (s.name == uniform) return s.shadow;
     }
     return false;
@@ -133,7 +130,7 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
         return white_texture(dims);
     }
     const Texture& source = scene_.textures[std::size_t(index)];
-    const std::optional<bool> shadow = shadow_sampler(program, uniform);
+    const bool shadow = shadow_sampler(program, uniform);
     const bool cube = dims == glsl::kCubeDims;
     const auto kind = [](int d, bool depth) {
         return std::string(d == glsl::kCubeDims ? (depth ? "samplerCubeShadow" : "samplerCube")
@@ -145,7 +142,7 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
     };
     if (source.dims != dims) {
         throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples a " +
-                         kind(dims, shadow.value_or(false)) + " '" + std::string(uniform) + "' but " + source.field + " is " +
+                         kind(dims, shadow) + " '" + std::string(uniform) + "' but " + source.field + " is " +
                          texture_kind(source) +
                          (dims == 3 ? " (a 3D texture's binding gives its depth)"
                           : cube    ? " (a cube map's binding gives its six faces)"
@@ -153,10 +150,10 @@ const glsl::Texture& SceneRenderer::texture_for(const Object& o, const Program& 
     }
     // A shadow sampler reads a depth comparison texture, and only it does (GL leaves either
     // mismatch undefined).
-    if (shadow && *shadow != source.compare) {
+    if (shadow != source.compare.has_value()) {
         throw SceneError(scene_.file.string() + ": " + o.material + ": shader '" + shader + "' samples a " +
-                         kind(dims, *shadow) + " '" + std::string(uniform) + "' but " + source.field +
-                         (*shadow ? " is not a depth comparison texture (its binding needs \"compare\": \"LEQUAL\")"
+                         kind(dims, shadow) + " '" + std::string(uniform) + "' but " + source.field +
+                         (shadow ? " is not a depth comparison texture (its binding needs a \"compare\" function)"
                                   : " is a depth comparison texture, for a " + kind(dims, true)));
     }
     std::unique_ptr<glsl::Texture>& t = textures_[std::size_t(index)];

@@ -10,7 +10,8 @@
 
 namespace qs {
 
-glsl::SamplerState sampler_state(const Sampler& s) {
+glsl::SamplerState sampler_state(const Texture& texture) {
+    const Sampler& s = texture.sampler;
     auto wrap = [](Wrap w) {
         switch (w) {
             case Wrap::Repeat: return glsl::Wrap::Repeat;
@@ -30,6 +31,10 @@ glsl::SamplerState sampler_state(const Sampler& s) {
     r.mip = s.min_filter == Filter::NearestMipmapNearest || s.min_filter == Filter::LinearMipmapNearest ? glsl::MipFilter::Nearest
             : uses_mipmaps(s.min_filter)                                                                  ? glsl::MipFilter::Linear
                                                                                                           : glsl::MipFilter::None;
+    if (texture.compare) {
+        // scenes' CompareFunc holds GL's values, NEVER to ALWAYS in glsl::CompareFunc's order
+        r.compare = glsl::CompareFunc(int(*texture.compare) - int(CompareFunc::Never));
+    }
     return r;
 }
 
@@ -64,7 +69,7 @@ std::unique_ptr<glsl::Texture> load_cube(const Scene& scene, const Texture& text
     std::array<const std::uint8_t*, 6> rgba;
     for (std::size_t f = 0; f < 6; ++f) rgba[f] = faces[f].rgba.data();
     try {
-        return std::make_unique<glsl::samplerCube>(faces[0].width, rgba, sampler_state(texture.sampler));
+        return std::make_unique<glsl::samplerCube>(faces[0].width, rgba, sampler_state(texture));
     } catch (const std::invalid_argument& e) {
         throw SceneError(scene.file.string() + ": " + texture.field + ": " + e.what());
     }
@@ -78,14 +83,15 @@ std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& t
     try {
         const Image8 image = read_texture_image(texture.image, loading_bytes);
         if (texture.dims == 2) {
-            return std::make_unique<glsl::sampler2D>(image.width, image.height, image.rgba.data(), sampler_state(texture.sampler));
+            return std::make_unique<glsl::sampler2D>(image.width, image.height, image.rgba.data(),
+                                                     sampler_state(texture));
         }
         if (image.height % texture.depth != 0) {
             throw SceneError(where + "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                              " image does not stack " + std::to_string(texture.depth) + " slices of equal height");
         }
         return std::make_unique<glsl::sampler3D>(image.width, image.height / texture.depth, texture.depth, image.rgba.data(),
-                                                 sampler_state(texture.sampler));
+                                                 sampler_state(texture));
     } catch (const ImageError& e) {
         throw SceneError(where + e.what());
     } catch (const std::invalid_argument& e) {

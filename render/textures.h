@@ -13,7 +13,9 @@
 
 namespace qs {
 
-glsl::SamplerState sampler_state(const Sampler& sampler);
+// The sampler state of a texture: its glTF sampler, and its compare function where it is a depth
+// comparison texture.
+glsl::SamplerState sampler_state(const Texture& texture);
 
 // A glsl::sampler2D or, for a texture with dims 3, a glsl::sampler3D, for a cube map a
 // glsl::samplerCube (shading/glsl/texture_cube.h). Throws SceneError naming the scene file and the

@@ -28,8 +28,9 @@
 //        "wrapR": 33071,         the r axis's wrap (3D only; glTF has none): REPEAT by default;
 //        "compare": "LEQUAL" }   a depth comparison texture for a sampler2DShadow (2D), or with
 //                                faces a samplerCubeShadow: the image's (each face's) red
-//                                channel is the depth (red / 255), compared with
-//                                GL_LEQUAL (the one function supported, GL's default); its
+//                                channel is the depth (red / 255), compared by the
+//                                function (GL's names without GL_: NEVER, LESS, EQUAL,
+//                                LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS); its
 //                                sampler's minFilter is NEAREST or LINEAR, the same as magFilter;
 //    "teximage" may be bound this way too (instead of baseColorTexture; not with extras.teximage).
 //    Volumes are 8-bit images (PNG), as a GL_RGBA8 3D texture holds them;

@@ -734,14 +734,15 @@ private:
             const tinygltf::Value& w = v.Get("wrapR");
             sampler.wrap_r = wrap_of(w.IsInt() ? w.Get<int>() : -1, field + ".wrapR");
         }
-        bool compare = false;
+        std::optional<CompareFunc> compare;
         if (v.Has("compare")) {
             const tinygltf::Value& c = v.Get("compare");
-            if (!c.IsString() || c.Get<std::string>() != "LEQUAL") {
-                fail(file_, field + ".compare", "expected \"LEQUAL\" (the one compare function supported, GL's default)");
+            if (c.IsString()) compare = compare_func_named(c.Get<std::string>());
+            if (!compare) {
+                fail(file_, field + ".compare",
+                     "expected a compare function: NEVER, LESS, EQUAL, LEQUAL, GREATER, NOTEQUAL, GEQUAL or ALWAYS");
             }
             if (dims == 3) fail(file_, field + ".compare", "a depth comparison texture is 2D or a cube map (no depth)");
-            compare = true;
         }
         if (v.Has("image") && !v.Get("image").IsString()) fail(file_, field + ".image", "expected a file name");
         const int t = v.Has("faces")   ? cube_texture(v.Get("faces"), field + ".faces", sampler, compare)
@@ -766,7 +767,7 @@ private:
     }
 
     int texture_index(const tinygltf::Value& v, const std::string& field, const Sampler& sampler, bool own_sampler, int dims,
-                      int depth, bool compare = false) {
+                      int depth, std::optional<CompareFunc> compare = std::nullopt) {
         if (!v.IsInt()) fail(file_, field, "expected a textures[] index");
         Texture t = read_texture(v.Get<int>(), field);
         const Wrap wrap_r = sampler.wrap_r;
@@ -777,7 +778,7 @@ private:
     }
 
     int file_texture(const std::string& uri, const std::string& field, const Sampler& sampler, int dims, int depth,
-                     bool compare = false) {
+                     std::optional<CompareFunc> compare = std::nullopt) {
         Texture t;
         t.field = field;
         t.image = named_file(uri, field);
@@ -788,7 +789,8 @@ private:
 
     // A cube map from six image files in GL's face order (+X, -X, +Y, -Y, +Z, -Z); their sizes
     // are checked when the images are read.
-    int cube_texture(const tinygltf::Value& v, const std::string& field, const Sampler& sampler, bool compare) {
+    int cube_texture(const tinygltf::Value& v, const std::string& field, const Sampler& sampler,
+                     std::optional<CompareFunc> compare) {
         if (!v.IsArray() || v.ArrayLen() != 6) {
             fail(file_, field, "expected an array of six image files, the faces +X, -X, +Y, -Y, +Z, -Z");
         }

@@ -137,11 +137,12 @@ tinygltf::Value samplers_value(const Scene& scene, const std::vector<SamplerBind
             tinygltf::Value::Array faces;
             for (const ImageSource& f : t.faces) faces.emplace_back(fs::relative(f.file, path.parent_path()).generic_string());
             tinygltf::Value::Object cube{{"faces", tinygltf::Value(std::move(faces))}, {"sampler", tinygltf::Value(b.texture)}};
-            if (t.compare) cube["compare"] = tinygltf::Value(std::string("LEQUAL"));
+            if (t.compare) cube["compare"] = tinygltf::Value(std::string(compare_func_name(*t.compare)));
             named[b.uniform] = tinygltf::Value(std::move(cube));
         } else if (t.compare) {
             named[b.uniform] = tinygltf::Value(tinygltf::Value::Object{
-                {"texture", tinygltf::Value(b.texture)}, {"compare", tinygltf::Value(std::string("LEQUAL"))}});
+                {"texture", tinygltf::Value(b.texture)},
+                {"compare", tinygltf::Value(std::string(compare_func_name(*t.compare)))}});
         } else if (t.dims == 2) {
             named[b.uniform] = tinygltf::Value(b.texture);
         } else {

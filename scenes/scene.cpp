@@ -10,6 +10,32 @@
 
 namespace qs {
 
+namespace {
+struct NamedCompareFunc {
+    std::string_view name;
+    CompareFunc func;
+};
+constexpr NamedCompareFunc kCompareFuncs[] = {
+    {"NEVER", CompareFunc::Never},     {"LESS", CompareFunc::Less},       {"EQUAL", CompareFunc::Equal},
+    {"LEQUAL", CompareFunc::LessEqual}, {"GREATER", CompareFunc::Greater}, {"NOTEQUAL", CompareFunc::NotEqual},
+    {"GEQUAL", CompareFunc::GreaterEqual}, {"ALWAYS", CompareFunc::Always},
+};
+}  // namespace
+
+std::string_view compare_func_name(CompareFunc f) {
+    for (const NamedCompareFunc& n : kCompareFuncs) {
+        if (n.func == f) return n.name;
+    }
+    return "?";
+}
+
+std::optional<CompareFunc> compare_func_named(std::string_view name) {
+    for (const NamedCompareFunc& n : kCompareFuncs) {
+        if (n.name == name) return n.func;
+    }
+    return std::nullopt;
+}
+
 glm::dmat4 Camera::projection(double aspect) const {
     if (kind == Kind::Orthographic) {
         // glTF's orthographic projection: x / xmag, y / ymag, z mapped from [-znear, -zfar]; the

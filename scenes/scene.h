@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -95,6 +96,23 @@ enum class Filter : int {
 // Whether a minification filter reads mipmaps.
 constexpr bool uses_mipmaps(Filter f) { return int(f) >= int(Filter::NearestMipmapNearest); }
 
+// A depth comparison texture's function (GL_TEXTURE_COMPARE_FUNC, with GL's enum values): a
+// lookup passes where `reference FUNC depth` holds.
+enum class CompareFunc : int {
+    Never = 0x0200,
+    Less = 0x0201,
+    Equal = 0x0202,
+    LessEqual = 0x0203,
+    Greater = 0x0204,
+    NotEqual = 0x0205,
+    GreaterEqual = 0x0206,
+    Always = 0x0207,
+};
+// The name a scene file gives it, GL's without the GL_ prefix ("LEQUAL"); the function of a name,
+// or none.
+std::string_view compare_func_name(CompareFunc f);
+std::optional<CompareFunc> compare_func_named(std::string_view name);
+
 // glTF leaves the filters to the client when a sampler omits them ("auto filtering"); these are
 // the usual choice of glTF viewers (trilinear), and the wraps are glTF's defaults. wrap_r, for 3D
 // textures, is no glTF field: the material's extras give it (gltf.h), REPEAT like the others.
@@ -129,11 +147,11 @@ struct Texture {
     int dims = 2;
     int depth = 1;
     std::vector<ImageSource> faces;
-    // A depth comparison texture, for a sampler2DShadow (or a samplerCubeShadow, of a cube map):
-    // the image's red channel is the depth (red / 255), compared with GL_LEQUAL, GL's default
-    // function; one level (no mipmapped minification filter) and one filter for minification and
+    // Set for a depth comparison texture, read by a sampler2DShadow (or a samplerCubeShadow, of a
+    // cube map): the image's red channel is the depth (red / 255), compared with this function;
+    // one level (no mipmapped minification filter) and one filter for minification and
     // magnification.
-    bool compare = false;
+    std::optional<CompareFunc> compare;
     // What names it, for messages: "materials[0].pbrMetallicRoughness.baseColorTexture (images[1])"
     // or "materials[0].extras.teximage".
     std::string field;

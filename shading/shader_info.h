@@ -23,12 +23,14 @@ enum class Coordinates {
 
 inline constexpr int kMaxSamplers = 4;
 
-// A sampler uniform a shader declares besides `teximage`: its GLSL name, and whether it is a
-// sampler2D or a sampler3D. Scenes bind a texture to it by name (scenes/gltf.h: a material's
-// extras.textures).
+// A sampler uniform a shader declares besides `teximage`: its GLSL name, its kind (2: sampler2D,
+// 3: sampler3D, 6: samplerCube, glsl::kCubeDims) and whether it is a shadow sampler
+// (sampler2DShadow, samplerCubeShadow), which reads a depth comparison texture and nothing else.
+// Scenes bind a texture to it by name (scenes/gltf.h: a material's extras.textures).
 struct SamplerUse {
     std::string_view name;  // empty: none
     int dims = 2;
+    bool shadow = false;
 };
 
 // What a shader uses, so that the renderer leaves out everything else.

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "images/image_io.h"
@@ -12,9 +13,10 @@
 namespace qs::test {
 
 // Six square faces of `size` texels written to `dir` (face0.png .. face5.png, +X to -Z) and the
-// scene texture of them (`compare`: a depth comparison cube map, whose depth is each face's red).
-inline Texture cube_map(const std::filesystem::path& dir, int size, const Sampler& sampler, bool compare,
-                        const std::string& field) {
+// scene texture of them (with `compare`: a depth comparison cube map, whose depth is each face's
+// red, compared by that function).
+inline Texture cube_map(const std::filesystem::path& dir, int size, const Sampler& sampler,
+                        std::optional<CompareFunc> compare, const std::string& field) {
     Texture t;
     t.dims = kCubeMap;
     t.sampler = sampler;

@@ -1275,10 +1275,22 @@ LevelLanes level0_lanes(const Texture& tex, const std::int32_t* faces, int base,
     return face_level_lanes(tex, Ints{}, &face);
 }
 
-// A depth comparison texel's test against the reference value: 1 where it passes, else 0;
-// ordered, as GL_LEQUAL (ref <= depth), the one compare function supported.
-Floats depth_passes(const Floats& ref, const Uints& texel) {
-    const Ints pass = ref <= unorm(channel(texel, 0));
+// A depth comparison texel's test against the reference value, `ref FUNC depth`: 1 where it
+// passes, else 0. Ordered comparisons but NOTEQUAL's, which a NaN passes (D3D10's rule, which
+// lp_build_sample_comparefunc follows); C's operators on vectors are exactly these.
+Floats depth_passes(CompareFunc func, const Floats& ref, const Uints& texel) {
+    const Floats depth = unorm(channel(texel, 0));
+    Ints pass{};
+    switch (func) {
+        case CompareFunc::Never: break;
+        case CompareFunc::Less: pass = ref < depth; break;
+        case CompareFunc::Equal: pass = ref == depth; break;
+        case CompareFunc::LessEqual: pass = ref <= depth; break;
+        case CompareFunc::Greater: pass = ref > depth; break;
+        case CompareFunc::NotEqual: pass = ref != depth; break;
+        case CompareFunc::GreaterEqual: pass = ref >= depth; break;
+        case CompareFunc::Always: pass = splat(-1); break;
+    }
     return pass ? splat(1.0f) : Floats{};
 }
 
@@ -1310,7 +1322,9 @@ void gather_channel(const Texture& tex, const Gather& g) {
         if (g.ref) {
             // each texel's comparison, as a shadow lookup's
             const Floats ref = load_lanes(g.ref, base, n);
-            for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, depth_passes(ref, order[c]));
+            for (std::size_t c = 0; c < 4; ++c) {
+                store_lanes(g.out[c], base, n, depth_passes(tex.sampler.compare, ref, order[c]));
+            }
             continue;
         }
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
@@ -1318,8 +1332,8 @@ void gather_channel(const Texture& tex, const Gather& g) {
 }
 
 // lp_build_sample_image_nearest and _linear with a comparison (lp_bld_sample_soa.c): level 0's
-// texel, or its four bilinear texels, each compared with the reference value (ordered, as
-// GL_LEQUAL: ref <= depth), the 0/1 results blended with the bilinear weights as colours are
+// texel, or its four bilinear texels, each compared with the reference value by the sampler's
+// function, the 0/1 results blended with the bilinear weights as colours are
 // (lp_build_masklerp2d). The float path's coordinates, as a GL_DEPTH_COMPONENT32F texture's.
 void sample_shadow(const Texture& tex, const ShadowLookup& l) {
     const std::array<bool, 3> pot = pot_sizes<2>(tex);
@@ -1332,8 +1346,9 @@ void sample_shadow(const Texture& tex, const ShadowLookup& l) {
         });
         const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
         const Floats ref = load_lanes(l.ref, base, n);
-        const Floats r0 = lerp(ax.a[0].w, depth_passes(ref, k.k[0][0][0]), depth_passes(ref, k.k[0][0][1]));
-        const Floats r1 = lerp(ax.a[0].w, depth_passes(ref, k.k[0][1][0]), depth_passes(ref, k.k[0][1][1]));
+        const auto passes = [&](const Uints& texel) { return depth_passes(tex.sampler.compare, ref, texel); };
+        const Floats r0 = lerp(ax.a[0].w, passes(k.k[0][0][0]), passes(k.k[0][0][1]));
+        const Floats r1 = lerp(ax.a[0].w, passes(k.k[0][1][0]), passes(k.k[0][1][1]));
         store_lanes(l.out, base, n, lerp(ax.a[1].w, r0, r1));
     }
 }

@@ -35,10 +35,14 @@ enum class Wrap : std::uint8_t { Repeat, MirroredRepeat, ClampToEdge };
 enum class Filter : std::uint8_t { Nearest, Linear };
 enum class MipFilter : std::uint8_t { None, Nearest, Linear };
 
+// A shadow lookup's test of a depth texel (GL_TEXTURE_COMPARE_FUNC): it passes where
+// `reference FUNC depth` holds.
+enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
 struct SamplerState {
     Wrap wrap_s = Wrap::ClampToEdge, wrap_t = Wrap::ClampToEdge, wrap_r = Wrap::ClampToEdge;  // r: 3D only
     Filter mag = Filter::Linear, min = Filter::Linear;
-    MipFilter mip = MipFilter::None;  // the minification filter's mipmap part
+    MipFilter mip = MipFilter::None;                // the minification filter's mipmap part
+    CompareFunc compare = CompareFunc::LessEqual;  // read by the shadow samplers only (GL's default)
 };
 
 // A GL_RGBA8 texture of two or three dimensions with its sampler: what sampler2D and sampler3D

@@ -105,27 +105,46 @@ inline constexpr int quad_tr(int i) { return (i & ~3) | 3; }
 inline constexpr int quad_bl(int i) { return i & ~3; }
 inline constexpr int quad_br(int i) { return (i & ~3) | 1; }
 
-// Every lookup in a samplerCube: the direction p, and what `kind` adds to it (a bias or an
-// explicit level in `lod_or_bias`, derivatives of p in `ddx` and `ddy`).
+// What a checked lane computed from its whole quad's p reads: the quad's cases.
 template <Number F>
-vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod_or_bias, const vec3<F>* ddx,
-                    const vec3<F>* ddy) {
-    constexpr int N = lanes_of<F>();
-    constexpr bool derivatives = is_dual2<F>::value;
-    alignas(64) float c[3][N], gx[3][N], gy[3][N], s[N], t[N], rho2[N], extra[N], rgba[4][N], d_dc[2][4][N];
+LaneCases quad_cases([[maybe_unused]] const vec3<F>& p) {
+    if constexpr (is_checked_v<F>) {
+        constexpr int N = lanes_of<F>();
+        const LaneCases own = p.x.cases | p.y.cases | p.z.cases;
+        const auto at = [](int (*lane)(int)) { return [lane](std::size_t i) { return std::size_t(lane(int(i))); }; };
+        return own.permute(at(quad_tl), N) | own.permute(at(quad_tr), N) | own.permute(at(quad_bl), N) |
+               own.permute(at(quad_br), N);
+    } else {
+        return {};
+    }
+}
+
+// A direction projected onto its faces, lane by lane: the face and its (s, t), and, where the
+// level of detail is wanted, llvmpipe's squared scale factor from the direction's derivatives
+// carried through the projection, and those derivatives of (s, t) (which Dual2 carries on).
+template <int N>
+struct CubeProjection {
+    alignas(64) float s[N], t[N], rho2[N];
     alignas(64) float fdx[3][N], fdy[3][N];  // the face's (s, t) derivatives along x and along y
     alignas(64) std::int32_t face[N];
+    bool have_derivs = false;  // fdx and fdy hold them
+    LaneCases lod_cases;       // a checked lane's level reads its whole quad
+};
+
+// The projection of direction p. `need_derivs`: the level of detail is wanted, from the given
+// derivatives (ddx, ddy), else from Dual2's partials, else from the quad; Dual2 carries its
+// partials through the projection either way.
+template <Number F>
+void project_cube(const Texture& tex, const vec3<F>& p, bool need_derivs, const vec3<F>* ddx, const vec3<F>* ddy,
+                  CubeProjection<lanes_of<F>()>& out) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float c[3][N], gx[3][N], gy[3][N];
     for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
-    if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*lod_or_bias, extra);
-    // llvmpipe carries derivatives through the projection where the texture needs a level of
-    // detail and the lookup gives none; Dual2 carries its partials through it as well.
-    const bool need_derivs = kind != Lod::Explicit && tex.needs_lod();
-    [[maybe_unused]] LaneCases lod_cases;
-    bool have_derivs = derivatives;
-    if (kind == Lod::Gradient && need_derivs) {
+    out.have_derivs = is_dual2<F>::value;
+    if (ddx && need_derivs) {
         for (int k = 0; k < 3; ++k) to_floats((*ddx)[k], gx[k]), to_floats((*ddy)[k], gy[k]);
-        have_derivs = true;
-    } else if constexpr (derivatives) {
+        out.have_derivs = true;
+    } else if constexpr (is_dual2<F>::value) {
         for (int k = 0; k < 3; ++k) to_floats(p[k].dx, gx[k]), to_floats(p[k].dy, gy[k]);
     } else if (need_derivs) {
         if constexpr (QuadNumber<F>) {
@@ -138,39 +157,49 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
                     gy[k][i] = left ? c[k][quad_bl(i)] - c[k][quad_tl(i)] : c[k][quad_br(i)] - c[k][quad_tr(i)];
                 }
             }
-            if constexpr (is_checked_v<F>) {
-                // every lane reads its whole quad
-                const LaneCases own = p.x.cases | p.y.cases | p.z.cases;
-                const auto at = [](int (*lane)(int)) { return [lane](std::size_t i) { return std::size_t(lane(int(i))); }; };
-                lod_cases = own.permute(at(quad_tl), N) | own.permute(at(quad_tr), N) | own.permute(at(quad_bl), N) |
-                            own.permute(at(quad_br), N);
-            }
-            have_derivs = true;
+            out.lod_cases = quad_cases(p);
+            out.have_derivs = true;
         } else {
             throw_lod_without_quads();
         }
     }
-    const float size = float(tex.width);
     for (int i = 0; i < N; ++i) {
         const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
-        face[i] = f.face;
+        out.face[i] = f.face;
         const float ima = 1.0f / f.ma, imahalf = 0.5f * ima;
         const float scale = face_scale(f.ma, need_derivs);
-        s[i] = f.sc * scale + 0.5f;
-        t[i] = f.tc * scale + 0.5f;
-        if (!have_derivs) continue;
+        out.s[i] = f.sc * scale + 0.5f;
+        out.t[i] = f.tc * scale + 0.5f;
+        if (!out.have_derivs) continue;
         // dx.s = 0.5 (dx.sc - sc dx.ma / ma) / ma, in llvmpipe's order of operations
         for (int a = 0; a < 2; ++a) {
             const float(&g)[3][N] = a == 0 ? gx : gy;
             const FaceDerivative d = face_derivative(f, g[0][i], g[1][i], g[2][i]);
             const float ma_over_ma = d.ma * ima;
-            float(&out)[3][N] = a == 0 ? fdx : fdy;
-            out[0][i] = (d.sc - ma_over_ma * f.sc) * imahalf;
-            out[1][i] = (d.tc - ma_over_ma * f.tc) * imahalf;
+            float(&fd)[3][N] = a == 0 ? out.fdx : out.fdy;
+            fd[0][i] = (d.sc - ma_over_ma * f.sc) * imahalf;
+            fd[1][i] = (d.tc - ma_over_ma * f.tc) * imahalf;
         }
     }
     // lp_build_rho from the face coordinates' derivatives, as from explicit ones
-    if (need_derivs) gradient_rho2<2>(fdx, fdy, {size, size, 0.0f}, rho2);
+    const float size = float(tex.width);
+    if (need_derivs) gradient_rho2<2>(out.fdx, out.fdy, {size, size, 0.0f}, out.rho2);
+}
+
+// Every lookup in a samplerCube: the direction p, and what `kind` adds to it (a bias or an
+// explicit level in `lod_or_bias`, derivatives of p in `ddx` and `ddy`).
+template <Number F>
+vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod_or_bias, const vec3<F>* ddx,
+                    const vec3<F>* ddy) {
+    constexpr int N = lanes_of<F>();
+    constexpr bool derivatives = is_dual2<F>::value;
+    alignas(64) float extra[N], rgba[4][N], d_dc[2][4][N];
+    if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*lod_or_bias, extra);
+    // llvmpipe carries derivatives through the projection where the texture needs a level of
+    // detail and the lookup gives none.
+    const bool need_derivs = kind != Lod::Explicit && tex.needs_lod();
+    CubeProjection<N> pr;
+    project_cube<F>(tex, p, need_derivs, kind == Lod::Gradient ? ddx : nullptr, ddy, pr);
     // llvmpipe keeps a level of detail per pixel where the texture has mipmaps (its default,
     // GALLIVM_PERF without quad_lod, for a cube map), and where a bias or derivatives are given;
     // an implicit one that only chooses between the minification and magnification filters is
@@ -179,15 +208,15 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
     if constexpr (QuadNumber<F> && !derivatives) {
         if (quad_lod) {
             float own[N];
-            for (int i = 0; i < N; ++i) own[i] = rho2[i];
-            for (int i = 0; i < N; ++i) rho2[i] = own[quad_tl(i)];
+            for (int i = 0; i < N; ++i) own[i] = pr.rho2[i];
+            for (int i = 0; i < N; ++i) pr.rho2[i] = own[quad_tl(i)];
         }
     }
     for (int i = 0; i < N; i += kMaxLanes) {
         Lookup l;
         l.lanes = N - i < kMaxLanes ? N - i : kMaxLanes;
-        l.s = s + i, l.t = t + i;
-        l.rho2 = need_derivs ? rho2 + i : nullptr;
+        l.s = pr.s + i, l.t = pr.t + i;
+        l.rho2 = need_derivs ? pr.rho2 + i : nullptr;
         l.bias = kind == Lod::Bias ? extra + i : nullptr;
         l.lod = kind == Lod::Explicit ? extra + i : nullptr;
         l.rho2_per_pixel = !quad_lod;
@@ -196,7 +225,7 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
             l.rgba[ch] = rgba[ch] + i;
             if (derivatives) l.d_ds[ch] = d_dc[0][ch] + i, l.d_dt[ch] = d_dc[1][ch] + i;
         }
-        sample_cube(tex, l, face + i);
+        sample_cube(tex, l, pr.face + i);
     }
     vec4<F> out;
     for (int ch = 0; ch < 4; ++ch) {
@@ -204,11 +233,11 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
             // d(colour) = d(colour)/ds ds + d(colour)/dt dt, along x and along y
             using T = typename F::value_type;
             const T g_s = from_floats<T>(d_dc[0][ch]), g_t = from_floats<T>(d_dc[1][ch]);
-            const T dx = g_s * from_floats<T>(fdx[0]) + g_t * from_floats<T>(fdx[1]);
-            const T dy = g_s * from_floats<T>(fdy[0]) + g_t * from_floats<T>(fdy[1]);
+            const T dx = g_s * from_floats<T>(pr.fdx[0]) + g_t * from_floats<T>(pr.fdx[1]);
+            const T dy = g_s * from_floats<T>(pr.fdy[0]) + g_t * from_floats<T>(pr.fdy[1]);
             out[ch] = F(from_floats<T>(rgba[ch]), dx, dy);
         } else if constexpr (is_checked_v<F>) {
-            LaneCases cases = lod_cases | p.x.cases | p.y.cases | p.z.cases;
+            LaneCases cases = pr.lod_cases | p.x.cases | p.y.cases | p.z.cases;
             if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | lod_or_bias->cases;
             if (kind == Lod::Gradient) {
                 for (int k = 0; k < 3; ++k) cases = cases | (*ddx)[k].cases | (*ddy)[k].cases;
@@ -219,6 +248,37 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
         }
     }
     return out;
+}
+
+// textureQueryLod in a cube map: the level of detail an implicit lookup in direction p computes,
+// and the level it reads (query_lod). Where the sampler needs a level of detail, llvmpipe carries
+// the quad's derivatives through the projection, each pixel its own; where it does not (one
+// level, one filter), it projects without them and takes the quad's scale factor from the face
+// coordinates' differences across it, TR - TL and BL - TL, as a 2D texture's (quad_rho2). Dual2
+// carries its partials through the projection either way.
+template <Number F>
+vec2<F> cube_lod_query(const Texture& tex, const vec3<F>& p) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float level[N], lod[N];
+    CubeProjection<N> pr;
+    const bool carried = tex.needs_lod() || is_dual2<F>::value;
+    project_cube<F>(tex, p, carried, nullptr, nullptr, pr);
+    if (!carried) {
+        if constexpr (!QuadNumber<F>) throw_lod_without_quads();
+        const float size = float(tex.width);
+        for (int i = 0; i < N; ++i) {
+            const int tl = quad_tl(i), tr = quad_tr(i), bl = quad_bl(i);
+            float xs = size * (pr.s[tr] - pr.s[tl]), xt = size * (pr.t[tr] - pr.t[tl]);
+            float ys = size * (pr.s[bl] - pr.s[tl]), yt = size * (pr.t[bl] - pr.t[tl]);
+            xs = xs * xs, xt = xt * xt, ys = ys * ys, yt = yt * yt;
+            const float x = xs + xt, y = ys + yt;
+            pr.rho2[i] = x > y ? x : y;
+        }
+        pr.lod_cases = quad_cases(p);
+    }
+    query_lod(tex, {N, pr.rho2, level, lod});
+    const LaneCases cases = pr.lod_cases | cases_of(p.x) | cases_of(p.y) | cases_of(p.z);
+    return vec2<F>(constant_lanes<F>(level, cases), constant_lanes<F>(lod, cases));
 }
 
 // A samplerCubeShadow's comparison at direction p.xyz with reference value p.w: the depth
@@ -319,6 +379,14 @@ template <Number F>
 ivec2<F> textureSize(const samplerCube& tex, const int_t<F>& lod) {
     const auto s = texture_detail::size_query<F, 2>(tex, lod);
     return ivec2<F>(s[0], s[1]);
+}
+
+// textureQueryLod(samplerCube, P): (the mipmap level an implicit lookup in direction P reads, its
+// level of detail relative to the base level), as llvmpipe computes them. Needs the quad's
+// derivatives (quads, or Dual2's partials); under Dual2 the result's derivatives are 0.
+template <Number F>
+vec2<F> textureQueryLod(const samplerCube& tex, const vec3<F>& p) {
+    return texture_detail::cube_lod_query<F>(tex, p);
 }
 
 // texture(samplerCubeShadow, P [, bias]) and textureGrad(samplerCubeShadow, ...): P.w compared

@@ -92,9 +92,10 @@ F constant_lanes(const float* v, [[maybe_unused]] LaneCases cases) {
 }
 
 template <Number F>
-vec4<F> gather_lanes(const Texture& tex, const vec2<F>& p, const ivec2<F>* offset, int component) {
+vec4<F> gather_lanes(const Texture& tex, const vec2<F>& p, const ivec2<F>* offset, int component,
+                     const F* ref = nullptr) {
     constexpr int N = lanes_of<F>();
-    alignas(64) float s[N], t[N], out[4][N];
+    alignas(64) float s[N], t[N], r[N], out[4][N];
     alignas(64) std::int32_t o[2][N];
     to_floats(p.x, s), to_floats(p.y, t);
     Gather g;
@@ -104,6 +105,11 @@ vec4<F> gather_lanes(const Texture& tex, const vec2<F>& p, const ivec2<F>* offse
         to_ints(offset->x, o[0]), to_ints(offset->y, o[1]);
         g.offset = {o[0], o[1]};
         cases = cases | cases_of(offset->x) | cases_of(offset->y);
+    }
+    if (ref) {
+        to_floats(*ref, r);
+        g.ref = r;
+        cases = cases | cases_of(*ref);
     }
     for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
     gather_channel(tex, g);
@@ -134,6 +140,18 @@ vec4<F> textureGather(const sampler2D& tex, const vec2<F>& p, int comp = 0) {
 template <Number F>
 vec4<F> textureGatherOffset(const sampler2D& tex, const vec2<F>& p, const ivec2<F>& offset, int comp = 0) {
     return texture_detail::gather_lanes<F>(tex, p, &offset, comp);
+}
+
+// textureGather(sampler2DShadow, P, refZ) and textureGatherOffset(sampler2DShadow, P, refZ,
+// offset): each of those four texels compared with refZ by the depth comparison texture's
+// function, 1 where it passes, else 0.
+template <Number F>
+vec4<F> textureGatherCompare(const sampler2D& depth, const vec2<F>& p, const F& ref) {
+    return texture_detail::gather_lanes<F>(depth, p, nullptr, 0, &ref);
+}
+template <Number F>
+vec4<F> textureGatherOffsetCompare(const sampler2D& depth, const vec2<F>& p, const F& ref, const ivec2<F>& offset) {
+    return texture_detail::gather_lanes<F>(depth, p, &offset, 0, &ref);
 }
 
 // textureQueryLod(s, P): (the mipmap level an implicit lookup at P reads, its level of detail

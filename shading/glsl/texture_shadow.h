@@ -1,10 +1,11 @@
 #pragma once
 // sampler2DShadow's lookups, as Mesa's llvmpipe answers them on a GL_DEPTH_COMPONENT32F texture
-// with GL_TEXTURE_COMPARE_MODE = GL_COMPARE_REF_TO_TEXTURE and GL's default compare function,
-// GL_LEQUAL: 1 where the reference value is at most the texel's depth, else 0 (a NaN fails),
-// with nearest filtering that of the nearest texel, with linear filtering the four texels'
-// results blended with the bilinear weights (lp_build_sample_compare, lp_build_masklerp2d). The
-// reference value is not clamped, as a float format's is not.
+// with GL_TEXTURE_COMPARE_MODE = GL_COMPARE_REF_TO_TEXTURE and the sampler's compare function
+// (SamplerState::compare, GL_LEQUAL by default): 1 where `reference FUNC depth` holds, else 0 (a
+// NaN fails every function but NOTEQUAL, which it passes), with nearest filtering that of the
+// nearest texel, with linear filtering the four texels' results blended with the bilinear
+// weights (lp_build_sample_compare, lp_build_masklerp2d). The reference value is not clamped, as
+// a float format's is not.
 //
 // A depth comparison texture is a sampler2D whose texels' red byte is the depth, red / 255 as
 // llvmpipe turns a unorm8 into a float (the scene marks it: a binding's "compare", scenes/gltf.h;

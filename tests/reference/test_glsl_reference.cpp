@@ -425,6 +425,16 @@ void main() {
     vec4 c = textureCubeLod(env, vec3(p, -0.5), st.x * 5.0);
     gl_FragColor = st.y < 0.33 ? a : st.y < 0.67 ? b : c;
 })"},
+    {"cube_query_lod", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform samplerCube env;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    vec2 a = textureQueryLod(env, vec3(p * exp2(st.x * 8.0 - 2.0), 1.0));  // magnified to minified
+    vec2 b = textureQueryLod(env, vec3(p.x * 2.5, -1.0 + 0.1 * p.y, p.y * 2.5));  // across faces
+    color = vec4(a.x / 6.0, a.y / 16.0 + 0.5, st.y < 0.5 ? b.x / 6.0 : b.y / 16.0 + 0.5, 1.0);
+})"},
 };
 
 // samplerCubeShadow's lookups on a depth comparison cube map `depth` (each face's red channel
@@ -454,6 +464,42 @@ void main() {
     float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
     vec4 q = textureGather(depth, vec3(p * 2.5, st.y < 0.5 ? 1.0 : -1.0), ref);
     color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
+})"},
+};
+
+// Lookups of a depth comparison texture that tell its compare functions apart: reference values
+// below, equal to and above the depths, and NaN (which passes NOTEQUAL alone), through a
+// filtered lookup and gathers; `depth` is 2D or a cube map. The 2D one's level query, which no
+// function changes, rides along.
+const LanguageCase kCompareLookups[] = {
+    {"compare", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform sampler2DShadow depth;
+void main() {
+    vec2 p = st * 2.5 - 0.7;
+    float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
+    float a = texture(depth, vec3(p, ref));
+    float b = texture(depth, vec3(p, floor(st.x * 256.0) * (1.0 / 255.0)));  // equal to depths
+    float c = texture(depth, vec3(p, sqrt(st.x - 0.75)));                     // NaN left of x = 0.75
+    vec4 g = st.x < 0.5 ? textureGather(depth, p, st.y < 0.75 ? ref : sqrt(-st.x))
+                        : textureGatherOffset(depth, p, ref, ivec2(-3, 2));
+    vec2 q = textureQueryLod(depth, p * exp2(st.x * 6.0 - 2.0));
+    color = st.y < 0.5 ? vec4(a, b, c, 1.0) : st.y < 0.9 ? vec4(fract(st.x * 8.0) < 0.5 ? g.xyz : g.yzw, 1.0)
+                       : vec4(q.x, q.y / 16.0 + 0.5, 0.0, 1.0);
+})"},
+    {"compare_cube", R"(#version 400
+in vec2 st;
+out vec4 color;
+uniform samplerCubeShadow depth;
+void main() {
+    vec2 p = st * 2.0 - 1.0;
+    float ref = fract(st.x * 3.0 + st.y * 1.7) * 1.2 - 0.1;
+    float a = texture(depth, vec4(p * 2.5, 1.0, ref));
+    float b = texture(depth, vec4(p.x, p.x, 1.0, floor(st.y * 256.0) * (1.0 / 255.0)));  // equal to depths
+    float c = texture(depth, vec4(-1.0, p.yx * 3.0, sqrt(st.x - 0.75)));                  // NaN left of x = 0.75
+    vec4 g = textureGather(depth, vec3(p * 2.5, -1.0), st.y < 0.75 ? ref : sqrt(-st.x));
+    color = st.y < 0.5 ? vec4(a, b, c, 1.0) : vec4(fract(st.x * 8.0) < 0.5 ? g.xyz : g.yzw, 1.0);
 })"},
 };
 
@@ -556,7 +602,7 @@ TEST_CASE("sampler2DShadow's lookups, run by the interpreter, match OSMesa llvmp
         Texture depth;
         depth.image.file = kSource / "scenes/assets/conformance/images" / sc.image;
         depth.sampler = sc.sampler;
-        depth.compare = true;
+        depth.compare = CompareFunc::LessEqual;
         depth.field = "depth";
         scene.textures.push_back(depth);
         scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
@@ -592,7 +638,7 @@ TEST_CASE("samplerCube's lookups, run by the interpreter, match OSMesa llvmpipe 
     };
     for (const SamplerCase& sc : samplers) {
         Scene scene = load_scene(kPlane);
-        scene.textures.push_back(cube_map(dir, 32, sc.sampler, false, "env"));
+        scene.textures.push_back(cube_map(dir, 32, sc.sampler, std::nullopt, "env"));
         scene.objects.at(0).samplers = {{"env", int(scene.textures.size()) - 1}};
         for (const LanguageCase& c : kCubeLookups) {
             const std::string name = std::string(c.name) + "-" + sc.name;
@@ -610,10 +656,39 @@ TEST_CASE("samplerCubeShadow's lookups, run by the interpreter, match OSMesa llv
     GlPrograms programs(dir);
     for (const Filter filter : {Filter::Nearest, Filter::Linear}) {
         Scene scene = load_scene(kPlane);
-        scene.textures.push_back(cube_map(dir, 16, {filter, filter, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, true, "depth"));
+        const Sampler sampler{filter, filter, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
+        scene.textures.push_back(cube_map(dir, 16, sampler, CompareFunc::LessEqual, "depth"));
         scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
         for (const LanguageCase& c : kCubeShadowLookups) {
             const std::string name = std::string(c.name) + (filter == Filter::Linear ? "-linear" : "-nearest");
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
+                                   scene, true);
+        }
+    }
+}
+
+TEST_CASE("Every compare function of a depth comparison texture matches OSMesa llvmpipe, 2D and cube map",
+          "[interpreter][reference][textures]") {
+    const std::filesystem::path dir = temp_dir("glsl-compare");
+    const int size = 64;
+    auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
+    GlPrograms programs(dir);
+    const Sampler linear{Filter::Linear, Filter::Linear, Wrap::Repeat, Wrap::MirroredRepeat, Wrap::Repeat};
+    using enum CompareFunc;
+    for (const CompareFunc func : {Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always}) {
+        Scene scene = load_scene(kPlane);
+        Texture flat;
+        flat.image.file = kSource / "scenes/assets/conformance/images/texture-37x19.png";
+        flat.sampler = linear;
+        flat.compare = func;
+        flat.field = "depth";
+        scene.textures.push_back(flat);
+        scene.textures.push_back(cube_map(dir, 16, linear, func, "cube-depth"));
+        const int n = int(scene.textures.size());
+        for (const LanguageCase& c : kCompareLookups) {
+            const bool cube = std::string_view(c.name) == "compare_cube";
+            scene.objects.at(0).samplers = {{"depth", cube ? n - 1 : n - 2}};
+            const std::string name = std::string(c.name) + "-" + std::string(compare_func_name(func));
             check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
                                    scene, true);
         }

@@ -275,14 +275,14 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
         write_text(dir / "shadow.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform sampler2DShadow depth;\n"
                                         "void main() { c = vec4(texture(depth, vec3(st, 0.5))); }\n");
         write_text(dir / "d.gltf", gltf(R"({"glsl": "shadow.frag", "textures": {
-            "depth": {"image": "images/flat.png", "sampler": 2, "compare": "LEQUAL"}}})"));
+            "depth": {"image": "images/flat.png", "sampler": 2, "compare": "GEQUAL"}}})"));
         Scene s = load_scene(dir / "d.gltf");
         const Texture& depth = s.textures[std::size_t(s.objects[0].texture_for("depth"))];
-        CHECK(depth.compare);
+        CHECK(depth.compare == CompareFunc::GreaterEqual);
         CHECK_NOTHROW(render_frame(s, {}));
         save_scene(s, dir / "saved-depth.gltf");
         const Scene again = load_scene(dir / "saved-depth.gltf");
-        CHECK(again.textures[std::size_t(again.objects[0].texture_for("depth"))].compare);
+        CHECK(again.textures[std::size_t(again.objects[0].texture_for("depth"))].compare == CompareFunc::GreaterEqual);
 
         write_text(dir / "plain.gltf", gltf(R"({"glsl": "shadow.frag", "textures": {"depth": "images/flat.png"}})"));
         Scene plain = load_scene(dir / "plain.gltf");
@@ -323,12 +323,12 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
         write_text(dir / "cube-shadow.frag", "#version 130\nin vec2 st;\nout vec4 c;\nuniform samplerCubeShadow env;\n"
                                              "void main() { c = vec4(texture(env, vec4(st * 2.0 - 1.0, 0.5, st.x))); }\n");
         write_text(dir / "cube-depth.gltf", gltf(R"({"glsl": "cube-shadow.frag", "textures": {"env": {"faces": )" + faces +
-                                                 R"(, "sampler": 2, "compare": "LEQUAL"}}})"));
+                                                 R"(, "sampler": 2, "compare": "NOTEQUAL"}}})"));
         Scene depth = load_scene(dir / "cube-depth.gltf");
-        CHECK(depth.textures[std::size_t(depth.objects[0].texture_for("env"))].compare);
+        CHECK(depth.textures[std::size_t(depth.objects[0].texture_for("env"))].compare == CompareFunc::NotEqual);
         CHECK_NOTHROW(render_frame(depth, {}));
         save_scene(depth, dir / "saved-cube-depth.gltf");
-        CHECK(load_scene(dir / "saved-cube-depth.gltf").textures.at(0).compare);
+        CHECK(load_scene(dir / "saved-cube-depth.gltf").textures.at(0).compare == CompareFunc::NotEqual);
 
         // What the faces' images are, and which sampler reads which kind, is checked where a shader
         // samples them, naming the field, the face and the sampler.
@@ -384,8 +384,10 @@ TEST_CASE("textures: extras.textures binds samplers by name: textures[] indices,
             {R"({"textures": {"u": {"image": "/etc/passwd"}}})", "extras.textures.u.image"},
             {R"({"teximage": "images/flat.png", "textures": {"teximage": 0}})", "bound twice"},
             {R"({"textures": {"teximage": {"texture": 0, "depth": 3}}})", "sampler2D"},
-            {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 2, "compare": "LESS"}}})",
+            {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 2, "compare": "LESS_EQUAL"}}})",
              "extras.textures.u.compare"},
+            {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 2, "compare": 515}}})",
+             "expected a compare function"},
             {R"({"textures": {"u": {"image": "images/flat.png", "sampler": 2, "depth": 2, "compare": "LEQUAL"}}})",
              "is 2D"},
             {R"({"textures": {"u": {"image": "images/flat.png", "compare": "LEQUAL"}}})", "one level"},

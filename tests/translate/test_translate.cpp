@@ -191,8 +191,9 @@ TEST_CASE("a render's modes: those of a draw with and without a texture's level 
 namespace {
 
 // A file of tests/translate drawn on `scene` by the interpreter and by its translation compiled
-// into this test (with the vertex stage the front end writes for it), to the bit under each rule.
-void check_file_on(const std::string& name, std::unique_ptr<Program> (*translated)(), Scene& scene) {
+// into this test (with the vertex stage the front end writes for it), to the bit under each rule;
+// the translated program's name, to draw it again.
+std::string check_file_on(const std::string& name, std::unique_ptr<Program> (*translated)(), Scene& scene) {
     const frontend::GlslSource frag = frontend::read_glsl_file(test::kSource / "tests/translate" / (name + ".frag"));
     frontend::CompiledProgram compiled_glsl = frontend::compile_glsl(frag, std::nullopt);
     const std::string vertex = compiled_glsl.vertex.text;
@@ -201,6 +202,7 @@ void check_file_on(const std::string& name, std::unique_ptr<Program> (*translate
         vertex, frag.text);
     const Program& compiled = add_compiled_program(translated(), "translated", vertex, frag.text);
     test::check_same_pixels(scene, interpreted, compiled, name);
+    return std::string(compiled.info().name);
 }
 
 // The shipped noise volume bound to the plane as `volume`.
@@ -293,11 +295,20 @@ TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter dra
     Texture depth;
     depth.image.file = test::kSource / "scenes/assets/conformance/images/texture-37x19.png";
     depth.sampler = {Filter::Linear, Filter::Linear, Wrap::MirroredRepeat, Wrap::Repeat, Wrap::Repeat};
-    depth.compare = true;
+    depth.compare = CompareFunc::Greater;  // a function other than GL's default reaches the translation
     depth.field = "depth";
     scene.textures.push_back(depth);
     scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
-    check_file_on("texture_shadow", make_program<translated_texture_shadow::TranslatedTextureShadow>, scene);
+    const std::string translated =
+        check_file_on("texture_shadow", make_program<translated_texture_shadow::TranslatedTextureShadow>, scene);
+    // The translation says its sampler is a shadow sampler, so a plain texture bound to it is
+    // refused by name, as it is under the interpreter.
+    scene.textures.back().compare.reset();
+    FrameRequest r;
+    r.width = r.height = 16;
+    r.shader_override = translated;
+    CHECK_THROWS_WITH(render_frame(scene, r), Catch::Contains("sampler2DShadow 'depth'") &&
+                                                  Catch::Contains("not a depth comparison texture"));
 }
 
 TEST_CASE("a translation's samplerCube and samplerCubeShadow lookups draw what the interpreter draws, to the bit, under "
@@ -308,9 +319,10 @@ TEST_CASE("a translation's samplerCube and samplerCubeShadow lookups draw what t
     const std::filesystem::path dir = test::temp_dir("translate-cube");
     Scene scene = load_scene(test::kPlane);
     scene.textures.push_back(test::cube_map(
-        dir, 32, {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, false, "env"));
+        dir, 32, {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, std::nullopt, "env"));
     scene.textures.push_back(
-        test::cube_map(dir, 16, {Filter::Linear, Filter::Linear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, true, "depth"));
+        test::cube_map(dir, 16, {Filter::Linear, Filter::Linear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat},
+                       CompareFunc::NotEqual, "depth"));
     const int n = int(scene.textures.size());
     scene.objects.at(0).samplers = {{"env", n - 2}, {"depth", n - 1}};
     check_file_on("texture_cube", make_program<translated_texture_cube::TranslatedTextureCube>, scene);

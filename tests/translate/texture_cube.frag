@@ -2,7 +2,7 @@
 // samplerCube's and samplerCubeShadow's lookups, which the C++ translation writer writes and the
 // interpreter runs through the vocabulary's functions of their names (shading/glsl/texture_cube.h):
 // implicit (per pixel on a mipmapped cube map), biased, explicit and derivative levels, the legacy
-// names, the size query, comparisons, gathers, and a cube map passed to a function.
+// names, the size and level queries, comparisons, gathers, and a cube map passed to a function.
 in vec2 st;
 out vec4 color;
 uniform samplerCube env;
@@ -21,6 +21,7 @@ void main() {
               textureGrad(depth, vec4(dir.yxz, ref), vec3(0.1), vec3(0.2));
     vec2 size = vec2(textureSize(env, 1) + textureSize(depth, 0)) / 64.0;
     vec4 g = textureGather(env, dir, 2) * 0.5 + textureGather(depth, dir.zyx, ref) * 0.5;
-    color = vec4(a * 0.25 + b * 0.25, 1.0) * 0.5 + vec4(c * 0.25, 1.0) * 0.25 + vec4(d / 3.0, size, 1.0) * 0.125 +
-            g * 0.125;
+    vec2 q = textureQueryLod(env, dir * 3.0);
+    color = vec4(a * 0.25 + b * 0.25, 1.0) * 0.5 + vec4(c * 0.25, 1.0) * 0.25 + vec4(d / 3.0, size, 1.0) * 0.0625 +
+            g * 0.125 + vec4(q * 0.0625, 0.0, 0.0);
 }
