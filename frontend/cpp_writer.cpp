@@ -12,6 +12,7 @@
 #include <glslang/Include/intermediate.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include "frontend/batch_width.h"
 #include "frontend/binding_names.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
@@ -1883,6 +1884,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "        .glsl_fragment = {" << string_literal(name + ".frag") << "},  // beside the plugin\n"
       << "        .glsl_version = " << p.version << ",\n";
     if (!p.uniforms.empty()) h << "        .uniforms = kUniforms,\n";
+    if (wide_batches_pay(p.fragment)) h << "        .wide_batches = true,  // frontend/batch_width.h\n";
     h << "    };\n"
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
