@@ -1889,7 +1889,10 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
       << "    static auto fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {\n"
-      << "        FragmentShader<F> shader{in, u, {}};\n"
+      // The colour zeroed by name, as GLSL's unwritten output reads: a value-initialised `out`
+      // would zero the whole shader struct (padding included) with a memset the compiler
+      // cannot drop, and spill the inputs around its call.
+      << "        FragmentShader<F> shader{in, u, {vec4<F>(F(0.0f))}};\n"
       << "        shader.main();\n"
       << "        return shader.out" << (fw.discards() ? "" : ".gl_FragColor") << ";\n"
       << "    }\n"
