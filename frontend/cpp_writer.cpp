@@ -12,6 +12,7 @@
 #include <glslang/Include/intermediate.h>
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include "frontend/batch_width.h"
 #include "frontend/binding_names.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
@@ -1894,11 +1895,15 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "        .glsl_fragment = {" << string_literal(name + ".frag") << "},  // beside the plugin\n"
       << "        .glsl_version = " << p.version << ",\n";
     if (!p.uniforms.empty()) h << "        .uniforms = kUniforms,\n";
+    if (wide_batches_pay(p.fragment)) h << "        .wide_batches = true,  // frontend/batch_width.h\n";
     h << "    };\n"
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
       << "    static auto fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {\n"
-      << "        FragmentShader<F> shader{in, u, {}};\n"
+      // The colour zeroed by name, as GLSL's unwritten output reads: a value-initialised `out`
+      // would zero the whole shader struct (padding included) with a memset the compiler
+      // cannot drop, and spill the inputs around its call.
+      << "        FragmentShader<F> shader{in, u, {vec4<F>(F(0.0f))}};\n"
       << "        shader.main();\n"
       << "        return shader.out" << (fw.discards() ? "" : ".gl_FragColor") << ";\n"
       << "    }\n"

@@ -218,16 +218,19 @@ public:
                     ColorBatch& out_a, ColorBatch& out_b) const override {
         Uniforms scratch;
         const Uniforms& u = with_user_uniforms(given, scratch);
-        if constexpr (kWidePairs && kInfo.wide_batches && kModes.bits == ShadeModes{}.bits) {
+        // A build for some ways of shading (kModes) holds the pair where it holds the way paired.
+        if constexpr (kWidePairs && kInfo.wide_batches) {
             const bool wide_float = !mode.check_undefined && mode.precision == Precision::Float;
-            if constexpr (!kNeeds.derivatives) {
+            if constexpr (!kNeeds.derivatives && kModes.has({Derivatives::None, Precision::Float, false})) {
                 if (wide_float && mode.derivatives == Derivatives::None) {
                     return run_pair<Pixels<float, 2 * kBatchLanes>>(a, b, u, out_a, out_b);
                 }
-            } else if (wide_float && mode.derivatives == Derivatives::Fine) {
+            } else if constexpr (kNeeds.derivatives && kModes.has({Derivatives::Fine, Precision::Float, false})) {
                 // llvmpipe's rule only: each quad's lanes stay in one register, so its
                 // derivatives shuffle inside that register as on one batch.
-                return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
+                if (wide_float && mode.derivatives == Derivatives::Fine) {
+                    return run_pair<Quads<float, 2 * kBatchQuads, DerivativeRule::Fine>>(a, b, u, out_a, out_b);
+                }
             }
         }
         shade(mode, a, u, out_a);

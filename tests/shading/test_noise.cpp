@@ -39,7 +39,7 @@ TEST_CASE("noise on 16 SIMD lanes equals the scalar float code bit for bit", "[n
 }
 
 // cellular_vectors hashes the cells of lanes that lie close together once per batch
-// (noise/cellular.h, on AVX-512): blocks of pixels at several scales (so that their cells are
+// (noise/cellular_nearby.h, on AVX-512): blocks of pixels at several scales (so that their cells are
 // close together, or not), across the hash's wrap at 289 and below zero, on 16 and 32 lanes of
 // pixels and quads, give every lane the scalar code's F1, F2 and vectors to the bit.
 template <class L>
@@ -60,7 +60,9 @@ void check_cellular_lanes(int& nearby, int& batches) {
                 const vec2<L> F = noise::cellular_vectors(P, d1d2);
                 vec2<L> Fs(1e6f);
                 vec4<L> unused(0.0f);
-                nearby += noise::cellular_search_nearby(mod(floor(P), 289.0f), fract(P), Fs, unused), ++batches;
+                nearby += noise::cellular_search_nearby(mod(floor(P), 289.0f), fract(P), [&](const L& d, const vec2<L>& v) {
+                    noise::insert(d, v, Fs, unused);
+                }), ++batches;
                 for (int i = 0; i < N; ++i) {
                     vec4<float> d;
                     const vec2<float> f = noise::cellular_vectors(vec2<float>(xs[i], ys[i]), d);

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <regex>
 
+#include "frontend/batch_width.h"
 #include "frontend/cpp_writer.h"
 #include "interpreter/glsl_program.h"
 #include "render/compiled_glsl.h"
@@ -167,11 +168,47 @@ TEST_CASE("a translation compiled for some ways of shading shades them as the wh
             CHECK(std::bit_cast<std::uint32_t>(got.rgba[c][i]) == std::bit_cast<std::uint32_t>(expected.rgba[c][i]));
         }
     }
+    // Its wide batches too (bricks_aa asks for them: frontend/batch_width.h): a pair of batches
+    // shaded as one number of twice the width on AVX-512, each batch's bits as shaded alone.
+    static_assert(translated_bricks_aa::TranslatedBricksAa::info.wide_batches);
+    FragmentBatch next = in;
+    for (int i = 0; i < kBatchLanes; ++i) next.frag_coord[0][i] += 4.0f;
+    ColorBatch expected_next{}, got_next{};
+    whole.shade({Derivatives::Fine, Precision::Float, false}, next, Uniforms{}, expected_next);
+    fine_only.shade_pair({Derivatives::Fine, Precision::Float, false}, in, next, Uniforms{}, got, got_next);
+    for (int c = 0; c < 4; ++c) {
+        for (int i = 0; i < kBatchLanes; ++i) {
+            CHECK(std::bit_cast<std::uint32_t>(got.rgba[c][i]) == std::bit_cast<std::uint32_t>(expected.rgba[c][i]));
+            CHECK(std::bit_cast<std::uint32_t>(got_next.rgba[c][i]) == std::bit_cast<std::uint32_t>(expected_next.rgba[c][i]));
+        }
+    }
     for (const ShadeMode other : {ShadeMode{Derivatives::CoarseLower, Precision::Float, false},
                                   ShadeMode{Derivatives::Fine, Precision::Double, false},
                                   ShadeMode{Derivatives::Fine, Precision::Float, true}}) {
         CHECK_THROWS_AS(fine_only.shade(other, in, Uniforms{}, got), std::logic_error);
     }
+}
+
+TEST_CASE("a translation asks for wide batches unless its values outgrow the registers, it reads tables by index "
+          "or a loop waits on texture lookups", "[translate]") {
+    const auto traits = [](const std::string& name) {
+        const Program& p = *find_program(name);
+        const frontend::CompiledProgram c = frontend::compile_glsl({name + ".frag", glsl_source(p, false)},
+                                                                   frontend::GlslSource{name + ".vert", glsl_source(p, true)});
+        return frontend::batch_width_traits(c.program.fragment);
+    };
+    const frontend::BatchWidthTraits perlin = traits("perlin"), perlin5 = traits("perlin5"),
+                                     improved = traits("improved_noise"), stained = traits("lawlor_stained_glass");
+    CHECK(frontend::wide_batches_pay(perlin));
+    CHECK(perlin5.peak_live_floats > perlin.peak_live_floats);  // five octaves' gradients at once
+    CHECK_FALSE(frontend::wide_batches_pay(perlin5));
+    CHECK(improved.largest_table == 256);  // its permutation
+    CHECK_FALSE(frontend::wide_batches_pay(improved));
+    CHECK(stained.texture_in_loop);
+    CHECK_FALSE(frontend::wide_batches_pay(stained));
+    // What the writer writes: the translations this test compiles.
+    CHECK(translated_bricks_aa::TranslatedBricksAa::info.wide_batches);
+    CHECK_FALSE(translated_lawlor_stained_glass::TranslatedLawlorStainedGlass::info.wide_batches);
 }
 
 TEST_CASE("a render's modes: those of a draw with and without a texture's level of detail", "[translate]") {
