@@ -997,7 +997,21 @@ Expr StageWriter::cube_lookup(TOperator op, TIntermTyped* node, const glslang::T
 Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang::TIntermSequence& args) {
     const TOperator op = node->getAsOperator()->getOp();
     std::vector<std::string> v;
-    for (TIntermNode* n : args) v.push_back(as_typed(n->getAsTyped(), n->getAsTyped()->getType()).text);
+    for (TIntermNode* n : args) {
+        const glslang::TIntermConstantUnion* k = n->getAsConstantUnion();
+        if (op == glslang::EOpTextureGatherOffsets && k && k->getType().isArray()) {
+            // the offsets, a constant expression (as GLSL requires), as the array the function takes
+            const glslang::TConstUnionArray& o = k->getConstArray();
+            std::string offsets = "std::array<ivec2<F>, 4>{";
+            for (int i = 0; i < 4; ++i) {
+                offsets += std::string(i ? ", " : "") + "ivec2<F>(int_t<F>(" + std::to_string(o[2 * i].getIConst()) +
+                           "), int_t<F>(" + std::to_string(o[2 * i + 1].getIConst()) + "))";
+            }
+            v.push_back(offsets + "}");
+            continue;
+        }
+        v.push_back(as_typed(n->getAsTyped(), n->getAsTyped()->getType()).text);
+    }
     const auto fn = [&](const std::string& name) {
         std::string t = name + "(";
         for (std::size_t i = 0; i < v.size(); ++i) t += (i ? ", " : "") + v[i];
@@ -1070,6 +1084,17 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             }
             return fn(op == glslang::EOpTextureGather ? "textureGather" : "textureGatherOffset");
         }
+        case glslang::EOpTextureGatherOffsets: {
+            if (args[0]->getAsTyped()->getType().getSampler().isShadow()) return fn("textureGatherOffsetsCompare");
+            if (args.size() > 3) {
+                // the channel, a constant expression, as the plain int the function takes
+                const glslang::TIntermConstantUnion* k = args[3]->getAsConstantUnion();
+                if (!k) refuse(node, "textureGatherOffsets with a channel that is not a constant");
+                v[3] = std::to_string(k->getConstArray()[0].getIConst());
+            }
+            return fn("textureGatherOffsets");
+        }
+        case glslang::EOpTextureQueryLevels: return fn("textureQueryLevels<F>");
         case glslang::EOpTextureQueryLod: {
             const glslang::TSampler& sampler = args[0]->getAsTyped()->getType().getSampler();
             if (sampler.dim == glslang::EsdCube && sampler.isShadow()) {

@@ -92,6 +92,7 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
                            /*   (m = 4: a shadow sampler's, each compared with F[b]) */                \
     X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
+    X(TextureQueryLevels)  /* I[d] = textureQueryLevels(s) */                                           \
     X(TextureShadow)       /* d = a shadow sampler's comparison of a+n with the depth at a..a+n-1 */  \
     X(TextureShadowOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     /* control flow: the running mask of lanes; jump targets in Instr::target */                      \

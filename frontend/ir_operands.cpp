@@ -140,6 +140,7 @@ Operands operands(const Instr& in) {
             if (in.m == 4) o.add(Field::B, F);
             break;
         case Op::TextureQueryLod: o.add(Field::D, F, 2, true), o.add(Field::A, F, in.n); break;
+        case Op::TextureQueryLevels: o.add(Field::D, I, 1, true); break;
         case Op::TextureShadow: o.add(Field::D, F, 1, true), o.add(Field::A, F, in.n + 1u); break;
         case Op::TextureShadowOffset: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3), o.add(Field::C, I, 2); break;
         case Op::If: case Op::BreakUnless: o.add(Field::A, B); break;
@@ -158,7 +159,7 @@ bool is_texture(Op op) {
         case Op::Texture: case Op::TextureBias: case Op::TextureLod: case Op::TextureGrad: case Op::TextureOffset:
         case Op::TextureBiasOffset: case Op::TextureLodOffset: case Op::TextureGradOffset: case Op::TexelFetch:
         case Op::TexelFetchOffset: case Op::TextureSize: case Op::TextureGather: case Op::TextureGatherOffset:
-        case Op::TextureQueryLod: case Op::TextureShadow: case Op::TextureShadowOffset:
+        case Op::TextureQueryLod: case Op::TextureQueryLevels: case Op::TextureShadow: case Op::TextureShadowOffset:
             return true;
         default: return false;
     }

@@ -313,14 +313,15 @@ Place StageLowering::eval_query_lod(TIntermTyped* node, int slot, int dims, cons
 }
 
 Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, const std::vector<TIntermTyped*>& args) {
-    switch (op) {
-        case glslang::EOpTextureGatherOffsets: refuse(node, "textureGatherOffsets is not supported");
-        case glslang::EOpTextureQueryLevels: refuse(node, "textureQueryLevels is not supported");
-        case glslang::EOpTextureQuerySamples: refuse(node, "textureSamples is not supported");
-        default: break;
-    }
+    if (op == glslang::EOpTextureQuerySamples) refuse(node, "textureSamples is not supported (no multisample sampler is)");
     const int slot = sampler_of(args[0]);
     const int dims = interface_.program.samplers[std::size_t(slot)].dims;
+    if (op == glslang::EOpTextureQueryLevels) {
+        Place r = temps(B::Int, 1);
+        ir::Instr& e = emit(ir::Op::TextureQueryLevels);
+        e.d = r[0].reg, e.n = std::uint8_t(dims == ir::kCubeSampler ? 3 : dims), e.count = std::uint16_t(slot);
+        return r;
+    }
     std::vector<Place> v;
     for (std::size_t i = 1; i < args.size(); ++i) v.push_back(eval(args[i]));
     // The operation `o` at `coords` (the first `dims` of them), with its level of detail or bias
@@ -355,7 +356,8 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     const bool vertex = kind_ == StageKind::Vertex;
     if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
     const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
-    const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset;
+    const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset ||
+                        op == glslang::EOpTextureGatherOffsets;
     if (shadow && !gather && op != glslang::EOpTextureQuerySize && op != glslang::EOpTextureQueryLod) {
         return eval_shadow(op, node, slot, v);
     }
@@ -408,6 +410,29 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
             const ir::Op o = offset ? ir::Op::TextureGatherOffset : ir::Op::TextureGather;
             Place r = lookup(o, v[0], nullptr, nullptr, nullptr, offset ? &v[1] : nullptr);
             stage_.code.back().m = std::uint8_t(comp);
+            return r;
+        }
+        case glslang::EOpTextureGatherOffsets: {
+            // Four gathers, each at its offset (a constant array of four ivec2, as GLSL requires),
+            // component i texel i0 j0 of the i-th: their w, as Mesa lowers it (nir_lower_tex).
+            const std::size_t offsets_arg = shadow ? 3 : 2;
+            const glslang::TIntermConstantUnion* k = args[offsets_arg]->getAsConstantUnion();
+            if (!k) refuse(node, "textureGatherOffsets' offsets must be a constant expression");
+            int comp = shadow ? 4 : 0;
+            if (!shadow && args.size() > 3) {
+                const glslang::TIntermConstantUnion* c = args[3]->getAsConstantUnion();
+                if (!c) refuse(node, "textureGather's channel must be a constant expression");
+                comp = c->getConstArray()[0].getIConst();
+            }
+            if (dims != 2 || comp < 0 || comp > 4) refuse(node, "textureGatherOffsets on this sampler or of this channel");
+            const glslang::TConstUnionArray& o = k->getConstArray();
+            Place r = temps(B::Float, 4);
+            for (int i = 0; i < 4; ++i) {
+                const Place offset{{B::Int, int_constant(o[2 * i].getIConst())}, {B::Int, int_constant(o[2 * i + 1].getIConst())}};
+                const Place g = lookup(ir::Op::TextureGatherOffset, v[0], shadow ? &v[1] : nullptr, nullptr, nullptr, &offset);
+                stage_.code.back().m = std::uint8_t(comp);
+                move(r[std::size_t(i)], g[3], false);
+            }
             return r;
         }
         case glslang::EOpTextureQueryLod: return eval_query_lod(node, slot, dims, v);

@@ -197,7 +197,8 @@ RunResult Machine<F>::run() {
             case ir::Op::TextureOffset: case ir::Op::TextureBiasOffset: case ir::Op::TextureLodOffset:
             case ir::Op::TextureGradOffset: case ir::Op::TexelFetch: case ir::Op::TexelFetchOffset:
             case ir::Op::TextureSize: case ir::Op::TextureGather: case ir::Op::TextureGatherOffset:
-            case ir::Op::TextureQueryLod: case ir::Op::TextureShadow: case ir::Op::TextureShadowOffset:
+            case ir::Op::TextureQueryLod: case ir::Op::TextureQueryLevels: case ir::Op::TextureShadow:
+            case ir::Op::TextureShadowOffset:
                 texture(in);
                 break;
             case ir::Op::LoadIndexed: case ir::Op::StoreIndexed: indexed(in); break;
@@ -466,6 +467,10 @@ void Machine<F>::matrix(const ir::Instr& in) {
 template <class F>
 void Machine<F>::texture(const ir::Instr& in) {
     const glsl::Texture& t = *textures_[in.count];
+    if (in.op == ir::Op::TextureQueryLevels) {
+        put(in, i_[in.d], glsl::textureQueryLevels<F>(t));
+        return;
+    }
     if (t.dims == glsl::kCubeDims) return cube_texture(in, static_cast<const glsl::samplerCube&>(t));
     if (in.op == ir::Op::TextureGather && in.n != 2) throw std::logic_error("a cube map's gather on a texture that is not one");
     if (in.op == ir::Op::TextureSize) {

@@ -154,6 +154,33 @@ vec4<F> textureGatherOffsetCompare(const sampler2D& depth, const vec2<F>& p, con
     return texture_detail::gather_lanes<F>(depth, p, &offset, 0, &ref);
 }
 
+// textureGatherOffsets(s, P, offsets [, comp]): component i is texel i0 j0 (a gather's w) of the
+// footprint at offsets[i], as Mesa lowers it (four gathers, nir_lower_tex); the ...Compare form,
+// a sampler2DShadow's, compares each with refZ.
+template <Number F>
+vec4<F> textureGatherOffsets(const sampler2D& tex, const vec2<F>& p, const std::array<ivec2<F>, 4>& offsets, int comp = 0) {
+    vec4<F> r;
+    for (std::size_t i = 0; i < 4; ++i) r[int(i)] = texture_detail::gather_lanes<F>(tex, p, &offsets[i], comp).w;
+    return r;
+}
+template <Number F>
+vec4<F> textureGatherOffsetsCompare(const sampler2D& depth, const vec2<F>& p, const F& ref,
+                                    const std::array<ivec2<F>, 4>& offsets) {
+    vec4<F> r;
+    for (std::size_t i = 0; i < 4; ++i) r[int(i)] = texture_detail::gather_lanes<F>(depth, p, &offsets[i], 0, &ref).w;
+    return r;
+}
+
+// textureQueryLevels(s): the texture's mipmap levels (1 where its sampler reads none, as the
+// texture GL samples then has): textureQueryLevels<F>(s).
+template <Number F>
+int_t<F> textureQueryLevels(const Texture& tex) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) std::int32_t levels[N];
+    for (int i = 0; i < N; ++i) levels[i] = std::int32_t(tex.levels.size());
+    return texture_detail::from_ints<int_t<F>>(levels);
+}
+
 // textureQueryLod(s, P): (the mipmap level an implicit lookup at P reads, its level of detail
 // relative to the base level), as llvmpipe computes them, one per quad. Needs the quad's
 // derivatives (quads, or Dual2's partials); the result is constant over the quad: its Dual2

@@ -33,9 +33,6 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
         const char* words;     // a part of the message that names the construct
     };
     const Case cases[] = {
-        {"#version 430\nuniform samplerCube sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = vec4(float(textureQueryLevels(sky)));\n}\n",
-         "user.frag:6", "textureQueryLevels"},
         {"#version 400\nuniform samplerCubeArray sky;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = texture(sky, vec4(st, 1.0, 0.0));\n}\n",
          "user.frag:6", "samplerCubeArray"},
@@ -43,18 +40,12 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
          "user.frag:2", "recurs"},
         {"#version 130\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = vec4(gl_PointCoord, 0.0, 1.0);\n}\n",
          "user.frag:5:12", "gl_PointCoord"},
-        {"#version 400\nuniform sampler2D t;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = textureGatherOffsets(t, st, ivec2[4](ivec2(0), ivec2(1), ivec2(2), ivec2(3)));\n}\n",
-         "user.frag:6", "textureGatherOffsets"},
         {"#version 400\nuniform samplerCubeShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = vec4(textureQueryLod(depth, vec3(st, 1.0)), 0.0, 1.0);\n}\n",
          "user.frag:6", "samplerCubeShadow"},
         {"#version 130\nuniform sampler1DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = vec4(texture(depth, vec3(st, 0.5)));\n}\n",
          "user.frag:6", "sampler1DShadow"},
-        {"#version 400\nuniform sampler2DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = textureGatherOffsets(depth, st, 0.5, ivec2[4](ivec2(0), ivec2(1), ivec2(2), ivec2(3)));\n}\n",
-         "user.frag:6", "textureGatherOffsets"},
         {"#version 130\nin vec2 unknown_varying;\nout vec4 c;\nvoid main() { c = vec4(unknown_varying, 0.0, 1.0); }\n",
          "user.frag:4", "unknown_varying"},
         // glslang's own message for GLSL that does not compile

@@ -289,6 +289,19 @@ void main() {
     vec4 q = st.y < 0.5 ? (st.x < 0.5 ? r : g) : (st.x < 0.5 ? b : a);
     color = vec4(fract(st.x * 8.0) < 0.5 ? q.xyz : q.yzw, 1.0);
 })"},
+    {"texture_gather_offsets_levels", R"(
+in vec2 st;
+out vec4 color;
+uniform sampler2D teximage;
+uniform sampler3D volume;
+void main() {
+    vec2 p = st * 3.0 - 1.0;
+    const ivec2 offsets[4] = ivec2[4](ivec2(0, 0), ivec2(-8, 1), ivec2(3, -4), ivec2(7, 7));
+    vec4 a = textureGatherOffsets(teximage, p, offsets);
+    vec4 b = textureGatherOffsets(teximage, p * 1.5, offsets, 3);
+    vec2 levels = vec2(textureQueryLevels(teximage), textureQueryLevels(volume)) / 16.0;
+    color = st.y < 0.45 ? a : st.y < 0.9 ? b : vec4(levels, 0.0, 1.0);
+})"},
     {"texture_query_lod", R"(
 in vec2 st;
 out vec4 color;
@@ -482,8 +495,9 @@ void main() {
     float a = texture(depth, vec3(p, ref));
     float b = texture(depth, vec3(p, floor(st.x * 256.0) * (1.0 / 255.0)));  // equal to depths
     float c = texture(depth, vec3(p, sqrt(st.x - 0.75)));                     // NaN left of x = 0.75
-    vec4 g = st.x < 0.5 ? textureGather(depth, p, st.y < 0.75 ? ref : sqrt(-st.x))
-                        : textureGatherOffset(depth, p, ref, ivec2(-3, 2));
+    vec4 g = st.x < 0.33 ? textureGather(depth, p, st.y < 0.75 ? ref : sqrt(-st.x))
+           : st.x < 0.67 ? textureGatherOffset(depth, p, ref, ivec2(-3, 2))
+                         : textureGatherOffsets(depth, p, ref, ivec2[4](ivec2(0), ivec2(1, -2), ivec2(-5, 3), ivec2(2)));
     vec2 q = textureQueryLod(depth, p * exp2(st.x * 6.0 - 2.0));
     color = st.y < 0.5 ? vec4(a, b, c, 1.0) : st.y < 0.9 ? vec4(fract(st.x * 8.0) < 0.5 ? g.xyz : g.yzw, 1.0)
                        : vec4(q.x, q.y / 16.0 + 0.5, 0.0, 1.0);
@@ -571,7 +585,7 @@ TEST_CASE("textureGrad, the Offset lookups, gathers and textureQueryLod, run by 
         }
         for (const LanguageCase& c : kTextureQueries) {
             const std::string name = std::string(c.name) + "-" + sc.name;
-            check_against_llvmpipe(dir, *context, programs, size, name, std::string("#version 400") + c.source + "\n",
+            check_against_llvmpipe(dir, *context, programs, size, name, std::string("#version 430") + c.source + "\n",
                                    c.over_1, c.cause, scene);
         }
     }

@@ -1,4 +1,4 @@
-#version 400 compatibility
+#version 430 compatibility
 // sampler2DShadow's lookups, which the C++ translation writer writes and the interpreter runs
 // through the vocabulary's functions of their names (shading/glsl/texture_shadow.h): implicit,
 // explicit and derivative levels, projective, with and without texel offsets, the legacy
@@ -18,7 +18,9 @@ void main() {
                                                                                          vec2(0.2), ivec2(5, 5));
     float d = textureLodOffset(depth, vec3(p * 0.5, ref), 0.0, ivec2(-1, 1)) + lit(depth, vec3(p, ref));
     vec4 e = shadow2D(depth, vec3(p * 0.8, ref)) * 0.5 + shadow2DProj(depth, vec4(p, ref, 1.0) * 2.0) * 0.5;
-    vec4 g = textureGather(depth, p, ref) * 0.5 + textureGatherOffset(depth, p.yx, ref, ivec2(-2, 3)) * 0.5;
+    vec4 g = textureGather(depth, p, ref) * 0.25 + textureGatherOffset(depth, p.yx, ref, ivec2(-2, 3)) * 0.25 +
+             textureGatherOffsets(depth, p, ref, ivec2[4](ivec2(1), ivec2(-1, 0), ivec2(0, 4), ivec2(3, -3))) * 0.5;
+    float levels = float(textureQueryLevels(depth));
     vec2 q = textureQueryLod(depth, p * 4.0);
-    color = vec4(a * 0.5, b * 0.5, c * 0.25 + d * 0.25, 1.0) * 0.375 + e * 0.375 + g * 0.125 + vec4(q * 0.125, 0.0, 0.0);
+    color = vec4(a * 0.5, b * 0.5, c * 0.25 + d * 0.25, 1.0) * 0.375 + e * 0.375 + g * 0.125 + vec4(q * 0.125, levels * 0.1, 0.0);
 }
