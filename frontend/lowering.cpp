@@ -189,8 +189,8 @@ bool StageLowering::is_shared_variable(const Slot& s) const {
 }
 
 bool StageLowering::writes_symbol(glslang::TIntermAggregate* function, long long symbol) {
-    // Keyed by the pair, folded into one number: symbol ids are small and functions few.
-    const long long key = symbol * 1000003LL + (long long)(reinterpret_cast<std::uintptr_t>(function) % 1000003u);
+    // Keyed by the pair: glslang's symbol ids carry its symbol table's level in their high bits.
+    const std::pair<const void*, long long> key{function, symbol};
     if (auto it = written_symbols_.find(key); it != written_symbols_.end()) return it->second;
     class Writes : public glslang::TIntermTraverser {
     public:

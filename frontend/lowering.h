@@ -212,7 +212,7 @@ private:
     const TIntermNode* statement_value_ = nullptr;  // an expression statement's node: its value unused
     // Variable registers below this hold globals and outputs, which any function may assign.
     std::array<std::uint32_t, ir::kBanks> shared_variables_{};
-    std::unordered_map<long long, bool> written_symbols_;  // by (function, symbol): cached
+    std::map<std::pair<const void*, long long>, bool> written_symbols_;  // by (function, symbol): cached
     bool is_shared_variable(const Slot& s) const;
     bool writes_symbol(glslang::TIntermAggregate* function, long long symbol);
     void fuse_moves();
