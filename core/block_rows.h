@@ -6,14 +6,11 @@
 #include <cstdint>
 #include <utility>
 
-#if defined(__AVX__)
-#include <immintrin.h>
-#endif
-
 #include "core/block_layout.h"
 #include "core/cache_lines.h"
 #include "core/framebuffer.h"
 #include "core/lanes16.h"
+#include "shading/number/simd/simd.h"
 
 namespace qs {
 
@@ -26,7 +23,7 @@ inline std::uint32_t running_quads(std::uint32_t covered) {
 
 namespace block_detail {
 // __builtin_shufflevector picks from two generic vectors with constant indices: one instruction
-// on AVX-512 (vpermt2ps), a few on narrower ISAs.
+// where sixteen floats are a register (vpermt2ps on AVX-512), a few on narrower ones.
 using lanes16::Floats;
 
 // Lanes 8 h .. 8 h + 7 of x and y interleaved: x(8h), y(8h), x(8h+1), y(8h+1), ...
@@ -50,32 +47,37 @@ void row(const Floats& rg, const Floats& ba, Floats& out, std::integer_sequence<
 // (0..3, r) of the block, y down. Eight two-source shuffles: rows 0 and 1 hold lanes 0..7 (the
 // upper quads), rows 2 and 3 lanes 8..15.
 inline void block_to_rows(const float* const (&rgba)[4], lanes16::Floats (&rows)[kBlock]) {
-#if defined(__AVX__) && !defined(__AVX512F__)
-    // Two registers per channel: the generic shuffles below would be split into scalar moves.
-    // Per half h (lanes 8h .. 8h + 7, block rows 2h and 2h + 1): interleave red with green and
-    // blue with alpha, gather each pixel's four components, then pair the 128-bit halves into
-    // rows. Row 2h holds lanes 8h + {2, 3, 6, 7}, row 2h + 1 lanes 8h + {0, 1, 4, 5} (kLaneAt).
-    // Each row's two halves are stored into it as they are: a row made whole in registers first
-    // (one shuffle of the two) has no register to live in and was assembled float by float
-    // through the stack.
-    static_assert(kLaneAt[0][0] == 2 && kLaneAt[0][2] == 6 && kLaneAt[1][0] == 0 && kLaneAt[1][2] == 4 &&
-                  kLaneAt[2][0] == 10 && kLaneAt[3][0] == 8);
-    for (int h = 0; h < 2; ++h) {
-        const __m256 r = _mm256_loadu_ps(rgba[0] + 8 * h), g = _mm256_loadu_ps(rgba[1] + 8 * h);
-        const __m256 b = _mm256_loadu_ps(rgba[2] + 8 * h), a = _mm256_loadu_ps(rgba[3] + 8 * h);
-        const __m256 rg_low = _mm256_unpacklo_ps(r, g), rg_high = _mm256_unpackhi_ps(r, g);  // r0 g0 r1 g1 | r4 ..
-        const __m256 ba_low = _mm256_unpacklo_ps(b, a), ba_high = _mm256_unpackhi_ps(b, a);
-        auto row = [](__m256 rg, __m256 ba, lanes16::Floats& out) {
-            const __m256 first = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(1, 0, 1, 0));   // pixel k, k + 4
-            const __m256 second = _mm256_shuffle_ps(rg, ba, _MM_SHUFFLE(3, 2, 3, 2));  // pixel k + 1, k + 5
-            float* const to = reinterpret_cast<float*>(&out);
-            _mm256_storeu_ps(to, _mm256_permute2f128_ps(first, second, 0x20));
-            _mm256_storeu_ps(to + 8, _mm256_permute2f128_ps(first, second, 0x31));
-        };
-        row(rg_high, ba_high, rows[2 * h]);
-        row(rg_low, ba_low, rows[2 * h + 1]);
+    if constexpr (simd::register_floats == kBatchLanes / 2) {
+        // Two registers per channel: the sixteen-lane shuffles below would be split into scalar
+        // moves. Per half h (lanes 8h .. 8h + 7, block rows 2h and 2h + 1): interleave red with
+        // green and blue with alpha within each 128-bit half (unpcklps, unpckhps), gather each
+        // pixel's four components (shufps), then pair the 128-bit halves into rows (vperm2f128).
+        // Row 2h holds lanes 8h + {2, 3, 6, 7}, row 2h + 1 lanes 8h + {0, 1, 4, 5} (kLaneAt).
+        // Each row's two halves are stored into it as they are: a row made whole in registers
+        // first (one shuffle of the two) has no register to live in and was assembled float by
+        // float through the stack.
+        static_assert(kLaneAt[0][0] == 2 && kLaneAt[0][2] == 6 && kLaneAt[1][0] == 0 && kLaneAt[1][2] == 4 &&
+                      kLaneAt[2][0] == 10 && kLaneAt[3][0] == 8);
+        using Eight = simd::Vector<float, 8>;
+        for (int h = 0; h < 2; ++h) {
+            const Eight r = simd::load<Eight>(rgba[0] + 8 * h), g = simd::load<Eight>(rgba[1] + 8 * h);
+            const Eight b = simd::load<Eight>(rgba[2] + 8 * h), a = simd::load<Eight>(rgba[3] + 8 * h);
+            const Eight rg_low = __builtin_shufflevector(r, g, 0, 8, 1, 9, 4, 12, 5, 13);  // r0 g0 r1 g1 | r4 ..
+            const Eight rg_high = __builtin_shufflevector(r, g, 2, 10, 3, 11, 6, 14, 7, 15);
+            const Eight ba_low = __builtin_shufflevector(b, a, 0, 8, 1, 9, 4, 12, 5, 13);
+            const Eight ba_high = __builtin_shufflevector(b, a, 2, 10, 3, 11, 6, 14, 7, 15);
+            auto row = [](const Eight& rg, const Eight& ba, lanes16::Floats& out) {
+                const Eight first = __builtin_shufflevector(rg, ba, 0, 1, 8, 9, 4, 5, 12, 13);    // pixel k, k + 4
+                const Eight second = __builtin_shufflevector(rg, ba, 2, 3, 10, 11, 6, 7, 14, 15);  // pixel k + 1, k + 5
+                float* const to = reinterpret_cast<float*>(&out);
+                simd::store(to, Eight(__builtin_shufflevector(first, second, 0, 1, 2, 3, 8, 9, 10, 11)));
+                simd::store(to + 8, Eight(__builtin_shufflevector(first, second, 4, 5, 6, 7, 12, 13, 14, 15)));
+            };
+            row(rg_high, ba_high, rows[2 * h]);
+            row(rg_low, ba_low, rows[2 * h + 1]);
+        }
+        return;
     }
-#else
     using namespace block_detail;
     static_assert(kLaneAt[0][0] < 8 && kLaneAt[1][3] < 8 && kLaneAt[2][0] >= 8 && kLaneAt[3][0] >= 8);
     constexpr auto sixteen = std::make_integer_sequence<int, 16>();
@@ -90,7 +92,6 @@ inline void block_to_rows(const float* const (&rgba)[4], lanes16::Floats (&rows)
     row<1>(rg_low, ba_low, rows[1], sixteen);
     row<2>(rg_high, ba_high, rows[2], sixteen);
     row<3>(rg_high, ba_high, rows[3], sixteen);
-#endif
 }
 
 // How a block's rows go to the frame: `Streamed` where nothing writes them again this frame.

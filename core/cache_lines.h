@@ -12,9 +12,7 @@
 #include <cstring>
 #include <new>
 
-#if defined(__SSE__)
-#include <immintrin.h>
-#endif
+#include "shading/number/simd/simd.h"
 
 namespace qs {
 
@@ -40,32 +38,12 @@ inline bool starts_cache_line(const void* p) { return reinterpret_cast<std::uint
 template <class Floats>
 inline void stream_line(float* line, const Floats& v) {
     static_assert(sizeof v == kCacheLine);
-#if defined(__AVX512F__)
-    _mm512_stream_ps(line, __m512(v));
-#elif defined(__AVX__)
-    // Two registers of eight, loaded as such from where v lies (sixteen floats have no register
-    // here: its halves taken by shuffles were moved through the stack float by float).
-    const float* const from = reinterpret_cast<const float*>(&v);
-    _mm256_stream_ps(line, _mm256_loadu_ps(from));
-    _mm256_stream_ps(line + 8, _mm256_loadu_ps(from + 8));
-#elif defined(__SSE__)
-    for (int i = 0; i < 4; ++i) {
-        __m128 q;
-        std::memcpy(&q, reinterpret_cast<const float*>(&v) + 4 * i, sizeof q);
-        _mm_stream_ps(line + 4 * i, q);
-    }
-#else
-    std::memcpy(line, &v, sizeof v);
-#endif
+    simd::stream(line, v);
 }
 
 // Orders this thread's streaming stores before its later stores. Streaming stores are weakly
 // ordered: a thread that hands its work on with a plain (release) store, as a task's completion
 // does, must fence them first or the next reader may see lines still in flight.
-inline void streaming_stores_done() {
-#if defined(__SSE__)
-    _mm_sfence();
-#endif
-}
+inline void streaming_stores_done() { simd::streaming_stores_done(); }
 
 }  // namespace qs

@@ -4,27 +4,21 @@
 // float_env_probe test pins it). A scoped setting of the calling thread, set by whoever runs
 // shading on a thread (the rasterizer's and the ray caster's tile tasks); restored on exit.
 
-#if defined(__SSE__) || defined(__x86_64__)
-#include <xmmintrin.h>
-#endif
+#include "shading/number/simd/simd.h"
 
 namespace qs {
 
+// Where the target has no control of denormals (simd::kControlsDenormals), the platform's
+// default, documented as such.
 class FlushDenormals {
 public:
-#if defined(__SSE__) || defined(__x86_64__)
-    FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | kFlushToZero | kDenormalsAreZero); }
-    ~FlushDenormals() { _mm_setcsr(saved_); }
-
-private:
-    static constexpr unsigned kFlushToZero = 1u << 15, kDenormalsAreZero = 1u << 6;
-    unsigned saved_;
-#else
-    FlushDenormals() = default;  // elsewhere: the platform's default, documented as such
-#endif
-public:
+    FlushDenormals() : saved_(simd::float_control()) { simd::set_float_control(simd::flush_denormals(saved_)); }
+    ~FlushDenormals() { simd::set_float_control(saved_); }
     FlushDenormals(const FlushDenormals&) = delete;
     FlushDenormals& operator=(const FlushDenormals&) = delete;
+
+private:
+    unsigned saved_;
 };
 
 }  // namespace qs

@@ -41,30 +41,18 @@ inline float depth24(float z) {
 
 // depth24 on every lane of a batch, to the bit (always inlined, as core/lanes16.h says why).
 [[gnu::always_inline]] inline lanes16::Floats depth24(const lanes16::Floats& z) {
-    // max(z, 0) takes 0 where z is NaN (its second operand), as std::fmax; rounding control 0xC is
-    // the current rounding mode without exceptions: std::nearbyint.
-#if defined(__AVX512F__)
-    // One register (as two halves, they met again through memory: a load spanning two stores
-    // waits for both to be written, a stall on every block's depth test).
-    static_assert(sizeof(lanes16::Floats) == sizeof(__m512));
-    const __m512 clamped = _mm512_min_ps(_mm512_max_ps(__m512(z), _mm512_setzero_ps()), _mm512_set1_ps(1.0f));
-    return lanes16::Floats(_mm512_roundscale_ps(_mm512_mul_ps(clamped, _mm512_set1_ps(kDepthCleared)),
-                                                _MM_FROUND_CUR_DIRECTION | _MM_FROUND_NO_EXC));
-#elif defined(__AVX__)
-    __m256 parts[2];
-    std::memcpy(parts, &z, sizeof parts);
-    for (__m256& p : parts) {
-        const __m256 clamped = _mm256_min_ps(_mm256_max_ps(p, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
-        p = _mm256_round_ps(_mm256_mul_ps(clamped, _mm256_set1_ps(kDepthCleared)), _MM_FROUND_CUR_DIRECTION | _MM_FROUND_NO_EXC);
-    }
-    lanes16::Floats r;
-    std::memcpy(&r, parts, sizeof r);
-    return r;
-#else
-    lanes16::Floats r;
-    for (int i = 0; i < kBatchLanes; ++i) r[i] = depth24(z[i]);
-    return r;
-#endif
+    // max(z, 0) takes 0 where z is NaN (its second operand), as maxss; rounding to nearest even is
+    // std::nearbyint in the rounding mode shading threads keep.
+    // A register at a time (one on AVX-512: as two halves, they met again through memory, a load
+    // spanning two stores waits for both to be written, a stall on every block's depth test).
+    return simd::by_pieces<lanes16::Floats>(
+        [](const auto& part) [[gnu::always_inline]] {
+            using Part = std::remove_cvref_t<decltype(part)>;
+            const Part above = simd::extremum_or_second<simd::Extremum::Max>(part, Part{});
+            const Part clamped = simd::extremum_or_second<simd::Extremum::Min>(above, simd::splat<Part>(1.0f));
+            return simd::round<simd::Rounding::NearestEven>(clamped * simd::splat<Part>(kDepthCleared));
+        },
+        z);
 }
 
 // Whether the open interiors of two set-up triangles intersect, exactly, on their snapped

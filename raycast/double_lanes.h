@@ -12,7 +12,7 @@
 
 namespace qs::lanes16 {
 
-typedef double Doubles __attribute__((vector_size(kBatchLanes * sizeof(double))));
+using Doubles = simd::Vector<double, kBatchLanes>;
 
 inline Doubles to_double(const Floats& v) { return __builtin_convertvector(v, Doubles); }
 inline Doubles to_double(const Ints& v) { return __builtin_convertvector(v, Doubles); }

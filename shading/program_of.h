@@ -17,6 +17,7 @@
 
 #include "shading/catalogue.h"
 #include "shading/glsl.h"
+#include "shading/number/simd/simd.h"
 #include "shading/program.h"
 #include "shading/shade_choice.h"
 #include "shading/varyings.h"
@@ -33,11 +34,7 @@ namespace qs {
 // Whether Program::shade_pair shades two batches as one number of twice the width. Only where a
 // batch is one register: with narrower vectors a batch already spans several registers, whose
 // instructions the CPU overlaps anyway.
-#if defined(__AVX512F__)
-inline constexpr bool kWidePairs = true;
-#else
-inline constexpr bool kWidePairs = false;
-#endif
+inline constexpr bool kWidePairs = simd::register_floats >= kBatchLanes;
 
 // How many lanes of float a shader that does not ask for wide batches is run on at once: one
 // register's worth where a batch would take two (AVX2: the batch's halves, two quads or eight
@@ -47,11 +44,7 @@ inline constexpr bool kWidePairs = false;
 // fit the sixteen registers. 5x Perlin's and Worley's bodies (no wide batches) take 0.67 and 0.85
 // of their time as two runs of eight; Perlin's (wide batches) 1.3x as long (GCC 12, Zen 4, an
 // AVX2 build).
-#if defined(__AVX__) && !defined(__AVX512F__)
-inline constexpr int kNarrowLanes = kBatchLanes / 2;
-#else
-inline constexpr int kNarrowLanes = kBatchLanes;
-#endif
+inline constexpr int kNarrowLanes = simd::register_floats == kBatchLanes / 2 ? kBatchLanes / 2 : kBatchLanes;
 
 // What a fragment stage that may discard returns (one that never does returns its colour).
 template <class F>

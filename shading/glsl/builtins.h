@@ -232,7 +232,7 @@ QS_VEC_BINARY(pow)
 QS_VEC_BINARY(atan)
 #undef QS_VEC_BINARY
 
-// a * b + c componentwise where every a * b is exact (number/simd_vector.h): not GLSL, a faster
+// a * b + c componentwise where every a * b is exact (number/simd/simd.h): not GLSL, a faster
 // way to write its a * b + c where that changes no bit.
 template <AnyVector V>
 vec_t<V> exact_product_add(const V& a, const std::type_identity_t<vec_t<V>>& b, const std::type_identity_t<vec_t<V>>& c) {

@@ -15,9 +15,7 @@
 #include <cstring>
 #include <type_traits>
 
-#if defined(__AVX2__)
-#include <immintrin.h>
-#endif
+#include "shading/number/simd/simd.h"
 
 #include "shading/number/number.h"
 
@@ -64,25 +62,16 @@ private:
         alignas(64) std::uint32_t at[n];
         alignas(64) std::uint32_t out[n];
         safe.store(at);
-#if defined(__AVX512F__)
-        if constexpr (n % 16 == 0) {
-            for (int k = 0; k < n; k += 16) {
-                const __m512i i = _mm512_load_si512(at + k);
-                _mm512_store_si512(out + k, _mm512_i32gather_epi32(i, values, 4));
+        // A register of indices per gather instruction, where the target has them.
+        constexpr int w = n % simd::register_floats == 0 ? simd::register_floats : 8;
+        if constexpr (simd::register_floats >= 8 && n % w == 0) {
+            using Index = simd::Vector<std::int32_t, w>;
+            for (int k = 0; k < n; k += w) {
+                const Index i = simd::load<Index>(reinterpret_cast<const std::int32_t*>(at + k));
+                simd::store(out + k, simd::gather(reinterpret_cast<const std::uint32_t*>(values), i));
             }
             return select(inside, Bits::load(out), Bits(0u));
         }
-#endif
-#if defined(__AVX2__)
-        if constexpr (n % 8 == 0) {
-            for (int k = 0; k < n; k += 8) {
-                const __m256i i = _mm256_load_si256(reinterpret_cast<const __m256i*>(at + k));
-                _mm256_store_si256(reinterpret_cast<__m256i*>(out + k),
-                                   _mm256_i32gather_epi32(reinterpret_cast<const int*>(values), i, 4));
-            }
-            return select(inside, Bits::load(out), Bits(0u));
-        }
-#endif
         for (int k = 0; k < n; ++k) std::memcpy(&out[k], &values[at[k]], sizeof out[k]);
         return select(inside, Bits::load(out), Bits(0u));
     }

@@ -7,14 +7,15 @@
 // vectors, on a machine without AVX-512, live on the stack and ran at half the speed), and the
 // plain lookup sixteen at a time in one AVX-512 register where the CPU has one; the
 // conversions, rounding and gathers llvmpipe's code compiles to are x86 instructions with the
-// same rounding and out-of-range results (cvtps2dq, cvttps2dq, roundps, vpgatherdd), written
-// with intrinsics where the ISA has them and lane by lane where it has not (the portable build:
-// the same bits).
+// same rounding and out-of-range results (cvtps2dq, cvttps2dq, roundps, vpgatherdd): the SIMD
+// layer's operations (shading/number/simd/simd.h), by those instructions where the target has
+// them and lane by lane where it has not (the portable build: the same bits).
 
 #include "shading/glsl/texture.h"
 #include "shading/glsl/texture_cube.h"
 #include "shading/glsl/texture_queries.h"
 #include "shading/glsl/texture_shadow.h"
+#include "shading/number/simd/simd.h"
 #include "shading/number/sin_cos.h"
 
 #include <algorithm>
@@ -24,8 +25,6 @@
 #include <cstring>
 #include <utility>
 #include <string>
-
-#include <immintrin.h>
 
 // 256-bit vectors are passed between this file's functions only (all inlined or internal): GCC's
 // note that their calling convention differs with AVX concerns nothing here.
@@ -41,11 +40,11 @@ namespace {
 // The helpers below are written over the width; each lane's arithmetic is the same at either.
 template <int N>
 struct LanesOf {
-    typedef float Floats __attribute__((vector_size(N * sizeof(float))));
-    typedef std::int32_t Ints __attribute__((vector_size(N * sizeof(std::int32_t))));
-    typedef std::uint32_t Uints __attribute__((vector_size(N * sizeof(std::uint32_t))));
+    using Floats = simd::Vector<float, N>;
+    using Ints = simd::Vector<std::int32_t, N>;
+    using Uints = simd::Vector<std::uint32_t, N>;
     // The 16-bit halves of the lanes (the 8-bit lerp's pairs).
-    typedef std::int16_t Shorts __attribute__((vector_size(N * sizeof(std::int32_t))));
+    using Shorts = simd::Vector<std::int16_t, 2 * N>;
 };
 template <class V>
 constexpr int lanes_in = int(sizeof(V) / sizeof(std::int32_t));
@@ -63,23 +62,9 @@ using Floats = LanesOf<L>::Floats;
 using Ints = LanesOf<L>::Ints;
 using Uints = LanesOf<L>::Uints;
 
-// Whether V is one AVX-512 register: its operations take their 512-bit instructions, of the
-// same rounding and results as the 256-bit ones.
-template <class V>
-constexpr bool kAvx512Register =
-#if defined(__AVX512F__) && defined(__AVX512BW__)
-    sizeof(V) == sizeof(__m512);
-#else
-    false;
-#endif
-
 // v in every lane (`Floats{} + v` would turn -0 into +0).
 template <class V, class T>
-V splat_as(T v) {
-    V r;
-    for (int i = 0; i < lanes_in<V>; ++i) r[i] = v;
-    return r;
-}
+V splat_as(T v) { return simd::splat<V>(v); }
 Floats splat(float v) { return splat_as<Floats>(v); }
 Ints splat(std::int32_t v) { return Ints{} + v; }
 template <class V>
@@ -103,78 +88,18 @@ template <class V>
 V imax(const V& a, const V& b) { return a > b ? a : b; }
 // Whether any lane is not zero, without a trip through memory (vptest, vptestmd).
 template <class V>
-bool any(const V& m) {
-    if constexpr (kAvx512Register<V>) {
-        const auto v = std::bit_cast<__m512i>(m);
-        return _mm512_test_epi32_mask(v, v) != 0;
-    }
-#if defined(__AVX__)
-    if constexpr (sizeof m == sizeof(__m256i)) {
-        const auto v = std::bit_cast<__m256i>(m);
-        return !_mm256_testz_si256(v, v);
-    }
-#endif
-    const V zero{};
-    return std::memcmp(&m, &zero, sizeof m) != 0;
-}
-
-// Applies a 128- or 256-bit intrinsic to every register's worth of a vector.
-template <class Out, class In, class Op>
-Out per_register(const In& v, Op op) {
-    Out r;
-    constexpr int kBytes = sizeof(decltype(op(std::declval<const char*>())));
-    for (int i = 0; i < int(sizeof v); i += kBytes) {
-        const auto x = op(reinterpret_cast<const char*>(&v) + i);
-        std::memcpy(reinterpret_cast<char*>(&r) + i, &x, kBytes);
-    }
-    return r;
-}
+bool any(const V& m) { return simd::any(m); }
 
 // cvtps2dq: round to nearest even (the default MXCSR mode); NaN and out of range give INT_MIN.
 template <class V>
-IntsLike<V> cvt_rne(const V& v) {
-    if constexpr (kAvx512Register<V>) return std::bit_cast<IntsLike<V>>(_mm512_cvtps_epi32(std::bit_cast<__m512>(v)));
-#if defined(__AVX__)
-    return per_register<IntsLike<V>>(v, [](const char* p) { return _mm256_cvtps_epi32(_mm256_loadu_ps(reinterpret_cast<const float*>(p))); });
-#else
-    return per_register<IntsLike<V>>(v, [](const char* p) { return _mm_cvtps_epi32(_mm_loadu_ps(reinterpret_cast<const float*>(p))); });
-#endif
-}
+IntsLike<V> cvt_rne(const V& v) { return simd::convert_nearest(v); }
 // cvttps2dq: toward zero; NaN and out of range give INT_MIN.
 template <class V>
-IntsLike<V> cvt_trunc(const V& v) {
-    if constexpr (kAvx512Register<V>) return std::bit_cast<IntsLike<V>>(_mm512_cvttps_epi32(std::bit_cast<__m512>(v)));
-#if defined(__AVX__)
-    return per_register<IntsLike<V>>(v, [](const char* p) { return _mm256_cvttps_epi32(_mm256_loadu_ps(reinterpret_cast<const float*>(p))); });
-#else
-    return per_register<IntsLike<V>>(v, [](const char* p) { return _mm_cvttps_epi32(_mm_loadu_ps(reinterpret_cast<const float*>(p))); });
-#endif
-}
+IntsLike<V> cvt_trunc(const V& v) { return simd::convert_truncate(v); }
 // roundps toward -inf, and to nearest even.
 template <class V>
-V floor(const V& v) {
-    if constexpr (kAvx512Register<V>) {
-        return std::bit_cast<V>(_mm512_roundscale_ps(std::bit_cast<__m512>(v), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
-    }
-#if defined(__AVX__)
-    return per_register<V>(v, [](const char* p) { return _mm256_floor_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p))); });
-#else
-    V r;
-    for (int i = 0; i < lanes_in<V>; ++i) r[i] = std::floor(v[i]);
-    return r;
-#endif
-}
-Floats round_even(const Floats& v) {
-#if defined(__AVX__)
-    return per_register<Floats>(v, [](const char* p) {
-        return _mm256_round_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p)), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
-    });
-#else
-    Floats r;
-    for (int i = 0; i < L; ++i) r[i] = std::nearbyint(v[i]);
-    return r;
-#endif
-}
+V floor(const V& v) { return simd::round<simd::Rounding::Floor>(v); }
+Floats round_even(const Floats& v) { return simd::round<simd::Rounding::NearestEven>(v); }
 Floats abs(const Floats& v) { return from_bits(bits(v) & 0x7fffffff); }
 
 // llvmpipe's lerps are llvm.fmuladd, which its JIT fuses on CPUs with FMA; so do we there
@@ -183,35 +108,12 @@ using llvmpipe_math::host_fuses;
 // w * (b - a) + a, fused where llvmpipe fuses it.
 Floats lerp(const Floats& w, const Floats& a, const Floats& b) {
     const Floats d = b - a;
-#if defined(__FMA__)
-    return per_register<Floats>(w, [&](const char* p) {
-        const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&w);
-        return _mm256_fmadd_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p)),
-                               _mm256_loadu_ps(reinterpret_cast<const float*>(reinterpret_cast<const char*>(&d) + i)),
-                               _mm256_loadu_ps(reinterpret_cast<const float*>(reinterpret_cast<const char*>(&a) + i)));
-    });
-#else
-    if (!host_fuses()) return w * d + a;
-    Floats r;
-    for (int i = 0; i < L; ++i) r[i] = std::fma(w[i], d[i], a[i]);
-    return r;
-#endif
+    return host_fuses() ? simd::fma(w, d, a) : w * d + a;
 }
 
 // texels[index] for every lane: one gather instruction per register where the ISA has one.
 template <class V>
-UintsLike<V> gather(const std::uint32_t* texels, const V& index) {
-    if constexpr (kAvx512Register<V>) return std::bit_cast<UintsLike<V>>(_mm512_i32gather_epi32(std::bit_cast<__m512i>(index), texels, 4));
-#if defined(__AVX2__)
-    return per_register<UintsLike<V>>(index, [&](const char* p) {
-        return _mm256_i32gather_epi32(reinterpret_cast<const int*>(texels), _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)), 4);
-    });
-#else
-    UintsLike<V> r;
-    for (int i = 0; i < lanes_in<V>; ++i) r[i] = texels[index[i]];
-    return r;
-#endif
-}
+UintsLike<V> gather(const std::uint32_t* texels, const V& index) { return simd::gather(texels, index); }
 
 // llvmpipe's 8-bit lerp (lp_build_lerp with pre-scaled weights, pmulhrsw): weight w in 1/256,
 // rounded half up, on 8-bit values: a + ((w (b - a) + 128) >> 8).
@@ -220,20 +122,7 @@ UintsLike<V> gather(const std::uint32_t* texels, const V& index) {
 // halves of its 32-bit lane, as llvmpipe unpacks them, and w in both halves. pmulhrsw computes
 // (w (d << 7) + 2^14) >> 15, which is the same; the sum stays in [0, 255], so nothing carries.
 template <class S>
-S mulhrs(const S& a, const S& b) {
-    if constexpr (kAvx512Register<S>) return std::bit_cast<S>(_mm512_mulhrs_epi16(std::bit_cast<__m512i>(a), std::bit_cast<__m512i>(b)));
-#if defined(__AVX2__)
-    return per_register<S>(a, [&](const char* p) {
-        const std::ptrdiff_t i = p - reinterpret_cast<const char*>(&a);
-        return _mm256_mulhrs_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)),
-                                   _mm256_loadu_si256(reinterpret_cast<const __m256i*>(reinterpret_cast<const char*>(&b) + i)));
-    });
-#else
-    S r;
-    for (int i = 0; i < 2 * lanes_in<S>; ++i) r[i] = std::int16_t((std::int32_t(a[i]) * b[i] + (1 << 14)) >> 15);
-    return r;
-#endif
-}
+S mulhrs(const S& a, const S& b) { return simd::multiply_high_rounded(a, b); }
 template <class U>
 U lerp8_pairs(const U& w_pairs, const U& a, const U& b) {
     using Shorts = ShortsLike<U>;
@@ -980,58 +869,46 @@ template <AxisMode M, class F>
 // rows, each within 8 texels of its first lane's, two loads, two permutes and a blend. The same
 // texels in every case. The plain lookup's on a CPU without AVX-512 (with it, the one below).
 [[maybe_unused]] Uints gather_near(const std::uint32_t* texels, std::size_t count, const Ints& index) {
-#if defined(__AVX2__)
-    const std::int32_t base = index[0];
-    const Ints d = index - base;
-    const auto window = [&](std::int32_t at) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + at)); };
-    const auto result = [](const __m256i& r) {
-        Uints out;
-        std::memcpy(&out, &r, sizeof out);
-        return out;
-    };
-    __m256i offsets;
-    if (std::size_t(base) + L <= count) {
-        if (!any(d & ~(L - 1))) {
-            std::memcpy(&offsets, &d, sizeof offsets);
-            return result(_mm256_permutevar8x32_epi32(window(base), offsets));
-        }
-        const std::int32_t upper_base = index[2];
-        static constexpr Ints kUpper{0, 0, -1, -1, 0, 0, -1, -1};
-        const Ints d2 = kUpper ? index - upper_base : d;
-        if (std::size_t(upper_base) + L <= count && !any(d2 & ~(L - 1))) {
-            std::memcpy(&offsets, &d2, sizeof offsets);
-            return result(_mm256_blend_epi32(_mm256_permutevar8x32_epi32(window(base), offsets),
-                                             _mm256_permutevar8x32_epi32(window(upper_base), offsets), 0xcc));
+    if constexpr (simd::register_bytes >= sizeof(Uints)) {
+        const std::int32_t base = index[0];
+        const Ints d = index - base;
+        const auto window = [&](std::int32_t at) { return simd::load<Uints>(texels + at); };
+        if (std::size_t(base) + L <= count) {
+            if (!any(d & ~(L - 1))) return simd::permute(window(base), d);
+            const std::int32_t upper_base = index[2];
+            static constexpr Ints kUpper{0, 0, -1, -1, 0, 0, -1, -1};
+            const Ints d2 = kUpper ? index - upper_base : d;
+            if (std::size_t(upper_base) + L <= count && !any(d2 & ~(L - 1))) {
+                return simd::blend<0xcc>(simd::permute(window(base), d2), simd::permute(window(upper_base), d2));
+            }
         }
     }
-#else
-    (void)count;
-#endif
     return gather(texels, index);
 }
 
-#if defined(__AVX512F__) && defined(__AVX512BW__)
 // Sixteen lanes, a 4x4 block of pixels (four quads, core/block_layout.h), where the TexelWindow
 // below does not hold their texels (a minified or wrapped texture, lanes in another order):
 // windows of 16 texels, one per texel row the lanes read, each lane permuted from the window
 // that holds its texel. The first window starts at the lesser index of lane 8, the block's
 // lower left pixel in GL's window, and lane 0, the first of a row of pixels laid out in order:
 // on a texture mapped without a flip, the least index either way. Each next window starts at
-// the first lane still left; lanes that four windows do not hold are gathered.
-LanesOf<16>::Uints gather_near(const std::uint32_t* texels, std::size_t count, const LanesOf<16>::Ints& index) {
-    const __m512i at = std::bit_cast<__m512i>(index);
-    __m512i texel = _mm512_setzero_si512();
-    __mmask16 left = 0xffff;
+// the first lane still left; lanes that four windows do not hold are gathered. The plain
+// lookup's where a register holds sixteen lanes.
+[[maybe_unused]] LanesOf<16>::Uints gather_near(const std::uint32_t* texels, std::size_t count, const LanesOf<16>::Ints& index) {
+    using U = LanesOf<16>::Uints;
+    using I = LanesOf<16>::Ints;
+    U texel{};
+    simd::LaneBits left = 0xffff;
     std::int32_t first = std::min(index[0], index[8]);
     for (int window = 0; window < 4 && std::size_t(first) + 16 <= count; ++window) {
-        const __m512i d = _mm512_sub_epi32(at, _mm512_set1_epi32(first));
-        const __mmask16 held = _mm512_mask_testn_epi32_mask(left, d, _mm512_set1_epi32(~15));  // 0 <= d < 16
-        texel = _mm512_mask_permutexvar_epi32(texel, held, d, _mm512_loadu_si512(texels + first));
-        left &= __mmask16(~held);
-        if (left == 0) return std::bit_cast<LanesOf<16>::Uints>(texel);
-        first = index[std::countr_zero(unsigned(left))];
+        const I d = index - first;
+        const simd::LaneBits held = left & simd::none_common_bits(d, simd::splat<I>(~15));  // 0 <= d < 16
+        texel = simd::permute_into(texel, held, simd::load<U>(texels + first), d);
+        left &= ~held;
+        if (left == 0) return texel;
+        first = index[std::countr_zero(left)];
     }
-    return std::bit_cast<LanesOf<16>::Uints>(_mm512_mask_i32gather_epi32(texel, left, at, texels, 4));
+    return simd::gather_into(texel, left, texels, index);
 }
 
 // Four texel rows of eight texels from (x0, y0), in two registers: what a 4x4 block reads where
@@ -1041,10 +918,11 @@ LanesOf<16>::Uints gather_near(const std::uint32_t* texels, std::size_t count, c
 // every step waits on the one before (single texture's square at 500x500: 0.82 against 1.12 ms
 // at best; docs/results.md, stop 49). Opened at the least column and row the block's lanes
 // read, moved back from the texture's far edges so that its loads stay inside level 0 (every
-// index is in [0, size) after wrap or clamp).
+// index is in [0, size) after wrap or clamp). Used where a register holds sixteen lanes.
 class TexelWindow {
 public:
     using Uints = LanesOf<16>::Uints;
+    using Ints = LanesOf<16>::Ints;
     static constexpr int kColumns = 8, kRows = 4;
     static bool fits(const Texture& tex) { return tex.width >= kColumns && tex.height >= kRows; }
 
@@ -1052,46 +930,44 @@ public:
     // texels are a monotonic function of its pixels' position (an affine or projective map,
     // clamped): lanes 2, 7, 8 and 13 of core/block_layout.h's 4x4 block. Lanes in any other
     // order may find the window short and take gather_near.
-    TexelWindow(const std::uint32_t* texels, int width, int height, const __m512i& x, const __m512i& y) {
+    TexelWindow(const std::uint32_t* texels, int width, int height, const Ints& x, const Ints& y) {
         // x's corners in lanes 0-3, y's in 4-7; the least of each in lanes 0 and 4.
-        const __m512i corners = _mm512_setr_epi32(2, 7, 8, 13, 18, 23, 24, 29, 0, 0, 0, 0, 0, 0, 0, 0);
-        __m256i m = _mm512_castsi512_si256(_mm512_permutex2var_epi32(x, corners, y));
-        m = _mm256_min_epi32(m, _mm256_shuffle_epi32(m, _MM_PERM_BADC));
-        m = _mm256_min_epi32(m, _mm256_shuffle_epi32(m, _MM_PERM_CDAB));
-        const int x0 = std::min(_mm256_cvtsi256_si32(m), width - kColumns);
-        const int y0 = std::min(_mm_cvtsi128_si32(_mm256_extracti128_si256(m, 1)), height - kRows);
-        const auto row = [&](int r) {
-            return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(texels + std::ptrdiff_t(y0 + r) * width + x0));
-        };
-        rows01_ = _mm512_inserti64x4(_mm512_castsi256_si512(row(0)), row(1), 1);
-        rows23_ = _mm512_inserti64x4(_mm512_castsi256_si512(row(2)), row(3), 1);
-        x0_ = _mm512_set1_epi32(x0), y0_ = _mm512_set1_epi32(y0);
+        static constexpr Ints kCorners{2, 7, 8, 13, 18, 23, 24, 29, 0, 0, 0, 0, 0, 0, 0, 0};
+        using Eight = LanesOf<8>::Ints;
+        const Ints corners = simd::lookup(x, y, kCorners);
+        Eight m = __builtin_shufflevector(corners, corners, 0, 1, 2, 3, 4, 5, 6, 7);
+        m = imin(m, __builtin_shufflevector(m, m, 2, 3, 0, 1, 6, 7, 4, 5));
+        m = imin(m, __builtin_shufflevector(m, m, 1, 0, 3, 2, 5, 4, 7, 6));
+        const int x0 = std::min(m[0], width - kColumns);
+        const int y0 = std::min(m[4], height - kRows);
+        const auto row = [&](int r) { return simd::load<LanesOf<8>::Uints>(texels + std::ptrdiff_t(y0 + r) * width + x0); };
+        rows01_ = __builtin_shufflevector(row(0), row(1), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+        rows23_ = __builtin_shufflevector(row(2), row(3), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+        x0_ = simd::splat<Ints>(x0), y0_ = simd::splat<Ints>(y0);
     }
     // Whether the window holds every texel of the lanes whose columns are xa's or xb's and
     // rows ya's or yb's (a bilinear lookup's four; a nearest one's, xb = xa and yb = ya).
-    bool holds(const __m512i& xa, const __m512i& ya, const __m512i& xb, const __m512i& yb) const {
-        const __m512i dx = _mm512_or_si512(_mm512_sub_epi32(xa, x0_), _mm512_sub_epi32(xb, x0_));
-        const __m512i dy = _mm512_or_si512(_mm512_sub_epi32(ya, y0_), _mm512_sub_epi32(yb, y0_));
-        const __mmask16 in_columns = _mm512_cmplt_epu32_mask(dx, _mm512_set1_epi32(kColumns));
-        return _mm512_mask_cmplt_epu32_mask(in_columns, dy, _mm512_set1_epi32(kRows)) == 0xffff;
+    bool holds(const Ints& xa, const Ints& ya, const Ints& xb, const Ints& yb) const {
+        const Ints dx = (xa - x0_) | (xb - x0_);
+        const Ints dy = (ya - y0_) | (yb - y0_);
+        return (simd::less_unsigned_bits(dx, simd::splat<Ints>(kColumns)) &
+                simd::less_unsigned_bits(dy, simd::splat<Ints>(kRows))) == 0xffff;
     }
     // The texels at (x, y), for lanes the window holds.
-    Uints texels(const __m512i& x, const __m512i& y) const {
-        const __m512i offset = _mm512_add_epi32(_mm512_slli_epi32(_mm512_sub_epi32(y, y0_), 3), _mm512_sub_epi32(x, x0_));
-        return std::bit_cast<Uints>(_mm512_permutex2var_epi32(rows01_, offset, rows23_));
-    }
+    Uints texels(const Ints& x, const Ints& y) const { return simd::lookup(rows01_, rows23_, ((y - y0_) << 3) + (x - x0_)); }
 
 private:
-    __m512i rows01_, rows23_;  // rows y0, y0 + 1 | y0 + 2, y0 + 3, each from column x0
-    __m512i x0_, y0_;
+    Uints rows01_, rows23_;  // rows y0, y0 + 1 | y0 + 2, y0 + 3, each from column x0
+    Ints x0_, y0_;
 };
 
 // The plain lookup's register: one AVX-512 register of sixteen lanes where the CPU has one
 // (docs/results.md, stop 44: a bilinear lookup in about half the time of two 8-lane registers).
-constexpr int kPlainLanes = 16;
-#else
-constexpr int kPlainLanes = L;
-#endif
+constexpr int kPlainLanes = simd::register_floats >= 16 ? 16 : L;
+// kPlainLanes as a value of a lookup's template: the sixteen-lane code below is compiled only
+// where it is taken.
+template <AxisMode>
+constexpr int kPlainLanesOf = kPlainLanes;
 
 // 0, 1, 2, ... in the lanes of I.
 template <class I>
@@ -1133,16 +1009,15 @@ template <bool Linear, class F, class Texel>
 // single-texture square took 5.7 ms against 3.6 at best.
 template <AxisMode MS, AxisMode MT, bool Linear>
 [[gnu::flatten]] void sample_plain_2d(const Texture& tex, const PlainLookup& l) {
-    using F = LanesOf<kPlainLanes>::Floats;
-    using I = LanesOf<kPlainLanes>::Ints;
+    constexpr int kLanes = kPlainLanesOf<MS>;
+    using F = typename LanesOf<kLanes>::Floats;
+    using I = typename LanesOf<kLanes>::Ints;
     const I width = I{} + tex.width, height = I{} + tex.height;
     const std::uint32_t* t = tex.texels.data();
     const std::size_t count = tex.texels.size();
-#if defined(__AVX512F__) && defined(__AVX512BW__)
-    const bool window_fits = TexelWindow::fits(tex);
-#endif
-    for (int base = 0; base < l.lanes; base += kPlainLanes) {
-        const int n = std::min(l.lanes - base, kPlainLanes);
+    const bool window_fits = kLanes == 16 && TexelWindow::fits(tex);
+    for (int base = 0; base < l.lanes; base += kLanes) {
+        const int n = std::min(l.lanes - base, kLanes);
         const F s = load_lanes<F>(l.s, base, n), tc = load_lanes<F>(l.t, base, n);
         AxisLanes<F> x, y;
         if constexpr (Linear) {
@@ -1151,16 +1026,15 @@ template <AxisMode MS, AxisMode MT, bool Linear>
         } else {
             x.i0 = plain_nearest_axis<MS>(s, width), y.i0 = plain_nearest_axis<MT>(tc, height);
         }
-#if defined(__AVX512F__) && defined(__AVX512BW__)
-        if (window_fits && n == kPlainLanes) {
-            const auto v = [](const I& i) { return std::bit_cast<__m512i>(i); };
-            const TexelWindow window(t, tex.width, tex.height, v(x.i0), v(y.i0));
-            if (window.holds(v(x.i0), v(y.i0), v(Linear ? x.i1 : x.i0), v(Linear ? y.i1 : y.i0))) {
-                store_texels(l, base, n, filter<Linear>(x, y, [&](const I& xi, const I& yi) { return window.texels(v(xi), v(yi)); }));
-                continue;
+        if constexpr (kLanes == 16) {
+            if (window_fits && n == kLanes) {
+                const TexelWindow window(t, tex.width, tex.height, x.i0, y.i0);
+                if (window.holds(x.i0, y.i0, Linear ? x.i1 : x.i0, Linear ? y.i1 : y.i0)) {
+                    store_texels(l, base, n, filter<Linear>(x, y, [&](const I& xi, const I& yi) { return window.texels(xi, yi); }));
+                    continue;
+                }
             }
         }
-#endif
         store_texels(l, base, n, filter<Linear>(x, y, [&](const I& xi, const I& yi) { return gather_near(t, count, yi * width + xi); }));
     }
 }

@@ -49,7 +49,7 @@ struct Dual2 {
         T q = a.val / b.val;
         return {q, (a.dx - q * b.dx) / b.val, (a.dy - q * b.dy) / b.val};
     }
-    // a * b + c with a * b exact (number/simd_vector.h); d(uv + w) = u dv + v du + dw, as the
+    // a * b + c with a * b exact (number/simd/simd.h); d(uv + w) = u dv + v du + dw, as the
     // product and the sum give it
     friend Dual2 exact_product_add(const Dual2& a, const Dual2& b, const Dual2& c) {
         return {exact_product_add(a.val, b.val, c.val), (a.val * b.dx + a.dx * b.val) + c.dx,

@@ -29,15 +29,13 @@
 #include <cstring>
 #include <cstdint>
 #include <type_traits>
-
-#if defined(__SSE2__)
-#include <immintrin.h>
-#endif
+#include <utility>
 
 #include "shading/number/checked.h"
 #include "shading/number/dual2.h"
 #include "shading/number/lanes.h"
 #include "shading/number/scalar.h"
+#include "shading/number/simd/simd.h"
 #include "shading/number/wide_vector.h"
 
 namespace qs {
@@ -56,25 +54,19 @@ struct fragments_of<Lanes<S, N, L>> : std::integral_constant<int, N> {};
 template <class S, int N>
 void truncate(const S (&in)[N], std::int32_t (&out)[N]) {
     int k = 0;
-#if defined(__AVX512F__)
-    if constexpr (std::is_same_v<S, float>) {
-        for (; k + 16 <= N; k += 16) _mm512_storeu_si512(out + k, _mm512_cvttps_epi32(_mm512_loadu_ps(in + k)));
-    } else {
-        for (; k + 8 <= N; k += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm512_cvttpd_epi32(_mm512_loadu_pd(in + k)));
-    }
-#endif
-#if defined(__AVX__)
-    if constexpr (std::is_same_v<S, float>) {
-        for (; k + 8 <= N; k += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + k), _mm256_cvttps_epi32(_mm256_loadu_ps(in + k)));
-    } else {
-        for (; k + 4 <= N; k += 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm256_cvttpd_epi32(_mm256_loadu_pd(in + k)));
-    }
-#endif
-#if defined(__SSE2__)
-    if constexpr (std::is_same_v<S, float>) {
-        for (; k + 4 <= N; k += 4) _mm_storeu_si128(reinterpret_cast<__m128i*>(out + k), _mm_cvttps_epi32(_mm_loadu_ps(in + k)));
-    }
-#endif
+    // A register of floats (of doubles, giving half a register of ints) at a time, then halves.
+    constexpr int kWidest = int(simd::register_bytes / sizeof(S));
+    [&]<int... I>(std::integer_sequence<int, I...>) {
+        (
+            [&] {
+                constexpr int w = kWidest >> I;
+                if constexpr (w >= 4 && (std::is_same_v<S, float> || simd::register_bytes >= 32)) {
+                    using V = simd::Vector<S, w>;
+                    for (; k + w <= N; k += w) simd::store(out + k, simd::convert_truncate(simd::load<V>(in + k)));
+                }
+            }(),
+            ...);
+    }(std::make_integer_sequence<int, 3>());
     for (; k < N; ++k) {
         out[k] = (in[k] > S(-2147483649.0) && in[k] < S(2147483648.0)) ? std::int32_t(in[k]) : std::int32_t(INT32_MIN);
     }

@@ -126,7 +126,7 @@ public:
         return Lanes(simd::bit_cast<T>(simd::bit_cast<Bits>(a.v) & Mask::Vector::splat(std::numeric_limits<Bits>::max())));
     }
     friend Lanes sqrt(const Lanes& a) { return Lanes(simd::sqrt(a.v)); }
-    // a * b + c where a * b is exact: fused or not, the same bits (simd_vector.h).
+    // a * b + c where a * b is exact: fused or not, the same bits (simd/simd.h).
     friend Lanes exact_product_add(const Lanes& a, const Lanes& b, const Lanes& c) {
         return Lanes(simd::exact_product_add(a.v, b.v, c.v));
     }

@@ -58,14 +58,10 @@ inline float sin(float a) { return llvmpipe_math::sin(a); }
 inline double sin(double a) { return std::sin(a); }
 inline float cos(float a) { return llvmpipe_math::cos(a); }
 inline double cos(double a) { return std::cos(a); }
-// a * b + c where a * b is exact: fused or not, the same bits (number/simd_vector.h).
+// a * b + c where a * b is exact: fused or not, the same bits (number/simd/simd.h).
 template <std::floating_point T>
 T exact_product_add(T a, T b, T c) {
-#if defined(__FMA__)
-    return std::fma(a, b, c);
-#else
-    return a * b + c;
-#endif
+    return simd::exact_product_add(a, b, c);
 }
 
 // Lane access, so that code written over any number type can look at single values.

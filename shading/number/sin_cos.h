@@ -32,23 +32,12 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__x86_64__) || defined(__i386__)
-#include <immintrin.h>
-#endif
+#include "shading/number/simd/simd.h"
 
 namespace qs::llvmpipe_math {
 
 // Whether llvm.fmuladd is fused on this machine: LLVM fuses it when the CPU has FMA.
-inline bool host_fuses() {
-#if defined(__FMA__)
-    return true;
-#elif defined(__x86_64__) || defined(__i386__)
-    static const bool fma = __builtin_cpu_supports("fma");
-    return fma;
-#else
-    return false;
-#endif
-}
+inline bool host_fuses() { return simd::Target::cpu_has_fma(); }
 
 namespace detail {
 
@@ -83,40 +72,7 @@ V fmuladd(V a, V b, V c) {
     if constexpr (is_scalar<V>) {
         return host_fuses() ? std::fma(a, b, c) : a * b + c;
     } else {
-        constexpr int n = sizeof(V) / sizeof(float);
-#if defined(__AVX512F__)
-        if constexpr (n % 16 == 0) {
-            V r;
-            for (int i = 0; i < n; i += 16)
-                _mm512_storeu_ps(reinterpret_cast<float*>(&r) + i,
-                                 _mm512_fmadd_ps(_mm512_loadu_ps(reinterpret_cast<const float*>(&a) + i),
-                                                 _mm512_loadu_ps(reinterpret_cast<const float*>(&b) + i),
-                                                 _mm512_loadu_ps(reinterpret_cast<const float*>(&c) + i)));
-            return r;
-        }
-#endif
-#if defined(__FMA__)
-        if constexpr (n % 8 == 0) {
-            V r;
-            for (int i = 0; i < n; i += 8)
-                _mm256_storeu_ps(reinterpret_cast<float*>(&r) + i,
-                                 _mm256_fmadd_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(&a) + i),
-                                                 _mm256_loadu_ps(reinterpret_cast<const float*>(&b) + i),
-                                                 _mm256_loadu_ps(reinterpret_cast<const float*>(&c) + i)));
-            return r;
-        } else if constexpr (n == 4) {
-            V r;
-            _mm_storeu_ps(reinterpret_cast<float*>(&r),
-                          _mm_fmadd_ps(_mm_loadu_ps(reinterpret_cast<const float*>(&a)),
-                                       _mm_loadu_ps(reinterpret_cast<const float*>(&b)),
-                                       _mm_loadu_ps(reinterpret_cast<const float*>(&c))));
-            return r;
-        }
-#endif
-        if (!host_fuses()) return a * b + c;
-        V r;
-        for (int i = 0; i < n; ++i) r[i] = std::fma(a[i], b[i], c[i]);
-        return r;
+        return host_fuses() ? simd::fma(a, b, c) : a * b + c;
     }
 }
 
@@ -202,13 +158,7 @@ V cos(V a) { return detail::sin_or_cos<V, true>(a); }
 // The floats one register holds in this build. N lanes are evaluated a register at a time: on a
 // vector type wider than the registers GCC splits the conversions and selects lane by lane
 // (measured: 16 lanes as one 64-byte vector on AVX2 take ten times as long as two of 32 bytes).
-#if defined(__AVX512F__)
-inline constexpr int kRegisterFloats = 16;
-#elif defined(__AVX__)
-inline constexpr int kRegisterFloats = 8;
-#else
-inline constexpr int kRegisterFloats = 4;
-#endif
+inline constexpr int kRegisterFloats = simd::register_floats;
 
 // out[i] = sin(in[i]) (cos with Cos) for N floats.
 template <bool Cos, int N>

@@ -22,7 +22,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "shading/number/simd_vector.h"
+#include "shading/number/simd/simd.h"
 
 namespace qs::simd {
 
@@ -143,7 +143,7 @@ template <class T, int N>
     return Wide<T, N>::map([](const auto& k, const auto& x, const auto& y) QS_ALWAYS_INLINE { return k ? x : y; }, m, a, b);
 }
 
-// extremum_or_second (simd_vector.h), part by part.
+// extremum_or_second (simd/simd.h), part by part.
 template <Extremum E, class T, int N>
 [[gnu::always_inline]] inline Wide<T, N> extremum_or_second(const Wide<T, N>& a, const Wide<T, N>& b) {
     return Wide<T, N>::map([](const auto& x, const auto& y) QS_ALWAYS_INLINE { return simd::extremum_or_second<E>(x, y); }, a, b);

@@ -1,4 +1,4 @@
-// exact_product_add (number/simd_vector.h) and the noises' mod289 and permute written with it
+// exact_product_add (number/simd/simd.h) and the noises' mod289 and permute written with it
 // (noise/simplex2d.h), snoise3's gradients (noise/simplex3d.h), and the cellular and flow noises'
 // permute and mod 7 (noise/flow_noise.h, noise/cellular.h): where the product is exact,
 // fusing changes no bit, and the noises' products are exact over the whole range the noise

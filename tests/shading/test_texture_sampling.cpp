@@ -16,9 +16,8 @@
 #include <random>
 #include <vector>
 
-#include <immintrin.h>
-
 #include "shading/glsl.h"
+#include "shading/number/simd/simd.h"
 #include "shading/program.h"
 
 namespace qs {
@@ -28,8 +27,8 @@ namespace {
 using namespace glsl;
 
 // ---- scalar llvmpipe --------------------------------------------------------------------------
-int32_t cvt_rne(float f) { return _mm_cvtss_si32(_mm_set_ss(f)); }
-int32_t cvt_trunc(float f) { return _mm_cvttss_si32(_mm_set_ss(f)); }
+int32_t cvt_rne(float f) { return simd::convert_nearest(simd::Vector<float, 1>{f})[0]; }
+int32_t cvt_trunc(float f) { return simd::convert_truncate(simd::Vector<float, 1>{f})[0]; }
 int32_t ifloor(float f) { return cvt_trunc(std::floor(f)); }
 float minps(float a, float b) { return a < b ? a : b; }
 float maxps(float a, float b) { return a > b ? a : b; }
