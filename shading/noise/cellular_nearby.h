@@ -20,7 +20,7 @@ inline constexpr float Kzo = 0.416666666667f;    // 1/2-1/6*2
 }  // namespace cellular_constants
 
 namespace cellular_detail {
-// Lanes of float a 512-bit register's worth at a time.
+// Lanes of float a 512-bit register's worth at a time (the SIMD layer's AVX-512 target).
 template <class F>
 inline constexpr bool kAvx512FloatLanes = false;
 template <int N, class Layout>
@@ -49,7 +49,6 @@ alignas(64) inline constexpr float kTableDy[32] = {-2, -2, -2, -2, -2, -1, -1, -
 // values, the same bits (tests/shading/test_noise.cpp compares every lane with the scalar code).
 template <class F, class Keep>
 bool cellular_search_nearby(const vec2<F>& Pi, const vec2<F>& Pf, Keep&& keep) {
-#if defined(__AVX512F__)
     if constexpr (cellular_detail::kAvx512FloatLanes<F>) {
         using namespace cellular_constants;
         using Table = Lanes<float, 32>;
@@ -78,7 +77,6 @@ bool cellular_search_nearby(const vec2<F>& Pi, const vec2<F>& Pf, Keep&& keep) {
         }
         return true;
     }
-#endif
     (void)Pi, (void)Pf, (void)keep;
     return false;
 }
