@@ -355,10 +355,10 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     };
     const bool vertex = kind_ == StageKind::Vertex;
     if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
-    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
     const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset ||
                         op == glslang::EOpTextureGatherOffsets;
-    if (shadow && !gather && op != glslang::EOpTextureQuerySize && op != glslang::EOpTextureQueryLod) {
+    if (interface_.program.samplers[std::size_t(slot)].shadow && !gather && op != glslang::EOpTextureQuerySize &&
+        op != glslang::EOpTextureQueryLod) {
         return eval_shadow(op, node, slot, v);
     }
     const Place zero{{B::Float, float_constant(0.0f)}};
@@ -389,58 +389,63 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
         case glslang::EOpTextureProjGradOffset: return gradient(project(v[0]), v[1], v[2], &v[3]);
         case glslang::EOpTextureFetch: case glslang::EOpTextureFetchOffset: return eval_texel_fetch(op, slot, dims, v);
         case glslang::EOpTextureQuerySize: return eval_texture_size(slot, dims, v);
-        case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: {
-            const bool offset = op == glslang::EOpTextureGatherOffset;
-            if (shadow) {
-                // the reference value in F[b], marked by channel 4; the offset after it
-                Place r = lookup(offset ? ir::Op::TextureGatherOffset : ir::Op::TextureGather, v[0], &v[1], nullptr,
-                                 nullptr, offset ? &v[2] : nullptr);
-                stage_.code.back().m = 4;
-                return r;
-            }
-            // The channel is a constant expression (glslang checks it is one, 0 to 3).
-            const std::size_t comp_arg = offset ? 3 : 2;
-            int comp = 0;
-            if (args.size() > comp_arg) {
-                const glslang::TIntermConstantUnion* k = args[comp_arg]->getAsConstantUnion();
-                if (!k) refuse(node, "textureGather's channel must be a constant expression");
-                comp = k->getConstArray()[0].getIConst();
-            }
-            if (dims != 2 || comp < 0 || comp > 3) refuse(node, "textureGather on this sampler or of this channel");
-            const ir::Op o = offset ? ir::Op::TextureGatherOffset : ir::Op::TextureGather;
-            Place r = lookup(o, v[0], nullptr, nullptr, nullptr, offset ? &v[1] : nullptr);
-            stage_.code.back().m = std::uint8_t(comp);
-            return r;
-        }
-        case glslang::EOpTextureGatherOffsets: {
-            // Four gathers, each at its offset (a constant array of four ivec2, as GLSL requires),
-            // component i texel i0 j0 of the i-th: their w, as Mesa lowers it (nir_lower_tex).
-            const std::size_t offsets_arg = shadow ? 3 : 2;
-            const glslang::TIntermConstantUnion* k = args[offsets_arg]->getAsConstantUnion();
-            if (!k) refuse(node, "textureGatherOffsets' offsets must be a constant expression");
-            int comp = shadow ? 4 : 0;
-            if (!shadow && args.size() > 3) {
-                const glslang::TIntermConstantUnion* c = args[3]->getAsConstantUnion();
-                if (!c) refuse(node, "textureGather's channel must be a constant expression");
-                comp = c->getConstArray()[0].getIConst();
-            }
-            if (dims != 2 || comp < 0 || comp > 4) refuse(node, "textureGatherOffsets on this sampler or of this channel");
-            const glslang::TConstUnionArray& o = k->getConstArray();
-            Place r = temps(B::Float, 4);
-            for (int i = 0; i < 4; ++i) {
-                const Place offset{{B::Int, int_constant(o[2 * i].getIConst())}, {B::Int, int_constant(o[2 * i + 1].getIConst())}};
-                const Place g = lookup(ir::Op::TextureGatherOffset, v[0], shadow ? &v[1] : nullptr, nullptr, nullptr, &offset);
-                stage_.code.back().m = std::uint8_t(comp);
-                move(r[std::size_t(i)], g[3], false);
-            }
-            return r;
-        }
+        case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: case glslang::EOpTextureGatherOffsets:
+            return eval_gather(op, node, slot, args, v);
         case glslang::EOpTextureQueryLod: return eval_query_lod(node, slot, dims, v);
         default: break;
     }
     refuse(node, "this texture function is not supported (supported: texture, texture2D, texture3D with or without a "
                  "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
-                 "textureGather, textureGatherOffset, textureQueryLod)");
+                 "textureGather, textureGatherOffset, textureGatherOffsets, textureQueryLod, textureQueryLevels)");
+}
+
+// A gather at p on a 2D texture (level 0's four texels of a bilinear lookup): channel `comp`, or,
+// channel 4, each texel compared with the reference value `ref`; at a texel offset where given.
+Place StageLowering::emit_gather(int slot, const Place& p, const Place* ref, const Place* offset, int comp) {
+    const std::uint32_t a = consecutive(Place(p.begin(), p.begin() + 2));
+    std::uint32_t c = 0;
+    if (offset) {
+        const Place o = convert_bits(*offset, B::Int);
+        c = consecutive(Place(o.begin(), o.begin() + 2));
+    }
+    Place r = temps(B::Float, 4);
+    ir::Instr& e = emit(offset ? ir::Op::TextureGatherOffset : ir::Op::TextureGather);
+    e.d = r[0].reg, e.a = a, e.b = ref ? (*ref)[0].reg : 0, e.c = c, e.n = 2, e.m = std::uint8_t(comp);
+    e.count = std::uint16_t(slot);
+    return r;
+}
+
+// textureGather, textureGatherOffset and textureGatherOffsets on a sampler2D (a channel, a
+// constant expression, last) or a sampler2DShadow (a reference value after P, each texel
+// compared with it). textureGatherOffsets is four gathers, each at its offset (a constant array
+// of four ivec2, as GLSL requires), component i the i0 j0 texel of the i-th: their w, as Mesa
+// lowers it (nir_lower_tex).
+Place StageLowering::eval_gather(glslang::TOperator op, TIntermTyped* node, int slot,
+                                 const std::vector<TIntermTyped*>& args, const std::vector<Place>& v) {
+    const ir::Sampler& sampler = interface_.program.samplers[std::size_t(slot)];
+    if (sampler.dims != 2) refuse(node, "a gather on this sampler");
+    const std::size_t after = sampler.shadow ? 2 : 1;  // v's index of the offset or offsets
+    const Place* ref = sampler.shadow ? &v[1] : nullptr;
+    int comp = sampler.shadow ? 4 : 0;
+    const std::size_t comp_arg = op == glslang::EOpTextureGather ? 2 : 3;
+    if (!sampler.shadow && args.size() > comp_arg) {
+        const glslang::TIntermConstantUnion* k = args[comp_arg]->getAsConstantUnion();
+        if (!k) refuse(node, "a gather's channel must be a constant expression");
+        comp = k->getConstArray()[0].getIConst();
+        if (comp < 0 || comp > 3) refuse(node, "a gather of this channel");
+    }
+    if (op == glslang::EOpTextureGather) return emit_gather(slot, v[0], ref, nullptr, comp);
+    if (op == glslang::EOpTextureGatherOffset) return emit_gather(slot, v[0], ref, &v[after], comp);
+    const glslang::TIntermConstantUnion* k = args[after + 1]->getAsConstantUnion();
+    if (!k) refuse(node, "textureGatherOffsets' offsets must be a constant expression");
+    const glslang::TConstUnionArray& o = k->getConstArray();
+    Place r = temps(B::Float, 4);
+    for (int i = 0; i < 4; ++i) {
+        const Place offset{{B::Int, int_constant(o[2 * i].getIConst())},
+                           {B::Int, int_constant(o[2 * i + 1].getIConst())}};
+        move(r[std::size_t(i)], emit_gather(slot, v[0], ref, &offset, comp)[3], false);
+    }
+    return r;
 }
 
 // A lookup in a samplerCube (P a direction) or a samplerCubeShadow (P.xyz a direction, P.w the

@@ -100,6 +100,9 @@ private:
     Place eval_texel_fetch(glslang::TOperator op, int slot, int dims, const std::vector<Place>& v);
     Place eval_texture_size(int slot, int dims, const std::vector<Place>& v);
     Place eval_query_lod(glslang::TIntermTyped* node, int slot, int dims, const std::vector<Place>& v);
+    Place eval_gather(glslang::TOperator op, glslang::TIntermTyped* node, int slot,
+                      const std::vector<glslang::TIntermTyped*>& args, const std::vector<Place>& v);
+    Place emit_gather(int slot, const Place& p, const Place* ref, const Place* offset, int comp);
     Place eval_cube(glslang::TOperator op, glslang::TIntermTyped* node, int slot, const std::vector<glslang::TIntermTyped*>& args,
                     const std::vector<Place>& v);
     // a * b where a has `columns` columns (or is a vector) of `rows` rows, and b `columns_b`.
