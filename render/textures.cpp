@@ -33,6 +33,8 @@ glsl::SamplerState sampler_state(const Texture& texture) {
                                                                                                           : glsl::MipFilter::None;
     if (texture.compare) {
         // scenes' CompareFunc holds GL's values, NEVER to ALWAYS in glsl::CompareFunc's order
+        static_assert(int(CompareFunc::Always) - int(CompareFunc::Never) == int(glsl::CompareFunc::Always) &&
+                      int(CompareFunc::LessEqual) - int(CompareFunc::Never) == int(glsl::CompareFunc::LessEqual));
         r.compare = glsl::CompareFunc(int(*texture.compare) - int(CompareFunc::Never));
     }
     return r;

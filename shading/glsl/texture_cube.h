@@ -264,21 +264,35 @@ vec2<F> cube_lod_query(const Texture& tex, const vec3<F>& p) {
     const bool carried = tex.needs_lod() || is_dual2<F>::value;
     project_cube<F>(tex, p, carried, nullptr, nullptr, pr);
     if (!carried) {
-        if constexpr (!QuadNumber<F>) throw_lod_without_quads();
-        const float size = float(tex.width);
-        for (int i = 0; i < N; ++i) {
-            const int tl = quad_tl(i), tr = quad_tr(i), bl = quad_bl(i);
-            float xs = size * (pr.s[tr] - pr.s[tl]), xt = size * (pr.t[tr] - pr.t[tl]);
-            float ys = size * (pr.s[bl] - pr.s[tl]), yt = size * (pr.t[bl] - pr.t[tl]);
-            xs = xs * xs, xt = xt * xt, ys = ys * ys, yt = yt * yt;
-            const float x = xs + xt, y = ys + yt;
-            pr.rho2[i] = x > y ? x : y;
+        if constexpr (QuadNumber<F>) {
+            using V = typename float_lanes<F>::type;
+            const float size = float(tex.width);
+            to_floats(quad_rho2(std::array<V, 2>{from_floats<V>(pr.s), from_floats<V>(pr.t)}, {size, size, 0.0f}),
+                      pr.rho2);
+            pr.lod_cases = quad_cases(p);
+        } else {
+            throw_lod_without_quads();
         }
-        pr.lod_cases = quad_cases(p);
     }
     query_lod(tex, {N, pr.rho2, level, lod});
     const LaneCases cases = pr.lod_cases | cases_of(p.x) | cases_of(p.y) | cases_of(p.z);
     return vec2<F>(constant_lanes<F>(level, cases), constant_lanes<F>(lod, cases));
+}
+
+// Each lane's face of direction p and its coordinates on it, s = sc scale + 0.5 (face_scale: as
+// a lookup that carries derivatives projects, or not).
+template <Number F>
+void face_coordinates(const vec3<F>& p, bool with_derivatives, float* s, float* t, std::int32_t* face) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float c[3][N];
+    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
+    for (int i = 0; i < N; ++i) {
+        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
+        face[i] = f.face;
+        const float scale = face_scale(f.ma, with_derivatives);
+        s[i] = f.sc * scale + 0.5f;
+        t[i] = f.tc * scale + 0.5f;
+    }
 }
 
 // A samplerCubeShadow's comparison at direction p.xyz with reference value p.w: the depth
@@ -286,17 +300,10 @@ vec2<F> cube_lod_query(const Texture& tex, const vec3<F>& p) {
 template <Number F>
 F cube_shadow(const Texture& tex, const vec4<F>& p) {
     constexpr int N = lanes_of<F>();
-    alignas(64) float c[3][N], s[N], t[N], ref[N], out[N];
+    alignas(64) float s[N], t[N], ref[N], out[N];
     alignas(64) std::int32_t face[N];
-    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
+    face_coordinates(p.xyz(), false, s, t, face);
     to_floats(p.w, ref);
-    for (int i = 0; i < N; ++i) {
-        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
-        face[i] = f.face;
-        const float scale = face_scale(f.ma, false);
-        s[i] = f.sc * scale + 0.5f;
-        t[i] = f.tc * scale + 0.5f;
-    }
     ShadowLookup l;
     l.lanes = N, l.s = s, l.t = t, l.ref = ref, l.face = face, l.out = out;
     sample_shadow(tex, l);
@@ -309,29 +316,12 @@ F cube_shadow(const Texture& tex, const vec4<F>& p) {
 template <Number F>
 vec4<F> cube_gather(const Texture& tex, const vec3<F>& p, int component, const F* ref) {
     constexpr int N = lanes_of<F>();
-    alignas(64) float c[3][N], s[N], t[N], r[N], out[4][N];
+    alignas(64) float s[N], t[N];
     alignas(64) std::int32_t face[N];
-    for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
-    const bool need_derivs = tex.needs_lod();
-    for (int i = 0; i < N; ++i) {
-        const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
-        face[i] = f.face;
-        const float scale = face_scale(f.ma, need_derivs);
-        s[i] = f.sc * scale + 0.5f;
-        t[i] = f.tc * scale + 0.5f;
-    }
+    face_coordinates(p, tex.needs_lod(), s, t, face);
     Gather g;
     g.lanes = N, g.s = s, g.t = t, g.component = component, g.face = face;
-    LaneCases cases = cases_of(p.x) | cases_of(p.y) | cases_of(p.z);
-    if (ref) {
-        to_floats(*ref, r);
-        g.ref = r;
-        cases = cases | cases_of(*ref);
-    }
-    for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
-    gather_channel(tex, g);
-    return vec4<F>(constant_lanes<F>(out[0], cases), constant_lanes<F>(out[1], cases), constant_lanes<F>(out[2], cases),
-                   constant_lanes<F>(out[3], cases));
+    return run_gather<F>(tex, g, ref, cases_of(p.x) | cases_of(p.y) | cases_of(p.z));
 }
 
 }  // namespace texture_detail

@@ -91,11 +91,28 @@ F constant_lanes(const float* v, [[maybe_unused]] LaneCases cases) {
     }
 }
 
+// Gather `g` (its lanes' coordinates set) with, where given, each texel compared with `ref`: the
+// four channels as F, constant over `cases` and ref's.
+template <Number F>
+vec4<F> run_gather(const Texture& tex, Gather& g, const F* ref, LaneCases cases) {
+    constexpr int N = lanes_of<F>();
+    alignas(64) float r[N], out[4][N];
+    if (ref) {
+        to_floats(*ref, r);
+        g.ref = r;
+        cases = cases | cases_of(*ref);
+    }
+    for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
+    gather_channel(tex, g);
+    return vec4<F>(constant_lanes<F>(out[0], cases), constant_lanes<F>(out[1], cases), constant_lanes<F>(out[2], cases),
+                   constant_lanes<F>(out[3], cases));
+}
+
 template <Number F>
 vec4<F> gather_lanes(const Texture& tex, const vec2<F>& p, const ivec2<F>* offset, int component,
                      const F* ref = nullptr) {
     constexpr int N = lanes_of<F>();
-    alignas(64) float s[N], t[N], r[N], out[4][N];
+    alignas(64) float s[N], t[N];
     alignas(64) std::int32_t o[2][N];
     to_floats(p.x, s), to_floats(p.y, t);
     Gather g;
@@ -106,15 +123,7 @@ vec4<F> gather_lanes(const Texture& tex, const vec2<F>& p, const ivec2<F>* offse
         g.offset = {o[0], o[1]};
         cases = cases | cases_of(offset->x) | cases_of(offset->y);
     }
-    if (ref) {
-        to_floats(*ref, r);
-        g.ref = r;
-        cases = cases | cases_of(*ref);
-    }
-    for (std::size_t k = 0; k < 4; ++k) g.out[k] = out[k];
-    gather_channel(tex, g);
-    return vec4<F>(constant_lanes<F>(out[0], cases), constant_lanes<F>(out[1], cases), constant_lanes<F>(out[2], cases),
-                   constant_lanes<F>(out[3], cases));
+    return run_gather<F>(tex, g, ref, cases);
 }
 
 template <Number F, std::size_t Dims>
