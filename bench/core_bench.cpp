@@ -318,7 +318,7 @@ void BM_frame(benchmark::State& state, Backend backend, int threads, Derivatives
                                                     benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// ---- texture lookups (shading/glsl/texture.cpp) ------------------------------------------------
+// ---- texture lookups (shading/glsl/texture*.cpp) -----------------------------------------------
 // texture2D over the grid, st in [0,1]^2 as on Table 1.1's plane, from a 256x256 texture of random
 // texels (the plane's image size): bilinear CLAMP_TO_EDGE as single_texture (8-bit path, no level
 // of detail), trilinear REPEAT with mipmaps (one level of detail per quad, two levels), and

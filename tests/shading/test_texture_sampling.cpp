@@ -1,4 +1,4 @@
-// The texture lookups' lanes (shading/glsl/texture.cpp, vectorised over 16 lanes) against a
+// The texture lookups' lanes (shading/glsl/texture*.cpp, vectorised over 16 lanes) against a
 // scalar oracle written from the rules in docs/design.md ("Textures") one lane at a time: 2D and
 // 3D, every wrap and filter, power-of-two and other sizes, mipmaps, an implicit level from rho^2,
 // a bias and an explicit level, coordinates from texel centres to NaN; textureSize and texelFetch.
