@@ -95,9 +95,9 @@ template <AxisMode M, class F>
 // bilinear neighbours one more each). Each lane's texel is one two-source permute (vpermt2d) by
 // its offset in the window: straight code in place of gather_near's chain of windows, whose
 // every step waits on the one before (single texture's square at 500x500: 0.82 against 1.12 ms
-// at best; docs/results.md, stop 49). Opened at the least column and row the block's lanes
-// read, moved back from the texture's far edges so that its loads stay inside level 0 (every
-// index is in [0, size) after wrap or clamp). Used where a register holds sixteen lanes.
+// at best). Opened at the least column and row the block's lanes read, moved back from the
+// texture's far edges so that its loads stay inside level 0 (every index is in [0, size) after
+// wrap or clamp). Used where a register holds sixteen lanes.
 class TexelWindow {
 public:
     using Uints = LanesOf<16>::Uints;
@@ -141,7 +141,7 @@ private:
 };
 
 // The plain lookup's register: one AVX-512 register of sixteen lanes where the CPU has one
-// (docs/results.md, stop 44: a bilinear lookup in about half the time of two 8-lane registers).
+// (a bilinear lookup in about half the time of two 8-lane registers).
 constexpr int kPlainLanes = simd::register_floats >= 16 ? 16 : L;
 // kPlainLanes as a value of a lookup's template: the sixteen-lane code below is compiled only
 // where it is taken.
