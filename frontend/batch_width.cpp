@@ -9,7 +9,7 @@ namespace qs::frontend {
 
 namespace {
 
-bool is_texture(ir::Op op) { return op >= ir::Op::Texture && op <= ir::Op::TextureShadowOffset; }
+bool is_texture(ir::Op op) { return op >= ir::Op::Texture && op <= ir::Op::TextureQueryLevels; }
 
 }  // namespace
 

@@ -17,7 +17,6 @@
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
 #include "frontend/shadow_lookup.h"
-#include "frontend/side_effects.h"
 #include "frontend/variable_writes.h"
 
 namespace qs::frontend {
@@ -248,8 +247,7 @@ private:
     Expr aggregate(TIntermAggregate* a);
     Expr call(TIntermAggregate* a);
     Expr builtin(const std::string& name, TIntermTyped* node, const glslang::TIntermSequence& args);
-    Expr shadow_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
-                       const std::vector<std::string>& v);
+    Expr shadow_lookup(TOperator op, TIntermTyped* node, const std::vector<std::string>& v);
     Expr cube_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
                      const std::vector<std::string>& v);
     Expr constructor(TIntermAggregate* a);
@@ -846,21 +844,25 @@ Expr StageWriter::call(TIntermAggregate* a) {
     return {text + ")", kPostfix, false};
 }
 
-// A lookup in a sampler2DShadow (shading/glsl/texture_shadow.h), as the lowering makes it: a
-// depth comparison texture has one level and one filter, so a level, a bias or derivatives,
-// which change nothing, are left out (refused where leaving them out would drop a side effect).
-Expr StageWriter::shadow_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
-                                const std::vector<std::string>& v) {
-    const std::optional<ShadowLookupForm> form = shadow_lookup_form(op);
-    if (!form) refuse(node, "this texture function on a sampler2DShadow");
-    const std::size_t at = std::size_t(form->offset_arg);
-    for (std::size_t i = 2; i < args.size(); ++i) {
-        if (i != at && has_side_effects(args[i])) {
-            refuse(node, "a shadow lookup whose level, bias or derivatives change a variable");
-        }
+// A lookup in a sampler2DShadow (shading/glsl/texture_shadow.h): the vocabulary's function of its
+// name takes GLSL's arguments in GLSL's order. A vertex shader's implicit lookup reads level 0, as
+// the lowering reads it (its Lod form at level 0).
+Expr StageWriter::shadow_lookup(TOperator op, TIntermTyped* node, const std::vector<std::string>& v) {
+    std::vector<std::string> w = v;
+    if (stage_ == Stage::Vertex) {
+        const TOperator at_level = op == glslang::EOpTexture             ? glslang::EOpTextureLod
+                                   : op == glslang::EOpTextureProj       ? glslang::EOpTextureProjLod
+                                   : op == glslang::EOpTextureOffset     ? glslang::EOpTextureLodOffset
+                                   : op == glslang::EOpTextureProjOffset ? glslang::EOpTextureProjLodOffset
+                                                                         : op;
+        if (at_level != op) w.insert(w.begin() + 2, "F(0.0f)");
+        op = at_level;
     }
-    std::string t = std::string(form->projective ? "textureShadowProj" : "textureShadow") + (at ? "Offset(" : "(") + v[0] +
-                    ", " + v[1] + (at ? ", " + v[at] : "") + ")";
+    const char* name = shadow_lookup_function(op);
+    if (!name) refuse(node, "this texture function on a sampler2DShadow");
+    std::string t = std::string(name) + "(";
+    for (std::size_t i = 0; i < w.size(); ++i) t += (i ? ", " : "") + w[i];
+    t += ")";
     if (node->getType().getVectorSize() == 4) t = "depthLuminance(" + t + ")";
     return {t, kPostfix, false};
 }
@@ -955,8 +957,7 @@ const char* same_name_builtin(TOperator op) {
 }
 
 // A lookup in a samplerCube or samplerCubeShadow (shading/glsl/texture_cube.h), as the lowering
-// makes it: a shadow lookup's bias or derivatives, which change nothing on a depth comparison
-// texture, are left out (refused where leaving them out would drop a side effect).
+// makes it.
 Expr StageWriter::cube_lookup(TOperator op, TIntermTyped* node, const glslang::TIntermSequence& args,
                               const std::vector<std::string>& v) {
     const auto call = [&](const std::string& name, std::size_t n) {
@@ -979,14 +980,14 @@ Expr StageWriter::cube_lookup(TOperator op, TIntermTyped* node, const glslang::T
         for (std::size_t i = 0; i < w.size(); ++i) t += (i ? ", " : "") + w[i];
         return {t + ")", kPostfix, false};
     }
-    if (shadow) {
-        if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) refuse(node, "this texture function on a samplerCubeShadow");
-        for (std::size_t i = 2; i < args.size(); ++i) {
-            if (has_side_effects(args[i])) refuse(node, "a shadow lookup whose bias or derivatives change a variable");
-        }
-        return call("textureCubeShadow", 2);
-    }
     const bool vertex = stage_ == Stage::Vertex;
+    if (shadow) {
+        // a vertex shader's implicit lookup at level 0, as the lowering reads it
+        if (op == glslang::EOpTexture && vertex) return {"textureCubeShadowLod(" + v[0] + ", " + v[1] + ", F(0.0f))", kPostfix, false};
+        if (op == glslang::EOpTexture) return call("textureCubeShadow", v.size());
+        if (op == glslang::EOpTextureGrad) return call("textureCubeShadowGrad", v.size());
+        refuse(node, "this texture function on a samplerCubeShadow");
+    }
     if (op == glslang::EOpTexture && !vertex) return call("textureCube", v.size());
     if (op == glslang::EOpTextureLod) return call("textureCubeLod", v.size());
     if (op == glslang::EOpTextureGrad) return call("textureGrad", v.size());
@@ -1046,7 +1047,7 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             const TType& st = args[0]->getAsTyped()->getType();
             if (st.getSampler().dim == glslang::EsdCube) return cube_lookup(op, node, args, v);
             if (st.getSampler().isShadow() && op != glslang::EOpTextureQuerySize) {
-                return shadow_lookup(op, node, args, v);
+                return shadow_lookup(op, node, v);
             }
             const bool three = st.getSampler().dim == glslang::Esd3D;
             const std::string base = three ? "texture3D" : "texture2D";

@@ -84,7 +84,8 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TextureOffset)     /* as Texture, TextureBias, TextureLod, TextureGrad, with texel offsets */    \
     X(TextureBiasOffset) /*   I[c..c+n-1] added */                                                    \
     X(TextureLodOffset)                                                                               \
-    X(TextureGradOffset)                                                                              \
+    X(TextureGradOffset) /* (m = 4, any of these eight: a shadow sampler's, A's n coordinates */      \
+                         /*   followed by the reference value; d = the filtered comparisons) */       \
     X(TexelFetch)   /* d..d+3 = texelFetch(s, I[a..], I[b]) */                                        \
     X(TexelFetchOffset) /* ... at I[a..] + I[c..] */                                                  \
     X(TextureSize)  /* I[d..] = textureSize(s, I[b]) */                                               \
@@ -93,8 +94,6 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(TextureGatherOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     X(TextureQueryLod)     /* d, d+1 = textureQueryLod(s, a..) */                                      \
     X(TextureQueryLevels)  /* I[d] = textureQueryLevels(s) */                                           \
-    X(TextureShadow)       /* d = a shadow sampler's comparison of a+n with the depth at a..a+n-1 */  \
-    X(TextureShadowOffset) /* ... with texel offsets I[c], I[c+1] */                                   \
     /* control flow: the running mask of lanes; jump targets in Instr::target */                      \
     X(If)           /* lanes of B[a] run the then-part; none: jump to target (Else or EndIf) */       \
     X(Else)         /* the other lanes run the else-part; none: jump to target (EndIf) */              \

@@ -112,20 +112,22 @@ Operands operands(const Instr& in) {
             break;
         case Op::Determinant: o.add(Field::D, F, 1, true), o.add(Field::A, F, std::uint32_t(in.n) * in.n); break;
         case Op::Inverse: o.add(Field::D, F, std::uint32_t(in.n) * in.n, true), o.add(Field::A, F, std::uint32_t(in.n) * in.n); break;
-        case Op::Texture: o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n); break;
-        case Op::TextureBias: case Op::TextureLod:
-            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F);
+        case Op::Texture: case Op::TextureBias: case Op::TextureLod: case Op::TextureGrad: case Op::TextureOffset:
+        case Op::TextureBiasOffset: case Op::TextureLodOffset: case Op::TextureGradOffset: {
+            // a shadow sampler's (m = 4): the reference value after the coordinates, one result
+            const bool shadow = in.m == 4;
+            o.add(Field::D, F, shadow ? 1 : 4, true), o.add(Field::A, F, in.n + (shadow ? 1u : 0u));
+            if (in.op == Op::TextureBias || in.op == Op::TextureLod || in.op == Op::TextureBiasOffset ||
+                in.op == Op::TextureLodOffset) {
+                o.add(Field::B, F);
+            }
+            if (in.op == Op::TextureGrad || in.op == Op::TextureGradOffset) o.add(Field::B, F, 2u * in.n);
+            if (in.op == Op::TextureOffset || in.op == Op::TextureBiasOffset || in.op == Op::TextureLodOffset ||
+                in.op == Op::TextureGradOffset) {
+                o.add(Field::C, I, in.n);
+            }
             break;
-        case Op::TextureGrad:
-            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F, 2u * in.n);
-            break;
-        case Op::TextureOffset: o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::C, I, in.n); break;
-        case Op::TextureBiasOffset: case Op::TextureLodOffset:
-            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F), o.add(Field::C, I, in.n);
-            break;
-        case Op::TextureGradOffset:
-            o.add(Field::D, F, 4, true), o.add(Field::A, F, in.n), o.add(Field::B, F, 2u * in.n), o.add(Field::C, I, in.n);
-            break;
+        }
         case Op::TexelFetch: o.add(Field::D, F, 4, true), o.add(Field::A, I, in.n), o.add(Field::B, I); break;
         case Op::TexelFetchOffset:
             o.add(Field::D, F, 4, true), o.add(Field::A, I, in.n), o.add(Field::B, I), o.add(Field::C, I, in.n);
@@ -141,8 +143,6 @@ Operands operands(const Instr& in) {
             break;
         case Op::TextureQueryLod: o.add(Field::D, F, 2, true), o.add(Field::A, F, in.n); break;
         case Op::TextureQueryLevels: o.add(Field::D, I, 1, true); break;
-        case Op::TextureShadow: o.add(Field::D, F, 1, true), o.add(Field::A, F, in.n + 1u); break;
-        case Op::TextureShadowOffset: o.add(Field::D, F, 1, true), o.add(Field::A, F, 3), o.add(Field::C, I, 2); break;
         case Op::If: case Op::BreakUnless: o.add(Field::A, B); break;
         case Op::Else: case Op::EndIf: case Op::LoopBegin: case Op::LoopContinue: case Op::LoopEnd: case Op::Break:
         case Op::Continue: case Op::SwitchBegin: case Op::SwitchEnd: case Op::CallBegin: case Op::CallEnd:
@@ -159,7 +159,7 @@ bool is_texture(Op op) {
         case Op::Texture: case Op::TextureBias: case Op::TextureLod: case Op::TextureGrad: case Op::TextureOffset:
         case Op::TextureBiasOffset: case Op::TextureLodOffset: case Op::TextureGradOffset: case Op::TexelFetch:
         case Op::TexelFetchOffset: case Op::TextureSize: case Op::TextureGather: case Op::TextureGatherOffset:
-        case Op::TextureQueryLod: case Op::TextureQueryLevels: case Op::TextureShadow: case Op::TextureShadowOffset:
+        case Op::TextureQueryLod: case Op::TextureQueryLevels:
             return true;
         default: return false;
     }

@@ -324,11 +324,24 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     }
     std::vector<Place> v;
     for (std::size_t i = 1; i < args.size(); ++i) v.push_back(eval(args[i]));
-    // The operation `o` at `coords` (the first `dims` of them), with its level of detail or bias
+    if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
+    const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset ||
+                        op == glslang::EOpTextureGatherOffsets;
+    // A lookup in a sampler2DShadow compares P's third component (projected, in a projective one)
+    // with the texels: three coordinates, one result (m = 4).
+    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow && !gather &&
+                        op != glslang::EOpTextureQuerySize && op != glslang::EOpTextureQueryLod;
+    if (shadow && !shadow_lookup_function(op)) {
+        refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
+                     "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod, textureSize, the "
+                     "gathers and textureQueryLod are)");
+    }
+    const int taken = dims + (shadow ? 1 : 0);
+    // The operation `o` at `coords` (the first `taken` of them), with its level of detail or bias
     // (`extra`), or derivatives along x and y, and texel offsets where it takes them.
     const auto lookup = [&](ir::Op o, const Place& coords, const Place* extra, const Place* ddx = nullptr,
                             const Place* ddy = nullptr, const Place* offset = nullptr) {
-        const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims));
+        const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + taken));
         std::uint32_t b = 0, c = 0;
         if (extra) b = (*extra)[0].reg;
         if (ddx) {
@@ -340,27 +353,26 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
             const Place o_int = convert_bits(*offset, B::Int);
             c = consecutive(Place(o_int.begin(), o_int.begin() + dims));
         }
-        Place r = temps(B::Float, 4);
+        Place r = temps(B::Float, shadow ? 1 : 4);
         ir::Instr& e = emit(o);
-        e.d = r[0].reg, e.a = a, e.b = b, e.c = c, e.n = std::uint8_t(dims);
+        e.d = r[0].reg, e.a = a, e.b = b, e.c = c, e.n = std::uint8_t(dims), e.m = shadow ? 4 : 1;
         e.count = std::uint16_t(slot);
-        return r;
+        if (!shadow || node->getType().getVectorSize() != 4) return r;
+        // shadow2D's vec4: (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's default, GL_LUMINANCE, makes it
+        Place luminance = temps(B::Float, 4);
+        for (std::size_t i = 0; i < 3; ++i) move(luminance[i], r[0], false);
+        move(luminance[3], {B::Float, float_constant(1.0f)}, false);
+        return luminance;
     };
-    // coordinates times the reciprocal of the last one, as Mesa lowers a projective lookup
+    // coordinates (the reference value too) times the reciprocal of the last one, as Mesa lowers
+    // a projective lookup
     const auto project = [&](const Place& p) {
         const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
         Place coords;
-        for (int i = 0; i < dims; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
+        for (int i = 0; i < taken; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
         return coords;
     };
     const bool vertex = kind_ == StageKind::Vertex;
-    if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
-    const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset ||
-                        op == glslang::EOpTextureGatherOffsets;
-    if (interface_.program.samplers[std::size_t(slot)].shadow && !gather && op != glslang::EOpTextureQuerySize &&
-        op != glslang::EOpTextureQueryLod) {
-        return eval_shadow(op, node, slot, v);
-    }
     const Place zero{{B::Float, float_constant(0.0f)}};
     // A vertex shader's implicit lookups read level 0 (it has no neighbours to take a level from).
     const auto implicit = [&](const Place& coords, const Place* bias, const Place* offset) {
@@ -482,24 +494,14 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
         return r;
     }
     if (op == glslang::EOpTextureQueryLod) {
-        // measured: llvmpipe 22.3's answer there does not depend on the direction (directions
-        // scaled 1, 4 and 16 times gave the same image), so there is nothing to model
+        // measured: llvmpipe 22.3's answer there is not its samplerCube's for the same direction
+        // and sampler (up to a level apart, smooth across the faces), and is not modelled
         if (shadow) refuse(node, "textureQueryLod on a samplerCubeShadow is not supported (on a samplerCube it is)");
         return eval_query_lod(node, slot, 3, v);
     }
-    if (shadow) {
-        if (op != glslang::EOpTexture && op != glslang::EOpTextureGrad) {
-            refuse(node, "this texture function on a samplerCubeShadow is not supported (texture with or without a bias, "
-                         "textureGrad, textureGather and textureSize are)");
-        }
-        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 4));
-        Place r = temps(B::Float, 1);
-        ir::Instr& e = emit(ir::Op::TextureShadow);
-        e.d = r[0].reg, e.a = a, e.n = 3, e.count = std::uint16_t(slot);
-        return r;
-    }
+    // A samplerCubeShadow's lookups compare P.w: four coordinates, one result (m = 4).
     const auto lookup = [&](ir::Op o, const Place* extra, const Place* ddx = nullptr, const Place* ddy = nullptr) {
-        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + 3));
+        const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + (shadow ? 4 : 3)));
         std::uint32_t b = 0;
         if (extra) b = (*extra)[0].reg;
         if (ddx) {
@@ -507,9 +509,9 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
             both.insert(both.end(), ddy->begin(), ddy->begin() + 3);
             b = consecutive(both);
         }
-        Place r = temps(B::Float, 4);
+        Place r = temps(B::Float, shadow ? 1 : 4);
         ir::Instr& e = emit(o);
-        e.d = r[0].reg, e.a = a, e.b = b, e.n = 3, e.count = std::uint16_t(slot);
+        e.d = r[0].reg, e.a = a, e.b = b, e.n = 3, e.m = shadow ? 4 : 1, e.count = std::uint16_t(slot);
         return r;
     };
     const Place zero{{B::Float, float_constant(0.0f)}};
@@ -518,46 +520,18 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
             // A vertex shader's implicit lookups read level 0 (it has no neighbours to take a level from).
             if (kind_ == StageKind::Vertex) return lookup(ir::Op::TextureLod, &zero);
             return v.size() == 2 ? lookup(ir::Op::TextureBias, &v[1]) : lookup(ir::Op::Texture, nullptr);
-        case glslang::EOpTextureLod: return lookup(ir::Op::TextureLod, &v[1]);
+        case glslang::EOpTextureLod:
+            if (shadow) break;
+            return lookup(ir::Op::TextureLod, &v[1]);
         case glslang::EOpTextureGrad: return lookup(ir::Op::TextureGrad, nullptr, &v[1], &v[2]);
         default: break;
     }
+    if (shadow) {
+        refuse(node, "this texture function on a samplerCubeShadow is not supported (texture with or without a bias, "
+                     "textureGrad, textureGather and textureSize are)");
+    }
     refuse(node, "this texture function on a samplerCube is not supported (texture and textureCube with or without a "
                  "bias, textureLod, textureCubeLod, textureGrad, textureGather, textureSize and textureQueryLod are)");
-}
-
-// A lookup in a sampler2DShadow: P is (s, t, the reference value), (s, t, r, q) projected. A depth
-// comparison texture has one level and one filter (the scene refuses others), so a level of
-// detail, a bias or derivatives change nothing that llvmpipe reads: they are evaluated for their
-// side effects and left out. shadow2D and its kin return (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's
-// default, GL_LUMINANCE, makes them.
-Place StageLowering::eval_shadow(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<Place>& v) {
-    const std::optional<ShadowLookupForm> form = shadow_lookup_form(op);
-    if (!form) {
-        refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
-                     "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod and textureSize are)");
-    }
-    Place p(v[0].begin(), v[0].begin() + 3);
-    if (form->projective) {
-        // times the reciprocal of q, as Mesa lowers a projective lookup, the reference value too
-        const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), v[0][3].reg);
-        for (Slot& s : p) s = {B::Float, emit1(ir::Op::FMul, B::Float, s.reg, q)};
-    }
-    const bool offset = form->offset_arg > 0;
-    std::uint32_t c = 0;
-    if (offset) {
-        const Place o_int = convert_bits(v[std::size_t(form->offset_arg - 1)], B::Int);  // v leaves the sampler out
-        c = consecutive(Place(o_int.begin(), o_int.begin() + 2));
-    }
-    const std::uint32_t a = consecutive(p);
-    Place r = temps(B::Float, 1);
-    ir::Instr& e = emit(offset ? ir::Op::TextureShadowOffset : ir::Op::TextureShadow);
-    e.d = r[0].reg, e.a = a, e.c = c, e.n = 2, e.count = std::uint16_t(slot);
-    if (node->getType().getVectorSize() != 4) return r;
-    Place luminance = temps(B::Float, 4);
-    for (int i = 0; i < 3; ++i) move(luminance[std::size_t(i)], r[0], false);
-    move(luminance[3], {B::Float, float_constant(1.0f)}, false);
-    return luminance;
 }
 
 }  // namespace qs::frontend

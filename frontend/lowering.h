@@ -96,7 +96,6 @@ private:
     Place eval_builtin(glslang::TOperator op, glslang::TIntermTyped* node, const std::vector<glslang::TIntermTyped*>& args,
                        const std::vector<Place>& values);
     Place eval_texture(glslang::TOperator op, glslang::TIntermTyped* node, const std::vector<glslang::TIntermTyped*>& args);
-    Place eval_shadow(glslang::TOperator op, glslang::TIntermTyped* node, int slot, const std::vector<Place>& v);
     Place eval_texel_fetch(glslang::TOperator op, int slot, int dims, const std::vector<Place>& v);
     Place eval_texture_size(int slot, int dims, const std::vector<Place>& v);
     Place eval_query_lod(glslang::TIntermTyped* node, int slot, int dims, const std::vector<Place>& v);

@@ -1,34 +1,30 @@
 #pragma once
-// The forms of a lookup in a sampler2DShadow, as the lowering and the C++ translation writer both
-// read a glslang texture operation. Internal to frontend/.
-
-#include <optional>
+// The lookups in a sampler2DShadow, as the lowering and the C++ translation writer both read a
+// glslang texture operation. Internal to frontend/.
 
 #include <glslang/Include/intermediate.h>
 
 namespace qs::frontend {
 
-struct ShadowLookupForm {
-    bool projective = false;  // P is (s, t, reference, q)
-    // The argument holding the texel offsets (the sampler is argument 0, P argument 1: the offset
-    // follows P, or P and the level, or the two derivatives), 0 for none.
-    int offset_arg = 0;
-};
-
-// nullopt for a texture operation GLSL does not define on a sampler2DShadow, or that is not
-// supported on one (textureSize is, and reads the texture as any sampler2D).
-inline std::optional<ShadowLookupForm> shadow_lookup_form(glslang::TOperator op) {
+// The vocabulary's function of a lookup in a sampler2DShadow (shading/glsl/texture_shadow.h),
+// which takes GLSL's arguments in GLSL's order; null for a texture operation GLSL does not define
+// on a sampler2DShadow, or that reads it as any sampler2D (textureSize, the gathers,
+// textureQueryLod).
+inline const char* shadow_lookup_function(glslang::TOperator op) {
     switch (op) {
-        case glslang::EOpTexture: case glslang::EOpTextureLod: case glslang::EOpTextureGrad: return ShadowLookupForm{};
-        case glslang::EOpTextureProj: case glslang::EOpTextureProjLod: case glslang::EOpTextureProjGrad:
-            return ShadowLookupForm{true, 0};
-        case glslang::EOpTextureOffset: return ShadowLookupForm{false, 2};
-        case glslang::EOpTextureProjOffset: return ShadowLookupForm{true, 2};
-        case glslang::EOpTextureLodOffset: return ShadowLookupForm{false, 3};
-        case glslang::EOpTextureProjLodOffset: return ShadowLookupForm{true, 3};
-        case glslang::EOpTextureGradOffset: return ShadowLookupForm{false, 4};
-        case glslang::EOpTextureProjGradOffset: return ShadowLookupForm{true, 4};
-        default: return std::nullopt;
+        case glslang::EOpTexture: return "textureShadow";
+        case glslang::EOpTextureProj: return "textureShadowProj";
+        case glslang::EOpTextureLod: return "textureShadowLod";
+        case glslang::EOpTextureProjLod: return "textureShadowProjLod";
+        case glslang::EOpTextureGrad: return "textureShadowGrad";
+        case glslang::EOpTextureProjGrad: return "textureShadowProjGrad";
+        case glslang::EOpTextureOffset: return "textureShadowOffset";
+        case glslang::EOpTextureProjOffset: return "textureShadowProjOffset";
+        case glslang::EOpTextureLodOffset: return "textureShadowLodOffset";
+        case glslang::EOpTextureProjLodOffset: return "textureShadowProjLodOffset";
+        case glslang::EOpTextureGradOffset: return "textureShadowGradOffset";
+        case glslang::EOpTextureProjGradOffset: return "textureShadowProjGradOffset";
+        default: return nullptr;
     }
 }
 

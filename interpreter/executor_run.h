@@ -91,6 +91,7 @@ private:
     [[gnu::noinline]] void matrix(const ir::Instr& in);
     [[gnu::noinline]] void texture(const ir::Instr& in);
     [[gnu::noinline]] void cube_texture(const ir::Instr& in, const glsl::samplerCube& cube);
+    [[gnu::noinline]] F shadow_lookup(const ir::Instr& in, const glsl::sampler2D& depth);
     [[gnu::noinline]] void indexed(const ir::Instr& in);
     [[gnu::noinline]] void integer(const ir::Instr& in);
     [[gnu::noinline]] void rare_float(const ir::Instr& in);
@@ -197,8 +198,7 @@ RunResult Machine<F>::run() {
             case ir::Op::TextureOffset: case ir::Op::TextureBiasOffset: case ir::Op::TextureLodOffset:
             case ir::Op::TextureGradOffset: case ir::Op::TexelFetch: case ir::Op::TexelFetchOffset:
             case ir::Op::TextureSize: case ir::Op::TextureGather: case ir::Op::TextureGatherOffset:
-            case ir::Op::TextureQueryLod: case ir::Op::TextureQueryLevels: case ir::Op::TextureShadow:
-            case ir::Op::TextureShadowOffset:
+            case ir::Op::TextureQueryLod: case ir::Op::TextureQueryLevels:
                 texture(in);
                 break;
             case ir::Op::LoadIndexed: case ir::Op::StoreIndexed: indexed(in); break;
@@ -490,13 +490,8 @@ void Machine<F>::texture(const ir::Instr& in) {
         for (int i = 0; i < 2; ++i) put(in, f_[in.d + std::uint32_t(i)], q[i]);
         return;
     }
-    if (in.op == ir::Op::TextureShadow || in.op == ir::Op::TextureShadowOffset) {
-        const auto& depth = static_cast<const glsl::sampler2D&>(t);
-        const glsl::vec3<F> p = vector_at<3>(in.a);
-        const F r = in.op == ir::Op::TextureShadow
-                        ? glsl::textureShadow(depth, p)
-                        : glsl::textureShadowOffset(depth, p, glsl::vec<I, 2>(i_[in.c], i_[in.c + 1]));
-        put(in, f_[in.d], r);
+    if (in.m == 4 && in.op != ir::Op::TextureGather && in.op != ir::Op::TextureGatherOffset) {
+        put(in, f_[in.d], shadow_lookup(in, static_cast<const glsl::sampler2D&>(t)));
         return;
     }
     glsl::vec<F, 4> c;
@@ -540,6 +535,26 @@ void Machine<F>::texture(const ir::Instr& in) {
     for (int i = 0; i < 4; ++i) put(in, f_[in.d + std::uint32_t(i)], c[i]);
 }
 
+// A sampler2DShadow's lookup (m = 4): P = (s, t, reference value) at A, the vocabulary's function
+// of the operation's name.
+template <class F>
+F Machine<F>::shadow_lookup(const ir::Instr& in, const glsl::sampler2D& depth) {
+    const glsl::vec3<F> p = vector_at<3>(in.a);
+    const auto offset = [&] { return glsl::vec<I, 2>(i_[in.c], i_[in.c + 1]); };
+    switch (in.op) {
+        case ir::Op::Texture: return glsl::textureShadow(depth, p);
+        case ir::Op::TextureBias: return glsl::textureShadow(depth, p, f_[in.b]);
+        case ir::Op::TextureLod: return glsl::textureShadowLod(depth, p, f_[in.b]);
+        case ir::Op::TextureGrad: return glsl::textureShadowGrad(depth, p, vector_at<2>(in.b), vector_at<2>(in.b + 2));
+        case ir::Op::TextureOffset: return glsl::textureShadowOffset(depth, p, offset());
+        case ir::Op::TextureBiasOffset: return glsl::textureShadowOffset(depth, p, offset(), f_[in.b]);
+        case ir::Op::TextureLodOffset: return glsl::textureShadowLodOffset(depth, p, f_[in.b], offset());
+        case ir::Op::TextureGradOffset:
+            return glsl::textureShadowGradOffset(depth, p, vector_at<2>(in.b), vector_at<2>(in.b + 2), offset());
+        default: throw std::logic_error(std::string("a sampler2DShadow's ") + ir::name(in.op));
+    }
+}
+
 // A samplerCube's or samplerCubeShadow's operation (the renderer binds a cube map to those only).
 template <class F>
 void Machine<F>::cube_texture(const ir::Instr& in, const glsl::samplerCube& cube) {
@@ -548,8 +563,18 @@ void Machine<F>::cube_texture(const ir::Instr& in, const glsl::samplerCube& cube
         for (int i = 0; i < 2; ++i) put(in, i_[in.d + std::uint32_t(i)], s[i]);
         return;
     }
-    if (in.op == ir::Op::TextureShadow) {
-        put(in, f_[in.d], glsl::textureCubeShadow(cube, vector_at<4>(in.a)));
+    if (in.m == 4 && in.op != ir::Op::TextureGather) {
+        // a samplerCubeShadow's: P.w compared
+        const glsl::vec4<F> p = vector_at<4>(in.a);
+        F r;
+        switch (in.op) {
+            case ir::Op::Texture: r = glsl::textureCubeShadow(cube, p); break;
+            case ir::Op::TextureBias: r = glsl::textureCubeShadow(cube, p, f_[in.b]); break;
+            case ir::Op::TextureLod: r = glsl::textureCubeShadowLod(cube, p, f_[in.b]); break;
+            case ir::Op::TextureGrad: r = glsl::textureCubeShadowGrad(cube, p, vector_at<3>(in.b), vector_at<3>(in.b + 3)); break;
+            default: throw std::logic_error(std::string("a samplerCubeShadow's ") + ir::name(in.op));
+        }
+        put(in, f_[in.d], r);
         return;
     }
     const glsl::vec3<F> p = vector_at<3>(in.a);

@@ -1,4 +1,4 @@
-// The one file that calls OpenGL.
+// Calls OpenGL, as depth_mipmaps.cpp does for its one readback.
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>

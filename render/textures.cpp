@@ -42,6 +42,11 @@ glsl::SamplerState sampler_state(const Texture& texture) {
 
 namespace {
 
+// A depth comparison texture's texels are float depths (its image's red channel).
+glsl::TexelFormat texel_format(const Texture& texture) {
+    return texture.compare ? glsl::TexelFormat::Depth32F : glsl::TexelFormat::Rgba8;
+}
+
 // A cube map's six faces, each read and checked against the first: square, of one size.
 std::unique_ptr<glsl::Texture> load_cube(const Scene& scene, const Texture& texture, std::uint64_t* loading_bytes) {
     static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
@@ -71,7 +76,7 @@ std::unique_ptr<glsl::Texture> load_cube(const Scene& scene, const Texture& text
     std::array<const std::uint8_t*, 6> rgba;
     for (std::size_t f = 0; f < 6; ++f) rgba[f] = faces[f].rgba.data();
     try {
-        return std::make_unique<glsl::samplerCube>(faces[0].width, rgba, sampler_state(texture));
+        return std::make_unique<glsl::samplerCube>(faces[0].width, rgba, sampler_state(texture), texel_format(texture));
     } catch (const std::invalid_argument& e) {
         throw SceneError(scene.file.string() + ": " + texture.field + ": " + e.what());
     }
@@ -86,7 +91,7 @@ std::unique_ptr<glsl::Texture> load_texture(const Scene& scene, const Texture& t
         const Image8 image = read_texture_image(texture.image, loading_bytes);
         if (texture.dims == 2) {
             return std::make_unique<glsl::sampler2D>(image.width, image.height, image.rgba.data(),
-                                                     sampler_state(texture));
+                                                     sampler_state(texture), texel_format(texture));
         }
         if (image.height % texture.depth != 0) {
             throw SceneError(where + "a " + std::to_string(image.width) + "x" + std::to_string(image.height) +

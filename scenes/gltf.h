@@ -30,8 +30,8 @@
 //                                faces a samplerCubeShadow: the image's (each face's) red
 //                                channel is the depth (red / 255), compared by the
 //                                function (GL's names without GL_: NEVER, LESS, EQUAL,
-//                                LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS); its
-//                                sampler's minFilter is NEAREST or LINEAR, the same as magFilter;
+//                                LEQUAL, GREATER, NOTEQUAL, GEQUAL, ALWAYS), any sampler
+//                                (its mipmaps are float depths);
 //    "teximage" may be bound this way too (instead of baseColorTexture; not with extras.teximage).
 //    Volumes are 8-bit images (PNG), as a GL_RGBA8 3D texture holds them;
 //  - nodes with EXT_mesh_gpu_instancing draw their mesh once per instance; animations of node

@@ -745,25 +745,11 @@ private:
             if (dims == 3) fail(file_, field + ".compare", "a depth comparison texture is 2D or a cube map (no depth)");
         }
         if (v.Has("image") && !v.Get("image").IsString()) fail(file_, field + ".image", "expected a file name");
-        const int t = v.Has("faces")   ? cube_texture(v.Get("faces"), field + ".faces", sampler, compare)
-                      : v.Has("image") ? file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims,
-                                                      depth, compare)
-                                       : texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth,
-                                                       compare);
-        if (compare) {
-            // One level and one filter: what llvmpipe reads then needs no level of detail, and a
-            // depth texture's mipmaps (a float blit) are not modelled.
-            const Sampler& s = scene_.textures[std::size_t(t)].sampler;
-            const std::string where = own_sampler ? field + ".sampler" : field;
-            if (uses_mipmaps(s.min_filter)) {
-                fail(file_, where, "a depth comparison texture has one level: its sampler's minFilter must be NEAREST "
-                                   "or LINEAR, not a mipmapped filter (glTF's default sampler is one)");
-            }
-            if ((s.min_filter == Filter::Linear) != (s.mag_filter == Filter::Linear)) {
-                fail(file_, where, "a depth comparison texture needs the same minFilter and magFilter");
-            }
-        }
-        return t;
+        return v.Has("faces")   ? cube_texture(v.Get("faces"), field + ".faces", sampler, compare)
+               : v.Has("image") ? file_texture(v.Get("image").Get<std::string>(), field + ".image", sampler, dims, depth,
+                                               compare)
+                                : texture_index(v.Get("texture"), field + ".texture", sampler, own_sampler, dims, depth,
+                                                compare);
     }
 
     int texture_index(const tinygltf::Value& v, const std::string& field, const Sampler& sampler, bool own_sampler, int dims,

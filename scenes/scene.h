@@ -149,8 +149,7 @@ struct Texture {
     std::vector<ImageSource> faces;
     // Set for a depth comparison texture, read by a sampler2DShadow (or a samplerCubeShadow, of a
     // cube map): the image's red channel is the depth (red / 255), compared with this function;
-    // one level (no mipmapped minification filter) and one filter for minification and
-    // magnification.
+    // its mipmaps, where its sampler reads them, are float depths (GL_DEPTH_COMPONENT32F's).
     std::optional<CompareFunc> compare;
     // What names it, for messages: "materials[0].pbrMetallicRoughness.baseColorTexture (images[1])"
     // or "materials[0].extras.teximage".

@@ -51,7 +51,7 @@ Sample sample_lanes(const Texture& tex, const Coords<Dims>& co, const Floats* rh
     const LevelChoice lc = choose_levels(tex, rho2, bias, lod);
     const bool blend = st.mip == MipFilter::Linear && any(bits(lc.blend) != 0);
     Sample out;  // out.d only written (and read) with `gradient`
-    if (takes_8bit_path<Dims>(tex, bias || lod || rho2_per_pixel)) {
+    if (!co.ref && takes_8bit_path<Dims>(tex, bias || lod || rho2_per_pixel)) {
         // The second level blends in with an 8-bit weight truncated from the fraction
         // (lp_build_sample_mipmap).
         Pairs q = aos_level(tex, co, lc.level0, lc.linear, gradient, out.d);
@@ -76,7 +76,7 @@ Sample sample_lanes(const Texture& tex, const Coords<Dims>& co, const Floats* rh
         Floats c1[4], d1[3][4];
         soa_level(tex, co, lc.level1, lc.linear, weights_only, gradient, c1, d1);
         const Floats f = maxps(lc.blend, Floats{});
-        for (int c = 0; c < 4; ++c) {
+        for (int c = 0; c < (co.ref ? 1 : 4); ++c) {
             out.rgba[c] = lerp(f, out.rgba[c], c1[c]);
             if (gradient) {
                 for (int i = 0; i < Dims; ++i) out.d[i][c] += f * (d1[i][c] - out.d[i][c]);
@@ -96,6 +96,15 @@ void throw_lod_without_quads() {
 }
 
 namespace {
+// A shadow lookup reads a depth texture and a colour lookup any other, as the renderer binds them:
+// a slip would read a float's bits as bytes, or bytes as a float.
+void check_format(const Texture& tex, bool compared) {
+    if (compared != (tex.format == TexelFormat::Depth32F)) {
+        throw std::logic_error(compared ? "texture lookup: a depth comparison on a colour texture"
+                                        : "texture lookup: colours read from a depth comparison texture");
+    }
+}
+
 // One register's worth of a lookup's lanes, from `base`.
 template <int Dims>
 [[gnu::always_inline]] inline void sample_register(const Texture& tex, const Lookup& l, int base,
@@ -113,12 +122,14 @@ template <int Dims>
     }
     Ints face{};
     if (faces) face = load_lanes<Ints>(faces, base, n), co.face = &face;
+    Floats ref{};
+    if (l.ref) ref = load_lanes(l.ref, base, n), co.ref = &ref;
     const bool gradient = l.d_ds[0] != nullptr;
     const Sample r = sample_lanes<Dims>(tex, co, l.rho2 ? &rho2 : nullptr, l.bias ? &bias : nullptr, l.lod ? &lod : nullptr,
                                         l.rho2_per_pixel, l.quad_vectors, gradient);
     const std::array<float*, 4>* d_out[3] = {&l.d_ds, &l.d_dt, &l.d_dr};
     for (int c = 0; c < 4; ++c) {
-        store_lanes(l.rgba[std::size_t(c)], base, n, r.rgba[c]);
+        store_lanes(l.rgba[std::size_t(c)], base, n, c > 0 && l.ref ? Floats{} : r.rgba[c]);
         if (gradient) {
             for (int i = 0; i < Dims; ++i) store_lanes((*d_out[i])[std::size_t(c)], base, n, r.d[i][c]);
         }
@@ -134,7 +145,10 @@ template <int Dims>
 // Flattened: the helpers above become one straight body (called as functions, their vectors
 // would travel through memory). A descriptor of a plain lookup takes sample_plain, as shaders do.
 [[gnu::flatten]] void sample(const Texture& tex, const Lookup& l) {
-    if (!l.rho2 && !l.lod && !l.d_ds[0] && !l.offset[0] && sample_plain(tex, {l.lanes, l.s, l.t, l.rgba})) return;
+    check_format(tex, l.ref != nullptr);
+    if (!l.rho2 && !l.lod && !l.d_ds[0] && !l.offset[0] && !l.ref && sample_plain(tex, {l.lanes, l.s, l.t, l.rgba})) {
+        return;
+    }
     if (tex.dims == 3) {
         sample_dims<3>(tex, l);
     } else {
@@ -143,6 +157,7 @@ template <int Dims>
 }
 
 void sample_cube(const Texture& tex, const Lookup& l, const std::int32_t* face) {
+    check_format(tex, l.ref != nullptr);
     for (int base = 0; base < l.lanes; base += L) sample_register<2>(tex, l, base, face);
 }
 
@@ -150,6 +165,7 @@ void sample_cube(const Texture& tex, const Lookup& l, const std::int32_t* face) 
 // a level outside the texture's reads zero, alpha included. A gather per register, from texel 0
 // where the lane reads nothing.
 void fetch(const Texture& tex, const Fetch& f) {
+    check_format(tex, false);
     const Ints last = splat(int(tex.levels.size()) - 1);
     for (int base = 0; base < f.lanes; base += L) {
         const int n = std::min(f.lanes - base, L);
@@ -200,25 +216,6 @@ LevelLanes level0_lanes(const Texture& tex, const std::int32_t* faces, int base,
     return face_level_lanes(tex, Ints{}, &face);
 }
 
-// A depth comparison texel's test against the reference value, `ref FUNC depth`: 1 where it
-// passes, else 0. Ordered comparisons but NOTEQUAL's, which a NaN passes (D3D10's rule, which
-// lp_build_sample_comparefunc follows); C's operators on vectors are exactly these.
-Floats depth_passes(CompareFunc func, const Floats& ref, const Uints& texel) {
-    const Floats depth = unorm(channel(texel, 0));
-    Ints pass{};
-    switch (func) {
-        case CompareFunc::Never: break;
-        case CompareFunc::Less: pass = ref < depth; break;
-        case CompareFunc::Equal: pass = ref == depth; break;
-        case CompareFunc::LessEqual: pass = ref <= depth; break;
-        case CompareFunc::Greater: pass = ref > depth; break;
-        case CompareFunc::NotEqual: pass = ref != depth; break;
-        case CompareFunc::GreaterEqual: pass = ref >= depth; break;
-        case CompareFunc::Always: pass = splat(-1); break;
-    }
-    return pass ? splat(1.0f) : Floats{};
-}
-
 // The two axes of a lookup's lanes [base, base + n): its s and t (and texel offsets, where it has
 // them) handed to `axis(i, coordinate, offset or null)`.
 template <class Lookup, class Axis>
@@ -235,6 +232,7 @@ Axes<2> axes_of(const Lookup& l, int base, int n, const Axis& axis) {
 }  // namespace
 
 void gather_channel(const Texture& tex, const Gather& g) {
+    check_format(tex, g.ref != nullptr);
     const std::array<bool, 3> pot = pot_sizes<2>(tex);
     for (int base = 0; base < g.lanes; base += L) {
         const int n = std::min(g.lanes - base, L);
@@ -253,28 +251,6 @@ void gather_channel(const Texture& tex, const Gather& g) {
             continue;
         }
         for (std::size_t c = 0; c < 4; ++c) store_lanes(g.out[c], base, n, unorm(channel(order[c], g.component)));
-    }
-}
-
-// lp_build_sample_image_nearest and _linear with a comparison (lp_bld_sample_soa.c): level 0's
-// texel, or its four bilinear texels, each compared with the reference value by the sampler's
-// function, the 0/1 results blended with the bilinear weights as colours are
-// (lp_build_masklerp2d). The float path's coordinates, as a GL_DEPTH_COMPONENT32F texture's.
-void sample_shadow(const Texture& tex, const ShadowLookup& l) {
-    const std::array<bool, 3> pot = pot_sizes<2>(tex);
-    const Ints linear = tex.sampler.mag == Filter::Linear ? splat(-1) : Ints{};
-    for (int base = 0; base < l.lanes; base += L) {
-        const int n = std::min(l.lanes - base, L);
-        const LevelLanes lv = level0_lanes(tex, l.face, base, n);
-        const Axes<2> ax = axes_of(l, base, n, [&](int i, const Floats& c, const Ints* offset) {
-            return soa_axis(c, size_of(lv, i), wrap_of(tex.sampler, i), pot[std::size_t(i)], linear, Ints{}, offset);
-        });
-        const Texels<2> k = fetch_texels(tex, lv, ax);  // k[0][row j][column i]
-        const Floats ref = load_lanes(l.ref, base, n);
-        const auto passes = [&](const Uints& texel) { return depth_passes(tex.sampler.compare, ref, texel); };
-        const Floats r0 = lerp(ax.a[0].w, passes(k.k[0][0][0]), passes(k.k[0][0][1]));
-        const Floats r1 = lerp(ax.a[0].w, passes(k.k[0][1][0]), passes(k.k[0][1][1]));
-        store_lanes(l.out, base, n, lerp(ax.a[1].w, r0, r1));
     }
 }
 

@@ -4,8 +4,9 @@
 // CLAMP_TO_EDGE), filters (NEAREST, LINEAR and the four mipmapped minification filters), one
 // level of detail per 2x2 quad from the quad's derivatives (texture2D, texture3D), a bias or an
 // explicit level per pixel (textureLod), and mipmaps made as glGenerateMipmap makes them. Texels
-// are 8-bit; loading them from an image file is the renderer's job (render/), which also makes
-// sure a texture that needs a level of detail is sampled from quads.
+// are 8-bit (a depth comparison texture's floats, texture_shadow.h); loading them from an image
+// file is the renderer's job (render/), which also makes sure a texture that needs a level of
+// detail is sampled from quads.
 //
 // The arithmetic, and the OSMesa experiments that pinned it, are in docs/design.md ("Textures");
 // the lanes' work is done by texture_detail::sample, or sample_plain for the plain lookup most
@@ -45,10 +46,13 @@ struct SamplerState {
     CompareFunc compare = CompareFunc::LessEqual;  // read by the shadow samplers only (GL's default)
 };
 
-// A GL_RGBA8 texture of two or three dimensions with its sampler: what sampler2D and sampler3D
-// share. Texel (x, y, z) of a level is at texels[level.offset + (z * level.height + y) *
-// level.width + x], red in the lowest byte; row 0 is t = 0, which glTF makes the image's first
-// (top) row, and slice 0 is r = 0.
+// What a texel holds: GL_RGBA8's four bytes, red in the lowest; or, in a depth comparison texture
+// (a shadow sampler's), a GL_DEPTH_COMPONENT32F depth as a float's bits.
+enum class TexelFormat : std::uint8_t { Rgba8, Depth32F };
+
+// A texture of two or three dimensions with its sampler: what sampler2D and sampler3D share.
+// Texel (x, y, z) of a level is at texels[level.offset + (z * level.height + y) * level.width +
+// x]; row 0 is t = 0, which glTF makes the image's first (top) row, and slice 0 is r = 0.
 class Texture {
 public:
     struct Level {
@@ -58,6 +62,7 @@ public:
     int dims = 2;
     int width = 0, height = 0, depth = 1;  // the base level's size (textureSize(s, 0))
     SamplerState sampler;
+    TexelFormat format = TexelFormat::Rgba8;
     std::vector<Level> levels;
     std::vector<std::uint32_t> texels;
 
@@ -74,17 +79,21 @@ public:
 
 protected:
     Texture() = default;
-    // The base level from `rgba` (4 bytes per texel, rows from t = 0, slices from r = 0), and
-    // the levels below it down to 1x1(x1) when the sampler's minification filter reads mipmaps,
-    // each made from the one above as llvmpipe's glGenerateMipmap makes it. Throws
+    // The base level from `rgba` (4 bytes per texel, rows from t = 0, slices from r = 0; a
+    // Depth32F texture's depth is the red byte, red / 255 as llvmpipe turns a unorm8 into a
+    // float), and the levels below it down to 1x1(x1) when the sampler's minification filter
+    // reads mipmaps, each made from the one above as llvmpipe's glGenerateMipmap makes it. Throws
     // std::invalid_argument for a size outside 1..32768 (1..2048 for 3D, GL_MAX_3D_TEXTURE_SIZE).
-    Texture(int dims, int width, int height, int depth, const std::uint8_t* rgba, SamplerState sampler);
+    Texture(int dims, int width, int height, int depth, const std::uint8_t* rgba, SamplerState sampler,
+            TexelFormat format = TexelFormat::Rgba8);
 };
 
+// A 2D texture: a sampler2D's, or with a Depth32F format a sampler2DShadow's.
 struct sampler2D : Texture {
     sampler2D() = default;
-    sampler2D(int width, int height, const std::uint8_t* rgba, SamplerState sampler)
-        : Texture(2, width, height, 1, rgba, sampler) {}
+    sampler2D(int width, int height, const std::uint8_t* rgba, SamplerState sampler,
+              TexelFormat format = TexelFormat::Rgba8)
+        : Texture(2, width, height, 1, rgba, sampler, format) {}
 };
 
 struct sampler3D : Texture {
@@ -117,6 +126,11 @@ struct Lookup {
     // Per lane, GLSL's texel offsets along s, t (and r) (textureOffset and its kin), added at
     // every level as llvmpipe adds them; null for none.
     std::array<const std::int32_t*, 3> offset{};
+    // Per lane, a shadow lookup's reference value, null for a colour lookup: each texel read
+    // (a Depth32F texture's) passes or fails the sampler's compare function, and the passes (1)
+    // and failures (0) are filtered as colours are (lp_build_sample_compare), into rgba[0]; the
+    // other channels get 0, no derivatives.
+    const float* ref = nullptr;
     // Lanes 8k..8k+7 are the two side-by-side quads llvmpipe shades as one vector (quads from a
     // 4x4 block); otherwise each lane stands alone. Decides how lookups on the float path with
     // different minification and magnification filters blend (llvmpipe decides that per vector).
@@ -242,7 +256,7 @@ LaneCases cases_of([[maybe_unused]] const I& x) {
 
 // What a lookup takes beside its coordinates, as `kind` says: a bias or an explicit level
 // (`lod_or_bias`), or the coordinates' explicit derivatives along x and y (`ddx`, `ddy`:
-// textureGrad); and GLSL's texel offsets, or none.
+// textureGrad); GLSL's texel offsets, or none; a shadow lookup's reference value, or none.
 template <Number F, std::size_t Dims>
 struct LookupArgs {
     Lod kind = Lod::Implicit;
@@ -250,6 +264,7 @@ struct LookupArgs {
     const std::array<F, Dims>* ddx = nullptr;
     const std::array<F, Dims>* ddy = nullptr;
     const std::array<int_t<F>, Dims>* offset = nullptr;
+    const F* ref = nullptr;
 };
 
 // llvmpipe's rho^2 from explicit derivatives (lp_build_rho with derivatives), lane by lane:
@@ -275,11 +290,12 @@ void gradient_rho2(const float (&ddx)[3][N], const float (&ddy)[3][N], const std
 template <Number F, std::size_t Dims>
 vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const LookupArgs<F, Dims>& args) {
     constexpr int N = lanes_of<F>();
-    alignas(64) float c[3][N], rho2[N], extra[N], rgba[4][N], d_dc[3][4][N];
+    alignas(64) float c[3][N], rho2[N], extra[N], ref[N], rgba[4][N], d_dc[3][4][N];
     alignas(64) std::int32_t offset[3][N];
     const Lod kind = args.kind;
     for (std::size_t k = 0; k < Dims; ++k) to_floats(coord[k], c[k]);
     if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*args.lod_or_bias, extra);
+    if (args.ref) to_floats(*args.ref, ref);
     if (args.offset) {
         for (std::size_t k = 0; k < Dims; ++k) to_ints((*args.offset)[k], offset[k]);
     }
@@ -318,10 +334,11 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const Looku
             throw_lod_without_quads();
         }
     }
-    constexpr bool derivatives = is_dual2<F>::value;
+    // A comparison's result is a step of it: under Dual2 its derivatives are 0.
+    const bool derivatives = is_dual2<F>::value && !args.ref;
     bool plain = false;
-    if constexpr (Dims == 2 && !derivatives) {
-        plain = kind != Lod::Explicit && !implicit && !args.offset &&
+    if constexpr (Dims == 2 && !is_dual2<F>::value) {
+        plain = kind != Lod::Explicit && !implicit && !args.offset && !args.ref &&
                 sample_plain(tex, {N, c[0], c[1], {rgba[0], rgba[1], rgba[2], rgba[3]}});
     }
     for (int i = 0; !plain && i < N; i += kMaxLanes) {
@@ -337,6 +354,7 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const Looku
             for (std::size_t k = 0; k < Dims; ++k) l.offset[k] = offset[k] + i;
         }
         l.quad_vectors = QuadNumber<F>;
+        l.ref = args.ref ? ref + i : nullptr;
         for (std::size_t ch = 0; ch < 4; ++ch) {
             l.rgba[ch] = rgba[ch] + i;
             if (derivatives) {
@@ -351,6 +369,10 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const Looku
         if constexpr (is_dual2<F>::value) {
             // d(colour) = sum over the coordinates of d(colour)/dc dc
             using T = typename F::value_type;
+            if (!derivatives) {
+                out[ch] = F(from_floats<T>(rgba[ch]), T(0.0f), T(0.0f));
+                continue;
+            }
             T dx, dy;
             for (std::size_t k = 0; k < Dims; ++k) {
                 const T g = from_floats<T>(d_dc[k][ch]);
@@ -368,6 +390,7 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const Looku
             if (args.offset) {
                 for (std::size_t k = 0; k < Dims; ++k) cases = cases | (*args.offset)[k].cases;
             }
+            if (args.ref) cases = cases | args.ref->cases;
             out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
         } else {
             out[ch] = from_floats<F>(rgba[ch]);

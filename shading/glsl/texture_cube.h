@@ -36,11 +36,13 @@ inline constexpr int kCubeDims = 6;
 
 struct samplerCube : Texture {
     samplerCube() { dims = kCubeDims; }
-    // Six square faces of size x size RGBA8 texels (4 bytes each, rows from t = 0), in GL's order
-    // +X, -X, +Y, -Y, +Z, -Z; mipmaps face by face as glGenerateMipmap makes them when the
-    // sampler's minification filter reads them. Throws std::invalid_argument for a size outside
-    // 1..16384 (GL_MAX_CUBE_MAP_TEXTURE_SIZE).
-    samplerCube(int size, const std::array<const std::uint8_t*, 6>& faces, SamplerState sampler);
+    // Six square faces of size x size RGBA8 texels (4 bytes each, rows from t = 0; a Depth32F
+    // cube map's depth the red byte, as a 2D one's), in GL's order +X, -X, +Y, -Y, +Z, -Z;
+    // mipmaps face by face as glGenerateMipmap makes them when the sampler's minification filter
+    // reads them. Throws std::invalid_argument for a size outside 1..16384
+    // (GL_MAX_CUBE_MAP_TEXTURE_SIZE).
+    samplerCube(int size, const std::array<const std::uint8_t*, 6>& faces, SamplerState sampler,
+                TexelFormat format = TexelFormat::Rgba8);
 };
 
 namespace texture_detail {
@@ -187,14 +189,16 @@ void project_cube(const Texture& tex, const vec3<F>& p, bool need_derivs, const 
 }
 
 // Every lookup in a samplerCube: the direction p, and what `kind` adds to it (a bias or an
-// explicit level in `lod_or_bias`, derivatives of p in `ddx` and `ddy`).
+// explicit level in `lod_or_bias`, derivatives of p in `ddx` and `ddy`); in a samplerCubeShadow,
+// with its reference value `ref` (the result in channel 0, constant under Dual2).
 template <Number F>
 vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod_or_bias, const vec3<F>* ddx,
-                    const vec3<F>* ddy) {
+                    const vec3<F>* ddy, const F* ref = nullptr) {
     constexpr int N = lanes_of<F>();
-    constexpr bool derivatives = is_dual2<F>::value;
-    alignas(64) float extra[N], rgba[4][N], d_dc[2][4][N];
+    const bool derivatives = is_dual2<F>::value && !ref;
+    alignas(64) float extra[N], refs[N], rgba[4][N], d_dc[2][4][N];
     if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*lod_or_bias, extra);
+    if (ref) to_floats(*ref, refs);
     // llvmpipe carries derivatives through the projection where the texture needs a level of
     // detail and the lookup gives none.
     const bool need_derivs = kind != Lod::Explicit && tex.needs_lod();
@@ -205,7 +209,7 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
     // an implicit one that only chooses between the minification and magnification filters is
     // its quad's, from its upper-left pixel (the quad's first element in llvmpipe's order).
     const bool quad_lod = need_derivs && kind == Lod::Implicit && tex.sampler.mip == MipFilter::None;
-    if constexpr (QuadNumber<F> && !derivatives) {
+    if constexpr (QuadNumber<F> && !is_dual2<F>::value) {
         if (quad_lod) {
             float own[N];
             for (int i = 0; i < N; ++i) own[i] = pr.rho2[i];
@@ -221,6 +225,7 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
         l.lod = kind == Lod::Explicit ? extra + i : nullptr;
         l.rho2_per_pixel = !quad_lod;
         l.quad_vectors = QuadNumber<F>;
+        l.ref = ref ? refs + i : nullptr;
         for (std::size_t ch = 0; ch < 4; ++ch) {
             l.rgba[ch] = rgba[ch] + i;
             if (derivatives) l.d_ds[ch] = d_dc[0][ch] + i, l.d_dt[ch] = d_dc[1][ch] + i;
@@ -229,9 +234,13 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
     }
     vec4<F> out;
     for (int ch = 0; ch < 4; ++ch) {
-        if constexpr (derivatives) {
+        if constexpr (is_dual2<F>::value) {
             // d(colour) = d(colour)/ds ds + d(colour)/dt dt, along x and along y
             using T = typename F::value_type;
+            if (!derivatives) {
+                out[ch] = F(from_floats<T>(rgba[ch]), T(0.0f), T(0.0f));
+                continue;
+            }
             const T g_s = from_floats<T>(d_dc[0][ch]), g_t = from_floats<T>(d_dc[1][ch]);
             const T dx = g_s * from_floats<T>(pr.fdx[0]) + g_t * from_floats<T>(pr.fdx[1]);
             const T dy = g_s * from_floats<T>(pr.fdy[0]) + g_t * from_floats<T>(pr.fdy[1]);
@@ -242,6 +251,7 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
             if (kind == Lod::Gradient) {
                 for (int k = 0; k < 3; ++k) cases = cases | (*ddx)[k].cases | (*ddy)[k].cases;
             }
+            if (ref) cases = cases | ref->cases;
             out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
         } else {
             out[ch] = from_floats<F>(rgba[ch]);
@@ -293,21 +303,6 @@ void face_coordinates(const vec3<F>& p, bool with_derivatives, float* s, float* 
         s[i] = f.sc * scale + 0.5f;
         t[i] = f.tc * scale + 0.5f;
     }
-}
-
-// A samplerCubeShadow's comparison at direction p.xyz with reference value p.w: the depth
-// comparison texture has one level and one filter, so llvmpipe projects without derivatives.
-template <Number F>
-F cube_shadow(const Texture& tex, const vec4<F>& p) {
-    constexpr int N = lanes_of<F>();
-    alignas(64) float s[N], t[N], ref[N], out[N];
-    alignas(64) std::int32_t face[N];
-    face_coordinates(p.xyz(), false, s, t, face);
-    to_floats(p.w, ref);
-    ShadowLookup l;
-    l.lanes = N, l.s = s, l.t = t, l.ref = ref, l.face = face, l.out = out;
-    sample_shadow(tex, l);
-    return constant_lanes<F>(out, cases_of(p.x) | cases_of(p.y) | cases_of(p.z) | cases_of(p.w));
 }
 
 // textureGather on a cube map: the face's four texels a bilinear lookup at direction p reads on
@@ -380,12 +375,26 @@ vec2<F> textureQueryLod(const samplerCube& tex, const vec3<F>& p) {
 }
 
 // texture(samplerCubeShadow, P [, bias]) and textureGrad(samplerCubeShadow, ...): P.w compared
-// with the depth in direction P.xyz (a bias or derivatives change nothing on a texture of one
-// level and one filter). The result is a step of the comparison: under Dual2 its derivatives
-// are 0.
+// with the depth in direction P.xyz, filtered and mipmapped as a sampler2DShadow's lookups are,
+// with the level of detail a samplerCube's lookup takes. The result is a step of the comparison:
+// under Dual2 its derivatives are 0.
 template <Number F>
 F textureCubeShadow(const samplerCube& depth, const vec4<F>& p) {
-    return texture_detail::cube_shadow<F>(depth, p);
+    return texture_detail::cube_lookup<F>(depth, p.xyz(), texture_detail::Lod::Implicit, nullptr, nullptr, nullptr, &p.w)[0];
+}
+template <Number F>
+F textureCubeShadow(const samplerCube& depth, const vec4<F>& p, const F& bias) {
+    return texture_detail::cube_lookup<F>(depth, p.xyz(), texture_detail::Lod::Bias, &bias, nullptr, nullptr, &p.w)[0];
+}
+// An explicit level (GL_EXT_texture_shadow_lod's textureLod): a vertex shader's implicit lookup
+// reads level 0 so.
+template <Number F>
+F textureCubeShadowLod(const samplerCube& depth, const vec4<F>& p, const F& lod) {
+    return texture_detail::cube_lookup<F>(depth, p.xyz(), texture_detail::Lod::Explicit, &lod, nullptr, nullptr, &p.w)[0];
+}
+template <Number F>
+F textureCubeShadowGrad(const samplerCube& depth, const vec4<F>& p, const vec3<F>& dPdx, const vec3<F>& dPdy) {
+    return texture_detail::cube_lookup<F>(depth, p.xyz(), texture_detail::Lod::Gradient, nullptr, &dPdx, &dPdy, &p.w)[0];
 }
 
 }  // namespace qs::glsl

@@ -103,7 +103,27 @@ Axis soa_axis(const Floats& s_in, const Ints& size, Wrap wrap, bool pot, const I
     return a;
 }
 
-// One level, float path.
+// A depth comparison texel's test against the reference value, `ref FUNC depth`: 1 where it
+// passes, else 0. Ordered comparisons but NOTEQUAL's, which a NaN passes (D3D10's rule, which
+// lp_build_sample_comparefunc follows); C's operators on vectors are exactly these.
+Floats depth_passes(CompareFunc func, const Floats& ref, const Uints& texel) {
+    const Floats depth = from_bits(texel);  // TexelFormat::Depth32F
+    Ints pass{};
+    switch (func) {
+        case CompareFunc::Never: break;
+        case CompareFunc::Less: pass = ref < depth; break;
+        case CompareFunc::Equal: pass = ref == depth; break;
+        case CompareFunc::LessEqual: pass = ref <= depth; break;
+        case CompareFunc::Greater: pass = ref > depth; break;
+        case CompareFunc::NotEqual: pass = ref != depth; break;
+        case CompareFunc::GreaterEqual: pass = ref >= depth; break;
+        case CompareFunc::Always: pass = splat(-1); break;
+    }
+    return pass ? splat(1.0f) : Floats{};
+}
+
+// One level, float path; a shadow lookup's (co.ref) compares each texel and blends the results
+// into out[0] (lp_build_sample_compare).
 template <int Dims>
 void soa_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, const Ints& linear,
                const Ints& weights_only, bool gradient, Floats (&out)[4], Floats (&d)[3][4]) {
@@ -115,6 +135,13 @@ void soa_level(const Texture& tex, const Coords<Dims>& co, const Ints& level, co
                            co.offset[i]);
     }
     const Texels<Dims> k = fetch_texels(tex, lv, ax);
+    if (co.ref) {
+        const auto passes = [&](const Uints& texel) { return depth_passes(tex.sampler.compare, *co.ref, texel); };
+        const Floats r0 = lerp(ax.a[0].w, passes(k.k[0][0][0]), passes(k.k[0][0][1]));
+        const Floats r1 = lerp(ax.a[0].w, passes(k.k[0][1][0]), passes(k.k[0][1][1]));
+        out[0] = lerp(ax.a[1].w, r0, r1);
+        return;
+    }
     for (int c = 0; c < 4; ++c) {
         auto slice = [&](int z) {
             const Floats r0 = lerp(ax.a[0].w, unorm(channel(k.k[z][0][0], c)), unorm(channel(k.k[z][0][1], c)));

@@ -1,12 +1,14 @@
-// Texture storage: a texture's levels, laid out one after another in one array of RGBA8 texels,
-// and the levels below the base made as glGenerateMipmap makes them on llvmpipe (Mesa's
-// util_gen_mipmap and u_blitter.c), for 2D, 3D and cube map textures; and the level sizes
-// textureSize reports.
+// Texture storage: a texture's levels, laid out one after another in one array of texels (RGBA8,
+// or a depth texture's floats), and the levels below the base made as glGenerateMipmap makes them
+// on llvmpipe (Mesa's util_gen_mipmap and u_blitter.c), for 2D, 3D and cube map textures; and the
+// level sizes textureSize reports.
 
 #include "shading/glsl/texture.h"
 #include "shading/glsl/texture_cube.h"
+#include "shading/number/sin_cos.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -28,7 +30,8 @@ namespace {
 // src_z_step and depth_center_offset, the latter computed in double), then along r as the 8-bit
 // path's lerp_3d.
 struct Tap {
-    int i0, i1, w;
+    int i0, i1, w;  // w: the 8-bit path's weight
+    float f = 0.0f;  // the float path's
 };
 // The 8-bit path's linear taps, CLAMP_TO_EDGE, of a source axis of `size` at coordinate s.
 Tap clamp_tap(float s, int size) {
@@ -81,10 +84,84 @@ void next_level(const std::uint32_t* src, const Texture::Level& s, std::uint32_t
     }
 }
 
+// A depth texture's level (GL_DEPTH_COMPONENT32F) from the one above, as llvmpipe blits it: the
+// float path's LINEAR, CLAMP_TO_EDGE lookup (soa_axis, lerp) at texture coordinates llvmpipe
+// interpolates over the blit's rectangle. Its two triangles, (0, 0) (W, 0) (W, H) and (0, 0)
+// (W, H) (0, H) with coordinates (0, 0) (1, 0) (1, 1) (0, 1), reach the setup second vertex first;
+// each coordinate's plane equation is set up and evaluated in float as the rasterizer's
+// (raster/plane_equation.h, the same arithmetic, which the renderer keeps apart from textures),
+// fused where llvmpipe's JIT fuses; a pixel centre on the diagonal belongs to the first triangle.
+// Where the 8-bit path's weights hide an ulp of the coordinates, a float depth does not: with
+// the exact centres (x + 0.5) / W instead, 142 of 236 texels of a 37x21 texture's levels differ.
+struct BlitPlane {
+    float a0, dadx, dady;
+    BlitPlane(const float (&x)[3], const float (&y)[3], const float (&a)[3]) {
+        const float dx01 = x[0] - x[1], dy01 = y[0] - y[1], dx20 = x[2] - x[0], dy20 = y[2] - y[0];
+        const float ooa = 1.0f / (dx01 * dy20 - dy01 * dx20);
+        const float da01 = a[0] - a[1], da20 = a[2] - a[0];
+        dadx = da01 * (dy20 * ooa) - da20 * (dy01 * ooa);
+        dady = da20 * (dx01 * ooa) - da01 * (dx20 * ooa);
+        a0 = a[0] - (dadx * (x[0] - 0.5f) + dady * (y[0] - 0.5f));
+    }
+    float at(int x, int y) const {
+        if (llvmpipe_math::host_fuses()) return std::fma(dady, float(y), std::fma(dadx, float(x), a0));
+        return (a0 + dadx * float(x)) + dady * float(y);
+    }
+};
+// soa_axis's CLAMP_TO_EDGE, LINEAR taps of an axis of `size` at coordinate s.
+Tap float_clamp_tap(float s, int size) {
+    const float fsize = float(size);
+    const float c = std::max((s * fsize < fsize ? s * fsize : fsize) - 0.5f, 0.0f);
+    const float fl = std::floor(c);
+    const int i = int(fl);
+    return {i, std::min(i + 1, size - 1), 0, c - fl};
+}
+void next_depth_level(const std::uint32_t* src, const Texture::Level& s, std::uint32_t* dst, const Texture::Level& d) {
+    const float w = float(d.width), h = float(d.height);
+    const float x0[3] = {w, 0.0f, w}, y0[3] = {0.0f, 0.0f, h}, s0[3] = {1.0f, 0.0f, 1.0f}, t0[3] = {0.0f, 0.0f, 1.0f};
+    const float x1[3] = {w, 0.0f, 0.0f}, y1[3] = {h, 0.0f, h}, s1[3] = {1.0f, 0.0f, 0.0f}, t1[3] = {1.0f, 0.0f, 1.0f};
+    const BlitPlane planes[2][2] = {{{x0, y0, s0}, {x0, y0, t0}}, {{x1, y1, s1}, {x1, y1, t1}}};
+    const auto lerp = [](float t, float a, float b) {
+        return llvmpipe_math::host_fuses() ? std::fma(t, b - a, a) : t * (b - a) + a;
+    };
+    const auto at = [&](int x, int y) {
+        return std::bit_cast<float>(src[std::size_t(y) * std::size_t(s.width) + std::size_t(x)]);
+    };
+    for (int y = 0; y < d.height; ++y) {
+        for (int x = 0; x < d.width; ++x) {
+            // below the diagonal from (0, 0) to (W, H): the second triangle (exact in 64 bits)
+            const bool second = std::int64_t(2 * y + 1) * d.width > std::int64_t(2 * x + 1) * d.height;
+            const Tap tx = float_clamp_tap(planes[second][0].at(x, y), s.width);
+            const Tap ty = float_clamp_tap(planes[second][1].at(x, y), s.height);
+            const float r0 = lerp(tx.f, at(tx.i0, ty.i0), at(tx.i1, ty.i0));
+            const float r1 = lerp(tx.f, at(tx.i0, ty.i1), at(tx.i1, ty.i1));
+            dst[std::size_t(y) * std::size_t(d.width) + std::size_t(x)] = std::bit_cast<std::uint32_t>(lerp(ty.f, r0, r1));
+        }
+    }
+}
+
+// A base level's texel: RGBA8 packed red lowest, or a depth texture's red / 255 as llvmpipe turns
+// a unorm8 into a float.
+std::uint32_t base_texel(const std::uint8_t* rgba, TexelFormat format) {
+    if (format == TexelFormat::Depth32F) return std::bit_cast<std::uint32_t>(float(rgba[0]) * float(1.0 / 255.0));
+    return std::uint32_t(rgba[0]) | std::uint32_t(rgba[1]) << 8 | std::uint32_t(rgba[2]) << 16 | std::uint32_t(rgba[3]) << 24;
+}
+
+// A 2D level (or one face's) from the one above.
+void next_level_2d(const std::uint32_t* src, const Texture::Level& s, std::uint32_t* dst, const Texture::Level& d,
+                   TexelFormat format) {
+    if (format == TexelFormat::Depth32F) {
+        next_depth_level(src, s, dst, d);
+    } else {
+        next_level(src, s, dst, d, 2);
+    }
+}
+
 }  // namespace
 
-Texture::Texture(int n, int w, int h, int d, const std::uint8_t* rgba, SamplerState s)
-    : dims(n), width(w), height(h), depth(d), sampler(s) {
+Texture::Texture(int n, int w, int h, int d, const std::uint8_t* rgba, SamplerState s, TexelFormat f)
+    : dims(n), width(w), height(h), depth(d), sampler(s), format(f) {
+    if (f == TexelFormat::Depth32F && n != 2) throw std::invalid_argument("a depth texture is 2D or a cube map");
     const int max_size = n == 3 ? 2048 : (1 << 15);
     if (w < 1 || h < 1 || d < 1 || w > max_size || h > max_size || d > max_size || (n == 2 && d != 1)) {
         throw std::invalid_argument("texture size " + std::to_string(w) + "x" + std::to_string(h) +
@@ -104,19 +181,21 @@ Texture::Texture(int n, int w, int h, int d, const std::uint8_t* rgba, SamplerSt
     // A single level makes a mipmap filter a plain one (llvmpipe: level_zero_only).
     if (levels.size() == 1) sampler.mip = MipFilter::None;
     texels.resize(std::size_t(total));
-    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h) * std::size_t(d); ++i) {
-        texels[i] = std::uint32_t(rgba[4 * i]) | std::uint32_t(rgba[4 * i + 1]) << 8 |
-                    std::uint32_t(rgba[4 * i + 2]) << 16 | std::uint32_t(rgba[4 * i + 3]) << 24;
-    }
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h) * std::size_t(d); ++i) texels[i] = base_texel(rgba + 4 * i, f);
     for (std::size_t l = 1; l < levels.size(); ++l) {
         const Level& a = levels[l - 1];
         const Level& b = levels[l];
-        next_level(&texels[std::size_t(a.offset)], a, &texels[std::size_t(b.offset)], b, dims);
+        if (dims == 3) {
+            next_level(&texels[std::size_t(a.offset)], a, &texels[std::size_t(b.offset)], b, 3);
+        } else {
+            next_level_2d(&texels[std::size_t(a.offset)], a, &texels[std::size_t(b.offset)], b, f);
+        }
     }
 }
 
-samplerCube::samplerCube(int size, const std::array<const std::uint8_t*, 6>& faces, SamplerState s) {
+samplerCube::samplerCube(int size, const std::array<const std::uint8_t*, 6>& faces, SamplerState s, TexelFormat f) {
     dims = kCubeDims;
+    format = f;
     width = height = size;
     // llvmpipe clamps a cube map's faces to their edges whatever the sampler's wraps
     // (lp_build_sample_soa_code's derived sampler state); without seamless filtering (GL's
@@ -138,20 +217,16 @@ samplerCube::samplerCube(int size, const std::array<const std::uint8_t*, 6>& fac
     if (levels.size() == 1) sampler.mip = MipFilter::None;
     texels.resize(std::size_t(total));
     const std::size_t face_texels = std::size_t(size) * std::size_t(size);
-    for (std::size_t f = 0; f < 6; ++f) {
-        const std::uint8_t* rgba = faces[f];
-        for (std::size_t i = 0; i < face_texels; ++i) {
-            texels[f * face_texels + i] = std::uint32_t(rgba[4 * i]) | std::uint32_t(rgba[4 * i + 1]) << 8 |
-                                          std::uint32_t(rgba[4 * i + 2]) << 16 | std::uint32_t(rgba[4 * i + 3]) << 24;
-        }
+    for (std::size_t face = 0; face < 6; ++face) {
+        for (std::size_t i = 0; i < face_texels; ++i) texels[face * face_texels + i] = base_texel(faces[face] + 4 * i, f);
     }
     // Each face's levels as a 2D texture's (Mesa's mipmap blit draws the faces one by one).
     for (std::size_t l = 1; l < levels.size(); ++l) {
         const Level& a = levels[l - 1];
         const Level& b = levels[l];
-        for (std::size_t f = 0; f < 6; ++f) {
-            next_level(&texels[std::size_t(a.offset) + f * std::size_t(a.width * a.height)], a,
-                       &texels[std::size_t(b.offset) + f * std::size_t(b.width * b.height)], b, 2);
+        for (std::size_t face = 0; face < 6; ++face) {
+            next_level_2d(&texels[std::size_t(a.offset) + face * std::size_t(a.width * a.height)], a,
+                          &texels[std::size_t(b.offset) + face * std::size_t(b.width * b.height)], b, f);
         }
     }
 }

@@ -235,8 +235,8 @@ PlainSampler plain_sampler(AxisMode mt, bool linear) {
 // The plain lookup's function for this texture, or null where its lookups are not plain ones.
 PlainSampler plain_sampler(const Texture& tex) {
     const SamplerState& st = tex.sampler;
-    if (tex.dims != 2 || st.min != st.mag || st.mip != MipFilter::None || st.wrap_s == Wrap::MirroredRepeat ||
-        st.wrap_t == Wrap::MirroredRepeat) {
+    if (tex.dims != 2 || tex.format != TexelFormat::Rgba8 || st.min != st.mag || st.mip != MipFilter::None ||
+        st.wrap_s == Wrap::MirroredRepeat || st.wrap_t == Wrap::MirroredRepeat) {
         return nullptr;
     }
     auto mode = [](Wrap w, int size) {

@@ -29,6 +29,7 @@ struct Coords {
     Floats c[Dims];
     const Ints* offset[Dims] = {};  // texel offsets, or none
     const Ints* face = nullptr;     // a cube map's face per lane (its levels hold six faces each), or none
+    const Floats* ref = nullptr;    // a shadow lookup's reference value per lane, or none
 };
 template <int Dims>
 struct Axes {

@@ -7,13 +7,17 @@
 
 #include <catch2/catch.hpp>
 
+#include <bit>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
 #include "frontend/compile.h"
+#include "reference/depth_mipmaps.h"
 #include "reference/gl_renderer.h"
 #include "render/glsl_shaders.h"
 #include "render/scene_render.h"
+#include "shading/glsl/texture.h"
 #include "tests/cube_map.h"
 #include "tests/reference/comparison.h"
 #include "tests/test_paths.h"
@@ -317,9 +321,9 @@ void main() {
 
 // sampler2DShadow's lookups: whole fragment shaders that read `st` and a depth comparison
 // texture `depth`. The reference values run from below 0 to above 1 across the depths, and meet
-// them exactly in a band (where GL_LEQUAL and GL_LESS differ); the
-// lookups go past the texture's edges under each wrap; a level, a bias or derivatives change
-// nothing on a texture of one level and one filter.
+// them exactly in a band (where GL_LEQUAL and GL_LESS differ); the lookups go past the
+// texture's edges under each wrap, and their levels, biases and derivatives span magnified and
+// minified pixels and every level of a mipmapped texture.
 const LanguageCase kShadowLookups[] = {
     {"shadow_texture", R"(#version 130
 in vec2 st;
@@ -603,13 +607,21 @@ TEST_CASE("sampler2DShadow's lookups, run by the interpreter, match OSMesa llvmp
         const char* image;  // its red channel is the depth
         Sampler sampler;
     };
-    // Sizes that are powers of two and that are not, each wrap, both filters.
+    // Sizes that are powers of two and that are not, each wrap, both filters, every mipmap filter
+    // (float mipmaps, as llvmpipe's glGenerateMipmap blits them), and different minification and
+    // magnification filters with and without mipmaps.
     const SamplerCase samplers[] = {
         {"nearest-clamp", "texture-16x16.png", {Filter::Nearest, Filter::Nearest, kClamp, kClamp, kRepeat}},
         {"linear-repeat", "texture-16x8.png", {Filter::Linear, Filter::Linear, kRepeat, kRepeat, kRepeat}},
         {"linear-npot", "texture-37x19.png", {Filter::Linear, Filter::Linear, kRepeat, kClamp, kRepeat}},
         {"linear-mirrored", "texture-13x7.png", {Filter::Linear, Filter::Linear, kMirror, kMirror, kRepeat}},
         {"nearest-mirrored-npot", "texture-13x7.png", {Filter::Nearest, Filter::Nearest, kMirror, kRepeat, kRepeat}},
+        {"trilinear", "texture-64x32.png", {Filter::Linear, Filter::LinearMipmapLinear, kRepeat, kRepeat, kRepeat}},
+        {"trilinear-npot", "texture-37x19.png", {Filter::Linear, Filter::LinearMipmapLinear, kClamp, kMirror, kRepeat}},
+        {"nearest-mipmaps-npot", "texture-37x19.png", {Filter::Nearest, Filter::NearestMipmapNearest, kClamp, kRepeat, kRepeat}},
+        {"linear-mipmap-nearest", "texture-13x7.png", {Filter::Linear, Filter::LinearMipmapNearest, kMirror, kMirror, kRepeat}},
+        {"min-mag-mipmap-linear", "texture-16x8.png", {Filter::Linear, Filter::NearestMipmapLinear, kRepeat, kClamp, kRepeat}},
+        {"min-mag-one-level", "texture-37x19.png", {Filter::Linear, Filter::Nearest, kClamp, kClamp, kRepeat}},
     };
     for (const SamplerCase& sc : samplers) {
         Scene scene = load_scene(kPlane);
@@ -668,13 +680,26 @@ TEST_CASE("samplerCubeShadow's lookups, run by the interpreter, match OSMesa llv
     const int size = 64;
     auto context = create_osmesa_context(size, size, GlDriver::Llvmpipe, 0);
     GlPrograms programs(dir);
-    for (const Filter filter : {Filter::Nearest, Filter::Linear}) {
+    constexpr Wrap kRepeat = Wrap::Repeat;
+    constexpr Filter kLinear = Filter::Linear, kNearest = Filter::Nearest;
+    struct SamplerCase {
+        const char* name;
+        Sampler sampler;
+    };
+    const SamplerCase samplers[] = {
+        {"nearest", {kNearest, kNearest, kRepeat, kRepeat, kRepeat}},
+        {"linear", {kLinear, kLinear, kRepeat, kRepeat, kRepeat}},
+        {"trilinear", {kLinear, Filter::LinearMipmapLinear, kRepeat, kRepeat, kRepeat}},
+        {"nearest-mipmaps", {kNearest, Filter::NearestMipmapNearest, kRepeat, kRepeat, kRepeat}},
+        {"min-mag-mipmap-linear", {kLinear, Filter::NearestMipmapLinear, kRepeat, kRepeat, kRepeat}},
+        {"min-mag-one-level", {kNearest, kLinear, kRepeat, kRepeat, kRepeat}},
+    };
+    for (const SamplerCase& sc : samplers) {
         Scene scene = load_scene(kPlane);
-        const Sampler sampler{filter, filter, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
-        scene.textures.push_back(cube_map(dir, 16, sampler, CompareFunc::LessEqual, "depth"));
+        scene.textures.push_back(cube_map(dir, 16, sc.sampler, CompareFunc::LessEqual, "depth"));
         scene.objects.at(0).samplers = {{"depth", int(scene.textures.size()) - 1}};
         for (const LanguageCase& c : kCubeShadowLookups) {
-            const std::string name = std::string(c.name) + (filter == Filter::Linear ? "-linear" : "-nearest");
+            const std::string name = std::string(c.name) + "-" + sc.name;
             check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
                                    scene, true);
         }
@@ -706,6 +731,35 @@ TEST_CASE("Every compare function of a depth comparison texture matches OSMesa l
             check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
                                    scene, true);
         }
+    }
+}
+
+TEST_CASE("A depth texture's mipmaps equal llvmpipe's glGenerateMipmap texel for texel", "[reference][textures]") {
+    auto context = create_osmesa_context(8, 8, GlDriver::Llvmpipe, 0);
+    glsl::SamplerState sampler;
+    sampler.mip = glsl::MipFilter::Linear;
+    // Powers of two and odd sizes, thin ones whose levels halve along one axis only.
+    const int sizes[][2] = {{8, 4}, {37, 21}, {100, 3}, {3, 100}, {64, 64}, {255, 130}, {17, 17}};
+    std::uint32_t seed = 12345;
+    for (const auto& size : sizes) {
+        const int w = size[0], h = size[1];
+        std::vector<std::uint8_t> rgba(std::size_t(w) * std::size_t(h) * 4);
+        std::vector<float> depths(std::size_t(w) * std::size_t(h));
+        for (std::size_t i = 0; i < depths.size(); ++i) {
+            seed = seed * 1664525u + 1013904223u;
+            rgba[4 * i] = std::uint8_t(seed >> 24);
+            depths[i] = float(rgba[4 * i]) * float(1.0 / 255.0);
+        }
+        const glsl::sampler2D texture(w, h, rgba.data(), sampler, glsl::TexelFormat::Depth32F);
+        const std::vector<float> expected = generated_depth_mipmaps(w, h, depths);
+        const std::size_t base = std::size_t(w) * std::size_t(h);
+        REQUIRE(texture.texels.size() == base + expected.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            if (std::bit_cast<float>(texture.texels[base + i]) != expected[i]) ++differing;
+        }
+        INFO(w << "x" << h << ": " << differing << " of " << expected.size() << " texels below the base differ");
+        CHECK(differing == 0);
     }
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shading/glsl.h"
+#include "shading/glsl/texture_shadow.h"
 #include "shading/number/simd/simd.h"
 #include "shading/program.h"
 
@@ -688,6 +689,28 @@ TEMPLATE_TEST_CASE("textureSize and texelFetch of every number type: each lane a
             }
         }
     }
+}
+
+TEST_CASE("shadow lookups: a depth texture's comparisons, constant under Dual2; the wrong kind of texture refused",
+          "[textures]") {
+    // A 2x2 depth texture of 0, 1/255, 2/255, 3/255 (red bytes), nearest: each texel is compared alone.
+    const std::uint8_t rgba[16] = {0, 9, 9, 9, 1, 9, 9, 9, 2, 9, 9, 9, 3, 9, 9, 9};
+    SamplerState nearest;
+    nearest.mag = nearest.min = Filter::Nearest;
+    nearest.compare = CompareFunc::Less;
+    const sampler2D depth(2, 2, rgba, nearest, TexelFormat::Depth32F);
+    const sampler2D colour(2, 2, rgba, nearest);
+    // texel (1, 1) holds 3/255: LESS passes below it, not at it
+    CHECK(textureShadow(depth, vec3<float>(0.75f, 0.75f, 2.5f / 255.0f)) == 1.0f);
+    CHECK(textureShadow(depth, vec3<float>(0.75f, 0.75f, float(3.0 / 255.0))) == 0.0f);
+    CHECK(textureShadow(depth, vec3<float>(0.25f, 0.25f, -1.0f)) == 1.0f);  // below texel (0, 0)'s 0
+    using D = Dual2<float>;
+    const D r = textureShadow(depth, vec3<D>(D(0.75f, 1.0f, 0.0f), D(0.75f, 0.0f, 1.0f), D(0.0f, 1.0f, 1.0f)));
+    CHECK(r.val == 1.0f);
+    CHECK(r.dx == 0.0f);
+    CHECK(r.dy == 0.0f);
+    CHECK_THROWS_AS(textureShadow(colour, vec3<float>(0.5f, 0.5f, 0.5f)), std::logic_error);
+    CHECK_THROWS_AS(texture(depth, vec2<float>(0.5f, 0.5f)), std::logic_error);
 }
 
 }  // namespace qs

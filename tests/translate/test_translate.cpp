@@ -326,12 +326,12 @@ TEST_CASE("a translation's gathers and textureQueryLod draw what the interpreter
 
 TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter draws, to the bit, under each rule",
           "[translate][textures]") {
-    // A linear depth texture of a size that is no power of two, mirrored, so that the blend of the
-    // comparisons and the offsets reach each wrap's code.
+    // A trilinear depth texture of a size that is no power of two, mirrored, so that the blend of
+    // the comparisons, of its float mipmaps and the offsets reach each wrap's code.
     Scene scene = load_scene(test::kPlane);
     Texture depth;
     depth.image.file = test::kSource / "scenes/assets/conformance/images/texture-37x19.png";
-    depth.sampler = {Filter::Linear, Filter::Linear, Wrap::MirroredRepeat, Wrap::Repeat, Wrap::Repeat};
+    depth.sampler = {Filter::Linear, Filter::LinearMipmapLinear, Wrap::MirroredRepeat, Wrap::Repeat, Wrap::Repeat};
     depth.compare = CompareFunc::Greater;  // a function other than GL's default reaches the translation
     depth.field = "depth";
     scene.textures.push_back(depth);
@@ -351,14 +351,14 @@ TEST_CASE("a translation's sampler2DShadow lookups draw what the interpreter dra
 TEST_CASE("a translation's samplerCube and samplerCubeShadow lookups draw what the interpreter draws, to the bit, under "
           "each rule",
           "[translate][textures]") {
-    // A trilinear cube map, whose implicit lookups take a level per pixel, and a linear depth
-    // comparison cube map.
+    // A trilinear cube map, whose implicit lookups take a level per pixel, and a depth comparison
+    // cube map with float mipmaps and a nearest magnification filter.
     const std::filesystem::path dir = test::temp_dir("translate-cube");
     Scene scene = load_scene(test::kPlane);
     scene.textures.push_back(test::cube_map(
         dir, 32, {Filter::Linear, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat}, std::nullopt, "env"));
     scene.textures.push_back(
-        test::cube_map(dir, 16, {Filter::Linear, Filter::Linear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat},
+        test::cube_map(dir, 16, {Filter::Nearest, Filter::LinearMipmapLinear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat},
                        CompareFunc::NotEqual, "depth"));
     const int n = int(scene.textures.size());
     scene.objects.at(0).samplers = {{"env", n - 2}, {"depth", n - 1}};
