@@ -1096,13 +1096,7 @@ Expr StageWriter::builtin(const std::string&, TIntermTyped* node, const glslang:
             return fn("textureGatherOffsets");
         }
         case glslang::EOpTextureQueryLevels: return fn("textureQueryLevels<F>");
-        case glslang::EOpTextureQueryLod: {
-            const glslang::TSampler& sampler = args[0]->getAsTyped()->getType().getSampler();
-            if (sampler.dim == glslang::EsdCube && sampler.isShadow()) {
-                refuse(node, "textureQueryLod on a samplerCubeShadow");
-            }
-            return fn("textureQueryLod");
-        }
+        case glslang::EOpTextureQueryLod: return fn("textureQueryLod");
         default: break;
     }
     refuse(node, "this built-in function");

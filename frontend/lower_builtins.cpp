@@ -493,12 +493,9 @@ Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int sl
         e.d = r[0].reg, e.b = lod[0].reg, e.n = 2, e.count = std::uint16_t(slot);
         return r;
     }
-    if (op == glslang::EOpTextureQueryLod) {
-        // measured: llvmpipe 22.3's answer there is not its samplerCube's for the same direction
-        // and sampler (up to a level apart, smooth across the faces), and is not modelled
-        if (shadow) refuse(node, "textureQueryLod on a samplerCubeShadow is not supported (on a samplerCube it is)");
-        return eval_query_lod(node, slot, 3, v);
-    }
+    // On a samplerCubeShadow as on a samplerCube, as GL defines it (llvmpipe 22.3 differs there:
+    // docs/glsl.md).
+    if (op == glslang::EOpTextureQueryLod) return eval_query_lod(node, slot, 3, v);
     // A samplerCubeShadow's lookups compare P.w: four coordinates, one result (m = 4).
     const auto lookup = [&](ir::Op o, const Place* extra, const Place* ddx = nullptr, const Place* ddy = nullptr) {
         const std::uint32_t a = consecutive(Place(v[0].begin(), v[0].begin() + (shadow ? 4 : 3)));

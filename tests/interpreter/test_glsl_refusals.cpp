@@ -40,9 +40,6 @@ TEST_CASE("the front end refuses what it cannot run at the construct's line and 
          "user.frag:2", "recurs"},
         {"#version 130\nin vec2 st;\nout vec4 c;\nvoid main() {\n  c = vec4(gl_PointCoord, 0.0, 1.0);\n}\n",
          "user.frag:5:12", "gl_PointCoord"},
-        {"#version 400\nuniform samplerCubeShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
-         "  c = vec4(textureQueryLod(depth, vec3(st, 1.0)), 0.0, 1.0);\n}\n",
-         "user.frag:6", "samplerCubeShadow"},
         {"#version 130\nuniform sampler1DShadow depth;\nin vec2 st;\nout vec4 c;\nvoid main() {\n"
          "  c = vec4(texture(depth, vec3(st, 0.5)));\n}\n",
          "user.frag:6", "sampler1DShadow"},

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shading/glsl.h"
+#include "shading/glsl/texture_cube.h"
 #include "shading/glsl/texture_shadow.h"
 #include "shading/number/simd/simd.h"
 #include "shading/program.h"
@@ -702,7 +703,7 @@ TEST_CASE("shadow lookups: a depth texture's comparisons, constant under Dual2; 
     const sampler2D colour(2, 2, rgba, nearest);
     // texel (1, 1) holds 3/255: LESS passes below it, not at it
     CHECK(textureShadow(depth, vec3<float>(0.75f, 0.75f, 2.5f / 255.0f)) == 1.0f);
-    CHECK(textureShadow(depth, vec3<float>(0.75f, 0.75f, float(3.0 / 255.0))) == 0.0f);
+    CHECK(textureShadow(depth, vec3<float>(0.75f, 0.75f, 3.0f * float(1.0 / 255.0))) == 0.0f);  // the depth itself
     CHECK(textureShadow(depth, vec3<float>(0.25f, 0.25f, -1.0f)) == 1.0f);  // below texel (0, 0)'s 0
     using D = Dual2<float>;
     const D r = textureShadow(depth, vec3<D>(D(0.75f, 1.0f, 0.0f), D(0.75f, 0.0f, 1.0f), D(0.0f, 1.0f, 1.0f)));
@@ -711,6 +712,31 @@ TEST_CASE("shadow lookups: a depth texture's comparisons, constant under Dual2; 
     CHECK(r.dy == 0.0f);
     CHECK_THROWS_AS(textureShadow(colour, vec3<float>(0.5f, 0.5f, 0.5f)), std::logic_error);
     CHECK_THROWS_AS(texture(depth, vec2<float>(0.5f, 0.5f)), std::logic_error);
+}
+
+TEST_CASE("textureQueryLod on a depth comparison cube map is a colour cube map's, as GL defines it", "[textures]") {
+    // 16x16 faces, trilinear and with different minification and magnification filters (where
+    // the level of detail is carried per pixel), and one level (where it is the quad's).
+    std::vector<std::uint8_t> face(16 * 16 * 4);
+    for (std::size_t i = 0; i < face.size(); ++i) face[i] = std::uint8_t(i * 37);
+    const std::array<const std::uint8_t*, 6> faces{face.data(), face.data(), face.data(), face.data(), face.data(), face.data()};
+    for (const MipFilter mip : {MipFilter::Linear, MipFilter::Nearest, MipFilter::None}) {
+        SamplerState s;
+        s.mip = mip;
+        s.min = Filter::Nearest;
+        const samplerCube colour(16, faces, s), depth(16, faces, s, TexelFormat::Depth32F);
+        using Q = Quads<float, 4>;
+        float px[16], py[16], pz[16];
+        for (int i = 0; i < 16; ++i) {
+            px[i] = float(i % 4) * 0.3f - 0.5f, py[i] = 1.0f - float(i / 4) * 0.05f * float(i % 3), pz[i] = float(i) * 0.11f - 0.9f;
+        }
+        const Q x = Q::load(px), y = Q::load(py), z = Q::load(pz);
+        const vec2<Q> a = textureQueryLod(colour, vec3<Q>(x, y, z)), b = textureQueryLod(depth, vec3<Q>(x, y, z));
+        for (int i = 0; i < 16; ++i) {
+            CHECK(a.x[i] == b.x[i]);
+            CHECK(a.y[i] == b.y[i]);
+        }
+    }
 }
 
 }  // namespace qs

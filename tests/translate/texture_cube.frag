@@ -21,7 +21,7 @@ void main() {
               textureGrad(depth, vec4(dir.yxz, ref), vec3(0.1), vec3(0.2));
     vec2 size = vec2(textureSize(env, 1) + textureSize(depth, 0)) / 64.0;
     vec4 g = textureGather(env, dir, 2) * 0.5 + textureGather(depth, dir.zyx, ref) * 0.5;
-    vec2 q = textureQueryLod(env, dir * 3.0);
+    vec2 q = textureQueryLod(env, dir * 3.0) + textureQueryLod(depth, dir.yzx * 0.5);
     color = vec4(a * 0.25 + b * 0.25, 1.0) * 0.5 + vec4(c * 0.25, 1.0) * 0.25 + vec4(d / 3.0, size, 1.0) * 0.0625 +
             g * 0.125 + vec4(q * 0.0625, 0.0, 0.0);
 }
