@@ -27,9 +27,8 @@ namespace {
 // rather than render something the command line did not describe.
 const char* const kRasterOnly[] = {"--fill-rule", "--interpolation", "--general-path"};
 
-}  // namespace
-
-void add_render_options(CLI::App& cmd, RenderArgs& a) {
+// What is drawn: the scene and its output, when, from which camera, with which shaders.
+void add_scene_options(CLI::App& cmd, RenderArgs& a) {
     FrameRequest& r = a.request;
     cmd.add_option("SCENE", a.scene, "the glTF scene (.gltf or .glb)")->required()->option_text("SCENE.gltf");
     cmd.add_option("-o,--output", a.output,
@@ -59,6 +58,12 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "(replaces the material's extras.uniforms): 4.0, 1,0.5,0.2 or [1,0.5,0.2];\n"
                    "matrices column by column; repeatable")
         ->option_text("NAME=VALUE")->allow_extra_args(false);
+}
+
+// How it is drawn: the backend and the rules of derivatives, precision, quads, fill and
+// interpolation.
+void add_rule_options(CLI::App& cmd, RenderArgs& a) {
+    FrameRequest& r = a.request;
     add_choice<Backend>(cmd, "--backend", r.backend, {{"raster", Backend::Rasterizer}, {"raycast", Backend::RayCaster}}, "B",
                         "raster (default) | raycast (Embree, 2x2 ray quads)");
     add_choice<Derivatives>(cmd, "--derivatives", r.shading.derivatives,
@@ -79,6 +84,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                          "pixel centres on an edge: left-bottom (llvmpipe, default) | right-top (softpipe)");
     add_choice<bool>(cmd, "--interpolation", r.raster.fused_interpolation, {{"fused", true}, {"separate", false}}, "I",
                      "fused (llvmpipe on FMA hosts; the default there) | separate (softpipe)");
+}
+
+// What the image keeps beside the colour: time reduced exactly, alpha, the undefined-case mask.
+void add_output_options(CLI::App& cmd, RenderArgs& a) {
+    FrameRequest& r = a.request;
     cmd.add_flag("--stable-time", r.stable_time,
                  "reduce time by each shader's exact period in double before it\n"
                  "becomes the float uniform: long animations (t ~ 1e6 s) keep\n"
@@ -93,6 +103,11 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "pow, inversesqrt, atan); shades slower, same colours; float quads or\n"
                    "pixels only (not with analytic derivatives or double precision)")
         ->option_text("FILE");
+}
+
+// What the render may use: threads, files outside the scene's folder, memory.
+void add_resource_options(CLI::App& cmd, RenderArgs& a) {
+    FrameRequest& r = a.request;
     cmd.add_option("--threads", r.shading.threads, "worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024))->option_text("N");
     cmd.add_flag("--allow-outside-paths", a.load.paths.allow_outside,
@@ -102,6 +117,15 @@ void add_render_options(CLI::App& cmd, RenderArgs& a) {
                    "memory the render may use, e.g. 4G (default: what the system has\n"
                    "available); larger images are rendered and written in bands of rows")
         ->option_text("SIZE");
+}
+
+}  // namespace
+
+void add_render_options(CLI::App& cmd, RenderArgs& a) {
+    add_scene_options(cmd, a);
+    add_rule_options(cmd, a);
+    add_output_options(cmd, a);
+    add_resource_options(cmd, a);
 }
 
 void note_raster_only(const CLI::App& cmd, RenderArgs& a) {

@@ -15,7 +15,10 @@ namespace qs::app {
 
 namespace fs = std::filesystem;
 
-void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
+namespace {
+
+// What is studied: the scene, the shader and its variants, and where the results go.
+void add_subject_options(CLI::App& cmd, StudyArgs& a, bool line) {
     study::Request& r = a.request;
     a.app = &cmd;
     cmd.add_option("scene", a.scene, "the glTF scene (.gltf or .glb)")->option_text("SCENE");
@@ -41,6 +44,11 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
         ->option_text("NAME");
     cmd.add_option("--alternative-mode", r.shaders.alternative_mode, "that mode's name (default: alternative)")
         ->option_text("MODE");
+}
+
+// The views each mode renders: the camera's and generated ones, at chosen frames.
+void add_view_options(CLI::App& cmd, StudyArgs& a) {
+    study::Request& r = a.request;
     cmd.add_option("--views", r.views,
                    "camera, magnified, minified, grazing (default: all four; the camera\nalone with --frames), or "
                    "scene files whose camera is a view\n(CAMERA.gltf)")
@@ -54,6 +62,11 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
     cmd.add_option("--fps", r.fps, "frames per second for --frames (default 30)")
         ->check(kFinite & CLI::PositiveNumber)
         ->option_text("N");
+}
+
+// The modes measured and how: image size, truth, timing, the shader's time and offset.
+void add_mode_options(CLI::App& cmd, StudyArgs& a) {
+    study::Request& r = a.request;
     cmd.add_option("--modes", r.modes,
                    "fine, coarse-lower, coarse-upper, dual2, raycast-quads,\nray-differentials, double, step, ss2x2, "
                    "ss4x4, ss8x8, the\nalternative's (default: all the shader has)")
@@ -89,6 +102,11 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
         ->expected(3)
         ->check(kFinite)
         ->option_text("X,Y,Z");
+}
+
+// What the study makes beside the measurements: llvmpipe's images, derivative maps, memory.
+void add_output_options(CLI::App& cmd, StudyArgs& a, bool line) {
+    study::Request& r = a.request;
     cmd.add_flag("--no-reference", a.no_reference, "do not render llvmpipe's images (no OSMesa needed)");
     cmd.add_flag("--no-derivative-maps", a.no_derivative_maps, "do not map the inputs' derivatives under each rule");
     cmd.add_option("--derivatives-of", r.expressions,
@@ -103,6 +121,15 @@ void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
                        "has available); planned before any work")
             ->option_text("SIZE");
     }
+}
+
+}  // namespace
+
+void add_study_options(CLI::App& cmd, StudyArgs& a, bool line) {
+    add_subject_options(cmd, a, line);
+    add_view_options(cmd, a);
+    add_mode_options(cmd, a);
+    add_output_options(cmd, a, line);
 }
 
 namespace {

@@ -223,6 +223,69 @@ void lit_study(const Options& o, const FrameRequest& frame) {
     }
 }
 
+// bake.md: each view's frame of the live shader against the frame drawn from its baked atlas,
+// with the bake's time.
+void baked_against_live_study(const Options& o, const Scene& live, const fs::path& mesh, const std::string& shader,
+                              const FrameRequest& frame) {
+    Table bake_md(o.out / "bake.md");
+    bake_md.line("## Baked against live: %s on %s, time 0.5, %d threads, median of %d frames\n\n", shader.c_str(),
+                mesh.filename().c_str(), o.threads, o.repeat);
+    live_against_baked_header(bake_md);
+    for (const View& v : kViews) {
+        AtlasRequest bake;
+        bake.size = v.atlas, bake.skirt = 4, bake.frame = frame;
+        bake.frame.shader_override = shader;
+        const auto b0 = Clock::now();
+        const Image atlas = bake_atlas(live, bake);
+        const double bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - b0).count();
+        FrameRequest r = frame;
+        r.width = r.height = v.frame;
+        live_against_baked_row(bake_md, v, bake_ms, live, r, baked_in(live, atlas, o.out, std::string("atlas-") + v.name), r, o, "");
+    }
+}
+
+// bake-seams.md: the pixels along the atlas' seams against the others, with skirts of 0 to 8
+// texels: how many read the gutter, and their error against the live frame.
+void seams_study(const Options& o, const Scene& live, const std::string& shader, const FrameRequest& frame) {
+    Table seams_md(o.out / "bake-seams.md");
+    seams_md.line("\n## Seams: atlas 256^2, frame 512x512, skirts of 0, 2, 4, 8 texels\n\n");
+    seams_md.line("| skirt | seam pixels reading gutter | seam pixels over 1/255 | over 8/255 | mean error at seams | mean error elsewhere |\n");
+    seams_md.line("|---|---|---|---|---|---|\n");
+    FrameRequest r = frame;
+    r.width = r.height = 512;
+    Scene live_copy = live;
+    const Framebuffer L = render_frame(live_copy, r);
+    std::vector<char> seam;
+    for (int skirt : {0, 2, 4, 8}) {
+        AtlasRequest bake;
+        bake.size = 256, bake.skirt = skirt, bake.frame = frame;
+        bake.frame.shader_override = shader;
+        Scene baked = baked_in(live, bake_atlas(live, bake), o.out, "atlas-skirt-" + std::to_string(skirt));
+        const Framebuffer B = render_frame(baked, r);
+        const std::size_t pixels = std::size_t(512) * 512;
+        if (seam.empty()) {  // without skirts: where lookups reach the gutter
+            seam.resize(pixels);
+            for (std::size_t i = 0; i < pixels; ++i) seam[i] = L.rgba[i * 4 + 3] > 0.5f && B.rgba[i * 4 + 3] < 254.5f / 255.0f;
+        }
+        std::size_t gutter = 0, over1 = 0, over8 = 0, n_seam = 0, n_rest = 0;
+        double sum_seam = 0, sum_rest = 0;
+        for (std::size_t i = 0; i < pixels; ++i) {
+            if (L.rgba[i * 4 + 3] < 0.5f) continue;
+            const float e = rgb_error(L, B, i);
+            if (seam[i]) {
+                ++n_seam, sum_seam += e, over1 += e > 1.0f, over8 += e > 8.0f;
+                gutter += B.rgba[i * 4 + 3] < 254.5f / 255.0f;
+            } else {
+                ++n_rest, sum_rest += e;
+            }
+        }
+        seams_md.line("| %d | %zu of %zu | %zu | %zu | %.2f | %.2f |\n", skirt, gutter, n_seam, over1, over8, sum_seam / double(n_seam),
+                    sum_rest / double(n_rest));
+        write_image(o.out / ("baked-skirt-" + std::to_string(skirt) + ".png"), colour_image(B));
+    }
+    write_image(o.out / "live.png", colour_image(L));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -246,60 +309,8 @@ int main(int argc, char** argv) {
         frame.time = 0.5;
         frame.shading.threads = o.threads;
 
-        Table bake_md(o.out / "bake.md");
-        bake_md.line("## Baked against live: %s on %s, time 0.5, %d threads, median of %d frames\n\n", shader.c_str(),
-                    mesh.filename().c_str(), o.threads, o.repeat);
-        live_against_baked_header(bake_md);
-        for (const View& v : kViews) {
-            AtlasRequest bake;
-            bake.size = v.atlas, bake.skirt = 4, bake.frame = frame;
-            bake.frame.shader_override = shader;
-            const auto b0 = Clock::now();
-            const Image atlas = bake_atlas(live, bake);
-            const double bake_ms = std::chrono::duration<double, std::milli>(Clock::now() - b0).count();
-            FrameRequest r = frame;
-            r.width = r.height = v.frame;
-            live_against_baked_row(bake_md, v, bake_ms, live, r, baked_in(live, atlas, o.out, std::string("atlas-") + v.name), r, o, "");
-        }
-
-        Table seams_md(o.out / "bake-seams.md");
-        seams_md.line("\n## Seams: atlas 256^2, frame 512x512, skirts of 0, 2, 4, 8 texels\n\n");
-        seams_md.line("| skirt | seam pixels reading gutter | seam pixels over 1/255 | over 8/255 | mean error at seams | mean error elsewhere |\n");
-        seams_md.line("|---|---|---|---|---|---|\n");
-        FrameRequest r = frame;
-        r.width = r.height = 512;
-        Scene live_copy = live;
-        const Framebuffer L = render_frame(live_copy, r);
-        std::vector<char> seam;
-        for (int skirt : {0, 2, 4, 8}) {
-            AtlasRequest bake;
-            bake.size = 256, bake.skirt = skirt, bake.frame = frame;
-            bake.frame.shader_override = shader;
-            Scene baked = baked_in(live, bake_atlas(live, bake), o.out, "atlas-skirt-" + std::to_string(skirt));
-            const Framebuffer B = render_frame(baked, r);
-            const std::size_t pixels = std::size_t(512) * 512;
-            if (seam.empty()) {  // without skirts: where lookups reach the gutter
-                seam.resize(pixels);
-                for (std::size_t i = 0; i < pixels; ++i) seam[i] = L.rgba[i * 4 + 3] > 0.5f && B.rgba[i * 4 + 3] < 254.5f / 255.0f;
-            }
-            std::size_t gutter = 0, over1 = 0, over8 = 0, n_seam = 0, n_rest = 0;
-            double sum_seam = 0, sum_rest = 0;
-            for (std::size_t i = 0; i < pixels; ++i) {
-                if (L.rgba[i * 4 + 3] < 0.5f) continue;
-                const float e = rgb_error(L, B, i);
-                if (seam[i]) {
-                    ++n_seam, sum_seam += e, over1 += e > 1.0f, over8 += e > 8.0f;
-                    gutter += B.rgba[i * 4 + 3] < 254.5f / 255.0f;
-                } else {
-                    ++n_rest, sum_rest += e;
-                }
-            }
-            seams_md.line("| %d | %zu of %zu | %zu | %zu | %.2f | %.2f |\n", skirt, gutter, n_seam, over1, over8, sum_seam / double(n_seam),
-                        sum_rest / double(n_rest));
-            write_image(o.out / ("baked-skirt-" + std::to_string(skirt) + ".png"), colour_image(B));
-        }
-        write_image(o.out / "live.png", colour_image(L));
-
+        baked_against_live_study(o, live, mesh, shader, frame);
+        seams_study(o, live, shader, frame);
         normals_study(o);
         lit_study(o, frame);
     } catch (const std::exception& e) {

@@ -86,24 +86,11 @@ std::string cell(const Samples& s, const char* format) {
     return buffer;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app("quadshade-bench-startup: wall time and peak memory of whole quadshade calls and of "
-                 "programs linking one library each");
-    int runs = 21;
-    std::string out = "build/startup";
-    app.add_option("--runs", runs, "runs of each call (default 21)")->check(CLI::Range(1, 1000));
-    app.add_option("--out", out, "folder for startup.md and the rendered images (default build/startup)");
-    const fs::path bin = fs::path(qs::bench::self_executable()).parent_path();
-    std::string quadshade = (bin / "quadshade").string();
-    app.add_option("--quadshade", quadshade, "the quadshade to time (default: the one beside this program)");
-    CLI11_PARSE(app, argc, argv);
-
+// The calls timed: quadshade's commands on the shipped scenes, OSMesa's reference where it is
+// built, and a program linking each optional library alone.
+std::vector<Call> startup_calls(const std::string& quadshade, const fs::path& bin, const std::string& out) {
     const fs::path assets = fs::path(QUADSHADE_SOURCE_DIR) / "scenes" / "assets";
-    fs::create_directories(out);
     const std::string plane = (assets / "table-1.1-plane.gltf").string();
-
     std::vector<Call> calls;
     calls.push_back({"`quadshade --help`", {quadshade, "--help"}, false, "<= 20 ms and <= 20 MB",
                      [](double wall, double rss, double) { return wall <= 20.0 && rss <= 20.0; }});
@@ -147,7 +134,11 @@ int main(int argc, char** argv) {
                          {probe.string()}, false, "", nullptr});
     }
 
-    const std::string load_before = load_average();
+    return calls;
+}
+
+// Each call `runs` times, interleaved: false, with a message, where one fails.
+bool time_calls(std::vector<Call>& calls, int runs) {
     const std::vector<std::string> env = qs::bench::environment_with({});
     for (int r = 0; r < runs; ++r) {
         for (Call& c : calls) {
@@ -155,7 +146,7 @@ int main(int argc, char** argv) {
             if (!run.ok()) {
                 std::fprintf(stderr, "quadshade-bench-startup: %s: %s\n%s", c.label.c_str(), run.status().c_str(),
                              run.err.c_str());
-                return 1;
+                return false;
             }
             c.wall_ms.values.push_back(1e3 * run.wall_seconds);
             c.cpu_ms.values.push_back(1e3 * run.cpu_seconds);
@@ -164,7 +155,7 @@ int main(int argc, char** argv) {
                 const double frame = frame_ms(run.err);
                 if (frame < 0.0) {
                     std::fprintf(stderr, "quadshade-bench-startup: %s: no summary line\n%s", c.label.c_str(), run.err.c_str());
-                    return 1;
+                    return false;
                 }
                 c.frame_ms.values.push_back(frame);
                 c.overhead_ms.values.push_back(1e3 * run.wall_seconds - frame);
@@ -172,7 +163,11 @@ int main(int argc, char** argv) {
         }
     }
     for (Call& c : calls) c.objects = shared_objects(c.argv);
+    return true;
+}
 
+// startup.md's table: each call's medians and ranges, and whether it meets its target.
+std::string startup_table(const std::vector<Call>& calls, int runs, const std::string& load_before) {
     std::ostringstream md;
     md << "| call | shared objects | wall ms | CPU ms | peak RSS MB | frame ms | wall - frame ms | target |\n"
        << "|---|---:|---:|---:|---:|---:|---:|---|\n";
@@ -190,7 +185,29 @@ int main(int argc, char** argv) {
     }
     md << "\n" << runs << " runs of each call, interleaved; median (range). CPU: user and system time on "
        << "every core. MB: 10^6 bytes. Load average " << load_before << " before, " << load_average() << " after.\n";
-    std::ofstream(fs::path(out) / "startup.md") << md.str();
-    std::fputs(md.str().c_str(), stdout);
+    return md.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app("quadshade-bench-startup: wall time and peak memory of whole quadshade calls and of "
+                 "programs linking one library each");
+    int runs = 21;
+    std::string out = "build/startup";
+    app.add_option("--runs", runs, "runs of each call (default 21)")->check(CLI::Range(1, 1000));
+    app.add_option("--out", out, "folder for startup.md and the rendered images (default build/startup)");
+    const fs::path bin = fs::path(qs::bench::self_executable()).parent_path();
+    std::string quadshade = (bin / "quadshade").string();
+    app.add_option("--quadshade", quadshade, "the quadshade to time (default: the one beside this program)");
+    CLI11_PARSE(app, argc, argv);
+
+    fs::create_directories(out);
+    std::vector<Call> calls = startup_calls(quadshade, bin, out);
+    const std::string load_before = load_average();
+    if (!time_calls(calls, runs)) return 1;
+    const std::string md = startup_table(calls, runs, load_before);
+    std::ofstream(fs::path(out) / "startup.md") << md;
+    std::fputs(md.c_str(), stdout);
     return 0;
 }

@@ -277,56 +277,56 @@ std::string widths_named(std::vector<int> widths) {
     return s + " bits";
 }
 
-// Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
-// differentials) next to llvmpipe at each width, with the ray caster's one-off BVH build apart.
-// Each round times every renderer in turn and then llvmpipe; every ratio is taken within a
-// round, and the table gives its median over the rounds with their range.
-std::string figure_frames(const Options& o) {
-    qs::Scene scene = qs::load_scene(kFigure);
-    struct Mode {
-        const char* name;
-        qs::Backend backend;
-        qs::Derivatives rule;
-        const char* rule_name;
-    };
-    const Mode modes[] = {{"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Fine, "fine quads"},
-                          {"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Analytic, "Dual2, plane derivatives"},
-                          {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Fine, "fine ray quads"},
-                          {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Analytic, "Dual2, ray differentials"}};
-    constexpr std::size_t kModes = std::size(modes);
-    struct Timed {
-        std::unique_ptr<qs::SceneRenderer> renderer;
-        qs::Framebuffer fb;
-        double setup = 0;
-        std::vector<double> ms;  // per round
-    };
-    std::vector<Timed> timed(kModes);
-    for (std::size_t i = 0; i < kModes; ++i) {
-        qs::FrameRequest req;
-        req.backend = modes[i].backend;
-        req.shading.derivatives = modes[i].rule;
-        req.shading.threads = o.threads;
-        const auto s0 = Clock::now();
-        timed[i].renderer = std::make_unique<qs::SceneRenderer>(scene, req);
-        timed[i].setup = ms_since(s0);
-    }
+// The renderers Figure 1.1's frame is timed with.
+struct FigureMode {
+    const char* name;
+    qs::Backend backend;
+    qs::Derivatives rule;
+    const char* rule_name;
+};
+constexpr FigureMode kFigureModes[] = {
+    {"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Fine, "fine quads"},
+    {"quadshade rasterizer", qs::Backend::Rasterizer, qs::Derivatives::Analytic, "Dual2, plane derivatives"},
+    {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Fine, "fine ray quads"},
+    {"quadshade ray caster", qs::Backend::RayCaster, qs::Derivatives::Analytic, "Dual2, ray differentials"}};
+constexpr std::size_t kFigureModeCount = std::size(kFigureModes);
+
+// A renderer of the frame, set up once, and its median per round.
+struct TimedRenderer {
+    std::unique_ptr<qs::SceneRenderer> renderer;
+    qs::Framebuffer fb;
+    double setup = 0;
+    std::vector<double> ms;  // per round
+};
+
+// The rounds: every renderer, llvmpipe at each width, then every renderer again in reverse
+// order. llvmpipe's runs, [round][width].
+std::vector<std::vector<PeerRun>> time_figure(const Options& o, std::vector<TimedRenderer>& timed) {
     std::vector<std::vector<PeerRun>> peers;  // [round][width]
     for (int round = 0; round < o.rounds; ++round) {
         std::fprintf(stderr, "\rround %d/%d Figure 1.1 ...        ", round + 1, o.rounds);
         // Every renderer before llvmpipe and again after it, in reverse order: each one's frames
         // are centred on llvmpipe's.
-        std::vector<std::vector<double>> frames(kModes);
+        std::vector<std::vector<double>> frames(kFigureModeCount);
         auto time_mode = [&](std::size_t i) {
-            Timed& t = timed[i];
+            TimedRenderer& t = timed[i];
             time_frames_into(frames[i], o.repeat, [&] { t.renderer->render_into(t.fb, std::nullopt); });
         };
-        for (std::size_t i = 0; i < kModes; ++i) time_mode(i);
+        for (std::size_t i = 0; i < kFigureModeCount; ++i) time_mode(i);
         peers.emplace_back();
         for (int width : o.widths) peers.back().push_back(run_peer(o, width, {"--figure"}));
         if (!fastest(peers.back())) ++g_rows_without_peer;
-        for (std::size_t i = kModes; i-- > 0;) time_mode(i);
-        for (std::size_t i = 0; i < kModes; ++i) timed[i].ms.push_back(stats_of(frames[i]).median);
+        for (std::size_t i = kFigureModeCount; i-- > 0;) time_mode(i);
+        for (std::size_t i = 0; i < kFigureModeCount; ++i) timed[i].ms.push_back(stats_of(frames[i]).median);
     }
+    return peers;
+}
+
+// The frame's table: each renderer's time, set-up and speedup against llvmpipe at its best; the
+// ray caster's time against the rasterizer's; llvmpipe at each width.
+std::string figure_table(const Options& o, const std::vector<TimedRenderer>& timed,
+                         const std::vector<std::vector<PeerRun>>& peers) {
+    const auto& modes = kFigureModes;
     auto rasterizer_with = [&](qs::Derivatives rule) {
         std::size_t i = 0;
         while (modes[i].backend != qs::Backend::Rasterizer || modes[i].rule != rule) ++i;
@@ -340,7 +340,7 @@ std::string figure_frames(const Options& o) {
     std::ostringstream md;
     md << "| renderer | derivatives | ms per frame | set-up ms | of which BVH build ms | speedup against llvmpipe at its "
           "best (goal >= 2) | time against the rasterizer's, same derivatives (goal <= 1.5) |\n|---|---|---|---|---|---|---|\n";
-    for (std::size_t i = 0; i < kModes; ++i) {
+    for (std::size_t i = 0; i < kFigureModeCount; ++i) {
         std::vector<double> speedup, against_raster;
         for (int r = 0; r < o.rounds; ++r) {
             if (const PeerRun* best = fastest(peers[std::size_t(r)])) speedup.push_back(best->report->median_ms / timed[i].ms[std::size_t(r)]);
@@ -366,6 +366,26 @@ std::string figure_frames(const Options& o) {
            << " | - | - | - |\n";
     }
     return md.str();
+}
+
+// Figure 1.1, one frame: the rasterizer and the ray caster (quad derivatives and ray
+// differentials) next to llvmpipe at each width, with the ray caster's one-off BVH build apart.
+// Each round times every renderer in turn and then llvmpipe; every ratio is taken within a
+// round, and the table gives its median over the rounds with their range.
+std::string figure_frames(const Options& o) {
+    qs::Scene scene = qs::load_scene(kFigure);
+    std::vector<TimedRenderer> timed(kFigureModeCount);
+    for (std::size_t i = 0; i < kFigureModeCount; ++i) {
+        qs::FrameRequest req;
+        req.backend = kFigureModes[i].backend;
+        req.shading.derivatives = kFigureModes[i].rule;
+        req.shading.threads = o.threads;
+        const auto s0 = Clock::now();
+        timed[i].renderer = std::make_unique<qs::SceneRenderer>(scene, req);
+        timed[i].setup = ms_since(s0);
+    }
+    const std::vector<std::vector<PeerRun>> peers = time_figure(o, timed);
+    return figure_table(o, timed, peers);
 }
 
 // One Table 1.1 row at one size, measured once per round.
@@ -641,24 +661,24 @@ const TwinWay kGenerated{
     "the median rate >= 0.9 of the hand translation's, none below 0.75, and every row >= 2x llvmpipe at its best width",
     true};
 
-// Each Table 1.1 row's GLSL run `way` beside its hand translation, the two in turn within each
-// round, with the time it took to make the twin (the front end's compile; for a generated
-// translation, the plugin's compile where the cache lacked it).
-int run_twins(const Options& o, const TwinWay& way) {
-    struct Series {
-        const Row* row;
-        int size;
-        std::string twin;
-        double make_ms = 0;
-        std::size_t lines = 0;
-        std::vector<double> hand, twin_ms;  // per round: median ms
-        std::vector<double> llvmpipe_ms;    // per round: llvmpipe's at its fastest width (against_llvmpipe)
-    };
-    std::vector<Series> series;
+// A Table 1.1 row at one size, its twin and their times round by round.
+struct TwinSeries {
+    const Row* row;
+    int size;
+    std::string twin;
+    double make_ms = 0;
+    std::size_t lines = 0;
+    std::vector<double> hand, twin_ms;  // per round: median ms
+    std::vector<double> llvmpipe_ms;    // per round: llvmpipe's at its fastest width (against_llvmpipe)
+};
+
+// Each chosen row's twin made `way`, timed.
+std::vector<TwinSeries> make_twins(const Options& o, const TwinWay& way) {
+    std::vector<TwinSeries> series;
     for (int size : o.sizes) {
         for (const Row& row : kRows) {
             if (!o.shaders.empty() && std::find(o.shaders.begin(), o.shaders.end(), row.shader) == o.shaders.end()) continue;
-            Series s{&row, size, "", 0, 0, {}, {}, {}};
+            TwinSeries s{&row, size, "", 0, 0, {}, {}, {}};
             const auto t0 = Clock::now();
             s.twin = way.make(row);
             s.make_ms = ms_since(t0);
@@ -667,10 +687,15 @@ int run_twins(const Options& o, const TwinWay& way) {
             series.push_back(std::move(s));
         }
     }
-    if (way.against_llvmpipe) qs::export_glsl(fs::path(o.out) / "glsl");  // what llvmpipe compiles
+    return series;
+}
+
+// The rounds: in each, every series' hand translation and twin in turn (and llvmpipe, where the
+// way is measured against it).
+void time_twins(const Options& o, const TwinWay& way, std::vector<TwinSeries>& series) {
     qs::Scene scene = qs::load_scene(kPlane);
     for (int round = 0; round < o.rounds; ++round) {
-        for (Series& s : series) {
+        for (TwinSeries& s : series) {
             std::fprintf(stderr, "\rround %d/%d %-16s %4d ...", round + 1, o.rounds, s.row->shader, s.size);
             if (way.against_llvmpipe) {
                 std::vector<PeerRun> runs;
@@ -699,6 +724,11 @@ int run_twins(const Options& o, const TwinWay& way) {
         }
     }
     std::fprintf(stderr, "\r%50s\r", "");
+}
+
+// The way's table, one line per series; `met`: whether the way's goal (and twice llvmpipe's
+// speed, where measured against it) is met.
+std::string twins_table(const Options& o, const TwinWay& way, const std::vector<TwinSeries>& series, bool& met) {
     std::ostringstream md;
     md << format("| shader | size | GLSL lines | %s ms | translation ms | %s ms | %s / translation |", way.made,
                  way.name, way.name)
@@ -706,7 +736,7 @@ int run_twins(const Options& o, const TwinWay& way) {
                                 : "\n|---|---|---|---|---|---|---|\n");
     std::vector<double> row_ratios;
     bool twice_llvmpipe = true;
-    for (const Series& s : series) {
+    for (const TwinSeries& s : series) {
         std::vector<double> ratio, speedup;
         for (int r = 0; r < o.rounds; ++r) ratio.push_back(s.twin_ms[std::size_t(r)] / s.hand[std::size_t(r)]);
         const Stats h = stats_of(s.hand), t = stats_of(s.twin_ms), q = stats_of(ratio);
@@ -727,24 +757,32 @@ int run_twins(const Options& o, const TwinWay& way) {
         }
         md << "\n";
     }
-    const bool met = way.goal_met(row_ratios) && twice_llvmpipe;
+    met = way.goal_met(row_ratios) && twice_llvmpipe;
     md << format("\nBy the median over the rows: the %s takes %.2fx the translation's time, %.2fx at most (goal: %s: %s).\n",
                  way.name, stats_of(row_ratios).median, *std::max_element(row_ratios.begin(), row_ratios.end()),
                  way.goal, met ? "met" : "not met");
-    std::ofstream(fs::path(o.out) / way.file) << md.str();
+    return md.str();
+}
+
+// Each Table 1.1 row's GLSL run `way` beside its hand translation, the two in turn within each
+// round, with the time it took to make the twin (the front end's compile; for a generated
+// translation, the plugin's compile where the cache lacked it).
+int run_twins(const Options& o, const TwinWay& way) {
+    std::vector<TwinSeries> series = make_twins(o, way);
+    if (way.against_llvmpipe) qs::export_glsl(fs::path(o.out) / "glsl");  // what llvmpipe compiles
+    time_twins(o, way, series);
+    bool met = false;
+    const std::string md = twins_table(o, way, series, met);
+    std::ofstream(fs::path(o.out) / way.file) << md;
     std::printf("Each Table 1.1 row's GLSL run by the %s beside its translation, %d threads, ms per frame: median over %d "
                 "rounds of each round's median of %d frames (min-max over rounds)\n\n%s",
-                way.name, o.threads, o.rounds, o.repeat, md.str().c_str());
+                way.name, o.threads, o.rounds, o.repeat, md.c_str());
     if (peer_failed()) return 1;
     return met ? 0 : 3;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    Options o;
-    CLI::App app{"quadshade-bench-throughput: Table 1.1's shaders against OSMesa llvmpipe at each vector width, "
-                 "and the Figure 1.1 frame"};
+// The command line's options into `o`: the measurements' and, hidden, the peer child's job.
+void add_options(CLI::App& app, Options& o) {
     app.add_option("--threads", o.threads, "threads for quadshade and llvmpipe (LP_NUM_THREADS)")
         ->check(CLI::Range(1, 256));
     app.add_option("--repeat", o.repeat, "frames timed per measurement (median, min-max); quadshade's twice a round, "
@@ -770,6 +808,68 @@ int main(int argc, char** argv) {
     app.add_option("--shader", o.shader)->group("");
     app.add_flag("--figure", o.figure)->group("");
     app.add_option("--glsl", o.glsl)->group("");
+}
+
+// Whether the options make one run: modes exclusive, each mode's options only with it, the
+// peer child's job whole; a message where they do not.
+bool options_make_one_run(const Options& o, const CLI::App& app) {
+    if (int(o.scaling) + int(o.interpreted) + int(o.generated) > 1) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling, --interpreted and --generated are different runs\n");
+        return false;
+    }
+    const bool peer_job = o.vector_width || o.size || !o.shader.empty() || o.figure || !o.glsl.empty();
+    if (o.peer_only != peer_job || (o.peer_only && (!o.vector_width || o.glsl.empty() ||
+                                                    o.figure == (o.size > 0 || !o.shader.empty()) ||
+                                                    (!o.figure && (o.size == 0 || o.shader.empty()))))) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --peer-only takes --vector-width, --glsl and either "
+                             "--figure or --size and --shader; those options only with --peer-only\n");
+        return false;
+    }
+    // Options of one mode given to the other are refused, not ignored.
+    for (const char* opt : {"--widths", "--threads"}) {
+        if (o.scaling && app.count(opt) > 0) {
+            std::fprintf(stderr, "quadshade-bench-throughput: %s is not an option of --scaling (quadshade alone, at "
+                                 "--scaling-threads)\n", opt);
+            return false;
+        }
+    }
+    if (o.interpreted && app.count("--widths") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --widths is not an option of --interpreted (quadshade alone)\n");
+        return false;
+    }
+    if (!o.scaling && app.count("--scaling-threads") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling-threads only with --scaling\n");
+        return false;
+    }
+    if (o.peer_only && app.count("--rounds") > 0) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --rounds is not an option of --peer-only (the parent runs "
+                             "one child per round)\n");
+        return false;
+    }
+    if (o.scaling && o.peer_only) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling and --peer-only are two different runs\n");
+        return false;
+    }
+    if (o.scaling && o.scaling_threads.size() < 2) {
+        std::fprintf(stderr, "quadshade-bench-throughput: --scaling needs at least two --scaling-threads\n");
+        return false;
+    }
+    for (const std::string& s : o.shaders) {
+        if (std::none_of(std::begin(kRows), std::end(kRows), [&](const Row& r) { return s == r.shader; })) {
+            std::fprintf(stderr, "quadshade-bench-throughput: --shaders: '%s' is not a Table 1.1 row\n", s.c_str());
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    CLI::App app{"quadshade-bench-throughput: Table 1.1's shaders against OSMesa llvmpipe at each vector width, "
+                 "and the Figure 1.1 frame"};
+    add_options(app, o);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -779,54 +879,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     if ((o.scaling || o.interpreted || o.generated) && app.count("--sizes") == 0) o.sizes = {1024};
-    if (int(o.scaling) + int(o.interpreted) + int(o.generated) > 1) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --scaling, --interpreted and --generated are different runs\n");
-        return 2;
-    }
-
-    const bool peer_job = o.vector_width || o.size || !o.shader.empty() || o.figure || !o.glsl.empty();
-    if (o.peer_only != peer_job || (o.peer_only && (!o.vector_width || o.glsl.empty() ||
-                                                    o.figure == (o.size > 0 || !o.shader.empty()) ||
-                                                    (!o.figure && (o.size == 0 || o.shader.empty()))))) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --peer-only takes --vector-width, --glsl and either "
-                             "--figure or --size and --shader; those options only with --peer-only\n");
-        return 2;
-    }
-    // Options of one mode given to the other are refused, not ignored.
-    for (const char* opt : {"--widths", "--threads"}) {
-        if (o.scaling && app.count(opt) > 0) {
-            std::fprintf(stderr, "quadshade-bench-throughput: %s is not an option of --scaling (quadshade alone, at "
-                                 "--scaling-threads)\n", opt);
-            return 2;
-        }
-    }
-    if (o.interpreted && app.count("--widths") > 0) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --widths is not an option of --interpreted (quadshade alone)\n");
-        return 2;
-    }
-    if (!o.scaling && app.count("--scaling-threads") > 0) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --scaling-threads only with --scaling\n");
-        return 2;
-    }
-    if (o.peer_only && app.count("--rounds") > 0) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --rounds is not an option of --peer-only (the parent runs "
-                             "one child per round)\n");
-        return 2;
-    }
-    if (o.scaling && o.peer_only) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --scaling and --peer-only are two different runs\n");
-        return 2;
-    }
-    if (o.scaling && o.scaling_threads.size() < 2) {
-        std::fprintf(stderr, "quadshade-bench-throughput: --scaling needs at least two --scaling-threads\n");
-        return 2;
-    }
-    for (const std::string& s : o.shaders) {
-        if (std::none_of(std::begin(kRows), std::end(kRows), [&](const Row& r) { return s == r.shader; })) {
-            std::fprintf(stderr, "quadshade-bench-throughput: --shaders: '%s' is not a Table 1.1 row\n", s.c_str());
-            return 2;
-        }
-    }
+    if (!options_make_one_run(o, app)) return 2;
     try {
         if (o.peer_only) return run_peer_child(o);
         fs::create_directories(o.out);

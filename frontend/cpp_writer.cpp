@@ -1771,25 +1771,12 @@ std::string without_version_line(const std::string& text) {
     return out;
 }
 
-}  // namespace
-
-Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name,
-                           const std::string& shader_name) {
-    if (!is_identifier(name) || name.find("__") != std::string::npos || name[0] == '_') {
-        throw GlslError("'" + comment_text(name) + "' cannot name a translation: letters, digits and single underscores, "
-                        "a letter first");
-    }
-    const CompiledProgram compiled = compile_glsl(fragment, vertex);
-    const ir::Program& p = compiled.program;
-    std::vector<std::string> warnings;
-    ParsedStage fp = parse(fragment, EShLangFragment, warnings);
-    ParsedStage vp = parse(compiled.vertex, EShLangVertex, warnings);
-    StageWriter vw(Stage::Vertex, compiled.vertex.file, *vp.shader->getIntermediate(), p);
-    const std::string vertex_body = vw.write();
-    StageWriter fw(Stage::Fragment, fragment.file, *fp.shader->getIntermediate(), p);
-    const std::string fragment_body = fw.write();
-    std::string unbounded;  // where a loop may reach llvmpipe's limit, which C++ loops do not keep
-    for (const auto& [stage, file] : {std::pair{&vp, compiled.vertex.file}, std::pair{&fp, fragment.file}}) {
+// Where a loop of either stage may go round as often as llvmpipe's limit, which C++ loops do
+// not keep: its position and a note; empty where every loop stays within it.
+std::string unbounded_loop(const ParsedStage& vp, const std::string& vertex_file, const ParsedStage& fp,
+                           const std::string& fragment_file) {
+    std::string unbounded;
+    for (const auto& [stage, file] : {std::pair{&vp, vertex_file}, std::pair{&fp, fragment_file}}) {
         const LoopBound b = loop_bound(*stage->shader->getIntermediate());
         if (!b.within_limit() && unbounded.empty()) {
             const TIntermNode* at = b.unbounded_loop;
@@ -1797,8 +1784,11 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
                         (at ? "this loop may go round" : "the loops may go round") + " 65,535 times";
         }
     }
+    return unbounded;
+}
 
-    // The varyings the fragment stage reads, in the interpreter's order: name and floats.
+// The varyings the fragment stage reads, in the interpreter's order: name and floats.
+std::vector<std::pair<std::string, int>> fragment_varyings(const ir::Program& p) {
     std::vector<std::pair<std::string, int>> varyings;
     for (const ir::Varying& v : p.varyings) {
         const std::string base = v.name.substr(0, v.name.find('['));
@@ -1808,16 +1798,14 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
             varyings.push_back({base, 1});
         }
     }
-    bool texcoords = false;
-    for (ir::Attribute a : p.attributes) texcoords = texcoords || a == ir::Attribute::Texcoord0;
-    const char* coordinates = varyings.empty() ? "None" : texcoords ? "Texcoord2D" : "Object3D";
+    return varyings;
+}
 
-    const std::string struct_name = to_camel(name);
-    const std::string frag_file = std::filesystem::path(fragment.file).filename().string();
-    const std::string vert_file = vertex ? std::filesystem::path(vertex->file).filename().string() : "";
-    std::ostringstream h;
+// The header's opening: what it is, a loop llvmpipe would leave where there is one, its includes.
+void write_preamble(std::ostream& h, const std::string& name, const std::string& frag_file, const std::string* vert_file,
+                    const std::string& unbounded) {
     h << "#pragma once\n"
-      << "// " << comment_text(frag_file) << (vertex ? " and " + comment_text(vert_file) : std::string()) << " in C++, statement by statement,\n"
+      << "// " << comment_text(frag_file) << (vert_file ? " and " + comment_text(*vert_file) : std::string()) << " in C++, statement by statement,\n"
       << "// written by `quadshade translate`: each line ends with its GLSL line. The shader's functions are\n"
       << "// members of a struct that holds what GLSL keeps at global scope (uniforms, inputs, outputs,\n"
       << "// globals), over the number type F. A condition that varies per fragment runs both sides, each\n"
@@ -1835,12 +1823,11 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "namespace " << name << " {\n"
       << "using namespace qs;\n"
       << "using namespace qs::glsl;\n\n";
-    h << "// " << comment_text(std::filesystem::path(compiled.vertex.file).filename().string()) << "\n"
-      << "template <class F>\n"
-      << "struct VertexShader {\n"
-      << "    const VertexIn& in;\n"
-      << "    const Uniforms& u;\n"
-      << vertex_body << "};\n\n";
+}
+
+// VertexStage: the varyings' struct and the function that runs the vertex shader for one vertex.
+void write_vertex_stage(std::ostream& h, const std::string& name, const std::string& fragment_file,
+                        const std::vector<std::pair<std::string, int>>& varyings) {
     h << "// What the vertex stage hands the fragment stage, one vertex at a time in float.\n"
       << "struct VertexStage {\n"
       << "    static constexpr GlslFiles glsl{" << string_literal(name + ".vert") << "};  // beside the plugin\n"
@@ -1848,7 +1835,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "    struct Varyings {\n";
     std::string tie;
     for (const auto& [v, n] : varyings) {
-        const std::string cpp = cpp_identifier(v, fragment.file + ": ");
+        const std::string cpp = cpp_identifier(v, fragment_file + ": ");
         h << "        " << (n == 1 ? std::string("T") : "vec" + std::to_string(n) + "<T>") << " " << cpp << ";\n";
         tie += (tie.empty() ? "" : ", ") + cpp;
     }
@@ -1858,25 +1845,21 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "        VertexShader<float> shader{in, u};\n"
       << "        shader.main();\n";
     for (const auto& [v, n] : varyings) {
-        const std::string cpp = cpp_identifier(v, fragment.file + ": ");
+        const std::string cpp = cpp_identifier(v, fragment_file + ": ");
         h << "        out." << cpp << " = shader." << cpp << ";\n";
     }
     h << "        const vec4<float>& p = shader.gl_Position;\n"
       << "        out.gl_Position = {p.x, p.y, p.z, p.w};\n"
       << "    }\n"
       << "};\n\n";
-    h << "// " << comment_text(frag_file) << "\n"
-      << "template <class F>\n"
-      << "struct FragmentShader {\n"
-      << "    const FragmentIn<F, VertexStage>& in;\n"
-      << "    const Uniforms& u;\n"
-      << "    FragmentOut<F> out;\n"
-      << fragment_body << "};\n\n";
-    h << "struct " << struct_name << " {\n";
+}
+
+// The shader's uniforms as UniformDecls, with their initial values.
+void write_uniforms(std::ostream& h, const ir::Program& p, const std::string& fragment_file) {
     if (!p.uniforms.empty()) {
         h << "    static constexpr UniformDecl kUniforms[] = {\n";
         for (const ir::Uniform& u : p.uniforms) {
-            const char* t = uniform_type(u, fragment.file + ": ");
+            const char* t = uniform_type(u, fragment_file + ": ");
             h << "        {" << string_literal(u.name) << ", UniformType::" << t << ", {";
             for (int i = 0; i < u.components; ++i) {
                 double value = 0.0;
@@ -1890,6 +1873,11 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
         }
         h << "    };\n";
     }
+}
+
+// ShaderInfo's fields but the uniforms: what the shader needs, its GLSL beside the plugin.
+void write_shader_info(std::ostream& h, const ir::Program& p, const std::string& name, const std::string& shader_name,
+                       const std::string& frag_file, const char* coordinates) {
     h << "    static constexpr ShaderInfo info{\n"
       << "        .name = " << string_literal(shader_name.empty() ? name : shader_name) << ",\n"
       << "        .description = " << string_literal("translated from " + frag_file) << ",\n"
@@ -1916,6 +1904,65 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "        .glsl_version = " << p.version << ",\n";
     if (!p.uniforms.empty()) h << "        .uniforms = kUniforms,\n";
     if (wide_batches_pay(p.fragment)) h << "        .wide_batches = true,  // frontend/batch_width.h\n";
+}
+
+// The CMakeLists.txt that builds the translation as a plugin against the installed package.
+std::string plugin_cmake(const std::string& name) {
+    const std::string glsl_files = name + ".vert " + name + ".frag";
+    return "# " + name + " as a plugin, built against the installed quadshade package:\n"
+           "#   cmake -S . -B build -DCMAKE_PREFIX_PATH=<quadshade's install prefix> && cmake --build build\n"
+           "#   quadshade render SCENE --plugin build/lib" + name + ".so --shader " + name + " -o out.png\n"
+           "cmake_minimum_required(VERSION 3.25)\n"
+           "project(" + name + " LANGUAGES CXX)\n\n"
+           "find_package(quadshade REQUIRED)\n"
+           "quadshade_add_shader_plugin(" + name + " SOURCES " + name + ".cpp GLSL " + glsl_files + ")\n";
+}
+
+}  // namespace
+
+Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslSource>& vertex, const std::string& name,
+                           const std::string& shader_name) {
+    if (!is_identifier(name) || name.find("__") != std::string::npos || name[0] == '_') {
+        throw GlslError("'" + comment_text(name) + "' cannot name a translation: letters, digits and single underscores, "
+                        "a letter first");
+    }
+    const CompiledProgram compiled = compile_glsl(fragment, vertex);
+    const ir::Program& p = compiled.program;
+    std::vector<std::string> warnings;
+    ParsedStage fp = parse(fragment, EShLangFragment, warnings);
+    ParsedStage vp = parse(compiled.vertex, EShLangVertex, warnings);
+    StageWriter vw(Stage::Vertex, compiled.vertex.file, *vp.shader->getIntermediate(), p);
+    const std::string vertex_body = vw.write();
+    StageWriter fw(Stage::Fragment, fragment.file, *fp.shader->getIntermediate(), p);
+    const std::string fragment_body = fw.write();
+    const std::string unbounded = unbounded_loop(vp, compiled.vertex.file, fp, fragment.file);
+    const std::vector<std::pair<std::string, int>> varyings = fragment_varyings(p);
+    bool texcoords = false;
+    for (ir::Attribute a : p.attributes) texcoords = texcoords || a == ir::Attribute::Texcoord0;
+    const char* coordinates = varyings.empty() ? "None" : texcoords ? "Texcoord2D" : "Object3D";
+
+    const std::string struct_name = to_camel(name);
+    const std::string frag_file = std::filesystem::path(fragment.file).filename().string();
+    const std::string vert_file = vertex ? std::filesystem::path(vertex->file).filename().string() : "";
+    std::ostringstream h;
+    write_preamble(h, name, frag_file, vertex ? &vert_file : nullptr, unbounded);
+    h << "// " << comment_text(std::filesystem::path(compiled.vertex.file).filename().string()) << "\n"
+      << "template <class F>\n"
+      << "struct VertexShader {\n"
+      << "    const VertexIn& in;\n"
+      << "    const Uniforms& u;\n"
+      << vertex_body << "};\n\n";
+    write_vertex_stage(h, name, fragment.file, varyings);
+    h << "// " << comment_text(frag_file) << "\n"
+      << "template <class F>\n"
+      << "struct FragmentShader {\n"
+      << "    const FragmentIn<F, VertexStage>& in;\n"
+      << "    const Uniforms& u;\n"
+      << "    FragmentOut<F> out;\n"
+      << fragment_body << "};\n\n";
+    h << "struct " << struct_name << " {\n";
+    write_uniforms(h, p, fragment.file);
+    write_shader_info(h, p, name, shader_name, frag_file, coordinates);
     h << "    };\n"
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
@@ -1940,14 +1987,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
     t.vertex_glsl = without_version_line(compiled.vertex.text);
     t.unbounded_loop = unbounded;
     t.fragment_glsl = without_version_line(fragment.text);
-    const std::string glsl_files = name + ".vert " + name + ".frag";
-    t.cmake = "# " + name + " as a plugin, built against the installed quadshade package:\n"
-              "#   cmake -S . -B build -DCMAKE_PREFIX_PATH=<quadshade's install prefix> && cmake --build build\n"
-              "#   quadshade render SCENE --plugin build/lib" + name + ".so --shader " + name + " -o out.png\n"
-              "cmake_minimum_required(VERSION 3.25)\n"
-              "project(" + name + " LANGUAGES CXX)\n\n"
-              "find_package(quadshade REQUIRED)\n"
-              "quadshade_add_shader_plugin(" + name + " SOURCES " + name + ".cpp GLSL " + glsl_files + ")\n";
+    t.cmake = plugin_cmake(name);
     return t;
 }
 

@@ -312,6 +312,100 @@ Place StageLowering::eval_query_lod(TIntermTyped* node, int slot, int dims, cons
     return r;
 }
 
+// The filtered lookup `o` at `coords` (the first `dims` of them), with its level of detail or
+// bias (`extra`), or derivatives along x and y, and texel offsets where it takes them.
+Place StageLowering::emit_lookup(ir::Op o, int slot, int dims, const Place& coords, const Place* extra,
+                                 const Place* ddx, const Place* ddy, const Place* offset) {
+    // A sampler2DShadow's compares the coordinate after the `dims` (m = 4) and gives one result.
+    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
+    const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + dims + (shadow ? 1 : 0)));
+    std::uint32_t b = 0, c = 0;
+    if (extra) b = (*extra)[0].reg;
+    if (ddx) {
+        Place both(ddx->begin(), ddx->begin() + dims);
+        both.insert(both.end(), ddy->begin(), ddy->begin() + dims);
+        b = consecutive(both);
+    }
+    if (offset) {
+        const Place o_int = convert_bits(*offset, B::Int);
+        c = consecutive(Place(o_int.begin(), o_int.begin() + dims));
+    }
+    Place r = temps(B::Float, shadow ? 1 : 4);
+    ir::Instr& e = emit(o);
+    e.d = r[0].reg, e.a = a, e.b = b, e.c = c, e.n = std::uint8_t(dims), e.m = shadow ? 4 : 1;
+    e.count = std::uint16_t(slot);
+    return r;
+}
+
+// A projective lookup's coordinates: the first `count` (a shadow lookup's reference value too)
+// times the reciprocal of the last one, as Mesa lowers them.
+Place StageLowering::project(const Place& p, int count) {
+    const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
+    Place coords;
+    for (int i = 0; i < count; ++i) {
+        coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
+    }
+    return coords;
+}
+
+// texture, textureProj, textureLod, textureGrad and their Offset and Proj forms on a sampler2D,
+// sampler3D or sampler2DShadow (P's third component the reference value, projected too in a
+// projective lookup; shadow2D's vec4 is (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's default,
+// GL_LUMINANCE, makes it); `zero`: level 0, which a vertex shader's implicit lookups read (it has
+// no neighbours to take a level from).
+Place StageLowering::eval_filtered(glslang::TOperator op, TIntermTyped* node, int slot, int dims,
+                                   const std::vector<Place>& v, const Place& zero) {
+    const bool vertex = kind_ == StageKind::Vertex;
+    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
+    if (shadow && !shadow_lookup_function(op)) {
+        refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
+                     "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod, textureSize, the "
+                     "gathers and textureQueryLod are)");
+    }
+    const int taken = dims + (shadow ? 1 : 0);
+    const auto lookup = [&](ir::Op plain, ir::Op with_offset, const Place& coords, const Place* extra, const Place* ddx,
+                            const Place* ddy, const Place* offset) {
+        const Place r = emit_lookup(offset ? with_offset : plain, slot, dims, coords, extra, ddx, ddy, offset);
+        if (!shadow || node->getType().getVectorSize() != 4) return r;
+        Place luminance = temps(B::Float, 4);
+        for (std::size_t i = 0; i < 3; ++i) move(luminance[i], r[0], false);
+        move(luminance[3], {B::Float, float_constant(1.0f)}, false);
+        return luminance;
+    };
+    const auto implicit = [&](const Place& coords, const Place* bias, const Place* offset) {
+        if (vertex) {
+            return lookup(ir::Op::TextureLod, ir::Op::TextureLodOffset, coords, &zero, nullptr, nullptr, offset);
+        }
+        if (bias) return lookup(ir::Op::TextureBias, ir::Op::TextureBiasOffset, coords, bias, nullptr, nullptr, offset);
+        return lookup(ir::Op::Texture, ir::Op::TextureOffset, coords, nullptr, nullptr, nullptr, offset);
+    };
+    const auto at_level = [&](const Place& coords, const Place& lod, const Place* offset) {
+        return lookup(ir::Op::TextureLod, ir::Op::TextureLodOffset, coords, &lod, nullptr, nullptr, offset);
+    };
+    const auto gradient = [&](const Place& coords, const Place& ddx, const Place& ddy, const Place* offset) {
+        return lookup(ir::Op::TextureGrad, ir::Op::TextureGradOffset, coords, nullptr, &ddx, &ddy, offset);
+    };
+    switch (op) {
+        case glslang::EOpTexture: return implicit(v[0], v.size() == 2 ? &v[1] : nullptr, nullptr);
+        case glslang::EOpTextureProj: return implicit(project(v[0], taken), v.size() == 2 ? &v[1] : nullptr, nullptr);
+        case glslang::EOpTextureOffset: return implicit(v[0], v.size() == 3 ? &v[2] : nullptr, &v[1]);
+        case glslang::EOpTextureProjOffset:
+            return implicit(project(v[0], taken), v.size() == 3 ? &v[2] : nullptr, &v[1]);
+        case glslang::EOpTextureLod: return at_level(v[0], v[1], nullptr);
+        case glslang::EOpTextureProjLod: return at_level(project(v[0], taken), v[1], nullptr);
+        case glslang::EOpTextureLodOffset: return at_level(v[0], v[1], &v[2]);
+        case glslang::EOpTextureProjLodOffset: return at_level(project(v[0], taken), v[1], &v[2]);
+        case glslang::EOpTextureGrad: return gradient(v[0], v[1], v[2], nullptr);
+        case glslang::EOpTextureProjGrad: return gradient(project(v[0], taken), v[1], v[2], nullptr);
+        case glslang::EOpTextureGradOffset: return gradient(v[0], v[1], v[2], &v[3]);
+        case glslang::EOpTextureProjGradOffset: return gradient(project(v[0], taken), v[1], v[2], &v[3]);
+        default: break;
+    }
+    refuse(node, "this texture function is not supported (supported: texture, texture2D, texture3D with or without a "
+                 "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
+                 "textureGather, textureGatherOffset, textureGatherOffsets, textureQueryLod, textureQueryLevels)");
+}
+
 Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, const std::vector<TIntermTyped*>& args) {
     if (op == glslang::EOpTextureQuerySamples) refuse(node, "textureSamples is not supported (no multisample sampler is)");
     const int slot = sampler_of(args[0]);
@@ -325,90 +419,15 @@ Place StageLowering::eval_texture(glslang::TOperator op, TIntermTyped* node, con
     std::vector<Place> v;
     for (std::size_t i = 1; i < args.size(); ++i) v.push_back(eval(args[i]));
     if (dims == ir::kCubeSampler) return eval_cube(op, node, slot, args, v);
-    const bool gather = op == glslang::EOpTextureGather || op == glslang::EOpTextureGatherOffset ||
-                        op == glslang::EOpTextureGatherOffsets;
-    // A lookup in a sampler2DShadow compares P's third component (projected, in a projective one)
-    // with the texels: three coordinates, one result (m = 4).
-    const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow && !gather &&
-                        op != glslang::EOpTextureQuerySize && op != glslang::EOpTextureQueryLod;
-    if (shadow && !shadow_lookup_function(op)) {
-        refuse(node, "this texture function on a sampler2DShadow is not supported (texture, textureProj, textureLod, "
-                     "textureGrad, their Offset forms, shadow2D, shadow2DProj, shadow2DLod, textureSize, the "
-                     "gathers and textureQueryLod are)");
-    }
-    const int taken = dims + (shadow ? 1 : 0);
-    // The operation `o` at `coords` (the first `taken` of them), with its level of detail or bias
-    // (`extra`), or derivatives along x and y, and texel offsets where it takes them.
-    const auto lookup = [&](ir::Op o, const Place& coords, const Place* extra, const Place* ddx = nullptr,
-                            const Place* ddy = nullptr, const Place* offset = nullptr) {
-        const std::uint32_t a = consecutive(Place(coords.begin(), coords.begin() + taken));
-        std::uint32_t b = 0, c = 0;
-        if (extra) b = (*extra)[0].reg;
-        if (ddx) {
-            Place both(ddx->begin(), ddx->begin() + dims);
-            both.insert(both.end(), ddy->begin(), ddy->begin() + dims);
-            b = consecutive(both);
-        }
-        if (offset) {
-            const Place o_int = convert_bits(*offset, B::Int);
-            c = consecutive(Place(o_int.begin(), o_int.begin() + dims));
-        }
-        Place r = temps(B::Float, shadow ? 1 : 4);
-        ir::Instr& e = emit(o);
-        e.d = r[0].reg, e.a = a, e.b = b, e.c = c, e.n = std::uint8_t(dims), e.m = shadow ? 4 : 1;
-        e.count = std::uint16_t(slot);
-        if (!shadow || node->getType().getVectorSize() != 4) return r;
-        // shadow2D's vec4: (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's default, GL_LUMINANCE, makes it
-        Place luminance = temps(B::Float, 4);
-        for (std::size_t i = 0; i < 3; ++i) move(luminance[i], r[0], false);
-        move(luminance[3], {B::Float, float_constant(1.0f)}, false);
-        return luminance;
-    };
-    // coordinates (the reference value too) times the reciprocal of the last one, as Mesa lowers
-    // a projective lookup
-    const auto project = [&](const Place& p) {
-        const std::uint32_t q = emit1(ir::Op::FDiv, B::Float, float_constant(1.0f), p.back().reg);
-        Place coords;
-        for (int i = 0; i < taken; ++i) coords.push_back({B::Float, emit1(ir::Op::FMul, B::Float, p[std::size_t(i)].reg, q)});
-        return coords;
-    };
-    const bool vertex = kind_ == StageKind::Vertex;
     const Place zero{{B::Float, float_constant(0.0f)}};
-    // A vertex shader's implicit lookups read level 0 (it has no neighbours to take a level from).
-    const auto implicit = [&](const Place& coords, const Place* bias, const Place* offset) {
-        if (vertex) return lookup(offset ? ir::Op::TextureLodOffset : ir::Op::TextureLod, coords, &zero, nullptr, nullptr, offset);
-        if (bias) return lookup(offset ? ir::Op::TextureBiasOffset : ir::Op::TextureBias, coords, bias, nullptr, nullptr, offset);
-        return lookup(offset ? ir::Op::TextureOffset : ir::Op::Texture, coords, nullptr, nullptr, nullptr, offset);
-    };
-    const auto at_level = [&](const Place& coords, const Place& lod, const Place* offset) {
-        return lookup(offset ? ir::Op::TextureLodOffset : ir::Op::TextureLod, coords, &lod, nullptr, nullptr, offset);
-    };
-    const auto gradient = [&](const Place& coords, const Place& ddx, const Place& ddy, const Place* offset) {
-        return lookup(offset ? ir::Op::TextureGradOffset : ir::Op::TextureGrad, coords, nullptr, &ddx, &ddy, offset);
-    };
     switch (op) {
-        case glslang::EOpTexture: return implicit(v[0], v.size() == 2 ? &v[1] : nullptr, nullptr);
-        case glslang::EOpTextureProj: return implicit(project(v[0]), v.size() == 2 ? &v[1] : nullptr, nullptr);
-        case glslang::EOpTextureOffset: return implicit(v[0], v.size() == 3 ? &v[2] : nullptr, &v[1]);
-        case glslang::EOpTextureProjOffset: return implicit(project(v[0]), v.size() == 3 ? &v[2] : nullptr, &v[1]);
-        case glslang::EOpTextureLod: return at_level(v[0], v[1], nullptr);
-        case glslang::EOpTextureProjLod: return at_level(project(v[0]), v[1], nullptr);
-        case glslang::EOpTextureLodOffset: return at_level(v[0], v[1], &v[2]);
-        case glslang::EOpTextureProjLodOffset: return at_level(project(v[0]), v[1], &v[2]);
-        case glslang::EOpTextureGrad: return gradient(v[0], v[1], v[2], nullptr);
-        case glslang::EOpTextureProjGrad: return gradient(project(v[0]), v[1], v[2], nullptr);
-        case glslang::EOpTextureGradOffset: return gradient(v[0], v[1], v[2], &v[3]);
-        case glslang::EOpTextureProjGradOffset: return gradient(project(v[0]), v[1], v[2], &v[3]);
         case glslang::EOpTextureFetch: case glslang::EOpTextureFetchOffset: return eval_texel_fetch(op, slot, dims, v);
         case glslang::EOpTextureQuerySize: return eval_texture_size(slot, dims, v);
         case glslang::EOpTextureGather: case glslang::EOpTextureGatherOffset: case glslang::EOpTextureGatherOffsets:
             return eval_gather(op, node, slot, args, v);
         case glslang::EOpTextureQueryLod: return eval_query_lod(node, slot, dims, v);
-        default: break;
+        default: return eval_filtered(op, node, slot, dims, v, zero);
     }
-    refuse(node, "this texture function is not supported (supported: texture, texture2D, texture3D with or without a "
-                 "bias, their Proj, Lod, Grad and Offset forms, texelFetch, texelFetchOffset, textureSize, "
-                 "textureGather, textureGatherOffset, textureGatherOffsets, textureQueryLod, textureQueryLevels)");
 }
 
 // A gather at p on a 2D texture (level 0's four texels of a bilinear lookup): channel `comp`, or,

@@ -96,6 +96,11 @@ private:
     Place eval_builtin(glslang::TOperator op, glslang::TIntermTyped* node, const std::vector<glslang::TIntermTyped*>& args,
                        const std::vector<Place>& values);
     Place eval_texture(glslang::TOperator op, glslang::TIntermTyped* node, const std::vector<glslang::TIntermTyped*>& args);
+    Place eval_filtered(glslang::TOperator op, glslang::TIntermTyped* node, int slot, int dims,
+                        const std::vector<Place>& v, const Place& zero);
+    Place emit_lookup(ir::Op o, int slot, int dims, const Place& coords, const Place* extra, const Place* ddx = nullptr,
+                      const Place* ddy = nullptr, const Place* offset = nullptr);
+    Place project(const Place& p, int count);
     Place eval_texel_fetch(glslang::TOperator op, int slot, int dims, const std::vector<Place>& v);
     Place eval_texture_size(int slot, int dims, const std::vector<Place>& v);
     Place eval_query_lod(glslang::TIntermTyped* node, int slot, int dims, const std::vector<Place>& v);

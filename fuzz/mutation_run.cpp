@@ -21,6 +21,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -162,6 +163,61 @@ std::string kind(std::string m) {
     return out.substr(0, 110);
 }
 
+// One scene loaded and rendered in a child process: its exit status, the message it sent, and
+// what it wrote to stderr (a sanitizer's report). None where the pipe could not be made.
+struct ChildRun {
+    int status = 0;
+    std::string message, error_output;
+};
+std::optional<ChildRun> run_in_child(const fs::path& scene, const std::string& shader, const fs::path& work) {
+    int pipe_fds[2];
+    if (::pipe(pipe_fds) != 0) return std::nullopt;
+    const fs::path errors = work / "stderr.txt";
+    std::fflush(nullptr);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        ::close(pipe_fds[0]);
+        const int err = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (err < 0 || ::dup2(err, 2) < 0) ::_exit(3);
+        load_and_render(scene, shader, pipe_fds[1]);
+    }
+    ::close(pipe_fds[1]);
+    ChildRun run;
+    char buf[4096];
+    for (ssize_t r; (r = ::read(pipe_fds[0], buf, sizeof buf)) > 0;) run.message.append(buf, std::size_t(r));
+    ::close(pipe_fds[0]);
+    ::waitpid(pid, &run.status, 0);
+    run.error_output = slurp(errors);
+    return run;
+}
+
+// What went wrong in a child, or null where it rendered or refused the scene with a message.
+const char* failure_of(const ChildRun& run) {
+    const int status = run.status;
+    const bool report = run.error_output.find("Sanitizer") != std::string::npos ||
+                        run.error_output.find("runtime error:") != std::string::npos;
+    return report                                               ? "sanitizer report"
+           : WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? "hang (60 s)"
+           : WIFSIGNALED(status)                                ? "signal"
+           : WEXITSTATUS(status) > 1                            ? "exit"
+                                                                : nullptr;
+}
+
+// The run's counts, and the most frequent kinds of refusal message.
+void print_summary(unsigned seed, int count, int rendered, int refused, const std::map<std::string, int>& failures,
+                   const std::map<std::string, int>& kinds) {
+    std::vector<std::pair<int, std::string>> top;
+    for (const auto& [k, c] : kinds) top.emplace_back(c, k);
+    std::sort(top.rbegin(), top.rend());
+    auto failed = [&](const char* what) { return failures.count(what) ? failures.at(what) : 0; };
+    std::printf("mutation run, seed %u: %d scenes, %d rendered by both backends, %d refused with a message; "
+                "%d sanitizer reports, %d signals, %d hangs, %d other exits\n",
+                seed, count, rendered, refused, failed("sanitizer report"), failed("signal"), failed("hang (60 s)"),
+                failed("exit"));
+    std::printf("%zu kinds of message; the most frequent:\n", kinds.size());
+    for (std::size_t i = 0; i < top.size() && i < 15; ++i) std::printf("  %5d  %s\n", top[i].first, top[i].second.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -197,32 +253,11 @@ int main(int argc, char** argv) {
         std::ofstream(scene, std::ios::binary) << doc.dump();
         std::ofstream(work / (std::string(names[which]) + ".bin"), std::ios::binary) << bin;
         const std::string shader = shader_names[std::size_t(m.pick(int(shader_names.size())))];
-        int pipe_fds[2];
-        if (::pipe(pipe_fds) != 0) return 3;
-        const fs::path errors = work / "stderr.txt";
-        std::fflush(nullptr);
-        const pid_t pid = ::fork();
-        if (pid == 0) {
-            ::close(pipe_fds[0]);
-            const int err = ::open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-            if (err < 0 || ::dup2(err, 2) < 0) ::_exit(3);
-            load_and_render(scene, shader, pipe_fds[1]);
-        }
-        ::close(pipe_fds[1]);
-        std::string message;
-        char buf[4096];
-        for (ssize_t r; (r = ::read(pipe_fds[0], buf, sizeof buf)) > 0;) message.append(buf, std::size_t(r));
-        ::close(pipe_fds[0]);
-        int status = 0;
-        ::waitpid(pid, &status, 0);
-        const std::string error_output = slurp(errors);
-        const bool report = error_output.find("Sanitizer") != std::string::npos ||
-                            error_output.find("runtime error:") != std::string::npos;
-        const char* failure = report                                     ? "sanitizer report"
-                              : WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM ? "hang (60 s)"
-                              : WIFSIGNALED(status)                      ? "signal"
-                              : WEXITSTATUS(status) > 1                  ? "exit"
-                                                                         : nullptr;
+        const std::optional<ChildRun> run = run_in_child(scene, shader, work);
+        if (!run) return 3;
+        const int status = run->status;
+        const std::string& message = run->message;
+        const char* failure = failure_of(*run);
         if (!failure && WEXITSTATUS(status) == 0) {
             ++rendered;
         } else if (!failure) {
@@ -239,15 +274,6 @@ int main(int argc, char** argv) {
         }
     }
     fs::remove_all(work);
-    std::vector<std::pair<int, std::string>> top;
-    for (const auto& [k, c] : kinds) top.emplace_back(c, k);
-    std::sort(top.rbegin(), top.rend());
-    auto failed = [&](const char* what) { return failures.count(what) ? failures.at(what) : 0; };
-    std::printf("mutation run, seed %u: %d scenes, %d rendered by both backends, %d refused with a message; "
-                "%d sanitizer reports, %d signals, %d hangs, %d other exits\n",
-                seed, count, rendered, refused, failed("sanitizer report"), failed("signal"), failed("hang (60 s)"),
-                failed("exit"));
-    std::printf("%zu kinds of message; the most frequent:\n", kinds.size());
-    for (std::size_t i = 0; i < top.size() && i < 15; ++i) std::printf("  %5d  %s\n", top[i].first, top[i].second.c_str());
+    print_summary(seed, count, rendered, refused, failures, kinds);
     return failures.empty() ? 0 : 1;
 }

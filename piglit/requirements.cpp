@@ -134,86 +134,46 @@ std::optional<int> Implementation::limit(const std::string& name) const {
     return std::nullopt;
 }
 
-Requirements check_requirements(const ShaderTest& test, const Implementation& impl) {
-    Requirements r;
-    // The first line not met or malformed decides, as shader_runner stops at it.
-    const auto fail = [&](const Line& line, const std::string& message) {
-        if (!r.error && !r.unmet) r.error = test.file + ":" + std::to_string(line.number) + ": " + message;
-    };
-    const auto unmet = [&](const std::string& reason) {
-        if (!r.error && !r.unmet) r.unmet = reason;
-    };
-    for (const Line& line : test.require) {
+namespace {
+
+// A test's [require] lines read in order. The first line not met or malformed decides, as
+// shader_runner stops at it.
+class RequirementReader {
+public:
+    RequirementReader(const ShaderTest& test, const Implementation& impl) : test_(test), impl_(impl) {}
+
+    Requirements read() {
+        for (const Line& line : test_.require) read_line(line);
+        return r_;
+    }
+
+private:
+    void fail(const Line& line, const std::string& message) {
+        if (!r_.error && !r_.unmet) r_.error = test_.file + ":" + std::to_string(line.number) + ": " + message;
+    }
+    void unmet(const std::string& reason) {
+        if (!r_.error && !r_.unmet) r_.unmet = reason;
+    }
+
+    void read_line(const Line& line) {
         Cursor c{line.text};
-        if (c.take("INT ")) {
-            // glGetIntegerv of any enum: quadshade answers only the limits it lists.
-            const std::string name = c.word();
-            Comparison cmp;
-            int value = 0;
-            if (!c.comparison(cmp) || !c.unsigned_number(value)) {
-                fail(line, "invalid INT requirement '" + line.text + "'");
-                continue;
-            }
-            const std::optional<int> actual = impl.limit(name);
-            if (!actual) unmet(name + " (not answered)");
-            else if (!compare(value, *actual, cmp)) unmet(name + " " + comparison_text(cmp) + " " + std::to_string(value));
-            continue;
-        }
-        bool limit_line = false;
-        for (const auto& [name, actual] : impl.limits) {
-            Cursor l = c;
-            if (!l.take(name)) continue;
-            limit_line = true;
-            Comparison cmp;
-            if (!l.comparison(cmp)) {
-                fail(line, "invalid comparison in '" + line.text + "'");
-                break;
-            }
-            l.skip_blanks();
-            const int value = std::atoi(std::string(l.s).c_str());
-            if (!compare(value, actual, cmp)) unmet(name + " " + comparison_text(cmp) + " " + std::to_string(value));
-            break;
-        }
-        if (limit_line) continue;
+        if (c.take("INT ")) return integer_limit(line, c);
+        if (named_limit(line, c)) return;
         Cursor e = c;
         if (e.take("GL_")) {
             const std::string name = "GL_" + e.word();
-            if (!impl.has_extension(name)) unmet(name);
+            if (!impl_.has_extension(name)) unmet(name);
         } else if (e.take("!") && e.take("GL_")) {
             const std::string name = "GL_" + e.word();
-            if (impl.has_extension(name)) unmet("!" + name);
+            if (impl_.has_extension(name)) unmet("!" + name);
         } else if (c.take("GLSL")) {
-            Version v;
-            if (!parse_version(c, true, v)) {
-                fail(line, "invalid GLSL version requirement '" + line.text + "'");
-                continue;
-            }
-            if (v.comparison != Comparison::GreaterEqual) {
-                fail(line, "unsupported GLSL version comparison '" + line.text + "' (only >=)");
-                continue;
-            }
-            r.glsl_version = v.number;
-            r.glsl_es = v.es;
-            if (v.es || !compare(v.number, impl.glsl_version, v.comparison)) unmet(version_text("GLSL", v, true));
+            glsl_version(line, c);
         } else if (c.take("GL")) {
-            Version v;
-            if (!parse_version(c, false, v)) {
-                fail(line, "invalid GL version requirement '" + line.text + "'");
-                continue;
-            }
-            r.gl_version = v.number;
-            r.gl_es = v.es;
-            r.gl_core = v.core;
-            if (v.es || !compare(v.number, impl.gl_version, v.comparison)) unmet(version_text("GL", v, false));
+            gl_version(line, c);
         } else if (c.take("SIZE")) {
-            int w = 0, h = 0;
-            if (!c.unsigned_number(w) || !c.unsigned_number(h) || w < 1 || h < 1 || w > 16384 || h > 16384) {
-                fail(line, "invalid SIZE '" + line.text + "'");
-                continue;
-            }
-            r.width = w, r.height = h;
+            window_size(line, c);
         } else if (c.take("depthbuffer")) {
-            r.depth_buffer = true;
+            r_.depth_buffer = true;
         } else if (c.take("SSO") || c.take("SEPARABLE PROGRAM")) {
             unmet("separate shader objects");
         } else if (c.take("SPIRV")) {
@@ -221,7 +181,78 @@ Requirements check_requirements(const ShaderTest& test, const Implementation& im
         }
         // rlimit, and lines piglit does not know, change nothing.
     }
-    return r;
+
+    // INT name cmp value: glGetIntegerv of any enum; quadshade answers only the limits it lists.
+    void integer_limit(const Line& line, Cursor& c) {
+        const std::string name = c.word();
+        Comparison cmp;
+        int value = 0;
+        if (!c.comparison(cmp) || !c.unsigned_number(value)) {
+            return fail(line, "invalid INT requirement '" + line.text + "'");
+        }
+        const std::optional<int> actual = impl_.limit(name);
+        if (!actual) unmet(name + " (not answered)");
+        else if (!compare(value, *actual, cmp)) unmet(name + " " + comparison_text(cmp) + " " + std::to_string(value));
+    }
+
+    // A line that starts with one of the limits quadshade lists (GL_MAX_...): false for others.
+    bool named_limit(const Line& line, const Cursor& c) {
+        for (const auto& [name, actual] : impl_.limits) {
+            Cursor l = c;
+            if (!l.take(name)) continue;
+            Comparison cmp;
+            if (!l.comparison(cmp)) {
+                fail(line, "invalid comparison in '" + line.text + "'");
+                return true;
+            }
+            l.skip_blanks();
+            const int value = std::atoi(std::string(l.s).c_str());
+            if (!compare(value, actual, cmp)) unmet(name + " " + comparison_text(cmp) + " " + std::to_string(value));
+            return true;
+        }
+        return false;
+    }
+
+    // GLSL [ES] >= 4.50: only >= is accepted.
+    void glsl_version(const Line& line, Cursor& c) {
+        Version v;
+        if (!parse_version(c, true, v)) return fail(line, "invalid GLSL version requirement '" + line.text + "'");
+        if (v.comparison != Comparison::GreaterEqual) {
+            return fail(line, "unsupported GLSL version comparison '" + line.text + "' (only >=)");
+        }
+        r_.glsl_version = v.number;
+        r_.glsl_es = v.es;
+        if (v.es || !compare(v.number, impl_.glsl_version, v.comparison)) unmet(version_text("GLSL", v, true));
+    }
+
+    // GL [CORE|COMPAT|ES] >= 4.5, or another comparison.
+    void gl_version(const Line& line, Cursor& c) {
+        Version v;
+        if (!parse_version(c, false, v)) return fail(line, "invalid GL version requirement '" + line.text + "'");
+        r_.gl_version = v.number;
+        r_.gl_es = v.es;
+        r_.gl_core = v.core;
+        if (v.es || !compare(v.number, impl_.gl_version, v.comparison)) unmet(version_text("GL", v, false));
+    }
+
+    // SIZE width height: the window, 1..16384 each way.
+    void window_size(const Line& line, Cursor& c) {
+        int w = 0, h = 0;
+        if (!c.unsigned_number(w) || !c.unsigned_number(h) || w < 1 || h < 1 || w > 16384 || h > 16384) {
+            return fail(line, "invalid SIZE '" + line.text + "'");
+        }
+        r_.width = w, r_.height = h;
+    }
+
+    const ShaderTest& test_;
+    const Implementation& impl_;
+    Requirements r_;
+};
+
+}  // namespace
+
+Requirements check_requirements(const ShaderTest& test, const Implementation& impl) {
+    return RequirementReader(test, impl).read();
 }
 
 }  // namespace qs::piglit

@@ -158,6 +158,35 @@ struct CaseGlsl {
     std::optional<fs::path> vertex;
 };
 
+// A case's uniforms: NAME: a number or [numbers], each a shader's own uniform.
+void read_uniforms(const Reader& in, const json& u, const std::string& field, std::vector<UniformSetting>& out) {
+    if (!u.is_object()) in.fail(field + ".uniforms", "expected an object of NAME: number or [numbers]");
+    for (const auto& [name, value] : u.items()) {
+        const std::string f = field + ".uniforms." + name;
+        if (!is_uniform_name(name) || name == kResolutionUniform)
+            in.fail(f, "not the name of a shader's own uniform");
+        UniformSetting s{name, {}, in.file + ": " + f};
+        if (value.is_array()) {
+            if (value.empty() || value.size() > 16) in.fail(f, "expected 1 to 16 numbers (a mat4 has 16)");
+            for (const json& v : value) s.values.push_back(in.number(v, f, -3.4e38, 3.4e38));
+        } else {
+            s.values.push_back(in.number(value, f, -3.4e38, 3.4e38));
+        }
+        out.push_back(std::move(s));
+    }
+}
+
+// A case's tolerance: the pixel error that fails or warns, and the share of pixels over it.
+void read_tolerance(const Reader& in, const json& t, const std::string& field, Tolerance& tol) {
+    const std::string f = field + ".tolerance";
+    in.only(t, f, {"fail", "fail_percent", "warn", "warn_percent", "hard_fail"});
+    if (t.contains("fail")) tol.fail = in.number(t["fail"], f + ".fail", 0, 255);
+    if (t.contains("fail_percent")) tol.fail_percent = in.number(t["fail_percent"], f + ".fail_percent", 0, 100);
+    if (t.contains("warn")) tol.warn = in.number(t["warn"], f + ".warn", 0, 255);
+    if (t.contains("warn_percent")) tol.warn_percent = in.number(t["warn_percent"], f + ".warn_percent", 0, 100);
+    if (t.contains("hard_fail")) tol.hard_fail = in.number(t["hard_fail"], f + ".hard_fail", 0, 255);
+}
+
 SuiteCase read_case(const Reader& in, const json& c, const std::string& field, const std::string& expected_dir,
                     const SuiteLoadOptions& options, std::optional<CaseGlsl>& glsl) {
     in.only(c, field, {"name", "scene", "shader", "glsl", "vert", "size", "time", "derivatives", "backend", "precision", "uniforms", "expected",
@@ -203,34 +232,8 @@ SuiteCase read_case(const Reader& in, const json& c, const std::string& field, c
     if (c.contains("precision")) {
         r.shading.precision = in.choice<Precision>(c["precision"], field + ".precision", {{"float", Precision::Float}, {"double", Precision::Double}});
     }
-    if (c.contains("uniforms")) {
-        const json& u = c["uniforms"];
-        if (!u.is_object()) in.fail(field + ".uniforms", "expected an object of NAME: number or [numbers]");
-        for (const auto& [name, value] : u.items()) {
-            const std::string f = field + ".uniforms." + name;
-            if (!is_uniform_name(name) || name == kResolutionUniform)
-                in.fail(f, "not the name of a shader's own uniform");
-            UniformSetting s{name, {}, in.file + ": " + f};
-            if (value.is_array()) {
-                if (value.empty() || value.size() > 16) in.fail(f, "expected 1 to 16 numbers (a mat4 has 16)");
-                for (const json& v : value) s.values.push_back(in.number(v, f, -3.4e38, 3.4e38));
-            } else {
-                s.values.push_back(in.number(value, f, -3.4e38, 3.4e38));
-            }
-            r.uniforms.push_back(std::move(s));
-        }
-    }
-    if (c.contains("tolerance")) {
-        const json& t = c["tolerance"];
-        const std::string f = field + ".tolerance";
-        in.only(t, f, {"fail", "fail_percent", "warn", "warn_percent", "hard_fail"});
-        Tolerance& tol = sc.tolerance;
-        if (t.contains("fail")) tol.fail = in.number(t["fail"], f + ".fail", 0, 255);
-        if (t.contains("fail_percent")) tol.fail_percent = in.number(t["fail_percent"], f + ".fail_percent", 0, 100);
-        if (t.contains("warn")) tol.warn = in.number(t["warn"], f + ".warn", 0, 255);
-        if (t.contains("warn_percent")) tol.warn_percent = in.number(t["warn_percent"], f + ".warn_percent", 0, 100);
-        if (t.contains("hard_fail")) tol.hard_fail = in.number(t["hard_fail"], f + ".hard_fail", 0, 255);
-    }
+    if (c.contains("uniforms")) read_uniforms(in, c["uniforms"], field, r.uniforms);
+    if (c.contains("tolerance")) read_tolerance(in, c["tolerance"], field, sc.tolerance);
     return sc;
 }
 

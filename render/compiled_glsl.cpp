@@ -156,6 +156,63 @@ void warn_once(const std::string& what) {
     });
 }
 
+// What a cached plugin is made from, hashed: the compiler and its flags, quadshade's headers, the
+// translation's files.
+std::string translation_hash(const frontend::Translation& t, const fs::path& include) {
+    Hash h;
+    h.add(plugin_compiler::kVersion);
+    h.add(plugin_compiler::kCompiler);
+    for (const char* f : plugin_compiler::kFlags) h.add(f);
+    h.add(include.string());
+    add_headers(h, include);
+    for (const std::string* s : {&t.header, &t.source, &t.vertex_glsl, &t.fragment_glsl}) h.add(*s);
+    return h.hex();
+}
+
+// The translation compiled into `folder` of the plugin cache, through a staging folder of its
+// own; false, with a warning, where that failed.
+bool compile_plugin(const frontend::Translation& t, const fs::path& include, const std::string& cache,
+                    const fs::path& folder, const std::string& name) {
+    std::error_code ec;
+    fs::create_directories(cache, ec);
+    std::string staging = (fs::path(cache) / ".compiling-XXXXXX").string();
+    if (ec || !mkdtemp(staging.data())) {
+        warn_once("the plugin cache " + cache + " is not writable");
+        return false;
+    }
+    const fs::path work(staging);
+    try {
+        write_file(work / (t.name + ".h"), t.header);
+        write_file(work / (t.name + ".cpp"), t.source);
+        write_file(work / (t.name + ".vert"), t.vertex_glsl);
+        write_file(work / (t.name + ".frag"), t.fragment_glsl);
+        std::vector<std::string> args{plugin_compiler::kCompiler};
+        for (const char* f : plugin_compiler::kFlags) args.push_back(f);
+        args.push_back("-I" + include.string());
+        args.push_back("-I" + work.string());
+        args.push_back("-o");
+        args.push_back((work / ("lib" + t.name + ".so")).string());
+        args.push_back((work / (t.name + ".cpp")).string());
+        std::fprintf(stderr, "quadshade: compiling %s's C++ translation into %s ...\n", name.c_str(), folder.c_str());
+        const auto start = std::chrono::steady_clock::now();
+        const int rc = run_compiler(args, work / "compiler.log");
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (rc != 0) {
+            warn_once("compiling " + name + "'s translation failed (" + (work / "compiler.log").string() + ")");
+            return false;  // the staging folder is kept for its log
+        }
+        std::fprintf(stderr, "quadshade: compiled %s in %.1f s\n", name.c_str(), seconds);
+        // Whole or not at all: the folder appears with its plugin complete. Where another run
+        // put it there first, its plugin is the same and this one goes.
+        if (::rename(work.c_str(), folder.c_str()) != 0) fs::remove_all(work, ec);
+    } catch (const std::exception& e) {
+        fs::remove_all(work, ec);
+        warn_once(std::string("the plugin cache is unusable: ") + e.what());
+        return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 std::optional<std::string> plugin_cache_dir() {
@@ -193,14 +250,7 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
         return nullptr;
     }
     const fs::path include = include_dir();
-    Hash h;
-    h.add(plugin_compiler::kVersion);
-    h.add(plugin_compiler::kCompiler);
-    for (const char* f : plugin_compiler::kFlags) h.add(f);
-    h.add(include.string());
-    add_headers(h, include);
-    for (const std::string* s : {&t.header, &t.source, &t.vertex_glsl, &t.fragment_glsl}) h.add(*s);
-    const std::string stem = t.name + "-" + h.hex(), library_name = "lib" + t.name + ".so";
+    const std::string stem = t.name + "-" + translation_hash(t, include), library_name = "lib" + t.name + ".so";
     char bits[16];
     std::snprintf(bits, sizeof bits, "%08x", unsigned(modes.bits));
     fs::path folder = fs::path(*cache) / (stem + "-" + bits);
@@ -210,42 +260,7 @@ const Program* compiled_glsl_program(const frontend::GlslSource& fragment, const
     if (!fs::exists(library, ec)) {
         if (way != GlslWay::Compile) return nullptr;
         t.source = registration_source(t, modes);
-        fs::create_directories(*cache, ec);
-        std::string staging = (fs::path(*cache) / ".compiling-XXXXXX").string();
-        if (ec || !mkdtemp(staging.data())) {
-            warn_once("the plugin cache " + *cache + " is not writable");
-            return nullptr;
-        }
-        const fs::path work(staging);
-        try {
-            write_file(work / (t.name + ".h"), t.header);
-            write_file(work / (t.name + ".cpp"), t.source);
-            write_file(work / (t.name + ".vert"), t.vertex_glsl);
-            write_file(work / (t.name + ".frag"), t.fragment_glsl);
-            std::vector<std::string> args{plugin_compiler::kCompiler};
-            for (const char* f : plugin_compiler::kFlags) args.push_back(f);
-            args.push_back("-I" + include.string());
-            args.push_back("-I" + work.string());
-            args.push_back("-o");
-            args.push_back((work / library.filename()).string());
-            args.push_back((work / (t.name + ".cpp")).string());
-            std::fprintf(stderr, "quadshade: compiling %s's C++ translation into %s ...\n", name.c_str(), folder.c_str());
-            const auto start = std::chrono::steady_clock::now();
-            const int rc = run_compiler(args, work / "compiler.log");
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (rc != 0) {
-                warn_once("compiling " + name + "'s translation failed (" + (work / "compiler.log").string() + ")");
-                return nullptr;  // the staging folder is kept for its log
-            }
-            std::fprintf(stderr, "quadshade: compiled %s in %.1f s\n", name.c_str(), seconds);
-            // Whole or not at all: the folder appears with its plugin complete. Where another run
-            // put it there first, its plugin is the same and this one goes.
-            if (::rename(work.c_str(), folder.c_str()) != 0) fs::remove_all(work, ec);
-        } catch (const std::exception& e) {
-            fs::remove_all(work, ec);
-            warn_once(std::string("the plugin cache is unusable: ") + e.what());
-            return nullptr;
-        }
+        if (!compile_plugin(t, include, *cache, folder, name)) return nullptr;
     }
     try {
         load_plugin(library);

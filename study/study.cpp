@@ -130,92 +130,102 @@ public:
             scratch.emplace(r_.output / "reference");
             scratch_ = scratch->path();
         }
-        std::string& csv = tables.study;
-        std::string& views_csv = tables.views;
-        std::string& derivatives_csv = tables.derivatives;
-        std::string& stability_csv = tables.stability;
         std::size_t total = views.size() * (modes.size() + 1), done = 0;
-        for (const View& view : views) {
-            const View* v = &view;
-            const std::string id = file_name(label) + "-" + v->name;
-            const fs::path dir = r_.output / "images" / id;
-            make_output_folder(dir, FolderLink::Refused);
-            Scene scene = original;
-            time_ = v->time ? v->time : r_.time;
-            apply_view(*v, scene);
-            const bool offset = r_.offset != glm::dvec3(0.0);
-            if (offset) offset_coordinates(scene, r_.offset);
-            size_for(scene, r_.size);
-            // The reference reads the view from a file, written unless the scene is as loaded.
-            fs::path scene_file = r_.scene;
-            if (r_.reference && (v->changes_scene() || offset || !r_.keep_shader.empty())) {
-                make_output_folder(r_.output / "views", FolderLink::Refused);
-                scene_file = r_.output / "views" / (id + ".gltf");
-                save_view(scene, scene_file);
-            }
-            const std::string& truth_shader = r_.shaders.unfiltered.empty() ? r_.shaders.shader : r_.shaders.unfiltered;
-            const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" +
-                                           std::to_string(r_.truth) + " samples per pixel in double, box-filtered";
-            views_csv += csv_line({label, v->name, v->description, std::to_string(scene.width),
-                                   std::to_string(scene.height), truth_text,
-                                   number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
-                                   time_ ? number(*time_) : number(scene.time)});
-            progress(done, total, id + ": float against double, undefined cases");
-            const Stability st = stability(scene, r_.shaders.shader, time_, r_.threads, dir, "images/" + id);
-            const auto& u = st.undefined;
-            stability_csv += csv_line(
-                {label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
-                 std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
-                 st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
-                 st.checked ? std::to_string(u.per_case[1]) : "", st.checked ? std::to_string(u.per_case[2]) : "",
-                 st.checked ? std::to_string(u.per_case[3]) : "", st.note, st.float_image, st.double_image,
-                 st.heat_image, st.mask_image});
-            if (!maps.empty()) {
-                progress(done, total, id + ": derivative maps");
-                for (const DerivativeRow& d : derivative_maps(scene, maps, time_, r_.threads, dir, "images/" + id)) {
-                    derivatives_csv += csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
-                                                 number(d.rms_dy), number(d.max_dy), number(d.scale),
-                                                 std::to_string(d.covered), d.map_image, d.heat_image,
-                                                 d.analytic_image});
-                }
-            }
-            progress(++done, total, id + ": truth");
-            const Image truth = ground_truth(scene, truth_shader);
-            write_image(dir / "truth.png", truth);
-            std::map<std::pair<std::string, int>, std::string> llvmpipe_files;  // (variant, supersample)
-            std::map<std::pair<std::string, int>, Image> llvmpipe;
-            for (const Mode& m : modes) {
-                progress(++done, total, id + ": " + m.name);
-                const auto [image, time] = render(scene, m);
-                const std::string name = file_name(m.name) + ".png", heat = file_name(m.name) + "-heat.png";
-                write_image(dir / name, image);
-                write_image(dir / heat, difference_heat_map(image, truth, 0.25f));
-                const Error vs_truth = error_of(image, truth);
-                Error vs_gl{NAN, NAN};
-                std::string gl_file;
-                if (r_.reference) {
-                    const auto key = std::make_pair(m.shader, m.supersample);
-                    if (!llvmpipe.count(key)) {
-                        gl_file = "llvmpipe-" + file_name(m.shader) + "-ss" + std::to_string(m.supersample) + ".png";
-                        llvmpipe[key] = reference(scene_file, scene, m);
-                        llvmpipe_files[key] = gl_file;
-                        write_image(dir / gl_file, llvmpipe[key]);
-                    }
-                    gl_file = llvmpipe_files[key];
-                    vs_gl = error_of(image, llvmpipe[key]);
-                }
-                const std::string images = "images/" + id + "/";
-                csv += csv_line({label, v->name, m.name, m.group, m.shader, number(time.median), number(time.min),
-                                 number(time.max), number(vs_gl.rms), number(vs_gl.max), number(vs_truth.rms),
-                                 number(vs_truth.max), std::to_string(image.width), std::to_string(image.height),
-                                 images + name, gl_file.empty() ? "" : images + gl_file, images + "truth.png",
-                                 images + heat, truth_shader});
-            }
-        }
+        for (const View& view : views) study_view(view, original, label, modes, maps, tables, done, total);
         std::fprintf(stderr, "\n");
     }
 
 private:
+    // One view: its scene (and the reference's copy of it where it differs from the file), its
+    // row of views.csv, float against double and the derivative maps, then the truth and every
+    // mode against it and against llvmpipe. `done` of `total` steps, for the progress line.
+    void study_view(const View& view, const Scene& original, const std::string& label, const std::vector<Mode>& modes,
+                    const std::vector<DerivativeMap>& maps, Tables& tables, std::size_t& done, std::size_t total) {
+        const View* v = &view;
+        const std::string id = file_name(label) + "-" + v->name;
+        const fs::path dir = r_.output / "images" / id;
+        make_output_folder(dir, FolderLink::Refused);
+        Scene scene = original;
+        time_ = v->time ? v->time : r_.time;
+        apply_view(*v, scene);
+        const bool offset = r_.offset != glm::dvec3(0.0);
+        if (offset) offset_coordinates(scene, r_.offset);
+        size_for(scene, r_.size);
+        // The reference reads the view from a file, written unless the scene is as loaded.
+        fs::path scene_file = r_.scene;
+        if (r_.reference && (v->changes_scene() || offset || !r_.keep_shader.empty())) {
+            make_output_folder(r_.output / "views", FolderLink::Refused);
+            scene_file = r_.output / "views" / (id + ".gltf");
+            save_view(scene, scene_file);
+        }
+        const std::string& truth_shader = r_.shaders.unfiltered.empty() ? r_.shaders.shader : r_.shaders.unfiltered;
+        const std::string truth_text = truth_shader + " at " + std::to_string(r_.truth) + "x" +
+                                       std::to_string(r_.truth) + " samples per pixel in double, box-filtered";
+        tables.views += csv_line({label, v->name, v->description, std::to_string(scene.width),
+                                  std::to_string(scene.height), truth_text,
+                                  number(r_.offset.x) + " " + number(r_.offset.y) + " " + number(r_.offset.z),
+                                  time_ ? number(*time_) : number(scene.time)});
+        progress(done, total, id + ": float against double, undefined cases");
+        const Stability st = stability(scene, r_.shaders.shader, time_, r_.threads, dir, "images/" + id);
+        const auto& u = st.undefined;
+        tables.stability += csv_line(
+            {label, v->name, number(st.rms), number(st.max), std::to_string(st.over_1),
+             std::to_string(std::size_t(scene.width) * std::size_t(scene.height)),
+             st.checked ? std::to_string(u.pixels) : "", st.checked ? std::to_string(u.per_case[0]) : "",
+             st.checked ? std::to_string(u.per_case[1]) : "", st.checked ? std::to_string(u.per_case[2]) : "",
+             st.checked ? std::to_string(u.per_case[3]) : "", st.note, st.float_image, st.double_image,
+             st.heat_image, st.mask_image});
+        if (!maps.empty()) {
+            progress(done, total, id + ": derivative maps");
+            for (const DerivativeRow& d : derivative_maps(scene, maps, time_, r_.threads, dir, "images/" + id)) {
+                tables.derivatives += csv_line({label, v->name, d.input, d.rule, number(d.rms_dx), number(d.max_dx),
+                                                number(d.rms_dy), number(d.max_dy), number(d.scale),
+                                                std::to_string(d.covered), d.map_image, d.heat_image,
+                                                d.analytic_image});
+            }
+        }
+        progress(++done, total, id + ": truth");
+        const Image truth = ground_truth(scene, truth_shader);
+        write_image(dir / "truth.png", truth);
+        mode_rows(scene, scene_file, modes, truth, truth_shader, label, v->name, id, dir, tables.study, done, total);
+    }
+
+    // Each mode's image of the view, its error against the truth and against llvmpipe's image of
+    // the same variant and supersampling (rendered once), a row of study.csv each.
+    void mode_rows(Scene& scene, const fs::path& scene_file, const std::vector<Mode>& modes, const Image& truth,
+                   const std::string& truth_shader, const std::string& label, const std::string& view_name,
+                   const std::string& id, const fs::path& dir, std::string& csv, std::size_t& done, std::size_t total) {
+        std::map<std::pair<std::string, int>, std::string> llvmpipe_files;  // (variant, supersample)
+        std::map<std::pair<std::string, int>, Image> llvmpipe;
+        for (const Mode& m : modes) {
+            progress(++done, total, id + ": " + m.name);
+            const auto [image, time] = render(scene, m);
+            const std::string name = file_name(m.name) + ".png", heat = file_name(m.name) + "-heat.png";
+            write_image(dir / name, image);
+            write_image(dir / heat, difference_heat_map(image, truth, 0.25f));
+            const Error vs_truth = error_of(image, truth);
+            Error vs_gl{NAN, NAN};
+            std::string gl_file;
+            if (r_.reference) {
+                const auto key = std::make_pair(m.shader, m.supersample);
+                if (!llvmpipe.count(key)) {
+                    gl_file = "llvmpipe-" + file_name(m.shader) + "-ss" + std::to_string(m.supersample) + ".png";
+                    llvmpipe[key] = reference(scene_file, scene, m);
+                    llvmpipe_files[key] = gl_file;
+                    write_image(dir / gl_file, llvmpipe[key]);
+                }
+                gl_file = llvmpipe_files[key];
+                vs_gl = error_of(image, llvmpipe[key]);
+            }
+            const std::string images = "images/" + id + "/";
+            csv += csv_line({label, view_name, m.name, m.group, m.shader, number(time.median), number(time.min),
+                             number(time.max), number(vs_gl.rms), number(vs_gl.max), number(vs_truth.rms),
+                             number(vs_truth.max), std::to_string(image.width), std::to_string(image.height),
+                             images + name, gl_file.empty() ? "" : images + gl_file, images + "truth.png",
+                             images + heat, truth_shader});
+        }
+    }
+
     // Each variant's GLSL, for the reference: output/glsl/NAME.vert and NAME.frag.
     void write_glsl() const {
         const fs::path dir = r_.output / "glsl";

@@ -9,16 +9,18 @@
 // detail is sampled from quads.
 //
 // The arithmetic, and the OSMesa experiments that pinned it, are in docs/design.md ("Textures");
-// the lanes' work is done by texture_detail::sample, or sample_plain for the plain lookup most
-// shaders make (texture.cpp), eight lanes to an AVX2 register (sixteen to an AVX-512 register for
-// the plain lookup): texel fetches are gathers, four per register for a bilinear level, eight
-// for a trilinear lookup, or loads of neighbouring texels and permutes where the lanes read them.
+// the lanes' work is done by texture_detail::sample (texture.cpp), or sample_plain for the plain
+// lookup most shaders make (texture_plain.cpp), eight lanes to an AVX2 register (sixteen to an
+// AVX-512 register for the plain lookup): texel fetches are gathers, four per register for a
+// bilinear level, eight for a trilinear lookup, or loads of neighbouring texels and permutes
+// where the lanes read them.
 //
-// The lookups are written over the number type like any shader code. Per-pixel types (float,
-// double, Pixels) have no neighbours: they can only take an implicit level of detail from a
-// texture that needs none (textureLod they can always do). Quads compute it per quad, as
-// llvmpipe does; Dual2 from its carried partials, and its result carries the exact derivative of
-// the filter's interpolant (texels are constants).
+// The lookups are written over the number type like any shader code, what differs between the
+// types said once (sampler_traits.h). Per-pixel types (float, double, Pixels) have no
+// neighbours: they can only take an implicit level of detail from a texture that needs none
+// (textureLod they can always do). Quads compute it per quad, as llvmpipe does; Dual2 from its
+// carried partials, and its result carries the exact derivative of the filter's interpolant
+// (texels are constants).
 
 #include <array>
 #include <cmath>
@@ -27,6 +29,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "shading/glsl/sampler_traits.h"
 #include "shading/glsl/vec.h"
 #include "shading/number/number.h"
 
@@ -165,94 +168,7 @@ struct Fetch {
 };
 void fetch(const Texture& tex, const Fetch& fetch);
 
-[[noreturn]] void throw_lod_without_quads();
-
-// Values of F as floats, lane by lane, and back.
-template <class F>
-void to_floats(const F& x, float* out) {
-    if constexpr (is_dual2<F>::value) {
-        to_floats(x.val, out);
-    } else if constexpr (is_checked_v<F>) {
-        x.v.store(out);
-    } else if constexpr (std::is_floating_point_v<F>) {
-        out[0] = float(x);
-    } else if constexpr (std::is_same_v<typename F::value_type, float>) {
-        x.store(out);
-    } else {
-        for (int i = 0; i < F::size; ++i) out[i] = float(x[i]);
-    }
-}
-template <class F>
-F from_floats(const float* in) {
-    if constexpr (std::is_floating_point_v<F>) {
-        return F(in[0]);
-    } else if constexpr (is_checked_v<F>) {
-        return F(decltype(F::v)::load(in), {});
-    } else if constexpr (std::is_same_v<typename F::value_type, float>) {
-        return F::load(in);
-    } else {
-        using T = typename F::value_type;
-        T wide[F::size];
-        for (int i = 0; i < F::size; ++i) wide[i] = T(in[i]);
-        return F::load(wide);
-    }
-}
-
-// llvmpipe's rho^2 of each quad (lp_build_rho, exact and squared), on all four of its lanes:
-// coarse differences from the quad's upper-left pixel, TR - TL and BL - TL, where "upper" is
-// the upper row in GL window coordinates (llvmpipe's first row in OSMesa's top-down buffer):
-// lanes 2 (TL), 3 (TR) and 0 (BL) of number/lanes.h's layout. Float arithmetic in llvmpipe's
-// order, no fused multiply-adds: ((W ds)^2 + (H dt)^2) + (D dr)^2 along x and along y; max as
-// maxps.
-template <QuadNumber V, std::size_t Dims>
-V quad_rho2(const std::array<V, Dims>& coord, const std::array<float, 3>& size) {
-    constexpr auto tl = [](std::size_t i) { return (i & ~std::size_t(3)) | 2; };
-    constexpr auto tr = [](std::size_t i) { return (i & ~std::size_t(3)) | 3; };
-    constexpr auto bl = [](std::size_t i) { return i & ~std::size_t(3); };
-    V x, y;
-    for (std::size_t k = 0; k < Dims; ++k) {
-        const V c_tl = coord[k].permute(tl);
-        V a = V(size[k]) * (coord[k].permute(tr) - c_tl), b = V(size[k]) * (coord[k].permute(bl) - c_tl);
-        a = a * a, b = b * b;
-        x = k == 0 ? a : x + a;
-        y = k == 0 ? b : y + b;
-    }
-    return select(x > y, x, y);
-}
-
-// The float lanes of F's layout, for the level of detail (llvmpipe computes it in float).
-template <class F>
-struct float_lanes { using type = F; };
-template <class T, int N, class L>
-struct float_lanes<Lanes<T, N, L>> { using type = Lanes<float, N, L>; };
-
 enum class Lod { Implicit, Bias, Explicit, Gradient };
-
-// GLSL ints of the lanes of an integer number type, lane by lane, and back.
-template <class I>
-void to_ints(const I& x, std::int32_t* out) {
-    if constexpr (is_checked_v<I>) {
-        x.v.store(out);
-    } else {
-        x.store(out);
-    }
-}
-template <class I>
-I from_ints(const std::int32_t* in, LaneCases cases = {}) {
-    if constexpr (is_checked_v<I>) {
-        return I(decltype(I::v)::load(in), cases);
-    } else {
-        return I::load(in);
-    }
-}
-template <class I>
-LaneCases cases_of([[maybe_unused]] const I& x) {
-    if constexpr (is_checked_v<I>) {
-        return x.cases;
-    } else {
-        return {};
-    }
-}
 
 // What a lookup takes beside its coordinates, as `kind` says: a bias or an explicit level
 // (`lod_or_bias`), or the coordinates' explicit derivatives along x and y (`ddx`, `ddy`:
@@ -289,6 +205,7 @@ void gradient_rho2(const float (&ddx)[3][N], const float (&ddy)[3][N], const std
 // Every lookup: Dims coordinates, and what `args` adds to them.
 template <Number F, std::size_t Dims>
 vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const LookupArgs<F, Dims>& args) {
+    using Traits = sampler_traits<F>;
     constexpr int N = lanes_of<F>();
     alignas(64) float c[3][N], rho2[N], extra[N], ref[N], rgba[4][N], d_dc[3][4][N];
     alignas(64) std::int32_t offset[3][N];
@@ -301,46 +218,19 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const Looku
     }
     const bool implicit = kind != Lod::Explicit && tex.needs_lod();
     const std::array<float, 3> size{float(tex.width), float(tex.height), float(tex.depth)};
-    [[maybe_unused]] LaneCases lod_cases;  // the quad's lanes a Checked level of detail read
+    LaneCases lod_cases;  // the quad's lanes a Checked level of detail read
     if (implicit && kind == Lod::Gradient) {
         alignas(64) float gx[3][N], gy[3][N];
         for (std::size_t k = 0; k < Dims; ++k) to_floats((*args.ddx)[k], gx[k]), to_floats((*args.ddy)[k], gy[k]);
         gradient_rho2<Dims>(gx, gy, size, rho2);
     } else if (implicit) {
-        if constexpr (is_dual2<F>::value) {
-            // The analytic scale factor from the carried partials, in llvmpipe's formula.
-            using T = typename F::value_type;
-            T x, y;
-            for (std::size_t k = 0; k < Dims; ++k) {
-                const T w(size[k]);
-                T a = w * coord[k].dx, b = w * coord[k].dy;
-                a = a * a, b = b * b;
-                x = k == 0 ? a : x + a;
-                y = k == 0 ? b : y + b;
-            }
-            to_floats(T(select(x > y, x, y)), rho2);
-        } else if constexpr (QuadNumber<F>) {
-            using V = typename float_lanes<F>::type;
-            if constexpr (std::is_same_v<V, F>) {
-                const F r = quad_rho2(coord, size);
-                to_floats(r, rho2);
-                if constexpr (is_checked_v<F>) lod_cases = r.cases;
-            } else {
-                std::array<V, Dims> narrow;
-                for (std::size_t k = 0; k < Dims; ++k) narrow[k] = from_floats<V>(c[k]);
-                to_floats(quad_rho2(narrow, size), rho2);
-            }
-        } else {
-            throw_lod_without_quads();
-        }
+        Traits::implicit_rho2(coord, size, rho2, lod_cases);
     }
-    // A comparison's result is a step of it: under Dual2 its derivatives are 0.
-    const bool derivatives = is_dual2<F>::value && !args.ref;
-    bool plain = false;
-    if constexpr (Dims == 2 && !is_dual2<F>::value) {
-        plain = kind != Lod::Explicit && !implicit && !args.offset && !args.ref &&
-                sample_plain(tex, {N, c[0], c[1], {rgba[0], rgba[1], rgba[2], rgba[3]}});
-    }
+    // Dual2 carries the interpolant's derivatives, which the plain lookup does not give; a
+    // comparison's result is a step of it, whose derivatives are 0.
+    const bool derivatives = Traits::carries_partials && !args.ref;
+    const bool plain = Dims == 2 && !Traits::carries_partials && kind != Lod::Explicit && !implicit && !args.offset &&
+                       !args.ref && sample_plain(tex, {N, c[0], c[1], {rgba[0], rgba[1], rgba[2], rgba[3]}});
     for (int i = 0; !plain && i < N; i += kMaxLanes) {
         Lookup l;
         l.lanes = N - i < kMaxLanes ? N - i : kMaxLanes;
@@ -364,37 +254,26 @@ vec4<F> lookup(const Texture& tex, const std::array<F, Dims>& coord, const Looku
         }
         sample(tex, l);
     }
+    LaneCases cases = lod_cases;
+    std::array<typename Traits::Partials, Dims> dcoord;
+    for (std::size_t k = 0; k < Dims; ++k) cases = cases | cases_of(coord[k]), dcoord[k] = Traits::partials(coord[k]);
+    if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | cases_of(*args.lod_or_bias);
+    if (kind == Lod::Gradient) {
+        for (std::size_t k = 0; k < Dims; ++k) cases = cases | cases_of((*args.ddx)[k]) | cases_of((*args.ddy)[k]);
+    }
+    if (args.offset) {
+        for (std::size_t k = 0; k < Dims; ++k) cases = cases | cases_of((*args.offset)[k]);
+    }
+    if (args.ref) cases = cases | cases_of(*args.ref);
     vec4<F> out;
     for (int ch = 0; ch < 4; ++ch) {
-        if constexpr (is_dual2<F>::value) {
-            // d(colour) = sum over the coordinates of d(colour)/dc dc
-            using T = typename F::value_type;
-            if (!derivatives) {
-                out[ch] = F(from_floats<T>(rgba[ch]), T(0.0f), T(0.0f));
-                continue;
-            }
-            T dx, dy;
-            for (std::size_t k = 0; k < Dims; ++k) {
-                const T g = from_floats<T>(d_dc[k][ch]);
-                dx = k == 0 ? g * coord[k].dx : dx + g * coord[k].dx;
-                dy = k == 0 ? g * coord[k].dy : dy + g * coord[k].dy;
-            }
-            out[ch] = F(from_floats<T>(rgba[ch]), dx, dy);
-        } else if constexpr (is_checked_v<F>) {
-            LaneCases cases = lod_cases;
-            for (std::size_t k = 0; k < Dims; ++k) cases = cases | coord[k].cases;
-            if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | args.lod_or_bias->cases;
-            if (kind == Lod::Gradient) {
-                for (std::size_t k = 0; k < Dims; ++k) cases = cases | (*args.ddx)[k].cases | (*args.ddy)[k].cases;
-            }
-            if (args.offset) {
-                for (std::size_t k = 0; k < Dims; ++k) cases = cases | (*args.offset)[k].cases;
-            }
-            if (args.ref) cases = cases | args.ref->cases;
-            out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
-        } else {
-            out[ch] = from_floats<F>(rgba[ch]);
+        if (args.ref) {
+            out[ch] = Traits::constant(rgba[ch], cases);
+            continue;
         }
+        std::array<const float*, Dims> d_dcoord;
+        for (std::size_t k = 0; k < Dims; ++k) d_dcoord[k] = d_dc[k][ch];
+        out[ch] = Traits::sampled(rgba[ch], d_dcoord, dcoord, cases);
     }
     return out;
 }
@@ -433,26 +312,20 @@ vec4<F> texel_fetch(const Texture& tex, const std::array<int_t<F>, Dims>& p, con
     f.x = c[0], f.y = c[1], f.z = Dims == 3 ? c[2] : nullptr, f.level = level;
     for (std::size_t ch = 0; ch < 4; ++ch) f.rgba[ch] = rgba[ch];
     fetch(tex, f);
-    vec4<F> out;
-    for (int ch = 0; ch < 4; ++ch) {
-        if constexpr (is_dual2<F>::value) {
-            using T = typename F::value_type;
-            out[ch] = F(from_floats<T>(rgba[ch]), T(0.0f), T(0.0f));
-        } else if constexpr (is_checked_v<F>) {
-            std::uint32_t outside = 0;
-            for (int i = 0; i < N; ++i) {
-                const std::array<int, 3> s = tex.size(level[i]);
-                bool in = s[0] > 0;
-                for (std::size_t k = 0; k < Dims; ++k) in = in && c[k][i] >= 0 && c[k][i] < s[k];
-                if (!in) outside |= 1u << i;
-            }
-            LaneCases cases = cases_of(lod) | LaneCases::on(outside, Undefined::Argument);
-            for (std::size_t k = 0; k < Dims; ++k) cases = cases | cases_of(p[k]);
-            out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
-        } else {
-            out[ch] = from_floats<F>(rgba[ch]);
+    const LaneCases outside = sampler_traits<F>::flag(Undefined::Argument, [&] {
+        std::uint32_t lanes = 0;
+        for (int i = 0; i < N; ++i) {
+            const std::array<int, 3> s = tex.size(level[i]);
+            bool in = s[0] > 0;
+            for (std::size_t k = 0; k < Dims; ++k) in = in && c[k][i] >= 0 && c[k][i] < s[k];
+            if (!in) lanes |= 1u << i;
         }
-    }
+        return lanes;
+    });
+    LaneCases cases = cases_of(lod) | outside;
+    for (std::size_t k = 0; k < Dims; ++k) cases = cases | cases_of(p[k]);
+    vec4<F> out;
+    for (int ch = 0; ch < 4; ++ch) out[ch] = constant_lanes<F>(rgba[ch], cases);
     return out;
 }
 

@@ -100,27 +100,6 @@ inline FaceDerivative face_derivative(const CubeFace& f, float dx, float dy, flo
     return d;
 }
 
-// The lanes of F's quads: upper-left, upper-right, lower-left, lower-right in GL's window (the
-// layout quad_rho2 reads).
-inline constexpr int quad_tl(int i) { return (i & ~3) | 2; }
-inline constexpr int quad_tr(int i) { return (i & ~3) | 3; }
-inline constexpr int quad_bl(int i) { return i & ~3; }
-inline constexpr int quad_br(int i) { return (i & ~3) | 1; }
-
-// What a checked lane computed from its whole quad's p reads: the quad's cases.
-template <Number F>
-LaneCases quad_cases([[maybe_unused]] const vec3<F>& p) {
-    if constexpr (is_checked_v<F>) {
-        constexpr int N = lanes_of<F>();
-        const LaneCases own = p.x.cases | p.y.cases | p.z.cases;
-        const auto at = [](int (*lane)(int)) { return [lane](std::size_t i) { return std::size_t(lane(int(i))); }; };
-        return own.permute(at(quad_tl), N) | own.permute(at(quad_tr), N) | own.permute(at(quad_bl), N) |
-               own.permute(at(quad_br), N);
-    } else {
-        return {};
-    }
-}
-
 // A direction projected onto its faces, lane by lane: the face and its (s, t), and, where the
 // level of detail is wanted, llvmpipe's squared scale factor from the direction's derivatives
 // carried through the projection, and those derivatives of (s, t) (which Dual2 carries on).
@@ -142,28 +121,13 @@ void project_cube(const Texture& tex, const vec3<F>& p, bool need_derivs, const 
     constexpr int N = lanes_of<F>();
     alignas(64) float c[3][N], gx[3][N], gy[3][N];
     for (int k = 0; k < 3; ++k) to_floats(p[k], c[k]);
-    out.have_derivs = is_dual2<F>::value;
+    out.have_derivs = false;
     if (ddx && need_derivs) {
         for (int k = 0; k < 3; ++k) to_floats((*ddx)[k], gx[k]), to_floats((*ddy)[k], gy[k]);
         out.have_derivs = true;
-    } else if constexpr (is_dual2<F>::value) {
-        for (int k = 0; k < 3; ++k) to_floats(p[k].dx, gx[k]), to_floats(p[k].dy, gy[k]);
-    } else if (need_derivs) {
-        if constexpr (QuadNumber<F>) {
-            // lp_build_ddx and lp_build_ddy: along x the difference across the pixel's row of
-            // its quad, along y across its column.
-            for (int k = 0; k < 3; ++k) {
-                for (int i = 0; i < N; ++i) {
-                    const bool upper = (i & 2) != 0, left = (i & 1) == 0;
-                    gx[k][i] = upper ? c[k][quad_tr(i)] - c[k][quad_tl(i)] : c[k][quad_br(i)] - c[k][quad_bl(i)];
-                    gy[k][i] = left ? c[k][quad_bl(i)] - c[k][quad_tl(i)] : c[k][quad_br(i)] - c[k][quad_tr(i)];
-                }
-            }
-            out.lod_cases = quad_cases(p);
-            out.have_derivs = true;
-        } else {
-            throw_lod_without_quads();
-        }
+    } else if (need_derivs || sampler_traits<F>::carries_partials) {
+        sampler_traits<F>::coordinate_derivatives(std::array<F, 3>{p.x, p.y, p.z}, c, gx, gy, out.lod_cases);
+        out.have_derivs = true;
     }
     for (int i = 0; i < N; ++i) {
         const CubeFace f = cube_face(c[0][i], c[1][i], c[2][i]);
@@ -195,7 +159,8 @@ template <Number F>
 vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod_or_bias, const vec3<F>* ddx,
                     const vec3<F>* ddy, const F* ref = nullptr) {
     constexpr int N = lanes_of<F>();
-    const bool derivatives = is_dual2<F>::value && !ref;
+    // a comparison's result is a step of it, whose derivatives are 0
+    const bool derivatives = sampler_traits<F>::carries_partials && !ref;
     alignas(64) float extra[N], refs[N], rgba[4][N], d_dc[2][4][N];
     if (kind == Lod::Bias || kind == Lod::Explicit) to_floats(*lod_or_bias, extra);
     if (ref) to_floats(*ref, refs);
@@ -209,12 +174,10 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
     // an implicit one that only chooses between the minification and magnification filters is
     // its quad's, from its upper-left pixel (the quad's first element in llvmpipe's order).
     const bool quad_lod = need_derivs && kind == Lod::Implicit && tex.sampler.mip == MipFilter::None;
-    if constexpr (QuadNumber<F> && !is_dual2<F>::value) {
-        if (quad_lod) {
-            float own[N];
-            for (int i = 0; i < N; ++i) own[i] = pr.rho2[i];
-            for (int i = 0; i < N; ++i) pr.rho2[i] = own[quad_tl(i)];
-        }
+    if (quad_lod && QuadNumber<F>) {
+        float own[N];
+        for (int i = 0; i < N; ++i) own[i] = pr.rho2[i];
+        for (int i = 0; i < N; ++i) pr.rho2[i] = own[quad_tl(i)];
     }
     for (int i = 0; i < N; i += kMaxLanes) {
         Lookup l;
@@ -232,30 +195,24 @@ vec4<F> cube_lookup(const Texture& tex, const vec3<F>& p, Lod kind, const F* lod
         }
         sample_cube(tex, l, pr.face + i);
     }
+    LaneCases cases = pr.lod_cases | cases_of(p.x) | cases_of(p.y) | cases_of(p.z);
+    if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | cases_of(*lod_or_bias);
+    if (kind == Lod::Gradient) {
+        for (int k = 0; k < 3; ++k) cases = cases | cases_of((*ddx)[k]) | cases_of((*ddy)[k]);
+    }
+    if (ref) cases = cases | cases_of(*ref);
+    // The face coordinates' derivatives, which the projection carried.
+    using Partials = typename sampler_traits<F>::Partials;
+    const std::array<Partials, 2> dface{sampler_traits<F>::partials(pr.fdx[0], pr.fdy[0]),
+                                        sampler_traits<F>::partials(pr.fdx[1], pr.fdy[1])};
     vec4<F> out;
     for (int ch = 0; ch < 4; ++ch) {
-        if constexpr (is_dual2<F>::value) {
-            // d(colour) = d(colour)/ds ds + d(colour)/dt dt, along x and along y
-            using T = typename F::value_type;
-            if (!derivatives) {
-                out[ch] = F(from_floats<T>(rgba[ch]), T(0.0f), T(0.0f));
-                continue;
-            }
-            const T g_s = from_floats<T>(d_dc[0][ch]), g_t = from_floats<T>(d_dc[1][ch]);
-            const T dx = g_s * from_floats<T>(pr.fdx[0]) + g_t * from_floats<T>(pr.fdx[1]);
-            const T dy = g_s * from_floats<T>(pr.fdy[0]) + g_t * from_floats<T>(pr.fdy[1]);
-            out[ch] = F(from_floats<T>(rgba[ch]), dx, dy);
-        } else if constexpr (is_checked_v<F>) {
-            LaneCases cases = pr.lod_cases | p.x.cases | p.y.cases | p.z.cases;
-            if (kind == Lod::Bias || kind == Lod::Explicit) cases = cases | lod_or_bias->cases;
-            if (kind == Lod::Gradient) {
-                for (int k = 0; k < 3; ++k) cases = cases | (*ddx)[k].cases | (*ddy)[k].cases;
-            }
-            if (ref) cases = cases | ref->cases;
-            out[ch] = F(from_floats<F>(rgba[ch]).v, cases);
-        } else {
-            out[ch] = from_floats<F>(rgba[ch]);
+        if (ref) {
+            out[ch] = sampler_traits<F>::constant(rgba[ch], cases);
+            continue;
         }
+        const std::array<const float*, 2> d_dface{d_dc[0][ch], d_dc[1][ch]};
+        out[ch] = sampler_traits<F>::sampled(rgba[ch], d_dface, dface, cases);
     }
     return out;
 }
@@ -271,18 +228,12 @@ vec2<F> cube_lod_query(const Texture& tex, const vec3<F>& p) {
     constexpr int N = lanes_of<F>();
     alignas(64) float level[N], lod[N];
     CubeProjection<N> pr;
-    const bool carried = tex.needs_lod() || is_dual2<F>::value;
+    const bool carried = tex.needs_lod() || sampler_traits<F>::carries_partials;
     project_cube<F>(tex, p, carried, nullptr, nullptr, pr);
     if (!carried) {
-        if constexpr (QuadNumber<F>) {
-            using V = typename float_lanes<F>::type;
-            const float size = float(tex.width);
-            to_floats(quad_rho2(std::array<V, 2>{from_floats<V>(pr.s), from_floats<V>(pr.t)}, {size, size, 0.0f}),
-                      pr.rho2);
-            pr.lod_cases = quad_cases(p);
-        } else {
-            throw_lod_without_quads();
-        }
+        const float size = float(tex.width);
+        quad_rho2_of_floats<F, 2>({pr.s, pr.t}, {size, size, 0.0f}, pr.rho2);
+        pr.lod_cases = sampler_traits<F>::across_quads(cases_of(p.x) | cases_of(p.y) | cases_of(p.z));
     }
     query_lod(tex, {N, pr.rho2, level, lod});
     const LaneCases cases = pr.lod_cases | cases_of(p.x) | cases_of(p.y) | cases_of(p.z);

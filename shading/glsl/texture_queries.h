@@ -42,55 +42,6 @@ struct LodQuery {
 };
 void query_lod(const Texture& tex, const LodQuery& query);
 
-// The implicit level's squared scale factor per lane, as `lookup` computes it: per quad from the
-// quad's coordinates, or from Dual2's carried partials. `cases`: the lanes a Checked quad read.
-template <Number F, std::size_t Dims>
-void implicit_rho2(const std::array<F, Dims>& coord, const Texture& tex, float* rho2,
-                   [[maybe_unused]] LaneCases& cases) {
-    const std::array<float, 3> size{float(tex.width), float(tex.height), float(tex.depth)};
-    if constexpr (is_dual2<F>::value) {
-        using T = typename F::value_type;
-        T x, y;
-        for (std::size_t k = 0; k < Dims; ++k) {
-            const T w(size[k]);
-            T a = w * coord[k].dx, b = w * coord[k].dy;
-            a = a * a, b = b * b;
-            x = k == 0 ? a : x + a;
-            y = k == 0 ? b : y + b;
-        }
-        to_floats(T(select(x > y, x, y)), rho2);
-    } else if constexpr (QuadNumber<F>) {
-        using V = typename float_lanes<F>::type;
-        if constexpr (std::is_same_v<V, F>) {
-            const F r = quad_rho2(coord, size);
-            to_floats(r, rho2);
-            if constexpr (is_checked_v<F>) cases = r.cases;
-        } else {
-            constexpr int N = lanes_of<F>();
-            alignas(64) float c[3][N];
-            std::array<V, Dims> narrow;
-            for (std::size_t k = 0; k < Dims; ++k) to_floats(coord[k], c[k]), narrow[k] = from_floats<V>(c[k]);
-            to_floats(quad_rho2(narrow, size), rho2);
-        }
-    } else {
-        throw_lod_without_quads();
-    }
-}
-
-// Floats as F, with a Checked result's cases; constants under Dual2 (a gathered texel, a level
-// of detail taken once per quad).
-template <Number F>
-F constant_lanes(const float* v, [[maybe_unused]] LaneCases cases) {
-    if constexpr (is_dual2<F>::value) {
-        using T = typename F::value_type;
-        return F(from_floats<T>(v), T(0.0f), T(0.0f));
-    } else if constexpr (is_checked_v<F>) {
-        return F(from_floats<F>(v).v, cases);
-    } else {
-        return from_floats<F>(v);
-    }
-}
-
 // Gather `g` (its lanes' coordinates set) with, where given, each texel compared with `ref`: the
 // four channels as F, constant over `cases` and ref's.
 template <Number F>
@@ -131,7 +82,7 @@ vec2<F> lod_query(const Texture& tex, const std::array<F, Dims>& coord) {
     constexpr int N = lanes_of<F>();
     alignas(64) float rho2[N], level[N], lod[N];
     LaneCases cases;
-    implicit_rho2(coord, tex, rho2, cases);
+    sampler_traits<F>::implicit_rho2(coord, {float(tex.width), float(tex.height), float(tex.depth)}, rho2, cases);
     query_lod(tex, {N, rho2, level, lod});
     return vec2<F>(constant_lanes<F>(level, cases), constant_lanes<F>(lod, cases));
 }
