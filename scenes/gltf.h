@@ -1,5 +1,6 @@
 #pragma once
-// glTF 2.0 scenes through tinygltf (the files that include it: gltf_load.cpp and gltf_save.cpp).
+// glTF 2.0 scenes through tinygltf (the files that include it: gltf_save.cpp, gltf_load.cpp and the
+// reader's parts in gltf_read.h).
 //
 // What is read, all of it standard glTF 2.0 (docs/scenes.md has the details):
 //  - each mesh primitive of triangles (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN; points and lines
