@@ -635,7 +635,7 @@ TEST_CASE("sampler2DShadow's lookups, run by the interpreter, match OSMesa llvmp
         for (const LanguageCase& c : kShadowLookups) {
             const std::string name = std::string(c.name) + "-" + sc.name;
             check_against_llvmpipe(dir, *context, programs, size, name, std::string(c.source) + "\n", c.over_1, c.cause,
-                                   scene);
+                                   scene, true);
         }
     }
 }
