@@ -216,99 +216,110 @@ SceneRenderer::SceneRenderer(Scene& scene, const FrameRequest& request)
     textures_.resize(scene.textures.size());
     object_draws_.resize(scene.objects.size());
     uniform_words_.resize(scene.objects.size());
-    std::map<std::string, std::vector<const Mesh*>> missing_coordinates;  // per TEXCOORD_n: the meshes
-    std::map<std::string, std::set<std::string>> reading_shaders;         // per TEXCOORD_n: who reads it
-    std::vector<bool> counted_mesh(scene.meshes.size() * 2, false);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const Object& o = scene.objects[i];
-        const Program& program = program_for(scene, o, request.shader_override);
-        const ShaderInfo& info = program.info();
-        if (request.backend == Backend::RayCaster && o.look.alpha_mode == AlphaMode::Blend &&
-            info.name == kDefaultMaterialShader) {
-            throw SceneError(scene.file.string() + ": " + o.material +
-                             ": alphaMode BLEND: the ray caster shades the "
-                             "nearest surface only and blends nothing; render with the rasterizer (--backend raster)");
-        }
-        DrawCall& d = object_draws_[i];
-        const Mesh& mesh = scene.meshes[o.mesh];
-        std::vector<VertexIn>& vertices = vertices_[o.mesh];
-        if (vertices.empty()) {
-            vertices.reserve(mesh.vertices.size());
-            for (const Vertex& v : mesh.vertices) {
-                VertexIn in{v.position, v.texcoord, v.normal, v.color, v.texcoord1};
-                in.id = std::uint32_t(vertices.size());  // gl_VertexID
-                vertices.push_back(in);
-            }
-        }
-        d.vertices = vertices;
-        d.indices = mesh.indices;
-        d.program = &program;
-        if (request.atlas) d.program = atlas_programs_.emplace_back(std::make_unique<AtlasProgram>(program)).get();
-        const Needs& needs = info.needs;
-        // The texture coordinates the draw reads: TEXCOORD_0 for a shader of them, the base colour
-        // texture's set for the default material with a texture.
-        const bool default_material = info.name == kDefaultMaterialShader;
-        const bool reads_set0 = needs.coordinates == Coordinates::Texcoord2D &&
-                                (!default_material || (o.texture >= 0 && o.look.texcoord == 0));
-        const bool reads_set1 = default_material && o.texture >= 0 && o.look.texcoord != 0;
-        if ((reads_set0 && !mesh.has_texcoords) || (reads_set1 && !mesh.has_texcoord1)) {
-            const std::string set = "TEXCOORD_" + std::to_string(reads_set0 ? 0 : o.look.texcoord);
-            const std::size_t key = o.mesh * 2 + (reads_set0 ? 0 : 1);
-            if (!counted_mesh[key]) {
-                counted_mesh[key] = true;
-                missing_coordinates[set].push_back(&mesh);
-            }
-            std::string quoted(1, '\'');
-            quoted.append(info.name).push_back('\'');
-            reading_shaders[set].insert(std::move(quoted));
-        }
-        if (needs.texture) {
-            d.uniforms.teximage = static_cast<const glsl::sampler2D*>(&texture_for(o, program, "teximage", 2));
-            d.texture_lod = d.uniforms.teximage->needs_lod();
-        }
-        for (std::size_t k = 0; k < needs.samplers.size() && !needs.samplers[k].name.empty(); ++k) {
-            const glsl::Texture& t = texture_for(o, program, needs.samplers[k].name, needs.samplers[k].dims);
-            d.uniforms.samplers[k] = &t;
-            d.texture_lod = d.texture_lod || t.needs_lod();
-        }
-        d.blend = o.look.alpha_mode == AlphaMode::Blend && default_material && !request.atlas;
-    }
+    MissingCoordinates missing;
+    missing.counted.assign(scene.meshes.size() * 2, false);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) prepare_draw(i, missing);
     if (!failures_.empty()) {
         std::string all;
         for (const std::string& f : failures_) all += (all.empty() ? "" : "\n") + f;
         throw SceneError(all);
     }
-    for (const auto& [set, meshes] : missing_coordinates) {
+    note_missing(missing);
+    pose(request.time.value_or(double(scene.time)));
+    check_uniform_options();
+    if (request.backend == Backend::RayCaster) build_caster();
+}
+
+void SceneRenderer::prepare_draw(std::size_t i, MissingCoordinates& missing) {
+    const Object& o = scene_.objects[i];
+    const Program& program = program_for(scene_, o, request_.shader_override);
+    const ShaderInfo& info = program.info();
+    if (request_.backend == Backend::RayCaster && o.look.alpha_mode == AlphaMode::Blend &&
+        info.name == kDefaultMaterialShader) {
+        throw SceneError(scene_.file.string() + ": " + o.material +
+                         ": alphaMode BLEND: the ray caster shades the "
+                         "nearest surface only and blends nothing; render with the rasterizer (--backend raster)");
+    }
+    DrawCall& d = object_draws_[i];
+    const Mesh& mesh = scene_.meshes[o.mesh];
+    std::vector<VertexIn>& vertices = vertices_[o.mesh];
+    if (vertices.empty()) {
+        vertices.reserve(mesh.vertices.size());
+        for (const Vertex& v : mesh.vertices) {
+            VertexIn in{v.position, v.texcoord, v.normal, v.color, v.texcoord1};
+            in.id = std::uint32_t(vertices.size());  // gl_VertexID
+            vertices.push_back(in);
+        }
+    }
+    d.vertices = vertices;
+    d.indices = mesh.indices;
+    d.program = &program;
+    if (request_.atlas) d.program = atlas_programs_.emplace_back(std::make_unique<AtlasProgram>(program)).get();
+    const Needs& needs = info.needs;
+    // The texture coordinates the draw reads: TEXCOORD_0 for a shader of them, the base colour
+    // texture's set for the default material with a texture.
+    const bool default_material = info.name == kDefaultMaterialShader;
+    const bool reads_set0 = needs.coordinates == Coordinates::Texcoord2D &&
+                            (!default_material || (o.texture >= 0 && o.look.texcoord == 0));
+    const bool reads_set1 = default_material && o.texture >= 0 && o.look.texcoord != 0;
+    if ((reads_set0 && !mesh.has_texcoords) || (reads_set1 && !mesh.has_texcoord1)) {
+        const std::string set = "TEXCOORD_" + std::to_string(reads_set0 ? 0 : o.look.texcoord);
+        const std::size_t key = o.mesh * 2 + (reads_set0 ? 0 : 1);
+        if (!missing.counted[key]) {
+            missing.counted[key] = true;
+            missing.meshes[set].push_back(&mesh);
+        }
+        std::string quoted(1, '\'');
+        quoted.append(info.name).push_back('\'');
+        missing.shaders[set].insert(std::move(quoted));
+    }
+    if (needs.texture) {
+        d.uniforms.teximage = static_cast<const glsl::sampler2D*>(&texture_for(o, program, "teximage", 2));
+        d.texture_lod = d.uniforms.teximage->needs_lod();
+    }
+    for (std::size_t k = 0; k < needs.samplers.size() && !needs.samplers[k].name.empty(); ++k) {
+        const glsl::Texture& t = texture_for(o, program, needs.samplers[k].name, needs.samplers[k].dims);
+        d.uniforms.samplers[k] = &t;
+        d.texture_lod = d.texture_lod || t.needs_lod();
+    }
+    d.blend = o.look.alpha_mode == AlphaMode::Blend && default_material && !request_.atlas;
+}
+
+void SceneRenderer::note_missing(MissingCoordinates& missing) {
+    for (const auto& [set, meshes] : missing.meshes) {
         std::string shaders;
-        for (const std::string& name : reading_shaders[set]) shaders += (shaders.empty() ? "" : ", ") + name;
-        notes_.push_back(scene.file.string() + ": " +
+        for (const std::string& name : missing.shaders[set]) shaders += (shaders.empty() ? "" : ", ") + name;
+        notes_.push_back(scene_.file.string() + ": " +
                          counted(set + " missing", meshes,
                                  " drawn by shaders that read it (" + shaders + "): (0, 0) at every vertex, as in GL"));
     }
     for (const auto& [what, materials] : missing_samplers_) {
-        notes_.push_back(scene.file.string() + ": shader '" + what + "', which " + std::to_string(materials.size()) +
+        notes_.push_back(scene_.file.string() + ": shader '" + what + "', which " + std::to_string(materials.size()) +
                          (materials.size() == 1 ? " material binds" : " materials bind") +
                          " no texture to: it reads white (1, 1, 1, 1) there; first: " + materials.front());
     }
-    pose(request.time.value_or(double(scene.time)));
-    for (const UniformSetting& s : request.uniforms) {
+}
+
+void SceneRenderer::check_uniform_options() const {
+    for (const UniformSetting& s : request_.uniforms) {
         bool declared = false;
         for (const DrawCall& d : draws_) declared = declared || declares_uniform(d.program->info(), s.name);
         if (!declared) throw UniformOptionError(s.origin + ": no shader in this scene declares a uniform '" + s.name + "'");
     }
-    if (request.backend == Backend::RayCaster) {
+}
+
+void SceneRenderer::build_caster() {
 #if defined(QUADSHADE_HAS_RAYCAST)
-        const double aspect = double(width_) / double(height_);
-        caster_view_ = scene.pose(*posed_at_).view;
-        try {
-            caster_ = std::make_unique<Caster>(draws_, glm::mat4(scene.camera.projection(aspect) * caster_view_));
-        } catch (const RayCastError& e) {
-            throw SceneError(scene.file.string() + ": " + e.what());
-        }
-#else
-        throw std::runtime_error("this quadshade was built without the ray caster (QUADSHADE_RAYCAST=OFF: no Embree)");
-#endif
+    const double aspect = double(width_) / double(height_);
+    caster_view_ = scene_.pose(*posed_at_).view;
+    try {
+        caster_ = std::make_unique<Caster>(draws_, glm::mat4(scene_.camera.projection(aspect) * caster_view_));
+    } catch (const RayCastError& e) {
+        throw SceneError(scene_.file.string() + ": " + e.what());
     }
+#else
+    throw std::runtime_error("this quadshade was built without the ray caster (QUADSHADE_RAYCAST=OFF: no Embree)");
+#endif
 }
 
 void SceneRenderer::pose(double time) {

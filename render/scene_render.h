@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,22 @@ public:
     const std::vector<std::string>& notes() const { return notes_; }
 
 private:
+    // The texture coordinate sets (TEXCOORD_n) that drawn shaders read and meshes lack, to say
+    // once: per set, the meshes and the shaders reading it.
+    struct MissingCoordinates {
+        std::map<std::string, std::vector<const Mesh*>> meshes;
+        std::map<std::string, std::set<std::string>> shaders;
+        std::vector<bool> counted;  // per mesh and set (0, or the other): already in `meshes`
+    };
+    // Object i's draw: its vertices, program, textures and blending; a coordinate set its shader
+    // reads and its mesh lacks goes to `missing`.
+    void prepare_draw(std::size_t i, MissingCoordinates& missing);
+    // The notes of coordinate sets and samplers the scene leaves out.
+    void note_missing(MissingCoordinates& missing);
+    // Throws UniformOptionError for a --uniform no drawn shader declares.
+    void check_uniform_options() const;
+    // The ray caster's scene, built for the posed draws.
+    void build_caster();
     // The texture an object binds to `uniform` (teximage or one of the program's Needs::samplers),
     // of the kind the program declares, loaded on first use; white where it binds none.
     const glsl::Texture& texture_for(const Object& object, const Program& program, std::string_view uniform, int dims);
