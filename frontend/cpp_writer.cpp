@@ -983,7 +983,9 @@ Expr StageWriter::cube_lookup(TOperator op, TIntermTyped* node, const glslang::T
     const bool vertex = stage_ == Stage::Vertex;
     if (shadow) {
         // a vertex shader's implicit lookup at level 0, as the lowering reads it
-        if (op == glslang::EOpTexture && vertex) return {"textureCubeShadowLod(" + v[0] + ", " + v[1] + ", F(0.0f))", kPostfix, false};
+        if (op == glslang::EOpTexture && vertex) {
+            return {"textureCubeShadowLod(" + v[0] + ", " + v[1] + ", F(0.0f))", kPostfix, false};
+        }
         if (op == glslang::EOpTexture) return call("textureCubeShadow", v.size());
         if (op == glslang::EOpTextureGrad) return call("textureCubeShadowGrad", v.size());
         refuse(node, "this texture function on a samplerCubeShadow");

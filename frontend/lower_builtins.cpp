@@ -480,9 +480,8 @@ Place StageLowering::eval_gather(glslang::TOperator op, TIntermTyped* node, int 
 }
 
 // A lookup in a samplerCube (P a direction) or a samplerCubeShadow (P.xyz a direction, P.w the
-// reference value). GLSL gives a cube no projective, offset or fetch lookups. A depth comparison
-// texture has one level and one filter, so a shadow lookup's bias or derivatives change nothing
-// llvmpipe reads: evaluated for their side effects and left out.
+// reference value, compared as a sampler2DShadow's lookups compare). GLSL gives a cube no
+// projective, offset or fetch lookups.
 Place StageLowering::eval_cube(glslang::TOperator op, TIntermTyped* node, int slot, const std::vector<TIntermTyped*>& args,
                                const std::vector<Place>& v) {
     const bool shadow = interface_.program.samplers[std::size_t(slot)].shadow;
