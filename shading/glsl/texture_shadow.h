@@ -23,22 +23,19 @@ namespace qs::glsl {
 
 namespace texture_detail {
 
-// A shadow lookup: P.z compared at P.xy, with what `args` adds (its ref is set here).
+// A shadow lookup: p[2] compared at (p[0], p[1]), with what `kind` adds (a bias or an explicit
+// level in `lod_or_bias`, derivatives of (s, t) along x and y), at texel offsets where given.
 template <Number F>
-F compared(const Texture& depth, const vec3<F>& p, LookupArgs<F, 2> args) {
-    const F ref = p.z;
-    args.ref = &ref;
-    return lookup<F, 2>(depth, {p.x, p.y}, args)[0];
+F compared(const Texture& depth, const std::array<F, 3>& p, Lod kind = Lod::Implicit, const F* lod_or_bias = nullptr,
+           const vec2<F>* dPdx = nullptr, const vec2<F>* dPdy = nullptr, const ivec2<F>* offset = nullptr) {
+    std::array<F, 2> dx, dy;
+    if (dPdx) dx = coords(*dPdx), dy = coords(*dPdy);
+    std::array<int_t<F>, 2> o;
+    if (offset) o = coords<F>(*offset);
+    const LookupArgs<F, 2> args{kind, lod_or_bias, dPdx ? &dx : nullptr, dPdy ? &dy : nullptr, offset ? &o : nullptr,
+                                &p[2]};
+    return lookup<F, 2>(depth, {p[0], p[1]}, args)[0];
 }
-// A projective one's P: P.xyz times the reciprocal of P.w (the reference value too), as Mesa
-// lowers a projective lookup.
-template <Number F>
-vec3<F> projected_shadow(const vec4<F>& p) {
-    const F q = F(1.0f) / p.w;
-    return vec3<F>(p.x * q, p.y * q, p.z * q);
-}
-template <Number F>
-std::array<F, 2> coords2(const vec2<F>& d) { return {d.x, d.y}; }
 
 }  // namespace texture_detail
 
@@ -46,78 +43,83 @@ std::array<F, 2> coords2(const vec2<F>& d) { return {d.x, d.y}; }
 // P.xy. The result is a step of the comparison: under Dual2 its derivatives are 0.
 template <Number F>
 F textureShadow(const sampler2D& depth, const vec3<F>& p) {
-    return texture_detail::compared<F>(depth, p, {});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p));
 }
 template <Number F>
 F textureShadow(const sampler2D& depth, const vec3<F>& p, const F& bias) {
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Bias, &bias});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Bias, &bias);
 }
 template <Number F>
 F textureShadowLod(const sampler2D& depth, const vec3<F>& p, const F& lod) {
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Explicit, &lod});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Explicit, &lod);
 }
 template <Number F>
 F textureShadowGrad(const sampler2D& depth, const vec3<F>& p, const vec2<F>& dPdx, const vec2<F>& dPdy) {
-    const auto dx = texture_detail::coords2(dPdx), dy = texture_detail::coords2(dPdy);
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Gradient, nullptr, &dx, &dy});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Gradient, nullptr, &dPdx,
+                                       &dPdy);
 }
 // ... with texel offsets added as a colour lookup's are (GLSL's argument order).
 template <Number F>
 F textureShadowOffset(const sampler2D& depth, const vec3<F>& p, const ivec2<F>& offset) {
-    const std::array<int_t<F>, 2> o{offset.x, offset.y};
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Implicit, nullptr, nullptr, nullptr, &o});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Implicit, nullptr,
+                                       nullptr, nullptr, &offset);
 }
 template <Number F>
 F textureShadowOffset(const sampler2D& depth, const vec3<F>& p, const ivec2<F>& offset, const F& bias) {
-    const std::array<int_t<F>, 2> o{offset.x, offset.y};
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Bias, &bias, nullptr, nullptr, &o});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Bias, &bias, nullptr,
+                                       nullptr, &offset);
 }
 template <Number F>
 F textureShadowLodOffset(const sampler2D& depth, const vec3<F>& p, const F& lod, const ivec2<F>& offset) {
-    const std::array<int_t<F>, 2> o{offset.x, offset.y};
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Explicit, &lod, nullptr, nullptr, &o});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Explicit, &lod, nullptr,
+                                       nullptr, &offset);
 }
 template <Number F>
 F textureShadowGradOffset(const sampler2D& depth, const vec3<F>& p, const vec2<F>& dPdx, const vec2<F>& dPdy,
                           const ivec2<F>& offset) {
-    const auto dx = texture_detail::coords2(dPdx), dy = texture_detail::coords2(dPdy);
-    const std::array<int_t<F>, 2> o{offset.x, offset.y};
-    return texture_detail::compared<F>(depth, p, {texture_detail::Lod::Gradient, nullptr, &dx, &dy, &o});
+    return texture_detail::compared<F>(depth, texture_detail::coords(p), texture_detail::Lod::Gradient, nullptr, &dPdx,
+                                       &dPdy, &offset);
 }
 
-// textureProj(sampler2DShadow, P) and its kin: P.xyz times the reciprocal of P.w, then as above.
+// textureProj(sampler2DShadow, P) and its kin: P.xyz times the reciprocal of P.w (projected3: the
+// reference value too, as Mesa lowers a projective lookup), then as above.
 template <Number F>
 F textureShadowProj(const sampler2D& depth, const vec4<F>& p) {
-    return textureShadow(depth, texture_detail::projected_shadow(p));
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p));
 }
 template <Number F>
 F textureShadowProj(const sampler2D& depth, const vec4<F>& p, const F& bias) {
-    return textureShadow(depth, texture_detail::projected_shadow(p), bias);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Bias, &bias);
 }
 template <Number F>
 F textureShadowProjLod(const sampler2D& depth, const vec4<F>& p, const F& lod) {
-    return textureShadowLod(depth, texture_detail::projected_shadow(p), lod);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Explicit, &lod);
 }
 template <Number F>
 F textureShadowProjGrad(const sampler2D& depth, const vec4<F>& p, const vec2<F>& dPdx, const vec2<F>& dPdy) {
-    return textureShadowGrad(depth, texture_detail::projected_shadow(p), dPdx, dPdy);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Gradient, nullptr,
+                                       &dPdx, &dPdy);
 }
 template <Number F>
 F textureShadowProjOffset(const sampler2D& depth, const vec4<F>& p, const ivec2<F>& offset) {
-    return textureShadowOffset(depth, texture_detail::projected_shadow(p), offset);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Implicit, nullptr,
+                                       nullptr, nullptr, &offset);
 }
 template <Number F>
 F textureShadowProjOffset(const sampler2D& depth, const vec4<F>& p, const ivec2<F>& offset, const F& bias) {
-    return textureShadowOffset(depth, texture_detail::projected_shadow(p), offset, bias);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Bias, &bias, nullptr,
+                                       nullptr, &offset);
 }
 template <Number F>
 F textureShadowProjLodOffset(const sampler2D& depth, const vec4<F>& p, const F& lod, const ivec2<F>& offset) {
-    return textureShadowLodOffset(depth, texture_detail::projected_shadow(p), lod, offset);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Explicit, &lod,
+                                       nullptr, nullptr, &offset);
 }
 template <Number F>
 F textureShadowProjGradOffset(const sampler2D& depth, const vec4<F>& p, const vec2<F>& dPdx, const vec2<F>& dPdy,
                               const ivec2<F>& offset) {
-    return textureShadowGradOffset(depth, texture_detail::projected_shadow(p), dPdx, dPdy, offset);
+    return texture_detail::compared<F>(depth, texture_detail::projected3(p), texture_detail::Lod::Gradient, nullptr,
+                                       &dPdx, &dPdy, &offset);
 }
 
 // shadow2D's vec4: (r, r, r, 1), as GL_DEPTH_TEXTURE_MODE's default, GL_LUMINANCE, makes it.
