@@ -119,6 +119,11 @@ enum class Op : std::uint16_t {
 // The operation's name, for listings and messages.
 const char* name(Op op);
 
+// Whether component k of the operation's result depends on component k of its operands alone
+// (arithmetic, comparisons, conversions, moves, selects, derivatives): one such operation may
+// run over n components (Instr::n, Instr::broadcast).
+bool component_wise(Op op);
+
 struct Instr {
     Op op;
     Bank bank = Bank::Float;     // of d, where the operation does not fix it
@@ -126,6 +131,10 @@ struct Instr {
     std::uint8_t n = 1;          // components, or columns
     std::uint8_t m = 1;          // rows
     std::uint16_t count = 0;     // elements (LoadIndexed, StoreIndexed), sampler slot, columns
+    // A component-wise operation of n components runs them in order, component k writing d + k
+    // and reading a + k, b + k, c + k, or the operand's one register where its bit is set here
+    // (1: a, 2: b, 4: c): `v * s` over a vec4 is one operation.
+    std::uint8_t broadcast = 0;
     std::uint32_t d = 0, a = 0, b = 0, c = 0;
     std::uint32_t target = 0;    // control flow: the instruction to jump to
     std::uint32_t line = 0;      // GLSL source line (1-based), for messages

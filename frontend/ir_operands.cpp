@@ -13,7 +13,25 @@ const char* name(Op op) {
     return names[std::size_t(op)];
 }
 
-Operands operands(const Instr& in) {
+bool component_wise(Op op) {
+    switch (op) {
+        case Op::Mov: case Op::Select: case Op::FMixBool: case Op::FLdexp: case Op::FIsNan: case Op::FIsInf:
+            return true;
+        case Op::FModf: case Op::FFrexp: case Op::IAddCarry: case Op::ISubBorrow: case Op::IMulExtended:
+            return false;  // two results
+        case Op::IBitfieldInsert: return false;  // c spans two registers
+        case Op::IBitfieldExtract: case Op::IBitfieldReverse: case Op::IBitCount: case Op::IFindLsb: case Op::IFindMsb:
+            return true;
+        default:
+            return (op >= Op::FNeg && op <= Op::FNotEqual) || (op >= Op::INeg && op <= Op::INotEqual) ||
+                   (op >= Op::BNot && op <= Op::UintBitsToFloat);
+    }
+}
+
+namespace {
+
+// The operands of `in`, a component-wise operation's for one component.
+Operands single_component_operands(const Instr& in) {
     Operands o;
     const Bank F = Bank::Float, I = Bank::Int, U = Bank::Uint, B = Bank::Bool;
     const Bank X = in.bank;  // the instruction's own bank
@@ -152,8 +170,6 @@ Operands operands(const Instr& in) {
     return o;
 }
 
-namespace {
-
 bool is_texture(Op op) {
     switch (op) {
         case Op::Texture: case Op::TextureBias: case Op::TextureLod: case Op::TextureGrad: case Op::TextureOffset:
@@ -166,6 +182,18 @@ bool is_texture(Op op) {
 }
 
 }  // namespace
+
+Operands operands(const Instr& in) {
+    Operands o = single_component_operands(in);
+    if (in.n > 1 && component_wise(in.op)) {
+        for (int k = 0; k < o.size; ++k) {
+            Operand& x = o.list[std::size_t(k)];
+            const bool one = !x.written && (in.broadcast >> (int(x.field) - int(Field::A)) & 1);
+            x.span = one ? 1 : in.n;
+        }
+    }
+    return o;
+}
 
 void validate(const Stage& stage, int samplers) {
     const auto fail = [&](std::size_t at, const std::string& why) {
@@ -183,6 +211,9 @@ void validate(const Stage& stage, int samplers) {
         for (const Operand& op : operands(in)) {
             const std::uint64_t first = field(in, op.field), last = first + op.span;
             if (op.span == 0 || last > stage.registers[std::size_t(op.bank)]) fail(at, "a register outside the stage's");
+        }
+        if (in.broadcast != 0 && !component_wise(in.op)) {
+            fail(at, "a broadcast operand of an operation that is not component-wise");
         }
         if (is_texture(in.op) && (int(in.count) >= samplers || in.n < 1 || in.n > 3)) fail(at, "no such sampler");
         // a cube map's gather takes a direction; a shadow sampler's compares (channel 4)

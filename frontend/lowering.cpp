@@ -12,6 +12,7 @@
 #include "frontend/derivative_probe.h"
 #include "frontend/glsl_types.h"
 #include "frontend/ir_operands.h"
+#include "frontend/ir_simplify.h"
 #include "frontend/lowering.h"
 
 namespace qs::frontend {
@@ -270,7 +271,7 @@ bool StageLowering::writes_symbol(glslang::TIntermAggregate* function, long long
 // floors. A move is fused into the operation that made its temporary where nothing reads the
 // temporary but the move (temporaries live inside a statement, which writes each before it reads
 // it), the operation writes that one register, and nothing between the two reads or writes the
-// variable or crosses a control-flow marker. Removed moves shift the jump targets.
+// variable or crosses a control-flow marker.
 void StageLowering::fuse_moves() {
     std::vector<ir::Instr>& code = stage_.code;
     const auto is_temp = [](std::uint32_t r) { return (r & kSpaceMask) == std::uint32_t(Space::Temp); };
@@ -329,20 +330,7 @@ void StageLowering::fuse_moves() {
         op.masked = mov.masked;
         removed[m] = true;
     }
-    std::vector<std::uint32_t> index(code.size() + 1);
-    std::vector<ir::Instr> kept;
-    kept.reserve(code.size());
-    for (std::size_t i = 0; i < code.size(); ++i) {
-        index[i] = std::uint32_t(kept.size());
-        if (!removed[i]) kept.push_back(code[i]);
-    }
-    index[code.size()] = std::uint32_t(kept.size());
-    for (ir::Instr& in : kept) {
-        if (in.op == ir::Op::If || in.op == ir::Op::Else || in.op == ir::Op::LoopBegin || in.op == ir::Op::LoopEnd) {
-            in.target = index[in.target];
-        }
-    }
-    code = std::move(kept);
+    remove_instructions(stage_, removed);
 }
 
 // ---- a derivative probe (compile_options.h) -------------------------------------------------
@@ -462,6 +450,8 @@ ir::Stage StageLowering::run() {
     for (ir::Constant& c : stage_.constants) c.reg = place(c.bank, c.reg);
     for (ir::Binding& b : stage_.inputs) b.reg = place(b.bank, b.reg);
     for (ir::Binding& b : stage_.outputs) b.reg = place(b.bank, b.reg);
+    drop_idle_calls(stage_);
+    join_component_runs(stage_);
     return std::move(stage_);
 }
 

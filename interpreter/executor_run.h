@@ -22,6 +22,28 @@ T choose(const M& m, const T& a, const T& b) {
     }
 }
 
+// The registers of each component of a component-wise operation in turn (frontend/ir.h,
+// Instr::broadcast): `for (Components k(in); k.more(); k.next())`.
+struct Components {
+    explicit Components(const ir::Instr& in)
+        : d(in.d), a(in.a), b(in.b), c(in.c), step_a(~in.broadcast & 1u), step_b(~in.broadcast >> 1 & 1u),
+          step_c(~in.broadcast >> 2 & 1u), left(in.n) {}
+    bool more() const { return left > 0; }
+    void next() { ++d, a += step_a, b += step_b, c += step_c, --left; }
+    // The operation of this component alone.
+    ir::Instr of(const ir::Instr& in) const {
+        ir::Instr one = in;
+        one.n = 1, one.d = d, one.a = a, one.b = b, one.c = c;
+        return one;
+    }
+
+    std::uint32_t d, a, b, c;
+
+private:
+    std::uint32_t step_a, step_b, step_c;
+    int left;
+};
+
 // f.template operator()<N>() for N = n in 2..4.
 template <class Fn>
 void with_size(int n, Fn f) {
@@ -47,9 +69,6 @@ public:
         cond_ = brk_ = cnt_ = sw_ = ret_ = exec_ = M(true);
         killed_ = M(false);
         budget_.fill(kLoopLimit);
-        if constexpr (kVectors > 1) {
-            for (int v = 0; v < kVectors; ++v) vector_[std::size_t(v)] = lane_range<F>(v * kVectorLanes, kVectorLanes);
-        }
     }
 
     RunResult run();
@@ -108,7 +127,15 @@ private:
     M cond_, brk_, cnt_, sw_, ret_, exec_, killed_;
     bool all_ = true;  // every lane runs: writes need no select
     std::array<std::int32_t, kMaxVectors> budget_{};
-    std::array<M, kMaxVectors> vector_{};
+    // The lanes of each of F's 8-lane vectors, made once.
+    static const std::array<M, kMaxVectors>& vectors() {
+        static const std::array<M, kMaxVectors> lanes = [] {
+            std::array<M, kMaxVectors> v{};
+            for (int k = 0; k < kVectors; ++k) v[std::size_t(k)] = lane_range<F>(k * kVectorLanes, kVectorLanes);
+            return v;
+        }();
+        return lanes;
+    }
     struct Saved {
         M a, b;
     };
@@ -141,25 +168,28 @@ RunResult Machine<F>::run() {
     M* const b = b_;
     for (std::size_t pc = 0; pc < size; ++pc) {
         const ir::Instr& in = code[pc];
-#define QS_F1(expr) { const F& x = f[in.a]; put(in, f[in.d], (expr)); } break
-#define QS_F2(expr) { const F& x = f[in.a]; const F& y = f[in.b]; put(in, f[in.d], (expr)); } break
-#define QS_F3(expr) { const F& x = f[in.a]; const F& y = f[in.b]; const F& z = f[in.c]; put(in, f[in.d], (expr)); } break
-#define QS_FCMP(op) put(in, b[in.d], M(f[in.a] op f[in.b])); break
+#define QS_EACH for (Components k(in); k.more(); k.next())
+#define QS_F1(expr) QS_EACH { const F& x = f[k.a]; put(in, f[k.d], (expr)); } break
+#define QS_F2(expr) QS_EACH { const F& x = f[k.a]; const F& y = f[k.b]; put(in, f[k.d], (expr)); } break
+#define QS_F3(expr) \
+    QS_EACH { const F& x = f[k.a]; const F& y = f[k.b]; const F& z = f[k.c]; put(in, f[k.d], (expr)); } break
+#define QS_FCMP(op) QS_EACH put(in, b[k.d], M(f[k.a] op f[k.b])); break
+#define QS_B2(expr) QS_EACH { const M& x = b[k.a]; const M& y = b[k.b]; put(in, b[k.d], M(expr)); } break
         switch (in.op) {
             case ir::Op::Mov:
                 switch (in.bank) {
-                    case ir::Bank::Float: put(in, f[in.d], f[in.a]); break;
-                    case ir::Bank::Int: put(in, i_[in.d], i_[in.a]); break;
-                    case ir::Bank::Uint: put(in, u_[in.d], u_[in.a]); break;
-                    case ir::Bank::Bool: put(in, b[in.d], b[in.a]); break;
+                    case ir::Bank::Float: QS_EACH put(in, f[k.d], f[k.a]); break;
+                    case ir::Bank::Int: QS_EACH put(in, i_[k.d], i_[k.a]); break;
+                    case ir::Bank::Uint: QS_EACH put(in, u_[k.d], u_[k.a]); break;
+                    case ir::Bank::Bool: QS_EACH put(in, b[k.d], b[k.a]); break;
                 }
                 break;
             case ir::Op::Select:
                 switch (in.bank) {
-                    case ir::Bank::Float: put(in, f[in.d], choose(b[in.a], f[in.b], f[in.c])); break;
-                    case ir::Bank::Int: put(in, i_[in.d], choose(b[in.a], i_[in.b], i_[in.c])); break;
-                    case ir::Bank::Uint: put(in, u_[in.d], choose(b[in.a], u_[in.b], u_[in.c])); break;
-                    case ir::Bank::Bool: put(in, b[in.d], choose(b[in.a], b[in.b], b[in.c])); break;
+                    case ir::Bank::Float: QS_EACH put(in, f[k.d], choose(b[k.a], f[k.b], f[k.c])); break;
+                    case ir::Bank::Int: QS_EACH put(in, i_[k.d], choose(b[k.a], i_[k.b], i_[k.c])); break;
+                    case ir::Bank::Uint: QS_EACH put(in, u_[k.d], choose(b[k.a], u_[k.b], u_[k.c])); break;
+                    case ir::Bank::Bool: QS_EACH put(in, b[k.d], choose(b[k.a], b[k.b], b[k.c])); break;
                 }
                 break;
             case ir::Op::FNeg: QS_F1(-x);
@@ -183,26 +213,41 @@ RunResult Machine<F>::run() {
             case ir::Op::FFract: QS_F1(glsl::fract(x));
             case ir::Op::FSqrt: QS_F1(sqrt(x));
             case ir::Op::FInverseSqrt: QS_F1(glsl::inversesqrt(x));
-            case ir::Op::FMixBool: put(in, f[in.d], choose(b[in.c], f[in.b], f[in.a])); break;
+            case ir::Op::FMixBool: QS_EACH put(in, f[k.d], choose(b[k.c], f[k.b], f[k.a])); break;
             case ir::Op::FLess: QS_FCMP(<);
             case ir::Op::FLessEqual: QS_FCMP(<=);
             case ir::Op::FGreater: QS_FCMP(>);
             case ir::Op::FGreaterEqual: QS_FCMP(>=);
             case ir::Op::FEqual: QS_FCMP(==);
             case ir::Op::FNotEqual: QS_FCMP(!=);
-            case ir::Op::BNot: put(in, b[in.d], M(!b[in.a])); break;
-            case ir::Op::BAnd: put(in, b[in.d], M(b[in.a] && b[in.b])); break;
-            case ir::Op::BOr: put(in, b[in.d], M(b[in.a] || b[in.b])); break;
-            case ir::Op::BXor: case ir::Op::BNotEqual: put(in, b[in.d], M(b[in.a] != b[in.b])); break;
-            case ir::Op::BEqual: put(in, b[in.d], M(b[in.a] == b[in.b])); break;
-            case ir::Op::FloatFromInt: put(in, f[in.d], F(i_[in.a])); break;
-            case ir::Op::FloatFromBool: put(in, f[in.d], F(b[in.a])); break;
-            case ir::Op::IntFromFloat: put(in, i_[in.d], I(f[in.a])); break;
+            case ir::Op::BNot: QS_EACH put(in, b[k.d], M(!b[k.a])); break;
+            case ir::Op::BAnd: QS_B2(x && y);
+            case ir::Op::BOr: QS_B2(x || y);
+            case ir::Op::BXor: case ir::Op::BNotEqual: QS_B2(x != y);
+            case ir::Op::BEqual: QS_B2(x == y);
+            case ir::Op::FloatFromInt: QS_EACH put(in, f[k.d], F(i_[k.a])); break;
+            case ir::Op::FloatFromBool: QS_EACH put(in, f[k.d], F(b[k.a])); break;
+            case ir::Op::IntFromFloat: QS_EACH put(in, i_[k.d], I(f[k.a])); break;
             case ir::Op::FDdx: case ir::Op::FDdy: case ir::Op::FDdxFine: case ir::Op::FDdyFine: case ir::Op::FDdxCoarse:
             case ir::Op::FDdyCoarse: case ir::Op::FFwidth: case ir::Op::FFwidthFine: case ir::Op::FFwidthCoarse:
-                derivative(in);
+                QS_EACH derivative(k.of(in));
                 break;
-            case ir::Op::Dot: case ir::Op::Length: case ir::Op::Distance: case ir::Op::Normalize: case ir::Op::Reflect:
+            case ir::Op::Dot: {  // glsl::dot's sum, in its order, without gathering the vectors
+                F sum = f[in.a] * f[in.b];
+                for (std::uint32_t i = 1; i < in.n; ++i) sum = sum + f[in.a + i] * f[in.b + i];
+                put(in, f[in.d], sum);
+                break;
+            }
+            case ir::Op::Length:
+                if (in.n == 1) {
+                    geometric(in);
+                } else {  // glsl::length: the root of the vector's dot with itself
+                    F sum = f[in.a] * f[in.a];
+                    for (std::uint32_t i = 1; i < in.n; ++i) sum = sum + f[in.a + i] * f[in.a + i];
+                    put(in, f[in.d], sqrt(sum));
+                }
+                break;
+            case ir::Op::Distance: case ir::Op::Normalize: case ir::Op::Reflect:
             case ir::Op::Refract: case ir::Op::FaceForward: case ir::Op::Cross:
                 geometric(in);
                 break;
@@ -235,10 +280,12 @@ RunResult Machine<F>::run() {
             case ir::Op::UintFromBool: case ir::Op::BoolFromFloat: case ir::Op::BoolFromInt: case ir::Op::BoolFromUint:
             case ir::Op::FloatBitsToInt: case ir::Op::FloatBitsToUint: case ir::Op::IntBitsToFloat:
             case ir::Op::UintBitsToFloat:
-                integer(in);
+                QS_EACH integer(k.of(in));
                 break;
-            default: rare_float(in); break;
+            default: QS_EACH rare_float(k.of(in)); break;
         }
+#undef QS_EACH
+#undef QS_B2
 #undef QS_F1
 #undef QS_F2
 #undef QS_F3
@@ -701,7 +748,7 @@ std::size_t Machine<F>::control(const ir::Instr& in, std::size_t pc) {
             const M alive = exec_ && !killed_;
             if constexpr (kVectors > 1) {
                 for (int v = 0; v < kVectors; ++v) {
-                    const M& lanes = vector_[std::size_t(v)];
+                    const M& lanes = vectors()[std::size_t(v)];
                     if (!any_lane(M(exec_ && lanes))) continue;  // left this loop already
                     const bool living = any_lane(M(alive && lanes));
                     const bool going = living && --budget_[std::size_t(v)] > 0;

@@ -19,7 +19,13 @@ template <class P>
 P load_plain(const float* const* parts) {
     using T = typename P::value_type;
     alignas(64) T lanes[P::size];
-    for (int i = 0; i < P::size; ++i) lanes[i] = T(parts[i / kBatchLanes][i % kBatchLanes]);
+    if constexpr (std::is_same_v<T, float> && P::size % kBatchLanes == 0) {
+        for (int k = 0; k < P::size / kBatchLanes; ++k) {
+            std::memcpy(lanes + k * kBatchLanes, parts[k], sizeof(float) * kBatchLanes);
+        }
+    } else {
+        for (int i = 0; i < P::size; ++i) lanes[i] = T(parts[i / kBatchLanes][i % kBatchLanes]);
+    }
     return P::load(lanes);
 }
 
@@ -48,7 +54,13 @@ void store(const F& v, float* const* parts) {
         using T = typename F::value_type;
         alignas(64) T lanes[F::size];
         v.store(lanes);
-        for (int i = 0; i < F::size; ++i) parts[i / kBatchLanes][i % kBatchLanes] = float(lanes[i]);
+        if constexpr (std::is_same_v<T, float> && F::size % kBatchLanes == 0) {
+            for (int k = 0; k < F::size / kBatchLanes; ++k) {
+                std::memcpy(parts[k], lanes + k * kBatchLanes, sizeof(float) * kBatchLanes);
+            }
+        } else {
+            for (int i = 0; i < F::size; ++i) parts[i / kBatchLanes][i % kBatchLanes] = float(lanes[i]);
+        }
     }
 }
 
@@ -70,6 +82,7 @@ void fill_uniforms(const ir::Program& program, const ir::Stage& stage, const Uni
     using M = Bool<F>;
     for (const ir::Binding& b : stage.inputs) {
         std::uint32_t word = 0;
+        if (b.source == ir::Source::FragCoord || b.source == ir::Source::Varying) continue;  // most inputs, per batch
         if (!uniform_word(program, b, u, word)) continue;
         switch (b.bank) {
             case ir::Bank::Float: r.f[b.reg] = from_word<F, M>(word); break;
