@@ -24,8 +24,8 @@ void main() {
     float line = st.x * 34.0 + 1.0;
     float w = floor(fract(st.x) * 64.0) + 5592400.0;
     float past = w * 3.0 + 1.0;  // 3 w is odd and above 2^24 for odd w above 5592405: it rounds
-    // a derivative's zero keeps its sign: -0 - (+0) is -0
-    float sign_of_zero = 1.0 / dFdx(-floor(fract(st.x) * 4.0) - floor(st.y * 4.0) * 2.0);
+    // a derivative's zero keeps its sign: -0 - (-0 + +0) is -0, where -0 + (+0 + -0) would be +0
+    float sign_of_zero = 1.0 / dFdx(-floor(fract(st.x) * 4.0) - (floor(st.y * 4.0) - 8.0) * 2.0);
     gl_FragColor = vec4(p.x / 289.0 + fract(odd * line), hash / 867.0, (past - 16777000.0) / 512.0,
                         sign_of_zero < 0.0 ? 0.25 : 0.75);
 }
