@@ -25,8 +25,8 @@ using Num = KnownNumber;
 using Value = std::vector<Num>;  // one per component; empty: a value the analysis does not follow
 
 constexpr double kExactBelow = 16777216.0;  // 2^24: every whole number below it is a float
-constexpr double kRealBound = 0x1p100;       // finite values kept far from overflow
-constexpr long kBudget = 2'000'000;          // nodes visited before the analysis gives up
+constexpr double kRealBound = 0x1p100;      // finite values kept far from overflow
+constexpr long kBudget = 2'000'000;         // nodes visited before the analysis gives up
 
 Num unknown() { return {}; }
 Num integral() { return {Num::Integral, 0.0, 0.0, true}; }
@@ -104,10 +104,14 @@ Num rounded(const Num& a, TOperator op) {
     if (is_integral(a)) return a;
     if (a.kind != Num::Real) return integral();
     switch (op) {
-        case glslang::EOpFloor: return whole(std::floor(a.lo), std::floor(a.hi), a.nan);
-        case glslang::EOpCeil: return whole(std::ceil(a.lo), std::ceil(a.hi), a.nan);
-        case glslang::EOpTrunc: return whole(std::trunc(a.lo), std::trunc(a.hi), a.nan);
-        default: return whole(std::floor(a.lo), std::ceil(a.hi), a.nan);  // round, roundEven: a neighbour
+        case glslang::EOpFloor:
+            return whole(std::floor(a.lo), std::floor(a.hi), a.nan);
+        case glslang::EOpCeil:
+            return whole(std::ceil(a.lo), std::ceil(a.hi), a.nan);
+        case glslang::EOpTrunc:
+            return whole(std::trunc(a.lo), std::trunc(a.hi), a.nan);
+        default:
+            return whole(std::floor(a.lo), std::ceil(a.hi), a.nan);  // round, roundEven: a neighbour
     }
 }
 
@@ -154,13 +158,18 @@ Value constant(const glslang::TConstUnionArray& a, const TType& t) {
     if (!followed(t)) return {};
     Value v;
     for (int i = 0; i < components(t); ++i) {
-        const double d = is_float(t) ? a[i].getDConst() : t.getBasicType() == glslang::EbtInt ? double(a[i].getIConst())
-                                                                                                : double(a[i].getUConst());
+        const double d = is_float(t)                           ? a[i].getDConst()
+                         : t.getBasicType() == glslang::EbtInt ? double(a[i].getIConst())
+                                                               : double(a[i].getUConst());
         const double f = is_float(t) ? double(float(d)) : d;  // the translation writes float literals
-        if (!std::isfinite(f)) v.push_back(unknown());
-        else if (f == std::floor(f) && std::fabs(f) < kExactBelow && f == d) v.push_back({Num::Whole, f, f, false});
-        else if (is_float(t) && std::fabs(f) < kRealBound) v.push_back(real(std::min(f, d), std::max(f, d), false, false));
-        else v.push_back(unknown());
+        if (!std::isfinite(f))
+            v.push_back(unknown());
+        else if (f == std::floor(f) && std::fabs(f) < kExactBelow && f == d)
+            v.push_back({Num::Whole, f, f, false});
+        else if (is_float(t) && std::fabs(f) < kRealBound)
+            v.push_back(real(std::min(f, d), std::max(f, d), false, false));
+        else
+            v.push_back(unknown());
     }
     return v;
 }
@@ -168,10 +177,14 @@ Value constant(const glslang::TConstUnionArray& a, const TType& t) {
 // Local variables and parameters: what another function cannot write behind a call.
 bool is_local(const TIntermSymbol* s) {
     switch (s->getQualifier().storage) {
-        case glslang::EvqTemporary: case glslang::EvqIn: case glslang::EvqConstReadOnly: case glslang::EvqOut:
+        case glslang::EvqTemporary:
+        case glslang::EvqIn:
+        case glslang::EvqConstReadOnly:
+        case glslang::EvqOut:
         case glslang::EvqInOut:
             return true;
-        default: return false;
+        default:
+            return false;
     }
 }
 
@@ -213,8 +226,8 @@ public:
             return;
         }
         if (auto* l = n->getAsLoopNode()) return loop(l, env);
-        if (auto* s = n->getAsSelectionNode(); s && (s->getBasicType() == glslang::EbtVoid || !s->getTrueBlock() ||
-                                                     !s->getTrueBlock()->getAsTyped())) {
+        if (auto* s = n->getAsSelectionNode();
+            s && (s->getBasicType() == glslang::EbtVoid || !s->getTrueBlock() || !s->getTrueBlock()->getAsTyped())) {
             eval(s->getCondition(), env);
             Env t = env, e = env;
             exec(s->getTrueBlock(), t);
@@ -257,7 +270,9 @@ private:
         if (++steps_ > kBudget) throw OutOfBudget{};
     }
 
-    static Value unknowns(const TType& t) { return followed(t) ? Value(std::size_t(components(t)), unknown()) : Value{}; }
+    static Value unknowns(const TType& t) {
+        return followed(t) ? Value(std::size_t(components(t)), unknown()) : Value{};
+    }
 
     // The variable a write lands in, forgotten.
     static void forget(TIntermTyped* target, Env& env) {
@@ -271,8 +286,10 @@ private:
 
     void assign(TIntermTyped* target, const Value& v, Env& env) {
         if (auto* s = target->getAsSymbolNode()) {
-            if (is_local(s) && !v.empty()) env[s->getId()] = v;
-            else env.erase(s->getId());
+            if (is_local(s) && !v.empty())
+                env[s->getId()] = v;
+            else
+                env.erase(s->getId());
             return;
         }
         // One component, or a swizzle, of a local vector.
@@ -311,29 +328,35 @@ private:
     // values inside the body.
     std::optional<Num> counter(glslang::TIntermLoop* l, const Env& env, long long* id) {
         auto* test = l->getTest() ? l->getTest()->getAsBinaryNode() : nullptr;
-        if (!test || (test->getOp() != glslang::EOpLessThan && test->getOp() != glslang::EOpLessThanEqual)) return std::nullopt;
+        if (!test || (test->getOp() != glslang::EOpLessThan && test->getOp() != glslang::EOpLessThanEqual))
+            return std::nullopt;
         auto* s = test->getLeft()->getAsSymbolNode();
         auto* bound = test->getRight()->getAsConstantUnion();
-        if (!s || !bound || s->getBasicType() != glslang::EbtInt || !s->getType().isScalar() || !is_local(s)) return std::nullopt;
+        if (!s || !bound || s->getBasicType() != glslang::EbtInt || !s->getType().isScalar() || !is_local(s))
+            return std::nullopt;
         TIntermTyped* t = l->getTerminal();
         bool steps_by_one = false;
         if (auto* u = t ? t->getAsUnaryNode() : nullptr) {
             steps_by_one = (u->getOp() == glslang::EOpPostIncrement || u->getOp() == glslang::EOpPreIncrement) &&
-                           u->getOperand()->getAsSymbolNode() && u->getOperand()->getAsSymbolNode()->getId() == s->getId();
+                           u->getOperand()->getAsSymbolNode() &&
+                           u->getOperand()->getAsSymbolNode()->getId() == s->getId();
         } else if (auto* b = t ? t->getAsBinaryNode() : nullptr) {
             auto* one = b->getRight()->getAsConstantUnion();
             steps_by_one = b->getOp() == glslang::EOpAddAssign && b->getLeft()->getAsSymbolNode() &&
-                           b->getLeft()->getAsSymbolNode()->getId() == s->getId() && one && one->getConstArray()[0].getIConst() == 1;
+                           b->getLeft()->getAsSymbolNode()->getId() == s->getId() && one &&
+                           one->getConstArray()[0].getIConst() == 1;
         }
         if (!steps_by_one) return std::nullopt;
         bool written = false;
         for_each_write(l->getBody(), [&](long long w, TIntermTyped*) { written = written || w == s->getId(); });
         auto it = env.find(s->getId());
-        if (written || it == env.end() || it->second.size() != 1 || !is_whole(it->second[0]) || it->second[0].lo != it->second[0].hi) {
+        if (written || it == env.end() || it->second.size() != 1 || !is_whole(it->second[0]) ||
+            it->second[0].lo != it->second[0].hi) {
             return std::nullopt;
         }
         const double first = it->second[0].lo;
-        const double last = double(bound->getConstArray()[0].getIConst()) - (test->getOp() == glslang::EOpLessThan ? 1.0 : 0.0);
+        const double last =
+            double(bound->getConstArray()[0].getIConst()) - (test->getOp() == glslang::EOpLessThan ? 1.0 : 0.0);
         if (last < first || std::fabs(last) >= kExactBelow) return std::nullopt;
         *id = s->getId();
         return Num{Num::Whole, first, last, false};
@@ -371,7 +394,8 @@ private:
         if (auto* c = n->getAsConstantUnion()) return constant(c->getConstArray(), type);
         if (auto* s = n->getAsSymbolNode()) {
             if (auto it = env.find(s->getId()); it != env.end()) return it->second;
-            if (s->getQualifier().storage == glslang::EvqConst && s->getConstArray().size() > 0) return constant(s->getConstArray(), type);
+            if (s->getQualifier().storage == glslang::EvqConst && s->getConstArray().size() > 0)
+                return constant(s->getConstArray(), type);
             return unknowns(type);
         }
         if (auto* b = n->getAsBinaryNode()) return binary(b, env);
@@ -380,8 +404,11 @@ private:
         if (auto* s = n->getAsSelectionNode()) {
             eval(s->getCondition(), env);
             Env te = env, fe = env;
-            Value t = s->getTrueBlock() && s->getTrueBlock()->getAsTyped() ? eval(s->getTrueBlock()->getAsTyped(), te) : Value{};
-            Value f = s->getFalseBlock() && s->getFalseBlock()->getAsTyped() ? eval(s->getFalseBlock()->getAsTyped(), fe) : Value{};
+            Value t = s->getTrueBlock() && s->getTrueBlock()->getAsTyped() ? eval(s->getTrueBlock()->getAsTyped(), te)
+                                                                           : Value{};
+            Value f = s->getFalseBlock() && s->getFalseBlock()->getAsTyped()
+                          ? eval(s->getFalseBlock()->getAsTyped(), fe)
+                          : Value{};
             env = join(te, fe);
             return join(t, f);
         }
@@ -409,13 +436,22 @@ private:
             Value current = eval(b->getLeft(), env);
             Value r;
             switch (op) {
-                case glslang::EOpAssign: r = v; break;
-                case glslang::EOpAddAssign: r = componentwise(b->getLeft()->getType(), current, v, add); break;
-                case glslang::EOpSubAssign: r = componentwise(b->getLeft()->getType(), current, v, subtract); break;
-                case glslang::EOpMulAssign: case glslang::EOpVectorTimesScalarAssign:
+                case glslang::EOpAssign:
+                    r = v;
+                    break;
+                case glslang::EOpAddAssign:
+                    r = componentwise(b->getLeft()->getType(), current, v, add);
+                    break;
+                case glslang::EOpSubAssign:
+                    r = componentwise(b->getLeft()->getType(), current, v, subtract);
+                    break;
+                case glslang::EOpMulAssign:
+                case glslang::EOpVectorTimesScalarAssign:
                     r = componentwise(b->getLeft()->getType(), current, v, multiply);
                     break;
-                default: r = {}; break;
+                default:
+                    r = {};
+                    break;
             }
             if (is_int(b->getLeft()->getType())) {
                 for (Num& x : r) x = op == glslang::EOpAssign ? x : int_checked(x);
@@ -424,11 +460,14 @@ private:
             return r;
         }
         switch (op) {
-            case glslang::EOpIndexDirect: case glslang::EOpVectorSwizzle: {
+            case glslang::EOpIndexDirect:
+            case glslang::EOpVectorSwizzle: {
                 Value base = eval(b->getLeft(), env);
-                if (b->getLeft()->getType().isVector() || (op == glslang::EOpVectorSwizzle && b->getLeft()->getType().isScalar())) {
+                if (b->getLeft()->getType().isVector() ||
+                    (op == glslang::EOpVectorSwizzle && b->getLeft()->getType().isScalar())) {
                     Value r;
-                    for (int i : indices(b)) r.push_back(i >= 0 && std::size_t(i) < base.size() ? base[std::size_t(i)] : unknown());
+                    for (int i : indices(b))
+                        r.push_back(i >= 0 && std::size_t(i) < base.size() ? base[std::size_t(i)] : unknown());
                     return r;
                 }
                 return unknowns(type);
@@ -436,21 +475,31 @@ private:
             case glslang::EOpIndexDirectStruct:
                 eval(b->getLeft(), env);
                 return unknowns(type);
-            default: break;
+            default:
+                break;
         }
         Value l = eval(b->getLeft(), env);
         Value r = eval(b->getRight(), env);
-        if (!followed(type) || !followed(b->getLeft()->getType()) || !followed(b->getRight()->getType())) return unknowns(type);
+        if (!followed(type) || !followed(b->getLeft()->getType()) || !followed(b->getRight()->getType()))
+            return unknowns(type);
         Value v;
         switch (op) {
-            case glslang::EOpAdd: v = componentwise(type, l, r, add); break;
-            case glslang::EOpSub: v = componentwise(type, l, r, subtract); break;
-            case glslang::EOpMul: case glslang::EOpVectorTimesScalar: v = componentwise(type, l, r, multiply); break;
+            case glslang::EOpAdd:
+                v = componentwise(type, l, r, add);
+                break;
+            case glslang::EOpSub:
+                v = componentwise(type, l, r, subtract);
+                break;
+            case glslang::EOpMul:
+            case glslang::EOpVectorTimesScalar:
+                v = componentwise(type, l, r, multiply);
+                break;
             case glslang::EOpDiv:
                 if (!is_float(type)) return unknowns(type);
                 v = componentwise(type, l, r, divide);
                 break;
-            default: return unknowns(type);
+            default:
+                return unknowns(type);
         }
         if (is_int(type)) {
             for (Num& x : v) x = int_checked(x);
@@ -463,7 +512,9 @@ private:
     void refine_mod(TIntermBinary* b, const Value& x, Value& v) {
         auto* product = b->getRight()->getAsBinaryNode();
         auto* xs = b->getLeft()->getAsSymbolNode();
-        if (!product || !xs || (product->getOp() != glslang::EOpMul && product->getOp() != glslang::EOpVectorTimesScalar)) return;
+        if (!product || !xs ||
+            (product->getOp() != glslang::EOpMul && product->getOp() != glslang::EOpVectorTimesScalar))
+            return;
         TIntermTyped* f = product->getLeft();
         TIntermTyped* c = product->getRight();
         if (!c->getAsConstantUnion()) std::swap(f, c);
@@ -477,9 +528,14 @@ private:
         if (!qx || qx->getId() != xs->getId() || !qk || !qk->getType().isScalar()) return;
         const double cv = double(float(cc->getConstArray()[0].getDConst()));
         const double k = qk->getConstArray()[0].getDConst();
-        if (q->getOp() == glslang::EOpDiv ? double(float(k)) != cv : q->getOp() != glslang::EOpMul && q->getOp() != glslang::EOpVectorTimesScalar) return;
+        if (q->getOp() == glslang::EOpDiv
+                ? double(float(k)) != cv
+                : q->getOp() != glslang::EOpMul && q->getOp() != glslang::EOpVectorTimesScalar)
+            return;
         // k as the translation writes it (a float) and as double precision may keep it
-        const double k_error = q->getOp() == glslang::EOpDiv ? 0.0 : std::max(std::fabs(cv * double(float(k)) - 1.0), std::fabs(cv * k - 1.0));
+        const double k_error = q->getOp() == glslang::EOpDiv
+                                   ? 0.0
+                                   : std::max(std::fabs(cv * double(float(k)) - 1.0), std::fabs(cv * k - 1.0));
         for (std::size_t i = 0; i < v.size(); ++i) {
             if (auto m = mod_of_whole(at(x, i), cv, k_error)) v[i] = refine(v[i], *m);
         }
@@ -504,15 +560,23 @@ private:
         for (std::size_t i = 0; i < a.size(); ++i) {
             const Num& x = a[i];
             switch (op) {
-                case glslang::EOpNegative: r[i] = is_int(type) ? int_checked(negate(x)) : negate(x); break;
-                case glslang::EOpConvIntToFloat: case glslang::EOpConvUintToFloat:
+                case glslang::EOpNegative:
+                    r[i] = is_int(type) ? int_checked(negate(x)) : negate(x);
+                    break;
+                case glslang::EOpConvIntToFloat:
+                case glslang::EOpConvUintToFloat:
                     r[i] = is_whole(x) ? x : integral();  // an int is a whole number, and finite
                     break;
-                case glslang::EOpFloor: case glslang::EOpCeil: case glslang::EOpTrunc: case glslang::EOpRound:
+                case glslang::EOpFloor:
+                case glslang::EOpCeil:
+                case glslang::EOpTrunc:
+                case glslang::EOpRound:
                 case glslang::EOpRoundEven:
                     r[i] = rounded(x, op);
                     break;
-                case glslang::EOpFract: r[i] = {Num::Real, 0.0, 1.0, !is_bounded(x) || x.nan}; break;  // fract(inf) is NaN
+                case glslang::EOpFract:
+                    r[i] = {Num::Real, 0.0, 1.0, !is_bounded(x) || x.nan};
+                    break;  // fract(inf) is NaN
                 case glslang::EOpAbs:
                     if (is_bounded(x)) {
                         const double lo = x.lo <= 0.0 && x.hi >= 0.0 ? 0.0 : std::min(std::fabs(x.lo), std::fabs(x.hi));
@@ -521,7 +585,9 @@ private:
                         r[i] = is_float(type) && is_integral(x) ? integral() : unknown();
                     }
                     break;
-                default: r[i] = unknown(); break;
+                default:
+                    r[i] = unknown();
+                    break;
             }
         }
         return r;
@@ -535,11 +601,16 @@ private:
         std::vector<Value> args;
         for (TIntermNode* n : s) args.push_back(n->getAsTyped() ? eval(n->getAsTyped(), env) : Value{});
         switch (op) {
-            case glslang::EOpModf: case glslang::EOpFrexp: case glslang::EOpAddCarry: case glslang::EOpSubBorrow:
-            case glslang::EOpUMulExtended: case glslang::EOpIMulExtended:
+            case glslang::EOpModf:
+            case glslang::EOpFrexp:
+            case glslang::EOpAddCarry:
+            case glslang::EOpSubBorrow:
+            case glslang::EOpUMulExtended:
+            case glslang::EOpIMulExtended:
                 forget_writes(a, env);
                 return unknowns(type);
-            default: break;
+            default:
+                break;
         }
         if (!followed(type)) return unknowns(type);
         if (op > glslang::EOpConstructGuardStart && op < glslang::EOpConstructGuardEnd) return construct(a, args);
@@ -552,9 +623,11 @@ private:
             if (v.empty()) return unknowns(type);
         }
         switch (op) {
-            case glslang::EOpMin: case glslang::EOpMax:
+            case glslang::EOpMin:
+            case glslang::EOpMax:
                 if (!is_float(type) || args.size() != 2) return unknowns(type);
-                return each([&](std::size_t i) { return extremum(at(args[0], i), at(args[1], i), op == glslang::EOpMin); });
+                return each(
+                    [&](std::size_t i) { return extremum(at(args[0], i), at(args[1], i), op == glslang::EOpMin); });
             case glslang::EOpClamp:
                 if (!is_float(type) || args.size() != 3) return unknowns(type);
                 return each([&](std::size_t i) {
@@ -581,7 +654,8 @@ private:
                     return unknown();
                 });
             }
-            default: return unknowns(type);
+            default:
+                return unknowns(type);
         }
     }
 
@@ -592,8 +666,10 @@ private:
             const TType& at = a->getSequence()[i]->getAsTyped()->getType();
             if (!followed(at) || args[i].empty()) return unknowns(type);
             for (Num n : args[i]) {
-                if (is_float(type) && is_int(at)) n = is_whole(n) ? n : integral();
-                else if (is_int(type) && !is_int(at)) n = unknown();  // float to int: whole, but maybe out of range
+                if (is_float(type) && is_int(at))
+                    n = is_whole(n) ? n : integral();
+                else if (is_int(type) && !is_int(at))
+                    n = unknown();  // float to int: whole, but maybe out of range
                 all.push_back(n);
             }
         }
@@ -627,7 +703,8 @@ private:
             if (returned && !returned->empty()) result = *returned;
         }
         for (std::size_t i = 0; i < s.size() && i < q.size(); ++i) {
-            if ((q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut) && s[i]->getAsTyped()) forget(s[i]->getAsTyped(), env);
+            if ((q[i] == glslang::EvqOut || q[i] == glslang::EvqInOut) && s[i]->getAsTyped())
+                forget(s[i]->getAsTyped(), env);
         }
         return result;
     }
@@ -688,7 +765,8 @@ std::vector<KnownNumber> ExactProducts::known(const TIntermTyped* n) const {
 
 std::optional<FusibleProduct> ExactProducts::fusible(TIntermBinary* b) const {
     const TType& type = b->getType();
-    if ((b->getOp() != glslang::EOpAdd && b->getOp() != glslang::EOpSub) || !is_float(type) || !followed(type)) return std::nullopt;
+    if ((b->getOp() != glslang::EOpAdd && b->getOp() != glslang::EOpSub) || !is_float(type) || !followed(type))
+        return std::nullopt;
     const auto product_of = [](TIntermTyped* n) -> TIntermBinary* {
         auto* p = n->getAsBinaryNode();
         if (!p || (p->getOp() != glslang::EOpMul && p->getOp() != glslang::EOpVectorTimesScalar)) return nullptr;

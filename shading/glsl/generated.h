@@ -72,22 +72,26 @@ F exact_sub_product(const F& c, const F& a, const F& b) {
 
 template <class T>
 Dual2<T> exact_product_sub(const Dual2<T>& a, const Dual2<T>& b, const Dual2<T>& c) {
-    return {exact_product_add(a.val, b.val, -c.val), (a.val * b.dx + a.dx * b.val) - c.dx, (a.val * b.dy + a.dy * b.val) - c.dy};
+    return {exact_product_add(a.val, b.val, -c.val), (a.val * b.dx + a.dx * b.val) - c.dx,
+            (a.val * b.dy + a.dy * b.val) - c.dy};
 }
 
 template <class T>
 Dual2<T> exact_sub_product(const Dual2<T>& c, const Dual2<T>& a, const Dual2<T>& b) {
-    return {exact_product_add(a.val, -b.val, c.val), c.dx - (a.val * b.dx + a.dx * b.val), c.dy - (a.val * b.dy + a.dy * b.val)};
+    return {exact_product_add(a.val, -b.val, c.val), c.dx - (a.val * b.dx + a.dx * b.val),
+            c.dy - (a.val * b.dy + a.dy * b.val)};
 }
 
 template <AnyVector V>
-vec_t<V> exact_product_sub(const V& a, const std::type_identity_t<vec_t<V>>& b, const std::type_identity_t<vec_t<V>>& c) {
+vec_t<V> exact_product_sub(const V& a, const std::type_identity_t<vec_t<V>>& b,
+                           const std::type_identity_t<vec_t<V>>& c) {
     using F = typename V::value_type;
     return vec_t<V>::map(a, b, c, [](const F& x, const F& y, const F& z) { return exact_product_sub(x, y, z); });
 }
 
 template <AnyVector V>
-vec_t<V> exact_sub_product(const V& c, const std::type_identity_t<vec_t<V>>& a, const std::type_identity_t<vec_t<V>>& b) {
+vec_t<V> exact_sub_product(const V& c, const std::type_identity_t<vec_t<V>>& a,
+                           const std::type_identity_t<vec_t<V>>& b) {
     using F = typename V::value_type;
     return vec_t<V>::map(c, a, b, [](const F& x, const F& y, const F& z) { return exact_sub_product(x, y, z); });
 }
