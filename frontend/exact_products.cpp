@@ -426,7 +426,10 @@ private:
     }
 
     static Num subtract(const Num& a, const Num& b) { return add(a, negate(b)); }
-    static Num int_checked(const Num& n) { return is_whole(n) ? n : unknown(); }  // ints wrap: only exact ones kept
+    // Integers wrap: only results that do not are kept (for uint, none below 0).
+    static Num int_checked(const Num& n, const TType& t) {
+        return is_whole(n) && (t.getBasicType() != glslang::EbtUint || n.lo >= 0.0) ? n : unknown();
+    }
 
     Value binary(TIntermBinary* b, Env& env) {
         const TOperator op = b->getOp();
@@ -454,7 +457,7 @@ private:
                     break;
             }
             if (is_int(b->getLeft()->getType())) {
-                for (Num& x : r) x = op == glslang::EOpAssign ? x : int_checked(x);
+                for (Num& x : r) x = op == glslang::EOpAssign ? x : int_checked(x, b->getLeft()->getType());
             }
             assign(b->getLeft(), r, env);
             return r;
@@ -502,7 +505,7 @@ private:
                 return unknowns(type);
         }
         if (is_int(type)) {
-            for (Num& x : v) x = int_checked(x);
+            for (Num& x : v) x = int_checked(x, type);
         }
         if (op == glslang::EOpSub && is_float(type)) refine_mod(b, l, v);
         return v;
@@ -561,7 +564,7 @@ private:
             const Num& x = a[i];
             switch (op) {
                 case glslang::EOpNegative:
-                    r[i] = is_int(type) ? int_checked(negate(x)) : negate(x);
+                    r[i] = is_int(type) ? int_checked(negate(x), type) : negate(x);
                     break;
                 case glslang::EOpConvIntToFloat:
                 case glslang::EOpConvUintToFloat:
