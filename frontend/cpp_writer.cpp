@@ -745,14 +745,25 @@ Expr StageWriter::binary(TIntermBinary* b) {
 std::optional<Expr> StageWriter::exact_product_add(TIntermBinary* b) {
     const std::optional<FusibleProduct> f = exact_ ? exact_->fusible(b) : std::nullopt;
     if (!f) return std::nullopt;
+    Expr a = expr(f->product_left), m = expr(f->product_right), c = expr(f->addend);
+    if (a.plain && m.plain && c.plain) {
+        // A C++ float the same for every fragment (a loop counter's) stays one, as GLSL writes it.
+        const Expr p{parens(a, kMultiplicative) + " * " + parens(m, kMultiplicative + 1), kMultiplicative, true};
+        const bool product_first = b->getLeft() != f->addend;
+        const Expr& l = product_first ? p : c;
+        const Expr& r = product_first ? c : p;
+        const char* o = b->getOp() == glslang::EOpSub ? " - " : " + ";
+        return Expr{parens(l, kAdditive) + o + parens(r, kAdditive + 1), kAdditive, true};
+    }
     const std::string t = type(b->getType(), b);
-    const auto operand = [&](TIntermTyped* n) {
-        const Expr e = expr(n);
+    const auto typed = [&](TIntermTyped* n, const Expr& e) {
         const bool same = !e.plain && n->getType().isScalar() == b->getType().isScalar() &&
                           n->getType().getVectorSize() == b->getType().getVectorSize();
         return same ? e : Expr{t + "(" + e.text + ")", kPrimary, false};
     };
-    const Expr a = operand(f->product_left), m = operand(f->product_right), c = operand(f->addend);
+    a = typed(f->product_left, a);
+    m = typed(f->product_right, m);
+    c = typed(f->addend, c);
     if (f->subtract_product) return Expr{"exact_sub_product(" + c.text + ", " + a.text + ", " + m.text + ")", kPostfix, false};
     const std::string name = f->subtract_addend ? "exact_product_sub(" : "exact_product_add(";
     return Expr{name + a.text + ", " + m.text + ", " + c.text + ")", kPostfix, false};

@@ -187,6 +187,9 @@ TEST_CASE("a translation rounds a multiply-add once only where its product is ex
     CHECK_FALSE(has(translate("gl_FragColor = vec4(floor(fract(st.y) * 4.0) * 2.0 - fract(st.x));"), "exact_"));
     CHECK(has(translate("gl_FragColor = vec4(fract(st.x) - floor(fract(st.y) * 4.0) * 2.0);"),
               "exact_sub_product(fract(st.x), floor(fract(st.y) * 4.0f), F(2.0f))"));
+    // A loop counter's float, a plain C++ float, stays one.
+    CHECK(has(translate("for (int k = 0; k < 4; k++) { gl_FragColor += vec4(float(k) * 2.0 + 1.0); }"),
+              "float(k) * 2.0f + 1.0f"));
     // A variable a loop writes is not followed round the loop.
     CHECK_FALSE(has(translate("vec4 x = floor(fract(st.xyxy) * 9.0);\n"
                               "for (int k = 0; k < 3; k++) { x = mod289(x * 34.0 + 1.0); }\n"
