@@ -14,6 +14,7 @@
 
 #include "frontend/batch_width.h"
 #include "frontend/binding_names.h"
+#include "frontend/exact_products.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
 #include "frontend/shadow_lookup.h"
@@ -280,6 +281,8 @@ private:
     std::string functions_text_;
     std::map<long long, TIntermSymbol*> zero_symbols_;
     std::vector<std::string> structs_;
+    std::optional<ExactProducts> exact_;  // the multiply-adds that round once (frontend/exact_products.h)
+    std::optional<Expr> exact_product_add(TIntermBinary* b);
 };
 
 std::string StageWriter::scalar_type(glslang::TBasicType b, const TIntermNode* at) const {
@@ -695,6 +698,7 @@ Expr StageWriter::binary(TIntermBinary* b) {
         is_assignment(op)) {
         refuse(b, "an assignment inside an expression");
     }
+    if (std::optional<Expr> fused = exact_product_add(b)) return *fused;
     Expr l = expr(b->getLeft());
     Expr r = expr(b->getRight());
     const bool plain = l.plain && r.plain;
@@ -734,6 +738,35 @@ Expr StageWriter::binary(TIntermBinary* b) {
     }
     (void)integer;
     refuse(b, "this operator");
+}
+
+// A multiply-add whose product is exact for every input, rounded once: the same bits as GLSL's
+// two roundings, one instruction where the target fuses.
+std::optional<Expr> StageWriter::exact_product_add(TIntermBinary* b) {
+    const std::optional<FusibleProduct> f = exact_ ? exact_->fusible(b) : std::nullopt;
+    if (!f) return std::nullopt;
+    Expr a = expr(f->product_left), m = expr(f->product_right), c = expr(f->addend);
+    if (a.plain && m.plain && c.plain) {
+        // A C++ float the same for every fragment (a loop counter's) stays one, as GLSL writes it.
+        const Expr p{parens(a, kMultiplicative) + " * " + parens(m, kMultiplicative + 1), kMultiplicative, true};
+        const bool product_first = b->getLeft() != f->addend;
+        const Expr& l = product_first ? p : c;
+        const Expr& r = product_first ? c : p;
+        const char* o = b->getOp() == glslang::EOpSub ? " - " : " + ";
+        return Expr{parens(l, kAdditive) + o + parens(r, kAdditive + 1), kAdditive, true};
+    }
+    const std::string t = type(b->getType(), b);
+    const auto typed = [&](TIntermTyped* n, const Expr& e) {
+        const bool same = !e.plain && n->getType().isScalar() == b->getType().isScalar() &&
+                          n->getType().getVectorSize() == b->getType().getVectorSize();
+        return same ? e : Expr{t + "(" + e.text + ")", kPrimary, false};
+    };
+    a = typed(f->product_left, a);
+    m = typed(f->product_right, m);
+    c = typed(f->addend, c);
+    if (f->subtract_product) return Expr{"exact_sub_product(" + c.text + ", " + a.text + ", " + m.text + ")", kPostfix, false};
+    const std::string name = f->subtract_addend ? "exact_product_sub(" : "exact_product_add(";
+    return Expr{name + a.text + ", " + m.text + ", " + c.text + ")", kPostfix, false};
 }
 
 Expr StageWriter::conversion(TIntermTyped* from, const TType& to, TIntermTyped* at) {
@@ -1659,6 +1692,7 @@ void collect_structs(const TType& t, std::vector<const TType*>& out, std::set<st
 std::string StageWriter::write() {
     TIntermAggregate* root = ast_.getTreeRoot() ? ast_.getTreeRoot()->getAsAggregate() : nullptr;
     if (!root) throw GlslError(source_position(file_, 0) + "error: the shader has no code");
+    exact_.emplace(root);
     // Struct types first: members and functions use them.
     std::vector<const TType*> structs;
     std::set<std::string> seen;

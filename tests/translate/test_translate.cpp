@@ -32,6 +32,7 @@
 #include "translated_constant_vector_table/translated_constant_vector_table.h"
 #include "translated_texture_lookups/translated_texture_lookups.h"
 #include "translated_counted_loops/translated_counted_loops.h"
+#include "translated_exact_products/translated_exact_products.h"
 #include "translated_texture_queries/translated_texture_queries.h"
 #include "translated_texture_shadow/translated_texture_shadow.h"
 #include "translated_texture_cube/translated_texture_cube.h"
@@ -109,7 +110,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
     // A loop with a break that varies per fragment; a function of derivatives; nested loops
     // around an if and else that vary per fragment, with a texture; chained assignments; functions
     // taking a sampler; constant arrays of vectors read per fragment; C++ loops beside and inside
-    // Loop objects.
+    // Loop objects; multiply-adds rounded once beside ones a single rounding would change.
     const TranslatedCase cases[] = {
         {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
         {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
@@ -118,7 +119,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_sampler_parameter::TranslatedSamplerParameter>, "sampler_parameter", false},
         {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
          false},
-        {make_program<translated_counted_loops::TranslatedCountedLoops>, "counted_loops", false}};
+        {make_program<translated_counted_loops::TranslatedCountedLoops>, "counted_loops", false},
+        {make_program<translated_exact_products::TranslatedExactProducts>, "exact_products", false}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -139,6 +141,60 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
         test::check_same_pixels(scene, interpreted, compiled, name);
     }
+}
+
+TEST_CASE("a translation rounds a multiply-add once only where its product is exact for every input", "[translate]") {
+    const std::filesystem::path file = test::kSource / "tests/translate/exact_products.frag";
+    const std::string shader = frontend::translate_glsl({file.string(), read_text(file)}, std::nullopt, "exact_products").header;
+    const auto has = [&](const std::string& text, const std::string& line) {
+        INFO(line);
+        return text.find(line) != std::string::npos;
+    };
+    // The permutation's inputs after mod289 of a bounded floor, through three calls; mod289
+    // itself, its argument a whole number it proves below 2^24.
+    CHECK(has(shader, "return mod289(exact_product_add(x, vec4<F>(34.0f), vec4<F>(1.0f)) * x);"));
+    CHECK(has(shader, "return exact_sub_product(x, floor(x * 0.0034602077f), vec4<F>(289.0f));"));
+    CHECK(has(shader, "return exact_sub_product(x, floor(x * 0.0034602077f), vec3<F>(289.0f));"));
+    // Worley's chain: mod() of a bounded floor, plus a loop counter.
+    CHECK(has(shader, "return mod(exact_product_add(F(34.0f), x, F(1.0f)) * x, F(289.0f));"));
+    // A product of floors of anything, of a varying, of whole numbers past 2^24: GLSL's form.
+    CHECK(has(shader, "F odd = floor(st.x * 1.0e+06f) * floor(st.y * 1.0e+06f) + 1.0f;"));
+    CHECK(has(shader, "F line = st.x * 34.0f + 1.0f;"));
+    CHECK(has(shader, "F past = w * 3.0f + 1.0f;"));
+    // A floor of anything times a power of two: exact, or infinite both ways.
+    CHECK(has(shader, "exact_sub_product(-floor(fract(st.x) * 4.0f), floor(st.y * 4.0f) - 8.0f, F(2.0f))"));
+
+    const auto translate = [](const std::string& body) {
+        const std::string glsl = "varying vec2 st;\n"
+                                 "vec4 mod289(vec4 x) { return x - floor(x * (1.0 / 289.0)) * 289.0; }\n"
+                                 "vec4 permute(vec4 x) { return mod289(((x * 34.0) + 1.0) * x); }\n"
+                                 "void main() {\n" + body + "\n}\n";
+        return frontend::translate_glsl({"snippet.frag", glsl}, std::nullopt, "snippet").header;
+    };
+    // The noises' own: mod289 of floor(P) of a varying can be any size, so nothing is exact.
+    CHECK_FALSE(has(translate("gl_FragColor = permute(mod289(floor(st.xyxy * 10.0)));"), "exact_"));
+    // A function analysed over all its calls: one unbounded call keeps GLSL's form for all.
+    CHECK_FALSE(has(translate("gl_FragColor = permute(floor(fract(st.xyxy) * 9.0)) + permute(floor(st.xyxy));"),
+                    "exact_"));
+    CHECK(has(translate("gl_FragColor = permute(floor(fract(st.xyxy) * 9.0));"), "exact_"));
+    // Whole numbers up to 3 * 5592405 = 2^24 - 1 are exact, from 3 * 5592406 = 2^24 + 2 not.
+    CHECK(has(translate("float w = floor(fract(st.x) * 5.0) + 5592400.0; gl_FragColor = vec4(w * 3.0 - 1.0);"),
+              "vec4<F>(exact_product_sub(w, F(3.0f), F(1.0f)))"));
+    CHECK_FALSE(has(translate("float w = floor(fract(st.x) * 6.0) + 5592400.0; gl_FragColor = vec4(w * 3.0 - 1.0);"),
+                    "exact_"));
+    // A difference negates an operand in the fused form: never one that may be NaN (fract of a
+    // varying is NaN where the varying is infinite).
+    CHECK_FALSE(has(translate("gl_FragColor = vec4(floor(fract(st.y) * 4.0) * 2.0 - fract(st.x));"), "exact_"));
+    CHECK(has(translate("gl_FragColor = vec4(fract(st.x) - floor(fract(st.y) * 4.0) * 2.0);"),
+              "exact_sub_product(fract(st.x), floor(fract(st.y) * 4.0f), F(2.0f))"));
+    // A loop counter's float, a plain C++ float, stays one.
+    CHECK(has(translate("for (int k = 0; k < 4; k++) { gl_FragColor += vec4(float(k) * 2.0 + 1.0); }"),
+              "float(k) * 2.0f + 1.0f"));
+    // A variable a loop writes is not followed round the loop.
+    CHECK_FALSE(has(translate("vec4 x = floor(fract(st.xyxy) * 9.0);\n"
+                              "for (int k = 0; k < 3; k++) { x = mod289(x * 34.0 + 1.0); }\n"
+                              "gl_FragColor = x;"),
+                    "exact_"));
 }
 
 namespace {
