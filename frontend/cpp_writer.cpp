@@ -458,13 +458,14 @@ void StageWriter::input_member(TIntermSymbol* s, const std::string& name) {
     const std::string cpp = type(t, s);
     if (stage_ == Stage::Fragment) {
         if (s->getQualifier().storage == glslang::EvqFragCoord) {
-            member_lines_.push_back("const vec4<F> gl_FragCoord = in.gl_FragCoord;");
+            member_lines_.push_back("const vec4<F>& gl_FragCoord = in.gl_FragCoord;");
             return;
         }
         if (glsl.rfind("gl_", 0) == 0 || t.getBasicType() != glslang::EbtFloat || t.isArray() || t.isMatrix() || t.isStruct()) {
             refuse(s, "a varying other than a float or vec");
         }
-        member_lines_.push_back("const " + cpp + " " + name + " = in." + name + ";  // varying");
+        // read in place: a fragment shader's inputs are read-only
+        member_lines_.push_back("const " + cpp + "& " + name + " = in." + name + ";  // varying");
         return;
     }
     // Vertex attributes, with the components GL supplies where the scene's data has fewer.
