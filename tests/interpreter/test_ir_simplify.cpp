@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "frontend/compile.h"
 #include "frontend/ir_operands.h"
 #include "frontend/ir_simplify.h"
 #include "interpreter/executor_run.h"
@@ -88,4 +89,27 @@ TEST_CASE("the markers of a function that sets no lanes aside are dropped, the o
     CHECK(got == expected);
     CHECK(got[4] == 3.0f);
     CHECK(got[5] == 0.0f);  // its lanes returned before it
+}
+
+TEST_CASE("a run does not reach past a jump's target, and GLSL's vector arithmetic is one operation per vector",
+          "[interpreter][ir]") {
+    using ir::Op;
+    ir::Instr begin = op(Op::LoopBegin), end = op(Op::LoopEnd);
+    begin.target = 3;
+    end.target = 2;  // a jump into what would be a run
+    ir::Stage split = stage_of({begin, op(Op::FAdd, 4, 0, 3), op(Op::FAdd, 5, 1, 3), end});
+    frontend::join_component_runs(split);
+    CHECK(split.code.size() == 4);
+    CHECK(split.code[3].target == 2);
+    const char* const fragment = R"(#version 120
+varying vec2 st;
+void main() {
+    vec4 v = vec4(st, 0.25, 1.0);
+    gl_FragColor = v * v.x + vec4(0.5);
+}
+)";
+    const frontend::CompiledProgram c = frontend::compile_glsl({"vector.frag", fragment}, std::nullopt);
+    int four = 0;
+    for (const ir::Instr& in : c.program.fragment.code) four += in.n == 4 && (in.op == Op::FMul || in.op == Op::FAdd);
+    CHECK(four == 2);  // the multiply and the add, each over the vec4
 }
