@@ -1,10 +1,12 @@
-// Run in the ThreadSanitizer build (tools/ci-sanitizers) with the probe shaders: multi-threaded
+// Run in the ThreadSanitizer build (tools/ci-sanitizers) with the probe shaders, translated and
+// run by the GLSL interpreter (whose registers and masks are the thread's): multi-threaded
 // renders of both backends, whole and in row bands, many frames through one renderer, and the
 // result the same bits as one thread's.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 
+#include "render/glsl_shaders.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "tests/test_paths.h"
@@ -18,9 +20,12 @@ TEST_CASE("threads: renders on 1 to 7 threads are race-free and bit-identical, b
 #if defined(QUADSHADE_HAS_RAYCAST)
     backends.push_back(Backend::RayCaster);
 #endif
+    const std::string interpreted = interpreted_twin("st_derivative_probe");
     for (Backend backend : backends) {
         for (Scene* scene : {&figure, &plane}) {
-            for (const char* shader : {"st_derivative_probe", "float_env_probe", "position_derivative_probe"}) {
+            for (const std::string& shader :
+                 {std::string("st_derivative_probe"), std::string("float_env_probe"),
+                  std::string("position_derivative_probe"), interpreted}) {
                 INFO(shader << " backend " << int(backend));
                 FrameRequest r;
                 r.width = 150, r.height = 131;
