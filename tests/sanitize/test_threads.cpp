@@ -23,9 +23,8 @@ TEST_CASE("threads: renders on 1 to 7 threads are race-free and bit-identical, b
     const std::string interpreted = interpreted_twin("st_derivative_probe");
     for (Backend backend : backends) {
         for (Scene* scene : {&figure, &plane}) {
-            for (const std::string& shader :
-                 {std::string("st_derivative_probe"), std::string("float_env_probe"),
-                  std::string("position_derivative_probe"), interpreted}) {
+            for (const std::string& shader : {std::string("st_derivative_probe"), std::string("float_env_probe"),
+                                              std::string("position_derivative_probe"), interpreted}) {
                 INFO(shader << " backend " << int(backend));
                 FrameRequest r;
                 r.width = 150, r.height = 131;
