@@ -181,6 +181,8 @@ public:
     const std::vector<std::pair<std::string, std::string>>& varying_outputs() const { return varying_outputs_; }
     std::string position_output;  // the C++ name of gl_Position's value
     std::string color_output;      // the fragment colour
+    // Whether the fragment colour is written before anything could read it (written_first()).
+    bool color_written_first() const { return color_written_first_; }
 
 private:
     Stage stage_;
@@ -188,6 +190,8 @@ private:
     glslang::TIntermediate& ast_;
     const ir::Program& program_;
     bool discards_ = false;
+    long long color_symbol_ = -1;
+    bool color_written_first_ = false;
     std::vector<std::pair<std::string, std::string>> varying_outputs_;
 
     std::ostringstream body_;  // the function being written
@@ -505,6 +509,7 @@ void StageWriter::output_member(TIntermSymbol* s, const std::string& name) {
         }
         member_lines_.push_back("vec4<F>& " + name + " = out.gl_FragColor;  // the fragment's colour");
         color_output = name;
+        color_symbol_ = s->getId();
         return;
     }
     if (s->getQualifier().storage == glslang::EvqPosition || glsl == "gl_Position") {
@@ -1322,6 +1327,41 @@ std::vector<long long> StageWriter::assigned_outside(TIntermNode* body) {
     return out;
 }
 
+// Whether the variable `symbol` is written before anything could read it: its one use in the
+// shader (`code`: the functions and global initialisers) is the left side of a plain assignment
+// among main's top-level statements, and no statement before that one returns from main. Then
+// the colour needs no zero for the lanes GLSL leaves it unwritten for: there are none.
+static bool written_first(const std::vector<TIntermNode*>& code, TIntermAggregate* main, long long symbol) {
+    struct Uses : glslang::TIntermTraverser {
+        long long symbol = -1;
+        int count = 0;
+        void visitSymbol(TIntermSymbol* s) override { count += s->getId() == symbol; }
+    } uses;
+    uses.symbol = symbol;
+    for (TIntermNode* n : code) n->traverse(&uses);
+    if (uses.count != 1) return false;
+    struct Returns : glslang::TIntermTraverser {
+        bool found = false;
+        bool visitBranch(glslang::TVisit, glslang::TIntermBranch* b) override {
+            found = found || b->getFlowOp() == glslang::EOpReturn;
+            return true;
+        }
+    };
+    const glslang::TIntermSequence& parts = main->getSequence();
+    TIntermAggregate* body = parts.size() > 1 && parts[1] ? parts[1]->getAsAggregate() : nullptr;
+    if (!body || body->getOp() != glslang::EOpSequence) return false;
+    for (TIntermNode* n : body->getSequence()) {
+        if (!n) continue;
+        const glslang::TIntermBinary* b = n->getAsBinaryNode();
+        const TIntermSymbol* left = b && b->getOp() == glslang::EOpAssign ? b->getLeft()->getAsSymbolNode() : nullptr;
+        if (left && left->getId() == symbol) return true;
+        Returns r;
+        n->traverse(&r);
+        if (r.found) return false;
+    }
+    return false;
+}
+
 // Whether a lane can leave `l` before its condition ends it, or pause in it: a break or continue
 // of its own, or a return or discard anywhere in it.
 static bool lanes_may_leave(glslang::TIntermLoop* l) {
@@ -1716,8 +1756,10 @@ std::string StageWriter::write() {
     // The code outside functions (globals' initialisers) runs first, as main()'s first statements.
     TIntermAggregate* main = nullptr;
     std::string globals;
+    std::vector<TIntermNode*> code;  // functions and initialisers, without the linker's list of objects
     for (TIntermNode* n : root->getSequence()) {
         TIntermAggregate* a = n->getAsAggregate();
+        if (!a || a->getOp() != glslang::EOpLinkerObjects) code.push_back(n);
         if (a && a->getOp() == glslang::EOpFunction) {
             if (std::string(a->getName().c_str()) == "main(") {
                 main = a;
@@ -1737,6 +1779,7 @@ std::string StageWriter::write() {
     if (!main) throw GlslError(source_position(file_, 0) + "error: the shader has no main()");
     const std::size_t before = functions_text_.size();
     function(main);
+    color_written_first_ = color_symbol_ >= 0 && written_first(code, main, color_symbol_);
     if (!globals.empty()) {
         const std::size_t open = functions_text_.find('\n', before);
         functions_text_.insert(open + 1, globals);
@@ -1993,6 +2036,12 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
     h << "// " << comment_text(frag_file) << "\n"
       << "template <class F>\n"
       << "struct FragmentShader {\n"
+      // The colour zeroed by name, as GLSL's unwritten output reads, unless main writes it before
+      // anything could read it; a value-initialised `out` would zero the whole shader struct
+      // (padding included) with a memset the compiler cannot drop, and spill the inputs around it.
+      << "    FragmentShader(const FragmentIn<F, VertexStage>& in_, const Uniforms& u_)\n"
+      << "        : in(in_), u(u_)" << (fw.color_written_first() ? "" : ", out{vec4<F>(F(0.0f))}") << " {}"
+      << (fw.color_written_first() ? "  // main() writes the colour first" : "") << "\n"
       << "    const FragmentIn<F, VertexStage>& in;\n"
       << "    const Uniforms& u;\n"
       << "    FragmentOut<F> out;\n"
@@ -2004,10 +2053,7 @@ Translation translate_glsl(const GlslSource& fragment, const std::optional<GlslS
       << "    using VertexStage = " << name << "::VertexStage;\n\n"
       << "    template <class F>\n"
       << "    static auto fragment(const FragmentIn<F, VertexStage>& in, const Uniforms& u) {\n"
-      // The colour zeroed by name, as GLSL's unwritten output reads: a value-initialised `out`
-      // would zero the whole shader struct (padding included) with a memset the compiler
-      // cannot drop, and spill the inputs around its call.
-      << "        FragmentShader<F> shader{in, u, {vec4<F>(F(0.0f))}};\n"
+      << "        FragmentShader<F> shader(in, u);\n"
       << "        shader.main();\n"
       << "        return shader.out" << (fw.discards() ? "" : ".gl_FragColor") << ";\n"
       << "    }\n"
