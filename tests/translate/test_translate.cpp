@@ -33,6 +33,7 @@
 #include "translated_texture_lookups/translated_texture_lookups.h"
 #include "translated_counted_loops/translated_counted_loops.h"
 #include "translated_exact_products/translated_exact_products.h"
+#include "translated_colour_unwritten/translated_colour_unwritten.h"
 #include "translated_texture_queries/translated_texture_queries.h"
 #include "translated_texture_shadow/translated_texture_shadow.h"
 #include "translated_texture_cube/translated_texture_cube.h"
@@ -110,7 +111,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
     // A loop with a break that varies per fragment; a function of derivatives; nested loops
     // around an if and else that vary per fragment, with a texture; chained assignments; functions
     // taking a sampler; constant arrays of vectors read per fragment; C++ loops beside and inside
-    // Loop objects; multiply-adds rounded once beside ones a single rounding would change.
+    // Loop objects; multiply-adds rounded once beside ones a single rounding would change; a colour
+    // that branches leave unwritten.
     const TranslatedCase cases[] = {
         {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
         {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
@@ -120,7 +122,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_constant_vector_table::TranslatedConstantVectorTable>, "constant_vector_table",
          false},
         {make_program<translated_counted_loops::TranslatedCountedLoops>, "counted_loops", false},
-        {make_program<translated_exact_products::TranslatedExactProducts>, "exact_products", false}};
+        {make_program<translated_exact_products::TranslatedExactProducts>, "exact_products", false},
+        {make_program<translated_colour_unwritten::TranslatedColourUnwritten>, "colour_unwritten", false}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -205,6 +208,18 @@ struct BricksAaFineOnly : translated_bricks_aa::TranslatedBricksAa {
 };
 
 }  // namespace
+
+TEST_CASE("a translation zeroes the colour first only where main() could leave it unwritten", "[translate]") {
+    const auto written = [](const std::string& main_body) {
+        const std::string glsl = "varying vec2 st;\nvoid main() {\n" + main_body + "\n}\n";
+        const std::string h = frontend::translate_glsl({"colour.frag", glsl}, std::nullopt, "colour").header;
+        return h.find("out{vec4<F>(F(0.0f))}") == std::string::npos;
+    };
+    CHECK(written("float a = st.x * 2.0;\ngl_FragColor = vec4(a);"));
+    CHECK_FALSE(written("if (st.x > 0.5) gl_FragColor = vec4(1.0);"));                      // in a branch
+    CHECK_FALSE(written("gl_FragColor = vec4(1.0);\ngl_FragColor.x = gl_FragColor.y;"));  // read after
+    CHECK_FALSE(written("gl_FragColor.xy = st;\ngl_FragColor.zw = st;"));                 // in parts
+}
 
 TEST_CASE("a translation compiled for some ways of shading shades them as the whole one does, refuses others",
           "[translate]") {
