@@ -164,7 +164,7 @@ Operands single_component_operands(const Instr& in) {
         case Op::If: case Op::BreakUnless: o.add(Field::A, B); break;
         case Op::Else: case Op::EndIf: case Op::LoopBegin: case Op::LoopContinue: case Op::LoopEnd: case Op::Break:
         case Op::Continue: case Op::SwitchBegin: case Op::SwitchEnd: case Op::CallBegin: case Op::CallEnd:
-        case Op::Return: case Op::Discard:
+        case Op::Return: case Op::Discard: case Op::Native:
             break;
     }
     return o;
@@ -204,7 +204,13 @@ void validate(const Stage& stage, int samplers) {
     std::vector<Op> open;  // the control flow markers not yet closed
     for (std::size_t at = 0; at < stage.code.size(); ++at) {
         const Instr& in = stage.code[at];
-        if (std::size_t(in.op) > std::size_t(Op::Discard)) fail(at, "unknown operation");
+        if (std::size_t(in.op) > std::size_t(Op::Native)) fail(at, "unknown operation");
+        if (in.op == Op::Native) {
+            if (in.target <= at || in.target > stage.code.size()) fail(at, "a compiled block outside the code");
+            for (std::size_t k = at + 1; k < in.target; ++k) {
+                if (stage.code[k].op >= Op::If) fail(at, "control flow in a compiled block");
+            }
+        }
         if ((in.op == Op::LoadIndexed || in.op == Op::StoreIndexed) && (in.count == 0 || in.c == 0)) {
             fail(at, "an indexed access of no elements");
         }

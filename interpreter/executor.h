@@ -17,10 +17,12 @@
 #include <bit>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
 #include "frontend/ir.h"
+#include "jit/float_blocks.h"
 #include "shading/glsl.h"
 #include "shading/glsl/float_functions.h"
 #include "shading/glsl/hyperbolic.h"
@@ -78,9 +80,11 @@ struct RunResult {
 template <class F>
 class Executor {
 public:
-    // Runs `stage` on registers whose inputs are filled. Throws std::logic_error for an
-    // operation F cannot do (derivatives on independent pixels).
-    static RunResult run(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures);
+    // Runs `stage` on registers whose inputs are filled, its compiled blocks (native_blocks.h)
+    // from `native` where given. Throws std::logic_error for an operation F cannot do
+    // (derivatives on independent pixels).
+    static RunResult run(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures,
+                         std::span<const jit::BlockCode> native = {});
 };
 
 // ---- number helpers -------------------------------------------------------------------------

@@ -5,6 +5,7 @@
 // values in registers.
 
 #include "interpreter/executor.h"
+#include "interpreter/native_blocks.h"
 #include "shading/glsl/texture_cube.h"
 #include "shading/glsl/texture_queries.h"
 #include "shading/glsl/texture_shadow.h"
@@ -64,8 +65,9 @@ public:
     using U = uint_t<F>;
     using M = Bool<F>;
 
-    Machine(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures)
-        : stage_(stage), f_(r.f.data()), i_(r.i.data()), u_(r.u.data()), b_(r.b.data()), textures_(textures) {
+    Machine(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures, std::span<const jit::BlockCode> native)
+        : stage_(stage), f_(r.f.data()), i_(r.i.data()), u_(r.u.data()), b_(r.b.data()), textures_(textures),
+          native_(native) {
         cond_ = brk_ = cnt_ = sw_ = ret_ = exec_ = M(true);
         killed_ = M(false);
         budget_.fill(kLoopLimit);
@@ -123,6 +125,7 @@ private:
     U* const u_;
     M* const b_;
     const TextureSlots& textures_;
+    const std::span<const jit::BlockCode> native_;
 
     M cond_, brk_, cnt_, sw_, ret_, exec_, killed_;
     bool all_ = true;  // every lane runs: writes need no select
@@ -268,6 +271,14 @@ RunResult Machine<F>::run() {
             case ir::Op::SwitchBegin: case ir::Op::SwitchEnd: case ir::Op::CallBegin: case ir::Op::CallEnd:
             case ir::Op::Return: case ir::Op::Discard:
                 pc = control(in, pc);
+                break;
+            case ir::Op::Native:
+                if constexpr (native_lanes<F> > 0) {
+                    if (!native_.empty()) {
+                        native_[in.count](reinterpret_cast<float*>(f), bits_of(exec_));
+                        pc = in.target - 1;  // the loop's ++pc lands on target
+                    }
+                }
                 break;
             case ir::Op::INeg: case ir::Op::IAdd: case ir::Op::ISub: case ir::Op::IMul: case ir::Op::IDiv: case ir::Op::IMod:
             case ir::Op::IAnd: case ir::Op::IOr: case ir::Op::IXor: case ir::Op::INot: case ir::Op::IShl: case ir::Op::IShr:
@@ -807,8 +818,9 @@ std::size_t Machine<F>::control(const ir::Instr& in, std::size_t pc) {
 }  // namespace executor_detail
 
 template <class F>
-RunResult Executor<F>::run(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures) {
-    executor_detail::Machine<F> machine(stage, r, textures);
+RunResult Executor<F>::run(const ir::Stage& stage, Registers<F>& r, const TextureSlots& textures,
+                           std::span<const jit::BlockCode> native) {
+    executor_detail::Machine<F> machine(stage, r, textures, native);
     return machine.run();
 }
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "interpreter/native_blocks.h"
 #include "interpreter/run_stage.h"
 
 namespace qs::interpreter {
@@ -28,7 +29,8 @@ UniformType uniform_type(const ir::Uniform& u) {
 
 }  // namespace
 
-GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled) : compiled_(std::move(compiled)) {
+GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled, Blocks blocks)
+    : compiled_(std::move(compiled)) {
     const ir::Program& p = compiled_.program;
     const std::string& file = strings_.emplace_back(compiled_.vertex.file);
     (void)file;
@@ -80,6 +82,14 @@ GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled) :
         uniforms_.push_back(d);
     }
     info_.uniforms = uniforms_;
+    if (blocks == Blocks::Compiled) {
+        try {
+            blocks_ = compile_blocks(compiled_.program.fragment);
+        } catch (const jit::JitError& e) {
+            compiled_.warnings.push_back("warning: " + std::string(info_.name) + ": its float arithmetic is interpreted (" +
+                                         e.what() + ")");
+        }
+    }
 }
 
 void GlslProgram::vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const {
@@ -116,7 +126,7 @@ void GlslProgram::shade_batches(ShadeMode mode, const FragmentBatch* const* in, 
     const bool dbl = mode.precision == Precision::Double;
     // One run of number type F for `n` batches from `first`.
     const auto run = [&]<class F>(int first, int n) {
-        const RunResult r = interpreter::shade_batches<F>(p, in + first, n, u, t, out + first);
+        const RunResult r = interpreter::shade_batches<F>(p, in + first, n, u, t, out + first, blocks_.get());
         if (r.loop_limit) loop_limit_.store(true, std::memory_order_relaxed);
     };
     // The single-batch number type of `mode`, batch by batch.

@@ -6,20 +6,27 @@
 
 #include <atomic>
 #include <deque>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "frontend/compile.h"
+#include "jit/float_blocks.h"
 #include "shading/program.h"
 
 namespace qs::interpreter {
 
 class GlslProgram final : public Program {
 public:
+    // Whether float lanes run the fragment stage's straight runs of float arithmetic as machine
+    // code (native_blocks.h), or every instruction is interpreted.
+    enum class Blocks { Compiled, Interpreted };
+
     // `name` as listings and messages name the shader. Throws frontend::GlslUnsupported for a
     // program the renderer cannot bind: more samplers, varyings or uniforms than it passes.
-    GlslProgram(std::string name, frontend::CompiledProgram compiled);
+    // Where LLVM cannot compile the blocks, the interpreter runs them, with a warning.
+    GlslProgram(std::string name, frontend::CompiledProgram compiled, Blocks blocks = Blocks::Compiled);
 
     const ShaderInfo& info() const override { return info_; }
     void vertex(const VertexIn& in, const Uniforms& u, VertexOut& out) const override;
@@ -33,7 +40,10 @@ public:
 
     const ir::Program& program() const { return compiled_.program; }
     const frontend::GlslSource& vertex_source() const { return compiled_.vertex; }
+    // glslang's warnings, and LLVM's where it could not compile the blocks.
     const std::vector<std::string>& warnings() const { return compiled_.warnings; }
+    // Whether float lanes run compiled blocks.
+    bool runs_compiled_blocks() const { return blocks_ != nullptr; }
     // Whether a loop of some fragment was left at llvmpipe's iteration limit (65,535).
     bool reached_loop_limit() const { return loop_limit_.load(std::memory_order_relaxed); }
 
@@ -47,6 +57,7 @@ private:
     int teximage_ = -1;                           // the sampler slot bound to Uniforms::teximage
     std::array<int, kMaxSamplers> samplers_{};    // Needs::samplers[i]'s sampler slot
     mutable std::atomic<bool> loop_limit_{false};
+    std::unique_ptr<jit::CompiledBlocks> blocks_;  // the fragment stage's, where it has any
 };
 
 }  // namespace qs::interpreter

@@ -10,10 +10,11 @@
 namespace qs::interpreter {
 
 // Shades batches in[0..count) into out[0..count): F's lanes are count batches' (1, or 2 for the
-// wide types of the paired path).
+// wide types of the paired path); the fragment stage's compiled blocks run where `blocks` has
+// them and F has float lanes (native_blocks.h).
 template <class F>
 RunResult shade_batches(const ir::Program& program, const FragmentBatch* const* in, int count, const Uniforms& u,
-                        const TextureSlots& textures, ColorBatch* const* out);
+                        const TextureSlots& textures, ColorBatch* const* out, const jit::CompiledBlocks* blocks);
 
 // Runs the vertex stage on one vertex.
 RunResult run_vertex(const ir::Program& program, const VertexIn& in, const Uniforms& u, const TextureSlots& textures,

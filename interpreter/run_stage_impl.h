@@ -24,12 +24,16 @@ Registers<F>& thread_registers(const ir::Stage& stage) {
 
 template <class F>
 RunResult shade_batches(const ir::Program& program, const FragmentBatch* const* in, int count, const Uniforms& u,
-                        const TextureSlots& textures, ColorBatch* const* out) {
+                        const TextureSlots& textures, ColorBatch* const* out, const jit::CompiledBlocks* blocks) {
     const ir::Stage& stage = program.fragment;
     Registers<F>& r = thread_registers<F>(stage);
     fill_uniforms(program, stage, u, r);
     fill_fragment(stage, in, count, r);
-    const RunResult result = Executor<F>::run(stage, r, textures);
+    std::span<const jit::BlockCode> native;
+    if constexpr (native_lanes<F> > 0) {
+        if (blocks) native = blocks->code(native_lanes<F>);
+    }
+    const RunResult result = Executor<F>::run(stage, r, textures, native);
     read_color(stage, r, out, count);
     for (int k = 0; k < count; ++k) out[k]->discarded = (result.discarded >> (k * kBatchLanes)) & 0xFFFFu;
     return result;

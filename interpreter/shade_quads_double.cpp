@@ -3,5 +3,5 @@
 
 namespace qs::interpreter {
 template RunResult shade_batches<Quads<double, kBatchQuads, DerivativeRule::Fine>>(const ir::Program&, const FragmentBatch* const*, int, const Uniforms&,
-                                        const TextureSlots&, ColorBatch* const*);
+                                        const TextureSlots&, ColorBatch* const*, const jit::CompiledBlocks*);
 }  // namespace qs::interpreter

@@ -30,7 +30,7 @@ std::vector<float> run(const ir::Stage& stage) {
 }
 
 ir::Stage stage_of(std::vector<ir::Instr> code) {
-    static std::uint64_t serial = 1u << 40;
+    static std::uint64_t serial = std::uint64_t{1} << 40;
     ir::Stage s;
     s.serial = ++serial;
     s.registers = {16, 0, 0, 1};

@@ -1,0 +1,32 @@
+#pragma once
+// The compiled blocks of a stage the interpreter runs (jit/float_blocks.h): its straight runs of
+// float arithmetic, compiled for float lanes, each marked in the code by an ir::Op::Native
+// before its first instruction. Float lanes run the block's machine code and jump past its
+// instructions; the other number types (double, Dual2, the undefined-case check) run the
+// instructions as before, so a marker changes no value any of them computes.
+
+#include <memory>
+
+#include "frontend/ir.h"
+#include "jit/float_blocks.h"
+#include "shading/number/lanes.h"
+
+namespace qs::interpreter {
+
+// The fewest instructions a block takes: a shorter run costs more in the call than it saves.
+inline constexpr std::uint32_t kShortestBlock = 2;
+
+// Compiles the blocks of `stage` and marks them in its code, jump targets moved onto each
+// block's marker. Returns nullptr, the stage unchanged, where it has no block. Throws
+// jit::JitError where LLVM cannot compile them, the stage unchanged.
+std::unique_ptr<jit::CompiledBlocks> compile_blocks(ir::Stage& stage);
+
+// F's float lanes where the compiled blocks run for F: plain float lanes of one of
+// jit::kWidths (pixels or quads under any rule), laid out as a float array; 0 for the others.
+template <class F>
+inline constexpr int native_lanes = 0;
+template <int N, class Layout>
+    requires(N == jit::kWidths[0] || N == jit::kWidths[1])
+inline constexpr int native_lanes<Lanes<float, N, Layout>> = sizeof(Lanes<float, N, Layout>) == N * sizeof(float) ? N : 0;
+
+}  // namespace qs::interpreter

@@ -1,0 +1,297 @@
+#include "jit/float_blocks.h"
+
+#include <llvm-c/Core.h>
+#include <llvm-c/Error.h>
+#include <llvm-c/LLJIT.h>
+#include <llvm-c/Orc.h>
+#include <llvm-c/Target.h>
+#include <llvm-c/TargetMachine.h>
+
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <set>
+#include <string>
+
+#include "frontend/ir_operands.h"
+
+namespace qs::jit {
+
+bool compilable(const ir::Instr& in) {
+    using ir::Op;
+    switch (in.op) {
+        case Op::Mov: return in.bank == ir::Bank::Float;
+        case Op::FNeg: case Op::FAdd: case Op::FSub: case Op::FMul: case Op::FDiv: case Op::FMod: case Op::FMin:
+        case Op::FMax: case Op::FClamp: case Op::FMix: case Op::FStep: case Op::FSmoothStep: case Op::FAbs:
+        case Op::FSign: case Op::FFloor: case Op::FCeil: case Op::FTrunc: case Op::FRoundEven: case Op::FFract:
+        case Op::FSqrt: case Op::FInverseSqrt: case Op::Dot:
+            return true;
+        case Op::Length: return in.n > 1;  // a float's length is its absolute value, which geometric() takes
+        default: return false;
+    }
+}
+
+namespace {
+
+// LLVM's error as a JitError, the error consumed.
+[[noreturn]] void fail(LLVMErrorRef error, const std::string& what) {
+    char* message = LLVMGetErrorMessage(error);
+    const std::string text = what + ": " + message;
+    LLVMDisposeErrorMessage(message);
+    throw JitError(text);
+}
+void check(LLVMErrorRef error, const char* what) {
+    if (error) fail(error, what);
+}
+
+void initialise_llvm() {
+    static std::once_flag once;
+    static bool ready = false;
+    std::call_once(once, [] { ready = LLVMInitializeNativeTarget() == 0 && LLVMInitializeNativeAsmPrinter() == 0; });
+    if (!ready) throw JitError("LLVM has no code generator for this machine");
+}
+
+// The float registers of `written` that the stage may read after `block`: scanning on from the
+// block's end, one is read before an unmasked write replaces it, or a loop around the block goes
+// round first, or it is an output at the end. A write after a control-flow marker might not
+// run, so it replaces nothing for sure.
+std::set<std::uint32_t> read_after(const ir::Stage& stage, const Block& block, std::set<std::uint32_t> written) {
+    std::set<std::uint32_t> live;
+    bool crossed = false;
+    for (std::size_t j = block.end; j < stage.code.size() && !written.empty(); ++j) {
+        const ir::Instr& in = stage.code[j];
+        if (in.op == ir::Op::LoopEnd && in.target <= block.first) {
+            live.insert(written.begin(), written.end());
+            return live;
+        }
+        if (in.op >= ir::Op::If) crossed = true;
+        for (const ir::Operand& o : ir::operands(in)) {
+            if (o.bank != ir::Bank::Float) continue;
+            const std::uint32_t first = ir::field(in, o.field);
+            for (auto it = written.lower_bound(first); it != written.end() && *it < first + o.span;) {
+                if (!o.written) {
+                    live.insert(*it);
+                    it = written.erase(it);
+                } else if (!crossed && !in.masked) {
+                    it = written.erase(it);
+                } else {
+                    ++it;
+                }
+            }
+        }
+    }
+    for (const ir::Binding& b : stage.outputs) {
+        if (b.bank == ir::Bank::Float && written.count(b.reg)) live.insert(b.reg);
+    }
+    return live;
+}
+
+// How many operands a compilable component-wise operation reads.
+int arity(ir::Op op) {
+    switch (op) {
+        case ir::Op::FClamp: case ir::Op::FMix: case ir::Op::FSmoothStep: return 3;
+        case ir::Op::FAdd: case ir::Op::FSub: case ir::Op::FMul: case ir::Op::FDiv: case ir::Op::FMod: case ir::Op::FMin:
+        case ir::Op::FMax: case ir::Op::FStep:
+            return 2;
+        default: return 1;
+    }
+}
+
+// One block's function for `lanes` float lanes, written into `module`.
+class BlockWriter {
+public:
+    BlockWriter(LLVMContextRef context, LLVMModuleRef module, int lanes)
+        : c_(context), m_(module), lanes_(lanes), b_(LLVMCreateBuilderInContext(context)) {
+        f32_ = LLVMFloatTypeInContext(c_);
+        vector_ = LLVMVectorType(f32_, unsigned(lanes));
+        i64_ = LLVMInt64TypeInContext(c_);
+    }
+    ~BlockWriter() { LLVMDisposeBuilder(b_); }
+
+    void write(const ir::Stage& stage, const Block& block, const std::string& name) {
+        LLVMTypeRef params[] = {LLVMPointerType(f32_, 0), i64_};
+        LLVMTypeRef type = LLVMFunctionType(LLVMVoidTypeInContext(c_), params, 2, 0);
+        LLVMValueRef fn = LLVMAddFunction(m_, name.c_str(), type);
+        if (lanes_ * 32 >= 512) {  // whole 512-bit registers where the machine has them
+            for (const char* key : {"prefer-vector-width", "min-legal-vector-width"}) {
+                LLVMAddAttributeAtIndex(fn, LLVMAttributeFunctionIndex,
+                                           LLVMCreateStringAttribute(c_, key, unsigned(std::strlen(key)), "512", 3));
+            }
+        }
+        LLVMPositionBuilderAtEnd(b_, LLVMAppendBasicBlockInContext(c_, fn, "entry"));
+        registers_ = LLVMGetParam(fn, 0);
+        LLVMTypeRef lane_bits = LLVMIntTypeInContext(c_, unsigned(lanes_));
+        running_ = LLVMBuildBitCast(b_, LLVMBuildTrunc(b_, LLVMGetParam(fn, 1), lane_bits, ""),
+                                    LLVMVectorType(LLVMInt1TypeInContext(c_), unsigned(lanes_)), "running");
+        values_.clear();
+        written_.clear();
+        for (std::uint32_t k = block.first; k < block.end; ++k) instruction(stage.code[k]);
+        for (std::uint32_t r : read_after(stage, block, written_)) {
+            LLVMValueRef store = LLVMBuildStore(b_, values_.at(r), address(r));
+            LLVMSetAlignment(store, 64);
+        }
+        LLVMBuildRetVoid(b_);
+    }
+
+private:
+    LLVMValueRef address(std::uint32_t r) {
+        LLVMValueRef index = LLVMConstInt(i64_, std::uint64_t(r) * std::uint64_t(lanes_), 0);
+        return LLVMBuildGEP2(b_, f32_, registers_, &index, 1, "");
+    }
+    // Register r's value: computed in the block, or loaded once.
+    LLVMValueRef read(std::uint32_t r) {
+        auto it = values_.find(r);
+        if (it != values_.end()) return it->second;
+        LLVMValueRef load = LLVMBuildLoad2(b_, vector_, address(r), "");
+        LLVMSetAlignment(load, 64);
+        values_[r] = load;
+        return load;
+    }
+    void write(const ir::Instr& in, std::uint32_t r, LLVMValueRef v) {
+        if (in.masked) v = LLVMBuildSelect(b_, running_, v, read(r), "");
+        values_[r] = v;
+        written_.insert(r);
+    }
+    LLVMValueRef splat(float x) {
+        std::vector<LLVMValueRef> lanes(std::size_t(lanes_), LLVMConstReal(f32_, double(x)));
+        return LLVMConstVector(lanes.data(), unsigned(lanes_));
+    }
+    LLVMValueRef intrinsic(const char* name, LLVMValueRef x) {
+        const unsigned id = LLVMLookupIntrinsicID(name, std::strlen(name));
+        LLVMTypeRef types[] = {vector_};
+        LLVMValueRef fn = LLVMGetIntrinsicDeclaration(m_, id, types, 1);
+        return LLVMBuildCall2(b_, LLVMIntrinsicGetType(c_, id, types, 1), fn, &x, 1, "");
+    }
+    LLVMValueRef less(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFCmp(b_, LLVMRealOLT, x, y, ""); }
+    LLVMValueRef select(LLVMValueRef m, LLVMValueRef x, LLVMValueRef y) { return LLVMBuildSelect(b_, m, x, y, ""); }
+    LLVMValueRef add(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFAdd(b_, x, y, ""); }
+    LLVMValueRef sub(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFSub(b_, x, y, ""); }
+    LLVMValueRef mul(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFMul(b_, x, y, ""); }
+    LLVMValueRef div(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFDiv(b_, x, y, ""); }
+    LLVMValueRef floor(LLVMValueRef x) { return intrinsic("llvm.floor", x); }
+    // GLSL min and max as the lanes compute them (number/lanes.h): a NaN b loses to a, and
+    // otherwise a < b ? a : b, which is minps.
+    LLVMValueRef min(LLVMValueRef a, LLVMValueRef b) {
+        return select(LLVMBuildFCmp(b_, LLVMRealUNO, b, b, ""), a, select(less(a, b), a, b));
+    }
+    LLVMValueRef max(LLVMValueRef a, LLVMValueRef b) {
+        return select(LLVMBuildFCmp(b_, LLVMRealUNO, b, b, ""), a, select(less(b, a), a, b));
+    }
+    LLVMValueRef clamp(LLVMValueRef x, LLVMValueRef lo, LLVMValueRef hi) { return min(max(x, lo), hi); }
+    // dot(a, b) in glsl::dot's order: ((a0 b0 + a1 b1) + a2 b2) + a3 b3.
+    LLVMValueRef dot(std::uint32_t a, std::uint32_t b, int n) {
+        LLVMValueRef sum = mul(read(a), read(b));
+        for (std::uint32_t i = 1; i < std::uint32_t(n); ++i) sum = add(sum, mul(read(a + i), read(b + i)));
+        return sum;
+    }
+
+    // Each operation as shading/glsl/builtins.h writes it.
+    LLVMValueRef component(ir::Op op, LLVMValueRef x, LLVMValueRef y, LLVMValueRef z) {
+        using ir::Op;
+        switch (op) {
+            case Op::Mov: return x;
+            case Op::FNeg: return LLVMBuildFNeg(b_, x, "");
+            case Op::FAdd: return add(x, y);
+            case Op::FSub: return sub(x, y);
+            case Op::FMul: return mul(x, y);
+            case Op::FDiv: return div(x, y);
+            case Op::FMod: return sub(x, mul(y, floor(div(x, y))));
+            case Op::FMin: return min(x, y);
+            case Op::FMax: return max(x, y);
+            case Op::FClamp: return clamp(x, y, z);
+            case Op::FMix: return add(mul(x, sub(splat(1.0f), z)), mul(y, z));
+            case Op::FStep: return select(less(y, x), splat(0.0f), splat(1.0f));
+            case Op::FSmoothStep: {
+                LLVMValueRef t = clamp(div(sub(z, x), sub(y, x)), splat(0.0f), splat(1.0f));
+                return mul(mul(t, t), sub(splat(3.0f), mul(splat(2.0f), t)));
+            }
+            case Op::FAbs: return intrinsic("llvm.fabs", x);
+            case Op::FSign: {
+                LLVMValueRef negative = select(less(x, splat(0.0f)), splat(-1.0f), splat(0.0f));
+                return select(less(splat(0.0f), x), splat(1.0f), negative);
+            }
+            case Op::FFloor: return floor(x);
+            case Op::FCeil: return intrinsic("llvm.ceil", x);
+            case Op::FTrunc: return intrinsic("llvm.trunc", x);
+            case Op::FRoundEven: return intrinsic("llvm.roundeven", x);
+            case Op::FFract: return sub(x, floor(x));
+            case Op::FSqrt: return intrinsic("llvm.sqrt", x);
+            case Op::FInverseSqrt: return div(splat(1.0f), intrinsic("llvm.sqrt", x));
+            default: throw std::logic_error(std::string("a compiled block cannot hold ") + ir::name(op));
+        }
+    }
+
+    void instruction(const ir::Instr& in) {
+        if (in.op == ir::Op::Dot) return write(in, in.d, dot(in.a, in.b, in.n));
+        if (in.op == ir::Op::Length) return write(in, in.d, intrinsic("llvm.sqrt", dot(in.a, in.a, in.n)));
+        const int n = arity(in.op);
+        // Component by component, in order: a later component may read an earlier one's result.
+        for (std::uint32_t k = 0; k < in.n; ++k) {
+            const auto operand = [&](std::uint32_t first, int bit) { return read(first + ((in.broadcast >> bit & 1u) ? 0u : k)); };
+            LLVMValueRef x = operand(in.a, 0);
+            LLVMValueRef y = n > 1 ? operand(in.b, 1) : nullptr;
+            LLVMValueRef z = n > 2 ? operand(in.c, 2) : nullptr;
+            write(in, in.d + k, component(in.op, x, y, z));
+        }
+    }
+
+    LLVMContextRef c_;
+    LLVMModuleRef m_;
+    int lanes_;
+    LLVMBuilderRef b_;
+    LLVMTypeRef f32_, vector_, i64_;
+    LLVMValueRef registers_ = nullptr, running_ = nullptr;
+    std::map<std::uint32_t, LLVMValueRef> values_;
+    std::set<std::uint32_t> written_;
+};
+
+}  // namespace
+
+struct CompiledBlocks::Session {
+    LLVMOrcLLJITRef jit = nullptr;
+    ~Session() {
+        if (jit) LLVMConsumeError(LLVMOrcDisposeLLJIT(jit));
+    }
+};
+
+CompiledBlocks::CompiledBlocks(const ir::Stage& stage, std::span<const Block> blocks) : session_(std::make_unique<Session>()) {
+    initialise_llvm();
+    LLVMOrcThreadSafeContextRef context = LLVMOrcCreateNewThreadSafeContext();
+    LLVMModuleRef module = LLVMModuleCreateWithNameInContext("quadshade blocks", LLVMOrcThreadSafeContextGetContext(context));
+    std::vector<std::string> names;
+    for (int lanes : kWidths) {
+        BlockWriter writer(LLVMOrcThreadSafeContextGetContext(context), module, lanes);
+        for (std::size_t i = 0; i < blocks.size(); ++i) {
+            names.push_back("block" + std::to_string(i) + "_" + std::to_string(lanes));
+            writer.write(stage, blocks[i], names.back());
+        }
+    }
+    LLVMOrcThreadSafeModuleRef owned = LLVMOrcCreateNewThreadSafeModule(module, context);
+    LLVMOrcDisposeThreadSafeContext(context);  // the module keeps it
+    LLVMOrcJITTargetMachineBuilderRef machine = nullptr;
+    if (LLVMErrorRef e = LLVMOrcJITTargetMachineBuilderDetectHost(&machine)) {
+        LLVMOrcDisposeThreadSafeModule(owned);
+        fail(e, "LLVM does not know this machine");
+    }
+    LLVMOrcLLJITBuilderRef builder = LLVMOrcCreateLLJITBuilder();
+    LLVMOrcLLJITBuilderSetJITTargetMachineBuilder(builder, machine);
+    if (LLVMErrorRef e = LLVMOrcCreateLLJIT(&session_->jit, builder)) {
+        LLVMOrcDisposeThreadSafeModule(owned);
+        fail(e, "LLVM's compiler did not start");
+    }
+    check(LLVMOrcLLJITAddLLVMIRModule(session_->jit, LLVMOrcLLJITGetMainJITDylib(session_->jit), owned),
+          "LLVM did not take the compiled blocks");
+    std::size_t next = 0;
+    for (int lanes : kWidths) {
+        std::vector<BlockCode>& code = lanes == kWidths[0] ? narrow_ : wide_;
+        for (std::size_t i = 0; i < blocks.size(); ++i) {
+            LLVMOrcExecutorAddress address = 0;
+            check(LLVMOrcLLJITLookup(session_->jit, &address, names[next++].c_str()), "LLVM did not compile a block");
+            code.push_back(reinterpret_cast<BlockCode>(address));
+        }
+    }
+}
+
+CompiledBlocks::~CompiledBlocks() = default;
+
+}  // namespace qs::jit
