@@ -29,9 +29,10 @@ struct Block {
 };
 
 // A compiled block: runs the block's instructions on a register file of float lanes (register r
-// at registers + r * lanes), a variable written only in the lanes whose bit is set in `running`
-// (ir::Instr::masked), as the interpreter writes it.
-using BlockCode = void (*)(float* registers, std::uint64_t running);
+// at registers + r * lanes), a variable written only in the lanes where `running` (one 32-bit
+// word a lane, as the interpreter's masks hold them) is not 0 (ir::Instr::masked), as the
+// interpreter writes it.
+using BlockCode = void (*)(float* registers, const std::int32_t* running);
 
 // The lane widths blocks are compiled for: a batch, and a pair of batches as one number.
 inline constexpr int kWidths[] = {16, 32};
