@@ -275,7 +275,8 @@ RunResult Machine<F>::run() {
             case ir::Op::Native:
                 if constexpr (native_lanes<F> > 0) {
                     if (!native_.empty()) {
-                        native_[in.count](reinterpret_cast<float*>(f), reinterpret_cast<const std::int32_t*>(&exec_));
+                        native_[in.count](reinterpret_cast<float*>(f), reinterpret_cast<std::int32_t*>(i_),
+                                          reinterpret_cast<std::int32_t*>(b), reinterpret_cast<const std::int32_t*>(&exec_));
                         pc = in.target - 1;  // the loop's ++pc lands on target
                     }
                 }

@@ -9,7 +9,9 @@
 
 #include "frontend/ir.h"
 #include "jit/float_blocks.h"
+#include "shading/number/integer.h"
 #include "shading/number/lanes.h"
+#include "shading/number/number.h"
 
 namespace qs::interpreter {
 
@@ -21,14 +23,17 @@ inline constexpr std::uint32_t kShortestBlock = 2;
 // jit::JitError where LLVM cannot compile them, the stage unchanged.
 std::unique_ptr<jit::CompiledBlocks> compile_blocks(ir::Stage& stage);
 
-// F's float lanes where the compiled blocks run for F: plain float lanes of one of
-// jit::kWidths (pixels or quads under any rule), laid out as a float array, their masks as one
+// F's lanes where the compiled blocks run for F: plain float lanes of one of jit::kWidths
+// (pixels or quads under any rule), laid out as a float array, their ints and masks as one
 // 32-bit word a lane; 0 for the others.
 template <class F>
 inline constexpr int native_lanes = 0;
 template <int N, class Layout>
     requires(N == jit::kWidths[0] || N == jit::kWidths[1])
 inline constexpr int native_lanes<Lanes<float, N, Layout>> =
-    sizeof(Lanes<float, N, Layout>) == N * sizeof(float) && sizeof(typename Lanes<float, N, Layout>::Mask) == N * 4 ? N : 0;
+    sizeof(Lanes<float, N, Layout>) == N * 4 && sizeof(int_t<Lanes<float, N, Layout>>) == N * 4 &&
+            sizeof(Bool<Lanes<float, N, Layout>>) == N * 4
+        ? N
+        : 0;
 
 }  // namespace qs::interpreter

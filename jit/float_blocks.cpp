@@ -7,7 +7,10 @@
 #include <llvm-c/Target.h>
 #include <llvm-c/TargetMachine.h>
 
+#include <array>
 #include <cstring>
+#include <limits>
+#include <utility>
 #include <map>
 #include <mutex>
 #include <set>
@@ -18,14 +21,21 @@
 namespace qs::jit {
 
 bool compilable(const ir::Instr& in) {
-    using ir::Op;
+    using ir::Bank, ir::Op;
     switch (in.op) {
-        case Op::Mov: return in.bank == ir::Bank::Float;
+        case Op::Mov: case Op::Select: return in.bank != Bank::Uint;
         case Op::FNeg: case Op::FAdd: case Op::FSub: case Op::FMul: case Op::FDiv: case Op::FMod: case Op::FMin:
         case Op::FMax: case Op::FClamp: case Op::FMix: case Op::FStep: case Op::FSmoothStep: case Op::FAbs:
         case Op::FSign: case Op::FFloor: case Op::FCeil: case Op::FTrunc: case Op::FRoundEven: case Op::FFract:
-        case Op::FSqrt: case Op::FInverseSqrt: case Op::Dot:
+        case Op::FSqrt: case Op::FInverseSqrt: case Op::FMixBool: case Op::Dot:
+        case Op::FLess: case Op::FLessEqual: case Op::FGreater: case Op::FGreaterEqual: case Op::FEqual:
+        case Op::FNotEqual: case Op::FIsNan: case Op::FIsInf:
+        case Op::BNot: case Op::BAnd: case Op::BOr: case Op::BXor: case Op::BEqual: case Op::BNotEqual:
+        case Op::FloatFromInt: case Op::FloatFromBool:
             return true;
+        case Op::IAdd: case Op::ISub: case Op::IMul: case Op::ILess: case Op::ILessEqual: case Op::IGreater:
+        case Op::IGreaterEqual: case Op::IEqual: case Op::INotEqual:
+            return in.bank == Bank::Int;  // int's wrapping arithmetic and signed comparisons
         case Op::Length: return in.n > 1;  // a float's length is its absolute value, which geometric() takes
         default: return false;
     }
@@ -51,12 +61,19 @@ void initialise_llvm() {
     if (!ready) throw JitError("LLVM has no code generator for this machine");
 }
 
-// The float registers of `written` that the stage may read after `block`: scanning on from the
-// block's end, one is read before an unmasked write replaces it, or a loop around the block goes
-// round first, or it is an output at the end. A write after a control-flow marker might not
-// run, so it replaces nothing for sure.
-std::set<std::uint32_t> read_after(const ir::Stage& stage, const Block& block, std::set<std::uint32_t> written) {
-    std::set<std::uint32_t> live;
+// A register of one bank.
+struct Register {
+    ir::Bank bank;
+    std::uint32_t index;
+    auto operator<=>(const Register&) const = default;
+};
+
+// The registers of `written` that the stage may read after `block`: scanning on from the block's
+// end, one is read before an unmasked write replaces it, or a loop around the block goes round
+// first, or it is an output at the end. A write after a control-flow marker might not run, so
+// it replaces nothing for sure.
+std::set<Register> read_after(const ir::Stage& stage, const Block& block, std::set<Register> written) {
+    std::set<Register> live;
     bool crossed = false;
     for (std::size_t j = block.end; j < stage.code.size() && !written.empty(); ++j) {
         const ir::Instr& in = stage.code[j];
@@ -66,9 +83,8 @@ std::set<std::uint32_t> read_after(const ir::Stage& stage, const Block& block, s
         }
         if (in.op >= ir::Op::If) crossed = true;
         for (const ir::Operand& o : ir::operands(in)) {
-            if (o.bank != ir::Bank::Float) continue;
             const std::uint32_t first = ir::field(in, o.field);
-            for (auto it = written.lower_bound(first); it != written.end() && *it < first + o.span;) {
+            for (auto it = written.lower_bound({o.bank, first}); it != written.end() && it->bank == o.bank && it->index < first + o.span;) {
                 if (!o.written) {
                     live.insert(*it);
                     it = written.erase(it);
@@ -81,7 +97,7 @@ std::set<std::uint32_t> read_after(const ir::Stage& stage, const Block& block, s
         }
     }
     for (const ir::Binding& b : stage.outputs) {
-        if (b.bank == ir::Bank::Float && written.count(b.reg)) live.insert(b.reg);
+        if (written.count({b.bank, b.reg})) live.insert({b.bank, b.reg});
     }
     return live;
 }
@@ -119,36 +135,42 @@ LLVMTargetMachineRef host_machine() {
     return machine;
 }
 
-// One block's function for `lanes` float lanes, written into `module`.
+// One block's function for `lanes` lanes, written into `module`: its arguments are the float,
+// int and bool banks of the register file and the running mask. An int is an i32 lane, a bool
+// the interpreter's -1 or 0 in an i32 lane.
 class BlockWriter {
 public:
     BlockWriter(LLVMContextRef context, LLVMModuleRef module, int lanes)
         : c_(context), m_(module), lanes_(lanes), b_(LLVMCreateBuilderInContext(context)) {
         f32_ = LLVMFloatTypeInContext(c_);
-        vector_ = LLVMVectorType(f32_, unsigned(lanes));
-        i64_ = LLVMInt64TypeInContext(c_);
         i32_ = LLVMInt32TypeInContext(c_);
+        i64_ = LLVMInt64TypeInContext(c_);
+        floats_ = LLVMVectorType(f32_, unsigned(lanes));
+        words_ = LLVMVectorType(i32_, unsigned(lanes));
     }
     ~BlockWriter() { LLVMDisposeBuilder(b_); }
 
     void write(const ir::Stage& stage, const Block& block, const std::string& name) {
-        LLVMTypeRef params[] = {LLVMPointerType(f32_, 0), LLVMPointerType(i32_, 0)};
-        LLVMTypeRef type = LLVMFunctionType(LLVMVoidTypeInContext(c_), params, 2, 0);
+        LLVMTypeRef params[] = {LLVMPointerType(f32_, 0), LLVMPointerType(i32_, 0), LLVMPointerType(i32_, 0),
+                                LLVMPointerType(i32_, 0)};
+        LLVMTypeRef type = LLVMFunctionType(LLVMVoidTypeInContext(c_), params, 4, 0);
         LLVMValueRef fn = LLVMAddFunction(m_, name.c_str(), type);
         if (lanes_ * 32 >= 512) {  // whole 512-bit registers where the machine has them
             for (const char* key : {"prefer-vector-width", "min-legal-vector-width"}) {
                 LLVMAddAttributeAtIndex(fn, LLVMAttributeFunctionIndex,
-                                           LLVMCreateStringAttribute(c_, key, unsigned(std::strlen(key)), "512", 3));
+                                        LLVMCreateStringAttribute(c_, key, unsigned(std::strlen(key)), "512", 3));
             }
         }
         LLVMPositionBuilderAtEnd(b_, LLVMAppendBasicBlockInContext(c_, fn, "entry"));
-        registers_ = LLVMGetParam(fn, 0);
-        running_words_ = LLVMGetParam(fn, 1);
+        banks_[std::size_t(ir::Bank::Float)] = LLVMGetParam(fn, 0);
+        banks_[std::size_t(ir::Bank::Int)] = LLVMGetParam(fn, 1);
+        banks_[std::size_t(ir::Bank::Bool)] = LLVMGetParam(fn, 2);
+        running_words_ = LLVMGetParam(fn, 3);
         running_ = nullptr;
         values_.clear();
         written_.clear();
         for (std::uint32_t k = block.first; k < block.end; ++k) instruction(stage.code[k]);
-        for (std::uint32_t r : read_after(stage, block, written_)) {
+        for (const Register& r : read_after(stage, block, written_)) {
             LLVMValueRef store = LLVMBuildStore(b_, values_.at(r), address(r));
             LLVMSetAlignment(store, 64);
         }
@@ -156,44 +178,53 @@ public:
     }
 
 private:
-    LLVMValueRef address(std::uint32_t r) {
-        LLVMValueRef index = LLVMConstInt(i64_, std::uint64_t(r) * std::uint64_t(lanes_), 0);
-        return LLVMBuildGEP2(b_, f32_, registers_, &index, 1, "");
+    LLVMValueRef address(Register r) {
+        LLVMValueRef index = LLVMConstInt(i64_, std::uint64_t(r.index) * std::uint64_t(lanes_), 0);
+        return LLVMBuildGEP2(b_, r.bank == ir::Bank::Float ? f32_ : i32_, banks_[std::size_t(r.bank)], &index, 1, "");
     }
-    // Register r's value: computed in the block, or loaded once.
-    LLVMValueRef read(std::uint32_t r) {
+    // A register's value: computed in the block, or loaded once.
+    LLVMValueRef read(ir::Bank bank, std::uint32_t index) {
+        const Register r{bank, index};
         auto it = values_.find(r);
         if (it != values_.end()) return it->second;
-        LLVMValueRef load = LLVMBuildLoad2(b_, vector_, address(r), "");
+        LLVMValueRef load = LLVMBuildLoad2(b_, bank == ir::Bank::Float ? floats_ : words_, address(r), "");
         LLVMSetAlignment(load, 64);
         values_[r] = load;
         return load;
     }
+    LLVMValueRef read(std::uint32_t index) { return read(ir::Bank::Float, index); }
     // The running lanes, loaded where the block first writes a variable.
     LLVMValueRef running() {
         if (!running_) {
-            LLVMValueRef words = LLVMBuildLoad2(b_, LLVMVectorType(i32_, unsigned(lanes_)), running_words_, "");
-            LLVMSetAlignment(words, 64);
-            running_ = LLVMBuildICmp(b_, LLVMIntNE, words, LLVMConstNull(LLVMTypeOf(words)), "running");
+            LLVMValueRef mask = LLVMBuildLoad2(b_, words_, running_words_, "");
+            LLVMSetAlignment(mask, 64);
+            running_ = truth(mask);
         }
         return running_;
     }
-    void write(const ir::Instr& in, std::uint32_t r, LLVMValueRef v) {
-        if (in.masked) v = LLVMBuildSelect(b_, running(), v, read(r), "");
-        values_[r] = v;
-        written_.insert(r);
+    void write(const ir::Instr& in, ir::Bank bank, std::uint32_t index, LLVMValueRef v) {
+        if (in.masked) v = select(running(), v, read(bank, index));
+        values_[{bank, index}] = v;
+        written_.insert({bank, index});
     }
-    LLVMValueRef splat(float x) {
-        std::vector<LLVMValueRef> lanes(std::size_t(lanes_), LLVMConstReal(f32_, double(x)));
+    void write(const ir::Instr& in, std::uint32_t index, LLVMValueRef v) { write(in, ir::Bank::Float, index, v); }
+
+    LLVMValueRef splat(LLVMValueRef x) {
+        std::vector<LLVMValueRef> lanes(std::size_t(lanes_), x);
         return LLVMConstVector(lanes.data(), unsigned(lanes_));
     }
+    LLVMValueRef splat(float x) { return splat(LLVMConstReal(f32_, double(x))); }
     LLVMValueRef intrinsic(const char* name, LLVMValueRef x) {
         const unsigned id = LLVMLookupIntrinsicID(name, std::strlen(name));
-        LLVMTypeRef types[] = {vector_};
+        LLVMTypeRef types[] = {floats_};
         LLVMValueRef fn = LLVMGetIntrinsicDeclaration(m_, id, types, 1);
         return LLVMBuildCall2(b_, LLVMIntrinsicGetType(c_, id, types, 1), fn, &x, 1, "");
     }
-    LLVMValueRef less(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFCmp(b_, LLVMRealOLT, x, y, ""); }
+    // A bool's lanes as LLVM's i1, and back as the interpreter's -1 or 0.
+    LLVMValueRef truth(LLVMValueRef words) { return LLVMBuildICmp(b_, LLVMIntNE, words, LLVMConstNull(words_), ""); }
+    LLVMValueRef words(LLVMValueRef truth) { return LLVMBuildSExt(b_, truth, words_, ""); }
+    LLVMValueRef compare(LLVMRealPredicate p, LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFCmp(b_, p, x, y, ""); }
+    LLVMValueRef less(LLVMValueRef x, LLVMValueRef y) { return compare(LLVMRealOLT, x, y); }
     LLVMValueRef select(LLVMValueRef m, LLVMValueRef x, LLVMValueRef y) { return LLVMBuildSelect(b_, m, x, y, ""); }
     LLVMValueRef add(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFAdd(b_, x, y, ""); }
     LLVMValueRef sub(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFSub(b_, x, y, ""); }
@@ -202,12 +233,8 @@ private:
     LLVMValueRef floor(LLVMValueRef x) { return intrinsic("llvm.floor", x); }
     // GLSL min and max as the lanes compute them (number/lanes.h): a NaN b loses to a, and
     // otherwise a < b ? a : b, which is minps.
-    LLVMValueRef min(LLVMValueRef a, LLVMValueRef b) {
-        return select(LLVMBuildFCmp(b_, LLVMRealUNO, b, b, ""), a, select(less(a, b), a, b));
-    }
-    LLVMValueRef max(LLVMValueRef a, LLVMValueRef b) {
-        return select(LLVMBuildFCmp(b_, LLVMRealUNO, b, b, ""), a, select(less(b, a), a, b));
-    }
+    LLVMValueRef min(LLVMValueRef a, LLVMValueRef b) { return select(compare(LLVMRealUNO, b, b), a, select(less(a, b), a, b)); }
+    LLVMValueRef max(LLVMValueRef a, LLVMValueRef b) { return select(compare(LLVMRealUNO, b, b), a, select(less(b, a), a, b)); }
     LLVMValueRef clamp(LLVMValueRef x, LLVMValueRef lo, LLVMValueRef hi) { return min(max(x, lo), hi); }
     // dot(a, b) in glsl::dot's order: ((a0 b0 + a1 b1) + a2 b2) + a3 b3.
     LLVMValueRef dot(std::uint32_t a, std::uint32_t b, int n) {
@@ -216,11 +243,10 @@ private:
         return sum;
     }
 
-    // Each operation as shading/glsl/builtins.h writes it.
-    LLVMValueRef component(ir::Op op, LLVMValueRef x, LLVMValueRef y, LLVMValueRef z) {
+    // A float operation's component as shading/glsl/builtins.h writes it.
+    LLVMValueRef arithmetic(ir::Op op, LLVMValueRef x, LLVMValueRef y, LLVMValueRef z) {
         using ir::Op;
         switch (op) {
-            case Op::Mov: return x;
             case Op::FNeg: return LLVMBuildFNeg(b_, x, "");
             case Op::FAdd: return add(x, y);
             case Op::FSub: return sub(x, y);
@@ -252,17 +278,62 @@ private:
         }
     }
 
+    // Component k of every other operation: its result's bank and value.
+    std::pair<ir::Bank, LLVMValueRef> other(const ir::Instr& in, std::uint32_t k) {
+        using ir::Bank, ir::Op;
+        const auto at = [&](std::uint32_t first, int bit) { return first + ((in.broadcast >> bit & 1u) ? 0u : k); };
+        const auto f = [&](std::uint32_t first, int bit) { return read(Bank::Float, at(first, bit)); };
+        const auto b = [&](std::uint32_t first, int bit) { return read(Bank::Bool, at(first, bit)); };
+        const auto i = [&](std::uint32_t first, int bit) { return read(Bank::Int, at(first, bit)); };
+        const auto compared = [&](LLVMRealPredicate p) { return std::pair{Bank::Bool, words(compare(p, f(in.a, 0), f(in.b, 1)))}; };
+        const auto integers = [&](LLVMIntPredicate p) {
+            return std::pair{Bank::Bool, words(LLVMBuildICmp(b_, p, i(in.a, 0), i(in.b, 1), ""))};
+        };
+        switch (in.op) {
+            case Op::Mov: return {in.bank, read(in.bank, at(in.a, 0))};
+            case Op::Select: return {in.bank, select(truth(b(in.a, 0)), read(in.bank, at(in.b, 1)), read(in.bank, at(in.c, 2)))};
+            case Op::FMixBool: return {Bank::Float, select(truth(b(in.c, 2)), f(in.b, 1), f(in.a, 0))};
+            case Op::FLess: return compared(LLVMRealOLT);
+            case Op::FLessEqual: return compared(LLVMRealOLE);
+            case Op::FGreater: return compared(LLVMRealOGT);
+            case Op::FGreaterEqual: return compared(LLVMRealOGE);
+            case Op::FEqual: return compared(LLVMRealOEQ);
+            case Op::FNotEqual: return compared(LLVMRealUNE);
+            case Op::FIsNan: return {Bank::Bool, words(compare(LLVMRealUNE, f(in.a, 0), f(in.a, 0)))};
+            case Op::FIsInf: {
+                LLVMValueRef magnitude = intrinsic("llvm.fabs", f(in.a, 0));
+                return {Bank::Bool, words(compare(LLVMRealOEQ, magnitude, splat(std::numeric_limits<float>::infinity())))};
+            }
+            case Op::BNot: return {Bank::Bool, LLVMBuildNot(b_, b(in.a, 0), "")};
+            case Op::BAnd: return {Bank::Bool, LLVMBuildAnd(b_, b(in.a, 0), b(in.b, 1), "")};
+            case Op::BOr: return {Bank::Bool, LLVMBuildOr(b_, b(in.a, 0), b(in.b, 1), "")};
+            case Op::BXor: case Op::BNotEqual: return {Bank::Bool, LLVMBuildXor(b_, b(in.a, 0), b(in.b, 1), "")};
+            case Op::BEqual: return {Bank::Bool, LLVMBuildNot(b_, LLVMBuildXor(b_, b(in.a, 0), b(in.b, 1), ""), "")};
+            case Op::FloatFromInt: return {Bank::Float, LLVMBuildSIToFP(b_, i(in.a, 0), floats_, "")};
+            case Op::FloatFromBool: return {Bank::Float, select(truth(b(in.a, 0)), splat(1.0f), splat(0.0f))};
+            case Op::IAdd: return {Bank::Int, LLVMBuildAdd(b_, i(in.a, 0), i(in.b, 1), "")};
+            case Op::ISub: return {Bank::Int, LLVMBuildSub(b_, i(in.a, 0), i(in.b, 1), "")};
+            case Op::IMul: return {Bank::Int, LLVMBuildMul(b_, i(in.a, 0), i(in.b, 1), "")};
+            case Op::ILess: return integers(LLVMIntSLT);
+            case Op::ILessEqual: return integers(LLVMIntSLE);
+            case Op::IGreater: return integers(LLVMIntSGT);
+            case Op::IGreaterEqual: return integers(LLVMIntSGE);
+            case Op::IEqual: return integers(LLVMIntEQ);
+            case Op::INotEqual: return integers(LLVMIntNE);
+            default: {
+                const int n = arity(in.op);
+                return {Bank::Float, arithmetic(in.op, f(in.a, 0), n > 1 ? f(in.b, 1) : nullptr, n > 2 ? f(in.c, 2) : nullptr)};
+            }
+        }
+    }
+
     void instruction(const ir::Instr& in) {
         if (in.op == ir::Op::Dot) return write(in, in.d, dot(in.a, in.b, in.n));
         if (in.op == ir::Op::Length) return write(in, in.d, intrinsic("llvm.sqrt", dot(in.a, in.a, in.n)));
-        const int n = arity(in.op);
         // Component by component, in order: a later component may read an earlier one's result.
         for (std::uint32_t k = 0; k < in.n; ++k) {
-            const auto operand = [&](std::uint32_t first, int bit) { return read(first + ((in.broadcast >> bit & 1u) ? 0u : k)); };
-            LLVMValueRef x = operand(in.a, 0);
-            LLVMValueRef y = n > 1 ? operand(in.b, 1) : nullptr;
-            LLVMValueRef z = n > 2 ? operand(in.c, 2) : nullptr;
-            write(in, in.d + k, component(in.op, x, y, z));
+            const auto [bank, value] = other(in, k);
+            write(in, bank, in.d + k, value);
         }
     }
 
@@ -270,10 +341,11 @@ private:
     LLVMModuleRef m_;
     int lanes_;
     LLVMBuilderRef b_;
-    LLVMTypeRef f32_, vector_, i64_, i32_;
-    LLVMValueRef registers_ = nullptr, running_words_ = nullptr, running_ = nullptr;
-    std::map<std::uint32_t, LLVMValueRef> values_;
-    std::set<std::uint32_t> written_;
+    LLVMTypeRef f32_, i32_, i64_, floats_, words_;
+    std::array<LLVMValueRef, ir::kBanks> banks_{};
+    LLVMValueRef running_words_ = nullptr, running_ = nullptr;
+    std::map<Register, LLVMValueRef> values_;
+    std::set<Register> written_;
 };
 
 }  // namespace

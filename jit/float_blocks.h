@@ -19,8 +19,10 @@
 
 namespace qs::jit {
 
-// Whether `in` may be part of a compiled block: float arithmetic, moves and the dot products
-// and lengths of vectors, whose every lane a block computes as the vocabulary does.
+// Whether `in` may be part of a compiled block: float arithmetic and comparisons, the dot
+// products and lengths of vectors, moves and selects, bool logic, int-to-float conversions and
+// int's wrapping arithmetic and comparisons, whose every lane a block computes as the vocabulary
+// does.
 bool compilable(const ir::Instr& in);
 
 // Instructions [first, end) of a stage, every one compilable.
@@ -28,11 +30,11 @@ struct Block {
     std::uint32_t first = 0, end = 0;
 };
 
-// A compiled block: runs the block's instructions on a register file of float lanes (register r
-// at registers + r * lanes), a variable written only in the lanes where `running` (one 32-bit
-// word a lane, as the interpreter's masks hold them) is not 0 (ir::Instr::masked), as the
-// interpreter writes it.
-using BlockCode = void (*)(float* registers, const std::int32_t* running);
+// A compiled block: runs the block's instructions on the float, int and bool banks of a register
+// file (register r of a bank at its start + r * lanes; a bool one 32-bit word a lane, -1 or 0,
+// as the interpreter's masks hold it), a variable written only in the lanes where `running` (a
+// mask as well) is set (ir::Instr::masked), as the interpreter writes it.
+using BlockCode = void (*)(float* floats, std::int32_t* ints, std::int32_t* bools, const std::int32_t* running);
 
 // The lane widths blocks are compiled for: a batch, and a pair of batches as one number.
 inline constexpr int kWidths[] = {16, 32};

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <vector>
@@ -41,7 +42,8 @@ bool same(const std::vector<float>& a, const std::vector<float>& b) {
 const float kValues[] = {0.0f,   -0.0f,  1.0f,    -1.0f,  0.5f,  -2.5f,  1e-39f, 3.0e38f,  std::numeric_limits<float>::infinity(),
                          -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(), 7.25f, 1e-7f,
                          289.0f, -1e20f, 0.99999994f, 2.0f,  -0.75f, 1.5f, 100.5f, -3.0f};
-constexpr std::uint32_t kInputs = 8;  // float registers 0..7, each lane a value of kValues
+constexpr std::uint32_t kInputs = 8;     // float registers 0..7, each lane a value of kValues
+constexpr std::uint32_t kIntInputs = 4;  // int registers 0..3, each lane a value of kInts
 
 ir::Instr op(ir::Op o, std::uint32_t d, std::uint32_t a = 0, std::uint32_t b = 0, std::uint32_t c = 0, std::uint8_t n = 1) {
     ir::Instr in{.op = o};
@@ -49,79 +51,145 @@ ir::Instr op(ir::Op o, std::uint32_t d, std::uint32_t a = 0, std::uint32_t b = 0
     return in;
 }
 
+// Ints at the edges of wrapping arithmetic and of float's 24-bit significand.
+const std::int32_t kInts[] = {0, 1, -1, 7, -8, 16777217, -16777219, 2147483647, -2147483647 - 1, 123456789, 65536, -3};
+
 // A stage that runs every compilable operation, on one component and on four, with operands
 // that step and that stay, inside a branch that only some lanes take (their writes masked) and
-// after it; each result is an output, so the blocks store it.
+// after it; each result is an output, so the blocks store it. Float registers 0..7 and int
+// registers 0..3 are its inputs.
 ir::Stage every_operation() {
-    using ir::Op;
+    using ir::Bank, ir::Op;
     ir::Stage s;
     s.serial = std::uint64_t{1} << 41;
     std::vector<ir::Instr> code;
-    std::uint32_t next = kInputs;
-    const auto result = [&](std::uint32_t n) {
-        const std::uint32_t r = next;
-        next += n;
+    std::array<std::uint32_t, ir::kBanks> next{kInputs, kIntInputs, 0, 1};  // bool 0: the branch's condition
+    const auto result = [&](Bank bank, std::uint32_t n) {
+        const std::uint32_t r = next[std::size_t(bank)];
+        next[std::size_t(bank)] += n;
+        for (std::uint32_t k = 0; k < n; ++k) s.outputs.push_back({ir::Source::Color, 0, 0, bank, r + k});
         return r;
+    };
+    const auto in_bank = [](ir::Instr in, Bank bank) {
+        in.bank = bank;
+        return in;
     };
     const Op unary[] = {Op::Mov, Op::FNeg, Op::FAbs, Op::FSign, Op::FFloor, Op::FCeil, Op::FTrunc, Op::FRoundEven,
                         Op::FFract, Op::FSqrt, Op::FInverseSqrt};
     const Op binary[] = {Op::FAdd, Op::FSub, Op::FMul, Op::FDiv, Op::FMod, Op::FMin, Op::FMax, Op::FStep};
     const Op ternary[] = {Op::FClamp, Op::FMix, Op::FSmoothStep};
+    const Op comparisons[] = {Op::FLess, Op::FLessEqual, Op::FGreater, Op::FGreaterEqual, Op::FEqual, Op::FNotEqual};
+    const Op logic[] = {Op::BAnd, Op::BOr, Op::BXor, Op::BEqual, Op::BNotEqual};
+    const Op integers[] = {Op::IAdd, Op::ISub, Op::IMul, Op::ILess, Op::ILessEqual, Op::IGreater, Op::IGreaterEqual,
+                           Op::IEqual, Op::INotEqual};
     const auto operations = [&](bool masked) {
+        const std::size_t start = code.size();
         for (std::uint8_t n : {std::uint8_t(1), std::uint8_t(4)}) {
             for (std::uint32_t shift = 0; shift < 3; ++shift) {
                 const std::uint32_t a = shift, b = (shift + 3) % 4, c = (shift + 1) % 4;  // inputs 0..3 as vectors
-                for (Op o : unary) code.push_back(op(o, result(n), a, 0, 0, n));
-                for (Op o : binary) code.push_back(op(o, result(n), a, b + 4 * (shift == 2), 0, n));
-                for (Op o : ternary) code.push_back(op(o, result(n), a, b, c, n));
-                ir::Instr broadcast = op(Op::FMul, result(n), a, 7, 0, n);
+                for (Op o : unary) code.push_back(op(o, result(Bank::Float, n), a, 0, 0, n));
+                for (Op o : binary) code.push_back(op(o, result(Bank::Float, n), a, b + 4 * (shift == 2), 0, n));
+                for (Op o : ternary) code.push_back(op(o, result(Bank::Float, n), a, b, c, n));
+                ir::Instr broadcast = op(Op::FMul, result(Bank::Float, n), a, 7, 0, n);
                 broadcast.broadcast = 2;  // v * s
                 code.push_back(broadcast);
+                // Comparisons into bools, the bools' logic, and selects by them.
+                std::vector<std::uint32_t> truths;
+                for (Op o : comparisons) {
+                    truths.push_back(result(Bank::Bool, n));
+                    code.push_back(op(o, truths.back(), a, b, 0, n));
+                }
+                for (Op o : {Op::FIsNan, Op::FIsInf}) {
+                    truths.push_back(result(Bank::Bool, n));
+                    code.push_back(op(o, truths.back(), b, 0, 0, n));
+                }
+                for (std::size_t t = 0; t + 1 < truths.size(); ++t) {
+                    const Op o = logic[t % std::size(logic)];
+                    code.push_back(in_bank(op(o, result(Bank::Bool, n), truths[t], truths[t + 1], 0, n), Bank::Bool));
+                }
+                code.push_back(in_bank(op(Op::BNot, result(Bank::Bool, n), truths[0], 0, 0, n), Bank::Bool));
+                code.push_back(op(Op::Select, result(Bank::Float, n), truths[shift], a, c, n));
+                code.push_back(op(Op::FMixBool, result(Bank::Float, n), a, b, truths[shift + 1], n));
+                code.push_back(op(Op::FloatFromBool, result(Bank::Float, n), truths[shift + 2], 0, 0, n));
+                code.push_back(in_bank(op(Op::Mov, result(Bank::Bool, n), truths[shift + 3], 0, 0, n), Bank::Bool));
+                code.push_back(
+                    in_bank(op(Op::Select, result(Bank::Bool, n), truths[0], truths[1], truths[2], n), Bank::Bool));
+                if (n == 4) {  // ints 0..3 as a vector
+                    for (Op o : integers) {  // over ints 0..3 and shift..shift+3 (inputs, and results past 3)
+                        const bool compares = o >= Op::ILess;
+                        code.push_back(in_bank(op(o, result(compares ? Bank::Bool : Bank::Int, n), 0, shift, 0, n), Bank::Int));
+                    }
+                    code.push_back(op(Op::FloatFromInt, result(Bank::Float, n), shift, 0, 0, n));
+                    code.push_back(in_bank(op(Op::Mov, result(Bank::Int, n), shift, 0, 0, n), Bank::Int));
+                    code.push_back(in_bank(op(Op::Select, result(Bank::Int, n), truths[0], 0, shift, n), Bank::Int));
+                }
             }
         }
-        code.push_back(op(Op::Dot, result(1), 0, 3, 0, 4));
-        code.push_back(op(Op::Dot, result(1), 1, 2, 0, 3));
-        code.push_back(op(Op::Length, result(1), 4, 0, 0, 2));
+        code.push_back(op(Op::Dot, result(Bank::Float, 1), 0, 3, 0, 4));
+        code.push_back(op(Op::Dot, result(Bank::Float, 1), 1, 2, 0, 3));
+        code.push_back(op(Op::Length, result(Bank::Float, 1), 4, 0, 0, 2));
         // Results read again in the block, and a vector whose components read the ones before.
-        const std::uint32_t t = result(4);
+        const std::uint32_t t = result(Bank::Float, 4);
         code.push_back(op(Op::FMul, t, 0, 4, 0, 4));
         code.push_back(op(Op::FAdd, t + 1, t, 5, 0, 3));
-        code.push_back(op(Op::FFloor, result(4), t, 0, 0, 4));
+        code.push_back(op(Op::FFloor, result(Bank::Float, 4), t, 0, 0, 4));
         if (masked) {
-            for (std::size_t k = code.size() - 1; k > 0 && code[k].op != Op::If; --k) code[k].masked = true;
+            for (std::size_t k = start; k < code.size(); ++k) code[k].masked = true;
         }
     };
-    code.push_back(op(Op::FLess, 0, 6, 2));  // the lanes whose input 6 is under input 2
-    code.front().bank = ir::Bank::Bool;
-    ir::Instr branch = op(Op::If, 0, 0);
-    code.push_back(branch);
+    code.push_back(in_bank(op(Op::FLess, 0, 6, 2), Bank::Bool));  // the lanes whose input 6 is under input 2
+    code.push_back(op(Op::If, 0, 0));
     operations(true);
     code.push_back(op(Op::EndIf, 0));
     code[1].target = std::uint32_t(code.size() - 1);
     operations(false);
     s.code = std::move(code);
-    s.registers = {next, 0, 0, 1};
-    for (std::uint32_t r = kInputs; r < next; ++r) s.outputs.push_back({ir::Source::Color, 0, 0, ir::Bank::Float, r});
+    s.registers = next;
     return s;
 }
 
-// Float registers after one run of `stage` in F, the inputs set lane by lane.
+// Which value input register `reg` holds in lane l: every fourth lane the same in all registers,
+// so that comparisons meet equal operands; the others different in each.
+std::size_t value_index(int l, std::uint32_t reg, std::size_t values) {
+    return l % 4 == 0 ? std::size_t(l / 4) % values : (std::size_t(l) * 7 + reg * 5) % values;
+}
+
+// Every register after one run of `stage` in F, the inputs set lane by lane.
+struct Banks {
+    std::vector<float> floats;
+    std::vector<std::int32_t> words;  // ints, then bools
+};
 template <class F>
-std::vector<float> run(const ir::Stage& stage, std::span<const jit::BlockCode> native) {
+Banks run(const ir::Stage& stage, std::span<const jit::BlockCode> native) {
     ir::validate(stage, 0);
     interpreter::Registers<F> r;
     r.prepare(stage);
     alignas(64) float lanes[F::size];
+    alignas(64) std::int32_t words[F::size];
     for (std::uint32_t reg = 0; reg < kInputs; ++reg) {
-        for (int l = 0; l < F::size; ++l) lanes[l] = kValues[(std::size_t(l) * 7 + reg * 5) % std::size(kValues)];
+        for (int l = 0; l < F::size; ++l) lanes[l] = kValues[value_index(l, reg, std::size(kValues))];
         r.f[reg] = F::load(lanes);
     }
+    for (std::uint32_t reg = 0; reg < kIntInputs; ++reg) {
+        for (int l = 0; l < F::size; ++l) words[l] = kInts[value_index(l, reg, std::size(kInts))];
+        static_assert(sizeof(r.i[reg]) == sizeof words);
+        std::memcpy(&r.i[reg], words, sizeof words);
+    }
     interpreter::Executor<F>::run(stage, r, interpreter::TextureSlots{}, native);
-    std::vector<float> out;
+    Banks out;
     for (std::size_t reg = 0; reg < r.f.size(); ++reg) {
         r.f[reg].store(lanes);
-        out.insert(out.end(), lanes, lanes + F::size);
+        out.floats.insert(out.floats.end(), lanes, lanes + F::size);
     }
+    const auto words_of = [&](const auto& bank) {
+        static_assert(sizeof(bank[0]) == sizeof words);
+        for (std::size_t reg = 0; reg < bank.size(); ++reg) {
+            std::memcpy(words, &bank[reg], sizeof words);
+            out.words.insert(out.words.end(), words, words + F::size);
+        }
+    };
+    words_of(r.i);
+    words_of(r.b);
     return out;
 }
 
@@ -134,17 +202,20 @@ void compare_operations() {
     int markers = 0;
     for (const ir::Instr& in : compiled.code) markers += in.op == ir::Op::Native;
     CHECK(markers == 2);  // one block in the branch, one after it
-    const std::vector<float> expected = run<F>(interpreted, {}), got = run<F>(compiled, blocks->code(F::size));
-    REQUIRE(got.size() == expected.size());
+    const Banks expected = run<F>(interpreted, {}), got = run<F>(compiled, blocks->code(F::size));
+    REQUIRE(got.floats.size() == expected.floats.size());
     std::size_t differ = 0, first = 0;
-    for (std::size_t i = 0; i < got.size(); ++i) {
-        if (!same_bits(got[i], expected[i]) && differ++ == 0) first = i;
+    for (std::size_t i = 0; i < got.floats.size(); ++i) {
+        if (!same_bits(got.floats[i], expected.floats[i]) && differ++ == 0) first = i;
     }
-    INFO(F::size << " lanes: " << differ << " values differ, the first in register " << first / F::size << ", lane "
-                 << first % F::size << ": " << got[first] << " for " << expected[first]);
+    INFO(F::size << " lanes: " << differ << " floats differ, the first in register " << first / F::size << ", lane "
+                 << first % F::size << ": " << got.floats[first] << " for " << expected.floats[first]);
     CHECK(differ == 0);
+    CHECK(got.words == expected.words);
     // The same stage run by a number type that has no compiled blocks runs the instructions.
-    CHECK(same(run<F>(compiled, {}), expected));
+    const Banks instructions = run<F>(compiled, {});
+    CHECK(same(instructions.floats, expected.floats));
+    CHECK(instructions.words == expected.words);
 }
 
 // A GLSL pair as a program whose float arithmetic runs compiled or interpreted.
