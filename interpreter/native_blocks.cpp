@@ -12,7 +12,8 @@ bool jumps(ir::Op op) {
     return op == ir::Op::If || op == ir::Op::Else || op == ir::Op::LoopBegin || op == ir::Op::LoopEnd;
 }
 
-// The maximal runs of compilable instructions that nothing jumps into but at their first.
+// The maximal runs of compilable instructions that nothing jumps into but at their first, cut
+// at kLongestBlock, up to kMostCompiled instructions in all.
 std::vector<jit::Block> find_blocks(const ir::Stage& stage) {
     const std::vector<ir::Instr>& code = stage.code;
     std::vector<bool> target(code.size() + 1, false);
@@ -20,14 +21,18 @@ std::vector<jit::Block> find_blocks(const ir::Stage& stage) {
         if (jumps(in.op)) target[in.target] = true;
     }
     std::vector<jit::Block> blocks;
+    std::uint32_t compiled = 0;
     for (std::uint32_t first = 0; first < code.size();) {
         if (!jit::compilable(code[first])) {
             ++first;
             continue;
         }
         std::uint32_t end = first + 1;
-        while (end < code.size() && jit::compilable(code[end]) && !target[end]) ++end;
-        if (end - first >= kShortestBlock && blocks.size() < kMostBlocks) blocks.push_back({first, end});
+        while (end < code.size() && end - first < kLongestBlock && jit::compilable(code[end]) && !target[end]) ++end;
+        if (end - first >= kShortestBlock && blocks.size() < kMostBlocks && compiled + (end - first) <= kMostCompiled) {
+            blocks.push_back({first, end});
+            compiled += end - first;
+        }
         first = end;
     }
     return blocks;

@@ -17,6 +17,12 @@ namespace qs::interpreter {
 
 // The fewest instructions a block takes: a shorter run costs more in the call than it saves.
 inline constexpr std::uint32_t kShortestBlock = 2;
+// The most a block takes: LLVM's register allocation takes more than linear time in a block's
+// length (5x Perlin's 768 instructions compile in 0.15 s a width), so a longer run is cut.
+inline constexpr std::uint32_t kLongestBlock = 1024;
+// The most instructions a stage compiles, about a second and a half of LLVM's time: past them a
+// huge shader runs interpreted, its first image not held up.
+inline constexpr std::uint32_t kMostCompiled = 4096;
 
 // Compiles the blocks of `stage` and marks them in its code, jump targets moved onto each
 // block's marker. Returns nullptr, the stage unchanged, where it has no block. Throws

@@ -1,22 +1,15 @@
 #include "jit/float_blocks.h"
 
-#include <llvm-c/Core.h>
-#include <llvm-c/Error.h>
-#include <llvm-c/LLJIT.h>
-#include <llvm-c/Orc.h>
-#include <llvm-c/Target.h>
-#include <llvm-c/TargetMachine.h>
-
 #include <array>
 #include <cstring>
 #include <limits>
 #include <utility>
 #include <map>
-#include <mutex>
 #include <set>
 #include <string>
 
 #include "frontend/ir_operands.h"
+#include "jit/llvm_api.h"
 
 namespace qs::jit {
 
@@ -45,20 +38,14 @@ namespace {
 
 // LLVM's error as a JitError, the error consumed.
 [[noreturn]] void fail(LLVMErrorRef error, const std::string& what) {
-    char* message = LLVMGetErrorMessage(error);
+    const LlvmApi& api = llvm();
+    char* message = api.LLVMGetErrorMessage(error);
     const std::string text = what + ": " + message;
-    LLVMDisposeErrorMessage(message);
+    api.LLVMDisposeErrorMessage(message);
     throw JitError(text);
 }
 void check(LLVMErrorRef error, const char* what) {
     if (error) fail(error, what);
-}
-
-void initialise_llvm() {
-    static std::once_flag once;
-    static bool ready = false;
-    std::call_once(once, [] { ready = LLVMInitializeNativeTarget() == 0 && LLVMInitializeNativeAsmPrinter() == 0; });
-    if (!ready) throw JitError("LLVM has no code generator for this machine");
 }
 
 // A register of one bank.
@@ -82,16 +69,22 @@ std::set<Register> read_after(const ir::Stage& stage, const Block& block, std::s
             return live;
         }
         if (in.op >= ir::Op::If) crossed = true;
-        for (const ir::Operand& o : ir::operands(in)) {
-            const std::uint32_t first = ir::field(in, o.field);
-            for (auto it = written.lower_bound({o.bank, first}); it != written.end() && it->bank == o.bank && it->index < first + o.span;) {
-                if (!o.written) {
-                    live.insert(*it);
-                    it = written.erase(it);
-                } else if (!crossed && !in.masked) {
-                    it = written.erase(it);
-                } else {
-                    ++it;
+        // An operation reads its operands before it writes its result: reads first.
+        const ir::Operands operands = ir::operands(in);
+        for (bool writes : {false, true}) {
+            for (const ir::Operand& o : operands) {
+                if (o.written != writes) continue;
+                const std::uint32_t first = ir::field(in, o.field);
+                for (auto it = written.lower_bound({o.bank, first});
+                     it != written.end() && it->bank == o.bank && it->index < first + o.span;) {
+                    if (!writes) {
+                        live.insert(*it);
+                        it = written.erase(it);
+                    } else if (!crossed && !in.masked) {
+                        it = written.erase(it);
+                    } else {
+                        ++it;
+                    }
                 }
             }
         }
@@ -118,19 +111,20 @@ int arity(ir::Op op) {
 // fast (a block is arithmetic in one straight line, which the default level's passes do not
 // speed up); level "none" runs Perlin noise 1.7 times as long.
 LLVMTargetMachineRef host_machine() {
-    char* triple = LLVMGetDefaultTargetTriple();
-    char* cpu = LLVMGetHostCPUName();
-    char* features = LLVMGetHostCPUFeatures();
+    const LlvmApi& api = llvm();
+    char* triple = api.LLVMGetDefaultTargetTriple();
+    char* cpu = api.LLVMGetHostCPUName();
+    char* features = api.LLVMGetHostCPUFeatures();
     LLVMTargetRef target = nullptr;
     char* error = nullptr;
     LLVMTargetMachineRef machine = nullptr;
-    if (LLVMGetTargetFromTriple(triple, &target, &error) == 0) {
-        machine = LLVMCreateTargetMachine(target, triple, cpu, features, LLVMCodeGenLevelLess, LLVMRelocDefault,
+    if (api.LLVMGetTargetFromTriple(triple, &target, &error) == 0) {
+        machine = api.LLVMCreateTargetMachine(target, triple, cpu, features, LLVMCodeGenLevelLess, LLVMRelocDefault,
                                           LLVMCodeModelJITDefault);
     }
     const std::string why = error ? error : "no target machine";
-    LLVMDisposeMessage(triple), LLVMDisposeMessage(cpu), LLVMDisposeMessage(features);
-    if (error) LLVMDisposeMessage(error);
+    api.LLVMDisposeMessage(triple), api.LLVMDisposeMessage(cpu), api.LLVMDisposeMessage(features);
+    if (error) api.LLVMDisposeMessage(error);
     if (!machine) throw JitError("LLVM does not know this machine: " + why);
     return machine;
 }
@@ -141,54 +135,54 @@ LLVMTargetMachineRef host_machine() {
 class BlockWriter {
 public:
     BlockWriter(LLVMContextRef context, LLVMModuleRef module, int lanes)
-        : c_(context), m_(module), lanes_(lanes), b_(LLVMCreateBuilderInContext(context)) {
-        f32_ = LLVMFloatTypeInContext(c_);
-        i32_ = LLVMInt32TypeInContext(c_);
-        i64_ = LLVMInt64TypeInContext(c_);
-        floats_ = LLVMVectorType(f32_, unsigned(lanes));
-        words_ = LLVMVectorType(i32_, unsigned(lanes));
+        : api_(llvm()), c_(context), m_(module), lanes_(lanes), b_(api_.LLVMCreateBuilderInContext(context)) {
+        f32_ = api_.LLVMFloatTypeInContext(c_);
+        i32_ = api_.LLVMInt32TypeInContext(c_);
+        i64_ = api_.LLVMInt64TypeInContext(c_);
+        floats_ = api_.LLVMVectorType(f32_, unsigned(lanes));
+        words_ = api_.LLVMVectorType(i32_, unsigned(lanes));
     }
-    ~BlockWriter() { LLVMDisposeBuilder(b_); }
+    ~BlockWriter() { api_.LLVMDisposeBuilder(b_); }
 
     void write(const ir::Stage& stage, const Block& block, const std::string& name) {
-        LLVMTypeRef params[] = {LLVMPointerType(f32_, 0), LLVMPointerType(i32_, 0), LLVMPointerType(i32_, 0),
-                                LLVMPointerType(i32_, 0)};
-        LLVMTypeRef type = LLVMFunctionType(LLVMVoidTypeInContext(c_), params, 4, 0);
-        LLVMValueRef fn = LLVMAddFunction(m_, name.c_str(), type);
+        LLVMTypeRef params[] = {api_.LLVMPointerType(f32_, 0), api_.LLVMPointerType(i32_, 0), api_.LLVMPointerType(i32_, 0),
+                                api_.LLVMPointerType(i32_, 0)};
+        LLVMTypeRef type = api_.LLVMFunctionType(api_.LLVMVoidTypeInContext(c_), params, 4, 0);
+        LLVMValueRef fn = api_.LLVMAddFunction(m_, name.c_str(), type);
         if (lanes_ * 32 >= 512) {  // whole 512-bit registers where the machine has them
             for (const char* key : {"prefer-vector-width", "min-legal-vector-width"}) {
-                LLVMAddAttributeAtIndex(fn, LLVMAttributeFunctionIndex,
-                                        LLVMCreateStringAttribute(c_, key, unsigned(std::strlen(key)), "512", 3));
+                api_.LLVMAddAttributeAtIndex(fn, LLVMAttributeFunctionIndex,
+                                        api_.LLVMCreateStringAttribute(c_, key, unsigned(std::strlen(key)), "512", 3));
             }
         }
-        LLVMPositionBuilderAtEnd(b_, LLVMAppendBasicBlockInContext(c_, fn, "entry"));
-        banks_[std::size_t(ir::Bank::Float)] = LLVMGetParam(fn, 0);
-        banks_[std::size_t(ir::Bank::Int)] = LLVMGetParam(fn, 1);
-        banks_[std::size_t(ir::Bank::Bool)] = LLVMGetParam(fn, 2);
-        running_words_ = LLVMGetParam(fn, 3);
+        api_.LLVMPositionBuilderAtEnd(b_, api_.LLVMAppendBasicBlockInContext(c_, fn, "entry"));
+        banks_[std::size_t(ir::Bank::Float)] = api_.LLVMGetParam(fn, 0);
+        banks_[std::size_t(ir::Bank::Int)] = api_.LLVMGetParam(fn, 1);
+        banks_[std::size_t(ir::Bank::Bool)] = api_.LLVMGetParam(fn, 2);
+        running_words_ = api_.LLVMGetParam(fn, 3);
         running_ = nullptr;
         values_.clear();
         written_.clear();
         for (std::uint32_t k = block.first; k < block.end; ++k) instruction(stage.code[k]);
         for (const Register& r : read_after(stage, block, written_)) {
-            LLVMValueRef store = LLVMBuildStore(b_, values_.at(r), address(r));
-            LLVMSetAlignment(store, 64);
+            LLVMValueRef store = api_.LLVMBuildStore(b_, values_.at(r), address(r));
+            api_.LLVMSetAlignment(store, 64);
         }
-        LLVMBuildRetVoid(b_);
+        api_.LLVMBuildRetVoid(b_);
     }
 
 private:
     LLVMValueRef address(Register r) {
-        LLVMValueRef index = LLVMConstInt(i64_, std::uint64_t(r.index) * std::uint64_t(lanes_), 0);
-        return LLVMBuildGEP2(b_, r.bank == ir::Bank::Float ? f32_ : i32_, banks_[std::size_t(r.bank)], &index, 1, "");
+        LLVMValueRef index = api_.LLVMConstInt(i64_, std::uint64_t(r.index) * std::uint64_t(lanes_), 0);
+        return api_.LLVMBuildGEP2(b_, r.bank == ir::Bank::Float ? f32_ : i32_, banks_[std::size_t(r.bank)], &index, 1, "");
     }
     // A register's value: computed in the block, or loaded once.
     LLVMValueRef read(ir::Bank bank, std::uint32_t index) {
         const Register r{bank, index};
         auto it = values_.find(r);
         if (it != values_.end()) return it->second;
-        LLVMValueRef load = LLVMBuildLoad2(b_, bank == ir::Bank::Float ? floats_ : words_, address(r), "");
-        LLVMSetAlignment(load, 64);
+        LLVMValueRef load = api_.LLVMBuildLoad2(b_, bank == ir::Bank::Float ? floats_ : words_, address(r), "");
+        api_.LLVMSetAlignment(load, 64);
         values_[r] = load;
         return load;
     }
@@ -196,8 +190,8 @@ private:
     // The running lanes, loaded where the block first writes a variable.
     LLVMValueRef running() {
         if (!running_) {
-            LLVMValueRef mask = LLVMBuildLoad2(b_, words_, running_words_, "");
-            LLVMSetAlignment(mask, 64);
+            LLVMValueRef mask = api_.LLVMBuildLoad2(b_, words_, running_words_, "");
+            api_.LLVMSetAlignment(mask, 64);
             running_ = truth(mask);
         }
         return running_;
@@ -211,25 +205,25 @@ private:
 
     LLVMValueRef splat(LLVMValueRef x) {
         std::vector<LLVMValueRef> lanes(std::size_t(lanes_), x);
-        return LLVMConstVector(lanes.data(), unsigned(lanes_));
+        return api_.LLVMConstVector(lanes.data(), unsigned(lanes_));
     }
-    LLVMValueRef splat(float x) { return splat(LLVMConstReal(f32_, double(x))); }
+    LLVMValueRef splat(float x) { return splat(api_.LLVMConstReal(f32_, double(x))); }
     LLVMValueRef intrinsic(const char* name, LLVMValueRef x) {
-        const unsigned id = LLVMLookupIntrinsicID(name, std::strlen(name));
+        const unsigned id = api_.LLVMLookupIntrinsicID(name, std::strlen(name));
         LLVMTypeRef types[] = {floats_};
-        LLVMValueRef fn = LLVMGetIntrinsicDeclaration(m_, id, types, 1);
-        return LLVMBuildCall2(b_, LLVMIntrinsicGetType(c_, id, types, 1), fn, &x, 1, "");
+        LLVMValueRef fn = api_.LLVMGetIntrinsicDeclaration(m_, id, types, 1);
+        return api_.LLVMBuildCall2(b_, api_.LLVMIntrinsicGetType(c_, id, types, 1), fn, &x, 1, "");
     }
     // A bool's lanes as LLVM's i1, and back as the interpreter's -1 or 0.
-    LLVMValueRef truth(LLVMValueRef words) { return LLVMBuildICmp(b_, LLVMIntNE, words, LLVMConstNull(words_), ""); }
-    LLVMValueRef words(LLVMValueRef truth) { return LLVMBuildSExt(b_, truth, words_, ""); }
-    LLVMValueRef compare(LLVMRealPredicate p, LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFCmp(b_, p, x, y, ""); }
+    LLVMValueRef truth(LLVMValueRef words) { return api_.LLVMBuildICmp(b_, LLVMIntNE, words, api_.LLVMConstNull(words_), ""); }
+    LLVMValueRef words(LLVMValueRef truth) { return api_.LLVMBuildSExt(b_, truth, words_, ""); }
+    LLVMValueRef compare(LLVMRealPredicate p, LLVMValueRef x, LLVMValueRef y) { return api_.LLVMBuildFCmp(b_, p, x, y, ""); }
     LLVMValueRef less(LLVMValueRef x, LLVMValueRef y) { return compare(LLVMRealOLT, x, y); }
-    LLVMValueRef select(LLVMValueRef m, LLVMValueRef x, LLVMValueRef y) { return LLVMBuildSelect(b_, m, x, y, ""); }
-    LLVMValueRef add(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFAdd(b_, x, y, ""); }
-    LLVMValueRef sub(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFSub(b_, x, y, ""); }
-    LLVMValueRef mul(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFMul(b_, x, y, ""); }
-    LLVMValueRef div(LLVMValueRef x, LLVMValueRef y) { return LLVMBuildFDiv(b_, x, y, ""); }
+    LLVMValueRef select(LLVMValueRef m, LLVMValueRef x, LLVMValueRef y) { return api_.LLVMBuildSelect(b_, m, x, y, ""); }
+    LLVMValueRef add(LLVMValueRef x, LLVMValueRef y) { return api_.LLVMBuildFAdd(b_, x, y, ""); }
+    LLVMValueRef sub(LLVMValueRef x, LLVMValueRef y) { return api_.LLVMBuildFSub(b_, x, y, ""); }
+    LLVMValueRef mul(LLVMValueRef x, LLVMValueRef y) { return api_.LLVMBuildFMul(b_, x, y, ""); }
+    LLVMValueRef div(LLVMValueRef x, LLVMValueRef y) { return api_.LLVMBuildFDiv(b_, x, y, ""); }
     LLVMValueRef floor(LLVMValueRef x) { return intrinsic("llvm.floor", x); }
     // GLSL min and max as the lanes compute them (number/lanes.h): a NaN b loses to a, and
     // otherwise a < b ? a : b, which is minps.
@@ -247,7 +241,7 @@ private:
     LLVMValueRef arithmetic(ir::Op op, LLVMValueRef x, LLVMValueRef y, LLVMValueRef z) {
         using ir::Op;
         switch (op) {
-            case Op::FNeg: return LLVMBuildFNeg(b_, x, "");
+            case Op::FNeg: return api_.LLVMBuildFNeg(b_, x, "");
             case Op::FAdd: return add(x, y);
             case Op::FSub: return sub(x, y);
             case Op::FMul: return mul(x, y);
@@ -287,7 +281,7 @@ private:
         const auto i = [&](std::uint32_t first, int bit) { return read(Bank::Int, at(first, bit)); };
         const auto compared = [&](LLVMRealPredicate p) { return std::pair{Bank::Bool, words(compare(p, f(in.a, 0), f(in.b, 1)))}; };
         const auto integers = [&](LLVMIntPredicate p) {
-            return std::pair{Bank::Bool, words(LLVMBuildICmp(b_, p, i(in.a, 0), i(in.b, 1), ""))};
+            return std::pair{Bank::Bool, words(api_.LLVMBuildICmp(b_, p, i(in.a, 0), i(in.b, 1), ""))};
         };
         switch (in.op) {
             case Op::Mov: return {in.bank, read(in.bank, at(in.a, 0))};
@@ -304,16 +298,16 @@ private:
                 LLVMValueRef magnitude = intrinsic("llvm.fabs", f(in.a, 0));
                 return {Bank::Bool, words(compare(LLVMRealOEQ, magnitude, splat(std::numeric_limits<float>::infinity())))};
             }
-            case Op::BNot: return {Bank::Bool, LLVMBuildNot(b_, b(in.a, 0), "")};
-            case Op::BAnd: return {Bank::Bool, LLVMBuildAnd(b_, b(in.a, 0), b(in.b, 1), "")};
-            case Op::BOr: return {Bank::Bool, LLVMBuildOr(b_, b(in.a, 0), b(in.b, 1), "")};
-            case Op::BXor: case Op::BNotEqual: return {Bank::Bool, LLVMBuildXor(b_, b(in.a, 0), b(in.b, 1), "")};
-            case Op::BEqual: return {Bank::Bool, LLVMBuildNot(b_, LLVMBuildXor(b_, b(in.a, 0), b(in.b, 1), ""), "")};
-            case Op::FloatFromInt: return {Bank::Float, LLVMBuildSIToFP(b_, i(in.a, 0), floats_, "")};
+            case Op::BNot: return {Bank::Bool, api_.LLVMBuildNot(b_, b(in.a, 0), "")};
+            case Op::BAnd: return {Bank::Bool, api_.LLVMBuildAnd(b_, b(in.a, 0), b(in.b, 1), "")};
+            case Op::BOr: return {Bank::Bool, api_.LLVMBuildOr(b_, b(in.a, 0), b(in.b, 1), "")};
+            case Op::BXor: case Op::BNotEqual: return {Bank::Bool, api_.LLVMBuildXor(b_, b(in.a, 0), b(in.b, 1), "")};
+            case Op::BEqual: return {Bank::Bool, api_.LLVMBuildNot(b_, api_.LLVMBuildXor(b_, b(in.a, 0), b(in.b, 1), ""), "")};
+            case Op::FloatFromInt: return {Bank::Float, api_.LLVMBuildSIToFP(b_, i(in.a, 0), floats_, "")};
             case Op::FloatFromBool: return {Bank::Float, select(truth(b(in.a, 0)), splat(1.0f), splat(0.0f))};
-            case Op::IAdd: return {Bank::Int, LLVMBuildAdd(b_, i(in.a, 0), i(in.b, 1), "")};
-            case Op::ISub: return {Bank::Int, LLVMBuildSub(b_, i(in.a, 0), i(in.b, 1), "")};
-            case Op::IMul: return {Bank::Int, LLVMBuildMul(b_, i(in.a, 0), i(in.b, 1), "")};
+            case Op::IAdd: return {Bank::Int, api_.LLVMBuildAdd(b_, i(in.a, 0), i(in.b, 1), "")};
+            case Op::ISub: return {Bank::Int, api_.LLVMBuildSub(b_, i(in.a, 0), i(in.b, 1), "")};
+            case Op::IMul: return {Bank::Int, api_.LLVMBuildMul(b_, i(in.a, 0), i(in.b, 1), "")};
             case Op::ILess: return integers(LLVMIntSLT);
             case Op::ILessEqual: return integers(LLVMIntSLE);
             case Op::IGreater: return integers(LLVMIntSGT);
@@ -337,6 +331,7 @@ private:
         }
     }
 
+    const LlvmApi& api_;
     LLVMContextRef c_;
     LLVMModuleRef m_;
     int lanes_;
@@ -353,44 +348,45 @@ private:
 struct CompiledBlocks::Session {
     LLVMOrcLLJITRef jit = nullptr;
     ~Session() {
-        if (jit) LLVMConsumeError(LLVMOrcDisposeLLJIT(jit));
+        if (jit) llvm().LLVMConsumeError(llvm().LLVMOrcDisposeLLJIT(jit));
     }
 };
 
 CompiledBlocks::CompiledBlocks(const ir::Stage& stage, std::span<const Block> blocks) : session_(std::make_unique<Session>()) {
-    initialise_llvm();
+    const LlvmApi& api = llvm();
     LLVMTargetMachineRef host = host_machine();
-    LLVMOrcLLJITBuilderRef builder = LLVMOrcCreateLLJITBuilder();
-    LLVMOrcLLJITBuilderSetJITTargetMachineBuilder(builder, LLVMOrcJITTargetMachineBuilderCreateFromTargetMachine(host));
-    check(LLVMOrcCreateLLJIT(&session_->jit, builder), "LLVM's compiler did not start");
+    LLVMOrcLLJITBuilderRef builder = api.LLVMOrcCreateLLJITBuilder();
+    api.LLVMOrcLLJITBuilderSetJITTargetMachineBuilder(builder, api.LLVMOrcJITTargetMachineBuilderCreateFromTargetMachine(host));
+    check(api.LLVMOrcCreateLLJIT(&session_->jit, builder), "LLVM's compiler did not start");
 
     // The module's functions: every block for each width.
     struct Module {
-        LLVMOrcThreadSafeContextRef context = LLVMOrcCreateNewThreadSafeContext();
-        LLVMModuleRef module = LLVMModuleCreateWithNameInContext("quadshade blocks", LLVMOrcThreadSafeContextGetContext(context));
+        const LlvmApi& api;
+        LLVMOrcThreadSafeContextRef context = api.LLVMOrcCreateNewThreadSafeContext();
+        LLVMModuleRef module = api.LLVMModuleCreateWithNameInContext("quadshade blocks", api.LLVMOrcThreadSafeContextGetContext(context));
         ~Module() {
-            if (module) LLVMDisposeModule(module);
-            LLVMOrcDisposeThreadSafeContext(context);
+            if (module) api.LLVMDisposeModule(module);
+            api.LLVMOrcDisposeThreadSafeContext(context);
         }
-    } m;
+    } m{api};
     std::vector<std::string> names;
     for (int lanes : kWidths) {
-        BlockWriter writer(LLVMOrcThreadSafeContextGetContext(m.context), m.module, lanes);
+        BlockWriter writer(api.LLVMOrcThreadSafeContextGetContext(m.context), m.module, lanes);
         for (std::size_t i = 0; i < blocks.size(); ++i) {
             names.push_back("block" + std::to_string(i) + "_" + std::to_string(lanes));
             writer.write(stage, blocks[i], names.back());
         }
     }
-    LLVMOrcThreadSafeModuleRef owned = LLVMOrcCreateNewThreadSafeModule(m.module, m.context);
+    LLVMOrcThreadSafeModuleRef owned = api.LLVMOrcCreateNewThreadSafeModule(m.module, m.context);
     m.module = nullptr;  // the thread-safe module owns it, and shares the context
-    check(LLVMOrcLLJITAddLLVMIRModule(session_->jit, LLVMOrcLLJITGetMainJITDylib(session_->jit), owned),  // takes it
+    check(api.LLVMOrcLLJITAddLLVMIRModule(session_->jit, api.LLVMOrcLLJITGetMainJITDylib(session_->jit), owned),  // takes it
           "LLVM did not take the compiled blocks");
     std::size_t next = 0;
     for (int lanes : kWidths) {
         std::vector<BlockCode>& code = lanes == kWidths[0] ? narrow_ : wide_;
         for (std::size_t i = 0; i < blocks.size(); ++i) {
             LLVMOrcExecutorAddress address = 0;
-            check(LLVMOrcLLJITLookup(session_->jit, &address, names[next++].c_str()), "LLVM did not compile a block");
+            check(api.LLVMOrcLLJITLookup(session_->jit, &address, names[next++].c_str()), "LLVM did not compile a block");
             code.push_back(reinterpret_cast<BlockCode>(address));
         }
     }

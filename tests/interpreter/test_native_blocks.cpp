@@ -326,3 +326,43 @@ TEST_CASE("every catalogue shader's GLSL renders the same with its float arithme
     CHECK(compared > 300);
     CHECK(with_blocks > 100);  // nearly every shader has a straight run of float arithmetic
 }
+
+TEST_CASE("a block stores what the operation after it reads, even one that then writes it", "[interpreter][blocks]") {
+    using ir::Op;
+    ir::Stage interpreted;
+    interpreted.serial = std::uint64_t{1} << 43;
+    interpreted.registers = {kInputs + 2, kIntInputs, 0, 0};
+    const std::uint32_t x = kInputs, y = kInputs + 1;
+    interpreted.code = {op(Op::FMul, x, 0, 1), op(Op::FAdd, x, x, 2), op(Op::FExp, y, 3), op(Op::FMul, x, x, 4)};
+    for (std::uint32_t r : {x, y}) interpreted.outputs.push_back({ir::Source::Color, 0, 0, ir::Bank::Float, r});
+    ir::Stage compiled = interpreted;
+    const std::unique_ptr<jit::CompiledBlocks> blocks = interpreter::compile_blocks(compiled);
+    REQUIRE(blocks);
+    REQUIRE(compiled.code.front().op == Op::Native);
+    using F = Pixels<float, jit::kWidths[0]>;
+    CHECK(same(run<F>(compiled, blocks->code(F::size)).floats, run<F>(interpreted, {}).floats));
+}
+
+TEST_CASE("a long run is cut into blocks, and a huge stage compiles only its first instructions",
+          "[interpreter][blocks]") {
+    ir::Stage interpreted;
+    interpreted.serial = std::uint64_t{1} << 42;
+    interpreted.registers = {kInputs + 2, kIntInputs, 0, 0};
+    const std::uint32_t sum = kInputs, other = kInputs + 1;
+    interpreted.code.push_back(op(ir::Op::Mov, sum, 0));
+    for (std::uint32_t k = 0; k < interpreter::kMostCompiled + 900; ++k) {
+        interpreted.code.push_back(op(k % 3 ? ir::Op::FAdd : ir::Op::FMul, k % 2 ? sum : other, sum, 1 + k % 6));
+    }
+    for (std::uint32_t r : {sum, other}) interpreted.outputs.push_back({ir::Source::Color, 0, 0, ir::Bank::Float, r});
+    ir::Stage compiled = interpreted;
+    const std::unique_ptr<jit::CompiledBlocks> blocks = interpreter::compile_blocks(compiled);
+    REQUIRE(blocks);
+    std::vector<std::uint32_t> lengths;
+    for (std::size_t k = 0; k < compiled.code.size(); ++k) {
+        if (compiled.code[k].op == ir::Op::Native) lengths.push_back(compiled.code[k].target - std::uint32_t(k) - 1);
+    }
+    CHECK(lengths == std::vector<std::uint32_t>(interpreter::kMostCompiled / interpreter::kLongestBlock, interpreter::kLongestBlock));
+    using F = Pixels<float, jit::kWidths[1]>;
+    const Banks expected = run<F>(interpreted, {}), got = run<F>(compiled, blocks->code(F::size));
+    CHECK(same(got.floats, expected.floats));
+}
