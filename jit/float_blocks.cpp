@@ -57,8 +57,8 @@ struct Register {
 
 // The registers of `written` that the stage may read after `block`: scanning on from the block's
 // end, one is read before an unmasked write replaces it, or a loop around the block goes round
-// first, or it is an output at the end. A write after a control-flow marker might not run, so
-// it replaces nothing for sure.
+// first, or it is an output at the end. A write after a control-flow marker might not run, and
+// an indexed store writes one element a lane, so neither replaces anything for sure.
 std::set<Register> read_after(const ir::Stage& stage, const Block& block, std::set<Register> written) {
     std::set<Register> live;
     bool crossed = false;
@@ -80,7 +80,7 @@ std::set<Register> read_after(const ir::Stage& stage, const Block& block, std::s
                     if (!writes) {
                         live.insert(*it);
                         it = written.erase(it);
-                    } else if (!crossed && !in.masked) {
+                    } else if (!crossed && !in.masked && in.op != ir::Op::StoreIndexed) {  // a whole write
                         it = written.erase(it);
                     } else {
                         ++it;

@@ -327,7 +327,8 @@ TEST_CASE("every catalogue shader's GLSL renders the same with its float arithme
     CHECK(with_blocks > 100);  // nearly every shader has a straight run of float arithmetic
 }
 
-TEST_CASE("a block stores what the operation after it reads, even one that then writes it", "[interpreter][blocks]") {
+TEST_CASE("a block stores what the operations after it read: one that then writes it, an indexed store's other elements",
+          "[interpreter][blocks]") {
     using ir::Op;
     ir::Stage interpreted;
     interpreted.serial = std::uint64_t{1} << 43;
@@ -335,12 +336,23 @@ TEST_CASE("a block stores what the operation after it reads, even one that then 
     const std::uint32_t x = kInputs, y = kInputs + 1;
     interpreted.code = {op(Op::FMul, x, 0, 1), op(Op::FAdd, x, x, 2), op(Op::FExp, y, 3), op(Op::FMul, x, x, 4)};
     for (std::uint32_t r : {x, y}) interpreted.outputs.push_back({ir::Source::Color, 0, 0, ir::Bank::Float, r});
-    ir::Stage compiled = interpreted;
-    const std::unique_ptr<jit::CompiledBlocks> blocks = interpreter::compile_blocks(compiled);
-    REQUIRE(blocks);
-    REQUIRE(compiled.code.front().op == Op::Native);
-    using F = Pixels<float, jit::kWidths[0]>;
-    CHECK(same(run<F>(compiled, blocks->code(F::size)).floats, run<F>(interpreted, {}).floats));
+    // An array whose elements a block writes, then an indexed store writes one of in each lane.
+    ir::Stage array = interpreted;
+    const std::uint32_t elements = kInputs;
+    ir::Instr store = op(Op::StoreIndexed, elements, 5, 0);
+    store.count = 4, store.c = 1;
+    array.registers = {kInputs + 5, kIntInputs, 0, 0};
+    array.code = {op(Op::FMul, elements, 0, 4, 0, 4), op(Op::FAdd, elements + 4, elements, 1), store};
+    array.outputs.clear();
+    for (std::uint32_t r = elements; r < elements + 5; ++r) array.outputs.push_back({ir::Source::Color, 0, 0, ir::Bank::Float, r});
+    for (const ir::Stage& given : {interpreted, array}) {
+        ir::Stage compiled = given;
+        const std::unique_ptr<jit::CompiledBlocks> blocks = interpreter::compile_blocks(compiled);
+        REQUIRE(blocks);
+        REQUIRE(compiled.code.front().op == Op::Native);
+        using F = Pixels<float, jit::kWidths[0]>;
+        CHECK(same(run<F>(compiled, blocks->code(F::size)).floats, run<F>(given, {}).floats));
+    }
 }
 
 TEST_CASE("a long run is cut into blocks, and a huge stage compiles only its first instructions",
