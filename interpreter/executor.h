@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "frontend/ir.h"
-#include "jit/float_blocks.h"
+#include "jit/compiled_blocks.h"
 #include "shading/glsl.h"
 #include "shading/glsl/float_functions.h"
 #include "shading/glsl/hyperbolic.h"

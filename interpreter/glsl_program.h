@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "frontend/compile.h"
-#include "jit/float_blocks.h"
+#include "jit/compiled_blocks.h"
 #include "shading/program.h"
 
 namespace qs::interpreter {

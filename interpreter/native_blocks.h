@@ -1,5 +1,5 @@
 #pragma once
-// The compiled blocks of a stage the interpreter runs (jit/float_blocks.h): its straight runs of
+// The compiled blocks of a stage the interpreter runs (jit/compiled_blocks.h): its straight runs of
 // float arithmetic, compiled for float lanes, each marked in the code by an ir::Op::Native
 // before its first instruction. Float lanes run the block's machine code and jump past its
 // instructions; the other number types (double, Dual2, the undefined-case check) run the
@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "frontend/ir.h"
-#include "jit/float_blocks.h"
+#include "jit/compiled_blocks.h"
 #include "shading/number/integer.h"
 #include "shading/number/lanes.h"
 #include "shading/number/number.h"

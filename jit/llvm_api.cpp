@@ -5,7 +5,7 @@
 #include <mutex>
 #include <string>
 
-#include "jit/float_blocks.h"
+#include "jit/compiled_blocks.h"
 
 namespace qs::jit {
 

@@ -40,7 +40,7 @@ struct LlvmApi {
 };
 
 // The interface, loaded and this machine's code generator initialised on the first call. Throws
-// JitError (float_blocks.h) naming the library or the function that is missing.
+// JitError (compiled_blocks.h) naming the library or the function that is missing.
 const LlvmApi& llvm();
 
 }  // namespace qs::jit

@@ -1,4 +1,4 @@
-// The compiled blocks (interpreter/native_blocks.h, jit/float_blocks.h) compute the bits the
+// The compiled blocks (interpreter/native_blocks.h, jit/compiled_blocks.h) compute the bits the
 // interpreter computes: every operation they take, on values that reach each rule's edge cases,
 // in every lane, masked and not; loops that read a block's results when they go round; and every
 // catalogue shader's GLSL, image against image, under each rule.

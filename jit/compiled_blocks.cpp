@@ -1,12 +1,12 @@
-#include "jit/float_blocks.h"
+#include "jit/compiled_blocks.h"
 
 #include <array>
 #include <cstring>
 #include <limits>
-#include <utility>
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "frontend/ir_operands.h"
 #include "jit/llvm_api.h"
@@ -48,6 +48,10 @@ void check(LLVMErrorRef error, const char* what) {
     if (error) fail(error, what);
 }
 
+// How far past a block its liveness is followed; what is still unsettled there is stored. It
+// bounds the compile of a huge shader's many blocks.
+constexpr std::size_t kLongestScan = 1u << 14;
+
 // A register of one bank.
 struct Register {
     ir::Bank bank;
@@ -64,7 +68,7 @@ std::set<Register> read_after(const ir::Stage& stage, const Block& block, std::s
     bool crossed = false;
     for (std::size_t j = block.end; j < stage.code.size() && !written.empty(); ++j) {
         const ir::Instr& in = stage.code[j];
-        if (in.op == ir::Op::LoopEnd && in.target <= block.first) {
+        if ((in.op == ir::Op::LoopEnd && in.target <= block.first) || j - block.end == kLongestScan) {
             live.insert(written.begin(), written.end());
             return live;
         }
@@ -93,6 +97,19 @@ std::set<Register> read_after(const ir::Stage& stage, const Block& block, std::s
         if (written.count({b.bank, b.reg})) live.insert({b.bank, b.reg});
     }
     return live;
+}
+
+// The registers a block's instructions write.
+std::set<Register> written_by(const ir::Stage& stage, const Block& block) {
+    std::set<Register> written;
+    for (std::uint32_t k = block.first; k < block.end; ++k) {
+        const ir::Instr& in = stage.code[k];
+        for (const ir::Operand& o : ir::operands(in)) {
+            if (!o.written) continue;
+            for (std::uint32_t r = ir::field(in, o.field); r < ir::field(in, o.field) + o.span; ++r) written.insert({o.bank, r});
+        }
+    }
+    return written;
 }
 
 // How many operands a compilable component-wise operation reads.
@@ -144,7 +161,8 @@ public:
     }
     ~BlockWriter() { api_.LLVMDisposeBuilder(b_); }
 
-    void write(const ir::Stage& stage, const Block& block, const std::string& name) {
+    // The block's function, which stores the registers of `stored` (read_after) it writes.
+    void write(const ir::Stage& stage, const Block& block, const std::set<Register>& stored, const std::string& name) {
         LLVMTypeRef params[] = {api_.LLVMPointerType(f32_, 0), api_.LLVMPointerType(i32_, 0), api_.LLVMPointerType(i32_, 0),
                                 api_.LLVMPointerType(i32_, 0)};
         LLVMTypeRef type = api_.LLVMFunctionType(api_.LLVMVoidTypeInContext(c_), params, 4, 0);
@@ -162,9 +180,8 @@ public:
         running_words_ = api_.LLVMGetParam(fn, 3);
         running_ = nullptr;
         values_.clear();
-        written_.clear();
         for (std::uint32_t k = block.first; k < block.end; ++k) instruction(stage.code[k]);
-        for (const Register& r : read_after(stage, block, written_)) {
+        for (const Register& r : stored) {
             LLVMValueRef store = api_.LLVMBuildStore(b_, values_.at(r), address(r));
             api_.LLVMSetAlignment(store, 64);
         }
@@ -199,7 +216,6 @@ private:
     void write(const ir::Instr& in, ir::Bank bank, std::uint32_t index, LLVMValueRef v) {
         if (in.masked) v = select(running(), v, read(bank, index));
         values_[{bank, index}] = v;
-        written_.insert({bank, index});
     }
     void write(const ir::Instr& in, std::uint32_t index, LLVMValueRef v) { write(in, ir::Bank::Float, index, v); }
 
@@ -340,7 +356,6 @@ private:
     std::array<LLVMValueRef, ir::kBanks> banks_{};
     LLVMValueRef running_words_ = nullptr, running_ = nullptr;
     std::map<Register, LLVMValueRef> values_;
-    std::set<Register> written_;
 };
 
 }  // namespace
@@ -369,12 +384,14 @@ CompiledBlocks::CompiledBlocks(const ir::Stage& stage, std::span<const Block> bl
             api.LLVMOrcDisposeThreadSafeContext(context);
         }
     } m{api};
+    std::vector<std::set<Register>> stored;
+    for (const Block& block : blocks) stored.push_back(read_after(stage, block, written_by(stage, block)));
     std::vector<std::string> names;
     for (int lanes : kWidths) {
         BlockWriter writer(api.LLVMOrcThreadSafeContextGetContext(m.context), m.module, lanes);
         for (std::size_t i = 0; i < blocks.size(); ++i) {
             names.push_back("block" + std::to_string(i) + "_" + std::to_string(lanes));
-            writer.write(stage, blocks[i], names.back());
+            writer.write(stage, blocks[i], stored[i], names.back());
         }
     }
     LLVMOrcThreadSafeModuleRef owned = api.LLVMOrcCreateNewThreadSafeModule(m.module, m.context);
