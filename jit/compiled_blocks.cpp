@@ -360,15 +360,17 @@ private:
 
 }  // namespace
 
+// The JIT that holds the blocks' code, freed with them.
 struct CompiledBlocks::Session {
+    const LlvmApi& api = llvm();
     LLVMOrcLLJITRef jit = nullptr;
     ~Session() {
-        if (jit) llvm().LLVMConsumeError(llvm().LLVMOrcDisposeLLJIT(jit));
+        if (jit) api.LLVMConsumeError(api.LLVMOrcDisposeLLJIT(jit));
     }
 };
 
 CompiledBlocks::CompiledBlocks(const ir::Stage& stage, std::span<const Block> blocks) : session_(std::make_unique<Session>()) {
-    const LlvmApi& api = llvm();
+    const LlvmApi& api = session_->api;
     LLVMTargetMachineRef host = host_machine();
     LLVMOrcLLJITBuilderRef builder = api.LLVMOrcCreateLLJITBuilder();
     api.LLVMOrcLLJITBuilderSetJITTargetMachineBuilder(builder, api.LLVMOrcJITTargetMachineBuilderCreateFromTargetMachine(host));

@@ -31,7 +31,8 @@ const LlvmApi& llvm() {
     std::call_once(once, [] {
         void* library = open_library();
         if (!library) {
-            error = std::string("cannot load ") + QUADSHADE_LLVM_SONAME + ": " + dlerror();
+            const char* why = dlerror();
+            error = std::string("cannot load ") + QUADSHADE_LLVM_SONAME + (why ? std::string(": ") + why : std::string());
             return;
         }
         LlvmApi loaded;
