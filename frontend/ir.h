@@ -108,10 +108,10 @@ inline constexpr int kMaxClipDistances = 8;  // gl_ClipDistance's size (GL_MAX_C
     X(CallBegin)    /* an inlined function: its returning lanes are restored at CallEnd */             \
     X(CallEnd)                                                                                        \
     X(Return)       /* the running lanes leave the innermost function (or main) */                    \
-    X(Discard)      /* the running lanes write no colour; they go on as helpers */               \
-    /* the interpreter's own marker, never the front end's */                                        \
-    X(Native)       /* float lanes run compiled block `count` for the instructions up to target and */ \
-                    /*   go on there; other numbers run those instructions (interpreter/native_blocks.h) */
+    X(Discard)      /* the running lanes write no colour; they go on as helpers */                    \
+    /* the interpreter's own marker, never the front end's */                                         \
+    X(Native)       /* float lanes run compiled block `count` for the instructions up to target, */   \
+                    /*   then go on there; other numbers run them (interpreter/native_blocks.h) */
 
 enum class Op : std::uint16_t {
 #define QS_IR_ENUM(name) name,
