@@ -22,6 +22,7 @@
 #include "shading/glsl_export.h"
 #include "tests/shading_modes.h"
 #include "tests/test_paths.h"
+#include "tests/translate/same_pixels.h"
 
 using namespace qs;
 
@@ -226,17 +227,6 @@ const Program& program_of(const std::string& name, const std::string& fragment, 
     return add_compiled_program(std::move(program), "blocks", vertex, fragment);
 }
 
-// How many pixels of two frames differ (any NaN alike).
-std::size_t differing(const Framebuffer& a, const Framebuffer& b) {
-    std::size_t n = 0;
-    for (std::size_t p = 0; p < a.rgba.size() / 4; ++p) {
-        bool differs = false;
-        for (std::size_t c = 0; c < 4; ++c) differs = differs || !same_bits(a.rgba[p * 4 + c], b.rgba[p * 4 + c]);
-        n += differs;
-    }
-    return n;
-}
-
 }  // namespace
 
 TEST_CASE("a compiled block computes every operation it takes to the interpreter's bits, masked and not",
@@ -269,18 +259,7 @@ void main() {
     CHECK(static_cast<const interpreter::GlslProgram&>(compiled).runs_compiled_blocks());
     CHECK_FALSE(static_cast<const interpreter::GlslProgram&>(interpreted).runs_compiled_blocks());
     Scene scene = load_scene(test::kPlane);
-    for (const test::ShadingMode& m : test::kShadingModes) {
-        FrameRequest r;
-        r.width = 64, r.height = 48;
-        r.shading.derivatives = m.derivatives;
-        r.shading.precision = m.precision;
-        r.shader_override = compiled.info().name;
-        const Framebuffer got = render_frame(scene, r);
-        r.shader_override = interpreted.info().name;
-        const Framebuffer expected = render_frame(scene, r);
-        INFO(m.what);
-        CHECK(differing(got, expected) == 0);
-    }
+    test::check_same_pixels(scene, interpreted, compiled, "a loop with break and discard");
 }
 
 TEST_CASE("every catalogue shader's GLSL renders the same with its float arithmetic compiled or interpreted",
@@ -317,7 +296,7 @@ TEST_CASE("every catalogue shader's GLSL renders the same with its float arithme
             const Framebuffer got = render_frame(s, r);
             r.shader_override = interpreted.info().name;
             const Framebuffer expected = render_frame(s, r);
-            const std::size_t d = differing(got, expected);
+            const std::size_t d = test::differing_pixels(got, expected);
             INFO(name << " on " << scene->file.filename().string() << ", " << m.what << ": " << d << " pixels differ");
             CHECK(d == 0);
             ++compared;
