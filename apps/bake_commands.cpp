@@ -135,7 +135,7 @@ int cmd_bake_volume(VolumeArgs a) {
                 true);
     std::fprintf(stderr, "quadshade: %s: %d^3 texels of %s in %.1f ms (as a sampler3D: \"depth\": %d)\n", a.output.c_str(),
                  a.size, a.shader.c_str(), seconds * 1e3, a.size);
-    warn_loop_limit(glsl);
+    warn_after_render(glsl);
     return 0;
 }
 
@@ -331,7 +331,7 @@ int cmd_bake(BakeArgs a) {
     std::fprintf(stderr, ", peak memory %s (planned %s)\n",
                  byte_size_text(peak > resident_before ? peak - resident_before : 0).c_str(),
                  byte_size_text(planned).c_str());
-    warn_loop_limit(glsl);
+    warn_after_render(glsl);
     return 0;
 }
 

@@ -76,11 +76,17 @@ const Program* use_glsl_options(const std::string& fragment, const std::string& 
     return s.program;
 }
 
-void warn_loop_limit(const Program* program) {
+void warn_after_render(const Program* program) {
     const auto* glsl = dynamic_cast<const interpreter::GlslProgram*>(program);
-    if (glsl && glsl->reached_loop_limit()) {
+    if (!glsl) return;
+    const std::string name(program->info().name);
+    if (glsl->reached_loop_limit()) {
         std::fprintf(stderr, "quadshade: warning: %s: a loop ran 65535 iterations and was left there, as llvmpipe leaves it\n",
-                     std::string(program->info().name).c_str());
+                     name.c_str());
+    }
+    if (glsl->compiled_blocks_failed()) {
+        std::fprintf(stderr, "quadshade: warning: %s: LLVM did not compile its float arithmetic; the interpreter ran it\n",
+                     name.c_str());
     }
 }
 

@@ -83,8 +83,9 @@ inline GlslWay glsl_way(bool compile) { return compile ? GlslWay::Compile : Glsl
 // compiled translation, where it is used, shades what `shading` asks (all ways without it).
 const Program* use_glsl_options(const std::string& fragment, const std::string& vertex, bool compile, std::string& shader,
                                 const std::vector<ShadeRequest>& shading = {});
-// The warning, once, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's limit.
-void warn_loop_limit(const Program* program);
+// The warnings, once each, that `program` (a GLSL program, or nullptr) left a loop at llvmpipe's
+// limit, or ran interpreted where LLVM did not compile its float arithmetic.
+void warn_after_render(const Program* program);
 
 // --memory-limit's bytes; empty: what the system has available.
 std::uint64_t memory_limit(const std::string& option);

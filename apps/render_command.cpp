@@ -396,7 +396,7 @@ int cmd_render(RenderArgs& a) {
     const std::uint64_t peak = peak_resident_bytes();
     print_render_summary(a, renderer, totals, last - first + 1, total, bands.size(),
                          peak > resident_before ? peak - resident_before : 0, plan.peak_bytes);
-    warn_loop_limit(glsl);
+    warn_after_render(glsl);
     if (!a.mask_output.empty()) print_undefined(totals.undefined);
     return 0;
 }

@@ -86,7 +86,7 @@ GlslProgram::GlslProgram(std::string name, frontend::CompiledProgram compiled, B
         try {
             blocks_ = compile_blocks(compiled_.program.fragment);
         } catch (const jit::JitError& e) {
-            compiled_.warnings.push_back("warning: " + std::string(info_.name) + ": its float arithmetic is interpreted (" +
+            compiled_.warnings.push_back("warning: " + std::string(info_.name) + ": its float arithmetic runs interpreted (" +
                                          e.what() + ")");
         }
     }

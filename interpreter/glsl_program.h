@@ -25,7 +25,7 @@ public:
 
     // `name` as listings and messages name the shader. Throws frontend::GlslUnsupported for a
     // program the renderer cannot bind: more samplers, varyings or uniforms than it passes.
-    // Where LLVM cannot compile the blocks, the interpreter runs them, with a warning.
+    // Where LLVM cannot start, the interpreter runs the blocks, with a warning.
     GlslProgram(std::string name, frontend::CompiledProgram compiled, Blocks blocks = Blocks::Compiled);
 
     const ShaderInfo& info() const override { return info_; }
@@ -40,10 +40,12 @@ public:
 
     const ir::Program& program() const { return compiled_.program; }
     const frontend::GlslSource& vertex_source() const { return compiled_.vertex; }
-    // glslang's warnings, and LLVM's where it could not compile the blocks.
+    // glslang's warnings, and LLVM's where it could not start.
     const std::vector<std::string>& warnings() const { return compiled_.warnings; }
-    // Whether float lanes run compiled blocks.
-    bool runs_compiled_blocks() const { return blocks_ != nullptr; }
+    // Whether float lanes run compiled blocks (compiled when they first shade).
+    bool runs_compiled_blocks() const { return blocks_ != nullptr && !blocks_->failed(); }
+    // Whether LLVM failed to compile the blocks, which the interpreter then ran.
+    bool compiled_blocks_failed() const { return blocks_ != nullptr && blocks_->failed(); }
     // Whether a loop of some fragment was left at llvmpipe's iteration limit (65,535).
     bool reached_loop_limit() const { return loop_limit_.load(std::memory_order_relaxed); }
 

@@ -24,9 +24,10 @@ inline constexpr std::uint32_t kLongestBlock = 1024;
 // huge shader runs interpreted, its first image not held up.
 inline constexpr std::uint32_t kMostCompiled = 4096;
 
-// Compiles the blocks of `stage` and marks them in its code, jump targets moved onto each
+// Finds the blocks of `stage`, prepares them for LLVM (jit::CompiledBlocks, which compiles each
+// width when it is first asked for) and marks them in its code, jump targets moved onto each
 // block's marker. Returns nullptr, the stage unchanged, where it has no block. Throws
-// jit::JitError where LLVM cannot compile them, the stage unchanged.
+// jit::JitError where LLVM cannot start, the stage unchanged.
 std::unique_ptr<jit::CompiledBlocks> compile_blocks(ir::Stage& stage);
 
 // F's lanes where the compiled blocks run for F: plain float lanes of one of jit::kWidths

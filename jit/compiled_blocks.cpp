@@ -361,22 +361,50 @@ private:
 }  // namespace
 
 // The JIT that holds the blocks' code, freed with them.
+// The JIT that holds the blocks' code, freed with them, and what compiling a width takes.
 struct CompiledBlocks::Session {
     const LlvmApi& api = llvm();
     LLVMOrcLLJITRef jit = nullptr;
+    ir::Stage stage;                         // unmarked
+    std::vector<Block> blocks;
+    std::vector<std::set<Register>> stored;  // per block: what it stores
+    std::mutex compiling;                    // one width at a time into the JIT
     ~Session() {
         if (jit) api.LLVMConsumeError(api.LLVMOrcDisposeLLJIT(jit));
     }
 };
 
 CompiledBlocks::CompiledBlocks(const ir::Stage& stage, std::span<const Block> blocks) : session_(std::make_unique<Session>()) {
-    const LlvmApi& api = session_->api;
+    Session& s = *session_;
+    const LlvmApi& api = s.api;
     LLVMTargetMachineRef host = host_machine();
     LLVMOrcLLJITBuilderRef builder = api.LLVMOrcCreateLLJITBuilder();
     api.LLVMOrcLLJITBuilderSetJITTargetMachineBuilder(builder, api.LLVMOrcJITTargetMachineBuilderCreateFromTargetMachine(host));
-    check(api.LLVMOrcCreateLLJIT(&session_->jit, builder), "LLVM's compiler did not start");
+    check(api.LLVMOrcCreateLLJIT(&s.jit, builder), "LLVM's compiler did not start");
+    s.stage = stage;
+    s.blocks.assign(blocks.begin(), blocks.end());
+    for (const Block& block : blocks) s.stored.push_back(read_after(stage, block, written_by(stage, block)));
+}
 
-    // The module's functions: every block for each width.
+std::span<const BlockCode> CompiledBlocks::code(int lanes) const {
+    const std::size_t width = lanes == kWidths[0] ? 0 : 1;
+    std::call_once(compiled_[width], [&] {
+        try {
+            compile(width);
+        } catch (const JitError&) {
+            code_[width].clear();
+            failed_.store(true, std::memory_order_relaxed);
+        }
+    });
+    return code_[width];
+}
+
+void CompiledBlocks::compile(std::size_t width) const {
+    Session& s = *session_;
+    const LlvmApi& api = s.api;
+    const std::lock_guard<std::mutex> lock(s.compiling);
+    const int lanes = kWidths[width];
+    // The module's functions: every block for this width.
     struct Module {
         const LlvmApi& api;
         LLVMOrcThreadSafeContextRef context = api.LLVMOrcCreateNewThreadSafeContext();
@@ -386,29 +414,23 @@ CompiledBlocks::CompiledBlocks(const ir::Stage& stage, std::span<const Block> bl
             api.LLVMOrcDisposeThreadSafeContext(context);
         }
     } m{api};
-    std::vector<std::set<Register>> stored;
-    for (const Block& block : blocks) stored.push_back(read_after(stage, block, written_by(stage, block)));
     std::vector<std::string> names;
-    for (int lanes : kWidths) {
-        BlockWriter writer(api.LLVMOrcThreadSafeContextGetContext(m.context), m.module, lanes);
-        for (std::size_t i = 0; i < blocks.size(); ++i) {
-            names.push_back("block" + std::to_string(i) + "_" + std::to_string(lanes));
-            writer.write(stage, blocks[i], stored[i], names.back());
-        }
+    BlockWriter writer(api.LLVMOrcThreadSafeContextGetContext(m.context), m.module, lanes);
+    for (std::size_t i = 0; i < s.blocks.size(); ++i) {
+        names.push_back("block" + std::to_string(i) + "_" + std::to_string(lanes));
+        writer.write(s.stage, s.blocks[i], s.stored[i], names.back());
     }
     LLVMOrcThreadSafeModuleRef owned = api.LLVMOrcCreateNewThreadSafeModule(m.module, m.context);
     m.module = nullptr;  // the thread-safe module owns it, and shares the context
-    check(api.LLVMOrcLLJITAddLLVMIRModule(session_->jit, api.LLVMOrcLLJITGetMainJITDylib(session_->jit), owned),  // takes it
+    check(api.LLVMOrcLLJITAddLLVMIRModule(s.jit, api.LLVMOrcLLJITGetMainJITDylib(s.jit), owned),  // takes it
           "LLVM did not take the compiled blocks");
-    std::size_t next = 0;
-    for (int lanes : kWidths) {
-        std::vector<BlockCode>& code = lanes == kWidths[0] ? narrow_ : wide_;
-        for (std::size_t i = 0; i < blocks.size(); ++i) {
-            LLVMOrcExecutorAddress address = 0;
-            check(api.LLVMOrcLLJITLookup(session_->jit, &address, names[next++].c_str()), "LLVM did not compile a block");
-            code.push_back(reinterpret_cast<BlockCode>(address));
-        }
+    std::vector<BlockCode> code;
+    for (const std::string& name : names) {
+        LLVMOrcExecutorAddress address = 0;
+        check(api.LLVMOrcLLJITLookup(s.jit, &address, name.c_str()), "LLVM did not compile a block");
+        code.push_back(reinterpret_cast<BlockCode>(address));
     }
+    code_[width] = std::move(code);
 }
 
 CompiledBlocks::~CompiledBlocks() = default;

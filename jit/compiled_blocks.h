@@ -9,7 +9,11 @@
 // in the same order, with no contraction into fused multiply-adds and no fast-math: a block
 // gives the interpreter's bits, and the tests compare the two on every catalogue shader.
 
+#include <array>
+#include <atomic>
 #include <cstdint>
+#include <iterator>
+#include <mutex>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -47,20 +51,29 @@ public:
 
 class CompiledBlocks {
 public:
-    // Compiles `blocks` of `stage` for each of kWidths. A block stores the registers it writes
-    // that the stage may read after it. Throws JitError with LLVM's message where it cannot.
+    // Prepares `blocks` of `stage`, which it keeps a copy of: a block will store the registers it
+    // writes that the stage may read after it. Throws JitError with LLVM's message where LLVM
+    // cannot start. The blocks are compiled for a width when code() first asks for it.
     CompiledBlocks(const ir::Stage& stage, std::span<const Block> blocks);
     ~CompiledBlocks();
     CompiledBlocks(const CompiledBlocks&) = delete;
     CompiledBlocks& operator=(const CompiledBlocks&) = delete;
 
-    // The code of every block for `lanes` (one of kWidths), in the order they were given.
-    std::span<const BlockCode> code(int lanes) const { return lanes == kWidths[0] ? narrow_ : wide_; }
+    // The code of every block for `lanes` (one of kWidths), in the order they were given,
+    // compiled on the first call for that width (the others wait for it): a renderer that hands
+    // pairs only compiles one width. Empty where LLVM could not compile them, and the instructions
+    // are interpreted; failed() says so.
+    std::span<const BlockCode> code(int lanes) const;
+    bool failed() const { return failed_.load(std::memory_order_relaxed); }
 
 private:
     struct Session;
+    void compile(std::size_t width) const;
+
     std::unique_ptr<Session> session_;
-    std::vector<BlockCode> narrow_, wide_;
+    mutable std::array<std::once_flag, std::size(kWidths)> compiled_;
+    mutable std::array<std::vector<BlockCode>, std::size(kWidths)> code_;
+    mutable std::atomic<bool> failed_{false};
 };
 
 }  // namespace qs::jit
