@@ -52,7 +52,10 @@ std::unique_ptr<jit::CompiledBlocks> compile_blocks(ir::Stage& stage) {
     std::uint32_t added = 0;
     std::size_t next = 0;
     for (std::uint32_t i = 0; i <= code.size(); ++i) {
-        if (next < blocks.size() && blocks[next].first == i) marker[i] = i + added++, ++next;
+        if (next < blocks.size() && blocks[next].first == i) {
+            marker[i] = i + added;
+            ++added, ++next;
+        }
         moved[i] = i + added;
     }
     const auto land = [&](std::uint32_t t) { return marker[t] >= 0 ? std::uint32_t(marker[t]) : moved[t]; };
