@@ -20,9 +20,10 @@ inline constexpr std::uint32_t kShortestBlock = 2;
 // The most a block takes: LLVM's register allocation takes more than linear time in a block's
 // length (5x Perlin's 768 instructions compile in 0.15 s a width), so a longer run is cut.
 inline constexpr std::uint32_t kLongestBlock = 1024;
-// The most instructions a stage compiles, about a second and a half of LLVM's time: past them a
-// huge shader runs interpreted, its first image not held up.
-inline constexpr std::uint32_t kMostCompiled = 4096;
+// The most instructions a stage compiles, about a second of LLVM's time (a 104-line shader of 30
+// inlined noises: 1.2 s to its first 16x16 image): past them a huge shader runs interpreted, its
+// first image not held up longer.
+inline constexpr std::uint32_t kMostCompiled = 2048;
 
 // Finds the blocks of `stage`, prepares them for LLVM (jit::CompiledBlocks, which compiles each
 // width when it is first asked for) and marks them in its code, jump targets moved onto each
