@@ -48,6 +48,11 @@ void check(LLVMErrorRef error, const char* what) {
     if (error) fail(error, what);
 }
 
+// The alignment a block assumes of registers and masks: a lane's. A build for SSE aligns the
+// interpreter's registers to 16 bytes, not a 64-byte vector, and unaligned vector moves cost
+// nothing on data that happens to be aligned.
+constexpr unsigned kAlignment = alignof(float);
+
 // How far past a block its liveness is followed; what is still unsettled there is stored. It
 // bounds the compile of a huge shader's many blocks.
 constexpr std::size_t kLongestScan = 1u << 14;
@@ -183,7 +188,7 @@ public:
         for (std::uint32_t k = block.first; k < block.end; ++k) instruction(stage.code[k]);
         for (const Register& r : stored) {
             LLVMValueRef store = api_.LLVMBuildStore(b_, values_.at(r), address(r));
-            api_.LLVMSetAlignment(store, 64);
+            api_.LLVMSetAlignment(store, kAlignment);
         }
         api_.LLVMBuildRetVoid(b_);
     }
@@ -199,7 +204,7 @@ private:
         auto it = values_.find(r);
         if (it != values_.end()) return it->second;
         LLVMValueRef load = api_.LLVMBuildLoad2(b_, bank == ir::Bank::Float ? floats_ : words_, address(r), "");
-        api_.LLVMSetAlignment(load, 64);
+        api_.LLVMSetAlignment(load, kAlignment);
         values_[r] = load;
         return load;
     }
@@ -208,7 +213,7 @@ private:
     LLVMValueRef running() {
         if (!running_) {
             LLVMValueRef mask = api_.LLVMBuildLoad2(b_, words_, running_words_, "");
-            api_.LLVMSetAlignment(mask, 64);
+            api_.LLVMSetAlignment(mask, kAlignment);
             running_ = truth(mask);
         }
         return running_;
