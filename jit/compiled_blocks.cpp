@@ -172,6 +172,11 @@ public:
                                 api_.LLVMPointerType(i32_, 0)};
         LLVMTypeRef type = api_.LLVMFunctionType(api_.LLVMVoidTypeInContext(c_), params, 4, 0);
         LLVMValueRef fn = api_.LLVMAddFunction(m_, name.c_str(), type);
+        // A block throws nothing: without unwind tables LLVM writes no .eh_frame for the JIT to
+        // register with libgcc, whose frame lookup then deadlocks AddressSanitizer's slow unwinder
+        // (fast_unwind_on_malloc=0, as the checking build runs).
+        const unsigned nounwind = api_.LLVMGetEnumAttributeKindForName("nounwind", 8);
+        api_.LLVMAddAttributeAtIndex(fn, LLVMAttributeFunctionIndex, api_.LLVMCreateEnumAttribute(c_, nounwind, 0));
         if (lanes_ * 32 >= 512) {  // whole 512-bit registers where the machine has them
             for (const char* key : {"prefer-vector-width", "min-legal-vector-width"}) {
                 api_.LLVMAddAttributeAtIndex(fn, LLVMAttributeFunctionIndex,

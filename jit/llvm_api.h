@@ -19,7 +19,8 @@ namespace qs::jit {
     X(LLVMBuildFSub) X(LLVMBuildGEP2) X(LLVMBuildICmp) X(LLVMBuildLoad2) X(LLVMBuildMul) X(LLVMBuildNot)           \
     X(LLVMBuildOr) X(LLVMBuildRetVoid) X(LLVMBuildSExt) X(LLVMBuildSIToFP) X(LLVMBuildSelect) X(LLVMBuildStore)    \
     X(LLVMBuildSub) X(LLVMBuildXor) X(LLVMConstInt) X(LLVMConstNull) X(LLVMConstReal) X(LLVMConstVector)           \
-    X(LLVMConsumeError) X(LLVMCreateBuilderInContext) X(LLVMCreateStringAttribute) X(LLVMCreateTargetMachine)     \
+    X(LLVMConsumeError) X(LLVMCreateBuilderInContext) X(LLVMCreateEnumAttribute) X(LLVMCreateStringAttribute)     \
+    X(LLVMCreateTargetMachine) X(LLVMGetEnumAttributeKindForName)                                                 \
     X(LLVMDisposeBuilder) X(LLVMDisposeErrorMessage) X(LLVMDisposeMessage) X(LLVMDisposeModule)                   \
     X(LLVMFloatTypeInContext) X(LLVMFunctionType) X(LLVMGetDefaultTargetTriple) X(LLVMGetErrorMessage)           \
     X(LLVMGetHostCPUFeatures) X(LLVMGetHostCPUName) X(LLVMGetIntrinsicDeclaration) X(LLVMGetParam)               \
