@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "images/image_io.h"
+#include "render/glsl_shaders.h"
 #include "render/scene_render.h"
 #include "scenes/gltf.h"
 #include "shading/catalogue.h"
@@ -85,6 +86,25 @@ TEST_CASE("sanitized: images of every format written band by band through the ch
     }
     CHECK_FALSE(std::filesystem::exists(dir / "never.png"));
     CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 5);  // no temporary left
+}
+
+TEST_CASE("sanitized: GLSL run by the interpreter with its compiled blocks draws what its translation draws",
+          "[sanitize]") {
+    // The blocks' machine code is LLVM's and not instrumented; what is checked is the interpreter
+    // around it, and that a slow-unwinding AddressSanitizer meets no frame the JIT registered.
+    Scene scene = load_scene(test::kPlane);
+    for (const char* name : {"perlin", "worley"}) {
+        if (!find_program(name)) continue;  // a build without Table 1.1's shaders
+        const std::string twin = interpreted_twin(name);
+        FrameRequest r;
+        r.width = r.height = 32;
+        r.shader_override = name;
+        const Framebuffer expected = render_frame(scene, r);
+        r.shader_override = twin;
+        const Framebuffer got = render_frame(scene, r);
+        INFO(name);
+        CHECK(std::memcmp(got.rgba.data(), expected.rgba.data(), got.rgba.size() * sizeof(float)) == 0);
+    }
 }
 
 }  // namespace qs
