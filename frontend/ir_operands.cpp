@@ -263,8 +263,7 @@ void validate(const Stage& stage, int samplers) {
             }
             default: break;
         }
-        const bool jumps = in.op == Op::If || in.op == Op::Else || in.op == Op::LoopBegin || in.op == Op::LoopEnd;
-        if (jumps && in.target >= stage.code.size()) fail(at, "a jump outside the code");
+        if (jumps(in.op) && in.target >= stage.code.size()) fail(at, "a jump outside the code");
     }
     if (!open.empty()) throw std::logic_error("GLSL interpreter: control flow left open at the end of the stage");
     for (const Binding& b : stage.inputs) {

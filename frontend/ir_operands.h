@@ -33,6 +33,9 @@ struct Operands {
 // The operands of `in`.
 Operands operands(const Instr& in);
 
+// Whether `op` jumps to Instr::target (If, Else, LoopBegin, LoopEnd).
+inline bool jumps(Op op) { return op == Op::If || op == Op::Else || op == Op::LoopBegin || op == Op::LoopEnd; }
+
 // The register field of `in` that `f` names.
 inline std::uint32_t& field(Instr& in, Field f) {
     switch (f) {

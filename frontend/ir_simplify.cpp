@@ -3,15 +3,9 @@
 #include <cstdint>
 #include <limits>
 
+#include "frontend/ir_operands.h"
+
 namespace qs::frontend {
-
-namespace {
-
-bool jumps(ir::Op op) {
-    return op == ir::Op::If || op == ir::Op::Else || op == ir::Op::LoopBegin || op == ir::Op::LoopEnd;
-}
-
-}  // namespace
 
 void remove_instructions(ir::Stage& stage, const std::vector<bool>& removed) {
     std::vector<ir::Instr>& code = stage.code;
@@ -24,7 +18,7 @@ void remove_instructions(ir::Stage& stage, const std::vector<bool>& removed) {
     }
     index[code.size()] = std::uint32_t(kept.size());
     for (ir::Instr& in : kept) {
-        if (jumps(in.op)) in.target = index[in.target];
+        if (ir::jumps(in.op)) in.target = index[in.target];
     }
     code = std::move(kept);
 }
@@ -65,7 +59,7 @@ void join_component_runs(ir::Stage& stage) {
     const std::vector<ir::Instr>& code = stage.code;
     std::vector<bool> target(code.size() + 1, false), removed(code.size(), false);
     for (const ir::Instr& in : code) {
-        if (jumps(in.op)) target[in.target] = true;
+        if (ir::jumps(in.op)) target[in.target] = true;
     }
     std::vector<ir::Instr> joined = code;
     for (std::size_t first = 0; first < code.size();) {

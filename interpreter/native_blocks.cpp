@@ -1,16 +1,16 @@
 #include "interpreter/native_blocks.h"
 
+#include <limits>
 #include <vector>
+
+#include "frontend/ir_operands.h"
 
 namespace qs::interpreter {
 
 namespace {
 
-constexpr std::size_t kMostBlocks = 0xFFFF;  // a marker names its block in Instr::count
-
-bool jumps(ir::Op op) {
-    return op == ir::Op::If || op == ir::Op::Else || op == ir::Op::LoopBegin || op == ir::Op::LoopEnd;
-}
+// A marker names its block in Instr::count.
+static_assert(kMostCompiled / kShortestBlock <= std::numeric_limits<decltype(ir::Instr::count)>::max());
 
 // The maximal runs of compilable instructions that nothing jumps into but at their first, cut
 // at kLongestBlock, up to kMostCompiled instructions in all.
@@ -18,7 +18,7 @@ std::vector<jit::Block> find_blocks(const ir::Stage& stage) {
     const std::vector<ir::Instr>& code = stage.code;
     std::vector<bool> target(code.size() + 1, false);
     for (const ir::Instr& in : code) {
-        if (jumps(in.op)) target[in.target] = true;
+        if (ir::jumps(in.op)) target[in.target] = true;
     }
     std::vector<jit::Block> blocks;
     std::uint32_t compiled = 0;
@@ -29,7 +29,7 @@ std::vector<jit::Block> find_blocks(const ir::Stage& stage) {
         }
         std::uint32_t end = first + 1;
         while (end < code.size() && end - first < kLongestBlock && jit::compilable(code[end]) && !target[end]) ++end;
-        if (end - first >= kShortestBlock && blocks.size() < kMostBlocks && compiled + (end - first) <= kMostCompiled) {
+        if (end - first >= kShortestBlock && compiled + (end - first) <= kMostCompiled) {
             blocks.push_back({first, end});
             compiled += end - first;
         }
@@ -72,7 +72,7 @@ std::unique_ptr<jit::CompiledBlocks> compile_blocks(ir::Stage& stage) {
             ++next;
         }
         ir::Instr in = code[i];
-        if (jumps(in.op)) in.target = land(in.target);
+        if (ir::jumps(in.op)) in.target = land(in.target);
         marked.push_back(in);
     }
     stage.code = std::move(marked);

@@ -117,17 +117,6 @@ std::set<Register> written_by(const ir::Stage& stage, const Block& block) {
     return written;
 }
 
-// How many operands a compilable component-wise operation reads.
-int arity(ir::Op op) {
-    switch (op) {
-        case ir::Op::FClamp: case ir::Op::FMix: case ir::Op::FSmoothStep: return 3;
-        case ir::Op::FAdd: case ir::Op::FSub: case ir::Op::FMul: case ir::Op::FDiv: case ir::Op::FMod: case ir::Op::FMin:
-        case ir::Op::FMax: case ir::Op::FStep:
-            return 2;
-        default: return 1;
-    }
-}
-
 // This machine's target with every feature its processor has, code generated at LLVM's level
 // "less": on the noises it compiles in 0.85 of the default level's time, and the code runs as
 // fast (a block is arithmetic in one straight line, which the default level's passes do not
@@ -341,7 +330,8 @@ private:
             case Op::IEqual: return integers(LLVMIntEQ);
             case Op::INotEqual: return integers(LLVMIntNE);
             default: {
-                const int n = arity(in.op);
+                int n = 0;  // operands read
+                for (const ir::Operand& o : ir::operands(in)) n += !o.written;
                 return {Bank::Float, arithmetic(in.op, f(in.a, 0), n > 1 ? f(in.b, 1) : nullptr, n > 2 ? f(in.c, 2) : nullptr)};
             }
         }

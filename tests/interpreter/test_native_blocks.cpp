@@ -10,6 +10,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "frontend/compile.h"
@@ -219,12 +220,16 @@ void compare_operations() {
     CHECK(instructions.words == expected.words);
 }
 
-// A GLSL pair as a program whose float arithmetic runs compiled or interpreted.
-const Program& program_of(const std::string& name, const std::string& fragment, interpreter::GlslProgram::Blocks blocks) {
-    frontend::CompiledProgram c = frontend::compile_glsl({name + ".frag", fragment}, std::nullopt);
-    std::string vertex = c.vertex.text;
+// A GLSL pair (the vertex shader written for the fragment one where none is given) as a program
+// whose float arithmetic runs compiled or interpreted.
+const Program& program_of(const std::string& name, const std::string& fragment, interpreter::GlslProgram::Blocks blocks,
+                          const std::optional<std::string>& vertex = std::nullopt) {
+    std::optional<frontend::GlslSource> vert;
+    if (vertex) vert = frontend::GlslSource{name + ".vert", *vertex};
+    frontend::CompiledProgram c = frontend::compile_glsl({name + ".frag", fragment}, vert);
+    std::string vertex_text = c.vertex.text;
     auto program = std::make_unique<interpreter::GlslProgram>(name, std::move(c), blocks);
-    return add_compiled_program(std::move(program), "blocks", vertex, fragment);
+    return add_compiled_program(std::move(program), "blocks", vertex_text, fragment);
 }
 
 }  // namespace
@@ -278,13 +283,8 @@ TEST_CASE("every catalogue shader's GLSL renders the same with its float arithme
         }
         if (!scene) continue;
         const std::string fragment = glsl_source(*translation, false), vertex = glsl_source(*translation, true);
-        const auto make = [&](Blocks blocks, const char* how) -> const Program& {
-            frontend::CompiledProgram c = frontend::compile_glsl({name + ".frag", fragment}, frontend::GlslSource{name + ".vert", vertex});
-            auto p = std::make_unique<interpreter::GlslProgram>(std::string(how) + " " + name, std::move(c), blocks);
-            return add_compiled_program(std::move(p), "blocks", vertex, fragment);
-        };
-        const Program& compiled = make(Blocks::Compiled, "blocks compiled");
-        const Program& interpreted = make(Blocks::Interpreted, "blocks interpreted");
+        const Program& compiled = program_of("blocks compiled " + name, fragment, Blocks::Compiled, vertex);
+        const Program& interpreted = program_of("blocks interpreted " + name, fragment, Blocks::Interpreted, vertex);
         with_blocks += static_cast<const interpreter::GlslProgram&>(compiled).runs_compiled_blocks();
         for (const test::ShadingMode& m : test::kShadingModes) {
             if (m.precision == Precision::Double || m.derivatives == Derivatives::Analytic) continue;  // no blocks there
