@@ -15,6 +15,7 @@
 #include "frontend/batch_width.h"
 #include "frontend/binding_names.h"
 #include "frontend/exact_products.h"
+#include "frontend/iteration_slices.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
 #include "frontend/shadow_lookup.h"
@@ -287,6 +288,13 @@ private:
     std::vector<std::string> structs_;
     std::optional<ExactProducts> exact_;  // the multiply-adds that round once (frontend/exact_products.h)
     std::optional<Expr> exact_product_add(TIntermBinary* b);
+
+    // ---- a loop nest's part run across its iterations (frontend/iteration_slices.h) ------------
+    void iteration_lanes(const IterationSlice& slice);
+    std::string unused_name(const std::string& base);
+    std::set<std::string> taken_names_;  // every name of the GLSL, and those the writer gave
+    std::map<const TIntermNode*, std::string> across_iterations_;  // a part's declaration -> its value read back
+    std::set<const glslang::TIntermLoop*> inner_levels_;  // loops a nest's part was planned around
 };
 
 std::string StageWriter::scalar_type(glslang::TBasicType b, const TIntermNode* at) const {
@@ -1184,7 +1192,8 @@ void StageWriter::assignment(TIntermBinary* b) {
                 it->second.mask_depth = int(masks_.size());
                 Expr v = it->second.plain_counter ? expr(value) : as_typed(value, b->getType());
                 const std::string t = it->second.plain_counter ? "int" : type(s->getType(), b);
-                const std::string v_text = s->getType().isArray() ? v.text : v.text;
+                const auto across = across_iterations_.find(b);
+                const std::string v_text = across == across_iterations_.end() ? v.text : across->second + parens(v, kAssign);
                 line(t + " " + it->second.name + " = " + v_text + ";", b);
                 return;
             }
@@ -1396,6 +1405,20 @@ static const char* step_operator(glslang::TOperator op) {
 }
 
 void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
+    std::optional<IterationSlice> slice;
+    if (init && !inner_levels_.contains(l)) {
+        const auto plain = [&](long long id) { return locals_.contains(id) && locals_[id].plain_counter; };
+        const auto at_nest = [&](long long id) {
+            auto it = locals_.find(id);
+            if (it == locals_.end() || !it->second.declared) return LocalAtNest::Other;
+            return it->second.plain_counter ? LocalAtNest::PlainCounter : LocalAtNest::DeclaredBefore;
+        };
+        slice = iteration_slice(l, init->getAsBinaryNode(), ast_.getTreeRoot()->getAsAggregate(), plain, at_nest);
+        if (slice) {
+            iteration_lanes(*slice);
+            inner_levels_.insert(slice->loops.begin() + 1, slice->loops.end());
+        }
+    }
     const std::vector<long long> vars = assigned_outside(l);
     std::string list;
     for (long long id : vars) {
@@ -1480,6 +1503,76 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         line("}", nullptr);
     }
     if (!plain) loops_.pop_back();
+}
+
+// Before the nest: the part's declarations for every iteration at once, where the values they
+// read are alike in every lane; in the nest, each declaration reads its iteration's lane there.
+void StageWriter::iteration_lanes(const IterationSlice& slice) {
+    const std::string each = unused_name("each");
+    std::string counts, firsts, counters, at;
+    for (std::size_t k = 0; k < slice.counters.size(); ++k) {
+        const std::string& c = locals_[slice.counters[k]->getId()].name;
+        counts += ", " + std::to_string(slice.count[k]);
+        firsts += (k ? ", " : "") + std::to_string(slice.first[k]);
+        counters += (k ? ", " : "") + c + " = " + each + ".counter(" + std::to_string(k) + ")";
+        at += ", " + c;
+    }
+    std::string inputs;
+    for (std::size_t k = 0; k < slice.inputs.size(); ++k) {
+        inputs += (k == 0 ? "" : k + 1 == slice.inputs.size() ? " and " : ", ") + locals_[slice.inputs[k]].name;
+    }
+    int iterations = 1;
+    for (int n : slice.count) iterations *= n;
+    int first_line = slice.declarations.front()->getLoc().line, last_line = first_line;
+    for (TIntermBinary* d : slice.declarations) {
+        first_line = std::min(first_line, d->getLoc().line);
+        last_line = std::max(last_line, d->getLoc().line);
+    }
+    const std::string lines = first_line == last_line ? "line " + std::to_string(first_line)
+                                                      : "lines " + std::to_string(first_line) + "-" + std::to_string(last_line);
+    const std::string all = "for all " + std::to_string(iterations) + " iterations at once,";
+    if (slice.inputs.empty()) line("// " + lines + " read the loop counters alone: they run here " + all, nullptr);
+    else line("// Where " + inputs + (slice.inputs.size() == 1 ? " is" : " are") + " the same in every lane, " + lines + " run here " + all, nullptr);
+    line("// one in each lane (shading/glsl/iteration_lanes.h).", nullptr);
+    std::string alike;
+    for (std::size_t k = 0; k < slice.inputs.size(); ++k) alike += (k ? ", " : "") + locals_[slice.inputs[k]].name;
+    line("const IterationLanes<F" + counts + "> " + each + "({" + firsts + "}, lanes_alike(" + alike + "));", nullptr);
+    // What each iteration computed, declared a type to a line.
+    std::vector<std::string> holders;
+    std::string declared, declared_type;
+    for (TIntermBinary* d : slice.declarations) {
+        const Local& lo = locals_[d->getLeft()->getAsSymbolNode()->getId()];
+        holders.push_back(unused_name(lo.name + "_" + each));
+        across_iterations_[d] = each + ".alike ? " + each + ".at(" + holders.back() + at + ") : ";
+        const std::string t = type(d->getType(), d);
+        if (t != declared_type && !declared.empty()) line(declared + ";", nullptr), declared.clear();
+        declared += (declared.empty() ? t + " " : ", ") + holders.back() + "{}";
+        declared_type = t;
+    }
+    line(declared + ";", nullptr);
+    line("if (" + each + ".alike) {", nullptr);
+    ++indent_;
+    // The counters, each iteration's in its lane: per-lane ints for the part's expressions.
+    for (TIntermSymbol* c : slice.counters) locals_[c->getId()].plain_counter = false;
+    line("const int_t<F> " + counters + ";", nullptr);
+    for (TIntermBinary* d : slice.declarations) {
+        const Local& lo = locals_[d->getLeft()->getAsSymbolNode()->getId()];
+        line("const " + type(d->getType(), d) + " " + lo.name + " = " + as_typed(d->getRight(), d->getType()).text + ";", d);
+    }
+    for (TIntermSymbol* c : slice.counters) locals_[c->getId()].plain_counter = true;
+    for (std::size_t k = 0; k < slice.declarations.size(); ++k) {
+        line(holders[k] + " = " + locals_[slice.declarations[k]->getLeft()->getAsSymbolNode()->getId()].name + ";", nullptr);
+    }
+    --indent_;
+    line("}", nullptr);
+}
+
+// `base`, or base2, base3, ...: a name neither the GLSL nor the writer has taken.
+std::string StageWriter::unused_name(const std::string& base) {
+    std::string name = base;
+    for (int k = 2; taken_names_.contains(name) || reserved_names().contains(name); ++k) name = base + std::to_string(k);
+    taken_names_.insert(name);
+    return name;
 }
 
 void StageWriter::statement(TIntermNode* n) {
@@ -1734,6 +1827,16 @@ std::string StageWriter::write() {
     TIntermAggregate* root = ast_.getTreeRoot() ? ast_.getTreeRoot()->getAsAggregate() : nullptr;
     if (!root) throw GlslError(source_position(file_, 0) + "error: the shader has no code");
     exact_.emplace(root);
+    struct Names : glslang::TIntermTraverser {
+        std::set<std::string>* taken;
+        void visitSymbol(TIntermSymbol* s) override {
+            const std::string n = s->getName().c_str();
+            taken->insert(n);
+            taken->insert(n + "_");  // its name where C++ or the translation reserves it
+        }
+    } names;
+    names.taken = &taken_names_;
+    root->traverse(&names);
     // Struct types first: members and functions use them.
     std::vector<const TType*> structs;
     std::set<std::string> seen;

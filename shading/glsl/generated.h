@@ -2,12 +2,14 @@
 // What translations written by `quadshade translate` (frontend/cpp_writer.h) use beyond the
 // vocabulary the hand translations use: the scene's matrices and texture size as GLSL values, and
 // conversions of whole vectors (a hand translation converts component by component), and
-// GLSL's c - a * b rounded once where the writer proves a * b exact (frontend/exact_products.h).
+// GLSL's c - a * b rounded once where the writer proves a * b exact (frontend/exact_products.h),
+// and a loop nest's part run for all its iterations at once (iteration_lanes.h).
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
 #include "shading/glsl/builtins.h"
+#include "shading/glsl/iteration_lanes.h"
 #include "shading/glsl/mat.h"
 #include "shading/glsl/texture.h"
 #include "shading/glsl/texture_cube.h"

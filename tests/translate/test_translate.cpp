@@ -18,6 +18,7 @@
 #include "render/compiled_glsl.h"
 #include "render/scene_render.h"
 #include "shading/catalogue.h"
+#include "shading/glsl/iteration_lanes.h"
 #include "shading/glsl_export.h"
 #include "shading/program_of.h"
 #include "tests/cube_map.h"
@@ -34,6 +35,7 @@
 #include "translated_counted_loops/translated_counted_loops.h"
 #include "translated_exact_products/translated_exact_products.h"
 #include "translated_colour_unwritten/translated_colour_unwritten.h"
+#include "translated_cell_searches/translated_cell_searches.h"
 #include "translated_texture_queries/translated_texture_queries.h"
 #include "translated_texture_shadow/translated_texture_shadow.h"
 #include "translated_texture_cube/translated_texture_cube.h"
@@ -112,7 +114,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
     // around an if and else that vary per fragment, with a texture; chained assignments; functions
     // taking a sampler; constant arrays of vectors read per fragment; C++ loops beside and inside
     // Loop objects; multiply-adds rounded once beside ones a single rounding would change; a colour
-    // that branches leave unwritten.
+    // that branches leave unwritten; loop nests whose heads run for all iterations at once.
     const TranslatedCase cases[] = {
         {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
         {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
@@ -123,7 +125,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
          false},
         {make_program<translated_counted_loops::TranslatedCountedLoops>, "counted_loops", false},
         {make_program<translated_exact_products::TranslatedExactProducts>, "exact_products", false},
-        {make_program<translated_colour_unwritten::TranslatedColourUnwritten>, "colour_unwritten", false}};
+        {make_program<translated_colour_unwritten::TranslatedColourUnwritten>, "colour_unwritten", false},
+        {make_program<translated_cell_searches::TranslatedCellSearches>, "cell_searches", false}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -144,6 +147,67 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         Scene scene = load_scene(c.catalogue ? test::plane_for(name) : test::kPlane);
         test::check_same_pixels(scene, interpreted, compiled, name);
     }
+}
+
+TEST_CASE("a loop nest's head that reads only its counters and values declared before it runs for all iterations "
+          "at once, where those values are alike in every lane", "[translate]") {
+    const std::filesystem::path file = test::kSource / "tests/translate/cell_searches.frag";
+    const std::string shader = frontend::translate_glsl({file.string(), read_text(file)}, std::nullopt, "cell_searches").header;
+    const auto has = [&](const std::string& line) {
+        INFO(line);
+        return shader.find(line) != std::string::npos;
+    };
+    // The 3x3 search: the hash and the offsets, not the vector to the point (it reads Pf).
+    CHECK(has("const IterationLanes<F, 3, 3> each({-1, -1}, lanes_alike(Pi));"));
+    CHECK(has("F p = each.alike ? each.at(p_each, i, j) : permute(permute(Pi.x + float(i)) + Pi.y + float(j));  // 20"));
+    CHECK(has("vec2<F> d = Pf - vec2<F>(float(i), float(j)) - o;  // 22"));
+    // Octaves around a 3x3x3 search: each loop's head its own, the inner one reading the outer counter.
+    CHECK(has("const IterationLanes<F, 2> each2({0}, lanes_alike(P));"));
+    CHECK(has("const IterationLanes<F, 3, 3, 3> each3({-1, -1, -1}, lanes_alike(Pi));"));
+    // An int cell; a head under a condition that varies per fragment; a signed zero.
+    CHECK(has("lanes_alike(cell)"));
+    CHECK(has("lanes_alike(c)"));
+    CHECK(has("lanes_alike(q)"));
+    // Left as written: a head reading a varying, and one of two operations.
+    CHECK(has("F vi = permute(permute(floor(st.x * 40.0f) + float(i)));"));
+    CHECK(has("F ti = F_.x + float(i);"));
+    CHECK_FALSE(has("vi_each"));
+    CHECK_FALSE(has("ti_each"));
+}
+
+TEST_CASE("iteration lanes: each iteration's counters in its lane, read back in every lane; lanes alike to the bit",
+          "[translate]") {
+    using P = Pixels<float, 16>;
+    using glsl::IterationLanes;
+    const IterationLanes<P, 3, 2> each({-1, 4}, true);
+    REQUIRE(each.alike);
+    const int_t<P> i = each.counter(0), j = each.counter(1);
+    for (int k = 0; k < 16; ++k) {
+        const int it = std::min(k, 5);  // lanes past the last iteration repeat it
+        CHECK(lane(i, k) == -1 + it / 2);
+        CHECK(lane(j, k) == 4 + it % 2);
+    }
+    const P value = P(i) * 10.0f + P(j);
+    CHECK(lane(each.at(value, 0, 5), 7) == 5.0f);
+    CHECK(lane(each.at(glsl::vec2<P>(value, -value), 1, 4).y, 3) == -14.0f);
+    // Too many iterations for the lanes, or not plain lanes: never alike, the loop runs as written.
+    CHECK_FALSE((IterationLanes<P, 17>({0}, true).alike));
+    CHECK_FALSE((IterationLanes<float, 1>({0}, true).alike));
+    CHECK_FALSE((IterationLanes<Dual2<P>, 2>({0}, true).alike));
+
+    float v[16];
+    for (float& x : v) x = 3.5f;
+    CHECK(glsl::lanes_alike(P::load(v), int_t<P>(7)));
+    v[9] = -0.0f;
+    P zeros = P::load(v);
+    for (float& x : v) x = 0.0f;
+    CHECK(glsl::lanes_alike(P::load(v)));
+    v[9] = -0.0f;
+    CHECK_FALSE(glsl::lanes_alike(P::load(v)));  // -0 and +0 compare equal but divide apart
+    CHECK_FALSE(glsl::lanes_alike(zeros));
+    for (float& x : v) x = std::numeric_limits<float>::quiet_NaN();
+    CHECK(glsl::lanes_alike(P::load(v)));  // the same NaN: the same results
+    CHECK_FALSE(glsl::lanes_alike(glsl::vec2<P>(P(1.0f), P::load(v)), P(1.0f) + P(i)));
 }
 
 TEST_CASE("a translation rounds a multiply-add once only where its product is exact for every input", "[translate]") {
