@@ -15,6 +15,7 @@
 #include "frontend/batch_width.h"
 #include "frontend/binding_names.h"
 #include "frontend/exact_products.h"
+#include "frontend/glsl_statements.h"
 #include "frontend/iteration_slices.h"
 #include "frontend/loop_bound.h"
 #include "frontend/parse_stage.h"
@@ -130,44 +131,12 @@ struct Local {
     const TIntermNode* declaring = nullptr;  // the statement that declares it by its first assignment
 };
 
-// A declaration statement, as glslang keeps it: a sequence of its declarators' initialisations.
-bool is_declaration(TIntermNode* n) {
-    auto* a = n ? n->getAsAggregate() : nullptr;
-    if (!a || a->getOp() != glslang::EOpSequence || a->getSequence().empty()) return false;
-    for (TIntermNode* c : a->getSequence()) {
-        auto* b = c->getAsBinaryNode();
-        if (!b || b->getOp() != glslang::EOpAssign || !b->getLeft()->getAsSymbolNode()) return false;
-    }
-    return true;
-}
-
-// The statements of a block, declarations' declarators as statements of their own.
-std::vector<TIntermNode*> statements_of(TIntermAggregate* a) {
-    std::vector<TIntermNode*> out;
-    for (TIntermNode* c : a->getSequence()) {
-        if (is_declaration(c)) {
-            for (TIntermNode* d : c->getAsAggregate()->getSequence()) out.push_back(d);
-        } else {
-            out.push_back(c);
-        }
-    }
-    return out;
-}
-
 bool is_assignment(TOperator op) { return op >= glslang::EOpAssign && op <= glslang::EOpRightShiftAssign; }
 
 // GLSL 1.50's block of the vertex stage's built-in outputs (gl_Position, gl_PointSize,
 // gl_ClipDistance[]), which the translation writes as its gl_Position alone.
 bool is_per_vertex_block(const TType& t) {
     return t.getBasicType() == glslang::EbtBlock && std::string(t.getTypeName().c_str()) == "gl_PerVertex";
-}
-
-// A for loop as glslang nests it: its initialiser (one declarator) and the loop.
-bool is_for_sequence(TIntermAggregate* a) {
-    if (!a || a->getOp() != glslang::EOpSequence) return false;
-    const std::vector<TIntermNode*> s = statements_of(a);
-    return s.size() == 2 && s[1]->getAsLoopNode() && s[0]->getAsBinaryNode() &&
-           s[0]->getAsBinaryNode()->getOp() == glslang::EOpAssign;
 }
 
 class StageWriter {
@@ -1406,7 +1375,8 @@ static const char* step_operator(glslang::TOperator op) {
 
 void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     std::optional<IterationSlice> slice;
-    if (init && !inner_levels_.contains(l)) {
+    // The vertex stage runs one vertex at a time, in float: no lanes to run iterations in.
+    if (init && stage_ == Stage::Fragment && !inner_levels_.contains(l)) {
         const auto plain = [&](long long id) { return locals_.contains(id) && locals_[id].plain_counter; };
         const auto at_nest = [&](long long id) {
             auto it = locals_.find(id);

@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "frontend/glsl_statements.h"
 #include "frontend/variable_writes.h"
 
 namespace qs::frontend {
@@ -146,36 +147,11 @@ bool leaves(TIntermNode* body) {
     return f.found;
 }
 
-// A for loop as glslang nests it: the initialiser's declarator and the loop.
-std::optional<std::pair<TIntermBinary*, glslang::TIntermLoop*>> as_for(TIntermNode* n) {
-    TIntermAggregate* a = n ? n->getAsAggregate() : nullptr;
-    if (!a || a->getOp() != glslang::EOpSequence || a->getSequence().size() != 2) return std::nullopt;
-    TIntermNode* first = a->getSequence()[0];
-    if (TIntermAggregate* decl = first->getAsAggregate(); decl && decl->getOp() == glslang::EOpSequence && decl->getSequence().size() == 1) {
-        first = decl->getSequence()[0];
-    }
-    auto* init = first->getAsBinaryNode();
-    auto* loop = a->getSequence()[1]->getAsLoopNode();
-    if (!init || init->getOp() != glslang::EOpAssign || !loop) return std::nullopt;
-    return std::pair{init, loop};
-}
-
-// The statements of a block, each declarator of a declaration one of its own.
+// The statements of a loop's body (a block, or one statement).
 std::vector<TIntermNode*> statements(TIntermNode* body) {
     TIntermAggregate* a = body ? body->getAsAggregate() : nullptr;
-    if (!a || a->getOp() != glslang::EOpSequence) return {body};
-    std::vector<TIntermNode*> out;
-    for (TIntermNode* c : a->getSequence()) {
-        TIntermAggregate* d = c ? c->getAsAggregate() : nullptr;
-        const bool declaration = d && d->getOp() == glslang::EOpSequence && !d->getSequence().empty() &&
-                                 std::all_of(d->getSequence().begin(), d->getSequence().end(), [](TIntermNode* x) {
-                                     auto* b = x->getAsBinaryNode();
-                                     return b && b->getOp() == glslang::EOpAssign && b->getLeft()->getAsSymbolNode();
-                                 });
-        if (declaration) out.insert(out.end(), d->getSequence().begin(), d->getSequence().end());
-        else out.push_back(c);
-    }
-    return out;
+    if (!a || a->getOp() != glslang::EOpSequence || is_for_sequence(a)) return {body};
+    return statements_of(a);
 }
 
 // What a declaration's value reads, and whether the part may hold it.
@@ -286,10 +262,11 @@ std::optional<IterationSlice> iteration_slice(glslang::TIntermLoop* loop, TInter
         slice.count.push_back(level->count);
         body = loop->getBody();
         const std::vector<TIntermNode*> s = statements(body);
-        const auto inner = s.size() == 1 ? as_for(s[0]) : std::nullopt;
-        if (!inner) break;
-        init = inner->first;
-        loop = inner->second;
+        TIntermAggregate* inner = s.size() == 1 && s[0] ? s[0]->getAsAggregate() : nullptr;
+        if (!is_for_sequence(inner)) break;
+        const std::vector<TIntermNode*> parts = statements_of(inner);
+        init = parts[0]->getAsBinaryNode();
+        loop = parts[1]->getAsLoopNode();
     }
 
     std::set<long long> written, counters, part;
