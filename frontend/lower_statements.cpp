@@ -103,7 +103,9 @@ void StageLowering::branch(glslang::TIntermBranch* node) {
                     const Place result = frames_.back().result;
                     (void)eval_call(call, &result);
                 } else {
-                    assign(frames_.back().result, eval(e), true);
+                    // The value first: a call in it pushes a frame, which may move this one.
+                    const Place value = eval(e);
+                    assign(frames_.back().result, value, true);
                 }
             }
             emit(ir::Op::Return);

@@ -7,6 +7,8 @@
 
 #include <cstring>
 
+#include "frontend/compile.h"
+#include "frontend/cpp_writer.h"
 #include "images/image_io.h"
 #include "render/glsl_shaders.h"
 #include "render/scene_render.h"
@@ -105,6 +107,24 @@ TEST_CASE("sanitized: GLSL run by the interpreter with its compiled blocks draws
         INFO(name);
         CHECK(std::memcmp(got.rgba.data(), expected.rgba.data(), got.rgba.size() * sizeof(float)) == 0);
     }
+}
+
+TEST_CASE("sanitized: the front end lowers and translates returns whose values call functions, calls deep",
+          "[sanitize]") {
+    // Each return's value calls the next function: lowering it pushes a call's frame while the
+    // returning function's frame is in use.
+    const frontend::GlslSource frag{"returns.frag", R"(varying vec2 st;
+float f5(float x) { return x * 0.5 + 0.25; }
+float f4(float x) { return 1.0 - f5(x) * f5(x + 0.5); }
+float f3(float x) { return f4(x) + f4(x * 2.0); }
+float f2(float x) { return 0.5 * f3(x) - f3(x + st.y); }
+float f1(float x) { return fract(f2(x) + f2(st.x)); }
+void main() { gl_FragColor = vec4(f1(st.x), f1(st.y), 0.0, 1.0); }
+)"};
+    const frontend::CompiledProgram program = frontend::compile_glsl(frag, std::nullopt);
+    CHECK_FALSE(program.program.fragment.code.empty());
+    CHECK(frontend::translate_glsl(frag, std::nullopt, "returns").header.find("return fract(f2(x) + f2(st.x));") !=
+          std::string::npos);
 }
 
 }  // namespace qs
