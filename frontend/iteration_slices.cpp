@@ -284,11 +284,11 @@ std::optional<IterationSlice> iteration_slice(glslang::TIntermLoop* loop, TInter
         Reads r;
         reader.read(d->getRight(), r);
         const bool same_inputs =
-            slice.declarations.empty() || std::all_of(r.inputs.begin(), r.inputs.end(), [&](long long id) {
+            slice.inputs.empty() || std::all_of(r.inputs.begin(), r.inputs.end(), [&](long long id) {
                 return std::find(slice.inputs.begin(), slice.inputs.end(), id) != slice.inputs.end();
             });
         if (!r.ok || !same_inputs) break;
-        if (slice.declarations.empty()) slice.inputs = r.inputs;
+        if (slice.inputs.empty()) slice.inputs = r.inputs;
         slice.declarations.push_back(d);
         slice.operations += r.operations;
         part.insert(target->getId());

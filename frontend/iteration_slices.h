@@ -8,10 +8,10 @@
 //
 // The nest: `for (int i = A; i < B; i++)` (or `<=`) loops, each the only statement of the one
 // around it, whose counters the writer keeps C++ ints (every lane runs them equally often), at
-// most 32 iterations in all. The part: the longest run of those declarations that reads the
-// per-lane values the first one reads and no others (the cell, not the point inside it), with at
-// least kLeastOperations operations per iteration, callees' included: fewer do not pay for the
-// check that the values are alike and the read of each iteration's lane.
+// most 32 iterations in all. The part: the longest run of those declarations that reads no
+// per-lane values but those the first one to read any reads (the cell, not the point inside it),
+// with at least kLeastOperations operations per iteration, callees' included: fewer do not pay
+// for the check that the values are alike and the read of each iteration's lane.
 
 #include <functional>
 #include <optional>

@@ -1,11 +1,11 @@
 #version 130
 // Loop nests whose heads read only the counters and values declared before them: the writer runs
 // those for all iterations at once where the values are alike in every lane. A cellular search
-// over a 3x3 neighbourhood, its cells a few pixels wide (batches in one cell and across two); the
-// same over 3x3x3 cells (27 iterations: more than a batch of 16 lanes holds) inside an octave
-// loop whose counter the head reads; an int cell; a head under a condition that varies per
-// fragment; lanes whose value differs only in the sign of zero; and nests the writer leaves as
-// they are: a head reading a varying, or one too short to pay.
+// over a 3x3 neighbourhood, its cells a few pixels wide (batches in one cell and across two); a
+// Voronoi search; the same over 3x3x3 cells (27 iterations: more than a batch of 16 lanes holds)
+// inside an octave loop whose counter the head reads; an int cell; a head under a condition that
+// varies per fragment; lanes whose value differs only in the sign of zero; and nests the writer
+// leaves as they are: a head reading a varying, or one too short to pay.
 varying vec2 st;
 
 float permute(float x) { return mod((34.0 * x + 1.0) * x, 289.0); }
@@ -25,6 +25,22 @@ vec2 search(vec2 P) {
         }
     }
     return F;
+}
+
+// A Voronoi search as shaders on the web write it: the neighbour's offset first, which reads no
+// per-lane value, then its hash of the cell; the outer loop's body the inner loop, unbraced.
+float voronoi(vec2 x) {
+    vec2 n = floor(x);
+    vec2 f = fract(x);
+    float md = 8.0;
+    for (int j = -1; j <= 1; j++)
+        for (int i = -1; i <= 1; i++) {
+            vec2 g = vec2(float(i), float(j));
+            vec2 o = fract(sin(vec2(dot(n + g, vec2(127.1, 311.7)), dot(n + g, vec2(269.5, 183.3)))) * 43758.5453);
+            vec2 r = g + o - f;
+            md = min(md, dot(r, r));
+        }
+    return md;
 }
 
 float search3(vec3 P) {
@@ -48,7 +64,7 @@ float search3(vec3 P) {
 
 void main() {
     vec2 F = search(st * 5.0);
-    float g = search3(vec3(st * 3.0, 0.5));
+    float g = search3(vec3(st * 3.0, 0.5)) + voronoi(st * 6.0);
 
     ivec2 cell = ivec2(floor(st * 6.0));
     float h = 0.0;

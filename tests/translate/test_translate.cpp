@@ -161,9 +161,13 @@ TEST_CASE("a loop nest's head that reads only its counters and values declared b
     CHECK(has("const IterationLanes<F, 3, 3> each({-1, -1}, lanes_alike(Pi));"));
     CHECK(has("F p = each.alike ? each.at(p_each, i, j) : permute(permute(Pi.x + float(i)) + Pi.y + float(j));  // 20"));
     CHECK(has("vec2<F> d = Pf - vec2<F>(float(i), float(j)) - o;  // 22"));
+    // A Voronoi search: the offset, which reads no per-lane value, then the hash of the cell.
+    CHECK(has("const IterationLanes<F, 3, 3> each2({-1, -1}, lanes_alike(n));"));
+    CHECK(has("vec2<F> g_each2{}, o_each2{};"));
+    CHECK(has("vec2<F> r = g + o - f;  // 40"));
     // Octaves around a 3x3x3 search: each loop's head its own, the inner one reading the outer counter.
-    CHECK(has("const IterationLanes<F, 2> each2({0}, lanes_alike(P));"));
-    CHECK(has("const IterationLanes<F, 3, 3, 3> each3({-1, -1, -1}, lanes_alike(Pi));"));
+    CHECK(has("const IterationLanes<F, 2> each3({0}, lanes_alike(P));"));
+    CHECK(has("const IterationLanes<F, 3, 3, 3> each4({-1, -1, -1}, lanes_alike(Pi));"));
     // An int cell; a head under a condition that varies per fragment; a signed zero.
     CHECK(has("lanes_alike(cell)"));
     CHECK(has("lanes_alike(c)"));
