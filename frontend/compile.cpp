@@ -52,8 +52,18 @@ std::string join_continued_lines(const std::string& text) {
     return out;
 }
 
-// glslang's "ERROR: FILE:LINE: message" lines as FILE:LINE: error: message.
-std::string reword(const std::string& log, std::vector<std::string>* warnings) {
+// Where a glslang message's "NAME:LINE: " place ends (at its last colon), or npos without one.
+std::size_t located(const std::string& message) {
+    const std::size_t name_end = message.find(':');
+    if (name_end == std::string::npos) return std::string::npos;
+    std::size_t k = name_end + 1;
+    while (k < message.size() && message[k] >= '0' && message[k] <= '9') ++k;
+    return k > name_end + 1 && message.compare(k, 2, ": ") == 0 ? k : std::string::npos;
+}
+
+// glslang's "ERROR: FILE:LINE: message" lines as FILE:LINE: error: message; a line glslang
+// gives no place (an unsupported #version) as FILE: error: message.
+std::string reword(const std::string& file, const std::string& log, std::vector<std::string>* warnings) {
     std::istringstream in(log);
     std::string line, errors;
     while (std::getline(in, line)) {
@@ -62,8 +72,8 @@ std::string reword(const std::string& log, std::vector<std::string>* warnings) {
             std::string rest = line.substr(std::string(kind).size());
             if (rest.find("compilation errors.") != std::string::npos || rest.find("compilation terminated") != std::string::npos) break;
             // "FILE:LINE: 'token' : message" -> "FILE:LINE: error: 'token': message"
-            const std::size_t colon = rest.find(": ");
-            std::string where = colon == std::string::npos ? "" : rest.substr(0, colon + 2);
+            const std::size_t colon = located(rest);
+            std::string where = colon == std::string::npos ? file + ": " : rest.substr(0, colon + 2);
             std::string what = colon == std::string::npos ? rest : rest.substr(colon + 2);
             for (std::size_t at; (at = what.find(" : ")) != std::string::npos;) what.replace(at, 3, ": ");
             const bool error = kind[0] == 'E';
@@ -82,7 +92,7 @@ std::string reword(const std::string& log, std::vector<std::string>* warnings) {
 std::string preprocessed(const std::string& file, const std::string& text, EShLanguage stage) {
     Preprocessed p = preprocess(file, text, stage == EShLangFragment);
     if (!p.ok) {
-        const std::string errors = reword(p.log, nullptr);
+        const std::string errors = reword(file, p.log, nullptr);
         throw GlslError(errors.empty() ? file + ": error: the shader does not preprocess" : errors);
     }
     return std::move(p.text);
@@ -126,7 +136,7 @@ ParsedStage parse(const GlslSource& source, EShLanguage stage, std::vector<std::
     }
     const std::string log = std::string(p.shader->getInfoLog()) + p.shader->getInfoDebugLog();
     std::vector<std::string> said;
-    std::string errors = reword(log, &said);
+    std::string errors = reword(source.file, log, &said);
     if (probe) {
         errors = probe_messages(errors, *probe);
         for (std::string& w : said) w = probe_messages(w, *probe);

@@ -1,0 +1,2 @@
+varying vec2 st;
+float f(float x) { return x; }
