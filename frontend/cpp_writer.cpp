@@ -79,7 +79,7 @@ const std::set<std::string>& reserved_names() {
         "ret", "inside", "table", "uniform", "vec", "mat", "Bool", "int_t", "uint_t", "Uniforms", "VertexIn",
         "FragmentIn", "FragmentOut", "VertexOutputs", "VertexStage", "Varyings", "fields", "vertex", "fragment",
         "info", "sampler2D", "sampler3D", "samplerCube", "Texture", "shade", "transform_point", "ShaderInfo", "Needs",
-        "UniformDecl", "main_", "Lanes", "Pixels", "Quads", "Dual2", "Checked", "kUniforms"};
+        "UniformDecl", "main_", "Lanes", "Pixels", "Quads", "Dual2", "Checked", "kUniforms", "IterationLanes", "lanes_alike"};
     return names;
 }
 
@@ -260,6 +260,7 @@ private:
 
     // ---- a loop nest's part run across its iterations (frontend/iteration_slices.h) ------------
     void iteration_lanes(const IterationSlice& slice);
+    bool names_apart(const IterationSlice& slice);
     std::string unused_name(const std::string& base);
     std::set<std::string> taken_names_;  // every name of the GLSL, and those the writer gave
     std::map<const TIntermNode*, std::string> across_iterations_;  // a part's declaration -> its value read back
@@ -684,9 +685,23 @@ Expr StageWriter::binary(TIntermBinary* b) {
     if (std::optional<Expr> fused = exact_product_add(b)) return *fused;
     Expr l = expr(b->getLeft());
     Expr r = expr(b->getRight());
-    const bool plain = l.plain && r.plain;
+    bool plain = l.plain && r.plain;
     const bool integer = b->getLeft()->getType().getBasicType() == glslang::EbtInt ||
                          b->getLeft()->getType().getBasicType() == glslang::EbtUint;
+    // Of values the same for every fragment, C++ keeps comparisons, logic and the integer sums
+    // and products an index needs. Integer division, remainder and shifts are the vocabulary's
+    // (a zero divisor and a negative or wide shift have the interpreter's results, not C++'s
+    // undefined ones), and float arithmetic is F's (in double precision it runs in double, as
+    // the interpreter runs it).
+    const bool integer_only_in_f = integer && (op == glslang::EOpDiv || op == glslang::EOpMod ||
+                                               op == glslang::EOpLeftShift || op == glslang::EOpRightShift);
+    const bool float_arithmetic = b->getType().getBasicType() == glslang::EbtFloat &&
+                                  (op == glslang::EOpAdd || op == glslang::EOpSub || op == glslang::EOpMul || op == glslang::EOpDiv);
+    if (plain && (integer_only_in_f || float_arithmetic)) {
+        l = as_typed(b->getLeft(), b->getLeft()->getType());
+        if (integer_only_in_f) r = as_typed(b->getRight(), b->getRight()->getType());  // F and a float make an F
+        plain = false;
+    }
     // An integer or bool literal beside a value of F: written as a value of its type.
     if (!plain) {
         if (l.plain && b->getLeft()->getType().getBasicType() != glslang::EbtFloat) l = as_typed(b->getLeft(), b->getLeft()->getType());
@@ -1384,6 +1399,7 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
             return it->second.plain_counter ? LocalAtNest::PlainCounter : LocalAtNest::DeclaredBefore;
         };
         slice = iteration_slice(l, init->getAsBinaryNode(), ast_.getTreeRoot()->getAsAggregate(), plain, at_nest);
+        if (slice && !names_apart(*slice)) slice.reset();
         if (slice) {
             iteration_lanes(*slice);
             inner_levels_.insert(slice->loops.begin() + 1, slice->loops.end());
@@ -1412,6 +1428,13 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     // condition is the same for every lane and no lane leaves or pauses it on its own.
     const bool plain = c.plain && !lanes_may_leave(l);
     std::string name;
+    if (!plain && init && !locals_[init->getAsBinaryNode()->getLeft()->getAsSymbolNode()->getId()].plain_counter) {
+        // A counter of its own per lane is declared before the Loop, which holds it: the step
+        // runs on for the lanes that have left.
+        line(init_text + ";", l);
+        list += ", " + locals_[init->getAsBinaryNode()->getLeft()->getAsSymbolNode()->getId()].name;
+        init_text.clear();
+    }
     if (!plain) {
         // Each Loop of a function has its own name: loop, loop2, ...
         name = ++loops_in_function_ == 1 ? "loop" : "loop" + std::to_string(loops_in_function_);
@@ -1500,9 +1523,10 @@ void StageWriter::iteration_lanes(const IterationSlice& slice) {
     }
     const std::string lines = first_line == last_line ? "line " + std::to_string(first_line)
                                                       : "lines " + std::to_string(first_line) + "-" + std::to_string(last_line);
-    const std::string all = "for all " + std::to_string(iterations) + " iterations at once,";
-    if (slice.inputs.empty()) line("// " + lines + " read the loop counters alone: they run here " + all, nullptr);
-    else line("// Where " + inputs + (slice.inputs.size() == 1 ? " is" : " are") + " the same in every lane, " + lines + " run here " + all, nullptr);
+    const bool one = first_line == last_line;
+    const std::string all = std::string(one ? " runs" : " run") + " here for all " + std::to_string(iterations) + " iterations at once,";
+    if (slice.inputs.empty()) line("// " + lines + (one ? " reads the loop counters alone: it" : " read the loop counters alone: they") + all, nullptr);
+    else line("// Where " + inputs + (slice.inputs.size() == 1 ? " is" : " are") + " the same in every lane, " + lines + all, nullptr);
     line("// one in each lane (shading/glsl/iteration_lanes.h).", nullptr);
     std::string alike;
     for (std::size_t k = 0; k < slice.inputs.size(); ++k) alike += (k ? ", " : "") + locals_[slice.inputs[k]].name;
@@ -1535,6 +1559,23 @@ void StageWriter::iteration_lanes(const IterationSlice& slice) {
     }
     --indent_;
     line("}", nullptr);
+}
+
+// Whether the part's counters, the values it reads and the names it declares are all different
+// names in C++: its copy before the nest declares the counters and its names in one scope, and
+// GLSL may reuse a name in an inner one (an inner loop's counter, a local named as a counter).
+bool StageWriter::names_apart(const IterationSlice& slice) {
+    std::set<std::string> names;
+    for (TIntermSymbol* c : slice.counters) {
+        if (!names.insert(locals_[c->getId()].name).second) return false;
+    }
+    for (long long id : slice.inputs) {
+        if (!names.insert(locals_[id].name).second) return false;
+    }
+    for (TIntermBinary* d : slice.declarations) {
+        if (!names.insert(locals_[d->getLeft()->getAsSymbolNode()->getId()].name).second) return false;
+    }
+    return true;
 }
 
 // `base`, or base2, base3, ...: a name neither the GLSL nor the writer has taken.
@@ -1669,6 +1710,22 @@ void StageWriter::declare_locals(TIntermNode* body) {
         }
         if (l.declaring && is_for_sequence(agg) && statements_of(agg)[0] == l.declaring) {
             l.plain_counter = plain_counter(agg, id);
+        }
+        // `vec2 c = c + d;` reads the c of an enclosing scope, where C++'s would read itself: the
+        // inner one takes another name.
+        if (l.declaring) {
+            struct Reads : glslang::TIntermTraverser {
+                long long id;
+                std::string name;
+                bool found = false;
+                void visitSymbol(TIntermSymbol* s) override {
+                    found = found || (s->getId() != id && s->getName().c_str() == name);
+                }
+            } r;
+            r.id = id;
+            r.name = s->getName().c_str();
+            l.declaring->getAsBinaryNode()->getRight()->traverse(&r);
+            if (r.found) l.name = unused_name(l.name + "_");
         }
         l.declared = false;
         locals_[id] = l;
@@ -1807,6 +1864,13 @@ std::string StageWriter::write() {
     } names;
     names.taken = &taken_names_;
     root->traverse(&names);
+    for (TIntermNode* n : root->getSequence()) {
+        TIntermAggregate* a = n->getAsAggregate();
+        if (!a || a->getOp() != glslang::EOpFunction) continue;
+        const std::string mangled = a->getName().c_str();
+        taken_names_.insert(mangled.substr(0, mangled.find('(')));
+        taken_names_.insert(mangled.substr(0, mangled.find('(')) + "_");
+    }
     // Struct types first: members and functions use them.
     std::vector<const TType*> structs;
     std::set<std::string> seen;
@@ -1820,6 +1884,8 @@ std::string StageWriter::write() {
     root->traverse(&types);
     std::string struct_text;
     for (const TType* t : structs) {
+        taken_names_.insert(t->getTypeName().c_str());
+        taken_names_.insert(std::string(t->getTypeName().c_str()) + "_");
         struct_text += "    struct " + cpp_identifier(t->getTypeName().c_str(), file_ + ": ") + " {\n";
         for (const glslang::TTypeLoc& m : *t->getStruct()) {
             struct_text += "        " + type(*m.type, nullptr) + " " + cpp_identifier(m.type->getFieldName().c_str(), file_ + ": ") + "{};\n";

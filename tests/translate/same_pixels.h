@@ -33,8 +33,9 @@ inline Framebuffer uniform_like(const Framebuffer& f) {
     return u;
 }
 
-// Renders `scene` with the interpreted program and then the compiled one under each shading mode:
-// the two must agree to the bit (and, where `picture`, on a picture rather than one colour).
+// Renders `scene` with the interpreted program and then the compiled one under each shading mode,
+// and checking undefined cases: the two must agree to the bit (and, where `picture`, on a picture
+// rather than one colour).
 inline void check_same_pixels(Scene& scene, const Program& interpreted, const Program& compiled, const std::string& what,
                               bool picture = true) {
     for (const ShadingMode& m : kShadingModes) {
@@ -50,6 +51,17 @@ inline void check_same_pixels(Scene& scene, const Program& interpreted, const Pr
         CHECK(differing_pixels(expected, got) == 0);
         if (picture) CHECK(differing_pixels(expected, uniform_like(expected)) > 0);
     }
+    // And shaded in the instantiation that checks undefined cases (Checked numbers; the loops'
+    // rule checked too): the same colours.
+    FrameRequest r;
+    r.width = 64, r.height = 48;
+    r.shading.check_undefined = true;
+    r.shader_override = interpreted.info().name;
+    const Framebuffer expected = render_frame(scene, r);
+    r.shader_override = compiled.info().name;
+    const Framebuffer got = render_frame(scene, r);
+    INFO(what << ", undefined cases checked");
+    CHECK(differing_pixels(expected, got) == 0);
 }
 
 }  // namespace qs::test

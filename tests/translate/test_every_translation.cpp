@@ -49,6 +49,7 @@ ShadeModes modes_of_the_check(const Needs& needs) {
     for (const test::ShadingMode& m : test::kShadingModes) {
         modes.bits |= modes_for(needs, ShadeRequest{.derivatives = m.derivatives, .precision = m.precision}).bits;
     }
+    modes.bits |= modes_for(needs, ShadeRequest{.check_undefined = true}).bits;
     return modes;
 }
 

@@ -36,6 +36,7 @@
 #include "translated_exact_products/translated_exact_products.h"
 #include "translated_colour_unwritten/translated_colour_unwritten.h"
 #include "translated_cell_searches/translated_cell_searches.h"
+#include "translated_name_and_counter_edges/translated_name_and_counter_edges.h"
 #include "translated_texture_queries/translated_texture_queries.h"
 #include "translated_texture_shadow/translated_texture_shadow.h"
 #include "translated_texture_cube/translated_texture_cube.h"
@@ -114,7 +115,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
     // around an if and else that vary per fragment, with a texture; chained assignments; functions
     // taking a sampler; constant arrays of vectors read per fragment; C++ loops beside and inside
     // Loop objects; multiply-adds rounded once beside ones a single rounding would change; a colour
-    // that branches leave unwritten; loop nests whose heads run for all iterations at once.
+    // that branches leave unwritten; loop nests whose heads run for all iterations at once; what C++
+    // would read otherwise (names, shadowed locals, integer remainders, a counter per lane).
     const TranslatedCase cases[] = {
         {make_program<translated_lawlor_mandelbrot::TranslatedLawlorMandelbrot>, "lawlor_mandelbrot"},
         {make_program<translated_bricks_aa::TranslatedBricksAa>, "bricks_aa"},
@@ -126,7 +128,8 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
         {make_program<translated_counted_loops::TranslatedCountedLoops>, "counted_loops", false},
         {make_program<translated_exact_products::TranslatedExactProducts>, "exact_products", false},
         {make_program<translated_colour_unwritten::TranslatedColourUnwritten>, "colour_unwritten", false},
-        {make_program<translated_cell_searches::TranslatedCellSearches>, "cell_searches", false}};
+        {make_program<translated_cell_searches::TranslatedCellSearches>, "cell_searches", false},
+        {make_program<translated_name_and_counter_edges::TranslatedNameAndCounterEdges>, "name_and_counter_edges", false}};
     for (const TranslatedCase& c : cases) {
         const std::string& name = c.name;
         std::optional<frontend::GlslSource> vert;
@@ -177,6 +180,29 @@ TEST_CASE("a loop nest's head that reads only its counters and values declared b
     CHECK(has("F ti = F_.x + float(i);"));
     CHECK_FALSE(has("vi_each"));
     CHECK_FALSE(has("ti_each"));
+}
+
+TEST_CASE("a translation says what GLSL says where C++ would read it otherwise", "[translate]") {
+    const std::filesystem::path file = test::kSource / "tests/translate/name_and_counter_edges.frag";
+    const std::string shader =
+        frontend::translate_glsl({file.string(), read_text(file)}, std::nullopt, "name_and_counter_edges").header;
+    const auto has = [&](const std::string& line) {
+        INFO(line);
+        return shader.find(line) != std::string::npos;
+    };
+    // The writer's own names stay its own: GLSL's are renamed, and the new code's names step aside.
+    CHECK(has("F IterationLanes_{};"));
+    CHECK(has("F lanes_alike_ = F(0.5f);"));
+    CHECK(has("const IterationLanes<F, 2> each2({0}, lanes_alike(c));"));
+    // A nest whose counters share a name runs as written.
+    CHECK(has("F a = each(c.x + float(i)) + h(c.y) * h(c.x + c.y) + lanes_alike_;  // 21"));
+    // `vec2 c = c + ...` reads the outer c.
+    CHECK(has("vec2<F> c_2 = c + vec2<F>(F(0.5f));  // 32"));
+    // A remainder, quotient and float arithmetic of counters are F's; a counter per lane is held.
+    CHECK(has("remainders += F(int_t<F>(i) % int_t<F>(2)) + F(int_t<F>(i) / int_t<F>(2));  // 37"));
+    CHECK(has("acc += sin((F(float(i)) * 0.1f + 0.37f + st.x) * 1000.0f) * 0.01f;  // 41"));
+    CHECK(has("int_t<F> k = int_t<F>(0);  // 44"));
+    CHECK(has("Loop loop(left, k);"));
 }
 
 TEST_CASE("iteration lanes: each iteration's counters in its lane, read back in every lane; lanes alike to the bit",
