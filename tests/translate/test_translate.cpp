@@ -103,6 +103,13 @@ std::string read_text(const std::filesystem::path& p) {
     return s.str();
 }
 
+// Whether the C++ the writer makes of tests/translate/NAME.frag holds a line.
+auto writes(const std::string& name) {
+    const std::filesystem::path file = test::kSource / "tests/translate" / (name + ".frag");
+    return [header = frontend::translate_glsl({file.string(), read_text(file)}, std::nullopt, name).header](
+               const std::string& line) { return header.find(line) != std::string::npos; };
+}
+
 template <class Shader>
 std::unique_ptr<Program> make_program() {
     return std::make_unique<ProgramOf<Shader>>();
@@ -154,12 +161,7 @@ TEST_CASE("compiled translations draw what the interpreter draws, to the bit, un
 
 TEST_CASE("a loop nest's head that reads only its counters and values declared before it runs for all iterations "
           "at once, where those values are alike in every lane", "[translate]") {
-    const std::filesystem::path file = test::kSource / "tests/translate/cell_searches.frag";
-    const std::string shader = frontend::translate_glsl({file.string(), read_text(file)}, std::nullopt, "cell_searches").header;
-    const auto has = [&](const std::string& line) {
-        INFO(line);
-        return shader.find(line) != std::string::npos;
-    };
+    const auto has = writes("cell_searches");
     // The 3x3 search: the hash and the offsets, not the vector to the point (it reads Pf).
     CHECK(has("const IterationLanes<F, 3, 3> each({-1, -1}, lanes_alike(Pi));"));
     CHECK(has("F p = each.alike ? each.at(p_each, i, j) : permute(permute(Pi.x + float(i)) + Pi.y + float(j));  // 20"));
@@ -183,13 +185,7 @@ TEST_CASE("a loop nest's head that reads only its counters and values declared b
 }
 
 TEST_CASE("a translation says what GLSL says where C++ would read it otherwise", "[translate]") {
-    const std::filesystem::path file = test::kSource / "tests/translate/name_and_counter_edges.frag";
-    const std::string shader =
-        frontend::translate_glsl({file.string(), read_text(file)}, std::nullopt, "name_and_counter_edges").header;
-    const auto has = [&](const std::string& line) {
-        INFO(line);
-        return shader.find(line) != std::string::npos;
-    };
+    const auto has = writes("name_and_counter_edges");
     // The writer's own names stay its own: GLSL's are renamed, and the new code's names step aside.
     CHECK(has("F IterationLanes_{};"));
     CHECK(has("F lanes_alike_ = F(0.5f);"));
