@@ -1413,11 +1413,13 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
         list += ", " + n;
     }
     std::string init_text;
+    const Local* counter = nullptr;  // the one the initialiser declares
     if (init) {
         auto* b = init->getAsBinaryNode();
         auto* s = b ? b->getLeft()->getAsSymbolNode() : nullptr;
         if (!s || !locals_.contains(s->getId())) refuse(init, "this loop initialiser");
         Local& lo = locals_[s->getId()];
+        counter = &lo;
         lo.declared = true;
         lo.mask_depth = int(masks_.size());
         Expr v = lo.plain_counter ? expr(b->getRight()) : as_typed(b->getRight(), b->getType());
@@ -1428,11 +1430,11 @@ void StageWriter::loop(glslang::TIntermLoop* l, TIntermNode* init) {
     // condition is the same for every lane and no lane leaves or pauses it on its own.
     const bool plain = c.plain && !lanes_may_leave(l);
     std::string name;
-    if (!plain && init && !locals_[init->getAsBinaryNode()->getLeft()->getAsSymbolNode()->getId()].plain_counter) {
+    if (!plain && counter && !counter->plain_counter) {
         // A counter of its own per lane is declared before the Loop, which holds it: the step
         // runs on for the lanes that have left.
         line(init_text + ";", l);
-        list += ", " + locals_[init->getAsBinaryNode()->getLeft()->getAsSymbolNode()->getId()].name;
+        list += ", " + counter->name;
         init_text.clear();
     }
     if (!plain) {

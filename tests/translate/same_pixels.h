@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 
@@ -38,15 +39,19 @@ inline Framebuffer uniform_like(const Framebuffer& f) {
 // rather than one colour).
 inline void check_same_pixels(Scene& scene, const Program& interpreted, const Program& compiled, const std::string& what,
                               bool picture = true) {
+    // Renders both with the request's settings: the interpreted frame, then the compiled one.
+    const auto both = [&](FrameRequest r) {
+        r.width = 64, r.height = 48;
+        r.shader_override = interpreted.info().name;
+        Framebuffer expected = render_frame(scene, r);
+        r.shader_override = compiled.info().name;
+        return std::pair{std::move(expected), render_frame(scene, r)};
+    };
     for (const ShadingMode& m : kShadingModes) {
         FrameRequest r;
-        r.width = 64, r.height = 48;
         r.shading.derivatives = m.derivatives;
         r.shading.precision = m.precision;
-        r.shader_override = interpreted.info().name;
-        const Framebuffer expected = render_frame(scene, r);
-        r.shader_override = compiled.info().name;
-        const Framebuffer got = render_frame(scene, r);
+        const auto [expected, got] = both(r);
         INFO(what << ", " << m.what);
         CHECK(differing_pixels(expected, got) == 0);
         if (picture) CHECK(differing_pixels(expected, uniform_like(expected)) > 0);
@@ -54,12 +59,8 @@ inline void check_same_pixels(Scene& scene, const Program& interpreted, const Pr
     // And shaded in the instantiation that checks undefined cases (Checked numbers; the loops'
     // rule checked too): the same colours.
     FrameRequest r;
-    r.width = 64, r.height = 48;
     r.shading.check_undefined = true;
-    r.shader_override = interpreted.info().name;
-    const Framebuffer expected = render_frame(scene, r);
-    r.shader_override = compiled.info().name;
-    const Framebuffer got = render_frame(scene, r);
+    const auto [expected, got] = both(r);
     INFO(what << ", undefined cases checked");
     CHECK(differing_pixels(expected, got) == 0);
 }
